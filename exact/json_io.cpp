@@ -1,0 +1,168 @@
+#include "exact/json_io.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+namespace {
+
+// A SAX consumer that builds a DOM in which numbers are kept as their source text.
+class ExactNumberSax {
+ public:
+  using number_integer_t = Json::number_integer_t;
+  using number_unsigned_t = Json::number_unsigned_t;
+  using number_float_t = Json::number_float_t;
+  using string_t = Json::string_t;
+  using binary_t = Json::binary_t;
+
+  Json root;
+  std::string error;
+
+  bool null() { put(nullptr); return true; }
+  bool boolean(bool b) { put(b); return true; }
+  bool number_integer(number_integer_t v) { put(std::to_string(v)); return true; }
+  bool number_unsigned(number_unsigned_t v) { put(std::to_string(v)); return true; }
+  bool number_float(number_float_t, const string_t& text) { put(text); return true; }
+  bool string(string_t& s) { put(s); return true; }
+  bool binary(binary_t&) { error = "binary values are not supported"; return false; }
+  bool start_object(std::size_t) { stack_.push_back(put(Json::object())); return true; }
+  bool key(string_t& k) {
+    if (stack_.back()->contains(k)) { error = "duplicate key \"" + k + "\""; return false; }
+    slot_ = &(*stack_.back())[k];
+    return true;
+  }
+  bool end_object() { stack_.pop_back(); return true; }
+  bool start_array(std::size_t) { stack_.push_back(put(Json::array())); return true; }
+  bool end_array() { stack_.pop_back(); return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& ex) {
+    error = ex.what();
+    return false;
+  }
+
+ private:
+  template <class V>
+  Json* put(V&& v) {
+    if (stack_.empty()) { root = Json(std::forward<V>(v)); return &root; }
+    if (stack_.back()->is_array()) {
+      stack_.back()->push_back(Json(std::forward<V>(v)));
+      return &stack_.back()->back();
+    }
+    *slot_ = Json(std::forward<V>(v));
+    return slot_;
+  }
+  std::vector<Json*> stack_;
+  Json* slot_ = nullptr;
+};
+
+std::string at(const std::string& where, const std::string& field) { return where.empty() ? field : where + "." + field; }
+
+}  // namespace
+
+Json read_json(std::istream& in, const std::string& source) {
+  ExactNumberSax sax;
+  bool ok = false;
+  try {
+    ok = Json::sax_parse(in, &sax);
+  } catch (const nlohmann::json::exception& e) {
+    sax.error = e.what();
+  }
+  if (!ok) throw ParseError(source, "malformed JSON: " + sax.error, "fix the JSON syntax");
+  return sax.root;
+}
+
+Json read_json_file(const std::string& path) {
+  if (path == "-") return read_json(std::cin, "<stdin>");
+  std::ifstream in(path);
+  if (!in) throw UsageError(path, "cannot open the file", "check the path");
+  return read_json(in, path);
+}
+
+Rational json_number(const Json& j, const std::string& field) {
+  if (!j.is_string()) throw ParseError(field, "is not a number", "write a number or a string holding one");
+  return parse_number(j.get<std::string>(), field);
+}
+
+int json_int(const Json& j, const std::string& field, int lo, int hi) {
+  const Rational r = json_number(j, field);
+  if (denominator(r) != 1 || r < lo || r > hi)
+    throw ValidationError(field, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                          "give a whole number in that range");
+  return static_cast<int>(numerator(r).convert_to<long>());
+}
+
+BSpline<Rational> spline_from_json(const Json& doc, const Limits& limits, const std::string& where) {
+  if (!doc.is_object()) throw ValidationError(at(where, "document"), "is not a JSON object", "give a spline document {\"type\": \"bspline\", ...}");
+  static const std::set<std::string> known{"type", "degrees", "knots", "points", "weights"};
+  for (auto it = doc.begin(); it != doc.end(); ++it)
+    if (!known.count(it.key()))
+      throw ValidationError(at(where, it.key()), "is an unknown field",
+                            "remove it; a spline document has type, degrees, knots, points and optional weights");
+  for (const char* f : {"type", "degrees", "knots", "points"})
+    if (!doc.contains(f)) throw ValidationError(at(where, f), "is missing", "add the field");
+  if (doc["type"] != "bspline")
+    throw ValidationError(at(where, "type"), "is not \"bspline\"", "set \"type\": \"bspline\"");
+  const Json& degs = doc["degrees"];
+  if (!degs.is_array() || degs.empty())
+    throw ValidationError(at(where, "degrees"), "is not a non-empty array", "give one degree per direction, e.g. [3, 2]");
+  BSpline<Rational> S;
+  for (std::size_t d = 0; d < degs.size(); ++d)
+    S.degrees.push_back(json_int(degs[d], at(where, "degrees[" + std::to_string(d) + "]"), 0, limits.max_degree));
+  const Json& knots = doc["knots"];
+  if (!knots.is_array()) throw ValidationError(at(where, "knots"), "is not an array", "give one array of knots per direction");
+  for (std::size_t d = 0; d < knots.size(); ++d) {
+    const std::string f = at(where, "knots[" + std::to_string(d) + "]");
+    if (!knots[d].is_array()) throw ValidationError(f, "is not an array", "give the knots of this direction as an array");
+    if (knots[d].size() > limits.max_control_points + 2 * static_cast<std::size_t>(limits.max_degree) + 2)
+      limits.check_count(knots[d].size(), f);
+    std::vector<Rational> U;
+    U.reserve(knots[d].size());
+    for (std::size_t i = 0; i < knots[d].size(); ++i) U.push_back(json_number(knots[d][i], f + "[" + std::to_string(i) + "]"));
+    S.knots.push_back(std::move(U));
+  }
+  const Json& pts = doc["points"];
+  if (!pts.is_array() || pts.empty())
+    throw ValidationError(at(where, "points"), "is not a non-empty array", "give the control points as [[x, y, ...], ...]");
+  limits.check_count(pts.size(), at(where, "points"));
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const std::string f = at(where, "points[" + std::to_string(i) + "]");
+    if (!pts[i].is_array() || pts[i].empty()) throw ValidationError(f, "is not a non-empty array", "write a point as [x, y, ...]");
+    if (i == 0) S.q = static_cast<int>(pts[0].size());
+    if (pts[i].size() != static_cast<std::size_t>(S.q))
+      throw ValidationError(f, "has " + std::to_string(pts[i].size()) + " coordinates, point 0 has " + std::to_string(S.q),
+                            "give every control point the same number of coordinates");
+    for (std::size_t c = 0; c < pts[i].size(); ++c) S.points.push_back(json_number(pts[i][c], f + "[" + std::to_string(c) + "]"));
+  }
+  if (doc.contains("weights")) {
+    const Json& w = doc["weights"];
+    if (!w.is_array()) throw ValidationError(at(where, "weights"), "is not an array", "give one weight per control point");
+    for (std::size_t i = 0; i < w.size(); ++i) S.weights.push_back(json_number(w[i], at(where, "weights[" + std::to_string(i) + "]")));
+    if (S.weights.empty()) throw ValidationError(at(where, "weights"), "is empty", "give one weight per control point, or omit the field");
+  }
+  try {
+    validate(S, limits);
+  } catch (const Error& e) {
+    if (where.empty()) throw;
+    throw ValidationError(where, e.what(), "");
+  }
+  return S;
+}
+
+std::vector<Rational> parse_number_list(const std::string& text, const std::string& field) {
+  std::vector<Rational> out;
+  std::size_t start = 0;
+  if (text.find_first_not_of(" \t") == std::string::npos) return out;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(parse_number(text.substr(start, comma - start), field + "[" + std::to_string(out.size()) + "]"));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace splinex

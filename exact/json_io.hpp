@@ -1,0 +1,69 @@
+// The spline document (JSON) read exactly and written per arithmetic.
+//   {"type": "bspline", "degrees": [3, 2], "knots": [[...], [...]],
+//    "points": [[x, y, z], ...], "weights": [...]}
+// A number is a JSON string holding an integer, a fraction or a decimal, or a JSON number read
+// exactly from its text (the SAX reader keeps the token, so 0.1 is 1/10, not the double near it).
+#pragma once
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "spline/bspline.hpp"
+
+namespace splinex {
+
+using Json = nlohmann::json;
+
+// Parses JSON text; every number becomes a JSON string holding its original text. Malformed
+// JSON and duplicate keys throw ParseError naming `source`.
+Json read_json(std::istream& in, const std::string& source);
+Json read_json_file(const std::string& path);  // "-" is standard input
+
+// A number field (string or number text) read exactly.
+Rational json_number(const Json& j, const std::string& field);
+// A non-negative integer field (e.g. a degree), range-checked.
+int json_int(const Json& j, const std::string& field, int lo, int hi);
+
+// The spline document read exactly and validated (validate() rules; unknown fields rejected).
+BSpline<Rational> spline_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "");
+
+// Comma-separated numbers, each read exactly ("0.5,1/3,2e-1").
+std::vector<Rational> parse_number_list(const std::string& text, const std::string& field);
+
+template <class T>
+Json spline_to_json(const BSpline<T>& S) {
+  Json doc;
+  doc["type"] = "bspline";
+  doc["degrees"] = S.degrees;
+  Json knots = Json::array();
+  for (const auto& U : S.knots) {
+    Json k = Json::array();
+    for (const auto& u : U) k.push_back(ArithTraits<T>::to_json(u));
+    knots.push_back(std::move(k));
+  }
+  doc["knots"] = std::move(knots);
+  Json pts = Json::array();
+  for (std::size_t i = 0; i < S.size(); ++i) {
+    Json p = Json::array();
+    for (int c = 0; c < S.q; ++c) p.push_back(ArithTraits<T>::to_json(S.points[i * S.q + c]));
+    pts.push_back(std::move(p));
+  }
+  doc["points"] = std::move(pts);
+  if (S.is_rational()) {
+    Json w = Json::array();
+    for (const auto& x : S.weights) w.push_back(ArithTraits<T>::to_json(x));
+    doc["weights"] = std::move(w);
+  }
+  return doc;
+}
+
+template <class T>
+Json point_to_json(const std::vector<T>& p) {
+  Json a = Json::array();
+  for (const auto& x : p) a.push_back(ArithTraits<T>::to_json(x));
+  return a;
+}
+
+}  // namespace splinex

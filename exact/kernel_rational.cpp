@@ -1,0 +1,6 @@
+#include "exact/rational.hpp"
+#include "spline/instantiate.hpp"
+
+namespace splinex {
+SPLINEX_INSTANTIATE_KERNEL(Rational)
+}

@@ -1,0 +1,5 @@
+#include "spline/instantiate.hpp"
+
+namespace splinex {
+SPLINEX_INSTANTIATE_KERNEL(double)
+}

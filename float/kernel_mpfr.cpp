@@ -1,0 +1,6 @@
+#include "float/mpfr.hpp"
+#include "spline/instantiate.hpp"
+
+namespace splinex {
+SPLINEX_INSTANTIATE_KERNEL(Mpfr)
+}

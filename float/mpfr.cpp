@@ -1,0 +1,43 @@
+#include "float/mpfr.hpp"
+
+#include <cstdlib>
+#include <memory>
+
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+Mpfr::Precision::Precision(long bits) : old_(current_bits()) {
+  if (bits < 24 || bits > 1'000'000)
+    throw UsageError("arith", "MPFR precision " + std::to_string(bits) + " bits is out of range",
+                     "use mpfr:BITS with 24 <= BITS <= 1000000");
+  current_bits() = bits;
+}
+
+Rational to_rational(const Mpfr& x) {
+  if (!mpfr_number_p(x.get()))
+    throw ParseError("value", "an MPFR result is NaN or infinite", "check the input for divisions by zero");
+  if (mpfr_zero_p(x.get())) return Rational(0);
+  Integer m;
+  const mpfr_exp_t e = mpfr_get_z_2exp(m.backend().data(), x.get());
+  Rational r(m);
+  Integer p2;
+  mpz_ui_pow_ui(p2.backend().data(), 2, static_cast<unsigned long>(e < 0 ? -e : e));
+  return e < 0 ? Rational(r / Rational(p2)) : Rational(r * Rational(p2));
+}
+
+std::string to_decimal_string(const Mpfr& x) {
+  if (mpfr_zero_p(x.get())) return "0";
+  mpfr_exp_t exp10 = 0;
+  // n = 0: MPFR chooses enough digits that reading them back at this precision round-trips.
+  std::unique_ptr<char, void (*)(char*)> s(mpfr_get_str(nullptr, &exp10, 10, 0, x.get(), MPFR_RNDN), mpfr_free_str);
+  std::string digits(s.get());
+  std::string sign;
+  if (!digits.empty() && digits[0] == '-') { sign = "-"; digits.erase(0, 1); }
+  // value = 0.DIGITS * 10^exp10 = D.IGITS * 10^(exp10-1)
+  std::string out = sign + digits.substr(0, 1);
+  if (digits.size() > 1) out += "." + digits.substr(1);
+  return out + "e" + std::to_string(static_cast<long>(exp10) - 1);
+}
+
+}  // namespace splinex

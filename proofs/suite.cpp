@@ -1,0 +1,231 @@
+#include "proofs/suite.hpp"
+
+#include <random>
+
+#include "exact/random_spline.hpp"
+#include "spline/hodograph.hpp"
+#include "spline/kernel.hpp"
+
+namespace splinex {
+
+namespace {
+
+// Aggregates the identity checks of one named proof over its cases.
+struct Accumulator {
+  ProofReport rep;
+  int max_bound = 0;
+  void add(const IdentityCheck& c, std::size_t case_no) {
+    rep.points += c.points;
+    rep.cells += c.cells;
+    for (int b : c.degree_bound) max_bound = std::max(max_bound, b);
+    if (!c.holds && rep.proved) {
+      rep.proved = false;
+      rep.counterexample = "case " + std::to_string(case_no) + ": " + c.counterexample;
+    }
+  }
+  void fail(const std::string& why, std::size_t case_no) {
+    if (rep.proved) {
+      rep.proved = false;
+      rep.counterexample = "case " + std::to_string(case_no) + ": " + why;
+    }
+  }
+};
+
+using CaseFn = std::function<void(const BSpline<Rational>&, std::mt19937_64&, Accumulator&, std::size_t)>;
+
+ProofEntry entry(std::string name, std::string identity, std::string bound, CaseFn fn, std::uint64_t seed) {
+  ProofEntry e;
+  e.name = name;
+  e.identity = identity;
+  e.run = [=](std::size_t cases) {
+    Accumulator acc;
+    acc.rep.name = name;
+    acc.rep.identity = identity;
+    std::mt19937_64 rng(seed);
+    for (std::size_t i = 0; i < cases; ++i) {
+      const BSpline<Rational> S = random_case(rng);
+      fn(S, rng, acc, i);
+      ++acc.rep.cases;
+    }
+    acc.rep.degree_bound = bound + ", largest used: " + std::to_string(acc.max_bound);
+    return acc.rep;
+  };
+  return e;
+}
+
+int random_dir(const BSpline<Rational>& S, std::mt19937_64& rng) {
+  return static_cast<int>(std::uniform_int_distribution<int>(0, S.dim() - 1)(rng));
+}
+
+// A random knot to insert in direction d that keeps multiplicity <= p (so the spline stays
+// continuous there) and the number of times it may go in.
+std::pair<Rational, int> random_knot(const BSpline<Rational>& S, int d, std::mt19937_64& rng) {
+  const auto& U = S.knots[d];
+  const int p = S.degrees[d];
+  // Half the time reuse an existing interior knot, else a fresh value.
+  std::vector<Rational> interior;
+  for (std::size_t i = p + 1; i < S.count(d); ++i)
+    if (multiplicity(U, U[i]) < static_cast<std::size_t>(p)) interior.push_back(U[i]);
+  Rational x = (!interior.empty() && rng() % 2) ? interior[rng() % interior.size()]
+                                                 : random_inside(S.domain_lo(d), S.domain_hi(d), rng);
+  const int room = p + 1 - static_cast<int>(multiplicity(U, x));
+  return {x, 1 + static_cast<int>(rng() % std::max(1, room))};
+}
+
+bool same_representation(const BSpline<Rational>& A, const BSpline<Rational>& B) {
+  return A.degrees == B.degrees && A.knots == B.knots && A.q == B.q && A.points == B.points && A.weights == B.weights;
+}
+
+std::vector<ProofEntry> make_registry() {
+  std::vector<ProofEntry> r;
+  const std::string same = "max(p, p') per direction (p' p for rational: cross-multiplied numerators)";
+  r.push_back(entry("knot-insertion-boehm", "S with a knot inserted r times (A5.1) = S on the whole domain", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      auto [x, times] = random_knot(S, d, rng);
+                      acc.add(prove_same_function(S, insert_knot(S, d, x, times), ""), i);
+                    }, 101));
+  r.push_back(entry("knot-refinement-a54", "S refined by a knot list in one pass (A5.4) = S", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      std::vector<Rational> X;
+                      const std::size_t nx = 1 + rng() % 8;
+                      for (std::size_t j = 0; j < nx; ++j) X.push_back(random_inside(S.domain_lo(d), S.domain_hi(d), rng));
+                      X.push_back(X.front());  // a repeated knot
+                      acc.add(prove_same_function(S, refine_knots(S, d, X), ""), i);
+                    }, 102));
+  r.push_back(entry("insertion-agreement", "A5.1 applied knot by knot and A5.4 give identical knots and control points",
+                    "none (coefficient equality)",
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      std::vector<Rational> X;
+                      for (std::size_t j = 0; j < 1 + rng() % 6; ++j) X.push_back(random_inside(S.domain_lo(d), S.domain_hi(d), rng));
+                      BSpline<Rational> B = S;
+                      for (const auto& x : X) B = insert_knot(B, d, x, 1);
+                      if (!same_representation(B, refine_knots(S, d, X))) acc.fail("the control nets differ", i);
+                    }, 103));
+  r.push_back(entry("degree-elevation-a59", "S elevated by t in a direction (A5.9, via Bezier pieces) = S", "p + t per direction",
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      const int t = 1 + static_cast<int>(rng() % 3);
+                      acc.add(prove_same_function(S, elevate_degree(S, d, t, ElevationMethod::bezier_pieces), ""), i);
+                    }, 104));
+  r.push_back(entry("degree-elevation-blossom", "S elevated by t (blossom / Cohen-Lyche-Schumaker) = S", "p + t per direction",
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      const int t = 1 + static_cast<int>(rng() % 3);
+                      acc.add(prove_same_function(S, elevate_degree(S, d, t, ElevationMethod::blossom), ""), i);
+                    }, 105));
+  r.push_back(entry("elevation-agreement", "A5.9 and the blossom elevation give identical knots and control points",
+                    "none (coefficient equality)",
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      const int t = 1 + static_cast<int>(rng() % 3);
+                      if (!same_representation(elevate_degree(S, d, t, ElevationMethod::bezier_pieces),
+                                               elevate_degree(S, d, t, ElevationMethod::blossom)))
+                        acc.fail("the control nets differ", i);
+                    }, 106));
+  r.push_back(entry("bezier-extraction", "every Bezier piece = S on its box, and the boxes tile the domain", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64&, Accumulator& acc, std::size_t i) {
+                      const auto pieces = extract_bezier(S);
+                      // Tiling: the boxes are exactly the products of consecutive breakpoints.
+                      std::size_t expected = 1;
+                      for (int d = 0; d < S.dim(); ++d) expected *= breakpoints(S.knots[d], S.degrees[d], S.count(d)).size() - 1;
+                      if (pieces.size() != expected) acc.fail("wrong number of pieces", i);
+                      for (const auto& pc : pieces) {
+                        for (int d = 0; d < S.dim(); ++d)
+                          if (!is_clamped(pc.spline.knots[d], pc.spline.degrees[d], pc.spline.count(d)) ||
+                              pc.spline.count(d) != static_cast<std::size_t>(pc.spline.degrees[d]) + 1)
+                            acc.fail("a piece is not in Bezier form", i);
+                        acc.add(prove_equal_on_box(S, pc.spline, pc.box, {}, ""), i);
+                      }
+                    }, 107));
+  r.push_back(entry("split", "the two halves of S at x equal S on [lo, x] and [x, hi]", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      const Rational x = random_inside(S.domain_lo(d), S.domain_hi(d), rng);
+                      auto [L, R] = split_at(S, d, x);
+                      auto bl = domain_box(S), br = domain_box(S);
+                      bl[d].second = x;
+                      br[d].first = x;
+                      if (domain_box(L) != bl || domain_box(R) != br) acc.fail("the halves have the wrong domains", i);
+                      acc.add(prove_equal_on_box(S, L, bl, {}, ""), i);
+                      acc.add(prove_equal_on_box(S, R, br, {}, ""), i);
+                    }, 108));
+  r.push_back(entry("reparametrize", "R(phi(x)) = S(x), phi affine from the domain onto [lo, hi]", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      const Rational lo(static_cast<long>(rng() % 2001) - 1000, 7), hi = lo + Rational(1 + rng() % 50, 3);
+                      const BSpline<Rational> R = reparametrize(S, d, lo, hi);
+                      std::vector<AffineMap1> phi(S.dim());
+                      phi[d].scale = (hi - lo) / (S.domain_hi(d) - S.domain_lo(d));
+                      phi[d].shift = lo - phi[d].scale * S.domain_lo(d);
+                      acc.add(prove_equal_on_box(S, R, domain_box(S), phi, ""), i);
+                    }, 109));
+  r.push_back(entry("reverse", "R(a + b - x) = S(x) on the domain [a, b]", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      const int d = random_dir(S, rng);
+                      std::vector<AffineMap1> phi(S.dim());
+                      phi[d].scale = -1;
+                      phi[d].shift = S.domain_lo(d) + S.domain_hi(d);
+                      acc.add(prove_equal_on_box(S, reverse(S, d), domain_box(S), phi, ""), i);
+                    }, 110));
+  r.push_back(entry("clamp", "S with clamped end knots in every direction = S on the domain", same,
+                    [](const BSpline<Rational>& S, std::mt19937_64&, Accumulator& acc, std::size_t i) {
+                      acc.add(prove_same_function(S, clamp_all(S), ""), i);
+                    }, 111));
+  r.push_back(entry("derivative-hodograph",
+                    "dS/dx_d by A2.3 basis derivatives = the hodograph B-spline (A3.3) of polynomial S",
+                    "p - 1 per direction d, p elsewhere",
+                    [](const BSpline<Rational>& S0, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      BSpline<Rational> S = S0;
+                      S.weights.clear();  // polynomial version of the case
+                      const int d = random_dir(S, rng);
+                      const BSpline<Rational> H = hodograph(S, d);
+                      std::vector<int> orders(S.dim(), 0);
+                      orders[d] = 1;
+                      std::vector<std::vector<Rational>> cuts;
+                      std::vector<int> bound;
+                      for (int e = 0; e < S.dim(); ++e) {
+                        cuts.push_back(breakpoints(S.knots[e], S.degrees[e], S.count(e)));
+                        bound.push_back(e == d ? S.degrees[e] - 1 : S.degrees[e]);
+                      }
+                      acc.add(prove_by_samples(cuts, bound,
+                                               [&](const std::vector<Rational>& x) {
+                                                 return derivative(S, x, orders) == evaluate(H, x)
+                                                            ? std::string()
+                                                            : std::string("A2.3 and the hodograph differ");
+                                               },
+                                               ""),
+                              i);
+                    }, 112));
+  return r;
+}
+
+}  // namespace
+
+const std::vector<ProofEntry>& proof_registry() {
+  static const std::vector<ProofEntry> registry = make_registry();
+  return registry;
+}
+
+std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases) {
+  std::vector<ProofReport> out;
+  const auto& reg = proof_registry();
+  if (names.empty()) {
+    for (const auto& e : reg) out.push_back(e.run(cases));
+    return out;
+  }
+  for (const auto& n : names) {
+    auto it = std::find_if(reg.begin(), reg.end(), [&](const ProofEntry& e) { return e.name == n; });
+    if (it == reg.end()) {
+      std::string all;
+      for (const auto& e : reg) all += (all.empty() ? "" : ", ") + e.name;
+      throw UsageError("prove", "unknown proof \"" + n + "\"", "use one of: " + all);
+    }
+    out.push_back(it->run(cases));
+  }
+  return out;
+}
+
+}  // namespace splinex

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# splinex from zero: install what is missing (Debian 12, as root), configure, build, then run
+#   scripts/run.sh test      the default test suite through ctest (what CI runs)
+#   scripts/run.sh report    the main job: build/bin/splinex report --out results
+#   scripts/run.sh sanitize  the ASan+UBSan build and its test run
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what=${1:-test}
+
+packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libboost-dev libcgal-dev
+          libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "splinex: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+case "$what" in
+  test)
+    cmake --preset default >&2
+    cmake --build --preset default
+    ctest --preset default ;;
+  report)
+    cmake --preset default >&2
+    cmake --build --preset default --target splinex
+    build/bin/splinex report --out results ;;
+  sanitize)
+    cmake --preset sanitize >&2
+    cmake --build --preset sanitize
+    ctest --preset sanitize ;;
+  *) echo "usage: scripts/run.sh [test|report|sanitize]" >&2; exit 2 ;;
+esac

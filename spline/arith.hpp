@@ -1,0 +1,23 @@
+// The arithmetic concept. Generic code in spline/ is written against a scalar type T with
+//   T(int), T(long), copy/move, + - * / (and the compound forms), unary -, == and <,
+// and nothing else: no literal double, no std::abs, no sqrt. A constant is written T(1) / T(3).
+// Comparisons appear only where the algorithm needs them (span search, multiplicities, the
+// alpha == 0 test of A5.4); they are exact in exact arithmetic.
+//
+// Each concrete arithmetic specializes ArithTraits<T> (exact/: Rational; float/: double, Mpfr):
+//   static constexpr bool exact;            // no rounding anywhere
+//   static std::string name();              // "exact", "double", "mpfr:113"
+//   static int precision_bits();            // significand bits (0 for exact)
+//   static T from_rational(const Rational&);     // correctly rounded (exact for Rational)
+//   static Rational to_rational(const T&);       // exact: every binary float is a dyadic rational
+//   static nlohmann::json to_json(const T&);     // fractions / round-trip numbers / all digits
+// Conversions are therefore explicit and named, and a float result can always be measured
+// exactly against the exact one (crosscheck/).
+#pragma once
+
+namespace splinex {
+
+template <class T>
+struct ArithTraits;  // specialized per arithmetic; see above
+
+}  // namespace splinex

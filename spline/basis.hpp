@@ -1,0 +1,79 @@
+// B-spline basis functions: NURBS Book A2.2 (BasisFuns) and A2.3 (DersBasisFuns).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+namespace splinex {
+
+// A2.2: the p+1 non-zero basis functions N_{s-p..s,p}(x) on span s.
+template <class T>
+std::vector<T> basis_funs(std::size_t s, const T& x, int p, const std::vector<T>& U) {
+  std::vector<T> N(p + 1), left(p + 1), right(p + 1);
+  N[0] = T(1);
+  for (int j = 1; j <= p; ++j) {
+    left[j] = x - U[s + 1 - j];
+    right[j] = U[s + j] - x;
+    T saved(0);
+    for (int r = 0; r < j; ++r) {
+      T temp = N[r] / (right[r + 1] + left[j - r]);
+      N[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    N[j] = saved;
+  }
+  return N;
+}
+
+// A2.3: ders[k][j] = k-th derivative of N_{s-p+j,p} at x, k = 0..nd (rows past p are zero).
+template <class T>
+std::vector<std::vector<T>> ders_basis_funs(std::size_t s, const T& x, int p, int nd, const std::vector<T>& U) {
+  std::vector<std::vector<T>> ndu(p + 1, std::vector<T>(p + 1)), a(2, std::vector<T>(p + 1));
+  std::vector<T> left(p + 1), right(p + 1);
+  ndu[0][0] = T(1);
+  for (int j = 1; j <= p; ++j) {
+    left[j] = x - U[s + 1 - j];
+    right[j] = U[s + j] - x;
+    T saved(0);
+    for (int r = 0; r < j; ++r) {
+      ndu[j][r] = right[r + 1] + left[j - r];
+      T temp = ndu[r][j - 1] / ndu[j][r];
+      ndu[r][j] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    ndu[j][j] = saved;
+  }
+  std::vector<std::vector<T>> ders(nd + 1, std::vector<T>(p + 1, T(0)));
+  for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
+  for (int r = 0; r <= p; ++r) {
+    int s1 = 0, s2 = 1;
+    a[0][0] = T(1);
+    for (int k = 1; k <= nd && k <= p; ++k) {
+      T d(0);
+      int rk = r - k, pk = p - k;
+      if (r >= k) {
+        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        d = a[s2][0] * ndu[rk][pk];
+      }
+      int j1 = (rk >= -1) ? 1 : -rk;
+      int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+      for (int j = j1; j <= j2; ++j) {
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        d += a[s2][j] * ndu[rk + j][pk];
+      }
+      if (r <= pk) {
+        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        d += a[s2][k] * ndu[r][pk];
+      }
+      ders[k][r] = d;
+      std::swap(s1, s2);
+    }
+  }
+  T f(p);
+  for (int k = 1; k <= nd && k <= p; ++k) {
+    for (int j = 0; j <= p; ++j) ders[k][j] *= f;
+    f *= T(p - k);
+  }
+  return ders;
+}
+
+}  // namespace splinex

@@ -1,0 +1,172 @@
+// Tensor-product B-splines of any parametric dimension k >= 1 (curves k=1, surfaces k=2,
+// trivariates k=3), control points in R^q (q >= 1; coordinates past the geometry are
+// attributes), polynomial or rational. Generic over the scalar T (see spline/arith.hpp).
+//
+// Storage: control point i = (i_0, ..., i_{k-1}) has flat index i_0 + n_0*(i_1 + n_1*(...)),
+// direction 0 varying fastest (the JSON order); its q coordinates are contiguous.
+// Rational splines store Cartesian points plus weights; operations work on the homogeneous form
+// (w*P, w), NURBS Book ch. 4.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "spline/errors.hpp"
+#include "spline/knots.hpp"
+#include "spline/limits.hpp"
+
+namespace splinex {
+
+template <class T>
+struct BSpline {
+  std::vector<int> degrees;           // one per direction
+  std::vector<std::vector<T>> knots;  // one knot vector per direction
+  int q = 0;                          // coordinates per control point
+  std::vector<T> points;              // q * size() values
+  std::vector<T> weights;             // empty: polynomial; else size() positive weights
+
+  int dim() const { return static_cast<int>(degrees.size()); }
+  std::size_t count(int d) const { return knots[d].size() - degrees[d] - 1; }
+  std::size_t size() const {
+    std::size_t s = 1;
+    for (int d = 0; d < dim(); ++d) s *= count(d);
+    return s;
+  }
+  bool is_rational() const { return !weights.empty(); }
+  T domain_lo(int d) const { return knots[d][degrees[d]]; }
+  T domain_hi(int d) const { return knots[d][count(d)]; }
+};
+
+// Checks every structural rule and throws ValidationError/DomainError naming the field.
+// Weights must be positive (zero or negative weights make the homogeneous form degenerate).
+template <class T>
+void validate(const BSpline<T>& S, const Limits& limits = {}) {
+  if (S.degrees.empty()) throw ValidationError("degrees", "is empty", "give one degree per parametric direction");
+  if (S.knots.size() != S.degrees.size())
+    throw ValidationError("knots",
+                          "has " + std::to_string(S.knots.size()) + " knot vectors for " +
+                              std::to_string(S.degrees.size()) + " degrees",
+                          "give one knot vector per entry of \"degrees\"");
+  if (S.q < 1) throw ValidationError("points", "control points have no coordinates", "give points in R^q, q >= 1");
+  std::size_t total = 1;
+  for (int d = 0; d < S.dim(); ++d) {
+    const std::string f = "knots[" + std::to_string(d) + "]";
+    limits.check_degree(S.degrees[d], "degrees[" + std::to_string(d) + "]");
+    if (S.degrees[d] < 0) throw ValidationError("degrees[" + std::to_string(d) + "]", "is negative", "use a degree >= 0");
+    if (S.knots[d].size() < static_cast<std::size_t>(2 * S.degrees[d] + 2))
+      throw ValidationError(f,
+                            "has " + std::to_string(S.knots[d].size()) + " knots; degree " +
+                                std::to_string(S.degrees[d]) + " needs at least 2*(degree+1) = " +
+                                std::to_string(2 * S.degrees[d] + 2),
+                            "add knots or lower the degree");
+    validate_knots(S.knots[d], S.degrees[d], S.count(d), f);
+    total = checked_product(total, S.count(d), limits, "points");
+  }
+  if (S.points.size() != total * static_cast<std::size_t>(S.q))
+    throw ValidationError("points",
+                          "has " + std::to_string(S.points.size() / S.q) +
+                              " control points but the knot vectors and degrees need " + std::to_string(total),
+                          "give prod_d (#knots_d - degree_d - 1) points, direction 0 varying fastest");
+  if (S.is_rational()) {
+    if (S.weights.size() != total)
+      throw ValidationError("weights",
+                            "has " + std::to_string(S.weights.size()) + " weights for " + std::to_string(total) +
+                                " control points",
+                            "give one weight per control point, or omit \"weights\"");
+    for (std::size_t i = 0; i < total; ++i)
+      if (!(T(0) < S.weights[i]))
+        throw ValidationError("weights[" + std::to_string(i) + "]", "is not positive",
+                              "weights must be > 0");
+  }
+}
+
+// Homogeneous coordinates: q+1 values (w*P, w) per control point for rational splines,
+// the q Cartesian values otherwise.
+template <class T>
+std::vector<T> homogeneous_points(const BSpline<T>& S) {
+  if (!S.is_rational()) return S.points;
+  const std::size_t n = S.size(), q = S.q;
+  std::vector<T> H(n * (q + 1));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < q; ++c) H[i * (q + 1) + c] = S.points[i * q + c] * S.weights[i];
+    H[i * (q + 1) + q] = S.weights[i];
+  }
+  return H;
+}
+
+template <class T>
+void set_from_homogeneous(BSpline<T>& S, std::vector<T>&& H, bool rational) {
+  if (!rational) { S.points = std::move(H); S.weights.clear(); return; }
+  const std::size_t q = S.q, n = H.size() / (q + 1);
+  S.points.resize(n * q);
+  S.weights.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const T& w = H[i * (q + 1) + q];
+    if (!(T(0) < w))
+      throw ValidationError("weights[" + std::to_string(i) + "]", "became non-positive in the homogeneous form",
+                            "use positive weights");
+    for (std::size_t c = 0; c < q; ++c) S.points[i * q + c] = H[i * (q + 1) + c] / w;
+    S.weights[i] = w;
+  }
+}
+
+// A curve operation on a block of n "points" of m coordinates each (contiguous, point-major),
+// with degree p and knot vector U. It returns the new degree, knots and points.
+template <class T>
+struct CurveBlock {
+  int p = 0;
+  std::vector<T> U;
+  std::vector<T> P;  // n' * m
+};
+
+// Applies a univariate operation along direction d of a tensor-product spline: every fibre in
+// direction d is one curve whose "point" gathers the q(+1) homogeneous coordinates of all control
+// points before d. With the storage order above such a fibre is one contiguous block, so no
+// copying into temporaries is needed. `op(p, U, P, n, m)` depends on the points only linearly, so
+// every fibre gets the same new degree and knot vector; the first fibre's are kept.
+template <class T, class Op>
+BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
+  const bool rational = S.is_rational();
+  const std::size_t qq = S.q + (rational ? 1 : 0);
+  std::size_t before = 1, after = 1;
+  for (int e = 0; e < d; ++e) before *= S.count(e);
+  for (int e = d + 1; e < S.dim(); ++e) after *= S.count(e);
+  const std::size_t n = S.count(d), m = qq * before;
+  std::vector<T> H = homogeneous_points(S);
+  std::vector<T> out;
+  BSpline<T> R;
+  for (std::size_t b = 0; b < after; ++b) {
+    CurveBlock<T> r = op(S.degrees[d], S.knots[d], H.data() + b * n * m, n, m);
+    if (b == 0) {
+      R.degrees = S.degrees;
+      R.knots = S.knots;
+      R.degrees[d] = r.p;
+      R.knots[d] = std::move(r.U);
+      out.reserve(r.P.size() * after);
+    }
+    for (auto& v : r.P) out.push_back(std::move(v));
+  }
+  R.q = S.q;
+  set_from_homogeneous(R, std::move(out), rational);
+  return R;
+}
+
+// Converts every scalar with `conv` (e.g. exact -> double by correct rounding).
+template <class U, class T, class Conv>
+BSpline<U> convert(const BSpline<T>& S, Conv&& conv) {
+  BSpline<U> R;
+  R.degrees = S.degrees;
+  R.q = S.q;
+  for (const auto& K : S.knots) {
+    std::vector<U> k;
+    k.reserve(K.size());
+    for (const auto& x : K) k.push_back(conv(x));
+    R.knots.push_back(std::move(k));
+  }
+  for (const auto& x : S.points) R.points.push_back(conv(x));
+  for (const auto& x : S.weights) R.weights.push_back(conv(x));
+  return R;
+}
+
+}  // namespace splinex

@@ -1,0 +1,215 @@
+#pragma once
+#include <algorithm>
+#include <string>
+
+#include "spline/elevate.hpp"
+#include "spline/insert_impl.hpp"
+
+namespace splinex {
+namespace detail {
+
+// Binomial coefficient as an exact T (T(integer) products; no floating intermediate).
+template <class T>
+T binomial(int n, int k) {
+  if (k < 0 || k > n) return T(0);
+  T r(1);
+  for (int i = 1; i <= k; ++i) r = r * T(n - k + i) / T(i);
+  return r;
+}
+
+// NURBS Book A5.9 DegreeElevateCurve on a clamped curve block (n points of m coordinates).
+template <class T>
+CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, std::size_t count, std::size_t mm,
+                                   int t) {
+  const int n = static_cast<int>(count) - 1;
+  const int m = n + p + 1, ph = p + t, ph2 = ph / 2;
+  std::vector<std::vector<T>> bezalfs(ph + 1, std::vector<T>(p + 1, T(0)));
+  bezalfs[0][0] = T(1);
+  bezalfs[ph][p] = T(1);
+  for (int i = 1; i <= ph2; ++i) {
+    const T inv = T(1) / binomial<T>(ph, i);
+    const int mpi = std::min(p, i);
+    for (int j = std::max(0, i - t); j <= mpi; ++j) bezalfs[i][j] = inv * binomial<T>(p, j) * binomial<T>(t, i - j);
+  }
+  for (int i = ph2 + 1; i <= ph - 1; ++i) {
+    const int mpi = std::min(p, i);
+    for (int j = std::max(0, i - t); j <= mpi; ++j) bezalfs[i][j] = bezalfs[ph - i][p - j];
+  }
+  // Number of distinct interior knots s gives the result size n + 1 + t*(s+1).
+  const int s_int = static_cast<int>(breakpoints(U, p, count).size()) - 2;
+  const int nh_max = n + t * (s_int + 1);
+  CurveBlock<T> out;
+  out.p = ph;
+  out.U.assign(nh_max + ph + 2, T(0));
+  out.P.assign((nh_max + 1) * mm, T(0));
+  std::vector<T>& Uh = out.U;
+  T* Qw = out.P.data();
+  std::vector<T> bpts((p + 1) * mm), ebpts((ph + 1) * mm), Nextbpts(std::max(p - 1, 1) * mm), alfs(std::max(p - 1, 1));
+  auto pt = [mm](std::vector<T>& v, int i) { return v.data() + static_cast<std::size_t>(i) * mm; };
+  auto qt = [mm, Qw](int i) { return Qw + static_cast<std::size_t>(i) * mm; };
+  auto assign = [mm](T* dst, const T* src) { std::copy(src, src + mm, dst); };
+  // dst = a*dst + (1-a)*other  ==  other + a*(dst - other)
+  auto blend = [mm](T* dst, const T& a, const T* other) {
+    for (std::size_t c = 0; c < mm; ++c) dst[c] = other[c] + a * (dst[c] - other[c]);
+  };
+
+  int mh = ph, kind = ph + 1, r = -1, a = p, b = p + 1, cind = 1;
+  T ua = U[0];
+  assign(qt(0), Pw);
+  for (int i = 0; i <= ph; ++i) Uh[i] = ua;
+  for (int i = 0; i <= p; ++i) assign(pt(bpts, i), Pw + static_cast<std::size_t>(i) * mm);
+  while (b < m) {
+    int i = b;
+    while (b < m && U[b] == U[b + 1]) ++b;
+    const int mul = b - i + 1;
+    mh += mul + t;
+    const T ub = U[b];
+    const int oldr = r;
+    r = p - mul;
+    const int lbz = oldr > 0 ? (oldr + 2) / 2 : 1;
+    const int rbz = r > 0 ? ph - (r + 1) / 2 : ph;
+    if (r > 0) {  // insert knot u(b) r times to get the Bezier segment
+      const T numer = ub - ua;
+      for (int k = p; k > mul; --k) alfs[k - mul - 1] = numer / (U[a + k] - ua);
+      for (int j = 1; j <= r; ++j) {
+        const int save = r - j, s = mul + j;
+        for (int k = p; k >= s; --k) blend(pt(bpts, k), alfs[k - s], pt(bpts, k - 1));
+        assign(pt(Nextbpts, save), pt(bpts, p));
+      }
+    }
+    for (int ii = lbz; ii <= ph; ++ii) {  // degree elevate the Bezier segment
+      T* e = pt(ebpts, ii);
+      std::fill(e, e + mm, T(0));
+      const int mpi = std::min(p, ii);
+      for (int j = std::max(0, ii - t); j <= mpi; ++j) {
+        const T& f = bezalfs[ii][j];
+        const T* src = pt(bpts, j);
+        for (std::size_t c = 0; c < mm; ++c) e[c] += f * src[c];
+      }
+    }
+    if (oldr > 1) {  // remove knot u = U[a] oldr times
+      int first = kind - 2, last = kind;
+      const T den = ub - ua;
+      const T bet = (ub - Uh[kind - 1]) / den;
+      for (int tr = 1; tr < oldr; ++tr) {
+        int ii = first, j = last, kj = j - kind + 1;
+        while (j - ii > tr) {
+          if (ii < cind) {
+            const T alf = (ub - Uh[ii]) / (ua - Uh[ii]);
+            blend(qt(ii), alf, qt(ii - 1));
+          }
+          if (j >= lbz) {
+            if (j - tr <= kind - ph + oldr) {
+              const T gam = (ub - Uh[j - tr]) / den;
+              blend(pt(ebpts, kj), gam, pt(ebpts, kj + 1));
+            } else {
+              blend(pt(ebpts, kj), bet, pt(ebpts, kj + 1));
+            }
+          }
+          ++ii;
+          --j;
+          --kj;
+        }
+        --first;
+        ++last;
+      }
+    }
+    if (a != p)  // load the knot ua
+      for (int ii = 0; ii < ph - oldr; ++ii) Uh[kind++] = ua;
+    for (int j = lbz; j <= rbz; ++j) assign(qt(cind++), pt(ebpts, j));
+    if (b < m) {  // set up for the next pass
+      for (int j = 0; j < r; ++j) assign(pt(bpts, j), pt(Nextbpts, j));
+      for (int j = r; j <= p; ++j) assign(pt(bpts, j), Pw + static_cast<std::size_t>(b - p + j) * mm);
+      a = b;
+      ++b;
+      ua = ub;
+    } else {
+      for (int ii = 0; ii <= ph; ++ii) Uh[kind + ii] = ub;
+    }
+  }
+  const int nh = mh - ph - 1;
+  out.U.resize(nh + ph + 2);
+  out.P.resize(static_cast<std::size_t>(nh + 1) * mm);
+  return out;
+}
+
+// The polar form (blossom) of the polynomial piece of a degree-p block on span s, evaluated at
+// x[0..p-1]: de Boor's triangle with argument x[r-1] at level r.
+template <class T>
+void blossom(int p, const std::vector<T>& U, const T* P, std::size_t mm, std::size_t s, const T* x, std::vector<T>& work,
+             T* out) {
+  work.assign(P + (s - p) * mm, P + (s + 1) * mm);
+  for (int r = 1; r <= p; ++r)
+    for (int i = p; i >= r; --i) {
+      const std::size_t idx = s - p + i;
+      const T alpha = (x[r - 1] - U[idx]) / (U[idx + p - r + 1] - U[idx]);
+      T* di = work.data() + i * mm;
+      const T* dm = work.data() + (i - 1) * mm;
+      for (std::size_t c = 0; c < mm; ++c) di[c] = dm[c] + alpha * (di[c] - dm[c]);
+    }
+  std::copy(work.begin() + p * mm, work.begin() + (p + 1) * mm, out);
+}
+
+// Elevation by one via the blossom on a clamped block.
+template <class T>
+CurveBlock<T> elevate_by_one_blossom(int p, const std::vector<T>& U, const T* P, std::size_t count, std::size_t mm) {
+  CurveBlock<T> out;
+  out.p = p + 1;
+  // Elevated knots: every distinct knot once more.
+  for (std::size_t i = 0; i < U.size(); ++i) {
+    out.U.push_back(U[i]);
+    if (i + 1 == U.size() || U[i] < U[i + 1]) out.U.push_back(U[i]);
+  }
+  const std::vector<T>& V = out.U;
+  const std::size_t nbar = V.size() - (p + 1) - 1;
+  out.P.assign(nbar * mm, T(0));
+  std::vector<T> args(p), work, val(mm);
+  const T inv = T(1) / T(p + 1);
+  for (std::size_t j = 0; j < nbar; ++j) {
+    // A non-empty elevated interval [V_l, V_{l+1}) with j <= l <= j+p+1 inside the domain.
+    std::size_t l = j + p + 1;
+    while (l > std::max<std::size_t>(j, p + 1) && !(V[l] < V[l + 1])) --l;
+    const std::size_t s = find_span(U, p, count, V[l]);
+    T* Q = out.P.data() + j * mm;
+    for (int k = 0; k <= p; ++k) {  // drop V[j+1+k]
+      for (int a = 0, b = 0; a <= p; ++a)
+        if (a != k) args[b++] = V[j + 1 + a];
+      blossom(p, U, P, mm, s, args.data(), work, val.data());
+      for (std::size_t c = 0; c < mm; ++c) Q[c] += val[c];
+    }
+    for (std::size_t c = 0; c < mm; ++c) Q[c] *= inv;
+  }
+  return out;
+}
+
+}  // namespace detail
+
+template <class T>
+std::size_t elevated_count(const BSpline<T>& S, int d, int t) {
+  const std::size_t segments = breakpoints(S.knots[d], S.degrees[d], S.count(d)).size() - 1;
+  // Clamped: every segment gains t control points. Clamping an unclamped direction first gives
+  // count' <= count, so this is an upper bound there.
+  return S.count(d) + static_cast<std::size_t>(t) * segments;
+}
+
+template <class T>
+BSpline<T> elevate_degree(const BSpline<T>& S, int d, int t, ElevationMethod method, const Limits& limits) {
+  detail::check_direction(S, d);
+  if (t < 0) throw UsageError("by", "elevation amount " + std::to_string(t) + " is negative", "elevate by t >= 0");
+  limits.check_degree(static_cast<long>(S.degrees[d]) + t, "by");
+  if (t == 0) return S;
+  const std::size_t per = S.size() / S.count(d);
+  limits.check_count(checked_product(per, elevated_count(S, d, t), limits, "by"), "by");
+  BSpline<T> C = clamp(S, d, limits);
+  if (method == ElevationMethod::bezier_pieces)
+    return apply_along(C, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
+      return detail::degree_elevate_curve(p, U, P, n, m, t);
+    });
+  for (int step = 0; step < t; ++step)
+    C = apply_along(C, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
+      return detail::elevate_by_one_blossom(p, U, P, n, m);
+    });
+  return C;
+}
+
+}  // namespace splinex

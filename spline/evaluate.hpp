@@ -1,0 +1,26 @@
+// Evaluation and partial derivatives of any order of tensor-product B-splines, polynomial and
+// rational. Declarations; definitions in spline/evaluate_impl.hpp, instantiated for the standard
+// arithmetics in exact/ and float/.
+#pragma once
+#include <vector>
+
+#include "spline/bspline.hpp"
+
+namespace splinex {
+
+// S(x): q coordinates. Throws DomainError when x has the wrong size or leaves the domain.
+template <class T>
+std::vector<T> evaluate(const BSpline<T>& S, const std::vector<T>& x);
+
+// The partial derivative d^{k_0+...}S / dx_0^{k_0} ... at x (orders k_d >= 0, any size; a
+// derivative past the degree is zero). Rational splines use the quotient rule (A4.4 generalized
+// to k directions).
+template <class T>
+std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const std::vector<int>& orders);
+
+// The homogeneous value (w*S, w) for rational splines, S for polynomial ones: the polynomial
+// numerator/denominator used by proofs.
+template <class T>
+std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x);
+
+}  // namespace splinex

@@ -1,0 +1,138 @@
+#pragma once
+#include <functional>
+#include <string>
+
+#include "spline/basis.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex {
+namespace detail {
+
+template <class T>
+void check_point(const BSpline<T>& S, const std::vector<T>& x) {
+  if (x.size() != static_cast<std::size_t>(S.dim()))
+    throw DomainError("at", "has " + std::to_string(x.size()) + " coordinates for a spline of dimension " +
+                                std::to_string(S.dim()),
+                      "give one parameter per direction");
+  for (int d = 0; d < S.dim(); ++d)
+    if (x[d] < S.domain_lo(d) || S.domain_hi(d) < x[d])
+      throw DomainError("at[" + std::to_string(d) + "]", "lies outside the domain of direction " + std::to_string(d),
+                        "give a parameter in [U[p], U[n]] of that direction");
+}
+
+// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H[idx(i)][c].
+template <class T>
+void tensor_sum(const BSpline<T>& S, const std::vector<T>& H, std::size_t qq, const std::vector<std::size_t>& span,
+                const std::vector<const std::vector<T>*>& B, std::vector<T>& out) {
+  const int k = S.dim();
+  std::vector<std::size_t> stride(k);
+  std::size_t st = 1;
+  for (int d = 0; d < k; ++d) { stride[d] = st; st *= S.count(d); }
+  std::vector<int> i(k, 0);
+  out.assign(qq, T(0));
+  while (true) {
+    T w(1);
+    std::size_t idx = 0;
+    for (int d = 0; d < k; ++d) {
+      w *= (*B[d])[i[d]];
+      idx += (span[d] - S.degrees[d] + i[d]) * stride[d];
+    }
+    for (std::size_t c = 0; c < qq; ++c) out[c] += w * H[idx * qq + c];
+    int d = 0;
+    while (d < k && ++i[d] > S.degrees[d]) { i[d] = 0; ++d; }
+    if (d == k) break;
+  }
+}
+
+}  // namespace detail
+
+template <class T>
+std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x) {
+  detail::check_point(S, x);
+  const int k = S.dim();
+  std::vector<std::size_t> span(k);
+  std::vector<std::vector<T>> N(k);
+  std::vector<const std::vector<T>*> B(k);
+  for (int d = 0; d < k; ++d) {
+    span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
+    N[d] = basis_funs(span[d], x[d], S.degrees[d], S.knots[d]);
+    B[d] = &N[d];
+  }
+  std::vector<T> out;
+  detail::tensor_sum(S, homogeneous_points(S), S.q + (S.is_rational() ? 1 : 0), span, B, out);
+  return out;
+}
+
+template <class T>
+std::vector<T> evaluate(const BSpline<T>& S, const std::vector<T>& x) {
+  std::vector<T> h = evaluate_homogeneous(S, x);
+  if (!S.is_rational()) return h;
+  std::vector<T> r(S.q);
+  for (int c = 0; c < S.q; ++c) r[c] = h[c] / h[S.q];
+  return r;
+}
+
+template <class T>
+std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const std::vector<int>& orders) {
+  detail::check_point(S, x);
+  const int k = S.dim();
+  if (orders.size() != static_cast<std::size_t>(k))
+    throw UsageError("orders", "needs one derivative order per direction", "give " + std::to_string(k) + " orders");
+  for (int o : orders)
+    if (o < 0) throw UsageError("orders", "a derivative order is negative", "use orders >= 0");
+  std::vector<std::size_t> span(k);
+  std::vector<std::vector<std::vector<T>>> D(k);
+  for (int d = 0; d < k; ++d) {
+    span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
+    D[d] = ders_basis_funs(span[d], x[d], S.degrees[d], std::min(orders[d], S.degrees[d]), S.knots[d]);
+  }
+  const std::size_t qq = S.q + (S.is_rational() ? 1 : 0);
+  const std::vector<T> H = homogeneous_points(S);
+  // Homogeneous partials A^(beta) for every multi-index beta <= orders (beta_d past the degree: 0).
+  std::vector<std::size_t> bstride(k);
+  std::size_t nb = 1;
+  for (int d = 0; d < k; ++d) { bstride[d] = nb; nb *= orders[d] + 1; }
+  std::vector<std::vector<T>> A(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::vector<const std::vector<T>*> B(k);
+    bool zero = false;
+    for (int d = 0; d < k; ++d) {
+      int bd = static_cast<int>((b / bstride[d]) % (orders[d] + 1));
+      if (bd > S.degrees[d]) { zero = true; break; }
+      B[d] = &D[d][bd];
+    }
+    if (zero) A[b].assign(qq, T(0));
+    else detail::tensor_sum(S, H, qq, span, B, A[b]);
+    if (!S.is_rational()) continue;
+  }
+  const std::size_t top = nb - 1;
+  if (!S.is_rational()) return A[top];
+  // Quotient rule: C^(a) = (A^(a) - sum_{0 != b <= a} binom(a,b) w^(b) C^(a-b)) / w, in order of
+  // increasing multi-index so that every C^(a-b) is known.
+  const int q = S.q;
+  std::vector<std::vector<T>> C(nb, std::vector<T>(q));
+  auto binom = [](int n, int r) { long v = 1; for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i; return v; };
+  for (std::size_t a = 0; a < nb; ++a) {
+    std::vector<int> al(k);
+    for (int d = 0; d < k; ++d) al[d] = static_cast<int>((a / bstride[d]) % (orders[d] + 1));
+    std::vector<T> v(A[a].begin(), A[a].begin() + q);
+    for (std::size_t b = 1; b <= a; ++b) {
+      bool le = true;
+      long coef = 1;
+      std::size_t amb = 0;
+      for (int d = 0; d < k; ++d) {
+        int bd = static_cast<int>((b / bstride[d]) % (orders[d] + 1));
+        if (bd > al[d]) { le = false; break; }
+        coef *= binom(al[d], bd);
+        amb += (al[d] - bd) * bstride[d];
+      }
+      if (!le) continue;
+      const T f = T(coef) * A[b][q];
+      for (int c = 0; c < q; ++c) v[c] -= f * C[amb][c];
+    }
+    for (int c = 0; c < q; ++c) C[a][c] = v[c] / A[0][q];
+  }
+  return C[top];
+}
+
+}  // namespace splinex

@@ -1,0 +1,40 @@
+// Size limits that keep an operation from exhausting memory. Checked before any allocation.
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+struct Limits {
+  std::size_t max_control_points = 10'000'000;  // per spline, all directions multiplied
+  int max_degree = 100;                         // per direction
+
+  void check_count(std::size_t count, const std::string& what) const {
+    if (count > max_control_points)
+      throw SizeLimitError(what,
+                           "the result would have " + std::to_string(count) +
+                               " control points, above the limit of " +
+                               std::to_string(max_control_points),
+                           "ask for less, or raise the limit with --max-control-points");
+  }
+  void check_degree(long degree, const std::string& what) const {
+    if (degree > max_degree)
+      throw SizeLimitError(what,
+                           "degree " + std::to_string(degree) + " is above the limit of " +
+                               std::to_string(max_degree),
+                           "ask for a lower degree, or raise the limit with --max-degree");
+  }
+};
+
+// Multiply counts, throwing SizeLimitError instead of overflowing.
+inline std::size_t checked_product(std::size_t a, std::size_t b, const Limits& limits,
+                                   const std::string& what) {
+  if (a != 0 && b > limits.max_control_points / a + 1) limits.check_count(limits.max_control_points + 1, what);
+  std::size_t r = a * b;
+  limits.check_count(r, what);
+  return r;
+}
+
+}  // namespace splinex
