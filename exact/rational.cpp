@@ -24,6 +24,12 @@ bool all_digits(std::string_view s) {
                    "write an integer (\"-3\"), a fraction (\"22/7\") or a decimal (\"0.784\", \"1e-3\")");
 }
 
+// Boost reads "0784" as octal; decimal digits must reach it without leading zeros.
+Integer decimal_integer(std::string_view digits) {
+  while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
+  return Integer(std::string(digits.empty() ? "0" : digits));
+}
+
 Integer pow10(long e) {
   Integer r;
   mpz_ui_pow_ui(r.backend().data(), 10, static_cast<unsigned long>(e));
@@ -46,7 +52,7 @@ Rational parse_number(std::string_view text, const std::string& field) {
   if (auto slash = s.find('/'); slash != std::string_view::npos) {
     std::string_view num = s.substr(0, slash), den = s.substr(slash + 1);
     if (!all_digits(num) || !all_digits(den)) bad_number(text, field, "a fraction needs digits on both sides of '/'");
-    const Integer n{std::string(num)}, d{std::string(den)};
+    const Integer n = decimal_integer(num), d = decimal_integer(den);
     if (d == 0) bad_number(text, field, "the denominator is zero");
     value = Rational(n, d);
   } else {
@@ -77,7 +83,7 @@ Rational parse_number(std::string_view text, const std::string& field) {
       if (eneg) exponent = -exponent;
     }
     std::string digits = std::string(ip) + std::string(fp);
-    const Integer mantissa{digits.empty() ? std::string("0") : digits};
+    const Integer mantissa = decimal_integer(digits);
     const long scale = exponent - static_cast<long>(fp.size());
     if (scale >= 0) value = Rational(mantissa * pow10(scale));
     else value = Rational(mantissa, pow10(-scale));

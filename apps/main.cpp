@@ -1,0 +1,248 @@
+// splinex: the command line, one thin layer over the libraries. Documents are read exactly,
+// converted to the requested arithmetic by correct rounding, and written per arithmetic
+// (fractions, round-trip doubles, all MPFR digits). Every splinex::Error exits with status 2.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <new>
+
+#include "crosscheck/crosscheck.hpp"
+#include "crosscheck/operations_impl.hpp"
+#include "exact/json_io.hpp"
+#include "experiments/report.hpp"
+#include "proofs/suite.hpp"
+#include "spline/kernel.hpp"
+
+namespace sx = splinex;
+
+namespace {
+
+struct Common {
+  std::string arith = "exact";
+  std::string file;
+};
+
+struct OpOptions {
+  int dir = 0;
+  std::string knots;
+  std::string insert_method = "a54";
+  int by = 1;
+  std::string elevate_method = "a59";
+  std::string at;
+  std::string interval;
+};
+
+void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
+  if (kind != "extract-bezier") c->add_option("--dir", o.dir, "parametric direction (0-based)")->capture_default_str();
+  if (kind == "insert-knots") {
+    c->add_option("--knots", o.knots, "comma-separated knots, e.g. \"0.25,1/3\"")->required();
+    c->add_option("--method", o.insert_method, "a54 (refinement in one pass) or boehm (A5.1 knot by knot)")
+        ->check(CLI::IsMember({"a54", "boehm"}))
+        ->capture_default_str();
+  } else if (kind == "elevate") {
+    c->add_option("--by", o.by, "elevate the degree by this amount")->required();
+    c->add_option("--method", o.elevate_method, "a59 (NURBS Book, via Bezier pieces) or blossom")
+        ->check(CLI::IsMember({"a59", "blossom"}))
+        ->capture_default_str();
+  } else if (kind == "split") {
+    c->add_option("--at", o.at, "split parameter")->required();
+  } else if (kind == "reparametrize") {
+    c->add_option("--interval", o.interval, "new domain \"lo,hi\" of the direction")->required();
+  }
+}
+
+sx::Operation make_op(const std::string& kind, const OpOptions& o) {
+  sx::Operation op = sx::Operation::parse_kind(kind);
+  op.dir = o.dir;
+  switch (op.kind) {
+    case sx::Operation::Kind::insert_knots:
+      op.knots = sx::parse_number_list(o.knots, "knots");
+      op.boehm = o.insert_method == "boehm";
+      break;
+    case sx::Operation::Kind::elevate:
+      op.by = o.by;
+      op.method = o.elevate_method == "blossom" ? sx::ElevationMethod::blossom : sx::ElevationMethod::bezier_pieces;
+      break;
+    case sx::Operation::Kind::split: op.at = sx::parse_number(o.at, "at"); break;
+    case sx::Operation::Kind::reparametrize: {
+      const auto v = sx::parse_number_list(o.interval, "interval");
+      if (v.size() != 2) throw sx::UsageError("interval", "needs two numbers", "write --interval \"lo,hi\"");
+      op.lo = v[0];
+      op.hi = v[1];
+      break;
+    }
+    default: break;
+  }
+  return op;
+}
+
+sx::Json run_op_document(const sx::Operation& op, const sx::BSpline<sx::Rational>& S, const sx::ArithSpec& spec,
+                         const sx::Limits& limits) {
+  return sx::with_arith(spec, [&](auto tag) {
+    using T = typename decltype(tag)::type;
+    auto conv = [](const sx::Rational& x) { return sx::ArithTraits<T>::from_rational(x); };
+    const sx::BSpline<T> in = sx::convert<T>(S, conv);
+    if (op.kind == sx::Operation::Kind::extract_bezier) {
+      sx::Json pieces = sx::Json::array();
+      for (const auto& pc : sx::extract_bezier(in, limits)) {
+        sx::Json box = sx::Json::array();
+        for (const auto& [lo, hi] : pc.box) box.push_back({sx::ArithTraits<T>::to_json(lo), sx::ArithTraits<T>::to_json(hi)});
+        pieces.push_back({{"box", box}, {"spline", sx::spline_to_json(pc.spline)}});
+      }
+      return sx::Json{{"pieces", pieces}};
+    }
+    const auto R = sx::run_operation(op, in, limits);
+    if (R.size() == 1) return sx::spline_to_json(R[0]);
+    sx::Json parts = sx::Json::array();
+    for (const auto& r : R) parts.push_back(sx::spline_to_json(r));
+    return sx::Json{{"splines", parts}};
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"splinex: exact and floating B-spline algorithms, cross-checked exactly"};
+  app.require_subcommand(1);
+  sx::Limits limits;
+  app.add_option("--max-control-points", limits.max_control_points, "size limit per result spline")->capture_default_str();
+  app.add_option("--max-degree", limits.max_degree, "degree limit per direction")->capture_default_str();
+
+  Common ev;
+  std::string at, orders;
+  auto* c_eval = app.add_subcommand("eval", "evaluate a spline (or a partial derivative) at a parameter");
+  c_eval->add_option("--arith", ev.arith, "exact, double or mpfr:BITS")->capture_default_str();
+  c_eval->add_option("--at", at, "parameter \"x0,x1,...\"")->required();
+  c_eval->add_option("--derivative", orders, "derivative orders per direction, e.g. \"1,0\"");
+  c_eval->add_option("file", ev.file, "spline document, - for stdin")->required();
+
+  std::map<std::string, std::pair<Common, OpOptions>> ops;
+  std::map<std::string, CLI::App*> op_cmds;
+  for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse"}) {
+    auto& [cm, oo] = ops[k];
+    auto* c = app.add_subcommand(k, std::string("spline document -> ") + k + " result");
+    c->add_option("--arith", cm.arith, "exact, double or mpfr:BITS")->capture_default_str();
+    add_op_options(c, oo, k);
+    c->add_option("file", cm.file, "spline document, - for stdin")->required();
+    op_cmds[k] = c;
+  }
+
+  std::string cc_op, cc_float = "double", cc_file;
+  int cc_grid = 0;
+  OpOptions cc_opts;
+  auto* c_cross = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
+  c_cross->add_option("operation", cc_op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
+  c_cross->add_option("--float", cc_float, "double or mpfr:BITS")->capture_default_str();
+  c_cross->add_option("--grid", cc_grid, "evaluation points per direction (0: 65/17/7 by dimension)");
+  c_cross->add_option("--dir", cc_opts.dir, "parametric direction");
+  c_cross->add_option("--knots", cc_opts.knots, "insert-knots: knots");
+  c_cross->add_option("--by", cc_opts.by, "elevate: amount");
+  c_cross->add_option("--method", cc_opts.insert_method, "insert-knots: a54|boehm; elevate: a59|blossom");
+  c_cross->add_option("--at", cc_opts.at, "split: parameter");
+  c_cross->add_option("--interval", cc_opts.interval, "reparametrize: \"lo,hi\"");
+  c_cross->add_option("file", cc_file, "spline document, - for stdin")->required();
+
+  std::vector<std::string> proof_names;
+  bool proof_json = false;
+  std::size_t proof_cases = 12;
+  auto* c_prove = app.add_subcommand("prove", "run the exact proofs (proof by identity)");
+  c_prove->add_option("names", proof_names, "proof names (default: all)");
+  c_prove->add_flag("--json", proof_json, "JSON output");
+  c_prove->add_option("--cases", proof_cases, "random exact cases per proof")->capture_default_str();
+  bool proof_list = false;
+  c_prove->add_flag("--list", proof_list, "list the proof names");
+
+  sx::ReportOptions report;
+  auto* c_report = app.add_subcommand("report", "the main job: crosscheck suite, figures, report.md");
+  c_report->add_option("--out", report.out_dir, "output folder")->capture_default_str();
+  c_report->add_flag("--full", report.full, "the long sweep (larger cases, more precisions)");
+
+  try {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      app.exit(e);
+      return 2;
+    }
+
+    if (c_eval->parsed()) {
+      const auto S = sx::spline_from_json(sx::read_json_file(ev.file), limits);
+      const auto x = sx::parse_number_list(at, "at");
+      std::vector<int> ord;
+      if (!orders.empty())
+        for (const auto& r : sx::parse_number_list(orders, "derivative")) {
+          if (boost::multiprecision::denominator(r) != 1 || r < 0 || r > 1000)
+            throw sx::UsageError("derivative", "orders must be whole numbers in [0, 1000]", "write e.g. --derivative \"1,0\"");
+          ord.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
+        }
+      const auto spec = sx::ArithSpec::parse(ev.arith);
+      const sx::Json out = sx::with_arith(spec, [&](auto tag) {
+        using T = typename decltype(tag)::type;
+        auto conv = [](const sx::Rational& v) { return sx::ArithTraits<T>::from_rational(v); };
+        const auto Sf = sx::convert<T>(S, conv);
+        std::vector<T> xf;
+        for (const auto& v : x) xf.push_back(conv(v));
+        const auto p = ord.empty() ? sx::evaluate(Sf, xf) : sx::derivative(Sf, xf, ord);
+        return sx::Json{{"point", sx::point_to_json(p)}};
+      });
+      std::cout << out.dump() << "\n";
+      return 0;
+    }
+    for (auto& [k, c] : op_cmds) {
+      if (!c->parsed()) continue;
+      const auto& [cm, oo] = ops[k];
+      const auto S = sx::spline_from_json(sx::read_json_file(cm.file), limits);
+      const auto spec = sx::ArithSpec::parse(cm.arith);
+      std::cout << run_op_document(make_op(k, oo), S, spec, limits).dump() << "\n";
+      return 0;
+    }
+    if (c_cross->parsed()) {
+      const auto S = sx::spline_from_json(sx::read_json_file(cc_file), limits);
+      OpOptions o = cc_opts;
+      if (cc_op == "elevate") o.elevate_method = (cc_opts.insert_method == "blossom") ? "blossom" : "a59";
+      if (cc_op == "insert-knots" && cc_opts.knots.empty())
+        throw sx::UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
+      const auto rep = sx::crosscheck(make_op(cc_op, o), S, sx::ArithSpec::parse(cc_float, "float"), cc_grid, limits);
+      std::cout << rep.to_json().dump(2) << "\n";
+      return 0;
+    }
+    if (c_prove->parsed()) {
+      if (proof_list) {
+        for (const auto& e : sx::proof_registry()) std::cout << e.name << "\t" << e.identity << "\n";
+        return 0;
+      }
+      const auto reps = sx::run_proofs(proof_names, proof_cases);
+      bool all = true;
+      sx::Json j = sx::Json::array();
+      for (const auto& r : reps) {
+        all = all && r.proved;
+        if (proof_json) {
+          j.push_back({{"name", r.name}, {"identity", r.identity}, {"degree_bound", r.degree_bound}, {"cases", r.cases},
+                       {"cells", r.cells}, {"points", r.points}, {"verdict", r.proved ? "proved" : "refuted"},
+                       {"counterexample", r.counterexample}});
+        } else {
+          std::cout << r.name << ": " << (r.proved ? "proved" : "REFUTED") << "\n  identity: " << r.identity
+                    << "\n  degree bound: " << r.degree_bound << "\n  points: " << r.points << " exact evaluations in "
+                    << r.cells << " cells over " << r.cases << " cases\n";
+          if (!r.proved) std::cout << "  counterexample: " << r.counterexample << "\n";
+        }
+      }
+      if (proof_json) std::cout << j.dump(2) << "\n";
+      return all ? 0 : 1;
+    }
+    if (c_report->parsed()) return sx::run_report(report);
+  } catch (const sx::Error& e) {
+    std::cerr << "splinex: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "splinex: error: out of memory (fix: lower --max-control-points or ask for a smaller result)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "splinex: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

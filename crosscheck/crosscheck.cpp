@@ -1,0 +1,182 @@
+#include "crosscheck/crosscheck.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "crosscheck/operations_impl.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex {
+
+// ---- operations ------------------------------------------------------------------------------
+
+std::string Operation::name() const {
+  switch (kind) {
+    case Kind::insert_knots: return boehm ? "insert-knots(boehm)" : "insert-knots";
+    case Kind::elevate: return method == ElevationMethod::blossom ? "elevate(blossom)" : "elevate";
+    case Kind::extract_bezier: return "extract-bezier";
+    case Kind::split: return "split";
+    case Kind::reparametrize: return "reparametrize";
+    case Kind::reverse: return "reverse";
+    case Kind::identity: break;
+  }
+  return "identity";
+}
+
+Operation Operation::parse_kind(const std::string& name) {
+  Operation op;
+  if (name == "insert-knots") op.kind = Kind::insert_knots;
+  else if (name == "elevate") op.kind = Kind::elevate;
+  else if (name == "extract-bezier") op.kind = Kind::extract_bezier;
+  else if (name == "split") op.kind = Kind::split;
+  else if (name == "reparametrize") op.kind = Kind::reparametrize;
+  else if (name == "reverse") op.kind = Kind::reverse;
+  else if (name == "identity") op.kind = Kind::identity;
+  else
+    throw UsageError("operation", "unknown operation \"" + name + "\"",
+                     "use insert-knots, elevate, extract-bezier, split, reparametrize, reverse or identity");
+  return op;
+}
+
+template std::vector<BSpline<Rational>> run_operation(const Operation&, const BSpline<Rational>&, const Limits&);
+template std::vector<BSpline<double>> run_operation(const Operation&, const BSpline<double>&, const Limits&);
+template std::vector<BSpline<Mpfr>> run_operation(const Operation&, const BSpline<Mpfr>&, const Limits&);
+
+// ---- error statistics ------------------------------------------------------------------------
+
+void ErrorStat::add(const Rational& exact, const Rational& approx) {
+  const Rational e = splinex::abs(Rational(approx - exact)), r = splinex::abs(exact);
+  if (max_abs < e) max_abs = e;
+  if (max_ref < r) max_ref = r;
+  ++count;
+}
+
+double ErrorStat::abs() const { return to_double(max_abs); }
+
+double ErrorStat::rel() const {
+  if (max_abs == 0) return 0;
+  if (max_ref == 0) return std::numeric_limits<double>::infinity();
+  return to_double(Rational(max_abs / max_ref));
+}
+
+double ErrorStat::bits_lost(int precision) const {
+  if (max_abs == 0 || precision == 0) return 0;
+  if (max_ref == 0) return precision;
+  const double b = precision + log2_abs(Rational(max_abs / max_ref));
+  return b < 0 ? 0 : (b > precision ? precision : b);
+}
+
+Json ErrorStat::to_json(int precision) const {
+  Json j;
+  j["max_abs_error"] = abs();
+  j["max_abs_error_exact"] = to_fraction_string(max_abs);
+  j["max_rel_error"] = rel();
+  j["bits_lost"] = bits_lost(precision);
+  j["compared"] = count;
+  return j;
+}
+
+Json CrossReport::to_json() const {
+  Json j;
+  j["operation"] = operation;
+  j["arith"] = arith;
+  j["precision_bits"] = precision;
+  j["structure_match"] = structure_match;
+  if (!structure_note.empty()) j["structure_note"] = structure_note;
+  j["results"] = results;
+  j["control_point_count"] = control_point_count;
+  j["control_points"] = control_points.to_json(precision);
+  j["knots"] = knots.to_json(precision);
+  j["grid"] = grid.to_json(precision);
+  j["seconds_exact"] = seconds_exact;
+  j["seconds_float"] = seconds_float;
+  return j;
+}
+
+// ---- the crosscheck --------------------------------------------------------------------------
+
+namespace {
+
+template <class T>
+void compare(const std::vector<BSpline<Rational>>& E, const std::vector<BSpline<T>>& F, int grid_per_dir,
+             CrossReport& rep) {
+  auto exact = [](const T& x) { return ArithTraits<T>::to_rational(x); };
+  if (E.size() != F.size()) {
+    rep.structure_match = false;
+    rep.structure_note = "exact gave " + std::to_string(E.size()) + " results, float " + std::to_string(F.size());
+    return;
+  }
+  for (std::size_t r = 0; r < E.size(); ++r) {
+    const auto &e = E[r];
+    const auto &f = F[r];
+    rep.control_point_count += e.size();
+    bool same = e.degrees == f.degrees && e.q == f.q && e.is_rational() == f.is_rational();
+    for (int d = 0; same && d < e.dim(); ++d) same = e.knots[d].size() == f.knots[d].size();
+    if (!same) {
+      rep.structure_match = false;
+      rep.structure_note = "result " + std::to_string(r) + " differs in degree or knot count";
+      continue;
+    }
+    for (int d = 0; d < e.dim(); ++d)
+      for (std::size_t i = 0; i < e.knots[d].size(); ++i) rep.knots.add(e.knots[d][i], exact(f.knots[d][i]));
+    for (std::size_t i = 0; i < e.points.size(); ++i) rep.control_points.add(e.points[i], exact(f.points[i]));
+    // Grid: G points per direction over the exact result's domain, ends included.
+    const int k = e.dim();
+    const int G = grid_per_dir > 0 ? grid_per_dir : (k == 1 ? 65 : k == 2 ? 17 : 7);
+    std::vector<int> idx(k, 0);
+    std::vector<Rational> x(k);
+    std::vector<T> xf(k);
+    while (true) {
+      for (int d = 0; d < k; ++d) {
+        x[d] = e.domain_lo(d) + (e.domain_hi(d) - e.domain_lo(d)) * Rational(idx[d], G - 1);
+        xf[d] = ArithTraits<T>::from_rational(x[d]);
+        // The float domain may end a rounding error away; stay inside it.
+        if (xf[d] < f.domain_lo(d)) xf[d] = f.domain_lo(d);
+        if (f.domain_hi(d) < xf[d]) xf[d] = f.domain_hi(d);
+      }
+      const auto ve = evaluate(e, x);
+      const auto vf = evaluate(f, xf);
+      for (int c = 0; c < e.q; ++c) rep.grid.add(ve[c], exact(vf[c]));
+      int d = 0;
+      while (d < k && ++idx[d] == G) { idx[d] = 0; ++d; }
+      if (d == k) break;
+    }
+  }
+}
+
+}  // namespace
+
+CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, const ArithSpec& fl, int grid_per_dir,
+                       const Limits& limits) {
+  if (fl.is_exact()) throw UsageError("float", "the crosscheck compares exact with a float arithmetic", "use --float double or mpfr:BITS");
+  using clock = std::chrono::steady_clock;
+  CrossReport rep;
+  rep.operation = op.name();
+  rep.arith = fl.name();
+  const auto t0 = clock::now();
+  const auto E = run_operation(op, input, limits);
+  rep.seconds_exact = std::chrono::duration<double>(clock::now() - t0).count();
+  rep.results = E.size();
+  with_arith(fl, [&](auto tag) {
+    using T = typename decltype(tag)::type;
+    rep.precision = ArithTraits<T>::precision_bits();
+    const BSpline<T> in = convert<T>(input, [](const Rational& x) { return ArithTraits<T>::from_rational(x); });
+    const auto t1 = clock::now();
+    std::vector<BSpline<T>> F;
+    try {
+      F = run_operation(op, in, limits);
+    } catch (const Error& e) {
+      // Rounding can merge knots that differ exactly (raising a multiplicity past degree+1) or
+      // push one out of the domain: the float run fails where the exact one succeeds.
+      rep.structure_match = false;
+      rep.structure_note = std::string("the float run failed: ") + e.what();
+      return;
+    }
+    rep.seconds_float = std::chrono::duration<double>(clock::now() - t1).count();
+    compare(E, F, grid_per_dir, rep);
+  });
+  return rep;
+}
+
+}  // namespace splinex

@@ -1,0 +1,32 @@
+// The kernel operations as data, so that one description runs in any arithmetic: the crosscheck
+// runs it exactly and in floating point from the same exact input, the command line builds it
+// from options.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "spline/kernel.hpp"
+
+namespace splinex {
+
+struct Operation {
+  enum class Kind { insert_knots, elevate, extract_bezier, split, reparametrize, reverse, identity };
+  Kind kind = Kind::identity;
+  int dir = 0;
+  std::vector<Rational> knots;  // insert_knots
+  bool boehm = false;           // insert_knots: A5.1 knot by knot instead of A5.4
+  int by = 1;                   // elevate
+  ElevationMethod method = ElevationMethod::bezier_pieces;
+  Rational at;                  // split
+  Rational lo, hi;              // reparametrize
+
+  std::string name() const;
+  static Operation parse_kind(const std::string& name);  // UsageError for unknown names
+};
+
+// The result splines (one for most operations; the pieces or the two halves otherwise).
+template <class T>
+std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, const Limits& limits);
+
+}  // namespace splinex

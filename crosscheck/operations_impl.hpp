@@ -1,0 +1,35 @@
+#pragma once
+#include "crosscheck/operations.hpp"
+
+namespace splinex {
+
+template <class T>
+std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, const Limits& limits) {
+  auto conv = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
+  switch (op.kind) {
+    case Operation::Kind::insert_knots: {
+      std::vector<T> X;
+      for (const auto& x : op.knots) X.push_back(conv(x));
+      if (!op.boehm) return {refine_knots(S, op.dir, X, limits)};
+      BSpline<T> R = S;
+      for (const auto& x : X) R = insert_knot(R, op.dir, x, 1, limits);
+      return {R};
+    }
+    case Operation::Kind::elevate: return {elevate_degree(S, op.dir, op.by, op.method, limits)};
+    case Operation::Kind::extract_bezier: {
+      std::vector<BSpline<T>> out;
+      for (auto& pc : extract_bezier(S, limits)) out.push_back(std::move(pc.spline));
+      return out;
+    }
+    case Operation::Kind::split: {
+      auto [L, R] = split_at(S, op.dir, conv(op.at), limits);
+      return {L, R};
+    }
+    case Operation::Kind::reparametrize: return {reparametrize(S, op.dir, conv(op.lo), conv(op.hi))};
+    case Operation::Kind::reverse: return {reverse(S, op.dir)};
+    case Operation::Kind::identity: break;
+  }
+  return {S};
+}
+
+}  // namespace splinex

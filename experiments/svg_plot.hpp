@@ -1,0 +1,27 @@
+// Minimal SVG line plots (log or linear axes) for experiment figures; no plotting dependency.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace splinex {
+
+struct PlotSeries {
+  std::string label;
+  std::vector<std::pair<double, double>> points;  // (x, y); y <= 0 on a log axis is drawn at the floor
+  std::string color;
+  bool dashed = false;
+};
+
+struct PlotSpec {
+  std::string title, xlabel, ylabel;
+  bool logx = false, logy = true;
+  std::string note;  // printed under the plot (e.g. how zeros are drawn)
+};
+
+std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& series);
+
+// Writes text to path through a temporary file and a rename, so readers never see half a file.
+void write_file_atomically(const std::string& path, const std::string& text);
+
+}  // namespace splinex
