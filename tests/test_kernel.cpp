@@ -1,0 +1,155 @@
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "exact/random_spline.hpp"
+#include "float/mpfr.hpp"
+#include "helpers.hpp"
+#include "proofs/identity.hpp"
+#include "proofs/suite.hpp"
+#include "spline/errors.hpp"
+#include "spline/hodograph.hpp"
+#include "spline/kernel.hpp"
+
+using namespace splinex;
+using test::spline;
+
+TEST_CASE("evaluation against hand-computed values") {
+  // Quadratic Bezier on [0, 1]: B(1/2) = (P0 + 2 P1 + P2) / 4.
+  const auto B = spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[0,0],[1,2],[4,0]]})");
+  CHECK(evaluate(B, {Rational(1, 2)}) == std::vector<Rational>{Rational(3, 2), Rational(1)});
+  CHECK(evaluate(B, {Rational(1)}) == std::vector<Rational>{Rational(4), Rational(0)});
+  // B'(t) = 2[(1-t)(P1-P0) + t(P2-P1)]; B'(1/2) = (P2 - P0) = (4, 0). B'' = 2(P2 - 2P1 + P0).
+  CHECK(derivative(B, {Rational(1, 2)}, {1}) == std::vector<Rational>{Rational(4), Rational(0)});
+  CHECK(derivative(B, {Rational(1, 5)}, {2}) == std::vector<Rational>{Rational(4), Rational(-8)});
+  CHECK(derivative(B, {Rational(1, 5)}, {3}) == std::vector<Rational>{Rational(0), Rational(0)});
+  // A rational quadratic quarter circle: weights 1, 1/sqrt2 replaced by the exact conic with w1 = 1
+  // gives a parabola; with w = (1, 1, 2) check the quotient by hand: at t = 1/2,
+  // (P0 + 2 P1 + 2 P2)/(1 + 2 + 2) with P = (0,0),(1,2),(4,0): (10/5, 4/5).
+  const auto R = spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[0,0],[1,2],[4,0]],"weights":[1,1,2]})");
+  CHECK(evaluate(R, {Rational(1, 2)}) == std::vector<Rational>{Rational(2), Rational(4, 5)});
+  // Derivative of the rational curve, by the quotient rule by hand at t = 0:
+  // C'(0) = w1/w0 * p (P1 - P0) = 2 * (1, 2) = (2, 4).
+  CHECK(derivative(R, {Rational(0)}, {1}) == std::vector<Rational>{Rational(2), Rational(4)});
+  CHECK_THROWS_AS(evaluate(B, {Rational(11, 10)}), DomainError);
+  CHECK_THROWS_AS(evaluate(B, {Rational(1), Rational(1)}), DomainError);
+}
+
+TEST_CASE("mixed partial derivatives of a rational surface match a difference quotient identity") {
+  // d^2/dudv of a bilinear rational patch, checked against the exact quotient-rule expansion at
+  // a point: S = A/w with A, w bilinear, S_uv = (A_uv - w_u S_v - w_v S_u - w_uv S) / w.
+  const auto S = spline(R"({"type":"bspline","degrees":[1,1],"knots":[[0,0,1,1],[0,0,1,1]],
+      "points":[[0,0],[1,0],[0,1],[1,1]],"weights":[1,2,3,4]})");
+  const std::vector<Rational> x{Rational(1, 3), Rational(1, 5)};
+  const auto su = derivative(S, x, {1, 0}), sv = derivative(S, x, {0, 1}), suv = derivative(S, x, {1, 1});
+  const auto s = evaluate(S, x);
+  // w(u,v) = 1 + u + 2v + 0uv (bilinear interpolation of 1,2,3,4): w_u = 1, w_v = 2, w_uv = 0.
+  // A(u,v) = sum w_i P_i N_i: A_x = 2u(1-v) + 4uv, A_y = 3v(1-u) + 4uv; A_uv = (2, 1).
+  const Rational w = 1 + x[0] + 2 * x[1];
+  for (int c = 0; c < 2; ++c) {
+    const Rational Auv = c == 0 ? Rational(2) : Rational(1);
+    CHECK(suv[c] == (Auv - 1 * sv[c] - 2 * su[c]) / w);
+  }
+}
+
+TEST_CASE("every named proof holds on many random exact cases") {
+  for (const auto& e : proof_registry()) {
+    const auto r = e.run(e.name == "teapot-merge" ? 1 : 30);
+    INFO(r.name << ": " << r.counterexample);
+    CHECK(r.proved);
+    CHECK(r.cases > 0);
+    if (r.name.find("agreement") == std::string::npos) CHECK(r.points > 0);
+  }
+}
+
+TEST_CASE("a proof by identity refutes a spline that differs, with the exact counterexample") {
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 20; ++i) {
+    const auto S = random_case(rng);
+    auto R = refine_knots(S, 0, {random_inside(S.domain_lo(0), S.domain_hi(0), rng)});
+    R.points[(rng() % R.size()) * R.q] += Rational(1, 1000000000);  // one coordinate, slightly
+    const auto chk = prove_same_function(S, R, "perturbed");
+    CHECK_FALSE(chk.holds);
+    CHECK(chk.counterexample.find("at x = (") == 0);
+  }
+  // And a degree bound that is too small would not be a proof: the checker uses max(p, p').
+  const auto A = spline(R"({"type":"bspline","degrees":[3],"knots":[[0,0,0,0,1,1,1,1]],"points":[[0],[0],[0],[1]]})");
+  const auto Z = spline(R"({"type":"bspline","degrees":[1],"knots":[[0,0,1,1]],"points":[[0],[1]]})");
+  const auto chk = prove_same_function(A, Z, "t^3 = t ?");
+  CHECK_FALSE(chk.holds);
+  CHECK(chk.degree_bound == std::vector<int>{3});
+}
+
+TEST_CASE("the two elevation algorithms agree exactly, also by large amounts and on surfaces") {
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 25; ++i) {
+    const auto S = random_case(rng, 5, 2);
+    const int d = static_cast<int>(rng() % S.dim()), t = 1 + static_cast<int>(rng() % 5);
+    const auto A = elevate_degree(S, d, t, ElevationMethod::bezier_pieces);
+    const auto B = elevate_degree(S, d, t, ElevationMethod::blossom);
+    CHECK(A.knots == B.knots);
+    CHECK(A.points == B.points);
+    CHECK(A.weights == B.weights);
+    CHECK(A.degrees[d] == S.degrees[d] + t);
+    CHECK(A.count(d) == elevated_count(clamp(S, d), d, t));
+  }
+}
+
+TEST_CASE("knot insertion edge cases") {
+  const auto S = spline(R"({"type":"bspline","degrees":[3],"knots":[[0,0,0,0,0.5,1,1,1,1]],"points":[[0],[1],[3],[2],[5]]})");
+  // Up to full multiplicity p+1 (a C^-1 break), by Boehm and by A5.4, identical and proved.
+  const auto A = insert_knot(S, 0, Rational(1, 2), 3);
+  const auto B = refine_knots(S, 0, {Rational(1, 2), Rational(1, 2), Rational(1, 2)});
+  CHECK(A.points == B.points);
+  CHECK(multiplicity(A.knots[0], Rational(1, 2)) == 4);
+  CHECK(prove_same_function(S, A, "").holds);
+  CHECK_THROWS_AS(insert_knot(S, 0, Rational(1, 2), 4), ValidationError);
+  CHECK_THROWS_AS(insert_knot(S, 0, Rational(3, 2), 1), DomainError);
+  CHECK_THROWS_AS(insert_knot(S, 1, Rational(1, 2), 1), UsageError);
+  CHECK_THROWS_AS(refine_knots(S, 0, {Rational(1, 4), Rational(-1)}), DomainError);
+  Limits lim;
+  lim.max_control_points = 6;
+  CHECK_THROWS_AS(refine_knots(S, 0, {Rational(1, 4), Rational(1, 3)}, lim), SizeLimitError);
+  CHECK_THROWS_AS(elevate_degree(S, 0, 50000000), SizeLimitError);
+  CHECK(insert_knot(S, 0, Rational(1, 4), 0).points == S.points);
+}
+
+TEST_CASE("Bezier extraction, split, reparametrization and reversal") {
+  const auto S = spline(R"({"type":"bspline","degrees":[2,1],"knots":[[0,0,0,0.25,0.5,1,1,1],[0,0,0.5,1,1]],
+      "points":[[0],[1],[2],[3],[4],[5],[6],[7],[8],[9],[10],[11],[12],[13],[14]]})");
+  const auto pieces = extract_bezier(S);
+  REQUIRE(pieces.size() == 3 * 2);
+  CHECK(pieces[0].box == std::vector<std::pair<Rational, Rational>>{{0, Rational(1, 4)}, {0, Rational(1, 2)}});
+  CHECK(pieces[1].box[0] == std::pair<Rational, Rational>{Rational(1, 4), Rational(1, 2)});  // direction 0 fastest
+  CHECK(pieces[3].box[1] == std::pair<Rational, Rational>{Rational(1, 2), Rational(1)});
+  for (const auto& p : pieces) CHECK(prove_equal_on_box(S, p.spline, p.box, {}, "").holds);
+  const auto [L, R] = split_at(S, 1, Rational(1, 2));  // at an existing knot
+  CHECK(L.domain_hi(1) == Rational(1, 2));
+  CHECK(R.domain_lo(1) == Rational(1, 2));
+  CHECK_THROWS_AS(split_at(S, 0, Rational(0)), DomainError);
+  CHECK_THROWS_AS(reparametrize(S, 0, Rational(2), Rational(1)), DomainError);
+  const auto V = reverse(reverse(S, 0), 0);
+  CHECK(V.points == S.points);
+  CHECK(V.knots == S.knots);
+}
+
+TEST_CASE("unclamped knot vectors: evaluation, clamping, elevation on the domain") {
+  const auto S = spline(R"({"type":"bspline","degrees":[2],"knots":[[-2,-1,0,1,2,3,4,5]],"points":[[0],[1],[4],[9],[16]]})");
+  CHECK(S.domain_lo(0) == 0);
+  CHECK(S.domain_hi(0) == 3);
+  const auto C = clamp_all(S);
+  CHECK(is_clamped(C.knots[0], 2, C.count(0)));
+  CHECK(prove_same_function(S, C, "").holds);
+  CHECK(prove_same_function(S, elevate_degree(S, 0, 2), "").holds);
+}
+
+TEST_CASE("float runs of the kernel stay close to the exact result") {
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 10; ++i) {
+    const auto S = random_case(rng);
+    const auto D = convert<double>(S, [](const Rational& x) { return to_double(x); });
+    const auto E = elevate_degree(S, 0, 2);
+    const auto F = elevate_degree(D, 0, 2);
+    REQUIRE(E.points.size() == F.points.size());
+    for (std::size_t k = 0; k < E.points.size(); ++k) CHECK(to_double(E.points[k]) == Approx(F.points[k]).margin(1e-12));
+  }
+}

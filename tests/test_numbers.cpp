@@ -1,0 +1,83 @@
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "float/arith_spec.hpp"
+#include "spline/errors.hpp"
+
+using namespace splinex;
+
+TEST_CASE("decimal, fraction and integer text is parsed exactly") {
+  CHECK(parse_number("0.784", "x") == Rational(98, 125));
+  CHECK(parse_number("1e-3", "x") == Rational(1, 1000));
+  CHECK(parse_number("-2.5E+2", "x") == Rational(-250));
+  CHECK(parse_number("22/7", "x") == Rational(22, 7));
+  CHECK(parse_number("-3", "x") == Rational(-3));
+  CHECK(parse_number("0784", "x") == Rational(784));  // not octal
+  CHECK(parse_number("010/08", "x") == Rational(5, 4));
+  CHECK(parse_number(" .5 ", "x") == Rational(1, 2));
+  CHECK(parse_number("0.1", "x") != exact_from_double(0.1));
+  CHECK(parse_number("123456789012345678901234567890.000000000000000000001", "x") ==
+        Rational(Integer("123456789012345678901234567890000000000000000000001"), Integer("1000000000000000000000")));
+}
+
+TEST_CASE("malformed numbers throw ParseError naming the field") {
+  for (const char* bad : {"", "nan", "NaN", "inf", "-Infinity", "1/0", "0x10", "1e", "--1", "1.2.3", "1/2/3", "e5", "1e999999", "abc"}) {
+    INFO(bad);
+    try {
+      parse_number(bad, "knots[0][3]");
+      FAIL("no exception");
+    } catch (const ParseError& e) {
+      CHECK(std::string(e.what()).find("knots[0][3]") == 0);
+      CHECK(e.field() == "knots[0][3]");
+    }
+  }
+}
+
+TEST_CASE("every double converts to a rational exactly, and back") {
+  CHECK(exact_from_double(0.1) == Rational(Integer("3602879701896397"), Integer("36028797018963968")));
+  CHECK(exact_from_double(-0.0) == 0);
+  CHECK(exact_from_double(std::ldexp(1.0, -1074)) == Rational(1) / Rational(Integer(1) << 1074));
+  CHECK_THROWS_AS(exact_from_double(std::numeric_limits<double>::quiet_NaN()), ParseError);
+  CHECK_THROWS_AS(exact_from_double(std::numeric_limits<double>::infinity()), ParseError);
+  for (double d : {0.1, 1.0 / 3, 1e300, -7.25e-300, 12345.678}) CHECK(to_double(exact_from_double(d)) == d);
+}
+
+TEST_CASE("rational to double rounds to nearest (mpq_get_d would truncate)") {
+  // 1/3 rounds up in the last place; truncation would give the value below.
+  CHECK(to_double(Rational(1, 3)) == 1.0 / 3);
+  // A value exactly halfway between two doubles rounds to even.
+  const Rational one(1), ulp = Rational(1) / Rational(Integer(1) << 52);
+  CHECK(to_double(one + ulp / 2) == 1.0);
+  CHECK(to_double(one + ulp + ulp / 2) == 1.0 + 2 * std::ldexp(1.0, -52));
+  CHECK(to_double(Rational(9, 10)) == 0.9);
+}
+
+TEST_CASE("MPFR values have exactly the requested precision and convert exactly") {
+  Mpfr::Precision p(113);
+  Mpfr a(Rational(1, 3));
+  CHECK(a.bits() == 113);
+  const Rational r = to_rational(a);
+  // |r - 1/3| <= 2^-114 (half an ulp at 113 bits, exponent -1)
+  const Rational err = abs(Rational(r - Rational(1, 3)));
+  CHECK(err > 0);
+  CHECK(err <= Rational(1) / Rational(Integer(1) << 115));
+  CHECK(to_rational(Mpfr(Rational(3, 4))) == Rational(3, 4));
+  // The decimal text reads back to the same value.
+  CHECK(to_rational(Mpfr(parse_number(to_decimal_string(a), "x"))) == r);
+  {
+    Mpfr::Precision p24(24);
+    CHECK(Mpfr(1).bits() == 24);
+  }
+  CHECK(Mpfr(1).bits() == 113);
+  CHECK_THROWS_AS(Mpfr::Precision(23), UsageError);
+}
+
+TEST_CASE("arithmetic names") {
+  CHECK(ArithSpec::parse("exact").is_exact());
+  CHECK(ArithSpec::parse("double").kind == ArithSpec::Kind::dbl);
+  CHECK(ArithSpec::parse("mpfr:24").bits == 24);
+  CHECK(ArithSpec::parse("mpfr:4096").name() == "mpfr:4096");
+  for (const char* bad : {"float", "mpfr", "mpfr:", "mpfr:23", "mpfr:abc", "mpfr:99999999", "Exact"})
+    CHECK_THROWS_AS(ArithSpec::parse(bad), UsageError);
+}
