@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   Common ev;
   std::string at, orders;
   auto* c_eval = app.add_subcommand("eval", "evaluate a spline (or a partial derivative) at a parameter");
-  c_eval->add_option("--arith", ev.arith, "exact, double or mpfr:BITS")->capture_default_str();
+  c_eval->add_option("--arith", ev.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
   c_eval->add_option("--at", at, "parameter \"x0,x1,...\"")->required();
   c_eval->add_option("--derivative", orders, "derivative orders per direction, e.g. \"1,0\"");
   c_eval->add_option("file", ev.file, "spline document, - for stdin")->required();
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
   for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse"}) {
     auto& [cm, oo] = ops[k];
     auto* c = app.add_subcommand(k, std::string("spline document -> ") + k + " result");
-    c->add_option("--arith", cm.arith, "exact, double or mpfr:BITS")->capture_default_str();
+    c->add_option("--arith", cm.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
     add_op_options(c, oo, k);
     c->add_option("file", cm.file, "spline document, - for stdin")->required();
     op_cmds[k] = c;
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
   OpOptions cc_opts;
   auto* c_cross = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
   c_cross->add_option("operation", cc_op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
-  c_cross->add_option("--float", cc_float, "double or mpfr:BITS")->capture_default_str();
+  c_cross->add_option("--float", cc_float, "double, mpfr:BITS, or flint (exact: must agree exactly)")->capture_default_str();
   c_cross->add_option("--grid", cc_grid, "evaluation points per direction (0: 65/17/7 by dimension)");
   c_cross->add_option("--dir", cc_opts.dir, "parametric direction");
   c_cross->add_option("--knots", cc_opts.knots, "insert-knots: knots");

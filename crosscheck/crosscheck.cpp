@@ -42,6 +42,7 @@ Operation Operation::parse_kind(const std::string& name) {
 template std::vector<BSpline<Rational>> run_operation(const Operation&, const BSpline<Rational>&, const Limits&);
 template std::vector<BSpline<double>> run_operation(const Operation&, const BSpline<double>&, const Limits&);
 template std::vector<BSpline<Mpfr>> run_operation(const Operation&, const BSpline<Mpfr>&, const Limits&);
+template std::vector<BSpline<FlintRational>> run_operation(const Operation&, const BSpline<FlintRational>&, const Limits&);
 
 // ---- error statistics ------------------------------------------------------------------------
 
@@ -149,7 +150,7 @@ void compare(const std::vector<BSpline<Rational>>& E, const std::vector<BSpline<
 
 CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, const ArithSpec& fl, int grid_per_dir,
                        const Limits& limits) {
-  if (fl.is_exact()) throw UsageError("float", "the crosscheck compares exact with a float arithmetic", "use --float double or mpfr:BITS");
+  if (fl.kind == ArithSpec::Kind::exact) throw UsageError("float", "the crosscheck compares exact (GMP) with another arithmetic", "use --float double, mpfr:BITS or flint");
   using clock = std::chrono::steady_clock;
   CrossReport rep;
   rep.operation = op.name();

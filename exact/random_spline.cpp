@@ -1,6 +1,7 @@
 #include "exact/random_spline.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "spline/errors.hpp"
 
@@ -26,17 +27,26 @@ BSpline<Rational> random_spline(const RandomSplineSpec& spec, std::mt19937_64& r
     const std::size_t n = spec.counts[d];
     if (n < static_cast<std::size_t>(p) + 1) throw UsageError("counts", "too few control points", "use >= degree+1");
     total *= n;
-    // Interior knots: n-p-1 values on the grid (0, 1), with occasional repeats up to the limit.
+    // Interior knots: n-p-1 values on a grid of (0, 1) fine enough for them (k/1000 or k/1024 for
+    // small n; a finer power of 10 or 2 for long knot vectors), occasionally repeated up to the
+    // multiplicity limit.
+    const std::size_t ni = n - p - 1;
+    long kden = den;
+    while (static_cast<std::size_t>(kden) < 8 * ni + 8) kden *= spec.dyadic ? 2 : 10;
     const int maxmult = spec.max_interior_multiplicity > 0 ? spec.max_interior_multiplicity : std::max(p, 1);
-    std::vector<Rational> interior;
-    while (interior.size() < n - p - 1) {
-      const Rational u(uniform(rng, 1, den - 1), den);
-      const long reps = std::min<long>(uniform(rng, 1, 4) == 1 ? uniform(rng, 1, maxmult) : 1,
-                                       static_cast<long>(n - p - 1 - interior.size()));
-      if (std::count(interior.begin(), interior.end(), u) + reps > maxmult) continue;
-      for (long r = 0; r < reps; ++r) interior.push_back(u);
+    std::map<long, int> mult;
+    std::size_t placed = 0;
+    while (placed < ni) {
+      const long k = uniform(rng, 1, kden - 1);
+      const long reps = std::min<long>(uniform(rng, 1, 4) == 1 ? uniform(rng, 1, maxmult) : 1, static_cast<long>(ni - placed));
+      if (mult[k] + reps > maxmult) continue;
+      mult[k] += static_cast<int>(reps);
+      placed += reps;
     }
-    std::sort(interior.begin(), interior.end());
+    std::vector<Rational> interior;
+    interior.reserve(ni);
+    for (const auto& [k, m] : mult)
+      for (int r = 0; r < m; ++r) interior.emplace_back(k, kden);
     std::vector<Rational> U;
     if (spec.clamped) {
       U.assign(p + 1, Rational(0));

@@ -7,6 +7,7 @@ namespace splinex {
 ArithSpec ArithSpec::parse(const std::string& text, const std::string& field) {
   ArithSpec s;
   if (text == "exact") return s;
+  if (text == "flint") { s.kind = Kind::flint; return s; }
   if (text == "double") { s.kind = Kind::dbl; return s; }
   if (text.rfind("mpfr:", 0) == 0) {
     const std::string b = text.substr(5);
@@ -19,12 +20,13 @@ ArithSpec ArithSpec::parse(const std::string& text, const std::string& field) {
     }
   }
   throw UsageError(field, "unknown arithmetic \"" + text + "\"",
-                   "use exact, double, or mpfr:BITS with 24 <= BITS <= 1000000");
+                   "use exact, flint, double, or mpfr:BITS with 24 <= BITS <= 1000000");
 }
 
 std::string ArithSpec::name() const {
   switch (kind) {
     case Kind::exact: return "exact";
+    case Kind::flint: return "flint";
     case Kind::dbl: return "double";
     case Kind::mpfr: break;
   }

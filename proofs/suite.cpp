@@ -3,6 +3,7 @@
 #include <random>
 
 #include "exact/bpt.hpp"
+#include "exact/flint_rational.hpp"
 #include "exact/random_spline.hpp"
 #include "spline/hodograph.hpp"
 #include "spline/kernel.hpp"
@@ -200,6 +201,39 @@ std::vector<ProofEntry> make_registry() {
                                                ""),
                               i);
                     }, 112));
+  r.push_back(entry("flint-agreement",
+                    "every operation gives identical knots, points and weights in GMP (Boost mpq) and FLINT (fmpq)",
+                    "none (coefficient equality)",
+                    [](const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      auto to_f = [](const Rational& x) { return FlintRational(x); };
+                      auto back = [](const BSpline<FlintRational>& F) {
+                        return convert<Rational>(F, [](const FlintRational& x) { return x.to_rational(); });
+                      };
+                      const BSpline<FlintRational> F = convert<FlintRational>(S, to_f);
+                      const int d = random_dir(S, rng);
+                      const Rational x = random_inside(S.domain_lo(d), S.domain_hi(d), rng);
+                      const int t = 1 + static_cast<int>(rng() % 3);
+                      bool same = same_representation(insert_knot(S, d, x, 1), back(insert_knot(F, d, FlintRational(x), 1))) &&
+                                  same_representation(refine_knots(S, d, {x, x}), back(refine_knots(F, d, {FlintRational(x), FlintRational(x)}))) &&
+                                  same_representation(elevate_degree(S, d, t), back(elevate_degree(F, d, t))) &&
+                                  same_representation(elevate_degree(S, d, t, ElevationMethod::blossom),
+                                                      back(elevate_degree(F, d, t, ElevationMethod::blossom))) &&
+                                  same_representation(reverse(S, d), back(reverse(F, d)));
+                      const auto pe = extract_bezier(S);
+                      const auto pf = extract_bezier(F);
+                      same = same && pe.size() == pf.size();
+                      for (std::size_t k = 0; same && k < pe.size(); ++k) same = same_representation(pe[k].spline, back(pf[k].spline));
+                      std::vector<Rational> at;
+                      std::vector<FlintRational> atf;
+                      for (int e = 0; e < S.dim(); ++e) {
+                        at.push_back(random_inside(S.domain_lo(e), S.domain_hi(e), rng));
+                        atf.emplace_back(at.back());
+                      }
+                      const auto ve = evaluate(S, at);
+                      const auto vf = evaluate(F, atf);
+                      for (std::size_t c = 0; same && c < ve.size(); ++c) same = ve[c] == vf[c].to_rational();
+                      if (!same) acc.fail("GMP and FLINT results differ", i);
+                    }, 113));
   {
     ProofEntry e;
     e.name = "teapot-merge";

@@ -8,6 +8,7 @@
 // (w*P, w), NURBS Book ch. 4.
 #pragma once
 #include <cstddef>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -133,19 +134,26 @@ BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
   for (int e = 0; e < d; ++e) before *= S.count(e);
   for (int e = d + 1; e < S.dim(); ++e) after *= S.count(e);
   const std::size_t n = S.count(d), m = qq * before;
-  std::vector<T> H = homogeneous_points(S);
+  // Polynomial splines are worked on in place; only rational ones need the homogeneous copy.
+  std::vector<T> H;
+  if (rational) H = homogeneous_points(S);
+  const T* src = rational ? H.data() : S.points.data();
   std::vector<T> out;
   BSpline<T> R;
   for (std::size_t b = 0; b < after; ++b) {
-    CurveBlock<T> r = op(S.degrees[d], S.knots[d], H.data() + b * n * m, n, m);
+    CurveBlock<T> r = op(S.degrees[d], S.knots[d], src + b * n * m, n, m);
     if (b == 0) {
       R.degrees = S.degrees;
       R.knots = S.knots;
       R.degrees[d] = r.p;
       R.knots[d] = std::move(r.U);
+      if (after == 1) {
+        out = std::move(r.P);
+        break;
+      }
       out.reserve(r.P.size() * after);
     }
-    for (auto& v : r.P) out.push_back(std::move(v));
+    std::move(r.P.begin(), r.P.end(), std::back_inserter(out));
   }
   R.q = S.q;
   set_from_homogeneous(R, std::move(out), rational);

@@ -20,24 +20,33 @@ void check_point(const BSpline<T>& S, const std::vector<T>& x) {
                         "give a parameter in [U[p], U[n]] of that direction");
 }
 
-// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H[idx(i)][c].
+// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H_i[c], with
+// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched.
 template <class T>
-void tensor_sum(const BSpline<T>& S, const std::vector<T>& H, std::size_t qq, const std::vector<std::size_t>& span,
-                const std::vector<const std::vector<T>*>& B, std::vector<T>& out) {
+void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const std::vector<const std::vector<T>*>& B,
+                std::vector<T>& out) {
   const int k = S.dim();
+  const bool rational = S.is_rational();
+  const std::size_t q = S.q, qq = q + (rational ? 1 : 0);
   std::vector<std::size_t> stride(k);
   std::size_t st = 1;
   for (int d = 0; d < k; ++d) { stride[d] = st; st *= S.count(d); }
   std::vector<int> i(k, 0);
   out.assign(qq, T(0));
+  T w;
   while (true) {
-    T w(1);
+    w = T(1);
     std::size_t idx = 0;
     for (int d = 0; d < k; ++d) {
       w *= (*B[d])[i[d]];
       idx += (span[d] - S.degrees[d] + i[d]) * stride[d];
     }
-    for (std::size_t c = 0; c < qq; ++c) out[c] += w * H[idx * qq + c];
+    if (rational) {
+      w *= S.weights[idx];
+      out[q] += w;
+    }
+    const T* P = S.points.data() + idx * q;
+    for (std::size_t c = 0; c < q; ++c) out[c] += w * P[c];
     int d = 0;
     while (d < k && ++i[d] > S.degrees[d]) { i[d] = 0; ++d; }
     if (d == k) break;
@@ -59,7 +68,7 @@ std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x
     B[d] = &N[d];
   }
   std::vector<T> out;
-  detail::tensor_sum(S, homogeneous_points(S), S.q + (S.is_rational() ? 1 : 0), span, B, out);
+  detail::tensor_sum(S, span, B, out);
   return out;
 }
 
@@ -87,7 +96,6 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
     D[d] = ders_basis_funs(span[d], x[d], S.degrees[d], std::min(orders[d], S.degrees[d]), S.knots[d]);
   }
   const std::size_t qq = S.q + (S.is_rational() ? 1 : 0);
-  const std::vector<T> H = homogeneous_points(S);
   // Homogeneous partials A^(beta) for every multi-index beta <= orders (beta_d past the degree: 0).
   std::vector<std::size_t> bstride(k);
   std::size_t nb = 1;
@@ -102,8 +110,7 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
       B[d] = &D[d][bd];
     }
     if (zero) A[b].assign(qq, T(0));
-    else detail::tensor_sum(S, H, qq, span, B, A[b]);
-    if (!S.is_rational()) continue;
+    else detail::tensor_sum(S, span, B, A[b]);
   }
   const std::size_t top = nb - 1;
   if (!S.is_rational()) return A[top];

@@ -1,0 +1,143 @@
+// Kernel timings in double, MPFR(128) and exact rationals (Google Benchmark), followed by a table
+// of exact/double and mpfr/double time ratios. Inputs: random clamped curves with dyadic knots and
+// coordinates (k/1024), the case the target names; pass --decimal for k/1000 data.
+//
+//   build/bin/bench_kernel                      all operations, degrees 1,3,5,7, n = 10..10000
+//   build/bin/bench_kernel --benchmark_filter=insert   (any Google Benchmark flag works)
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <random>
+
+#include "exact/flint_rational.hpp"
+#include "exact/random_spline.hpp"
+#include "float/mpfr.hpp"
+#include "spline/kernel.hpp"
+
+using namespace splinex;
+
+namespace {
+
+bool g_dyadic = true;
+
+struct Case {
+  BSpline<Rational> exact;
+  Rational knot;                 // one knot to insert (dyadic)
+  std::vector<Rational> refine;  // n/10 knots to insert at once
+  std::vector<Rational> at;      // evaluation parameters
+};
+
+const Case& get_case(int p, std::size_t n) {
+  static std::map<std::pair<int, std::size_t>, Case> cache;
+  auto key = std::make_pair(p, n);
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  std::mt19937_64 rng(1000 * p + n);
+  RandomSplineSpec spec;
+  spec.degrees = {p};
+  spec.counts = {n};
+  spec.q = 3;
+  spec.dyadic = g_dyadic;
+  spec.max_interior_multiplicity = 1;
+  Case c;
+  c.exact = random_spline(spec, rng);
+  c.knot = random_inside(0, 1, rng, g_dyadic);
+  for (std::size_t i = 0; i < std::max<std::size_t>(1, n / 10); ++i) c.refine.push_back(random_inside(0, 1, rng, g_dyadic));
+  for (int i = 0; i < 16; ++i) c.at.push_back(random_inside(0, 1, rng, g_dyadic));
+  return cache.emplace(key, std::move(c)).first->second;
+}
+
+template <class T>
+T conv(const Rational& x) {
+  return ArithTraits<T>::from_rational(x);
+}
+
+template <class T>
+struct Input {
+  BSpline<T> S;
+  T knot;
+  std::vector<T> refine, at;
+  Input(int p, std::size_t n) {
+    const Case& c = get_case(p, n);
+    S = convert<T>(c.exact, conv<T>);
+    knot = conv<T>(c.knot);
+    for (const auto& x : c.refine) refine.push_back(conv<T>(x));
+    for (const auto& x : c.at) at.push_back(conv<T>(x));
+  }
+};
+
+template <class T>
+void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, long bits) {
+  std::unique_ptr<Mpfr::Precision> scope;
+  if (bits) scope = std::make_unique<Mpfr::Precision>(bits);
+  Input<T> in(p, n);
+  for (auto _ : st) {
+    if (op == "insert") benchmark::DoNotOptimize(insert_knot(in.S, 0, in.knot, 1));
+    else if (op == "refine") benchmark::DoNotOptimize(refine_knots(in.S, 0, in.refine));
+    else if (op == "elevate") benchmark::DoNotOptimize(elevate_degree(in.S, 0, 1));
+    else if (op == "extract") benchmark::DoNotOptimize(extract_bezier(in.S));
+    else if (op == "eval")
+      for (const auto& x : in.at) benchmark::DoNotOptimize(evaluate(in.S, {x}));
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
+}
+
+// Collects real time per benchmark name for the ratio table.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, double> ns;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& r : runs)
+      if (!r.error_occurred) ns[r.benchmark_name()] = r.GetAdjustedRealTime();
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--decimal") == 0) g_dyadic = false;
+  const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "eval"};
+  const std::vector<int> degrees{1, 3, 5, 7};
+  const std::vector<std::size_t> sizes{10, 100, 1000, 10000};
+  const std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}};
+  for (const auto& op : ops)
+    for (int p : degrees)
+      for (std::size_t n : sizes) {
+        if (n < static_cast<std::size_t>(p) + 1) continue;
+        for (const auto& [a, bits] : ariths) {
+          const std::string name = op + "/" + a + "/p" + std::to_string(p) + "/n" + std::to_string(n);
+          const long b = bits;
+          benchmark::RegisterBenchmark(name.c_str(), [op, p, n, a, b](benchmark::State& st) {
+            if (a == "double") run_op<double>(st, op, p, n, 0);
+            else if (a == "exact") run_op<Rational>(st, op, p, n, 0);
+            else if (a == "flint") run_op<FlintRational>(st, op, p, n, 0);
+            else run_op<Mpfr>(st, op, p, n, b);
+          })->Unit(benchmark::kMicrosecond);
+        }
+      }
+  benchmark::Initialize(&argc, argv);
+  RatioReporter rep;
+  benchmark::RunSpecifiedBenchmarks(&rep);
+  std::cout << "\nTime ratios (" << (g_dyadic ? "dyadic" : "decimal") << " data) against double:\n";
+  std::cout << std::left << std::setw(10) << "op" << std::setw(5) << "p" << std::setw(8) << "n" << std::setw(16) << "exact(GMP)/double"
+            << std::setw(18) << " flint/double" << "mpfr128/double\n";
+  for (const auto& op : ops)
+    for (int p : degrees)
+      for (std::size_t n : sizes) {
+        const std::string tail = "/p" + std::to_string(p) + "/n" + std::to_string(n);
+        auto d = rep.ns.find(op + "/double" + tail), e = rep.ns.find(op + "/exact" + tail), m = rep.ns.find(op + "/mpfr128" + tail),
+             f = rep.ns.find(op + "/flint" + tail);
+        if (d == rep.ns.end()) continue;
+        auto ratio = [&](decltype(d) it) { return it == rep.ns.end() ? std::string("-") : std::to_string(it->second / d->second).substr(0, 6); };
+        std::cout << std::setw(10) << op << std::setw(5) << p << std::setw(8) << n << std::setw(18) << ratio(e) << std::setw(18) << ratio(f)
+                  << ratio(m);
+        std::cout << "\n";
+      }
+  benchmark::Shutdown();
+  return 0;
+}
