@@ -45,7 +45,15 @@ const Case& get_case(int p, std::size_t n) {
   Case c;
   c.exact = random_spline(spec, rng);
   c.knot = random_inside(0, 1, rng, g_dyadic);
-  for (std::size_t i = 0; i < std::max<std::size_t>(1, n / 10); ++i) c.refine.push_back(random_inside(0, 1, rng, g_dyadic));
+  // Refinement knots on a grid fine enough (2^-20 or 10^-6) that n/10 of them rarely repeat;
+  // repeats beyond the degree are skipped so the input is always valid.
+  const long fine = g_dyadic ? (1L << 20) : 1000000L;
+  std::map<long, int> used;
+  for (std::size_t i = 0; i < std::max<std::size_t>(1, n / 10); ++i) {
+    const long k = std::uniform_int_distribution<long>(1, fine - 1)(rng);
+    if (++used[k] > p) continue;
+    c.refine.emplace_back(k, fine);
+  }
   for (int i = 0; i < 16; ++i) c.at.push_back(random_inside(0, 1, rng, g_dyadic));
   return cache.emplace(key, std::move(c)).first->second;
 }

@@ -180,6 +180,9 @@ int run_report(const ReportOptions& opt) {
     validate(S);
     run.run("adversarial", "near-coincident-knots", S, op_insert(0, {Rational(1, 10) + eps / 2, Rational(1, 10) - eps}));
     run.run("adversarial", "near-coincident-knots", S, op_elevate(0, 2));
+    Operation blossom = op_elevate(0, 2);
+    blossom.method = ElevationMethod::blossom;  // the same map by the blossom: is the loss A5.9's?
+    run.run("adversarial", "near-coincident-knots", S, blossom);
     run.run("adversarial", "near-coincident-knots", S, op_extract());
     // High degree: elevate a cubic to degree 15, and insert into a degree-15 curve.
     RandomSplineSpec spec;
@@ -187,6 +190,9 @@ int run_report(const ReportOptions& opt) {
     spec.counts = {10};
     const auto C = random_spline(spec, rng);
     run.run("adversarial", "elevate-3-to-15", C, op_elevate(0, 12));
+    Operation blossom15 = op_elevate(0, 12);
+    blossom15.method = ElevationMethod::blossom;
+    run.run("adversarial", "elevate-3-to-15", C, blossom15);
     spec.degrees = {15};
     spec.counts = {24};
     const auto H = random_spline(spec, rng);
@@ -231,30 +237,37 @@ int run_report(const ReportOptions& opt) {
   }
   write_file_atomically(opt.out_dir + "/crosscheck.json", all.dump(1) + "\n");
 
-  // Figure 1: max grid relative error against degree, per operation and arithmetic.
-  std::vector<PlotSeries> s1;
-  int ci = 0;
-  for (const std::string opn : {"insert-knots", "elevate"})
-    for (const auto& a : ariths) {
-      PlotSeries s;
-      s.label = opn + ", " + a;
-      s.color = kColors[ci++ % 8];
-      s.dashed = opn == "elevate";
-      std::map<int, double> worst;
-      for (const auto& r : run.rows)
-        if (r.suite == "random" && r.rep.operation == opn && r.rep.arith == a)
-          worst[r.degree] = std::max(worst[r.degree], r.rep.grid.rel());
-      for (auto [d, e] : worst) s.points.emplace_back(d, e);
-      s1.push_back(std::move(s));
-    }
+  // Figures 1 and 1b: worst grid error against degree, per operation and arithmetic, as a relative
+  // error (log scale) and as bits lost (linear; comparable across precisions).
+  auto by_degree = [&](bool bits) {
+    std::vector<PlotSeries> out;
+    int ci = 0;
+    for (const std::string opn : {"insert-knots", "elevate"})
+      for (const auto& a : ariths) {
+        PlotSeries s;
+        s.label = opn + ", " + a;
+        s.color = kColors[ci++ % 8];
+        s.dashed = opn == "elevate";
+        std::map<int, double> worst;
+        for (const auto& r : run.rows)
+          if (r.suite == "random" && r.rep.operation == opn && r.rep.arith == a)
+            worst[r.degree] = std::max(worst[r.degree], bits ? r.rep.grid.bits_lost(r.rep.precision) : r.rep.grid.rel());
+        for (auto [d, e] : worst) s.points.emplace_back(d, e);
+        out.push_back(std::move(s));
+      }
+    return out;
+  };
+  const std::string note = "random curves, surfaces, trivariates; worst over dimension and rationality";
   write_file_atomically(opt.out_dir + "/error_vs_degree.svg",
                         svg_line_plot({"Max relative error of evaluated points vs degree", "degree",
-                                       "max relative error (exact measurement)", false, true,
-                                       "random curves, surfaces, trivariates; worst over dimension and rationality"},
-                                      s1));
+                                       "max relative error (exact measurement)", false, true, note},
+                                      by_degree(false)));
+  write_file_atomically(opt.out_dir + "/bits_lost_vs_degree.svg",
+                        svg_line_plot({"Bits lost at evaluated points vs degree", "degree", "bits lost", false, false, note},
+                                      by_degree(true)));
   // Figure 2: error against number of inserted knots.
   std::vector<PlotSeries> s2;
-  ci = 0;
+  int ci = 0;
   for (const std::string suite : {"refinement", "refinement-boehm"})
     for (const std::string cname : {"curve-p3", "curve-p5"})
       for (const auto& a : ariths) {
@@ -310,7 +323,8 @@ int run_report(const ReportOptions& opt) {
          << " |\n";
     }
   };
-  md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![error vs inserted knots](error_vs_inserted_knots.svg)\n";
+  md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
+        "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");

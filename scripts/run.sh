@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 what=${1:-test}
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libboost-dev libcgal-dev
-          libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev)
+          libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -16,8 +16,9 @@ done
 if ((${#missing[@]})); then
   echo "splinex: installing ${missing[*]}" >&2
   export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+  sudo=""; [[ $(id -u) != 0 ]] && sudo="sudo"
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
 case "$what" in
