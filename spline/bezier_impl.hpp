@@ -7,30 +7,6 @@
 namespace splinex {
 namespace detail {
 
-// Keeps control points [first, first+n_new) of direction d (and the given knot range).
-template <class T>
-BSpline<T> slice(const BSpline<T>& S, int d, std::size_t first, std::size_t n_new, std::vector<T> knots) {
-  std::size_t before = 1, after = 1;
-  for (int e = 0; e < d; ++e) before *= S.count(e);
-  for (int e = d + 1; e < S.dim(); ++e) after *= S.count(e);
-  const std::size_t n = S.count(d);
-  BSpline<T> R;
-  R.degrees = S.degrees;
-  R.knots = S.knots;
-  R.knots[d] = std::move(knots);
-  R.q = S.q;
-  auto cut = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
-    W.reserve(before * n_new * after * width);
-    for (std::size_t b = 0; b < after; ++b) {
-      const T* src = V.data() + ((b * n + first) * before) * width;
-      W.insert(W.end(), src, src + n_new * before * width);
-    }
-  };
-  cut(S.points, S.q, R.points);
-  if (S.is_rational()) cut(S.weights, 1, R.weights);
-  return R;
-}
-
 // Raises every interior breakpoint of direction d to multiplicity p (clamped first).
 template <class T>
 BSpline<T> to_bezier_form(const BSpline<T>& S, int d, const Limits& limits) {
@@ -62,7 +38,7 @@ std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& li
       for (const auto& piece : pieces) {
         std::vector<T> knots(p + 1, bp[seg]);
         knots.insert(knots.end(), p + 1, bp[seg + 1]);
-        BezierPiece<T> np{piece.box, detail::slice(piece.spline, d, seg * p, p + 1, std::move(knots))};
+        BezierPiece<T> np{piece.box, slice_direction(piece.spline, d, seg * p, p + 1, std::move(knots))};
         np.box.emplace_back(bp[seg], bp[seg + 1]);
         next.push_back(std::move(np));
       }
@@ -86,7 +62,7 @@ std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>& S, int d, const T& 
   while (U[s] < x) ++s;
   std::vector<T> left(U.begin(), U.begin() + s + p + 1), right(U.begin() + s, U.end());
   const std::size_t n = C.count(d);
-  return {detail::slice(C, d, 0, s, std::move(left)), detail::slice(C, d, s, n - s, std::move(right))};
+  return {slice_direction(C, d, 0, s, std::move(left)), slice_direction(C, d, s, n - s, std::move(right))};
 }
 
 template <class T>
@@ -114,10 +90,7 @@ BSpline<T> reverse(const BSpline<T>& S, int d) {
     const T& u = U[U.size() - 1 - i];
     R.knots[d][i] = (u == a) ? b : (u == b) ? a : c - u;
   }
-  std::size_t before = 1, after = 1;
-  for (int e = 0; e < d; ++e) before *= S.count(e);
-  for (int e = d + 1; e < S.dim(); ++e) after *= S.count(e);
-  const std::size_t n = S.count(d);
+  const auto [before, n, after] = fibre_layout(S, d);
   auto flip = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
     for (std::size_t b = 0; b < after; ++b)
       for (std::size_t i = 0; i < n; ++i) {

@@ -112,6 +112,42 @@ void set_from_homogeneous(BSpline<T>& S, std::vector<T>&& H, bool rational) {
   }
 }
 
+// The storage seen from direction d: `before` control points of lower directions per step in d
+// (contiguous), n = count(d) steps, and `after` such fibres of higher directions.
+struct FibreLayout {
+  std::size_t before = 1, n = 0, after = 1;
+};
+template <class T>
+FibreLayout fibre_layout(const BSpline<T>& S, int d) {
+  FibreLayout f;
+  for (int e = 0; e < d; ++e) f.before *= S.count(e);
+  for (int e = d + 1; e < S.dim(); ++e) f.after *= S.count(e);
+  f.n = S.count(d);
+  return f;
+}
+
+// The sub-spline of control points [first, first + n_new) in direction d, with the given knot
+// vector for that direction (the caller makes knots and points consistent).
+template <class T>
+BSpline<T> slice_direction(const BSpline<T>& S, int d, std::size_t first, std::size_t n_new, std::vector<T> knots) {
+  const FibreLayout f = fibre_layout(S, d);
+  BSpline<T> R;
+  R.degrees = S.degrees;
+  R.knots = S.knots;
+  R.knots[d] = std::move(knots);
+  R.q = S.q;
+  auto cut = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
+    W.reserve(f.before * n_new * f.after * width);
+    for (std::size_t b = 0; b < f.after; ++b) {
+      const T* src = V.data() + ((b * f.n + first) * f.before) * width;
+      W.insert(W.end(), src, src + n_new * f.before * width);
+    }
+  };
+  cut(S.points, S.q, R.points);
+  if (S.is_rational()) cut(S.weights, 1, R.weights);
+  return R;
+}
+
 // A curve operation on a block of n "points" of m coordinates each (contiguous, point-major),
 // with degree p and knot vector U. It returns the new degree, knots and points.
 template <class T>
@@ -130,10 +166,8 @@ template <class T, class Op>
 BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
   const bool rational = S.is_rational();
   const std::size_t qq = S.q + (rational ? 1 : 0);
-  std::size_t before = 1, after = 1;
-  for (int e = 0; e < d; ++e) before *= S.count(e);
-  for (int e = d + 1; e < S.dim(); ++e) after *= S.count(e);
-  const std::size_t n = S.count(d), m = qq * before;
+  const auto [before, n, after] = fibre_layout(S, d);
+  const std::size_t m = qq * before;
   // Polynomial splines are worked on in place; only rational ones need the homogeneous copy.
   std::vector<T> H;
   if (rational) H = homogeneous_points(S);

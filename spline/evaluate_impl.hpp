@@ -89,6 +89,18 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
     throw UsageError("orders", "needs one derivative order per direction", "give " + std::to_string(k) + " orders");
   for (int o : orders)
     if (o < 0) throw UsageError("orders", "a derivative order is negative", "use orders >= 0");
+  // A polynomial piece of degree p has no derivative of order > p in that direction.
+  if (!S.is_rational())
+    for (int d = 0; d < k; ++d)
+      if (orders[d] > S.degrees[d]) return std::vector<T>(S.q, T(0));
+  // The quotient rule needs every lower mixed partial: prod (k_d + 1) of them.
+  std::size_t needed = 1;
+  for (int o : orders) {
+    needed *= static_cast<std::size_t>(o) + 1;
+    if (needed > 1'000'000)
+      throw SizeLimitError("derivative", "the derivative orders need more than 10^6 mixed partials",
+                           "ask for lower orders");
+  }
   std::vector<std::size_t> span(k);
   std::vector<std::vector<std::vector<T>>> D(k);
   for (int d = 0; d < k; ++d) {

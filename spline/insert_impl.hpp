@@ -182,26 +182,8 @@ BSpline<T> clamp(const BSpline<T>& S, int d, const Limits& limits) {
   while (U[first] < lo) ++first;  // first index of lo's run
   std::size_t last = U.size() - 1;
   while (hi < U[last]) --last;     // last index of hi's run
-  const std::size_t n = R.count(d);
   const std::size_t n_new = (last - first + 1) - p - 1;
-  std::size_t before = 1, after = 1;
-  for (int e = 0; e < d; ++e) before *= R.count(e);
-  for (int e = d + 1; e < R.dim(); ++e) after *= R.count(e);
-  BSpline<T> C = R;
-  C.knots[d].assign(U.begin() + first, U.begin() + last + 1);
-  const std::size_t q = R.q;
-  auto cut = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
-    W.clear();
-    W.reserve(before * n_new * after * width);
-    for (std::size_t b = 0; b < after; ++b)
-      for (std::size_t i = first; i < first + n_new; ++i) {
-        const auto* src = V.data() + ((b * n + i) * before) * width;
-        W.insert(W.end(), src, src + before * width);
-      }
-  };
-  cut(R.points, q, C.points);
-  if (R.is_rational()) cut(R.weights, 1, C.weights);
-  return C;
+  return slice_direction(R, d, first, n_new, std::vector<T>(U.begin() + first, U.begin() + last + 1));
 }
 
 template <class T>

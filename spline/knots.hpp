@@ -1,6 +1,7 @@
 // Knot vectors (NURBS Book ch. 2): validation, span search (A2.1), multiplicities.
 // Generic over the scalar T; only comparisons are used, and they are exact in exact arithmetic.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -58,11 +59,12 @@ std::size_t find_span(const std::vector<T>& U, int p, std::size_t n, const T& x)
   return lo;
 }
 
+// How often x occurs in the (sorted) knot vector U: O(log n).
 template <class T>
 std::size_t multiplicity(const std::vector<T>& U, const T& x) {
-  std::size_t m = 0;
-  for (const T& u : U) if (u == x) ++m;
-  return m;
+  const auto less = [](const T& a, const T& b) { return a < b; };
+  const auto r = std::equal_range(U.begin(), U.end(), x, less);
+  return static_cast<std::size_t>(r.second - r.first);
 }
 
 // The distinct knot values inside the domain [U[p], U[n]], ends included: the breakpoints.
