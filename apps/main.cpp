@@ -108,11 +108,14 @@ int main(int argc, char** argv) {
   app.add_option("--max-degree", limits.max_degree, "degree limit per direction")->capture_default_str();
 
   Common ev;
-  std::string at, orders;
+  std::string at, orders, eval_method = "basis";
   auto* c_eval = app.add_subcommand("eval", "evaluate a spline (or a partial derivative) at a parameter");
   c_eval->add_option("--arith", ev.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
   c_eval->add_option("--at", at, "parameter \"x0,x1,...\"")->required();
   c_eval->add_option("--derivative", orders, "derivative orders per direction, e.g. \"1,0\"");
+  c_eval->add_option("--method", eval_method, "basis (A2.2 basis functions) or deboor (de Boor's algorithm)")
+      ->check(CLI::IsMember({"basis", "deboor"}))
+      ->capture_default_str();
   c_eval->add_option("file", ev.file, "spline document, - for stdin")->required();
 
   std::map<std::string, std::pair<Common, OpOptions>> ops;
@@ -185,7 +188,9 @@ int main(int argc, char** argv) {
         const auto Sf = sx::convert<T>(S, conv);
         std::vector<T> xf;
         for (const auto& v : x) xf.push_back(conv(v));
-        const auto p = ord.empty() ? sx::evaluate(Sf, xf) : sx::derivative(Sf, xf, ord);
+        if (!ord.empty() && eval_method == "deboor")
+          throw sx::UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
+        const auto p = !ord.empty() ? sx::derivative(Sf, xf, ord) : eval_method == "deboor" ? sx::evaluate_de_boor(Sf, xf) : sx::evaluate(Sf, xf);
         return sx::Json{{"point", sx::point_to_json(p)}};
       });
       std::cout << out.dump() << "\n";

@@ -201,6 +201,25 @@ std::vector<ProofEntry> make_registry() {
                                                ""),
                               i);
                     }, 112));
+  r.push_back(entry("evaluation-deboor",
+                    "de Boor's algorithm (A3.1, direction by direction) = the basis-function sum (A2.2), exactly",
+                    "p per direction (2p for rational: cross-multiplied)",
+                    [](const BSpline<Rational>& S, std::mt19937_64&, Accumulator& acc, std::size_t i) {
+                      std::vector<std::vector<Rational>> cuts;
+                      std::vector<int> bound;
+                      for (int e = 0; e < S.dim(); ++e) {
+                        cuts.push_back(breakpoints(S.knots[e], S.degrees[e], S.count(e)));
+                        bound.push_back(S.is_rational() ? 2 * S.degrees[e] : S.degrees[e]);
+                      }
+                      acc.add(prove_by_samples(cuts, bound,
+                                               [&](const std::vector<Rational>& x) {
+                                                 return evaluate(S, x) == evaluate_de_boor(S, x)
+                                                            ? std::string()
+                                                            : std::string("A2.2 and de Boor differ");
+                                               },
+                                               ""),
+                              i);
+                    }, 114));
   r.push_back(entry("flint-agreement",
                     "every operation gives identical knots, points and weights in GMP (Boost mpq) and FLINT (fmpq)",
                     "none (coefficient equality)",

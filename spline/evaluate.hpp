@@ -12,6 +12,13 @@ namespace splinex {
 template <class T>
 std::vector<T> evaluate(const BSpline<T>& S, const std::vector<T>& x);
 
+// S(x) by de Boor's algorithm (NURBS Book A3.1 generalized): the (p_d+1)-point active net is
+// reduced one direction at a time by the de Boor triangle, on homogeneous coordinates. An
+// independent route to evaluate(), which uses the basis functions (A2.2); proofs require that
+// both give the same exact value.
+template <class T>
+std::vector<T> evaluate_de_boor(const BSpline<T>& S, const std::vector<T>& x);
+
 // The partial derivative d^{k_0+...}S / dx_0^{k_0} ... at x (orders k_d >= 0, any size; a
 // derivative past the degree is zero). Rational splines use the quotient rule (A4.4 generalized
 // to k directions).

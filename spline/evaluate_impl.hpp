@@ -82,6 +82,61 @@ std::vector<T> evaluate(const BSpline<T>& S, const std::vector<T>& x) {
 }
 
 template <class T>
+std::vector<T> evaluate_de_boor(const BSpline<T>& S, const std::vector<T>& x) {
+  detail::check_point(S, x);
+  const int k = S.dim();
+  const bool rational = S.is_rational();
+  const std::size_t q = S.q, qq = q + (rational ? 1 : 0);
+  std::vector<std::size_t> span(k), stride(k);
+  std::size_t st = 1, active = 1;
+  for (int d = 0; d < k; ++d) {
+    span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
+    stride[d] = st;
+    st *= S.count(d);
+    active *= S.degrees[d] + 1;
+  }
+  // Gather the active homogeneous net, direction 0 fastest.
+  std::vector<T> net;
+  net.reserve(active * qq);
+  std::vector<int> i(k, 0);
+  while (true) {
+    std::size_t idx = 0;
+    for (int d = 0; d < k; ++d) idx += (span[d] - S.degrees[d] + i[d]) * stride[d];
+    for (std::size_t c = 0; c < q; ++c) net.push_back(rational ? S.points[idx * q + c] * S.weights[idx] : S.points[idx * q + c]);
+    if (rational) net.push_back(S.weights[idx]);
+    int d = 0;
+    while (d < k && ++i[d] > S.degrees[d]) { i[d] = 0; ++d; }
+    if (d == k) break;
+  }
+  // Reduce direction 0 (fastest) first: each run of p_0+1 consecutive points collapses to one,
+  // which leaves direction 1 fastest, and so on.
+  const std::size_t width = qq;
+  for (int d = 0; d < k; ++d) {
+    const int p = S.degrees[d];
+    const auto& U = S.knots[d];
+    const std::size_t s = span[d], runs = net.size() / ((p + 1) * width);
+    std::vector<T> next;
+    next.reserve(runs * width);
+    for (std::size_t r = 0; r < runs; ++r) {
+      std::vector<T> tri(net.begin() + r * (p + 1) * width, net.begin() + (r + 1) * (p + 1) * width);
+      for (int lev = 1; lev <= p; ++lev)
+        for (int j = p; j >= lev; --j) {
+          const std::size_t idx = s - p + j;
+          const T alpha = (x[d] - U[idx]) / (U[idx + p - lev + 1] - U[idx]);
+          for (std::size_t c = 0; c < width; ++c)
+            tri[j * width + c] = tri[(j - 1) * width + c] + alpha * (tri[j * width + c] - tri[(j - 1) * width + c]);
+        }
+      next.insert(next.end(), tri.begin() + p * width, tri.begin() + (p + 1) * width);
+    }
+    net = std::move(next);
+  }
+  if (!rational) return net;
+  std::vector<T> out(q);
+  for (std::size_t c = 0; c < q; ++c) out[c] = net[c] / net[q];
+  return out;
+}
+
+template <class T>
 std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const std::vector<int>& orders) {
   detail::check_point(S, x);
   const int k = S.dim();

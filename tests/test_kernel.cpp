@@ -27,6 +27,8 @@ TEST_CASE("evaluation against hand-computed values") {
   // (P0 + 2 P1 + 2 P2)/(1 + 2 + 2) with P = (0,0),(1,2),(4,0): (10/5, 4/5).
   const auto R = spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[0,0],[1,2],[4,0]],"weights":[1,1,2]})");
   CHECK(evaluate(R, {Rational(1, 2)}) == std::vector<Rational>{Rational(2), Rational(4, 5)});
+  CHECK(evaluate_de_boor(R, {Rational(1, 2)}) == std::vector<Rational>{Rational(2), Rational(4, 5)});
+  CHECK(evaluate_de_boor(B, {Rational(1, 2)}) == std::vector<Rational>{Rational(3, 2), Rational(1)});
   // Derivative of the rational curve, by the quotient rule by hand at t = 0:
   // C'(0) = w1/w0 * p (P1 - P0) = 2 * (1, 2) = (2, 4).
   CHECK(derivative(R, {Rational(0)}, {1}) == std::vector<Rational>{Rational(2), Rational(4)});
