@@ -31,8 +31,10 @@ struct Limits {
 // Multiply counts, throwing SizeLimitError instead of overflowing.
 inline std::size_t checked_product(std::size_t a, std::size_t b, const Limits& limits,
                                    const std::string& what) {
-  if (a != 0 && b > limits.max_control_points / a + 1) limits.check_count(limits.max_control_points + 1, what);
-  std::size_t r = a * b;
+  std::size_t r = 0;
+  if (__builtin_mul_overflow(a, b, &r))
+    throw SizeLimitError(what, "the result would have more control points than a machine word counts",
+                         "ask for less");
   limits.check_count(r, what);
   return r;
 }
