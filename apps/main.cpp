@@ -129,6 +129,18 @@ int main(int argc, char** argv) {
     op_cmds[k] = c;
   }
 
+  Common cp;
+  std::string cp_outer, cp_inner, cp_method = "symbolic";
+  bool cp_expand = false;
+  auto* c_compose = app.add_subcommand("compose", "functional composition T(S) of B-splines (S inside T's pieces)");
+  c_compose->add_option("--arith", cp.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
+  c_compose->add_option("--outer", cp_outer, "outer spline document T")->required();
+  c_compose->add_option("--inner", cp_inner, "inner spline document S (points in T's parameter space)")->required();
+  c_compose->add_option("--method", cp_method, "symbolic (Elber's Bernstein products), interpolation, or trimmed")
+      ->check(CLI::IsMember({"symbolic", "interpolation", "trimmed"}))
+      ->capture_default_str();
+  c_compose->add_flag("--expand", cp_expand, "use T's end pieces as polynomials on all of R^n where S leaves T's domain");
+
   std::string cc_op, cc_float = "double", cc_file;
   int cc_grid = 0;
   OpOptions cc_opts;
@@ -202,6 +214,24 @@ int main(int argc, char** argv) {
       const auto S = sx::spline_from_json(sx::read_json_file(cm.file), limits);
       const auto spec = sx::ArithSpec::parse(cm.arith);
       std::cout << run_op_document(make_op(k, oo), S, spec, limits).dump() << "\n";
+      return 0;
+    }
+    if (c_compose->parsed()) {
+      if (cp_method == "trimmed")
+        throw sx::UsageError("method", "trimmed composition across knot lines (Algorithm 1) is not implemented yet",
+                             "use symbolic or interpolation for inner splines whose pieces stay in one piece of T");
+      const auto T = sx::spline_from_json(sx::read_json_file(cp_outer), limits, "outer");
+      const auto S = sx::spline_from_json(sx::read_json_file(cp_inner), limits, "inner");
+      sx::CompositionOptions o;
+      o.method = cp_method == "interpolation" ? sx::CompositionMethod::interpolation : sx::CompositionMethod::symbolic;
+      o.expand = cp_expand;
+      const auto spec = sx::ArithSpec::parse(cp.arith);
+      const sx::Json out = sx::with_arith(spec, [&](auto tag) {
+        using F = typename decltype(tag)::type;
+        auto conv = [](const sx::Rational& v) { return sx::ArithTraits<F>::from_rational(v); };
+        return sx::spline_to_json(sx::compose(sx::convert<F>(T, conv), sx::convert<F>(S, conv), o, limits));
+      });
+      std::cout << out.dump() << "\n";
       return 0;
     }
     if (c_cross->parsed()) {

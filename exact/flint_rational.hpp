@@ -63,6 +63,7 @@ struct ArithTraits<FlintRational> {
   static FlintRational from_rational(const Rational& x) { return FlintRational(x); }
   static Rational to_rational(const FlintRational& x) { return x.to_rational(); }
   static nlohmann::json to_json(const FlintRational& x) { return to_fraction_string(x.to_rational()); }
+  static std::string to_string(const FlintRational& x) { return to_fraction_string(x.to_rational()); }
 };
 
 }  // namespace splinex

@@ -39,6 +39,7 @@ struct ArithTraits<Rational> {
   static Rational from_rational(const Rational& x) { return x; }
   static Rational to_rational(const Rational& x) { return x; }
   static nlohmann::json to_json(const Rational& x) { return to_fraction_string(x); }
+  static std::string to_string(const Rational& x) { return to_fraction_string(x); }
 };
 
 }  // namespace splinex

@@ -1,3 +1,4 @@
+#include "float/mpfr.hpp"  // ArithTraits<double>
 #include "spline/instantiate.hpp"
 
 namespace splinex {

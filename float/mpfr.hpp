@@ -87,6 +87,7 @@ struct ArithTraits<Mpfr> {
   static Mpfr from_rational(const Rational& x) { return Mpfr(x); }
   static Rational to_rational(const Mpfr& x) { return splinex::to_rational(x); }
   static nlohmann::json to_json(const Mpfr& x) { return to_decimal_string(x); }
+  static std::string to_string(const Mpfr& x) { return to_decimal_string(x); }
 };
 
 template <>
@@ -97,6 +98,7 @@ struct ArithTraits<double> {
   static double from_rational(const Rational& x) { return to_double(x); }
   static Rational to_rational(double x) { return exact_from_double(x); }
   static nlohmann::json to_json(double x) { return x; }  // nlohmann prints the shortest round-trip text
+  static std::string to_string(double x) { return nlohmann::json(x).dump(); }
 };
 
 }  // namespace splinex

@@ -220,6 +220,131 @@ std::vector<ProofEntry> make_registry() {
                                                ""),
                               i);
                     }, 114));
+  {
+    // Random Bezier compositions: inner S: R^k -> R^n, outer T: R^n -> R^q, rational or not.
+    auto random_composition = [](std::mt19937_64& rng, bool inside) {
+      auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+      const int k = pick(1, 3), n = pick(1, 3);
+      RandomSplineSpec si, so;
+      for (int l = 0; l < k; ++l) {
+        si.degrees.push_back(pick(1, k == 3 ? 1 : 2));
+        si.counts.push_back(si.degrees.back() + 1);
+      }
+      for (int j = 0; j < n; ++j) {
+        so.degrees.push_back(pick(1, n == 3 ? 2 : 3));
+        so.counts.push_back(so.degrees.back() + 1);
+      }
+      si.q = n;
+      so.q = pick(1, 3);
+      si.rational = pick(0, 2) == 0;
+      so.rational = pick(0, 2) == 0;
+      BSpline<Rational> S = random_spline(si, rng), T = random_spline(so, rng);
+      for (int l = 0; l < k; ++l) S = reparametrize(S, l, Rational(pick(-3, 0), 2), Rational(pick(1, 4), 3));
+      for (int j = 0; j < n; ++j) T = reparametrize(T, j, Rational(pick(-4, 0), 5), Rational(pick(1, 5), 4));
+      // Inner points in [-2, 2]; inside: mapped into the outer box instead (rational outer splines
+      // need it for positive composed weights).
+      if (inside || T.is_rational())
+        for (std::size_t i = 0; i < S.size(); ++i)
+          for (int j = 0; j < n; ++j) {
+            Rational& x = S.points[i * n + j];
+            x = T.domain_lo(j) + (T.domain_hi(j) - T.domain_lo(j)) * (x + 2) / 4;
+          }
+      return std::make_pair(T, S);
+    };
+    r.push_back(entry("compose-methods-agree",
+                      "Bezier composition T(S) by symbolic Bernstein products (Elber) = by exact interpolation, "
+                      "coefficient for coefficient; degrees d_l * sum e_j",
+                      "none (coefficient equality)",
+                      [random_composition](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                        const auto [T, S] = random_composition(rng, false);
+                        const auto A = compose_bezier(T, S, CompositionMethod::symbolic);
+                        const auto B = compose_bezier(T, S, CompositionMethod::interpolation);
+                        if (A.degrees != composed_degrees(T, S)) acc.fail("wrong composed degrees", i);
+                        if (!same_representation(A, B)) acc.fail("the two composition methods differ", i);
+                      }, 115));
+    r.push_back(entry("compose-identity",
+                      "R(r) = T(S(r)) for the composed Bezier piece R, T evaluated pointwise (also outside its box, "
+                      "Observation 1)",
+                      "D_l = d_l * sum e_j per direction (2 D_l for rational: cross-multiplied)",
+                      [random_composition](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                        const auto [T, S] = random_composition(rng, false);
+                        const auto R = compose_bezier(T, S, CompositionMethod::symbolic);
+                        std::vector<std::vector<Rational>> cuts;
+                        std::vector<int> bound;
+                        for (int l = 0; l < S.dim(); ++l) {
+                          cuts.push_back({S.domain_lo(l), S.domain_hi(l)});
+                          bound.push_back(R.is_rational() ? 2 * R.degrees[l] : R.degrees[l]);
+                        }
+                        acc.add(prove_by_samples(cuts, bound,
+                                                 [&](const std::vector<Rational>& x) {
+                                                   const auto s = evaluate(S, x);
+                                                   auto t = evaluate_bezier_anywhere(T, s);
+                                                   if (T.is_rational())
+                                                     for (int c = 0; c < T.q; ++c) t[c] /= t[T.q];
+                                                   t.resize(T.q);
+                                                   return evaluate(R, x) == t ? std::string() : std::string("R(r) != T(S(r))");
+                                                 },
+                                                 ""),
+                                i);
+                      }, 116));
+  }
+  r.push_back(entry("compose-bspline",
+                    "R(r) = T(S(r)) for B-splines T and S whose pieces meet T's knot lines only along S's own "
+                    "knots (each piece of S in one piece of T), R joined from the composed pieces",
+                    "D_l = d_l * sum e_j per direction (2 D_l for rational: cross-multiplied)",
+                    [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+                      const int n = pick(1, 2);
+                      RandomSplineSpec so;
+                      for (int j = 0; j < n; ++j) {
+                        so.degrees.push_back(pick(1, 3));
+                        so.counts.push_back(so.degrees.back() + 1 + pick(0, 2));
+                      }
+                      so.q = pick(1, 3);
+                      so.rational = pick(0, 2) == 0;
+                      const BSpline<Rational> T = random_spline(so, rng);
+                      // S(r) = (phi_0(r_0), ..., phi_{n-1}(r_{n-1})): per direction a C^0 quadratic that maps
+                      // each cell of T onto itself monotonically (middle control point strictly inside).
+                      BSpline<Rational> S;
+                      S.q = n;
+                      std::vector<std::vector<Rational>> coord(n);
+                      for (int j = 0; j < n; ++j) {
+                        const auto bp = breakpoints(T.knots[j], T.degrees[j], T.count(j));
+                        std::vector<Rational> U{bp.front(), bp.front(), bp.front()};
+                        coord[j].push_back(bp.front());
+                        for (std::size_t c = 0; c + 1 < bp.size(); ++c) {
+                          coord[j].push_back(random_inside(bp[c], bp[c + 1], rng));
+                          coord[j].push_back(bp[c + 1]);
+                          U.insert(U.end(), c + 2 < bp.size() ? 2 : 3, bp[c + 1]);
+                        }
+                        S.degrees.push_back(2);
+                        S.knots.push_back(std::move(U));
+                      }
+                      std::size_t total = 1;
+                      for (int j = 0; j < n; ++j) total *= coord[j].size();
+                      for (std::size_t g = 0; g < total; ++g) {
+                        std::size_t rem = g;
+                        for (int j = 0; j < n; ++j) {
+                          S.points.push_back(coord[j][rem % coord[j].size()]);
+                          rem /= coord[j].size();
+                        }
+                      }
+                      validate(S);
+                      const auto R = compose(T, S);
+                      std::vector<std::vector<Rational>> cuts;
+                      std::vector<int> bound;
+                      for (int l = 0; l < n; ++l) {
+                        cuts.push_back(breakpoints(R.knots[l], R.degrees[l], R.count(l)));
+                        bound.push_back(R.is_rational() ? 2 * R.degrees[l] : R.degrees[l]);
+                      }
+                      acc.add(prove_by_samples(cuts, bound,
+                                               [&](const std::vector<Rational>& x) {
+                                                 return evaluate(R, x) == evaluate(T, evaluate(S, x)) ? std::string()
+                                                                                                     : std::string("R(r) != T(S(r))");
+                                               },
+                                               ""),
+                              i);
+                    }, 117));
   r.push_back(entry("flint-agreement",
                     "every operation gives identical knots, points and weights in GMP (Boost mpq) and FLINT (fmpq)",
                     "none (coefficient equality)",

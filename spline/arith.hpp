@@ -11,6 +11,7 @@
 //   static T from_rational(const Rational&);     // correctly rounded (exact for Rational)
 //   static Rational to_rational(const T&);       // exact: every binary float is a dyadic rational
 //   static nlohmann::json to_json(const T&);     // fractions / round-trip numbers / all digits
+//   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
 #pragma once

@@ -2,6 +2,7 @@
 // arithmetic by exact/ and float/, so client code compiles against declarations only.
 #pragma once
 #include "spline/bezier_impl.hpp"
+#include "spline/compose_impl.hpp"
 #include "spline/elevate_impl.hpp"
 #include "spline/evaluate_impl.hpp"
 #include "spline/insert_impl.hpp"
@@ -20,4 +21,8 @@
   template std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>&, const Limits&);                       \
   template std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>&, int, const T&, const Limits&);        \
   template BSpline<T> reparametrize(const BSpline<T>&, int, const T&, const T&);                               \
-  template BSpline<T> reverse(const BSpline<T>&, int);
+  template BSpline<T> reverse(const BSpline<T>&, int);                                                         \
+  template std::vector<int> composed_degrees(const BSpline<T>&, const BSpline<T>&);                            \
+  template BSpline<T> compose_bezier(const BSpline<T>&, const BSpline<T>&, CompositionMethod, const Limits&);   \
+  template std::vector<T> evaluate_bezier_anywhere(const BSpline<T>&, const std::vector<T>&);                  \
+  template BSpline<T> compose(const BSpline<T>&, const BSpline<T>&, const CompositionOptions&, const Limits&);

@@ -3,6 +3,7 @@
 #include "spline/arith.hpp"
 #include "spline/bezier.hpp"
 #include "spline/bspline.hpp"
+#include "spline/compose.hpp"
 #include "spline/elevate.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
