@@ -59,7 +59,7 @@ TEST_CASE("every named proof holds on many random exact cases") {
     INFO(r.name << ": " << r.counterexample);
     CHECK(r.proved);
     CHECK(r.cases > 0);
-    if (r.name.find("agreement") == std::string::npos) CHECK(r.points > 0);
+    if (r.degree_bound.rfind("none", 0) != 0) CHECK(r.points > 0);  // identity proofs evaluate; equality ones compare nets
   }
 }
 
