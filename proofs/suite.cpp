@@ -345,6 +345,115 @@ std::vector<ProofEntry> make_registry() {
                                                ""),
                               i);
                     }, 117));
+  r.push_back(entry("compose-trimmed",
+                    "Algorithm 1 across knot lines: R(r) = T(S(r)) (Definition 1) and exactly one region owns r "
+                    "(property 2), at grid points, on both sides of trimming curves within 2^-40, and (affine S) "
+                    "exactly on knot lines and at their crossings",
+                    "pointwise exact checks (no degree bound: R is piecewise by semi-algebraic regions)",
+                    [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+                      const int n = pick(1, 2), k = pick(1, 2);
+                      RandomSplineSpec so, si;
+                      for (int j = 0; j < n; ++j) {
+                        so.degrees.push_back(pick(1, 3));
+                        so.counts.push_back(so.degrees.back() + 1 + pick(1, 3));
+                      }
+                      so.q = pick(1, 3);
+                      so.rational = pick(0, 2) == 0;
+                      const bool affine = pick(0, 2) == 0;
+                      for (int l = 0; l < k; ++l) {
+                        si.degrees.push_back(affine ? 1 : pick(1, 2));
+                        si.counts.push_back(si.degrees.back() + 1 + (affine ? 0 : pick(0, 1)));
+                      }
+                      si.q = n;
+                      si.rational = !affine && pick(0, 3) == 0;
+                      const BSpline<Rational> T = random_spline(so, rng);
+                      BSpline<Rational> S = random_spline(si, rng);
+                      for (auto& x : S.points) x = (x + 2) / 4;  // [-2, 2] -> [0, 1], T's domain
+                      const auto C = compose_trimmed(T, S);
+                      std::size_t checked = 0;
+                      auto check = [&](const std::vector<Rational>& r) -> bool {
+                        ++checked;
+                        const std::size_t piece = C.locate_piece(r);
+                        std::size_t owners = 0;
+                        for (const auto& p : C.patches)
+                          if (p.inner_piece == piece && C.in_region(p, r)) ++owners;
+                        if (owners != 1) {
+                          acc.fail(std::to_string(owners) + " regions own a point", i);
+                          return false;
+                        }
+                        if (C.evaluate(r) != evaluate(T, evaluate(S, r))) {
+                          acc.fail("R(r) != T(S(r))", i);
+                          return false;
+                        }
+                        return true;
+                      };
+                      // Grid points over S's domain, and bisection across every cell change between neighbours.
+                      const int G = 13;
+                      std::vector<int> idx(k, 0);
+                      auto point = [&](const std::vector<int>& id) {
+                        std::vector<Rational> r(k);
+                        for (int l = 0; l < k; ++l) r[l] = S.domain_lo(l) + (S.domain_hi(l) - S.domain_lo(l)) * Rational(id[l], G - 1);
+                        return r;
+                      };
+                      bool ok = true;
+                      while (ok) {
+                        const auto r = point(idx);
+                        ok = check(r);
+                        for (int l = 0; l < k && ok; ++l) {
+                          if (idx[l] + 1 == G) continue;
+                          auto id2 = idx;
+                          ++id2[l];
+                          std::vector<Rational> a = r, b = point(id2);
+                          auto owner = [&](const std::vector<Rational>& x) { return C.locate(x); };
+                          if (owner(a) == owner(b)) continue;
+                          for (int it = 0; it < 40; ++it) {
+                            std::vector<Rational> m(k);
+                            for (int e = 0; e < k; ++e) m[e] = (a[e] + b[e]) / 2;
+                            (owner(m) == owner(a) ? a : b) = m;
+                          }
+                          ok = check(a) && check(b);
+                        }
+                        int l = 0;
+                        while (l < k && ++idx[l] == G) { idx[l] = 0; ++l; }
+                        if (l == k) break;
+                      }
+                      // Affine S: points exactly on knot lines (and, k = n = 2, at their crossings).
+                      if (ok && affine) {
+                        for (int j = 0; j < n && ok; ++j)
+                          for (const auto& u : breakpoints(T.knots[j], T.degrees[j], T.count(j))) {
+                            // s_j(r) = u along r_0 with the other parameters at their domain middle.
+                            std::vector<Rational> r(k);
+                            for (int l = 0; l < k; ++l) r[l] = (S.domain_lo(l) + S.domain_hi(l)) / 2;
+                            auto at = [&](const Rational& t) { r[0] = t; return evaluate(S, r)[j]; };
+                            const Rational a0 = at(S.domain_lo(0)), a1 = at(S.domain_hi(0));
+                            if (a0 == a1 || (u - a0) * (u - a1) > 0) continue;
+                            r[0] = S.domain_lo(0) + (u - a0) / (a1 - a0) * (S.domain_hi(0) - S.domain_lo(0));
+                            if (evaluate(S, r)[j] != u) { acc.fail("on-curve point is not on the knot line", i); ok = false; break; }
+                            ok = check(r);
+                          }
+                        if (ok && k == 2 && n == 2) {
+                          // Corners: S(r) = (u, v) solved exactly for every pair of breakpoints inside S's image.
+                          const auto P = extract_bezier(S)[0].spline;
+                          const Rational x0 = S.domain_lo(0), x1 = S.domain_hi(0), y0 = S.domain_lo(1), y1 = S.domain_hi(1);
+                          const auto s00 = evaluate(S, {x0, y0}), s10 = evaluate(S, {x1, y0}), s01 = evaluate(S, {x0, y1});
+                          const Rational a = s10[0] - s00[0], b = s01[0] - s00[0], c = s10[1] - s00[1], d = s01[1] - s00[1];
+                          const Rational det = a * d - b * c;
+                          if (det != 0)
+                            for (const auto& u : breakpoints(T.knots[0], T.degrees[0], T.count(0)))
+                              for (const auto& v : breakpoints(T.knots[1], T.degrees[1], T.count(1))) {
+                                const Rational du = u - s00[0], dv = v - s00[1];
+                                const Rational s = (d * du - b * dv) / det, t = (a * dv - c * du) / det;
+                                if (s < 0 || s > 1 || t < 0 || t > 1) continue;
+                                const std::vector<Rational> r{x0 + s * (x1 - x0), y0 + t * (y1 - y0)};
+                                if (evaluate(S, r) != std::vector<Rational>{u, v}) { acc.fail("corner point misses the crossing", i); ok = false; break; }
+                                if (!(ok = check(r))) break;
+                              }
+                          (void)P;
+                        }
+                      }
+                      acc.rep.points += checked;
+                    }, 118));
   r.push_back(entry("flint-agreement",
                     "every operation gives identical knots, points and weights in GMP (Boost mpq) and FLINT (fmpq)",
                     "none (coefficient equality)",

@@ -45,6 +45,14 @@ template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options = {},
                    const Limits& limits = {});
 
+// The homogeneous composition: a polynomial Bezier piece with q+1 coordinates (w*T(S), w) when S
+// or T is rational (the weight is not required to be positive: trimmed patches evaluated only
+// inside their region may have non-positive weights elsewhere), q coordinates otherwise.
+// `rational` tells which.
+template <class T>
+BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                                      const Limits& limits, bool& rational);
+
 // T evaluated as the polynomial (or rational) of its Bezier form at any u in R^n, inside its box
 // or not (Observation 1). Homogeneous (w*T, w) for rational T.
 template <class T>

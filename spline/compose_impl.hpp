@@ -178,8 +178,8 @@ std::vector<T> evaluate_bezier_anywhere(const BSpline<T>& B, const std::vector<T
 }
 
 template <class T>
-BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
-                          const Limits& limits) {
+BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                                      const Limits& limits, bool& rational_out) {
   detail::check_bezier(outer, "outer");
   detail::check_bezier(inner, "inner");
   if (inner.q != outer.dim())
@@ -268,22 +268,33 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, Comp
 
   BSpline<T> R;
   R.degrees = D;
-  R.q = static_cast<int>(q);
+  R.q = static_cast<int>(qq);
   for (int l = 0; l < k; ++l) {
     std::vector<T> U(D[l] + 1, inner.domain_lo(l));
     U.insert(U.end(), D[l] + 1, inner.domain_hi(l));
     R.knots.push_back(std::move(U));
   }
-  if (rational) {
-    for (std::size_t K = 0; K < total; ++K)
-      if (!(T(0) < H[K * qq + q]))
-        throw DomainError("composition.weights",
-                          "the composed weights are not all positive (the inner spline leaves the outer box, or "
-                          "a weight vanishes)",
-                          "keep the inner spline inside the outer piece's box for rational compositions");
-  }
-  set_from_homogeneous(R, std::move(H), rational);
+  R.points = std::move(H);
+  rational_out = rational;
   return R;
+}
+
+template <class T>
+BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                          const Limits& limits) {
+  bool rational = false;
+  BSpline<T> H = compose_bezier_homogeneous(outer, inner, method, limits, rational);
+  if (!rational) return H;
+  const std::size_t q = outer.q, qq = q + 1;
+  for (std::size_t K = 0; K < H.size(); ++K)
+    if (!(T(0) < H.points[K * qq + q]))
+      throw DomainError("composition.weights",
+                        "the composed weights are not all positive (the inner spline leaves the outer box, or "
+                        "a weight vanishes)",
+                        "keep the inner spline inside the outer piece's box for rational compositions");
+  H.q = static_cast<int>(q);
+  set_from_homogeneous(H, std::move(H.points), true);
+  return H;
 }
 
 template <class T>

@@ -9,3 +9,4 @@
 #include "spline/insert.hpp"
 #include "spline/knots.hpp"
 #include "spline/limits.hpp"
+#include "spline/trimmed_compose.hpp"
