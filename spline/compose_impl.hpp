@@ -292,8 +292,9 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, Comp
                         "the composed weights are not all positive (the inner spline leaves the outer box, or "
                         "a weight vanishes)",
                         "keep the inner spline inside the outer piece's box for rational compositions");
+  std::vector<T> hom = std::move(H.points);  // set_from_homogeneous rewrites H.points
   H.q = static_cast<int>(q);
-  set_from_homogeneous(H, std::move(H.points), true);
+  set_from_homogeneous(H, std::move(hom), true);
   return H;
 }
 
