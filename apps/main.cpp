@@ -217,11 +217,42 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (c_compose->parsed()) {
-      if (cp_method == "trimmed")
-        throw sx::UsageError("method", "trimmed composition across knot lines (Algorithm 1) is not implemented yet",
-                             "use symbolic or interpolation for inner splines whose pieces stay in one piece of T");
       const auto T = sx::spline_from_json(sx::read_json_file(cp_outer), limits, "outer");
       const auto S = sx::spline_from_json(sx::read_json_file(cp_inner), limits, "inner");
+      if (cp_method == "trimmed") {
+        const auto spec = sx::ArithSpec::parse(cp.arith);
+        const sx::Json out = sx::with_arith(spec, [&](auto tag) {
+          using F = typename decltype(tag)::type;
+          using Tr = sx::ArithTraits<F>;
+          auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
+          const auto C = sx::compose_trimmed(sx::convert<F>(T, conv), sx::convert<F>(S, conv), {}, limits);
+          sx::Json pieces = sx::Json::array();
+          for (const auto& p : C.patches) {
+            sx::Json box = sx::Json::array(), obox = sx::Json::array(), region = sx::Json::array();
+            for (const auto& [lo, hi] : C.inner_pieces[p.inner_piece].box) box.push_back({Tr::to_json(lo), Tr::to_json(hi)});
+            for (const auto& [lo, hi] : C.outer_pieces[p.outer_cell].box) obox.push_back({Tr::to_json(lo), Tr::to_json(hi)});
+            for (const auto& c : p.region) {
+              sx::Json cj{{"coordinate", c.coord}};
+              if (c.check_lo) cj["at_least"] = Tr::to_json(c.lo);
+              if (c.check_hi) cj[c.hi_closed ? "at_most" : "below"] = Tr::to_json(c.hi);
+              region.push_back(cj);
+            }
+            pieces.push_back({{"inner_box", box},
+                              {"outer_cell", p.outer_cell},
+                              {"outer_box", obox},
+                              {"status", p.status == sx::RegionStatus::untrimmed ? "untrimmed"
+                                         : p.status == sx::RegionStatus::trimmed ? "trimmed" : "unproven_nonempty"},
+                              {"region", region},
+                              {"homogeneous", p.homogeneous},
+                              {"patch", sx::spline_to_json(p.patch)}});
+          }
+          return sx::Json{{"pieces", pieces}, {"isoparametric_splits", C.isoparametric_splits},
+                          {"region_rule", "each condition on the inner spline's coordinate s_c = S(r)_c: at_least lo, below hi "
+                                          "(at_most hi at the outer domain's end); a homogeneous patch holds (w*R, w)"}};
+        });
+        std::cout << out.dump() << "\n";
+        return 0;
+      }
       sx::CompositionOptions o;
       o.method = cp_method == "interpolation" ? sx::CompositionMethod::interpolation : sx::CompositionMethod::symbolic;
       o.expand = cp_expand;

@@ -13,6 +13,7 @@
 #include "exact/bpt.hpp"
 #include "exact/random_spline.hpp"
 #include "experiments/svg_plot.hpp"
+#include "experiments/teapot_stars.hpp"
 #include "proofs/suite.hpp"
 #include "spline/compose.hpp"
 
@@ -275,7 +276,14 @@ int run_report(const ReportOptions& opt) {
               << show_orders(ro) << (ok ? "" : " (**check failed**)") << " | " << oc.paper << " | " << oc.remark << " |\n";
   }
 
-  // 6. The proofs.
+  // 6. The teapot star pattern (Algorithm 1, exact and double).
+  progress("teapot star pattern");
+  bool stars_ok = true;
+  StarPatternOptions so;
+  so.out_dir = opt.out_dir;
+  const std::string stars_md = run_teapot_stars(so, progress, stars_ok);
+
+  // 7. The proofs.
   progress("exact proofs");
   const auto proofs = run_proofs({}, opt.full ? 40 : 12);
 
@@ -383,7 +391,7 @@ int run_report(const ReportOptions& opt) {
   };
   md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
         "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
-  md << orders_md.str();
+  md << orders_md.str() << stars_md;
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");
@@ -403,7 +411,7 @@ int run_report(const ReportOptions& opt) {
   for (const auto& r : run.rows) all_ran = all_ran && r.rep.structure_match;
   progress(std::string("done: ") + std::to_string(run.rows.size()) + " crosschecks, proofs " + (proofs_ok ? "all proved" : "REFUTED") +
            (all_ran ? "" : ", some float runs differ in structure (see report.md)"));
-  return proofs_ok && orders_ok ? 0 : 1;
+  return proofs_ok && orders_ok && stars_ok ? 0 : 1;
 }
 
 }  // namespace splinex

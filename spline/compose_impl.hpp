@@ -369,8 +369,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
       if (tb[j][c + 1] < hi && !(c + 2 >= tb[j].size() && options.expand))
         throw DomainError("inner", "a piece crosses the knot line u_" + std::to_string(j) + " = " +
                                        ArithTraits<T>::to_string(tb[j][c + 1]) + " of the outer spline",
-                          "this needs trimmed composition (Algorithm 1, not implemented yet); or split the inner "
-                          "spline at the crossing when it is isoparametric");
+                          "compose with --method trimmed (Algorithm 1: trimmed patches across knot lines)");
       cell += c * tstride[j];
     }
     const BSpline<T> piece = compose_bezier(tp[cell].spline, S, options.method, limits);
