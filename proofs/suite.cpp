@@ -346,30 +346,50 @@ std::vector<ProofEntry> make_registry() {
                               i);
                     }, 117));
   r.push_back(entry("compose-trimmed",
-                    "Algorithm 1 across knot lines: R(r) = T(S(r)) (Definition 1) and exactly one region owns r "
+                    "Algorithm 1 across knot lines (curves, surfaces, trivariates; inner and outer dimension 1-3): "
+                    "R(r) = T(S(r)) (Definition 1) and exactly one region owns r "
                     "(property 2), at grid points, on both sides of trimming curves within 2^-40, and (affine S) "
                     "exactly on knot lines and at their crossings",
                     "pointwise exact checks (no degree bound: R is piecewise by semi-algebraic regions)",
                     [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
                       auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
-                      const int n = pick(1, 2), k = pick(1, 2);
+                      // Curves, surfaces and trivariates on both sides (trimmed trivariates: k = n = 3;
+                      // surfaces into trivariates: k = 2, n = 3).
+                      const int n = pick(1, 3), k = pick(1, 3);
                       RandomSplineSpec so, si;
                       for (int j = 0; j < n; ++j) {
-                        so.degrees.push_back(pick(1, 3));
-                        so.counts.push_back(so.degrees.back() + 1 + pick(1, 3));
+                        so.degrees.push_back(pick(1, n == 3 ? 2 : 3));
+                        so.counts.push_back(so.degrees.back() + 1 + pick(1, n == 3 ? 2 : 3));
                       }
                       so.q = pick(1, 3);
                       so.rational = pick(0, 2) == 0;
                       const bool affine = pick(0, 2) == 0;
                       for (int l = 0; l < k; ++l) {
-                        si.degrees.push_back(affine ? 1 : pick(1, 2));
-                        si.counts.push_back(si.degrees.back() + 1 + (affine ? 0 : pick(0, 1)));
+                        si.degrees.push_back(affine || k == 3 ? 1 : pick(1, 2));
+                        si.counts.push_back(si.degrees.back() + 1 + (affine || k == 3 ? 0 : pick(0, 1)));
                       }
                       si.q = n;
                       si.rational = !affine && pick(0, 3) == 0;
                       const BSpline<Rational> T = random_spline(so, rng);
                       BSpline<Rational> S = random_spline(si, rng);
                       for (auto& x : S.points) x = (x + 2) / 4;  // [-2, 2] -> [0, 1], T's domain
+                      if (affine) {
+                        // Degree 1 and no interior knots per direction: make the map affine (not just
+                        // multilinear), P_i = P_0 + sum_l i_l (P_{e_l} - P_0), scaled to stay in [0, 1].
+                        std::vector<std::size_t> unit(k);
+                        std::size_t st = 1;
+                        for (int l = 0; l < k; ++l) { unit[l] = st; st *= 2; }
+                        for (std::size_t g = 0; g < S.size(); ++g)
+                          for (int c = 0; c < n; ++c) {
+                            Rational v = S.points[c];
+                            for (int l = 0; l < k; ++l)
+                              if ((g / unit[l]) % 2) v += (S.points[unit[l] * n + c] - S.points[c]) / k;
+                            if (g != 0 && __builtin_popcountll(g) > 1) S.points[g * n + c] = v;
+                          }
+                        for (int l = 0; l < k; ++l)
+                          for (int c = 0; c < n; ++c)
+                            S.points[unit[l] * n + c] = S.points[c] + (S.points[unit[l] * n + c] - S.points[c]) / k;
+                      }
                       const auto C = compose_trimmed(T, S);
                       std::size_t checked = 0;
                       auto check = [&](const std::vector<Rational>& r) -> bool {
@@ -389,7 +409,7 @@ std::vector<ProofEntry> make_registry() {
                         return true;
                       };
                       // Grid points over S's domain, and bisection across every cell change between neighbours.
-                      const int G = 13;
+                      const int G = k == 3 ? 6 : 13;
                       std::vector<int> idx(k, 0);
                       auto point = [&](const std::vector<int>& id) {
                         std::vector<Rational> r(k);
