@@ -2,12 +2,14 @@
 // converted to the requested arithmetic by correct rounding, and written per arithmetic
 // (fractions, round-trip doubles, all MPFR digits). Every splinex::Error exits with status 2.
 #include <CLI/CLI.hpp>
+#include <type_traits>
 #include <iostream>
 #include <new>
 
 #include "crosscheck/crosscheck.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "exact/json_io.hpp"
+#include "exact/root_isolation.hpp"
 #include "experiments/report.hpp"
 #include "proofs/suite.hpp"
 #include "spline/kernel.hpp"
@@ -237,7 +239,24 @@ int main(int argc, char** argv) {
               if (c.check_hi) cj[c.hi_closed ? "at_most" : "below"] = Tr::to_json(c.hi);
               region.push_back(cj);
             }
+            sx::Json crossings = sx::Json::array();
+            if constexpr (std::is_same_v<F, sx::Rational>) {
+              // Exact end points of the trimming curves on the piece's edges (CGAL root isolation).
+              for (const auto& e : sx::trimming_edge_crossings(C, &p - C.patches.data())) {
+                sx::Json fixed = sx::Json::array();
+                for (std::size_t l = 0; l < e.fixed.size(); ++l)
+                  fixed.push_back(static_cast<int>(l) == e.free_dir ? sx::Json(nullptr) : Tr::to_json(e.fixed[l]));
+                crossings.push_back({{"condition", e.condition},
+                                     {"bound", e.at_upper_bound ? "upper" : "lower"},
+                                     {"free_direction", e.free_dir},
+                                     {"fixed", fixed},
+                                     {"interval", {Tr::to_json(e.root.lo), Tr::to_json(e.root.hi)}},
+                                     {"exact", e.root.lo == e.root.hi},
+                                     {"multiplicity", e.root.multiplicity}});
+              }
+            }
             pieces.push_back({{"inner_box", box},
+                              {"edge_crossings", crossings},
                               {"outer_cell", p.outer_cell},
                               {"outer_box", obox},
                               {"status", p.status == sx::RegionStatus::untrimmed ? "untrimmed"

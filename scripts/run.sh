@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
 
-packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libboost-dev libcgal-dev
+packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev)
 missing=()
 for p in "${packages[@]}"; do
