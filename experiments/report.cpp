@@ -14,6 +14,7 @@
 #include "exact/random_spline.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/teapot_stars.hpp"
+#include "experiments/tolerance_study.hpp"
 #include "proofs/suite.hpp"
 #include "spline/compose.hpp"
 
@@ -283,7 +284,11 @@ int run_report(const ReportOptions& opt) {
   so.out_dir = opt.out_dir;
   const std::string stars_md = run_teapot_stars(so, progress, stars_ok);
 
-  // 7. The proofs.
+  // 7. The price of a trimming tolerance, measured exactly.
+  bool tol_ok = true;
+  const std::string tol_md = run_tolerance_study(opt.out_dir, progress, tol_ok);
+
+  // 8. The proofs.
   progress("exact proofs");
   const auto proofs = run_proofs({}, opt.full ? 40 : 12);
 
@@ -391,7 +396,7 @@ int run_report(const ReportOptions& opt) {
   };
   md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
         "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
-  md << orders_md.str() << stars_md;
+  md << orders_md.str() << stars_md << tol_md;
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");
@@ -411,7 +416,7 @@ int run_report(const ReportOptions& opt) {
   for (const auto& r : run.rows) all_ran = all_ran && r.rep.structure_match;
   progress(std::string("done: ") + std::to_string(run.rows.size()) + " crosschecks, proofs " + (proofs_ok ? "all proved" : "REFUTED") +
            (all_ran ? "" : ", some float runs differ in structure (see report.md)"));
-  return proofs_ok && orders_ok && stars_ok ? 0 : 1;
+  return proofs_ok && orders_ok && stars_ok && tol_ok ? 0 : 1;
 }
 
 }  // namespace splinex

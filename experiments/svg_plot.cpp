@@ -60,7 +60,9 @@ std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& s
   o << "<text x='" << W / 2 - R / 2 << "' y='22' text-anchor='middle' font-size='15'>" << esc(spec.title) << "</text>\n";
   // Grid and ticks.
   if (spec.logy) {
-    for (int e = static_cast<int>(ymin); e <= static_cast<int>(ymax); ++e) {
+    // At most about 12 labelled decades; grid lines at every labelled one.
+    const int step = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / 12)));
+    for (int e = static_cast<int>(ymin); e <= static_cast<int>(ymax); e += step) {
       const double y = T + (1 - (e - ymin) / (ymax - ymin)) * (H - T - B);
       o << "<line x1='" << L << "' x2='" << W - R << "' y1='" << num(y) << "' y2='" << num(y) << "' stroke='#ddd'/>";
       o << "<text x='" << L - 6 << "' y='" << num(y + 4) << "' text-anchor='end'>" << (e == static_cast<int>(ymin) ? "0 / " : "")
