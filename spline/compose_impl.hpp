@@ -77,6 +77,15 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   return h;
 }
 
+// The inner spline's points must live in the outer spline's parameter space.
+template <class T>
+void check_composable(const BSpline<T>& outer, const BSpline<T>& inner) {
+  if (inner.q != outer.dim())
+    throw ValidationError("inner", "has points in R^" + std::to_string(inner.q) + " but the outer spline has " +
+                                       std::to_string(outer.dim()) + " parameters",
+                          "give the inner spline one coordinate per parameter of the outer one");
+}
+
 template <class T>
 void check_bezier(const BSpline<T>& S, const std::string& field) {
   for (int d = 0; d < S.dim(); ++d)
@@ -182,10 +191,7 @@ BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>&
                                       const Limits& limits, bool& rational_out) {
   detail::check_bezier(outer, "outer");
   detail::check_bezier(inner, "inner");
-  if (inner.q != outer.dim())
-    throw ValidationError("inner", "has points in R^" + std::to_string(inner.q) + " but the outer spline has " +
-                                       std::to_string(outer.dim()) + " parameters",
-                          "give the inner spline one coordinate per parameter of the outer one");
+  detail::check_composable(outer, inner);
   const int k = inner.dim(), n = outer.dim();
   const std::vector<int> D = composed_degrees(outer, inner);
   int E = 0;
@@ -301,10 +307,7 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, Comp
 template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options,
                    const Limits& limits) {
-  if (inner.q != outer.dim())
-    throw ValidationError("inner", "has points in R^" + std::to_string(inner.q) + " but the outer spline has " +
-                                       std::to_string(outer.dim()) + " parameters",
-                          "give the inner spline one coordinate per parameter of the outer one");
+  detail::check_composable(outer, inner);
   const int k = inner.dim(), n = outer.dim();
   const std::vector<int> D = composed_degrees(outer, inner);
   for (int l = 0; l < k; ++l) limits.check_degree(D[l], "inner");

@@ -178,10 +178,7 @@ bool TrimmedComposition<T>::in_region(const TrimmedPatch<T>& p, const std::vecto
 template <class T>
 TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>& inner, const TrimmedOptions& options,
                                       const Limits& limits) {
-  if (inner.q != outer.dim())
-    throw ValidationError("inner", "has points in R^" + std::to_string(inner.q) + " but the outer spline has " +
-                                       std::to_string(outer.dim()) + " parameters",
-                          "give the inner spline one coordinate per parameter of the outer one");
+  detail::check_composable(outer, inner);
   TrimmedComposition<T> R;
   R.outer = outer;
   R.inner = inner;
