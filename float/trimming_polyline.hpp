@@ -1,0 +1,30 @@
+// Float trimming curves: the level set {s_c(r) = u} of a coordinate of a Bezier surface piece
+// (double) on its parameter box, as a polyline within a tolerance eps of the true curve.
+// Marching squares on a grid finds the curve's cells; each crossing of a grid edge is bisected
+// to eps; each chord is refined at its midpoint against the true curve (bisection along the
+// chord's normal) until the midpoint is within eps/2 of it. The tolerance is a named policy.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "spline/bspline.hpp"
+
+namespace splinex {
+
+struct TrimmingTolerance {
+  double eps = 1e-6;  // distance to the true curve, in the piece's parameters
+  int grid = 16;      // marching-squares cells per direction
+  int max_depth = 40; // chord refinement depth
+};
+
+using Point2 = std::array<double, 2>;
+struct Segment2 {
+  Point2 a, b;
+};
+
+std::vector<Segment2> trace_level_set(const BSpline<double>& piece, int coord, double level, const TrimmingTolerance& tol);
+
+// Where the horizontal line r_1 = t meets the polyline (every crossing, sorted by r_0).
+std::vector<double> crossings_at(const std::vector<Segment2>& polyline, double t);
+
+}  // namespace splinex
