@@ -1,0 +1,41 @@
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "float/trimming_polyline.hpp"
+#include "spline/kernel.hpp"
+
+using namespace splinex;
+
+// s_u = 1/5 + 3/5 r + 1/5 t(1-t): the level set s_u = 1/2 is r*(t) = (3/10 - t(1-t)/5) / (3/5),
+// rational at rational t, with |dr*/dt| <= 1/3, so the horizontal distance bounds the normal
+// distance within a factor sqrt(1 + 1/9) < 1.06.
+TEST_CASE("trimming polylines stay within eps of the exact level set") {
+  BSpline<double> S;
+  S.degrees = {1, 2};
+  S.q = 2;
+  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 1; ++i) {
+      S.points.push_back(0.2 + 0.6 * i + (j == 1 ? 0.1 : 0.0));
+      S.points.push_back(0.1 + 0.4 * j);
+    }
+  auto rstar = [](const Rational& t) -> Rational { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); };
+  // The double control points are not exactly the rational ones (0.2, 0.1 round); the level set
+  // of the double surface differs from r* by about 1e-16, far below the tolerances tested.
+  for (double eps : {1e-2, 1e-4, 1e-6, 1e-8}) {
+    TrimmingTolerance tol;
+    tol.eps = eps;
+    tol.grid = 8;
+    const auto poly = trace_level_set(S, 0, 0.5, tol);
+    REQUIRE(!poly.empty());
+    const Rational bound = Rational(11, 10) * exact_from_double(eps) + Rational(1, 1000000000000LL);
+    for (const auto& seg : poly)
+      for (const auto& p : {seg.a, seg.b, Point2{0.5 * (seg.a[0] + seg.b[0]), 0.5 * (seg.a[1] + seg.b[1])}}) {
+        const Rational t = exact_from_double(p[1]), r = exact_from_double(p[0]);
+        INFO("eps " << eps << " at (" << p[0] << ", " << p[1] << ")");
+        CHECK(abs(Rational(r - rstar(t))) <= bound);
+      }
+    // Every horizontal line crosses the polyline exactly once.
+    for (int i = 0; i < 20; ++i) CHECK(crossings_at(poly, (2 * i + 1) / 40.0).size() == 1);
+  }
+}
