@@ -10,6 +10,7 @@
 #include "crosscheck/operations_impl.hpp"
 #include "exact/json_io.hpp"
 #include "exact/root_isolation.hpp"
+#include "float/trimming_polyline.hpp"
 #include "experiments/report.hpp"
 #include "proofs/suite.hpp"
 #include "spline/kernel.hpp"
@@ -134,6 +135,7 @@ int main(int argc, char** argv) {
   Common cp;
   std::string cp_outer, cp_inner, cp_method = "symbolic";
   bool cp_expand = false;
+  double cp_eps = 1e-9;
   auto* c_compose = app.add_subcommand("compose", "functional composition T(S) of B-splines (S inside T's pieces)");
   c_compose->add_option("--arith", cp.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
   c_compose->add_option("--outer", cp_outer, "outer spline document T")->required();
@@ -142,6 +144,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"symbolic", "interpolation", "trimmed"}))
       ->capture_default_str();
   c_compose->add_flag("--expand", cp_expand, "use T's end pieces as polynomials on all of R^n where S leaves T's domain");
+  c_compose->add_option("--eps", cp_eps, "trimmed, --arith double, surfaces: tolerance of the trimming polylines")
+      ->check(CLI::Range(1e-15, 1e-1))
+      ->capture_default_str();
 
   std::string cc_op, cc_float = "double", cc_file;
   int cc_grid = 0;
@@ -255,8 +260,25 @@ int main(int argc, char** argv) {
                                      {"multiplicity", e.root.multiplicity}});
               }
             }
+            sx::Json polylines = sx::Json::array();
+            if constexpr (std::is_same_v<F, double>) {
+              // Float trimming curves of surface pieces: one polyline (as segments) per condition bound.
+              const auto& piece = C.inner_pieces[p.inner_piece].spline;
+              if (piece.dim() == 2 && !piece.is_rational())
+                for (const auto& c : p.region)
+                  for (bool upper : {false, true}) {
+                    if ((upper && !c.check_hi) || (!upper && !c.check_lo)) continue;
+                    sx::TrimmingTolerance tol;
+                    tol.eps = cp_eps;
+                    sx::Json segs = sx::Json::array();
+                    for (const auto& sg : sx::trace_level_set(piece, c.coord, upper ? c.hi : c.lo, tol))
+                      segs.push_back({{sg.a[0], sg.a[1]}, {sg.b[0], sg.b[1]}});
+                    polylines.push_back({{"coordinate", c.coord}, {"level", upper ? c.hi : c.lo}, {"eps", cp_eps}, {"segments", segs}});
+                  }
+            }
             pieces.push_back({{"inner_box", box},
                               {"edge_crossings", crossings},
+                              {"trimming_polylines", polylines},
                               {"outer_cell", p.outer_cell},
                               {"outer_box", obox},
                               {"status", p.status == sx::RegionStatus::untrimmed ? "untrimmed"
