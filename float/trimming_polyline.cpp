@@ -87,6 +87,30 @@ std::vector<Segment2> trace_level_set(const BSpline<double>& S, int coord, doubl
   return out;
 }
 
+bool polyline_side(const BSpline<double>& S, int coord, double level, const std::vector<Segment2>& poly, const Point2& r) {
+  const Level f{S, coord, level};
+  Point2 ref{S.domain_lo(0), S.domain_lo(1)};
+  double fref = f(ref);
+  for (const Point2& c : {Point2{S.domain_hi(0), S.domain_lo(1)}, Point2{S.domain_lo(0), S.domain_hi(1)},
+                          Point2{S.domain_hi(0), S.domain_hi(1)}}) {
+    const double v = f(c);
+    if (std::fabs(v) > std::fabs(fref)) { ref = c; fref = v; }
+  }
+  auto orient = [](const Point2& a, const Point2& b, const Point2& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  };
+  bool side = fref >= 0;
+  for (const auto& sg : poly) {
+    // Proper crossing of [ref, r] with [a, b]; a vertex shared by two segments is counted once by
+    // the half-open test on the second segment's orientation.
+    const double o1 = orient(ref, r, sg.a), o2 = orient(ref, r, sg.b);
+    if ((o1 < 0) == (o2 < 0)) continue;
+    const double o3 = orient(sg.a, sg.b, ref), o4 = orient(sg.a, sg.b, r);
+    if ((o3 < 0) != (o4 < 0)) side = !side;
+  }
+  return side;
+}
+
 std::vector<double> crossings_at(const std::vector<Segment2>& poly, double t) {
   std::vector<double> xs;
   for (const auto& s : poly) {

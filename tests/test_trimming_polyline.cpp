@@ -39,3 +39,35 @@ TEST_CASE("trimming polylines stay within eps of the exact level set") {
     for (int i = 0; i < 20; ++i) CHECK(crossings_at(poly, (2 * i + 1) / 40.0).size() == 1);
   }
 }
+
+TEST_CASE("polyline side agrees with the exact sign away from the curve") {
+  BSpline<double> S;
+  S.degrees = {1, 2};
+  S.q = 2;
+  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 1; ++i) {
+      S.points.push_back(0.2 + 0.6 * i + (j == 1 ? 0.1 : 0.0));
+      S.points.push_back(0.1 + 0.4 * j);
+    }
+  auto rstar = [](const Rational& t) -> Rational { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); };
+  for (double eps : {1e-3, 1e-6}) {
+    TrimmingTolerance tol;
+    tol.eps = eps;
+    tol.grid = 8;
+    const auto poly = trace_level_set(S, 0, 0.5, tol);
+    int checked = 0, near = 0;
+    for (int j = 0; j <= 60; ++j)
+      for (int i = 0; i <= 60; ++i) {
+        const Point2 r{i / 60.0 + 1e-7 * j, j / 60.0};
+        if (r[0] > 1) continue;
+        const Rational d = exact_from_double(r[0]) - rstar(exact_from_double(r[1]));
+        // s_u >= 1/2 exactly when r >= r*(t) (s_u increases with r).
+        if (abs(d) <= Rational(2) * exact_from_double(eps)) { ++near; continue; }
+        CHECK(polyline_side(S, 0, 0.5, poly, r) == (d >= 0));
+        ++checked;
+      }
+    CHECK(checked > 3000);
+    INFO("points within 2 eps of the curve, not checked: " << near);
+  }
+}
