@@ -15,6 +15,17 @@ namespace splinex {
 
 namespace {
 
+// Least-squares slope of log10(y) against log10(x) over the points (0 for fewer than two).
+double loglog_slope(const std::vector<std::pair<double, double>>& pts) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (auto [x, y] : pts) {
+    const double lx = std::log10(x), ly = std::log10(y);
+    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
+  }
+  const double N = static_cast<double>(pts.size());
+  return pts.size() >= 2 ? (N * sxy - sx * sy) / (N * sxx - sx * sx) : 0;
+}
+
 std::string g(double v) {
   std::ostringstream o;
   o << std::setprecision(4) << v;
@@ -68,11 +79,10 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     validate(T);
     const auto C = compose_trimmed(T, S);
     // The two pieces: the one left of the crossing owns [0, r*), the other [r*, 1].
-    const std::size_t left = C.locate({Rational(0)}), right = C.locate({Rational(1)});
+    const std::size_t left = C.locate({Rational(0)});
     PlotSeries ps;
     ps.label = "m = " + std::to_string(m) + " (C^" + std::to_string(p - m) + ")";
     ps.color = colors[m - 1];
-    std::vector<std::pair<double, double>> fit;
     double at6 = 0;
     for (double eps : eps_list) {
       // Float trimming: bisection in double on s(r) - u0 until the bracket is shorter than eps.
@@ -84,7 +94,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
       }
       const Rational re = exact_from_double(b);  // the far end: the boundary moves by up to eps
       // Misassigned interval [r*, re) (re > r*): exact length bounds from the isolating interval.
-      const Rational len_lo = re - rstar.hi, len_hi = re - rstar.lo;
+      const Rational len_hi = re - rstar.lo;  // upper bound of the misassigned length
       Rational worst(0);
       for (int s = 0; s <= 16; ++s) {
         const Rational r = rstar.hi + (re - rstar.hi) * Rational(s, 16);
@@ -97,20 +107,11 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
           if (worst < e) worst = e;
         }
       }
-      (void)right;
       csv << m << "," << p - m << "," << eps << "," << b << "," << to_double(len_hi) << "," << to_double(worst) << "\n";
-      if (worst > 0) {
-        ps.points.emplace_back(eps, to_double(worst));
-        fit.emplace_back(std::log10(eps), std::log10(to_double(worst)));
-      }
+      if (worst > 0) ps.points.emplace_back(eps, to_double(worst));
       if (eps == 1e-6) at6 = to_double(worst);
-      (void)len_lo;
     }
-    // Least-squares slope of log(error) against log(eps).
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (auto [x, y] : fit) { sx += x; sy += y; sxx += x * x; sxy += x * y; }
-    const double N = static_cast<double>(fit.size());
-    const double slope = fit.size() >= 2 ? (N * sxy - sx * sy) / (N * sxx - sx * sx) : 0;
+    const double slope = loglog_slope(ps.points);
     const int predicted = p - m + 1;
     ok = ok && std::fabs(slope - predicted) <= 0.25;
     md << "| " << m << " | C^" << p - m << " | " << g(slope) << " | " << predicted << " | " << g(at6) << " |\n";
@@ -178,7 +179,6 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     ps.label = "surface, m = " + std::to_string(m);
     ps.color = colors[m - 1];
     ps.dashed = true;
-    std::vector<std::pair<double, double>> fit;
     double len6 = 0, err6 = 0;
     for (double eps : eps_list) {
       if (eps < 1e-9) continue;
@@ -216,16 +216,10 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
       }
       csv2 << m << "," << eps << "," << poly.size() << "," << to_double(max_len) << "," << to_double(area) << ","
            << to_double(worst) << "\n";
-      if (worst > 0) {
-        ps.points.emplace_back(eps, to_double(worst));
-        fit.emplace_back(std::log10(eps), std::log10(to_double(worst)));
-      }
+      if (worst > 0) ps.points.emplace_back(eps, to_double(worst));
       if (eps == 1e-6) { len6 = to_double(max_len); err6 = to_double(worst); }
     }
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (auto [x, y] : fit) { sx += x; sy += y; sxx += x * x; sxy += x * y; }
-    const double N = static_cast<double>(fit.size());
-    const double slope = fit.size() >= 2 ? (N * sxy - sx * sy) / (N * sxx - sx * sx) : 0;
+    const double slope = loglog_slope(ps.points);
     ok = ok && std::fabs(slope - (p - m + 1)) <= 0.25;
     md2 << "| " << m << " | C^" << p - m << " | " << g(slope) << " | " << p - m + 1 << " | " << g(len6) << " | " << g(err6) << " |\n";
     series2.push_back(std::move(ps));

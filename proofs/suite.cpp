@@ -455,7 +455,6 @@ std::vector<ProofEntry> make_registry() {
                           }
                         if (ok && k == 2 && n == 2) {
                           // Corners: S(r) = (u, v) solved exactly for every pair of breakpoints inside S's image.
-                          const auto P = extract_bezier(S)[0].spline;
                           const Rational x0 = S.domain_lo(0), x1 = S.domain_hi(0), y0 = S.domain_lo(1), y1 = S.domain_hi(1);
                           const auto s00 = evaluate(S, {x0, y0}), s10 = evaluate(S, {x1, y0}), s01 = evaluate(S, {x0, y1});
                           const Rational a = s10[0] - s00[0], b = s01[0] - s00[0], c = s10[1] - s00[1], d = s01[1] - s00[1];
@@ -470,7 +469,6 @@ std::vector<ProofEntry> make_registry() {
                                 if (evaluate(S, r) != std::vector<Rational>{u, v}) { acc.fail("corner point misses the crossing", i); ok = false; break; }
                                 if (!(ok = check(r))) break;
                               }
-                          (void)P;
                         }
                       }
                       acc.rep.points += checked;

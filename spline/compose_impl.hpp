@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <string>
 
 #include "spline/bezier_impl.hpp"
@@ -75,6 +76,38 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
     h.c[i] /= b;
   }
   return h;
+}
+
+// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
+template <class T>
+std::size_t cell_index(const std::vector<T>& bp, const T& x) {
+  const auto less = [](const T& a, const T& b) { return a < b; };
+  std::size_t c = static_cast<std::size_t>(std::upper_bound(bp.begin(), bp.end(), x, less) - bp.begin());
+  c = c == 0 ? 0 : c - 1;
+  return std::min(c, bp.size() - 2);
+}
+
+template <class T>
+std::pair<T, T> hull_range(const BSpline<T>& P, int coord) {
+  T lo = P.points[coord], hi = P.points[coord];
+  for (std::size_t i = 1; i < P.size(); ++i) {
+    const T& x = P.points[i * P.q + coord];
+    if (x < lo) lo = x;
+    if (hi < x) hi = x;
+  }
+  return {lo, hi};
+}
+
+// DomainError naming how far the control-point hull [lo, hi] of coordinate j leaves [bp.front(), bp.back()].
+template <class T>
+void check_hull_in_domain(const std::pair<T, T>& hull, const std::vector<T>& bp, int j, const std::string& fix) {
+  const auto& [lo, hi] = hull;
+  if (!(lo < bp.front()) && !(bp.back() < hi)) return;
+  T far = lo < bp.front() ? T(bp.front() - lo) : T(0);
+  if (bp.back() < hi && far < T(hi - bp.back())) far = hi - bp.back();
+  throw DomainError("inner", "control points leave the outer domain in coordinate " + std::to_string(j) + " (by up to " +
+                                 ArithTraits<T>::to_string(far) + ")",
+                    fix);
 }
 
 // The inner spline's points must live in the outer spline's parameter space.
@@ -351,24 +384,13 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
     // Exact hull of the piece's control points, per coordinate.
     std::size_t cell = 0;
     for (int j = 0; j < n; ++j) {
-      T lo = S.points[j], hi = S.points[j];
-      for (std::size_t i = 1; i < S.size(); ++i) {
-        const T& x = S.points[i * n + j];
-        if (x < lo) lo = x;
-        if (hi < x) hi = x;
-      }
-      const T& a = tb[j].front();
-      const T& b = tb[j].back();
-      if ((lo < a || b < hi) && !options.expand) {
-        T far = lo < a ? T(a - lo) : T(0);
-        if (b < hi && far < T(hi - b)) far = hi - b;
-        throw DomainError("inner", "control points leave the outer domain in coordinate " + std::to_string(j) +
-                                       " (by up to " + ArithTraits<T>::to_string(far) + ")",
-                          "move the inner spline into the outer domain, or ask for expanded pieces (--expand)");
-      }
+      const auto hull = detail::hull_range(S, j);
+      const T& hi = hull.second;
+      if (!options.expand)
+        detail::check_hull_in_domain(hull, tb[j], j,
+                                     "move the inner spline into the outer domain, or ask for expanded pieces (--expand)");
       // The cell c with tb[c] <= lo and hi <= tb[c+1]; clamped to the end cells when expanding.
-      std::size_t c = 0;
-      while (c + 2 < tb[j].size() && !(lo < tb[j][c + 1])) ++c;
+      const std::size_t c = detail::cell_index(tb[j], hull.first);
       if (tb[j][c + 1] < hi && !(c + 2 >= tb[j].size() && options.expand))
         throw DomainError("inner", "a piece crosses the knot line u_" + std::to_string(j) + " = " +
                                        ArithTraits<T>::to_string(tb[j][c + 1]) + " of the outer spline",

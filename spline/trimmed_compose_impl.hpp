@@ -9,26 +9,6 @@
 namespace splinex {
 namespace detail {
 
-// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
-template <class T>
-std::size_t cell_index(const std::vector<T>& bp, const T& x) {
-  const auto less = [](const T& a, const T& b) { return a < b; };
-  std::size_t c = static_cast<std::size_t>(std::upper_bound(bp.begin(), bp.end(), x, less) - bp.begin());
-  c = c == 0 ? 0 : c - 1;
-  return std::min(c, bp.size() - 2);
-}
-
-template <class T>
-std::pair<T, T> hull_range(const BSpline<T>& P, int coord) {
-  T lo = P.points[coord], hi = P.points[coord];
-  for (std::size_t i = 1; i < P.size(); ++i) {
-    const T& x = P.points[i * P.q + coord];
-    if (x < lo) lo = x;
-    if (hi < x) hi = x;
-  }
-  return {lo, hi};
-}
-
 // Whether coordinate c of a polynomial Bezier piece depends only on parameter l and affinely
 // (Bernstein coefficients constant across the other directions, in arithmetic progression along l).
 template <class T>
@@ -235,13 +215,7 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
     for (int j = 0; j < n; ++j) {
       hull[j] = detail::hull_range(P, j);
       const auto& bp = R.outer_breaks[j];
-      if (hull[j].first < bp.front() || bp.back() < hull[j].second) {
-        T far = hull[j].first < bp.front() ? T(bp.front() - hull[j].first) : T(0);
-        if (bp.back() < hull[j].second && far < T(hull[j].second - bp.back())) far = hull[j].second - bp.back();
-        throw DomainError("inner", "control points leave the outer domain in coordinate " + std::to_string(j) + " (by up to " +
-                                       ArithTraits<T>::to_string(far) + ")",
-                          "move the inner spline into the outer domain");
-      }
+      detail::check_hull_in_domain(hull[j], bp, j, "move the inner spline into the outer domain");
       range[j] = {detail::cell_index(bp, hull[j].first), detail::cell_index(bp, hull[j].second)};
     }
     std::vector<std::size_t> c(n);

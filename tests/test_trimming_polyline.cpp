@@ -9,7 +9,8 @@ using namespace splinex;
 // s_u = 1/5 + 3/5 r + 1/5 t(1-t): the level set s_u = 1/2 is r*(t) = (3/10 - t(1-t)/5) / (3/5),
 // rational at rational t, with |dr*/dt| <= 1/3, so the horizontal distance bounds the normal
 // distance within a factor sqrt(1 + 1/9) < 1.06.
-TEST_CASE("trimming polylines stay within eps of the exact level set") {
+namespace {
+BSpline<double> level_set_surface() {
   BSpline<double> S;
   S.degrees = {1, 2};
   S.q = 2;
@@ -19,7 +20,13 @@ TEST_CASE("trimming polylines stay within eps of the exact level set") {
       S.points.push_back(0.2 + 0.6 * i + (j == 1 ? 0.1 : 0.0));
       S.points.push_back(0.1 + 0.4 * j);
     }
-  auto rstar = [](const Rational& t) -> Rational { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); };
+  return S;
+}
+Rational rstar(const Rational& t) { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); }
+}  // namespace
+
+TEST_CASE("trimming polylines stay within eps of the exact level set") {
+  const BSpline<double> S = level_set_surface();
   // The double control points are not exactly the rational ones (0.2, 0.1 round); the level set
   // of the double surface differs from r* by about 1e-16, far below the tolerances tested.
   for (double eps : {1e-2, 1e-4, 1e-6, 1e-8}) {
@@ -41,16 +48,7 @@ TEST_CASE("trimming polylines stay within eps of the exact level set") {
 }
 
 TEST_CASE("polyline side agrees with the exact sign away from the curve") {
-  BSpline<double> S;
-  S.degrees = {1, 2};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      S.points.push_back(0.2 + 0.6 * i + (j == 1 ? 0.1 : 0.0));
-      S.points.push_back(0.1 + 0.4 * j);
-    }
-  auto rstar = [](const Rational& t) -> Rational { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); };
+  const BSpline<double> S = level_set_surface();
   for (double eps : {1e-3, 1e-6}) {
     TrimmingTolerance tol;
     tol.eps = eps;
