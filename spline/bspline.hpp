@@ -133,8 +133,8 @@ BSpline<T> slice_direction(const BSpline<T>& S, int d, std::size_t first, std::s
   const FibreLayout f = fibre_layout(S, d);
   BSpline<T> R;
   R.degrees = S.degrees;
-  R.knots = S.knots;
-  R.knots[d] = std::move(knots);
+  R.knots.reserve(S.knots.size());  // not a copy of all knots: slicing n pieces stays O(n)
+  for (int e = 0; e < S.dim(); ++e) R.knots.push_back(e == d ? std::move(knots) : S.knots[e]);
   R.q = S.q;
   auto cut = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
     W.reserve(f.before * n_new * f.after * width);

@@ -7,6 +7,7 @@
 #include "spline/elevate_impl.hpp"
 #include "spline/evaluate_impl.hpp"
 #include "spline/insert_impl.hpp"
+#include "spline/integrate_impl.hpp"
 
 #define SPLINEX_INSTANTIATE_KERNEL(T)                                                                           \
   template std::vector<T> evaluate(const BSpline<T>&, const std::vector<T>&);                                  \
@@ -29,6 +30,10 @@
   template BSpline<T> compose(const BSpline<T>&, const BSpline<T>&, const CompositionOptions&, const Limits&);  \
   template BSpline<T> compose_bezier_homogeneous(const BSpline<T>&, const BSpline<T>&, CompositionMethod,        \
                                                  const Limits&, bool&);                                          \
+  template std::vector<T> integrate(const BSpline<T>&);                                                         \
+  template BSpline<T> difference(const BSpline<T>&, const BSpline<T>&, const Limits&);                          \
+  template struct AbsIntegral<T>;                                                                               \
+  template AbsIntegral<T> integrate_abs(const BSpline<T>&, int, const T&);                                      \
   template std::vector<T> evaluate_patch(const TrimmedPatch<T>&, const std::vector<T>&);                        \
   template struct TrimmedComposition<T>;                                                                        \
   template TrimmedComposition<T> compose_trimmed(const BSpline<T>&, const BSpline<T>&, const TrimmedOptions&,   \

@@ -7,6 +7,7 @@
 #include "spline/elevate.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
+#include "spline/integrate.hpp"
 #include "spline/knots.hpp"
 #include "spline/limits.hpp"
 #include "spline/trimmed_compose.hpp"
