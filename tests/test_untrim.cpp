@@ -1,0 +1,177 @@
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "spline/kernel.hpp"
+#include "spline/untrim.hpp"
+#include "untrim/algorithm2.hpp"
+#include "untrim/polygon.hpp"
+
+using namespace splinex;
+
+namespace {
+using V = Vec2<Rational>;
+std::vector<Seg2<Rational>> square_edges(const Rational& a, const Rational& b) {
+  return {{{a, a}, {b, a}}, {{b, a}, {b, b}}, {{a, b}, {b, b}}, {{a, a}, {a, b}}};
+}
+// Affine S (degree (1, 1), a parallelogram net) into a T with knots that S crosses obliquely.
+BSpline<Rational> affine_inner() {
+  BSpline<Rational> S;
+  S.degrees = {1, 1};
+  S.q = 2;
+  S.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
+  // S(r, t) = (1/10 + 7/10 r + 3/20 t, 1/20 + 1/10 r + 4/5 t)
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= 1; ++i) {
+      S.points.push_back(Rational(1, 10) + Rational(7, 10) * i + Rational(3, 20) * j);
+      S.points.push_back(Rational(1, 20) + Rational(1, 10) * i + Rational(4, 5) * j);
+    }
+  return S;
+}
+BSpline<Rational> outer_surface() {
+  BSpline<Rational> T;
+  T.degrees = {2, 3};
+  T.q = 3;
+  T.knots = {{0, 0, 0, Rational(1, 3), Rational(1, 2), Rational(1, 2), 1, 1, 1}, {0, 0, 0, 0, Rational(2, 5), 1, 1, 1, 1}};
+  for (std::size_t j = 0; j < 5; ++j)
+    for (std::size_t i = 0; i < 6; ++i) {
+      T.points.push_back(Rational(static_cast<long>(i), 5));
+      T.points.push_back(Rational(static_cast<long>(j), 4));
+      T.points.push_back(Rational(static_cast<long>((i * 7 + j * 3) % 11), 5));
+    }
+  validate(T);
+  return T;
+}
+}  // namespace
+
+TEST_CASE("sweep: a square cut by its diagonal gives two triangles of area 1/2") {
+  auto segs = square_edges(0, 1);
+  segs.push_back({{0, 0}, {1, 1}});
+  const auto sub = planar_subdivision(segs);
+  CHECK(sub.size() == 5);
+  const auto traps = vertical_decomposition(sub);
+  REQUIRE(traps.size() == 2);
+  const auto tiles = merge_trapezoids(traps, {0, 1});
+  REQUIRE(tiles.size() == 2);
+  for (const auto& t : tiles) {
+    CHECK(tile_area(t) == Rational(1, 2));
+    CHECK(polygon_area(tile_polygon(t)) == Rational(1, 2));  // CGAL, independent
+    CHECK(polygon_is_simple(tile_polygon(t)));
+  }
+}
+
+TEST_CASE("sweep: crossing segments are split exactly; a hole is tiled around") {
+  // Two crossing diagonals: four triangles meeting at (1/2, 1/2).
+  auto segs = square_edges(0, 1);
+  segs.push_back({{0, 0}, {1, 1}});
+  segs.push_back({{0, 1}, {1, 0}});
+  const auto sub = planar_subdivision(segs);
+  CHECK(sub.size() == 8);
+  const auto traps = vertical_decomposition(sub);
+  Rational total(0);
+  for (const auto& z : traps) total += (z.x1 - z.x0) * ((z.yt0 - z.yb0) + (z.yt1 - z.yb1)) / 2;
+  CHECK(total == 1);
+  // A square hole [1/3, 2/3]^2 in [0, 1]^2, labelled by the trapezoid's centre.
+  auto h = square_edges(0, 1);
+  for (const auto& s : square_edges(Rational(1, 3), Rational(2, 3))) h.push_back(s);
+  const auto tz = vertical_decomposition(planar_subdivision(h));
+  std::vector<int> labels;
+  for (const auto& z : tz) {
+    const Rational mx = (z.x0 + z.x1) / 2, my = (z.yb0 + z.yb1 + z.yt0 + z.yt1) / 4;
+    const bool in_hole = Rational(1, 3) < mx && mx < Rational(2, 3) && Rational(1, 3) < my && my < Rational(2, 3);
+    labels.push_back(in_hole ? -1 : 0);
+  }
+  const auto tiles = merge_trapezoids(tz, labels);
+  Rational a(0);
+  for (const auto& t : tiles) {
+    a += tile_area(t);
+    CHECK(polygon_area(tile_polygon(t)) == tile_area(t));
+  }
+  CHECK(a == Rational(8, 9));
+  CHECK(tiles.size() == 4);  // left, below, above, right: the sweep splits at the hole's extremes
+}
+
+TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
+  const auto T = outer_surface();
+  for (int elevate = 0; elevate <= 1; ++elevate) {
+    auto S = affine_inner();
+    if (elevate) S = elevate_degree(S, 0, 1);  // still affine, in a degree (2, 1) form
+    validate(S);
+    const auto A = compose_tensor(T, S);
+    REQUIRE(!A.tiles.empty());
+    CHECK(A.curved_boundaries == 0);
+    CHECK(A.straight_boundaries > 0);
+    CHECK(A.gap_area == 0);
+    CHECK(A.overlap_area == 0);
+    // Areas: all tiles fill S's domain; each region's tiles fill the region, whose polygon is
+    // computed independently by clipping the box with the half-planes of its conditions (CGAL area).
+    Rational total(0);
+    std::vector<Rational> per_patch(A.trimmed.patches.size(), Rational(0));
+    for (const auto& t : A.tiles) {
+      total += t.area;
+      per_patch[t.patch] += t.area;
+      CHECK(polygon_area(tile_polygon(t.tile)) == t.area);
+    }
+    CHECK(total == 1);
+    // S(r, t) = (al_c + be_c r + ga_c t) for c = 0, 1.
+    const Rational al[2] = {Rational(1, 10), Rational(1, 20)}, be[2] = {Rational(7, 10), Rational(1, 10)},
+                   ga[2] = {Rational(3, 20), Rational(4, 5)};
+    for (std::size_t k = 0; k < A.trimmed.patches.size(); ++k) {
+      const auto& p = A.trimmed.patches[k];
+      const auto& box = A.trimmed.inner_pieces[p.inner_piece].box;
+      Polygon poly{{box[0].first, box[1].first}, {box[0].second, box[1].first}, {box[0].second, box[1].second},
+                   {box[0].first, box[1].second}};
+      for (const auto& c : p.region) {
+        if (c.check_lo) poly = clip_halfplane(poly, be[c.coord], ga[c.coord], Rational(al[c.coord] - c.lo));
+        if (c.check_hi) poly = clip_halfplane(poly, -be[c.coord], -ga[c.coord], Rational(c.hi - al[c.coord]));
+      }
+      INFO("patch " << k);
+      CHECK(per_patch[k] == polygon_area(poly));
+    }
+    // Tiles reproduce T(S) exactly inside (the tile's own parametrization, not S's).
+    for (std::size_t k = 0; k < A.tiles.size(); ++k) {
+      const auto& t = A.tiles[k];
+      const auto deg = A.trimmed.patches[t.patch].patch.degrees;
+      CHECK(t.R.degrees == std::vector<int>{deg[0] + deg[1], deg[0] + deg[1]});
+      for (int a = 1; a <= 3; ++a)
+        for (int b = 1; b <= 3; ++b) {
+          const Rational x = t.tile.x.front() + (t.tile.x.back() - t.tile.x.front()) * Rational(a, 4);
+          const std::vector<Rational> xl{x, Rational(b, 4)};
+          const auto rt = evaluate(t.Q, xl);
+          CHECK(A.evaluate_tile(k, xl) == evaluate(T, evaluate(S, rt)));
+        }
+    }
+  }
+}
+
+TEST_CASE("Algorithm 2: curved trimming needs a tolerance; with polylines the error is small") {
+  const auto T = outer_surface();
+  BSpline<Rational> S;
+  S.degrees = {2, 1};
+  S.q = 2;
+  S.knots = {{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}};
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= 2; ++i) {
+      S.points.push_back(Rational(1, 10) + Rational(2, 5) * i + (i == 1 ? Rational(1, 10) : Rational(0)) + Rational(j, 10));
+      S.points.push_back(Rational(1, 10) + Rational(7, 10) * j + Rational(i, 20));
+    }
+  validate(S);
+  CHECK_THROWS_AS(compose_tensor(T, S), DomainError);
+  TensorOptions o;
+  o.boundary = TrimBoundary::polyline;
+  o.eps = 1e-3;
+  o.grid = 4;
+  const auto A = compose_tensor(T, S, o);
+  CHECK(A.curved_boundaries > 0);
+  Rational total(0), worst(0);
+  for (std::size_t k = 0; k < A.tiles.size(); ++k) {
+    total += A.tiles[k].area;
+    const auto& t = A.tiles[k];
+    for (int a = 1; a <= 3; ++a) {
+      const std::vector<Rational> xl{t.tile.x.front() + (t.tile.x.back() - t.tile.x.front()) * Rational(a, 4), Rational(1, 2)};
+      const auto d = A.evaluate_tile(k, xl), e = evaluate(T, evaluate(S, evaluate(t.Q, xl)));
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, abs(Rational(d[c] - e[c])));
+    }
+  }
+  CHECK(total + A.gap_area - A.overlap_area == 1);
+  CHECK(worst < Rational(1, 1000));  // T is C^1 / C^0 at the crossed knots; within eps the error is tiny
+}

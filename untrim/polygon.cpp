@@ -1,0 +1,43 @@
+#include "untrim/polygon.hpp"
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Simple_cartesian.h>
+
+namespace splinex {
+
+namespace {
+using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
+CGAL::Gmpq gq(const Rational& x) { return CGAL::Gmpq(x.backend().data()); }
+Rational rq(const CGAL::Gmpq& x) { return Rational(x.mpq()); }
+CGAL::Polygon_2<K> to_cgal(const Polygon& p) {
+  CGAL::Polygon_2<K> P;
+  for (const auto& v : p) P.push_back(K::Point_2(gq(v[0]), gq(v[1])));
+  return P;
+}
+}  // namespace
+
+Rational polygon_area(const Polygon& p) {
+  if (p.size() < 3) return Rational(0);
+  return rq(to_cgal(p).area());
+}
+
+bool polygon_is_simple(const Polygon& p) { return p.size() >= 3 && to_cgal(p).is_simple(); }
+
+Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c) {
+  Polygon out;
+  const std::size_t n = p.size();
+  auto f = [&](const Vec2<Rational>& v) { return Rational(a * v[0] + b * v[1] + c); };
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto &P = p[i], &Q = p[(i + 1) % n];
+    const Rational fp = f(P), fq = f(Q);
+    if (fp >= 0) out.push_back(P);
+    if ((fp > 0 && fq < 0) || (fp < 0 && fq > 0)) {
+      const Rational s = fp / (fp - fq);
+      out.push_back({P[0] + (Q[0] - P[0]) * s, P[1] + (Q[1] - P[1]) * s});
+    }
+  }
+  return out;
+}
+
+}  // namespace splinex

@@ -1,0 +1,21 @@
+// Exact polygons in a parameter plane: CGAL's exact polygon area and simplicity test (an
+// independent check of the sweep's tiles), and clipping by half-planes (Sutherland-Hodgman, exact).
+#pragma once
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "spline/untrim.hpp"
+
+namespace splinex {
+
+using Polygon = std::vector<Vec2<Rational>>;
+
+// Signed area (positive for counter-clockwise), by CGAL::Polygon_2 over exact rationals.
+Rational polygon_area(const Polygon& p);
+// CGAL::Polygon_2::is_simple (no self-intersection, no repeated vertex).
+bool polygon_is_simple(const Polygon& p);
+// The part of the convex or non-convex polygon p where a*x + b*y + c >= 0 (or > 0 when strict;
+// for areas the two agree), by Sutherland-Hodgman.
+Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
+
+}  // namespace splinex
