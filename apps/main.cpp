@@ -11,6 +11,7 @@
 #include "exact/json_io.hpp"
 #include "exact/root_isolation.hpp"
 #include "float/trimming_polyline.hpp"
+#include "untrim/algorithm2.hpp"
 #include "experiments/report.hpp"
 #include "proofs/suite.hpp"
 #include "spline/kernel.hpp"
@@ -140,11 +141,15 @@ int main(int argc, char** argv) {
   c_compose->add_option("--arith", cp.arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS")->capture_default_str();
   c_compose->add_option("--outer", cp_outer, "outer spline document T")->required();
   c_compose->add_option("--inner", cp_inner, "inner spline document S (points in T's parameter space)")->required();
-  c_compose->add_option("--method", cp_method, "symbolic (Elber's Bernstein products), interpolation, or trimmed")
-      ->check(CLI::IsMember({"symbolic", "interpolation", "trimmed"}))
+  c_compose->add_option("--method", cp_method,
+                        "symbolic (Elber's Bernstein products), interpolation, trimmed (Algorithm 1) or tensor "
+                        "(Algorithm 2: untrimmed tensor-product tiles)")
+      ->check(CLI::IsMember({"symbolic", "interpolation", "trimmed", "tensor"}))
       ->capture_default_str();
   c_compose->add_flag("--expand", cp_expand, "use T's end pieces as polynomials on all of R^n where S leaves T's domain");
-  c_compose->add_option("--eps", cp_eps, "trimmed, --arith double, surfaces: tolerance of the trimming polylines")
+  auto* cp_eps_opt = c_compose->add_option("--eps", cp_eps,
+                        "trimming polylines' tolerance: trimmed with --arith double; tensor (any arith): untrim curved "
+                        "trimming curves by polylines (without --eps, tensor is exact and needs straight ones)")
       ->check(CLI::Range(1e-15, 1e-1))
       ->capture_default_str();
 
@@ -226,6 +231,50 @@ int main(int argc, char** argv) {
     if (c_compose->parsed()) {
       const auto T = sx::spline_from_json(sx::read_json_file(cp_outer), limits, "outer");
       const auto S = sx::spline_from_json(sx::read_json_file(cp_inner), limits, "inner");
+      if (cp_method == "tensor") {
+        const auto spec = sx::ArithSpec::parse(cp.arith);
+        sx::TensorOptions to;
+        to.boundary = cp_eps_opt->count() > 0 ? sx::TrimBoundary::polyline : sx::TrimBoundary::exact;
+        to.eps = cp_eps;
+        auto run = [&](auto tag) {
+          using F = typename decltype(tag)::type;
+          using Tr = sx::ArithTraits<F>;
+          auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
+          const auto A = sx::compose_tensor(sx::convert<F>(T, conv), sx::convert<F>(S, conv), to, limits);
+          sx::Json tiles = sx::Json::array();
+          for (const auto& t : A.tiles) {
+            const auto& p = A.trimmed.patches[t.patch];
+            sx::Json box = sx::Json::array(), xs = sx::Json::array(), yb = sx::Json::array(), yt = sx::Json::array();
+            for (const auto& [lo, hi] : A.trimmed.inner_pieces[p.inner_piece].box) box.push_back({Tr::to_json(lo), Tr::to_json(hi)});
+            for (std::size_t i = 0; i < t.tile.x.size(); ++i) {
+              xs.push_back(Tr::to_json(t.tile.x[i]));
+              yb.push_back(Tr::to_json(t.tile.yb[i]));
+              yt.push_back(Tr::to_json(t.tile.yt[i]));
+            }
+            tiles.push_back({{"inner_box", box},
+                             {"outer_cell", p.outer_cell},
+                             {"tile", {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}}},
+                             {"area", Tr::to_json(t.area)},
+                             {"coons_patch", sx::spline_to_json(t.Q)},
+                             {"homogeneous", p.homogeneous},
+                             {"patch", sx::spline_to_json(t.R)}});
+          }
+          return sx::Json{{"tiles", tiles},
+                          {"straight_trimming_curves", A.straight_boundaries},
+                          {"curved_trimming_curves", A.curved_boundaries},
+                          {"gap_area", Tr::to_json(A.gap_area)},
+                          {"overlap_area", Tr::to_json(A.overlap_area)},
+                          {"tile_rule", "a tile is {(x, y): x in [x_0, x_m], y_bottom(x) <= y <= y_top(x)} in the inner "
+                                        "spline's parameters (piecewise linear chains); its Coons patch Q(x, l) maps "
+                                        "[x_0, x_m] x [0, 1] onto it and patch = T_j^e(S_i(Q))"}};
+        };
+        sx::Json out;
+        if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
+        else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
+        else throw sx::UsageError("arith", "compose --method tensor runs in exact or double", "use --arith exact or double");
+        std::cout << out.dump() << "\n";
+        return 0;
+      }
       if (cp_method == "trimmed") {
         const auto spec = sx::ArithSpec::parse(cp.arith);
         const sx::Json out = sx::with_arith(spec, [&](auto tag) {

@@ -13,6 +13,7 @@
 #include "exact/bpt.hpp"
 #include "exact/random_spline.hpp"
 #include "experiments/svg_plot.hpp"
+#include "experiments/algorithm2_stars.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "experiments/tolerance_study.hpp"
 #include "proofs/suite.hpp"
@@ -288,7 +289,14 @@ int run_report(const ReportOptions& opt) {
   bool tol_ok = true;
   const std::string tol_md = run_tolerance_study(opt.out_dir, progress, tol_ok);
 
-  // 8. The proofs.
+  // 8. Algorithm 2 (untrimming) on the star pattern.
+  bool a2_ok = true;
+  Algorithm2StarsOptions a2o;
+  a2o.out_dir = opt.out_dir;
+  if (!opt.full) a2o.eps = {1e-2, 1e-3};
+  const std::string a2_md = run_algorithm2_stars(a2o, progress, a2_ok);
+
+  // 9. The proofs.
   progress("exact proofs");
   const auto proofs = run_proofs({}, opt.full ? 40 : 12);
 
@@ -396,7 +404,7 @@ int run_report(const ReportOptions& opt) {
   };
   md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
         "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
-  md << orders_md.str() << stars_md << tol_md;
+  md << orders_md.str() << stars_md << tol_md << a2_md;
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");
@@ -416,7 +424,7 @@ int run_report(const ReportOptions& opt) {
   for (const auto& r : run.rows) all_ran = all_ran && r.rep.structure_match;
   progress(std::string("done: ") + std::to_string(run.rows.size()) + " crosschecks, proofs " + (proofs_ok ? "all proved" : "REFUTED") +
            (all_ran ? "" : ", some float runs differ in structure (see report.md)"));
-  return proofs_ok && orders_ok && stars_ok && tol_ok ? 0 : 1;
+  return proofs_ok && orders_ok && stars_ok && tol_ok && a2_ok ? 0 : 1;
 }
 
 }  // namespace splinex
