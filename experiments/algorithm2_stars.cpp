@@ -51,7 +51,8 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
      << "| surface | eps | Alg. 1 patches | Alg. 1 control points | Alg. 1 s | Alg. 2 tiles | Alg. 2 control points | "
         "Alg. 2 s | orders | max deviation | gap area | overlap area |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::set<std::pair<int, int>> all_orders;
-  for (const auto& surf : teapot_surfaces(patches)) {
+  const auto surfaces = teapot_surfaces(patches);
+  for (const auto& surf : surfaces) {
     const BSpline<Rational>& T = surf.surface;
     const BSpline<double> Td = to_dbl(T);
     const Rational W = T.domain_hi(0), H = T.domain_hi(1);
@@ -125,7 +126,6 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
   if (opt.exact_star) {
     // One star exactly: the cost ratio of Algorithm 2 in rationals (same double polylines).
     progress("algorithm 2: one star on the body, exact");
-    const auto surfaces = teapot_surfaces(patches);
     const auto& body = surfaces.front().surface;
     const BSpline<Rational> S = star_in_tile(0, 2, opt.tiles, body.domain_hi(0), body.domain_hi(1));
     TensorOptions to;

@@ -53,6 +53,26 @@ BSpline<Rational> polyline_graph(const std::vector<Segment2>& poly) {
   return h;
 }
 
+const char* const kMultiplicityColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+
+// The clamped knot vector of degree p on [0, 1] with the interior knot u0 of multiplicity m.
+std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
+  std::vector<Rational> U(p + 1, Rational(0));
+  U.insert(U.end(), m, u0);
+  U.insert(U.end(), p + 1, Rational(1));
+  return U;
+}
+
+// max_c |P(r)_c - T(S(r))_c|, exactly: what evaluating r with the patch P costs.
+Rational patch_error(const TrimmedPatch<Rational>& P, const BSpline<Rational>& T, const BSpline<Rational>& S,
+                     const std::vector<Rational>& r) {
+  const auto bad = evaluate_patch(P, r);
+  const auto good = evaluate(T, evaluate(S, r));
+  Rational worst(0);
+  for (std::size_t c = 0; c < good.size(); ++c) worst = std::max(worst, Rational(abs(Rational(bad[c] - good[c]))));
+  return worst;
+}
+
 // The patch of the same inner piece on the other side of the (single) crossed knot.
 std::size_t other_patch(const TrimmedComposition<Rational>& C, std::size_t k) {
   for (std::size_t j = 0; j < C.patches.size(); ++j)
@@ -148,15 +168,12 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
      << "| m | continuity | fitted slope of max error | predicted p-m+1 | misassigned volume at eps=1e-4 | slope of volume "
         "| error at eps=1e-4 |\n|---|---|---|---|---|---|---|\n";
   std::vector<PlotSeries> series;
-  const char* colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study (volume): knot multiplicity " + std::to_string(m));
     BSpline<Rational> T;
     T.degrees = {p, 1, 1};
     T.q = 2;
-    std::vector<Rational> U(p + 1, Rational(0));
-    U.insert(U.end(), m, u0);
-    U.insert(U.end(), p + 1, Rational(1));
+    const std::vector<Rational> U = knots_with(p, u0, m);
     T.knots = {U, {0, 0, 1, 1}, {0, 0, 1, 1}};
     const std::size_t nu = U.size() - p - 1;
     for (std::size_t l = 0; l <= 1; ++l)
@@ -169,7 +186,7 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
     const auto C = compose_trimmed(T, S);
     PlotSeries ps;
     ps.label = "trivariate, m = " + std::to_string(m);
-    ps.color = colors[m - 1];
+    ps.color = kMultiplicityColors[m - 1];
     ps.dashed = true;
     std::string vol4;
     double err4 = 0;
@@ -182,15 +199,8 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
           const Rational r0 = rstar(t, w), d = h_at(L, t, w) - r0;
           if (d == 0) continue;
           const std::size_t wrong = other_patch(C, C.locate({r0 + d / 2, t, w}));
-          for (int s = 1; s <= 7; ++s) {
-            const std::vector<Rational> r{r0 + d * Rational(s, 8), t, w};
-            const auto bad = evaluate_patch(C.patches[wrong], r);
-            const auto good = evaluate(T, evaluate(S, r));
-            for (int c = 0; c < 2; ++c) {
-              const Rational e = abs(Rational(bad[c] - good[c]));
-              if (worst < e) worst = e;
-            }
-          }
+          for (int s = 1; s <= 7; ++s)
+            worst = std::max(worst, patch_error(C.patches[wrong], T, S, {r0 + d * Rational(s, 8), t, w}));
         }
       csv << m << "," << L.eps << "," << L.G << "," << to_double(L.volume.lower) << "," << to_double(L.volume.upper)
           << "," << L.volume.undecided << "," << to_double(worst) << "\n";
@@ -247,15 +257,12 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
         "|R_eps(r) - T(S(r))| over 17 rational samples in the misassigned interval. Prediction: error ~ eps^(p-m+1).\n\n"
      << "| m | continuity | fitted slope | predicted p-m+1 | error at eps=1e-6 |\n|---|---|---|---|---|\n";
   std::vector<PlotSeries> series;
-  const char* colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study: knot multiplicity " + std::to_string(m));
     BSpline<Rational> T;
     T.degrees = {p};
     T.q = 2;
-    std::vector<Rational> U(p + 1, Rational(0));
-    U.insert(U.end(), m, u0);
-    U.insert(U.end(), p + 1, Rational(1));
+    const std::vector<Rational> U = knots_with(p, u0, m);
     T.knots = {U};
     const std::size_t n = U.size() - p - 1;
     for (std::size_t i = 0; i < n; ++i) {
@@ -268,7 +275,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     const std::size_t left = C.locate({Rational(0)});
     PlotSeries ps;
     ps.label = "m = " + std::to_string(m) + " (C^" + std::to_string(p - m) + ")";
-    ps.color = colors[m - 1];
+    ps.color = kMultiplicityColors[m - 1];
     double at6 = 0;
     for (double eps : eps_list) {
       // Float trimming: bisection in double on s(r) - u0 until the bracket is shorter than eps.
@@ -286,12 +293,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
         const Rational r = rstar.hi + (re - rstar.hi) * Rational(s, 16);
         if (!(r < re)) continue;
         // The float structure evaluates r < re with the left piece; the truth is T(S(r)).
-        const auto wrong = evaluate_patch(C.patches[left], std::vector<Rational>{r});
-        const auto truth = evaluate(T, evaluate(S, {r}));
-        for (int c = 0; c < 2; ++c) {
-          const Rational e = abs(Rational(wrong[c] - truth[c]));
-          if (worst < e) worst = e;
-        }
+        worst = std::max(worst, patch_error(C.patches[left], T, S, {r}));
       }
       csv << m << "," << p - m << "," << eps << "," << b << "," << to_double(len_hi) << "," << to_double(worst) << "\n";
       if (worst > 0) ps.points.emplace_back(eps, to_double(worst));
@@ -372,9 +374,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     BSpline<Rational> T;
     T.degrees = {p, p};
     T.q = 2;
-    std::vector<Rational> U(p + 1, Rational(0));
-    U.insert(U.end(), m, u0);
-    U.insert(U.end(), p + 1, Rational(1));
+    const std::vector<Rational> U = knots_with(p, u0, m);
     std::vector<Rational> V(p + 1, Rational(0));
     V.insert(V.end(), p + 1, Rational(1));
     T.knots = {U, V};
@@ -388,7 +388,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     const auto C = compose_trimmed(T, S2);
     PlotSeries ps;
     ps.label = "surface, m = " + std::to_string(m);
-    ps.color = colors[m - 1];
+    ps.color = kMultiplicityColors[m - 1];
     ps.dashed = true;
     double len6 = 0, err6 = 0;
     std::string area6;
@@ -411,15 +411,8 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
         if (d == 0) continue;
         // Points strictly between r* and r_poly take the other side's patch.
         const std::size_t wrong = other_patch(C, C.locate({rstar2 + d / 2, t}));
-        for (int s = 1; s <= 15; ++s) {
-          const std::vector<Rational> r{rstar2 + d * Rational(s, 16), t};
-          const auto bad = evaluate_patch(C.patches[wrong], r);
-          const auto good = evaluate(T, evaluate(S2, r));
-          for (int c = 0; c < 2; ++c) {
-            const Rational e = abs(Rational(bad[c] - good[c]));
-            if (worst < e) worst = e;
-          }
-        }
+        for (int s = 1; s <= 15; ++s)
+          worst = std::max(worst, patch_error(C.patches[wrong], T, S2, {rstar2 + d * Rational(s, 16), t}));
       }
       csv2 << m << "," << eps << "," << poly.size() << "," << to_double(max_len) << "," << to_double(area.lower) << ","
            << to_double(area.upper) << ","

@@ -1,6 +1,5 @@
 #include "untrim/algorithm2.hpp"
 
-#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -43,11 +42,6 @@ bool affine_coordinate(const BSpline<T>& P, int c, T& alpha, T& beta, T& gamma) 
     }
   return true;
 }
-
-struct LevelKey {
-  int coord;
-  std::size_t level;  // index into the level list
-};
 
 }  // namespace
 

@@ -14,8 +14,9 @@ using Polygon = std::vector<Vec2<Rational>>;
 Rational polygon_area(const Polygon& p);
 // CGAL::Polygon_2::is_simple (no self-intersection, no repeated vertex).
 bool polygon_is_simple(const Polygon& p);
-// The part of the convex or non-convex polygon p where a*x + b*y + c >= 0 (or > 0 when strict;
-// for areas the two agree), by Sutherland-Hodgman.
+// The part of the polygon p where a*x + b*y + c >= 0, by Sutherland-Hodgman (exact). For a
+// non-convex p whose kept part is disconnected the result joins the parts along the line, which
+// adds no area.
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
 
 }  // namespace splinex
