@@ -14,6 +14,7 @@
 #include "exact/random_spline.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/algorithm2_stars.hpp"
+#include "experiments/untrim_tolerance.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "experiments/tolerance_study.hpp"
 #include "proofs/suite.hpp"
@@ -296,6 +297,13 @@ int run_report(const ReportOptions& opt) {
   if (!opt.full) a2o.eps = {1e-2, 1e-3};
   const std::string a2_md = run_algorithm2_stars(a2o, progress, a2_ok);
 
+  // 8b. The tolerance of untrimming: eps, continuity, precision.
+  bool ut_ok = true;
+  UntrimToleranceOptions uto;
+  uto.out_dir = opt.out_dir;
+  if (opt.full) uto = full_untrim_tolerance_options(opt.out_dir);
+  const std::string ut_md = run_untrim_tolerance(uto, progress, ut_ok);
+
   // 9. The proofs.
   progress("exact proofs");
   const auto proofs = run_proofs({}, opt.full ? 40 : 12);
@@ -404,7 +412,7 @@ int run_report(const ReportOptions& opt) {
   };
   md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
         "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
-  md << orders_md.str() << stars_md << tol_md << a2_md;
+  md << orders_md.str() << stars_md << tol_md << a2_md << ut_md;
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");
@@ -424,7 +432,7 @@ int run_report(const ReportOptions& opt) {
   for (const auto& r : run.rows) all_ran = all_ran && r.rep.structure_match;
   progress(std::string("done: ") + std::to_string(run.rows.size()) + " crosschecks, proofs " + (proofs_ok ? "all proved" : "REFUTED") +
            (all_ran ? "" : ", some float runs differ in structure (see report.md)"));
-  return proofs_ok && orders_ok && stars_ok && tol_ok && a2_ok ? 0 : 1;
+  return proofs_ok && orders_ok && stars_ok && tol_ok && a2_ok && ut_ok ? 0 : 1;
 }
 
 }  // namespace splinex

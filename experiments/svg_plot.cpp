@@ -118,4 +118,14 @@ void write_file_atomically(const std::string& path, const std::string& text) {
   std::filesystem::rename(tmp, path);
 }
 
+double loglog_slope(const std::vector<std::pair<double, double>>& pts) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (auto [x, y] : pts) {
+    const double lx = std::log10(x), ly = std::log10(y);
+    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
+  }
+  const double N = static_cast<double>(pts.size());
+  return pts.size() >= 2 ? (N * sxy - sx * sy) / (N * sxx - sx * sx) : 0;
+}
+
 }  // namespace splinex

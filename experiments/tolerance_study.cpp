@@ -16,17 +16,6 @@ namespace splinex {
 
 namespace {
 
-// Least-squares slope of log10(y) against log10(x) over the points (0 for fewer than two).
-double loglog_slope(const std::vector<std::pair<double, double>>& pts) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (auto [x, y] : pts) {
-    const double lx = std::log10(x), ly = std::log10(y);
-    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
-  }
-  const double N = static_cast<double>(pts.size());
-  return pts.size() >= 2 ? (N * sxy - sx * sy) / (N * sxx - sx * sx) : 0;
-}
-
 // The polyline as the graph r = h(t) over t in [0, 1]: a degree-1 spline with knots at the
 // vertices' t (exact values of the doubles). Throws when the polyline is not such a graph.
 BSpline<Rational> polyline_graph(const std::vector<Segment2>& poly) {

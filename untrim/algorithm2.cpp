@@ -197,9 +197,12 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
 
 template struct TensorComposition<Rational>;
 template struct TensorComposition<double>;
+template struct TensorComposition<Mpfr>;
 template TensorComposition<Rational> compose_tensor(const BSpline<Rational>&, const BSpline<Rational>&,
                                                     const TensorOptions&, const Limits&);
 template TensorComposition<double> compose_tensor(const BSpline<double>&, const BSpline<double>&, const TensorOptions&,
                                                   const Limits&);
+template TensorComposition<Mpfr> compose_tensor(const BSpline<Mpfr>&, const BSpline<Mpfr>&, const TensorOptions&,
+                                                const Limits&);
 
 }  // namespace splinex

@@ -2,6 +2,9 @@
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+
+#include <stdexcept>
 #include <CGAL/Simple_cartesian.h>
 
 namespace splinex {
@@ -23,6 +26,31 @@ Rational polygon_area(const Polygon& p) {
 }
 
 bool polygon_is_simple(const Polygon& p) { return p.size() >= 3 && to_cgal(p).is_simple(); }
+
+Rational polygon_union_area(const std::vector<Polygon>& polygons) {
+  CGAL::Polygon_set_2<K> set;
+  std::vector<CGAL::Polygon_2<K>> ps;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (polygons[i].size() < 3) continue;
+    auto P = to_cgal(polygons[i]);
+    if (!P.is_simple())
+      throw std::invalid_argument("polygon_union_area: polygon " + std::to_string(i) + " is not simple");
+    const auto o = P.orientation();
+    if (o == CGAL::COLLINEAR) continue;
+    if (o == CGAL::CLOCKWISE) P.reverse_orientation();
+    ps.push_back(std::move(P));
+  }
+  if (ps.empty()) return Rational(0);
+  set.join(ps.begin(), ps.end());
+  std::vector<CGAL::Polygon_with_holes_2<K>> parts;
+  set.polygons_with_holes(std::back_inserter(parts));
+  CGAL::Gmpq a(0);
+  for (const auto& pw : parts) {
+    a += pw.outer_boundary().area();
+    for (auto h = pw.holes_begin(); h != pw.holes_end(); ++h) a += h->area();  // holes are clockwise
+  }
+  return rq(a);
+}
 
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c) {
   Polygon out;

@@ -17,6 +17,11 @@ bool polygon_is_simple(const Polygon& p);
 // The part of the polygon p where a*x + b*y + c >= 0, by Sutherland-Hodgman (exact). For a
 // non-convex p whose kept part is disconnected the result joins the parts along the line, which
 // adds no area.
+// Area of the union of simple polygons (any orientation), by CGAL's exact Boolean operations
+// (Polygon_set_2 over exact rationals): with the sum of the areas it gives the exact overlap, with
+// the area of the domain the exact gap of a tiling. Polygons with fewer than 3 vertices or zero
+// area are ignored; a non-simple polygon is a std::invalid_argument (CGAL needs simple ones).
+Rational polygon_union_area(const std::vector<Polygon>& polygons);
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
 
 }  // namespace splinex

@@ -1,0 +1,48 @@
+// The tolerance study of untrimming (issue 4, papers/000 Algorithm 2): what trimming polylines
+// within eps cost once the trimmed pieces are untrimmed into tensor-product tiles, measured
+// exactly, against eps, the continuity of T at the crossed knot, and the float precision.
+//
+// Case: S of degrees (1, 2) whose trimming curve s_u = 1/2 is a parabola, T of degrees (3, 1) in
+// R^2 with the knot u0 = 1/2 of multiplicity m = 1..4 (T is C^(3-m) there). For each eps and each
+// arithmetic (double, MPFR at the given precisions) Algorithm 2 (compose_tensor with polylines) is
+// run in that arithmetic; its output is then judged exactly:
+//  - deviation: max |R(x, l) - T(S(Q(x, l)))| with R's local control points and Q's vertices taken
+//    exactly, at the midpoints and vertices of every tile's bottom and top chains (where the sliver
+//    between polyline and true curve is) and on a 4 x 4 interior grid; predicted ~ eps^(p-m+1);
+//  - gaps and overlaps: the exact area of the union of the tiles (CGAL Boolean operations on the
+//    exact tile polygons) against the domain's area and against the sum of the tile areas;
+//  - tiles, their degrees, chain vertices, control points, time.
+#pragma once
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace splinex {
+
+// One arithmetic of the sweep: bits 0 is double, else MPFR at that precision; run for the
+// tolerances >= min_eps and the multiplicities 1..max_m (MPFR costs ~25x double here).
+struct UntrimRun {
+  int bits = 0;
+  double min_eps = 1e-6;
+  int max_m = 4;
+};
+
+struct UntrimToleranceOptions {
+  std::string out_dir;
+  std::vector<double> eps{1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+  std::vector<UntrimRun> runs{{0, 1e-6, 4}, {113, 1e-5, 1}};
+  std::size_t max_boundary_samples = 400;  // per tile chain (every k-th vertex/midpoint beyond it)
+  std::size_t max_control_points = 20'000'000;  // per tile; larger cases are recorded as skipped
+};
+
+UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir);
+
+// Writes untrim_tolerance.csv, untrim_tolerance.svg, untrim_tolerance_cost.svg and
+// untrim_tolerance.md into out_dir; returns the Markdown section. ok is false when the slope fitted
+// at the highest precision misses p - m + 1 (0 for m = p + 1) by more than 0.3, or a gap or
+// overlap of positive area appears.
+std::string run_untrim_tolerance(const UntrimToleranceOptions& options,
+                                 const std::function<void(const std::string&)>& progress, bool& ok);
+
+}  // namespace splinex
