@@ -5,13 +5,16 @@
 #include <type_traits>
 #include <iostream>
 #include <new>
+#include <optional>
 
 #include "crosscheck/crosscheck.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "exact/json_io.hpp"
 #include "exact/root_isolation.hpp"
 #include "float/trimming_polyline.hpp"
+#include "spline/untrim_integrate.hpp"
 #include "untrim/algorithm2.hpp"
+#include "untrim/loops.hpp"
 #include "experiments/report.hpp"
 #include "proofs/suite.hpp"
 #include "spline/kernel.hpp"
@@ -183,6 +186,15 @@ int main(int argc, char** argv) {
   c_report->add_option("--out", report.out_dir, "output folder")->capture_default_str();
   c_report->add_flag("--full", report.full, "the long sweep (larger cases, more precisions)");
 
+  std::string ut_arith = "exact", ut_surface, ut_density, ut_monomial, ut_file;
+  auto* c_untrim = app.add_subcommand(
+      "untrim", "tile a trimmed domain (polygonal loops) with Coons patches; exact areas and integrals, cross-checked");
+  c_untrim->add_option("--arith", ut_arith, "exact or double")->capture_default_str();
+  c_untrim->add_option("--surface", ut_surface, "compose every tile into this surface (its knot lines split the tiles)");
+  c_untrim->add_option("--density", ut_density, "integrate this polynomial density (one Bezier piece, q = 1) over the region");
+  c_untrim->add_option("--monomial", ut_monomial, "integrate x^a y^b over the region, given as \"a,b\"");
+  c_untrim->add_option("FILE", ut_file, "trimmed domain document")->required();
+
   try {
     try {
       app.parse(argc, argv);
@@ -226,6 +238,94 @@ int main(int argc, char** argv) {
       const auto S = sx::spline_from_json(sx::read_json_file(cm.file), limits);
       const auto spec = sx::ArithSpec::parse(cm.arith);
       std::cout << run_op_document(make_op(k, oo), S, spec, limits).dump() << "\n";
+      return 0;
+    }
+    if (c_untrim->parsed()) {
+      const auto D = sx::trimmed_domain_from_json(sx::read_json_file(ut_file));
+      std::optional<sx::BSpline<sx::Rational>> S, f;
+      std::array<std::vector<sx::Rational>, 2> knot_lines;
+      if (!ut_surface.empty()) {
+        S = sx::spline_from_json(sx::read_json_file(ut_surface), limits, "surface");
+        if (S->dim() != 2)
+          throw sx::ValidationError("surface", "has " + std::to_string(S->dim()) + " parameters", "give a surface");
+        for (int d = 0; d < 2; ++d) {
+          if (D.lo[d] < S->domain_lo(d) || S->domain_hi(d) < D.hi[d])
+            throw sx::DomainError("surface", "its domain in direction " + std::to_string(d) + " does not contain the trimmed domain's box",
+                                  "give a box inside the surface's parameter domain");
+          for (const auto& k : S->knots[d])
+            if (S->domain_lo(d) < k && k < S->domain_hi(d) &&
+                (knot_lines[d].empty() || !(knot_lines[d].back() == k)))
+              knot_lines[d].push_back(k);
+        }
+      }
+      if (!ut_density.empty() && !ut_monomial.empty())
+        throw sx::UsageError("density", "--density and --monomial both given", "give one density");
+      if (!ut_density.empty()) f = sx::spline_from_json(sx::read_json_file(ut_density), limits, "density");
+      if (!ut_monomial.empty()) {
+        const auto ab = sx::parse_number_list(ut_monomial, "monomial");
+        if (ab.size() != 2) throw sx::UsageError("monomial", "needs two exponents", "write --monomial \"a,b\" for x^a y^b");
+        int e[2];
+        for (int k = 0; k < 2; ++k) {
+          if (denominator(ab[k]) != 1 || ab[k] < 0 || ab[k] > limits.max_degree)
+            throw sx::ValidationError("monomial", "exponents must be integers in [0, " + std::to_string(limits.max_degree) + "]",
+                                      "write --monomial \"a,b\" for x^a y^b");
+          e[k] = static_cast<int>(numerator(ab[k]).convert_to<long>());
+        }
+        f = sx::monomial_density(e[0], e[1], D);
+      }
+      if (f && f->q != 1) throw sx::ValidationError("density", "has " + std::to_string(f->q) + " coordinates", "give a scalar density (q = 1)");
+      const auto spec = sx::ArithSpec::parse(ut_arith);
+      auto run = [&](auto tag) {
+        using F = typename decltype(tag)::type;
+        using Tr = sx::ArithTraits<F>;
+        auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
+        const auto tiles = sx::untrim_domain<F>(D, knot_lines);
+        sx::Json out_tiles = sx::Json::array();
+        F area(0), integral(0);
+        std::optional<sx::BSpline<F>> Sf, ff;
+        if (S) Sf = sx::convert<F>(*S, conv);
+        if (f) ff = sx::convert<F>(*f, conv);
+        sx::CompositionOptions co;
+        co.expand = true;
+        for (const auto& t : tiles) {
+          sx::Json xs = sx::Json::array(), yb = sx::Json::array(), yt = sx::Json::array();
+          for (std::size_t i = 0; i < t.x.size(); ++i) {
+            xs.push_back(Tr::to_json(t.x[i]));
+            yb.push_back(Tr::to_json(t.yb[i]));
+            yt.push_back(Tr::to_json(t.yt[i]));
+          }
+          const auto Q = sx::tile_spline(t);
+          const F a = sx::tile_area(t);
+          area = area + a;
+          sx::Json tj{{"tile", {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}}}, {"area", Tr::to_json(a)}, {"coons_patch", sx::spline_to_json(Q)}};
+          if (Sf) tj["patch"] = sx::spline_to_json(sx::compose(*Sf, Q, co, limits));
+          if (ff) {
+            const F v = sx::integrate_over_tile(*ff, t, limits)[0];
+            integral = integral + v;
+            tj["integral"] = Tr::to_json(v);
+          }
+          out_tiles.push_back(tj);
+        }
+        const sx::Rational cgal_area = sx::region_area(D);
+        sx::Json out{{"tiles", out_tiles},
+                     {"area", Tr::to_json(area)},
+                     {"area_check", {{"cgal_exact_area", sx::ArithTraits<sx::Rational>::to_json(cgal_area)},
+                                     {"abs_error", sx::to_double(sx::Rational(abs(sx::Rational(Tr::to_rational(area) - cgal_area))))}}},
+                     {"tile_rule", "a tile is {(x, y): x in [x_0, x_m], y_bottom(x) <= y <= y_top(x)}; its Coons patch Q(x, l) "
+                                   "= (x, y_bottom(x) + l (y_top(x) - y_bottom(x))) on [x_0, x_m] x [0, 1]; patch = surface(Q)"}};
+        if (ff) {
+          const sx::Rational green = sx::green_integral(D, *f);
+          out["integral"] = Tr::to_json(integral);
+          out["integral_check"] = {{"green_exact_integral", sx::ArithTraits<sx::Rational>::to_json(green)},
+                                   {"abs_error", sx::to_double(sx::Rational(abs(sx::Rational(Tr::to_rational(integral) - green))))}};
+        }
+        return out;
+      };
+      sx::Json out;
+      if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
+      else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
+      else throw sx::UsageError("arith", "untrim runs in exact or double", "use --arith exact or double");
+      std::cout << out.dump() << "\n";
       return 0;
     }
     if (c_compose->parsed()) {

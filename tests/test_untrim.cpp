@@ -4,7 +4,9 @@
 #include "spline/kernel.hpp"
 #include "spline/untrim.hpp"
 #include "untrim/algorithm2.hpp"
+#include "untrim/loops.hpp"
 #include "untrim/polygon.hpp"
+#include "spline/untrim_integrate.hpp"
 
 using namespace splinex;
 
@@ -126,6 +128,14 @@ TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
       }
       INFO("patch " << k);
       CHECK(per_patch[k] == polygon_area(poly));
+      // Integrals of a density over the region: tiles (f(Q) det J) against Green's theorem on the
+      // independently clipped polygon.
+      TrimmedDomain D{{0, 0}, {1, 1}, {poly}};
+      const auto f = monomial_density(2, 1, D);
+      Rational by_tiles(0);
+      for (const auto& t : A.tiles)
+        if (t.patch == k) by_tiles += integrate_over_tile(f, t.tile)[0];
+      CHECK(by_tiles == green_integral(D, f));
     }
     // Tiles reproduce T(S) exactly inside (the tile's own parametrization, not S's).
     for (std::size_t k = 0; k < A.tiles.size(); ++k) {
@@ -174,4 +184,89 @@ TEST_CASE("Algorithm 2: curved trimming needs a tolerance; with polylines the er
   }
   CHECK(total + A.gap_area - A.overlap_area == 1);
   CHECK(worst < Rational(1, 1000));  // T is C^1 / C^0 at the crossed knots; within eps the error is tiny
+}
+
+namespace {
+TrimmedDomain holed_domain() {
+  // A quadrilateral with a triangular hole in [0, 2] x [0, 1] (the hole touches no edge).
+  return TrimmedDomain{{0, 0},
+                       {2, 1},
+                       {{{Rational(1, 10), Rational(1, 10)}, {Rational(19, 10), Rational(1, 5)}, {Rational(3, 2), Rational(9, 10)},
+                         {Rational(1, 5), Rational(4, 5)}},
+                        {{Rational(1, 2), Rational(3, 10)}, {1, Rational(2, 5)}, {Rational(7, 10), Rational(2, 3)}}}};
+}
+}  // namespace
+
+TEST_CASE("untrim a domain with a hole: exact areas and integrals against CGAL and Green's theorem") {
+  const auto D = holed_domain();
+  validate_domain(D);
+  const auto tiles = untrim_domain<Rational>(D);
+  REQUIRE(tiles.size() >= 3);
+  Rational area(0);
+  std::vector<Polygon> polys;
+  for (const auto& t : tiles) {
+    area += tile_area(t);
+    polys.push_back(tile_polygon(t));
+    CHECK(polygon_is_simple(polys.back()));
+    // f = 1: the integral is the area.
+    CHECK(integrate_over_tile(monomial_density(0, 0, D), t)[0] == tile_area(t));
+  }
+  CHECK(area == region_area(D));
+  CHECK(region_area(D) == polygon_area(D.loops[0]) + polygon_area(D.loops[1]) * (polygon_area(D.loops[1]) > 0 ? -1 : 1));
+  CHECK(polygon_union_area(polys) == area);  // no overlap between tiles
+  for (int a = 0; a <= 3; ++a)
+    for (int b = 0; b <= 3; ++b) {
+      const auto f = monomial_density(a, b, D);
+      Rational sum(0);
+      for (const auto& t : tiles) sum += integrate_over_tile(f, t)[0];
+      INFO("x^" << a << " y^" << b);
+      CHECK(sum == green_integral(D, f));
+    }
+  // A general density (not a monomial): Green's theorem converts it to monomials itself.
+  BSpline<Rational> f;
+  f.degrees = {2, 1};
+  f.q = 1;
+  f.knots = {{-1, -1, -1, 3, 3, 3}, {0, 0, 1, 1}};
+  f.points = {Rational(1, 3), -2, 5, Rational(7, 2), 0, Rational(-1, 9)};
+  Rational sum(0);
+  for (const auto& t : tiles) sum += integrate_over_tile(f, t)[0];
+  CHECK(sum == green_integral(D, f));
+}
+
+TEST_CASE("untrim in double: the rounded tiles' area and integrals measured exactly") {
+  const auto D = holed_domain();
+  const auto tiles = untrim_domain<double>(D);
+  const auto f = monomial_density(2, 1, D);
+  const auto fd = convert<double>(f, [](const Rational& x) { return to_double(x); });
+  double area = 0, integral = 0;
+  for (const auto& t : tiles) {
+    area += tile_area(t);
+    integral += integrate_over_tile(fd, t)[0];
+  }
+  CHECK(abs(Rational(exact_from_double(area) - region_area(D))) < Rational(1, 1000000000000000LL));
+  CHECK(abs(Rational(exact_from_double(integral) - green_integral(D, f))) < Rational(1, 1000000000000000LL));
+}
+
+TEST_CASE("trimmed domain validation: typed errors naming the loop") {
+  auto expect = [](const TrimmedDomain& D, const std::string& what) {
+    try {
+      validate_domain(D);
+      FAIL("accepted: " << what);
+    } catch (const Error& e) {
+      CHECK_THAT(std::string(e.what()), Catch::Contains(what));
+    }
+  };
+  const Rational h(1, 2);
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {1, 1}, {1, 0}, {0, 1}}}}, "loops[0]: is self-intersecting");
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {h, h}, {1, 1}}}}, "loops[0]: is degenerate: all vertices on one line");
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {1, 0}}}}, "loops[0]: is degenerate: 2 vertices");
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}}, "loops[0][1]: is degenerate: repeats the next vertex");
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {2, 0}, {0, 1}}}}, "loops[0][1]: leaves the domain");
+  expect({{0, 0}, {1, 0}, {}}, "domain[1]: is empty");
+  expect({{0, 0}, {1, 1}, {{{0, 0}, {1, 0}, {0, 1}}, {{h, 0}, {1, h}, {1, 1}}}}, "loops[1]: meets loops[0]");
+  try {
+    validate_domain(TrimmedDomain{{0, 0}, {1, 1}, {{{0, 0}, {1, 0}, {0, 1}}, {{Rational(1, 10), Rational(1, 10)}, {Rational(1, 5), Rational(1, 10)}, {Rational(1, 10), Rational(1, 5)}}}});
+  } catch (...) {
+    FAIL("a hole inside a loop was rejected");
+  }
 }

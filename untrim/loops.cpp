@@ -1,0 +1,256 @@
+#include "untrim/loops.hpp"
+
+#include <string>
+
+#include "float/mpfr.hpp"
+
+namespace splinex {
+
+namespace {
+
+std::string vname(std::size_t l, std::size_t i) {
+  return "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
+}
+
+// Closed segments [a, b] and [c, d] share a point (exact orientation tests).
+bool segments_meet(const Vec2<Rational>& a, const Vec2<Rational>& b, const Vec2<Rational>& c, const Vec2<Rational>& d) {
+  using detail::orient2;
+  using detail::sgn;
+  const int o1 = sgn(orient2(a, b, c)), o2 = sgn(orient2(a, b, d)), o3 = sgn(orient2(c, d, a)), o4 = sgn(orient2(c, d, b));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  if (o1 == 0 && detail::within(a, b, c)) return true;
+  if (o2 == 0 && detail::within(a, b, d)) return true;
+  if (o3 == 0 && detail::within(c, d, a)) return true;
+  if (o4 == 0 && detail::within(c, d, b)) return true;
+  return false;
+}
+
+// Strictly inside the polygon (p not on its boundary): crossing number of a ray to +x.
+template <class T>
+bool inside(const std::vector<Vec2<T>>& poly, const Vec2<T>& p) {
+  bool in = false;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto &a = poly[i], &b = poly[(i + 1) % n];
+    if ((a[1] > p[1]) != (b[1] > p[1])) {
+      // x of the edge at height p[1] compared with p[0], without division: sign-corrected orientation.
+      const T o = detail::orient2(a, b, p);
+      if ((b[1] > a[1]) == (o > T(0))) in = !in;
+    }
+  }
+  return in;
+}
+
+// Polynomial in one variable as coefficients c[0] + c[1] x + ...
+using Poly = std::vector<Rational>;
+Poly mul(const Poly& p, const Poly& q) {
+  Poly r(p.size() + q.size() - 1, Rational(0));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < q.size(); ++j) r[i + j] += p[i] * q[j];
+  return r;
+}
+Poly pow(const Poly& p, int e) {
+  Poly r{Rational(1)};
+  for (int i = 0; i < e; ++i) r = mul(r, p);
+  return r;
+}
+Rational binom(int n, int k) {
+  Rational r(1);
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+// B_i^n((x - lo) / (hi - lo)) in powers of x.
+Poly bernstein_monomial(int n, int i, const Rational& lo, const Rational& hi) {
+  const Rational w = hi - lo;
+  const Poly s{-lo / w, 1 / w}, one_minus_s{1 + lo / w, -1 / w};
+  Poly r = mul(pow(s, i), pow(one_minus_s, n - i));
+  for (auto& c : r) c *= binom(n, i);
+  return r;
+}
+
+}  // namespace
+
+void validate_domain(const TrimmedDomain& D) {
+  for (int d = 0; d < 2; ++d)
+    if (!(D.lo[d] < D.hi[d]))
+      throw ValidationError("domain[" + std::to_string(d) + "]", "is empty (lo >= hi)", "give [lo, hi] with lo < hi");
+  for (std::size_t l = 0; l < D.loops.size(); ++l) {
+    const auto& L = D.loops[l];
+    const std::string f = "loops[" + std::to_string(l) + "]";
+    if (L.size() < 3)
+      throw ValidationError(f, "is degenerate: " + std::to_string(L.size()) + " vertices", "give at least 3 vertices");
+    for (std::size_t i = 0; i < L.size(); ++i) {
+      if (L[i] == L[(i + 1) % L.size()])
+        throw ValidationError(vname(l, i), "is degenerate: repeats the next vertex (zero-length edge)",
+                              "remove the repeated vertex");
+      for (int d = 0; d < 2; ++d)
+        if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
+          throw DomainError(vname(l, i), "leaves the domain: coordinate " + std::to_string(d) + " is " +
+                                             ArithTraits<Rational>::to_string(L[i][d]) + ", outside [" + ArithTraits<Rational>::to_string(D.lo[d]) + ", " + ArithTraits<Rational>::to_string(D.hi[d]) + "]",
+                            "keep trimming loops inside the parameter box");
+    }
+    bool collinear = true;
+    for (std::size_t i = 2; i < L.size(); ++i)
+      if (detail::orient2(L[0], L[1], L[i]) != 0) collinear = false;
+    if (collinear)
+      throw ValidationError(f, "is degenerate: all vertices on one line (zero area)", "give a loop that encloses a region");
+    if (!polygon_is_simple(L))
+      throw ValidationError(f, "is self-intersecting", "split it into simple loops (no edge may cross or touch another)");
+  }
+  for (std::size_t l = 0; l < D.loops.size(); ++l)
+    for (std::size_t m = l + 1; m < D.loops.size(); ++m) {
+      const auto &A = D.loops[l], &B = D.loops[m];
+      for (std::size_t i = 0; i < A.size(); ++i)
+        for (std::size_t j = 0; j < B.size(); ++j)
+          if (segments_meet(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()]))
+            throw ValidationError("loops[" + std::to_string(m) + "]",
+                                  "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " +
+                                      std::to_string(i) + ")",
+                                  "trimming loops must be disjoint; merge them into one simple loop");
+    }
+}
+
+TrimmedDomain trimmed_domain_from_json(const Json& doc) {
+  if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"trimmed_domain\", ...}");
+  for (auto it = doc.begin(); it != doc.end(); ++it)
+    if (it.key() != "type" && it.key() != "domain" && it.key() != "loops")
+      throw ParseError(it.key(), "is not a field of a trimmed domain", "use type, domain, loops");
+  if (!doc.contains("type") || doc["type"] != "trimmed_domain")
+    throw ParseError("type", "must be \"trimmed_domain\"", "set \"type\": \"trimmed_domain\"");
+  if (!doc.contains("domain") || !doc["domain"].is_array() || doc["domain"].size() != 2)
+    throw ParseError("domain", "must be [[x0, x1], [y0, y1]]", "give the parameter box");
+  TrimmedDomain D;
+  for (int d = 0; d < 2; ++d) {
+    const auto& iv = doc["domain"][d];
+    const std::string f = "domain[" + std::to_string(d) + "]";
+    if (!iv.is_array() || iv.size() != 2) throw ParseError(f, "must be [lo, hi]", "give two numbers");
+    D.lo[d] = json_number(iv[0], f + "[0]");
+    D.hi[d] = json_number(iv[1], f + "[1]");
+  }
+  if (!doc.contains("loops") || !doc["loops"].is_array())
+    throw ParseError("loops", "must be an array of loops", "give [[[x, y], ...], ...]");
+  for (std::size_t l = 0; l < doc["loops"].size(); ++l) {
+    const auto& L = doc["loops"][l];
+    if (!L.is_array()) throw ParseError("loops[" + std::to_string(l) + "]", "is not an array of points", "give [[x, y], ...]");
+    Polygon P;
+    for (std::size_t i = 0; i < L.size(); ++i) {
+      if (!L[i].is_array() || L[i].size() != 2) throw ParseError(vname(l, i), "must be [x, y]", "give two numbers");
+      P.push_back({json_number(L[i][0], vname(l, i) + "[0]"), json_number(L[i][1], vname(l, i) + "[1]")});
+    }
+    D.loops.push_back(std::move(P));
+  }
+  validate_domain(D);
+  return D;
+}
+
+template <class T>
+std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std::vector<Rational>, 2>& knot_lines) {
+  const auto cv = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
+  const T x0 = cv(D.lo[0]), x1 = cv(D.hi[0]), y0 = cv(D.lo[1]), y1 = cv(D.hi[1]);
+  std::vector<Seg2<T>> segs{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x0, y1}, {x1, y1}}, {{x0, y0}, {x0, y1}}};
+  for (const auto& k : knot_lines[0])
+    if (D.lo[0] < k && k < D.hi[0]) segs.push_back({{cv(k), y0}, {cv(k), y1}});
+  for (const auto& k : knot_lines[1])
+    if (D.lo[1] < k && k < D.hi[1]) segs.push_back({{x0, cv(k)}, {x1, cv(k)}});
+  std::vector<std::vector<Vec2<T>>> loops;
+  for (const auto& L : D.loops) {
+    std::vector<Vec2<T>> P;
+    for (const auto& v : L) P.push_back({cv(v[0]), cv(v[1])});
+    for (std::size_t i = 0; i < P.size(); ++i) segs.push_back({P[i], P[(i + 1) % P.size()]});
+    loops.push_back(std::move(P));
+  }
+  const auto traps = vertical_decomposition(planar_subdivision(segs));
+  std::vector<int> labels(traps.size(), -1);
+  for (std::size_t z = 0; z < traps.size(); ++z) {
+    const auto& tz = traps[z];
+    const Vec2<T> m{(tz.x0 + tz.x1) / T(2), (tz.yb0 + tz.yb1 + tz.yt0 + tz.yt1) / T(4)};
+    int depth = 0;
+    for (const auto& P : loops) depth += inside(P, m) ? 1 : 0;
+    labels[z] = depth % 2 == 1 ? 0 : -1;
+  }
+  return merge_trapezoids(traps, labels);
+}
+
+std::vector<int> loop_signs(const TrimmedDomain& D) {
+  std::vector<int> s;
+  for (std::size_t l = 0; l < D.loops.size(); ++l) {
+    int depth = 0;
+    for (std::size_t m = 0; m < D.loops.size(); ++m)
+      if (m != l && inside(D.loops[m], D.loops[l][0])) ++depth;
+    s.push_back(depth % 2 == 0 ? 1 : -1);
+  }
+  return s;
+}
+
+Rational region_area(const TrimmedDomain& D) {
+  const auto s = loop_signs(D);
+  Rational a(0);
+  for (std::size_t l = 0; l < D.loops.size(); ++l) a += s[l] * abs(polygon_area(D.loops[l]));
+  return a;
+}
+
+Rational green_integral(const TrimmedDomain& D, const BSpline<Rational>& f) {
+  if (f.dim() != 2 || f.q != 1 || f.is_rational())
+    throw ValidationError("density", "must be a scalar polynomial in (x, y)", "give q = 1 and no weights");
+  // f in monomials: m[a][b] x^a y^b.
+  const int n0 = f.degrees[0], n1 = f.degrees[1];
+  std::vector<std::vector<Rational>> mono(n0 + 1, std::vector<Rational>(n1 + 1, Rational(0)));
+  for (int j = 0; j <= n1; ++j) {
+    const Poly by = bernstein_monomial(n1, j, f.domain_lo(1), f.domain_hi(1));
+    for (int i = 0; i <= n0; ++i) {
+      const Poly bx = bernstein_monomial(n0, i, f.domain_lo(0), f.domain_hi(0));
+      const Rational& c = f.points[static_cast<std::size_t>(j) * (n0 + 1) + i];
+      for (int a = 0; a <= n0; ++a)
+        for (int b = 0; b <= n1; ++b) mono[a][b] += c * bx[a] * by[b];
+    }
+  }
+  // int_region x^a y^b dA = sum_loops sign * orientation * oint x^(a+1)/(a+1) y^b dy.
+  const auto sg = loop_signs(D);
+  Rational total(0);
+  for (std::size_t l = 0; l < D.loops.size(); ++l) {
+    const auto& L = D.loops[l];
+    const int orient = polygon_area(L) > 0 ? 1 : -1;  // counter-clockwise loops give +area
+    Rational loop_sum(0);
+    for (std::size_t e = 0; e < L.size(); ++e) {
+      const auto &P = L[e], &Q = L[(e + 1) % L.size()];
+      const Poly xs{P[0], Q[0] - P[0]}, ys{P[1], Q[1] - P[1]};
+      const Rational dy = Q[1] - P[1];
+      if (dy == 0) continue;
+      for (int a = 0; a <= n0; ++a)
+        for (int b = 0; b <= n1; ++b) {
+          if (mono[a][b] == 0) continue;
+          const Poly g = mul(pow(xs, a + 1), pow(ys, b));  // in s on [0, 1]
+          Rational integral(0);
+          for (std::size_t k = 0; k < g.size(); ++k) integral += g[k] / Rational(static_cast<long>(k + 1));
+          loop_sum += mono[a][b] * integral * dy / (a + 1);
+        }
+    }
+    total += sg[l] * orient * loop_sum;
+  }
+  return total;
+}
+
+BSpline<Rational> monomial_density(int a, int b, const TrimmedDomain& D) {
+  BSpline<Rational> f;
+  f.degrees = {a, b};
+  f.q = 1;
+  for (int d = 0; d < 2; ++d) {
+    const int n = d == 0 ? a : b;
+    std::vector<Rational> U(n + 1, D.lo[d]);
+    U.insert(U.end(), n + 1, D.hi[d]);
+    f.knots.push_back(U);
+  }
+  for (int j = 0; j <= b; ++j)
+    for (int i = 0; i <= a; ++i) {
+      Rational c(1);
+      for (int k = 0; k < a; ++k) c *= k < a - i ? D.lo[0] : D.hi[0];
+      for (int k = 0; k < b; ++k) c *= k < b - j ? D.lo[1] : D.hi[1];
+      f.points.push_back(c);
+    }
+  return f;
+}
+
+template std::vector<Tile<Rational>> untrim_domain(const TrimmedDomain&, const std::array<std::vector<Rational>, 2>&);
+template std::vector<Tile<double>> untrim_domain(const TrimmedDomain&, const std::array<std::vector<Rational>, 2>&);
+
+}  // namespace splinex

@@ -1,0 +1,53 @@
+// Untrimming a user-given trimmed domain: a parameter box and polygonal trimming loops with
+// rational vertices (`splinex untrim`). The trimmed region is the set of points of the box inside
+// an odd number of loops (even-odd rule: an outer loop with holes needs no orientation).
+//
+// Validation (typed errors naming the loop and vertex): a loop needs >= 3 vertices, no repeated
+// consecutive vertex, non-zero area (degenerate loops); no self-intersection (CGAL is_simple);
+// every vertex in the closed box (loops leaving the domain); no two loops crossing or touching.
+//
+// Tiles come from the line sweep of spline/untrim.hpp (exact in rationals, or in double from the
+// rounded vertices). Cross-checks, independent of the sweep: the region's area by CGAL's exact
+// polygon areas with nesting parity, and integrals of polynomial densities by Green's theorem on
+// the loops (the density in monomials, int_region f dA = sum over loops of +-oint F dy with
+// F = int f dx).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "exact/json_io.hpp"
+#include "exact/rational.hpp"
+#include "spline/untrim.hpp"
+#include "untrim/polygon.hpp"
+
+namespace splinex {
+
+struct TrimmedDomain {
+  std::array<Rational, 2> lo, hi;  // the box [lo_0, hi_0] x [lo_1, hi_1]
+  std::vector<Polygon> loops;
+};
+
+// Reads {"type": "trimmed_domain", "domain": [[x0, x1], [y0, y1]], "loops": [[[x, y], ...], ...]}
+// exactly and validates it (validate_domain).
+TrimmedDomain trimmed_domain_from_json(const Json& doc);
+void validate_domain(const TrimmedDomain& D);
+
+// The tiles of the trimmed region (labels 0), in arithmetic T (double: vertices rounded).
+// knot_lines: x values of vertical and y values of horizontal lines that also split the tiles
+// (the knot lines of a surface the tiles are composed into: isoparametric splits).
+template <class T>
+std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std::vector<Rational>, 2>& knot_lines = {});
+
+// +1 for loops at even nesting depth (outer boundaries), -1 at odd depth (holes).
+std::vector<int> loop_signs(const TrimmedDomain& D);
+// The region's exact area: sum of sign * |CGAL polygon area|.
+Rational region_area(const TrimmedDomain& D);
+// Green's theorem: the integral of the polynomial f (one Bezier piece, q = 1) over the region,
+// through f's monomial form and the loops' edges; exact.
+Rational green_integral(const TrimmedDomain& D, const BSpline<Rational>& f);
+
+// The density x^a y^b as a Bezier patch of degrees (a, b) on the box (coefficients
+// lo^(a-i) hi^i, the monomial's blossom at the end points).
+BSpline<Rational> monomial_density(int a, int b, const TrimmedDomain& D);
+
+}  // namespace splinex
