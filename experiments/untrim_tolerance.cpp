@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -240,6 +242,11 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
         }
         r.m = m;
         rows.push_back(std::move(r));
+        // Long sweeps: every finished row is on disk at once (the final CSV replaces this file).
+        std::ofstream partial(opt.out_dir + "/untrim_tolerance.partial.csv", std::ios::app);
+        partial << std::setprecision(17) << rows.back().m << "," << rows.back().arith << "," << rows.back().eps << ","
+                << rows.back().control_points << "," << rows.back().seconds << "," << to_double(rows.back().deviation) << ","
+                << to_double(rows.back().gap) << "," << to_double(rows.back().overlap) << "," << rows.back().skipped << "\n";
       }
   }
   // CSV.
@@ -317,6 +324,7 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
   for (const auto& s : cost)
     for (const auto& pt : s.points) cp_pts.push_back(pt);
   write_file_atomically(opt.out_dir + "/untrim_tolerance.csv", csv.str());
+  std::remove((opt.out_dir + "/untrim_tolerance.partial.csv").c_str());
   write_file_atomically(opt.out_dir + "/untrim_tolerance.svg",
                         svg_line_plot({"Untrimmed (Algorithm 2) patches: deviation from T(S) vs polyline tolerance",
                                        "tolerance eps", "max |R(x,l) - T(S(Q(x,l)))| (exact)", true, true,
