@@ -7,6 +7,8 @@
 #include "exact/random_spline.hpp"
 #include "exact/root_isolation.hpp"
 #include "spline/hodograph.hpp"
+#include "untrim/algorithm2.hpp"
+#include "untrim/polygon.hpp"
 #include "spline/kernel.hpp"
 
 namespace splinex {
@@ -473,6 +475,80 @@ std::vector<ProofEntry> make_registry() {
                       }
                       acc.rep.points += checked;
                     }, 118));
+  r.push_back(entry("untrim-cover",
+                    "Algorithm 2, exact, for affine S in T: the tiles of each inner piece cover its box with no gap and "
+                    "no overlap (exact union area by CGAL = box area = sum of tile areas), each region's tiles have the "
+                    "area of the region's polygon (the box clipped independently by the region's half-planes), and "
+                    "every tile patch R equals T(S(Q)) on its tile",
+                    "per tile cell (chain piece x [0, 1]): max(deg R, p_0 + p_1 of T) per direction",
+                    [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+                      auto frac = [&](int lo, int hi, int den) { return Rational(pick(lo, hi), den); };
+                      RandomSplineSpec so;
+                      so.degrees = {pick(1, 3), pick(1, 3)};
+                      so.counts = {static_cast<std::size_t>(so.degrees[0] + 1 + pick(1, 3)), static_cast<std::size_t>(so.degrees[1] + 1 + pick(1, 3))};
+                      so.q = 3;
+                      const auto T = random_spline(so, rng);
+                      // S(r, t) = c + r e1 + t e2, its image inside (0, 1)^2.
+                      const Rational c[2] = {frac(100, 250, 1000), frac(100, 250, 1000)};
+                      const Rational e1[2] = {frac(300, 600, 1000), frac(-50, 50, 1000)}, e2[2] = {frac(-50, 50, 1000), frac(300, 600, 1000)};
+                      BSpline<Rational> S;
+                      S.degrees = {1, 1};
+                      S.q = 2;
+                      S.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
+                      for (int b = 0; b <= 1; ++b)
+                        for (int a = 0; a <= 1; ++a)
+                          for (int d = 0; d < 2; ++d) S.points.push_back(c[d] + e1[d] * a + e2[d] * b);
+                      const auto A = compose_tensor(T, S);
+                      if (A.curved_boundaries != 0) acc.fail("a curved trimming curve for affine S", i);
+                      // Cover: per inner piece.
+                      std::vector<std::vector<Polygon>> polys(A.trimmed.inner_pieces.size());
+                      std::vector<Rational> sums(A.trimmed.inner_pieces.size(), Rational(0)), per_patch(A.trimmed.patches.size(), Rational(0));
+                      for (const auto& t : A.tiles) {
+                        const std::size_t piece = A.trimmed.patches[t.patch].inner_piece;
+                        polys[piece].push_back(tile_polygon(t.tile));
+                        sums[piece] += t.area;
+                        per_patch[t.patch] += t.area;
+                      }
+                      for (std::size_t k = 0; k < polys.size(); ++k) {
+                        const auto& box = A.trimmed.inner_pieces[k].box;
+                        const Rational area = (box[0].second - box[0].first) * (box[1].second - box[1].first);
+                        const Rational u = polygon_union_area(polys[k]);
+                        if (u != area) acc.fail("inner piece " + std::to_string(k) + ": gap of area " + to_fraction_string(Rational(area - u)), i);
+                        if (sums[k] != u) acc.fail("inner piece " + std::to_string(k) + ": overlap of area " + to_fraction_string(Rational(sums[k] - u)), i);
+                        acc.rep.points += polys[k].size();
+                      }
+                      // Regions: the box clipped by the region's half-planes s_c >= lo, s_c < hi.
+                      for (std::size_t k = 0; k < A.trimmed.patches.size(); ++k) {
+                        const auto& p = A.trimmed.patches[k];
+                        const auto& box = A.trimmed.inner_pieces[p.inner_piece].box;
+                        Polygon poly{{box[0].first, box[1].first}, {box[0].second, box[1].first}, {box[0].second, box[1].second},
+                                     {box[0].first, box[1].second}};
+                        for (const auto& cd : p.region) {
+                          if (cd.check_lo) poly = clip_halfplane(poly, e1[cd.coord], e2[cd.coord], Rational(c[cd.coord] - cd.lo));
+                          if (cd.check_hi) poly = clip_halfplane(poly, -e1[cd.coord], -e2[cd.coord], Rational(cd.hi - c[cd.coord]));
+                        }
+                        if (per_patch[k] != polygon_area(poly))
+                          acc.fail("region " + std::to_string(k) + ": tiles " + to_fraction_string(per_patch[k]) + " vs clipped polygon " +
+                                       to_fraction_string(polygon_area(poly)), i);
+                      }
+                      // R = T(S(Q)) on every tile, by identity on its cells.
+                      const int dT = T.degrees[0] + T.degrees[1];
+                      for (std::size_t k = 0; k < A.tiles.size(); ++k) {
+                        const auto& t = A.tiles[k];
+                        const std::vector<int> bound{std::max(t.R.degrees[0], dT), std::max(t.R.degrees[1], dT)};
+                        acc.add(prove_by_samples({t.tile.x, {Rational(0), Rational(1)}}, bound,
+                                                 [&](const std::vector<Rational>& xl) -> std::string {
+                                                   const auto a = A.evaluate_tile(k, xl);
+                                                   const auto b = evaluate(T, evaluate(S, evaluate(t.Q, xl)));
+                                                   if (a == b) return "";
+                                                   return "tile " + std::to_string(k) + " at (" + to_fraction_string(xl[0]) + ", " +
+                                                          to_fraction_string(xl[1]) + ")";
+                                                 },
+                                                 "R = T(S(Q))"),
+                                i);
+                      }
+                    }, 120));
   r.push_back(entry("trimming-endpoints",
                     "every isolated crossing of a trimming curve with an inner piece's edge (CGAL root isolation) is "
                     "certified (exact rational root on the knot line, or a sign change of s_c - u at the interval's "
