@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
   std::string ut_arith = "exact", ut_surface, ut_density, ut_monomial, ut_file;
   auto* c_untrim = app.add_subcommand(
       "untrim", "tile a trimmed domain (polygonal loops) with Coons patches; exact areas and integrals, cross-checked");
-  c_untrim->add_option("--arith", ut_arith, "exact or double")->capture_default_str();
+  c_untrim->add_option("--arith", ut_arith, "exact, double or mpfr:BITS")->capture_default_str();
   c_untrim->add_option("--surface", ut_surface, "compose every tile into this surface (its knot lines split the tiles)");
   c_untrim->add_option("--density", ut_density, "integrate this polynomial density (one Bezier piece, q = 1) over the region");
   c_untrim->add_option("--monomial", ut_monomial, "integrate x^a y^b over the region, given as \"a,b\"");
@@ -324,7 +324,11 @@ int main(int argc, char** argv) {
       sx::Json out;
       if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
       else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
-      else throw sx::UsageError("arith", "untrim runs in exact or double", "use --arith exact or double");
+      else if (spec.kind == sx::ArithSpec::Kind::mpfr) {
+        sx::Mpfr::Precision scope(spec.bits);
+        out = run(sx::ArithTag<sx::Mpfr>{});
+      } else
+        throw sx::UsageError("arith", "untrim runs in exact, double or mpfr:BITS (not flint)", "use --arith exact, double or mpfr:BITS");
       std::cout << out.dump() << "\n";
       return 0;
     }
@@ -371,7 +375,12 @@ int main(int argc, char** argv) {
         sx::Json out;
         if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
         else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
-        else throw sx::UsageError("arith", "compose --method tensor runs in exact or double", "use --arith exact or double");
+        else if (spec.kind == sx::ArithSpec::Kind::mpfr) {
+          sx::Mpfr::Precision scope(spec.bits);
+          out = run(sx::ArithTag<sx::Mpfr>{});
+        } else
+          throw sx::UsageError("arith", "compose --method tensor runs in exact, double or mpfr:BITS (not flint)",
+                               "use --arith exact, double or mpfr:BITS");
         std::cout << out.dump() << "\n";
         return 0;
       }

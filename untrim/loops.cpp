@@ -252,5 +252,6 @@ BSpline<Rational> monomial_density(int a, int b, const TrimmedDomain& D) {
 
 template std::vector<Tile<Rational>> untrim_domain(const TrimmedDomain&, const std::array<std::vector<Rational>, 2>&);
 template std::vector<Tile<double>> untrim_domain(const TrimmedDomain&, const std::array<std::vector<Rational>, 2>&);
+template std::vector<Tile<Mpfr>> untrim_domain(const TrimmedDomain&, const std::array<std::vector<Rational>, 2>&);
 
 }  // namespace splinex
