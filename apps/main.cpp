@@ -105,6 +105,21 @@ sx::Json run_op_document(const sx::Operation& op, const sx::BSpline<sx::Rational
   });
 }
 
+// Dispatch for the operations instantiated for exact (GMP), double and MPFR but not FLINT.
+template <class F>
+sx::Json without_flint(const sx::ArithSpec& spec, const std::string& what, F&& run) {
+  switch (spec.kind) {
+    case sx::ArithSpec::Kind::exact: return run(sx::ArithTag<sx::Rational>{});
+    case sx::ArithSpec::Kind::dbl: return run(sx::ArithTag<double>{});
+    case sx::ArithSpec::Kind::mpfr: {
+      sx::Mpfr::Precision scope(spec.bits);
+      return run(sx::ArithTag<sx::Mpfr>{});
+    }
+    case sx::ArithSpec::Kind::flint: break;
+  }
+  throw sx::UsageError("arith", what + " runs in exact, double or mpfr:BITS (not flint)", "use --arith exact, double or mpfr:BITS");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -321,14 +336,7 @@ int main(int argc, char** argv) {
         }
         return out;
       };
-      sx::Json out;
-      if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
-      else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
-      else if (spec.kind == sx::ArithSpec::Kind::mpfr) {
-        sx::Mpfr::Precision scope(spec.bits);
-        out = run(sx::ArithTag<sx::Mpfr>{});
-      } else
-        throw sx::UsageError("arith", "untrim runs in exact, double or mpfr:BITS (not flint)", "use --arith exact, double or mpfr:BITS");
+      const sx::Json out = without_flint(spec, "untrim", run);
       std::cout << out.dump() << "\n";
       return 0;
     }
@@ -372,15 +380,7 @@ int main(int argc, char** argv) {
                                         "spline's parameters (piecewise linear chains); its Coons patch Q(x, l) maps "
                                         "[x_0, x_m] x [0, 1] onto it and patch = T_j^e(S_i(Q))"}};
         };
-        sx::Json out;
-        if (spec.kind == sx::ArithSpec::Kind::exact) out = run(sx::ArithTag<sx::Rational>{});
-        else if (spec.kind == sx::ArithSpec::Kind::dbl) out = run(sx::ArithTag<double>{});
-        else if (spec.kind == sx::ArithSpec::Kind::mpfr) {
-          sx::Mpfr::Precision scope(spec.bits);
-          out = run(sx::ArithTag<sx::Mpfr>{});
-        } else
-          throw sx::UsageError("arith", "compose --method tensor runs in exact, double or mpfr:BITS (not flint)",
-                               "use --arith exact, double or mpfr:BITS");
+        const sx::Json out = without_flint(spec, "compose --method tensor", run);
         std::cout << out.dump() << "\n";
         return 0;
       }

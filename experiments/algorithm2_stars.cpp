@@ -9,6 +9,7 @@
 
 #include "exact/bpt.hpp"
 #include "exact/rational.hpp"
+#include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "spline/kernel.hpp"
@@ -17,11 +18,7 @@
 namespace splinex {
 
 namespace {
-std::string g(double v) {
-  std::ostringstream o;
-  o << std::setprecision(3) << v;
-  return o.str();
-}
+std::string g(double v) { return fmt(v, 3); }
 BSpline<double> to_dbl(const BSpline<Rational>& S) {
   return convert<double>(S, [](const Rational& x) { return to_double(x); });
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "exact/rational.hpp"
+#include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/algorithm2.hpp"
@@ -17,11 +18,7 @@ namespace {
 constexpr int kCells = 4;   // texture: kCells x kCells numbered squares
 constexpr int kSub = 6;     // drawn quads per texture square and direction
 
-std::string g(double v) {
-  std::ostringstream o;
-  o << std::setprecision(3) << v;
-  return o.str();
-}
+std::string g(double v) { return fmt(v, 3); }
 
 struct Canvas {
   double x0, y0, scale, ox, oy;

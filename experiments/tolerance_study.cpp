@@ -8,6 +8,7 @@
 
 #include "exact/rational.hpp"
 #include "exact/root_isolation.hpp"
+#include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/trimming_polyline.hpp"
 #include "spline/kernel.hpp"
@@ -44,13 +45,6 @@ BSpline<Rational> polyline_graph(const std::vector<Segment2>& poly) {
 
 const char* const kMultiplicityColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 
-// The clamped knot vector of degree p on [0, 1] with the interior knot u0 of multiplicity m.
-std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
-  std::vector<Rational> U(p + 1, Rational(0));
-  U.insert(U.end(), m, u0);
-  U.insert(U.end(), p + 1, Rational(1));
-  return U;
-}
 
 // max_c |P(r)_c - T(S(r))_c|, exactly: what evaluating r with the patch P costs.
 Rational patch_error(const TrimmedPatch<Rational>& P, const BSpline<Rational>& T, const BSpline<Rational>& S,
@@ -69,11 +63,7 @@ std::size_t other_patch(const TrimmedComposition<Rational>& C, std::size_t k) {
   throw std::logic_error("tolerance study: no patch across the knot");
 }
 
-std::string g(double v) {
-  std::ostringstream o;
-  o << std::setprecision(4) << v;
-  return o.str();
-}
+std::string g(double v) { return fmt(v, 4); }
 
 // A trivariate S crossing a knot plane of a trivariate T: the misassigned volume and the error.
 std::string volume_case(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "exact/rational.hpp"
+#include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
 #include "spline/kernel.hpp"
@@ -20,11 +21,7 @@ namespace splinex {
 
 namespace {
 
-std::string g(double v) {
-  std::ostringstream o;
-  o << std::setprecision(3) << v;
-  return o.str();
-}
+std::string g(double v) { return fmt(v, 3); }
 
 template <class A>
 Rational ex(const A& x) {
@@ -179,12 +176,6 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
 
 const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 
-std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
-  std::vector<Rational> U(p + 1, Rational(0));
-  U.insert(U.end(), m, u0);
-  U.insert(U.end(), p + 1, Rational(1));
-  return U;
-}
 
 }  // namespace
 
@@ -326,12 +317,12 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
   write_file_atomically(opt.out_dir + "/untrim_tolerance.csv", csv.str());
   std::remove((opt.out_dir + "/untrim_tolerance.partial.csv").c_str());
   write_file_atomically(opt.out_dir + "/untrim_tolerance.svg",
-                        svg_line_plot({"Untrimmed (Algorithm 2) patches: deviation from T(S) vs polyline tolerance",
+                        svg_line_plot({"Algorithm 2 tiles: deviation from T(S) vs tolerance",
                                        "tolerance eps", "max |R(x,l) - T(S(Q(x,l)))| (exact)", true, true,
                                        "T degrees (3,1), knot of multiplicity m; dashed: double, solid: MPFR"},
                                       series));
   write_file_atomically(opt.out_dir + "/untrim_tolerance_cost.svg",
-                        svg_line_plot({"Untrimmed patches: control points of all tiles vs polyline tolerance",
+                        svg_line_plot({"Algorithm 2 tiles: control points vs tolerance",
                                        "tolerance eps", "control points", true, true,
                                        "polyline tiles: one Bezier piece per chain vertex"},
                                       cost));
