@@ -47,7 +47,7 @@ TEST_CASE("exact output is fractions in lowest terms and reads back identically"
   CHECK(spline_from_json(test::doc(out.dump())).points == S.points);
 }
 
-TEST_CASE("double output round-trips; MPFR output carries all digits") {
+TEST_CASE("double output round-trips, MPFR output carries all digits") {
   const auto S = spline(kCurve);
   const auto D = convert<double>(S, [](const Rational& x) { return to_double(x); });
   const Json out = spline_to_json(D);

@@ -61,7 +61,7 @@ TEST_CASE("sweep: a square cut by its diagonal gives two triangles of area 1/2")
   }
 }
 
-TEST_CASE("sweep: crossing segments are split exactly; a hole is tiled around") {
+TEST_CASE("sweep: crossing segments are split exactly, a hole is tiled around") {
   // Two crossing diagonals: four triangles meeting at (1/2, 1/2).
   auto segs = square_edges(0, 1);
   segs.push_back({{0, 0}, {1, 1}});
@@ -153,7 +153,7 @@ TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
   }
 }
 
-TEST_CASE("Algorithm 2: curved trimming needs a tolerance; with polylines the error is small") {
+TEST_CASE("Algorithm 2: curved trimming needs a tolerance, with polylines the error is small") {
   const auto T = outer_surface();
   BSpline<Rational> S;
   S.degrees = {2, 1};
