@@ -105,6 +105,29 @@ sx::Json run_op_document(const sx::Operation& op, const sx::BSpline<sx::Rational
   });
 }
 
+// Parsed numbers that must be whole and in [0, hi] (derivative orders, exponents).
+std::vector<int> whole_numbers(const std::vector<sx::Rational>& numbers, const std::string& field, int hi,
+                               const std::string& what, const std::string& fix) {
+  std::vector<int> out;
+  for (const auto& r : numbers) {
+    if (boost::multiprecision::denominator(r) != 1 || r < 0 || r > hi) throw sx::UsageError(field, what, fix);
+    out.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
+  }
+  return out;
+}
+
+// A tile's chains as JSON: {"x": [...], "y_bottom": [...], "y_top": [...]}.
+template <class F>
+sx::Json tile_to_json(const sx::Tile<F>& t) {
+  sx::Json xs = sx::Json::array(), yb = sx::Json::array(), yt = sx::Json::array();
+  for (std::size_t i = 0; i < t.x.size(); ++i) {
+    xs.push_back(sx::ArithTraits<F>::to_json(t.x[i]));
+    yb.push_back(sx::ArithTraits<F>::to_json(t.yb[i]));
+    yt.push_back(sx::ArithTraits<F>::to_json(t.yt[i]));
+  }
+  return {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}};
+}
+
 // Dispatch for the operations instantiated for exact (GMP), double and MPFR but not FLINT.
 template <class F>
 sx::Json without_flint(const sx::ArithSpec& spec, const std::string& what, F&& run) {
@@ -227,11 +250,8 @@ int main(int argc, char** argv) {
       const auto x = sx::parse_number_list(at, "at");
       std::vector<int> ord;
       if (!orders.empty())
-        for (const auto& r : sx::parse_number_list(orders, "derivative")) {
-          if (boost::multiprecision::denominator(r) != 1 || r < 0 || r > 1000)
-            throw sx::UsageError("derivative", "orders must be whole numbers in [0, 1000]", "write e.g. --derivative \"1,0\"");
-          ord.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
-        }
+        ord = whole_numbers(sx::parse_number_list(orders, "derivative"), "derivative", 1000, "orders must be whole numbers in [0, 1000]",
+                            "write e.g. --derivative \"1,0\"");
       const auto spec = sx::ArithSpec::parse(ev.arith);
       const sx::Json out = sx::with_arith(spec, [&](auto tag) {
         using T = typename decltype(tag)::type;
@@ -277,15 +297,11 @@ int main(int argc, char** argv) {
         throw sx::UsageError("density", "--density and --monomial both given", "give one density");
       if (!ut_density.empty()) f = sx::spline_from_json(sx::read_json_file(ut_density), limits, "density");
       if (!ut_monomial.empty()) {
+        const std::string hint = "write --monomial \"a,b\" for x^a y^b";
         const auto ab = sx::parse_number_list(ut_monomial, "monomial");
-        if (ab.size() != 2) throw sx::UsageError("monomial", "needs two exponents", "write --monomial \"a,b\" for x^a y^b");
-        int e[2];
-        for (int k = 0; k < 2; ++k) {
-          if (denominator(ab[k]) != 1 || ab[k] < 0 || ab[k] > limits.max_degree)
-            throw sx::ValidationError("monomial", "exponents must be integers in [0, " + std::to_string(limits.max_degree) + "]",
-                                      "write --monomial \"a,b\" for x^a y^b");
-          e[k] = static_cast<int>(numerator(ab[k]).convert_to<long>());
-        }
+        if (ab.size() != 2) throw sx::UsageError("monomial", "needs two exponents", hint);
+        const auto e = whole_numbers(ab, "monomial", limits.max_degree,
+                                     "exponents must be integers in [0, " + std::to_string(limits.max_degree) + "]", hint);
         f = sx::monomial_density(e[0], e[1], D);
       }
       if (f && f->q != 1) throw sx::ValidationError("density", "has " + std::to_string(f->q) + " coordinates", "give a scalar density (q = 1)");
@@ -303,16 +319,10 @@ int main(int argc, char** argv) {
         sx::CompositionOptions co;
         co.expand = true;
         for (const auto& t : tiles) {
-          sx::Json xs = sx::Json::array(), yb = sx::Json::array(), yt = sx::Json::array();
-          for (std::size_t i = 0; i < t.x.size(); ++i) {
-            xs.push_back(Tr::to_json(t.x[i]));
-            yb.push_back(Tr::to_json(t.yb[i]));
-            yt.push_back(Tr::to_json(t.yt[i]));
-          }
           const auto Q = sx::tile_spline(t);
           const F a = sx::tile_area(t);
           area = area + a;
-          sx::Json tj{{"tile", {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}}}, {"area", Tr::to_json(a)}, {"coons_patch", sx::spline_to_json(Q)}};
+          sx::Json tj{{"tile", tile_to_json(t)}, {"area", Tr::to_json(a)}, {"coons_patch", sx::spline_to_json(Q)}};
           if (Sf) tj["patch"] = sx::spline_to_json(sx::compose(*Sf, Q, co, limits));
           if (ff) {
             const F v = sx::integrate_over_tile(*ff, t, limits)[0];
@@ -356,16 +366,11 @@ int main(int argc, char** argv) {
           sx::Json tiles = sx::Json::array();
           for (const auto& t : A.tiles) {
             const auto& p = A.trimmed.patches[t.patch];
-            sx::Json box = sx::Json::array(), xs = sx::Json::array(), yb = sx::Json::array(), yt = sx::Json::array();
+            sx::Json box = sx::Json::array();
             for (const auto& [lo, hi] : A.trimmed.inner_pieces[p.inner_piece].box) box.push_back({Tr::to_json(lo), Tr::to_json(hi)});
-            for (std::size_t i = 0; i < t.tile.x.size(); ++i) {
-              xs.push_back(Tr::to_json(t.tile.x[i]));
-              yb.push_back(Tr::to_json(t.tile.yb[i]));
-              yt.push_back(Tr::to_json(t.tile.yt[i]));
-            }
             tiles.push_back({{"inner_box", box},
                              {"outer_cell", p.outer_cell},
-                             {"tile", {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}}},
+                             {"tile", tile_to_json(t.tile)},
                              {"area", Tr::to_json(t.area)},
                              {"coons_patch", sx::spline_to_json(t.Q)},
                              {"homogeneous", p.homogeneous},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "exact/rational.hpp"
@@ -47,18 +48,19 @@ void label(std::ostringstream& svg, const Canvas& c, F&& f, const Rational& u, c
       << (dark ? "#ffffff" : "#222222") << "\" font-family=\"sans-serif\">" << number << "</text>\n";
 }
 
-// Draws the texture on [0,1]^2 mapped by f, clipped to the texture coordinates inside(u, v).
+// Draws the texture on [0,1]^2 mapped by f, clipped to the texture coordinates inside(u, v); adds 1
+// to counts[k] for every number k of which it draws a part.
 template <class F, class In>
 void texture(std::ostringstream& svg, const Canvas& c, F&& f, In&& inside, std::map<int, int>& counts) {
   const int n = kCells * kSub;
-  std::map<int, bool> seen;
+  std::set<int> seen;  // the numbers this call draws (any part of their square)
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Rational u0(i, n), u1(i + 1, n), v0(j, n), v1(j + 1, n);
       if (!inside((u0 + u1) / 2, (v0 + v1) / 2)) continue;
       const int ci = i / kSub, cj = j / kSub;
       quad(svg, c, f, u0, u1, v0, v1, (ci + cj) % 2 == 0);
-      seen[cj * kCells + ci] = true;
+      seen.insert(cj * kCells + ci + 1);
     }
   for (int cj = 0; cj < kCells; ++cj)
     for (int ci = 0; ci < kCells; ++ci) {
@@ -66,7 +68,7 @@ void texture(std::ostringstream& svg, const Canvas& c, F&& f, In&& inside, std::
       if (!inside(u, v)) continue;
       label(svg, c, f, u, v, cj * kCells + ci + 1, (ci + cj) % 2 == 0);
     }
-  for (const auto& [k, b] : seen) counts[k + 1] += b ? 1 : 0;
+  for (int k : seen) ++counts[k];
 }
 
 }  // namespace
@@ -124,9 +126,7 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
   for (std::size_t k = 0; k < C.patches.size(); ++k) {
     auto f = [&](const Rational& u, const Rational& v) { return evaluate_patch(C.patches[k], {u, v}); };
     auto in = [&](const Rational& u, const Rational& v) { return C.locate({u, v}) == k; };
-    std::map<int, int> c;
-    texture(svg, ca, f, in, c);
-    for (const auto& [num, n] : c) counts1[num] += n;
+    texture(svg, ca, f, in, counts1);
   }
   // Algorithm 1 at the texture points: the owning patch equals T(S) exactly (Definition 1).
   for (int j = 0; j <= 8; ++j)

@@ -43,8 +43,6 @@ BSpline<Rational> polyline_graph(const std::vector<Segment2>& poly) {
   return h;
 }
 
-const char* const kMultiplicityColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
-
 
 // max_c |P(r)_c - T(S(r))_c|, exactly: what evaluating r with the patch P costs.
 Rational patch_error(const TrimmedPatch<Rational>& P, const BSpline<Rational>& T, const BSpline<Rational>& S,
@@ -294,19 +292,9 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
         "figure: `tolerance.svg`.\n\n![tolerance](tolerance.svg)\n";
 
   // ---- The surface case: trimming polylines within eps --------------------------------------
-  // S: degrees (1, 2) on [0,1]^2 with s_u = 1/5 + 3/5 r + 1/5 t(1-t) and s_v = 1/10 + 4/5 t, so the
-  // trimming curve s_u = 1/2 is the parabola r*(t) = (3/10 - 1/5 t(1-t)) / (3/5): rational at
-  // rational t, which lets the misassignment along the lines t = t_i be measured exactly.
-  BSpline<Rational> S2;
-  S2.degrees = {1, 2};
-  S2.q = 2;
-  S2.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      S2.points.push_back(Rational(1, 5) + Rational(3, 5) * i + (j == 1 ? Rational(1, 10) : Rational(0)));
-      S2.points.push_back(Rational(1, 10) + Rational(2, 5) * j);
-    }
-  validate(S2);
+  // S: the parabola case (experiments/common.hpp); r*(t) is rational at rational t, which lets the
+  // misassignment along the lines t = t_i be measured exactly.
+  const BSpline<Rational> S2 = parabola_trimming_inner();
   const auto S2d = convert<double>(S2, [](const Rational& x) { return to_double(x); });
   const int L = 40;
   std::ostringstream csv2;

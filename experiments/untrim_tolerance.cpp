@@ -174,8 +174,6 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
   return row;
 }
 
-const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
-
 
 }  // namespace
 
@@ -192,18 +190,8 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
                                  bool& ok) {
   const int p = 3;
   const Rational u0(1, 2);
-  // S: s_u = 1/5 + 3/5 r + 1/5 t(1-t), s_v = 1/10 + 4/5 t on [0, 1]^2; the trimming curve s_u = 1/2
-  // is the parabola r = 1/2 - t(1-t)/3 (the surface case of the issue-3 study).
-  BSpline<Rational> S;
-  S.degrees = {1, 2};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      S.points.push_back(Rational(1, 5) + Rational(3, 5) * i + (j == 1 ? Rational(1, 10) : Rational(0)));
-      S.points.push_back(Rational(1, 10) + Rational(2, 5) * j);
-    }
-  validate(S);
+  // S: the parabola case of the issue-3 surface study (experiments/common.hpp).
+  const BSpline<Rational> S = parabola_trimming_inner();
   std::vector<Row> rows;
   for (int m = 1; m <= p + 1; ++m) {
     BSpline<Rational> T;
@@ -274,7 +262,7 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
     for (std::size_t ai = 0; ai < ariths.size(); ++ai) {
       PlotSeries s;
       s.label = "m = " + std::to_string(m) + ", " + ariths[ai];
-      s.color = kColors[m - 1];
+      s.color = kMultiplicityColors[m - 1];
       s.dashed = ai == 0;
       std::string last = "-";
       double last_eps = 1;

@@ -521,13 +521,7 @@ std::vector<ProofEntry> make_registry() {
                       // Regions: the box clipped by the region's half-planes s_c >= lo, s_c < hi.
                       for (std::size_t k = 0; k < A.trimmed.patches.size(); ++k) {
                         const auto& p = A.trimmed.patches[k];
-                        const auto& box = A.trimmed.inner_pieces[p.inner_piece].box;
-                        Polygon poly{{box[0].first, box[1].first}, {box[0].second, box[1].first}, {box[0].second, box[1].second},
-                                     {box[0].first, box[1].second}};
-                        for (const auto& cd : p.region) {
-                          if (cd.check_lo) poly = clip_halfplane(poly, e1[cd.coord], e2[cd.coord], Rational(c[cd.coord] - cd.lo));
-                          if (cd.check_hi) poly = clip_halfplane(poly, -e1[cd.coord], -e2[cd.coord], Rational(cd.hi - c[cd.coord]));
-                        }
+                        const Polygon poly = affine_region_polygon(A.trimmed.inner_pieces[p.inner_piece].box, p.region, c, e1, e2);
                         if (per_patch[k] != polygon_area(poly))
                           acc.fail("region " + std::to_string(k) + ": tiles " + to_fraction_string(per_patch[k]) + " vs clipped polygon " +
                                        to_fraction_string(polygon_area(poly)), i);

@@ -119,13 +119,7 @@ TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
                    ga[2] = {Rational(3, 20), Rational(4, 5)};
     for (std::size_t k = 0; k < A.trimmed.patches.size(); ++k) {
       const auto& p = A.trimmed.patches[k];
-      const auto& box = A.trimmed.inner_pieces[p.inner_piece].box;
-      Polygon poly{{box[0].first, box[1].first}, {box[0].second, box[1].first}, {box[0].second, box[1].second},
-                   {box[0].first, box[1].second}};
-      for (const auto& c : p.region) {
-        if (c.check_lo) poly = clip_halfplane(poly, be[c.coord], ga[c.coord], Rational(al[c.coord] - c.lo));
-        if (c.check_hi) poly = clip_halfplane(poly, -be[c.coord], -ga[c.coord], Rational(c.hi - al[c.coord]));
-      }
+      const Polygon poly = affine_region_polygon(A.trimmed.inner_pieces[p.inner_piece].box, p.region, al, be, ga);
       INFO("patch " << k);
       CHECK(per_patch[k] == polygon_area(poly));
       // Integrals of a density over the region: tiles (f(Q) det J) against Green's theorem on the

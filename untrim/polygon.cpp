@@ -68,4 +68,16 @@ Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, c
   return out;
 }
 
+Polygon affine_region_polygon(const std::vector<std::pair<Rational, Rational>>& box,
+                              const std::vector<CellCondition<Rational>>& region, const Rational al[2], const Rational be[2],
+                              const Rational ga[2]) {
+  Polygon poly{{box[0].first, box[1].first}, {box[0].second, box[1].first}, {box[0].second, box[1].second},
+               {box[0].first, box[1].second}};
+  for (const auto& c : region) {
+    if (c.check_lo) poly = clip_halfplane(poly, be[c.coord], ga[c.coord], Rational(al[c.coord] - c.lo));
+    if (c.check_hi) poly = clip_halfplane(poly, -be[c.coord], -ga[c.coord], Rational(c.hi - al[c.coord]));
+  }
+  return poly;
+}
+
 }  // namespace splinex

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact/rational.hpp"
+#include "spline/trimmed_compose.hpp"
 #include "spline/untrim.hpp"
 
 namespace splinex {
@@ -23,5 +24,12 @@ bool polygon_is_simple(const Polygon& p);
 // area are ignored; a non-simple polygon is a std::invalid_argument (CGAL needs simple ones).
 Rational polygon_union_area(const std::vector<Polygon>& polygons);
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
+
+// The region of an inner piece for an affine inner map s_c(r, t) = al[c] + be[c] r + ga[c] t: the
+// piece's box clipped by the half-planes of the region's conditions (lo <= s_c, s_c <= hi; the
+// open side of s_c < hi adds no area). Built independently of the sweep, as its check.
+Polygon affine_region_polygon(const std::vector<std::pair<Rational, Rational>>& box,
+                              const std::vector<CellCondition<Rational>>& region, const Rational al[2], const Rational be[2],
+                              const Rational ga[2]);
 
 }  // namespace splinex
