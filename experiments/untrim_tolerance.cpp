@@ -339,8 +339,8 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
      << (worst_gap == 0 && worst_overlap == 0
              ? " (exactly 0: the tiles of each piece partition its box, also when built in floating point, because "
                "float tiles keep every slab sample and adjacent tiles therefore share identical computed vertices; a "
-               "version that dropped samples by a rounded collinearity test measured gaps of 3e-23 and overlaps of "
-               "3e-20 here)"
+               "version that dropped samples by a rounded collinearity test left a gap of 2.8e-23 at eps 1e-6, one "
+               "that dropped them where the same two segments continue a gap of 8e-21 and an overlap of 2.9e-20)"
              : " (NOT 0: the float tiles do not partition the domain)")
      << ".\n\n";
   if (first && lastrow)

@@ -210,7 +210,8 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
     // Drop the previous sample when both chains run straight through it, decided exactly by
     // orientation. Not in floating point: there a chain's sample y_at(s, x) is rounded off the
     // segment s, and a tile that drops it no longer shares the boundary with its neighbour that
-    // keeps it (measured: gaps and overlaps of ~1e-20 area). Keeping every slab sample makes
+    // keeps it (measured: a gap of 2.8e-23 at eps 1e-6; dropping samples where the same two segments
+    // continue instead left a gap of 8e-21 and an overlap of 2.9e-20). Keeping every slab sample makes
     // adjacent float tiles share identical boundary points, so they partition the box exactly.
     const std::size_t m = tl.x.size();
     bool straight = false;
