@@ -14,6 +14,7 @@
 #include "float/trimming_polyline.hpp"
 #include "spline/untrim_integrate.hpp"
 #include "untrim/algorithm2.hpp"
+#include "untrim/curved.hpp"
 #include "untrim/loops.hpp"
 #include "experiments/report.hpp"
 #include "proofs/suite.hpp"
@@ -125,7 +126,21 @@ sx::Json tile_to_json(const sx::Tile<F>& t) {
     yb.push_back(sx::ArithTraits<F>::to_json(t.yb[i]));
     yt.push_back(sx::ArithTraits<F>::to_json(t.yt[i]));
   }
-  return {{"x", xs}, {"y_bottom", yb}, {"y_top", yt}};
+  sx::Json j{{"x", xs}, {"y_bottom", yb}, {"y_top", yt}};
+  if (t.curved()) {
+    auto pieces = [](const std::vector<std::vector<F>>& c) {
+      sx::Json a = sx::Json::array();
+      for (const auto& piece : c) {
+        sx::Json p = sx::Json::array();
+        for (const auto& v : piece) p.push_back(sx::ArithTraits<F>::to_json(v));
+        a.push_back(p);
+      }
+      return a;
+    };
+    j["bottom_pieces"] = pieces(t.bottom);
+    j["top_pieces"] = pieces(t.top);
+  }
+  return j;
 }
 
 // Dispatch for the operations instantiated for exact (GMP), double and MPFR but not FLINT.
@@ -226,7 +241,7 @@ int main(int argc, char** argv) {
 
   std::string ut_arith = "exact", ut_surface, ut_density, ut_monomial, ut_file;
   auto* c_untrim = app.add_subcommand(
-      "untrim", "tile a trimmed domain (polygonal loops) with Coons patches; exact areas and integrals, cross-checked");
+      "untrim", "tile a trimmed domain (loops of straight and polynomial graph edges) with Coons patches; exact areas and integrals, cross-checked");
   c_untrim->add_option("--arith", ut_arith, "exact, double or mpfr:BITS")->capture_default_str();
   c_untrim->add_option("--surface", ut_surface, "compose every tile into this surface (its knot lines split the tiles)");
   c_untrim->add_option("--density", ut_density, "integrate this polynomial density (one Bezier piece, q = 1) over the region");
@@ -334,10 +349,22 @@ int main(int argc, char** argv) {
         const sx::Rational cgal_area = sx::region_area(D);
         sx::Json out{{"tiles", out_tiles},
                      {"area", Tr::to_json(area)},
-                     {"area_check", {{"cgal_exact_area", sx::ArithTraits<sx::Rational>::to_json(cgal_area)},
+                     {"area_check", {{D.curved() ? "green_exact_area" : "cgal_exact_area", sx::ArithTraits<sx::Rational>::to_json(cgal_area)},
                                      {"abs_error", sx::to_double(sx::Rational(abs(sx::Rational(Tr::to_rational(area) - cgal_area))))}}},
                      {"tile_rule", "a tile is {(x, y): x in [x_0, x_m], y_bottom(x) <= y <= y_top(x)}; its Coons patch Q(x, l) "
-                                   "= (x, y_bottom(x) + l (y_top(x) - y_bottom(x))) on [x_0, x_m] x [0, 1]; patch = surface(Q)"}};
+                                   "= (x, y_bottom(x) + l (y_top(x) - y_bottom(x))) on [x_0, x_m] x [0, 1]; patch = surface(Q). "
+                                   "y_bottom is linear between the samples, or on [x_i, x_i+1] the Bernstein polynomial with "
+                                   "ordinates bottom_pieces[i] when given (likewise y_top)"}};
+        if constexpr (std::is_same_v<F, sx::Rational>) {
+          const auto cc = sx::certify_cover(D, tiles);
+          out["cover_certificate"] = {{"proved", cc.ok},
+                                      {"checks", "tiles pairwise interior-disjoint, no loop edge enters a tile, a point of "
+                                                 "every part of every tile inside the region, tile areas add up to the region's"},
+                                      {"pair_checks", cc.pair_checks},
+                                      {"edge_checks", cc.edge_checks},
+                                      {"samples", cc.samples}};
+          if (!cc.ok) out["cover_certificate"]["failure"] = cc.failure;
+        }
         if (ff) {
           const sx::Rational green = sx::green_integral(D, *f);
           out["integral"] = Tr::to_json(integral);

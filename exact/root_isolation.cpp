@@ -4,6 +4,8 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpz.h>
 
+#include <stdexcept>
+
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
@@ -77,6 +79,46 @@ std::vector<IsolatedRoot> isolate_real_roots(const std::vector<Rational>& coeffs
     if (ir.lo < a) ir.lo = a;
     if (b < ir.hi) ir.hi = b;
     out.push_back(ir);
+  }
+  return out;
+}
+
+Rational simplest_rational(const Rational& lo, const Rational& hi) {
+  if (hi < lo) throw std::invalid_argument("simplest_rational: empty interval");
+  // floor for rationals: numerator / denominator rounded towards -infinity.
+  const auto floor_q = [](const Rational& v) {
+    Integer q = numerator(v) / denominator(v);  // truncates towards 0
+    if (q * denominator(v) > numerator(v)) q -= 1;
+    return Rational(q);
+  };
+  const Rational f = floor_q(lo);
+  if (f == lo) return lo;
+  if (f + 1 <= hi) return f + 1;
+  // lo, hi in (f, f + 1): 1 / (x - f) maps them to an interval in (1, inf), reversed.
+  return f + 1 / simplest_rational(1 / (hi - f), 1 / (lo - f));
+}
+
+std::vector<ClassifiedRoot> classify_real_roots(const std::vector<Rational>& coeffs, const Rational& a, const Rational& b) {
+  // Leading coefficient of the denominator-cleared integer polynomial.
+  Integer l = 1;
+  for (const auto& c : coeffs) l = boost::multiprecision::lcm(l, denominator(c));
+  Integer lead = 0;
+  for (const auto& c : coeffs)
+    if (c != 0) lead = numerator(Rational(c * Rational(l)));
+  if (lead < 0) lead = -lead;
+  // Width 2^-bits < 1 / lead^2.
+  const int bits = 2 * static_cast<int>(lead == 0 ? 1 : boost::multiprecision::msb(lead) + 1) + 2;
+  const auto eval = [&](const Rational& x) {
+    Rational v = 0;
+    for (std::size_t i = coeffs.size(); i-- > 0;) v = v * x + coeffs[i];
+    return v;
+  };
+  std::vector<ClassifiedRoot> out;
+  for (const auto& r : isolate_real_roots(coeffs, a, b, bits)) {
+    ClassifiedRoot c{r, std::nullopt};
+    const Rational s = r.lo == r.hi ? r.lo : simplest_rational(r.lo, r.hi);
+    if (eval(s) == 0) c.exact = s;
+    out.push_back(c);
   }
   return out;
 }

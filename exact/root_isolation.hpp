@@ -2,6 +2,7 @@
 // Algebraic_kernel_d_1 (Descartes' method on Gmpz polynomials, MPFI for refinement), and the
 // exact end points of trimming curves on the edges of inner pieces (papers/000, Step 2).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,20 @@ struct IsolatedRoot {
 // in an interval of width <= 2^-refine_bits (or exact). The zero polynomial throws DomainError.
 std::vector<IsolatedRoot> isolate_real_roots(const std::vector<Rational>& power_coeffs, const Rational& a, const Rational& b,
                                              int refine_bits = 64);
+
+// The real roots in [a, b] with each rational root found exactly: a rational root p/q (lowest
+// terms) of the integer polynomial has q | lead, so q <= N = |lead|; two fractions with
+// denominators <= N differ by >= 1/N^2, so once an isolating interval is narrower than 1/N^2 the
+// simplest fraction in it (smallest denominator, by continued fractions) is the root if any
+// rational is, and one exact evaluation decides. exact is empty for irrational roots.
+struct ClassifiedRoot {
+  IsolatedRoot root;
+  std::optional<Rational> exact;
+};
+std::vector<ClassifiedRoot> classify_real_roots(const std::vector<Rational>& power_coeffs, const Rational& a, const Rational& b);
+
+// The fraction with the smallest denominator in [lo, hi] (lo <= hi).
+Rational simplest_rational(const Rational& lo, const Rational& hi);
 
 // Power-basis coefficients, in the local parameter t in [0, 1], of a univariate Bernstein
 // polynomial with the given coefficients.

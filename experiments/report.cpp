@@ -16,6 +16,7 @@
 #include "experiments/algorithm2_stars.hpp"
 #include "experiments/untrim_tolerance.hpp"
 #include "experiments/checkerboard.hpp"
+#include "experiments/curved_untrim.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "experiments/tolerance_study.hpp"
 #include "proofs/suite.hpp"
@@ -306,6 +307,8 @@ int run_report(const ReportOptions& opt) {
   const std::string ut_md = run_untrim_tolerance(uto, progress, ut_ok);
   progress("checkerboard texture (Definition 1)");
   const std::string cb_md = run_checkerboard(opt.out_dir, ut_ok);
+  progress("untrimming with curved tile sides");
+  const std::string cu_md = run_curved_untrim(opt.out_dir, ut_ok);
 
   // 9. The proofs.
   progress("exact proofs");
@@ -415,7 +418,7 @@ int run_report(const ReportOptions& opt) {
   };
   md << "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
         "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
-  md << orders_md.str() << stars_md << tol_md << a2_md << cb_md << ut_md;
+  md << orders_md.str() << stars_md << tol_md << a2_md << cb_md << cu_md << ut_md;
   table("adversarial", "Adversarial inputs");
   table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
   table("refinement", "Refinement sweep (A5.4, all knots at once)");

@@ -70,14 +70,7 @@ std::vector<Rational> evaluate_exactly(const BSpline<A>& R, const std::vector<Ra
 
 template <class A>
 Tile<Rational> exact_tile(const Tile<A>& t) {
-  Tile<Rational> e;
-  e.label = t.label;
-  for (std::size_t i = 0; i < t.x.size(); ++i) {
-    e.x.push_back(ex(t.x[i]));
-    e.yb.push_back(ex(t.yb[i]));
-    e.yt.push_back(ex(t.yt[i]));
-  }
-  return e;
+  return convert_tile<Rational>(t, [](const A& v) { return ex(v); });
 }
 
 struct Row {

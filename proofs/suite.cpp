@@ -7,7 +7,9 @@
 #include "exact/random_spline.hpp"
 #include "exact/root_isolation.hpp"
 #include "spline/hodograph.hpp"
+#include "spline/untrim_integrate.hpp"
 #include "untrim/algorithm2.hpp"
+#include "untrim/curved.hpp"
 #include "untrim/polygon.hpp"
 #include "spline/kernel.hpp"
 
@@ -543,6 +545,75 @@ std::vector<ProofEntry> make_registry() {
                                 i);
                       }
                     }, 120));
+  r.push_back(entry("untrim-curved-cover",
+                    "exact untrimming of a random lens of two polynomial graph arcs (degrees 2-4) with a triangular "
+                    "hole, split by random vertical knot lines and y = 1/2: certify_cover proves the curved tiles cover "
+                    "the region (pairwise interior-disjoint, inside, areas add up to Green's area); the tile integrals of "
+                    "x^a y^b (a, b <= 2) equal Green's theorem on the loops; every tile patch R equals T(Q) on its tile",
+                    "per tile cell (chain piece x [0, 1]): max(deg R, (p_0 + p_1) (d, 1)) per direction",
+                    [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
+                      auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+                      const Rational h(1, 2);
+                      const Rational a(pick(1, 3), 20), b(pick(17, 19), 20);
+                      // Top arc (right to left) above y = 1/2, bottom arc (left to right) below: interior ordinates
+                      // in [3/4, 19/20] and [1/20, 1/4], so they meet only at their shared end points.
+                      const int dt = pick(2, 4), db = pick(2, 4);
+                      TrimmedDomain D{{0, 0}, {1, 1}, {{{a, h}, {b, h}}}};
+                      Polygon bottom, top;
+                      for (int j = 1; j < db; ++j) bottom.push_back({a + (b - a) * Rational(j, db), Rational(pick(1, 5), 20)});
+                      for (int j = 1; j < dt; ++j) top.push_back({b - (b - a) * Rational(j, dt), Rational(pick(15, 19), 20)});
+                      const Rational e(pick(0, 4), 100), f(pick(0, 4), 100);
+                      D.loops.push_back({{Rational(2, 5) + e, Rational(9, 20)}, {Rational(3, 5), Rational(9, 20) + f}, {h, Rational(11, 20)}});
+                      D.controls = {{bottom, top}, {{}, {}, {}}};
+                      validate_domain(D);
+                      std::vector<Rational> kx;
+                      for (int k = pick(0, 3); k > 0; --k) kx.push_back(Rational(pick(3, 17), 20));
+                      std::sort(kx.begin(), kx.end());
+                      kx.erase(std::unique(kx.begin(), kx.end()), kx.end());
+                      const auto tiles = untrim_curved(D, {kx, {h}});
+                      const auto cc = certify_cover(D, tiles);
+                      if (!cc.ok) acc.fail("cover: " + cc.failure, i);
+                      acc.rep.points += cc.samples + cc.pair_checks + cc.edge_checks;
+                      for (int ea = 0; ea <= 2; ++ea)
+                        for (int eb = 0; eb <= 2; ++eb) {
+                          const auto dens = monomial_density(ea, eb, D);
+                          Rational sum = 0;
+                          for (const auto& t : tiles) sum += integrate_over_tile(dens, t)[0];
+                          if (sum != green_integral(D, dens))
+                            acc.fail("integral of x^" + std::to_string(ea) + " y^" + std::to_string(eb) + ": tiles " + to_fraction_string(sum) +
+                                         ", Green " + to_fraction_string(green_integral(D, dens)), i);
+                        }
+                      // T with the knot lines, random small integer control points.
+                      const int p0 = pick(1, 3), p1 = pick(1, 2);
+                      BSpline<Rational> T;
+                      T.degrees = {p0, p1};
+                      T.q = 3;
+                      std::vector<Rational> U(p0 + 1, Rational(0));
+                      U.insert(U.end(), kx.begin(), kx.end());
+                      U.insert(U.end(), p0 + 1, Rational(1));
+                      std::vector<Rational> W(p1 + 1, Rational(0));
+                      W.push_back(h);
+                      W.insert(W.end(), p1 + 1, Rational(1));
+                      T.knots = {U, W};
+                      for (std::size_t k = 0; k < (U.size() - p0 - 1) * (W.size() - p1 - 1) * 3; ++k) T.points.push_back(Rational(pick(-9, 9), 4));
+                      validate(T);
+                      CompositionOptions co;
+                      co.expand = true;
+                      for (std::size_t k = 0; k < tiles.size(); ++k) {
+                        const auto Q = tile_spline(tiles[k]);
+                        const auto R = compose(T, Q, co);
+                        const int dT = p0 + p1;
+                        const std::vector<int> bound{std::max(R.degrees[0], dT * Q.degrees[0]), std::max(R.degrees[1], dT)};
+                        acc.add(prove_by_samples({tiles[k].x, {Rational(0), Rational(1)}}, bound,
+                                                 [&](const std::vector<Rational>& xl) -> std::string {
+                                                   if (evaluate(R, xl) == evaluate(T, evaluate(Q, xl))) return "";
+                                                   return "tile " + std::to_string(k) + " at (" + to_fraction_string(xl[0]) + ", " +
+                                                          to_fraction_string(xl[1]) + ")";
+                                                 },
+                                                 "R = T(Q)"),
+                                i);
+                      }
+                    }, 121));
   r.push_back(entry("trimming-endpoints",
                     "every isolated crossing of a trimming curve with an inner piece's edge (CGAL root isolation) is "
                     "certified (exact rational root on the knot line, or a sign change of s_c - u at the interval's "

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
 #include "spline/arith.hpp"
@@ -44,7 +45,39 @@ template <class T>
 struct Tile {
   int label = -1;
   std::vector<T> x, yb, yt;  // samples at the slab boundaries, x increasing
+  // Curved chains (untrim/curved.hpp). Empty: every chain piece is the straight segment between
+  // the samples. Otherwise one entry per piece i (between x[i] and x[i+1]): the piece's Bernstein
+  // ordinates over [x[i], x[i+1]] (first yb[i], last yb[i+1]; likewise top), degree >= 1, degrees
+  // may differ between pieces and chains.
+  std::vector<std::vector<T>> bottom, top;
+
+  bool curved() const { return !bottom.empty(); }
+  std::vector<T> bottom_piece(std::size_t i) const { return curved() ? bottom[i] : std::vector<T>{yb[i], yb[i + 1]}; }
+  std::vector<T> top_piece(std::size_t i) const { return curved() ? top[i] : std::vector<T>{yt[i], yt[i + 1]}; }
+  // The sub-tile over [x[i], x[i+1]].
+  Tile piece(std::size_t i) const {
+    Tile p{label, {x[i], x[i + 1]}, {yb[i], yb[i + 1]}, {yt[i], yt[i + 1]}, {}, {}};
+    if (curved()) {
+      p.bottom = {bottom[i]};
+      p.top = {top[i]};
+    }
+    return p;
+  }
 };
+
+// Bernstein ordinates of degree n raised to degree m >= n (exact for exact T).
+template <class T>
+std::vector<T> elevate_ordinates(const std::vector<T>& c, int m) {
+  std::vector<T> a = c;
+  for (int n = static_cast<int>(a.size()) - 1; n < m; ++n) {
+    std::vector<T> b(n + 2);
+    b[0] = a[0];
+    b[n + 1] = a[n];
+    for (int i = 1; i <= n; ++i) b[i] = (T(i) * a[i - 1] + T(n + 1 - i) * a[i]) / T(n + 1);
+    a = std::move(b);
+  }
+  return a;
+}
 
 namespace detail {
 
@@ -204,7 +237,7 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
       open.erase(it);
     } else {
       t = tiles.size();
-      tiles.push_back(Tile<T>{labels[i], {z.x0}, {z.yb0}, {z.yt0}});
+      tiles.push_back(Tile<T>{labels[i], {z.x0}, {z.yb0}, {z.yt0}, {}, {}});
     }
     auto& tl = tiles[t];
     // Drop the previous sample when both chains run straight through it, decided exactly by
@@ -235,37 +268,76 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
   return tiles;
 }
 
-// The tile's Coons patch Q(x, l), degree (1, 1), x in [x_0, x_m], l in [0, 1]; points in R^2.
+// The tile with every number converted by conv (e.g. exact tiles rounded, or float tiles taken exactly).
+template <class B, class A, class F>
+Tile<B> convert_tile(const Tile<A>& t, F&& conv) {
+  Tile<B> u;
+  u.label = t.label;
+  const auto all = [&](const std::vector<A>& v) {
+    std::vector<B> w;
+    for (const auto& a : v) w.push_back(conv(a));
+    return w;
+  };
+  u.x = all(t.x);
+  u.yb = all(t.yb);
+  u.yt = all(t.yt);
+  for (const auto& c : t.bottom) u.bottom.push_back(all(c));
+  for (const auto& c : t.top) u.top.push_back(all(c));
+  return u;
+}
+
+// The tile's Coons patch Q(x, l), degree (d, 1) with d the highest chain piece degree (1 for
+// straight chains), x in [x_0, x_m], l in [0, 1]; points in R^2. Break points have multiplicity d
+// (the chains are only C0 there); x is linear in its parameter, so Q(x, l) has first coordinate x.
 template <class T>
 BSpline<T> tile_spline(const Tile<T>& t) {
+  int d = 1;
+  if (t.curved())
+    for (std::size_t i = 0; i + 1 < t.x.size(); ++i)
+      d = std::max({d, static_cast<int>(t.bottom[i].size()) - 1, static_cast<int>(t.top[i].size()) - 1});
   BSpline<T> Q;
-  Q.degrees = {1, 1};
+  Q.degrees = {d, 1};
   Q.q = 2;
-  std::vector<T> U{t.x.front()};
-  U.insert(U.end(), t.x.begin(), t.x.end());
-  U.push_back(t.x.back());
+  std::vector<T> U(d + 1, t.x.front());
+  for (std::size_t i = 1; i + 1 < t.x.size(); ++i) U.insert(U.end(), d, t.x[i]);
+  U.insert(U.end(), d + 1, t.x.back());
   Q.knots = {U, {T(0), T(0), T(1), T(1)}};
-  for (int side = 0; side < 2; ++side)
-    for (std::size_t i = 0; i < t.x.size(); ++i) {
-      Q.points.push_back(t.x[i]);
-      Q.points.push_back(side == 0 ? t.yb[i] : t.yt[i]);
+  for (int side = 0; side < 2; ++side) {
+    for (std::size_t i = 0; i + 1 < t.x.size(); ++i) {
+      const auto c = elevate_ordinates(side == 0 ? t.bottom_piece(i) : t.top_piece(i), d);
+      for (int j = i == 0 ? 0 : 1; j <= d; ++j) {
+        Q.points.push_back(j == d ? t.x[i + 1] : t.x[i] + (t.x[i + 1] - t.x[i]) * T(j) / T(d));
+        Q.points.push_back(c[j]);
+      }
     }
+    if (t.x.size() == 1) {  // a tile of zero width (not produced by the sweeps)
+      Q.points.push_back(t.x[0]);
+      Q.points.push_back(side == 0 ? t.yb[0] : t.yt[0]);
+    }
+  }
   return Q;
 }
 
-// The tile's area: the integral of det dQ = y_t - y_b over x (trapezoid rule, exact for linear).
+// The tile's area: the integral of det dQ = y_t - y_b over x; on a piece the integral of a
+// Bernstein polynomial is the width times the mean of its ordinates (the trapezoid rule for lines).
 template <class T>
 T tile_area(const Tile<T>& t) {
   T a(0);
-  for (std::size_t i = 0; i + 1 < t.x.size(); ++i)
-    a = a + (t.x[i + 1] - t.x[i]) * ((t.yt[i] - t.yb[i]) + (t.yt[i + 1] - t.yb[i + 1])) / T(2);
+  for (std::size_t i = 0; i + 1 < t.x.size(); ++i) {
+    const auto b = t.bottom_piece(i), c = t.top_piece(i);
+    T mt(0), mb(0);
+    for (const auto& v : c) mt = mt + v;
+    for (const auto& v : b) mb = mb + v;
+    a = a + (t.x[i + 1] - t.x[i]) * (mt / T(static_cast<long>(c.size())) - mb / T(static_cast<long>(b.size())));
+  }
   return a;
 }
 
 // The tile's boundary as a counter-clockwise polygon (bottom left to right, top right to left;
-// repeated points of degenerate sides removed).
+// repeated points of degenerate sides removed). Straight chains only.
 template <class T>
 std::vector<Vec2<T>> tile_polygon(const Tile<T>& t) {
+  if (t.curved()) throw std::logic_error("tile_polygon: the tile has curved chains");
   std::vector<Vec2<T>> p;
   for (std::size_t i = 0; i < t.x.size(); ++i) p.push_back({t.x[i], t.yb[i]});
   for (std::size_t i = t.x.size(); i-- > 0;) p.push_back({t.x[i], t.yt[i]});

@@ -3,10 +3,15 @@
 #include <string>
 
 #include "float/mpfr.hpp"
+#include "untrim/curved.hpp"
+#include "untrim/poly.hpp"
 
 namespace splinex {
 
 namespace {
+
+using poly::Poly;
+using poly::bernstein_monomial;
 
 std::string vname(std::size_t l, std::size_t i) {
   return "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
@@ -41,39 +46,24 @@ bool inside(const std::vector<Vec2<T>>& poly, const Vec2<T>& p) {
   return in;
 }
 
-// Polynomial in one variable as coefficients c[0] + c[1] x + ...
-using Poly = std::vector<Rational>;
-Poly mul(const Poly& p, const Poly& q) {
-  Poly r(p.size() + q.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = 0; j < q.size(); ++j) r[i + j] += p[i] * q[j];
-  return r;
-}
-Poly pow(const Poly& p, int e) {
-  Poly r{Rational(1)};
-  for (int i = 0; i < e; ++i) r = mul(r, p);
-  return r;
-}
-Rational binom(int n, int k) {
-  Rational r(1);
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-// B_i^n((x - lo) / (hi - lo)) in powers of x.
-Poly bernstein_monomial(int n, int i, const Rational& lo, const Rational& hi) {
-  const Rational w = hi - lo;
-  const Poly s{-lo / w, 1 / w}, one_minus_s{1 + lo / w, -1 / w};
-  Poly r = mul(pow(s, i), pow(one_minus_s, n - i));
-  for (auto& c : r) c *= binom(n, i);
-  return r;
-}
-
 }  // namespace
+
+Polygon TrimmedDomain::edge(std::size_t l, std::size_t i) const {
+  const auto& L = loops.at(l);
+  Polygon P{L.at(i)};
+  if (l < controls.size() && i < controls[l].size()) P.insert(P.end(), controls[l][i].begin(), controls[l][i].end());
+  P.push_back(L[(i + 1) % L.size()]);
+  return P;
+}
 
 void validate_domain(const TrimmedDomain& D) {
   for (int d = 0; d < 2; ++d)
     if (!(D.lo[d] < D.hi[d]))
       throw ValidationError("domain[" + std::to_string(d) + "]", "is empty (lo >= hi)", "give [lo, hi] with lo < hi");
+  if (D.curved()) {
+    validate_curved_domain(D);
+    return;
+  }
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     const auto& L = D.loops[l];
     const std::string f = "loops[" + std::to_string(l) + "]";
@@ -133,10 +123,29 @@ TrimmedDomain trimmed_domain_from_json(const Json& doc) {
     const auto& L = doc["loops"][l];
     if (!L.is_array()) throw ParseError("loops[" + std::to_string(l) + "]", "is not an array of points", "give [[x, y], ...]");
     Polygon P;
+    std::vector<Polygon> C;
     for (std::size_t i = 0; i < L.size(); ++i) {
+      if (L[i].is_object()) {
+        const std::string f = "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
+        if (L[i].size() != 1 || !L[i].contains("controls") || !L[i]["controls"].is_array())
+          throw ParseError(f, "is an object but not {\"controls\": [[x, y], ...]}", "give a vertex [x, y] or an edge's inner control points");
+        if (P.empty() || C.back().size() > 0)
+          throw ParseError(f, "has no vertex before it (or follows another controls item)",
+                           "write the controls of edge i right after vertex i");
+        for (std::size_t j = 0; j < L[i]["controls"].size(); ++j) {
+          const auto& q = L[i]["controls"][j];
+          const std::string fq = f + ".controls[" + std::to_string(j) + "]";
+          if (!q.is_array() || q.size() != 2) throw ParseError(fq, "must be [x, y]", "give two numbers");
+          C.back().push_back({json_number(q[0], fq + "[0]"), json_number(q[1], fq + "[1]")});
+        }
+        if (C.back().empty()) throw ParseError(f, "has no control points", "drop the item for a straight edge");
+        continue;
+      }
       if (!L[i].is_array() || L[i].size() != 2) throw ParseError(vname(l, i), "must be [x, y]", "give two numbers");
       P.push_back({json_number(L[i][0], vname(l, i) + "[0]"), json_number(L[i][1], vname(l, i) + "[1]")});
+      C.emplace_back();
     }
+    D.controls.push_back(std::move(C));
     D.loops.push_back(std::move(P));
   }
   validate_domain(D);
@@ -146,6 +155,13 @@ TrimmedDomain trimmed_domain_from_json(const Json& doc) {
 template <class T>
 std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std::vector<Rational>, 2>& knot_lines) {
   const auto cv = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
+  if (D.curved()) {
+    std::vector<Tile<T>> out;
+    // Float arithmetics: irrational crossings with knot lines approximated well below the rounding.
+    const int bits = ArithTraits<T>::exact ? 0 : ArithTraits<T>::precision_bits() + 16;
+    for (const auto& t : untrim_curved(D, knot_lines, bits)) out.push_back(convert_tile<T>(t, cv));
+    return out;
+  }
   const T x0 = cv(D.lo[0]), x1 = cv(D.hi[0]), y0 = cv(D.lo[1]), y1 = cv(D.hi[1]);
   std::vector<Seg2<T>> segs{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x0, y1}, {x1, y1}}, {{x0, y0}, {x0, y1}}};
   for (const auto& k : knot_lines[0])
@@ -176,7 +192,7 @@ std::vector<int> loop_signs(const TrimmedDomain& D) {
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     int depth = 0;
     for (std::size_t m = 0; m < D.loops.size(); ++m)
-      if (m != l && inside(D.loops[m], D.loops[l][0])) ++depth;
+      if (m != l && (D.curved() ? inside_loop(D, m, D.loops[l][0]) : inside(D.loops[m], D.loops[l][0]))) ++depth;
     s.push_back(depth % 2 == 0 ? 1 : -1);
   }
   return s;
@@ -185,7 +201,8 @@ std::vector<int> loop_signs(const TrimmedDomain& D) {
 Rational region_area(const TrimmedDomain& D) {
   const auto s = loop_signs(D);
   Rational a(0);
-  for (std::size_t l = 0; l < D.loops.size(); ++l) a += s[l] * abs(polygon_area(D.loops[l]));
+  for (std::size_t l = 0; l < D.loops.size(); ++l)
+    a += s[l] * abs(D.curved() ? loop_signed_area(D, l) : polygon_area(D.loops[l]));
   return a;
 }
 
@@ -204,25 +221,29 @@ Rational green_integral(const TrimmedDomain& D, const BSpline<Rational>& f) {
         for (int b = 0; b <= n1; ++b) mono[a][b] += c * bx[a] * by[b];
     }
   }
-  // int_region x^a y^b dA = sum_loops sign * orientation * oint x^(a+1)/(a+1) y^b dy.
+  // int_region x^a y^b dA = sum_loops sign * orientation * oint x^(a+1)/(a+1) y^b dy, each edge a
+  // Bezier curve (x(t), y(t)) on [0, 1] (straight edges: degree 1).
   const auto sg = loop_signs(D);
   Rational total(0);
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     const auto& L = D.loops[l];
-    const int orient = polygon_area(L) > 0 ? 1 : -1;  // counter-clockwise loops give +area
+    const Rational area = D.curved() ? loop_signed_area(D, l) : polygon_area(L);
+    const int orient = area > 0 ? 1 : -1;  // counter-clockwise loops give +area
     Rational loop_sum(0);
     for (std::size_t e = 0; e < L.size(); ++e) {
-      const auto &P = L[e], &Q = L[(e + 1) % L.size()];
-      const Poly xs{P[0], Q[0] - P[0]}, ys{P[1], Q[1] - P[1]};
-      const Rational dy = Q[1] - P[1];
-      if (dy == 0) continue;
+      const Polygon P = D.edge(l, e);
+      std::vector<Rational> bx, by;
+      for (const auto& p : P) {
+        bx.push_back(p[0]);
+        by.push_back(p[1]);
+      }
+      const Poly xs = poly::from_bernstein(bx, 0, 1), ys = poly::from_bernstein(by, 0, 1), dys = poly::derivative(ys);
+      if (poly::is_zero(dys)) continue;
       for (int a = 0; a <= n0; ++a)
         for (int b = 0; b <= n1; ++b) {
           if (mono[a][b] == 0) continue;
-          const Poly g = mul(pow(xs, a + 1), pow(ys, b));  // in s on [0, 1]
-          Rational integral(0);
-          for (std::size_t k = 0; k < g.size(); ++k) integral += g[k] / Rational(static_cast<long>(k + 1));
-          loop_sum += mono[a][b] * integral * dy / (a + 1);
+          const Poly g = poly::mul(poly::mul(poly::pow(xs, a + 1), poly::pow(ys, b)), dys);
+          loop_sum += mono[a][b] * poly::integral01(g) / (a + 1);
         }
     }
     total += sg[l] * orient * loop_sum;

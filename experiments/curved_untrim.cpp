@@ -1,0 +1,160 @@
+#include "experiments/curved_untrim.hpp"
+
+#include <chrono>
+#include <iomanip>
+#include <sstream>
+
+#include "exact/json_io.hpp"
+#include "experiments/common.hpp"
+#include "experiments/svg_plot.hpp"
+#include "float/mpfr.hpp"
+#include "spline/untrim_integrate.hpp"
+#include "untrim/curved.hpp"
+#include "untrim/poly.hpp"
+
+namespace splinex {
+
+namespace {
+
+const char* kDomain = R"({"type": "trimmed_domain", "domain": [[0, 1], [0, 1]],
+ "loops": [[[0.1, 0.5], {"controls": [["11/30", 0.1], ["19/30", 0.2]]}, [0.9, 0.5], {"controls": [["19/30", 0.95], ["11/30", 0.8]]}],
+           [[0.4, 0.45], [0.6, 0.45], [0.5, 0.6]]]}
+)";
+
+const char* kFill[] = {"#a6cee3", "#b2df8a", "#fb9a99", "#fdbf6f", "#cab2d6", "#ffff99", "#8dd3c7", "#bebada", "#80b1d3", "#fccde5"};
+
+}  // namespace
+
+std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
+  std::istringstream in(kDomain);
+  const TrimmedDomain D = trimmed_domain_from_json(read_json(in, "untrim_curved_domain.json"));
+  write_file_atomically(out_dir + "/untrim_curved_domain.json", kDomain);
+  const Rational h(1, 2);
+  const std::array<std::vector<Rational>, 2> kl{{{Rational(1, 4), h, Rational(2, 3)}, {h}}};
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto tiles = untrim_curved(D, kl);
+  const double t_tiles = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto cc = certify_cover(D, tiles);
+  const double t_cert = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() - t_tiles;
+  ok = ok && cc.ok;
+  int dmax = 1;
+  for (const auto& t : tiles) dmax = std::max(dmax, tile_spline(t).degrees[0]);
+
+  // Integrals of x^a y^b: exact tiles = Green; the rounded tiles in double and MPFR 113, measured.
+  std::ostringstream rows;
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 0}, {1, 0}, {0, 1}, {2, 1}, {1, 3}}) {
+    const auto f = monomial_density(a, b, D);
+    const Rational green = green_integral(D, f);
+    Rational ex = 0;
+    for (const auto& t : tiles) ex += integrate_over_tile(f, t)[0];
+    ok = ok && ex == green;
+    const auto td = untrim_domain<double>(D, kl);
+    const auto fd = convert<double>(f, [](const Rational& x) { return to_double(x); });
+    double sd = 0;
+    for (const auto& t : td) sd += integrate_over_tile(fd, t)[0];
+    Rational em;
+    {
+      Mpfr::Precision scope(113);
+      const auto tm = untrim_domain<Mpfr>(D, kl);
+      const auto fm = convert<Mpfr>(f, [](const Rational& x) { return ArithTraits<Mpfr>::from_rational(x); });
+      Mpfr sm(0);
+      for (const auto& t : tm) sm = sm + integrate_over_tile(fm, t)[0];
+      em = abs(Rational(ArithTraits<Mpfr>::to_rational(sm) - green));
+    }
+    const Rational ed = abs(Rational(exact_from_double(sd) - green));
+    rows << "| x^" << a << " y^" << b << " | " << to_fraction_string(green) << " | " << (ex == green ? "equal" : "DIFFERENT") << " | "
+         << fmt(to_double(ed)) << " | " << fmt(to_double(em)) << " |\n";
+  }
+
+  // A knot line with irrational crossings: exact refuses, double approximates the crossing.
+  const std::array<std::vector<Rational>, 2> kl_irr{{{}, {Rational(3, 10)}}};
+  std::string refused;
+  try {
+    untrim_curved(D, kl_irr);
+  } catch (const DomainError& e) {
+    refused = e.what();
+  }
+  ok = ok && !refused.empty();
+  const auto ta = untrim_curved(D, kl_irr, 53 + 16);
+  Rational a_irr = 0, stray = 0;
+  for (const auto& t : ta) {
+    a_irr += tile_area(t);
+    // How far the tile crosses the knot line: per chain piece, the side of y = 3/10 its middle lies
+    // on, against its end samples.
+    for (std::size_t i = 0; i + 1 < t.x.size(); ++i) {
+      const Rational ym = (poly::bernstein_eval(t.bottom_piece(i), h) + poly::bernstein_eval(t.top_piece(i), h)) / 2;
+      for (std::size_t j : {i, i + 1})
+        stray = std::max(stray, ym > kl_irr[1][0] ? Rational(kl_irr[1][0] - t.yb[j]) : Rational(t.yt[j] - kl_irr[1][0]));
+    }
+  }
+  const Rational area_err = abs(Rational(a_irr - region_area(D)));
+  ok = ok && stray > 0 && stray < Rational(1, Integer(1) << 60);
+
+  // Figure: tiles filled, knot lines dashed; the chains drawn through 24 samples per piece (drawing only).
+  const double W = 520, m = 30;
+  const auto X = [&](const Rational& x) { return m + W * to_double(x); };
+  const auto Y = [&](const Rational& y) { return m + W * (1 - to_double(y)); };
+  std::ostringstream svg;
+  svg << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W + 2 * m << "\" height=\"" << W + 2 * m + 40
+      << "\">\n<rect x=\"" << m << "\" y=\"" << m << "\" width=\"" << W << "\" height=\"" << W << "\" fill=\"white\" stroke=\"black\"/>\n";
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const auto& t = tiles[k];
+    std::vector<std::pair<double, double>> pts;
+    for (int side = 0; side < 2; ++side) {
+      std::vector<std::pair<double, double>> chain;
+      for (std::size_t i = 0; i + 1 < t.x.size(); ++i) {
+        const auto c = side == 0 ? t.bottom_piece(i) : t.top_piece(i);
+        for (int s = 0; s <= 24; ++s) {
+          const Rational u(s, 24);
+          chain.emplace_back(X(t.x[i] + (t.x[i + 1] - t.x[i]) * u), Y(poly::bernstein_eval(c, u)));
+        }
+      }
+      if (side == 1) std::reverse(chain.begin(), chain.end());
+      pts.insert(pts.end(), chain.begin(), chain.end());
+    }
+    svg << "<polygon fill=\"" << kFill[k % 10] << "\" stroke=\"#333\" stroke-width=\"1\" points=\"";
+    for (const auto& [px, py] : pts) svg << px << "," << py << " ";
+    svg << "\"/>\n";
+    const std::size_t mid = (t.x.size() - 1) / 2;
+    const Rational cx = (t.x[mid] + t.x[mid + 1]) / 2;
+    const auto yb = poly::bernstein_eval(t.bottom_piece(mid), h), yt = poly::bernstein_eval(t.top_piece(mid), h);
+    svg << "<text x=\"" << X(cx) << "\" y=\"" << Y(Rational((yb + yt) / 2)) + 4 << "\" font-size=\"11\" text-anchor=\"middle\">" << k
+        << "</text>\n";
+  }
+  for (const auto& k : kl[0])
+    svg << "<line x1=\"" << X(k) << "\" y1=\"" << m << "\" x2=\"" << X(k) << "\" y2=\"" << m + W
+        << "\" stroke=\"#d62728\" stroke-dasharray=\"5,4\"/>\n";
+  for (const auto& k : kl[1])
+    svg << "<line x1=\"" << m << "\" y1=\"" << Y(k) << "\" x2=\"" << m + W << "\" y2=\"" << Y(k)
+        << "\" stroke=\"#d62728\" stroke-dasharray=\"5,4\"/>\n";
+  svg << "<text x=\"" << m << "\" y=\"" << W + 2 * m + 15 << "\" font-family=\"sans-serif\" font-size=\"12\">" << tiles.size()
+      << " exact tiles with cubic sides (Coons patches of degree (" << dmax << ", 1));</text>\n<text x=\"" << m << "\" y=\""
+      << W + 2 * m + 32 << "\" font-family=\"sans-serif\" font-size=\"12\">dashed: knot lines (tiles end at them); cover "
+      << (cc.ok ? "proved exactly" : "NOT proved") << "</text>\n";
+  svg << "</svg>\n";
+  write_file_atomically(out_dir + "/untrim_curved.svg", svg.str());
+
+  std::ostringstream md;
+  md << "\n## Untrimming with curved tile sides (exact)\n\n"
+     << "Domain `untrim_curved_domain.json` (run it with `splinex untrim --monomial a,b untrim_curved_domain.json`): an outer loop "
+        "of two cubic graph arcs y = f(x) with a triangular hole, split by the knot lines x = 1/4, 1/2, 2/3 and y = 1/2. The "
+        "vertical line sweep of `untrim/curved.hpp` runs in rationals: the arcs are cut at rational x (de Casteljau), crossings "
+        "with horizontal lines are exact rational roots (CGAL root isolation plus a denominator bound), and every tile's sides "
+        "are pieces of the trimming curves themselves.\n\n"
+     << "- " << tiles.size() << " tiles, Coons patches of degree up to (" << dmax << ", 1); tiling " << fmt(t_tiles) << " s.\n"
+     << "- Cover certificate: " << (cc.ok ? "**proved**" : "**FAILED: " + cc.failure + "**") << " (" << cc.pair_checks
+     << " tile-pair and " << cc.edge_checks << " edge-tile sign questions by exact root isolation, " << cc.samples
+     << " interior samples; " << fmt(t_cert) << " s). Tile areas add up to " << to_fraction_string(cc.tile_area_sum)
+     << " = the region's area by Green's theorem, " << to_fraction_string(cc.region_area) << ".\n"
+     << "- A knot line y = 3/10 crosses the cubics at irrational x: exact untrimming refuses it (`" << refused
+     << "`); the float arithmetics end the tiles at a rational within 2^-69 of the crossing instead. There the curve misses "
+        "the knot line, and the tiles next to the crossing cross the knot line by up to "
+     << fmt(to_double(stray)) << " (their patches evaluate the knot cell's polynomial beyond the cell, Step 7 of Algorithm 2); "
+        "the slivers cancel between the tiles on the two sides, the total area differs from the region's by "
+     << fmt(to_double(area_err)) << ".\n\n"
+     << "| density | exact integral | tiles (exact) vs Green | double abs error | MPFR 113 abs error |\n|---|---|---|---|---|\n"
+     << rows.str() << "\nFigure: `untrim_curved.svg`.\n\n![curved tiles](untrim_curved.svg)\n";
+  return md.str();
+}
+
+}  // namespace splinex

@@ -1,0 +1,401 @@
+#include "untrim/curved.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+
+#include "exact/root_isolation.hpp"
+#include "untrim/poly.hpp"
+
+namespace splinex {
+
+namespace {
+
+using poly::Poly;
+
+std::string qs(const Rational& v) { return ArithTraits<Rational>::to_string(v); }
+std::string edge_name(std::size_t l, std::size_t i) {
+  return "loops[" + std::to_string(l) + "] edge " + std::to_string(i);
+}
+
+// A loop edge in the sweep's terms: a vertical segment, or a graph arc y = f(x) oriented left to right.
+struct Edge {
+  std::size_t loop = 0, index = 0;
+  bool vertical = false;
+  Rational x0, x1;            // arc: x0 < x1; vertical: x0 == x1
+  std::vector<Rational> c;    // arc: Bernstein ordinates over [x0, x1]; vertical: {y_lo, y_hi}
+  Poly power() const { return poly::from_bernstein(c, x0, x1); }
+  Rational at(const Rational& x) const { return poly::bernstein_eval(c, (x - x0) / (x1 - x0)); }
+};
+
+Edge make_edge(const TrimmedDomain& D, std::size_t l, std::size_t i) {
+  const Polygon P = D.edge(l, i);
+  Edge e;
+  e.loop = l;
+  e.index = i;
+  const auto& a = P.front();
+  const auto& b = P.back();
+  if (a[0] == b[0]) {
+    e.vertical = true;
+    e.x0 = e.x1 = a[0];
+    e.c = {std::min(a[1], b[1]), std::max(a[1], b[1])};
+    return e;
+  }
+  const bool rev = b[0] < a[0];
+  e.x0 = rev ? b[0] : a[0];
+  e.x1 = rev ? a[0] : b[0];
+  for (const auto& p : P) e.c.push_back(p[1]);
+  if (rev) std::reverse(e.c.begin(), e.c.end());
+  return e;
+}
+
+std::vector<std::vector<Edge>> all_edges(const TrimmedDomain& D) {
+  std::vector<std::vector<Edge>> out;
+  for (std::size_t l = 0; l < D.loops.size(); ++l) {
+    out.emplace_back();
+    for (std::size_t i = 0; i < D.loops[l].size(); ++i) out.back().push_back(make_edge(D, l, i));
+  }
+  return out;
+}
+
+// Do the two edges share a point other than the allowed ones (shared vertices of consecutive edges)?
+bool edges_meet(const Edge& A, const Edge& B, const std::vector<Vec2<Rational>>& allowed) {
+  const auto is_allowed = [&](const Rational& x, const Rational& y) {
+    for (const auto& v : allowed)
+      if (v[0] == x && v[1] == y) return true;
+    return false;
+  };
+  if (A.vertical && B.vertical) {
+    if (A.x0 != B.x0) return false;
+    const Rational lo = std::max(A.c[0], B.c[0]), hi = std::min(A.c[1], B.c[1]);
+    if (hi < lo) return false;
+    if (lo < hi) return true;
+    return !is_allowed(A.x0, lo);
+  }
+  if (A.vertical || B.vertical) {
+    const Edge& V = A.vertical ? A : B;
+    const Edge& G = A.vertical ? B : A;
+    if (V.x0 < G.x0 || G.x1 < V.x0) return false;
+    const Rational y = G.at(V.x0);
+    if (y < V.c[0] || V.c[1] < y) return false;
+    return !is_allowed(V.x0, y);
+  }
+  const Rational c0 = std::max(A.x0, B.x0), c1 = std::min(A.x1, B.x1);
+  if (c1 < c0) return false;
+  if (c0 == c1) return A.at(c0) == B.at(c0) && !is_allowed(c0, A.at(c0));
+  const Poly h = poly::sub(A.power(), B.power());
+  if (poly::is_zero(h)) return true;
+  const auto roots = isolate_real_roots(h, c0, c1, 8);
+  std::size_t allowed_roots = 0;
+  for (const auto& v : allowed)
+    if (!(v[0] < c0) && !(c1 < v[0]) && poly::eval(h, v[0]) == 0 && A.at(v[0]) == v[1]) ++allowed_roots;
+  return roots.size() > allowed_roots;
+}
+
+}  // namespace
+
+void validate_curved_domain(const TrimmedDomain& D) {
+  if (D.controls.size() != D.loops.size())
+    throw ValidationError("controls", "has " + std::to_string(D.controls.size()) + " entries for " +
+                                          std::to_string(D.loops.size()) + " loops",
+                          "give one list of edge controls per loop");
+  for (std::size_t l = 0; l < D.loops.size(); ++l) {
+    const auto& L = D.loops[l];
+    const std::string f = "loops[" + std::to_string(l) + "]";
+    if (D.controls[l].size() != L.size())
+      throw ValidationError(f, "has " + std::to_string(D.controls[l].size()) + " edge control lists for " +
+                                   std::to_string(L.size()) + " edges",
+                            "give one (possibly empty) list per edge");
+    if (L.size() < 2) throw ValidationError(f, "is degenerate: fewer than 2 vertices", "give a closed loop of edges");
+    for (std::size_t i = 0; i < L.size(); ++i) {
+      const std::string vn = "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
+      if (L[i] == L[(i + 1) % L.size()])
+        throw ValidationError(vn, "is degenerate: repeats the next vertex (zero-length edge)", "remove the repeated vertex");
+      for (int d = 0; d < 2; ++d)
+        if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
+          throw DomainError(vn, "leaves the domain: coordinate " + std::to_string(d) + " is " + qs(L[i][d]) + ", outside [" +
+                                    qs(D.lo[d]) + ", " + qs(D.hi[d]) + "]",
+                            "keep trimming loops inside the parameter box");
+      const Polygon P = D.edge(l, i);
+      const int deg = static_cast<int>(P.size()) - 1;
+      if (deg > 100)
+        throw SizeLimitError(edge_name(l, i), "has degree " + std::to_string(deg) + ", above the limit of 100",
+                             "split the edge into pieces of lower degree");
+      if (deg == 1) continue;
+      const auto &a = P.front(), &b = P.back();
+      if (a[0] == b[0])
+        throw ValidationError(edge_name(l, i), "is curved with both end points at x = " + qs(a[0]) + " (not a graph y = f(x))",
+                              "split the curve into graphs over x (pieces between its x-extremes)");
+      for (int j = 1; j < deg; ++j)
+        if (P[j][0] != a[0] + (b[0] - a[0]) * Rational(j, deg))
+          throw ValidationError(edge_name(l, i),
+                                "is not a graph y = f(x): control point " + std::to_string(j) + " has x = " + qs(P[j][0]) +
+                                    ", not " + qs(Rational(a[0] + (b[0] - a[0]) * Rational(j, deg))),
+                                "give curved edges with control x evenly spaced between the end points (x affine in "
+                                "the curve parameter); split other curves at their x-extremes and reparametrize");
+      const Edge e = make_edge(D, l, i);
+      const Poly f = e.power();
+      if (poly::exists_positive({poly::sub(f, Poly{D.hi[1]})}, e.x0, e.x1) ||
+          poly::exists_positive({poly::sub(Poly{D.lo[1]}, f)}, e.x0, e.x1))
+        throw DomainError(edge_name(l, i), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
+                          "keep trimming curves inside the parameter box");
+    }
+  }
+  const auto E = all_edges(D);
+  for (std::size_t l = 0; l < E.size(); ++l)
+    for (std::size_t m = l; m < E.size(); ++m)
+      for (std::size_t i = 0; i < E[l].size(); ++i)
+        for (std::size_t j = (l == m ? i + 1 : 0); j < E[m].size(); ++j) {
+          std::vector<Vec2<Rational>> allowed;
+          if (l == m) {
+            const std::size_t n = E[l].size();
+            if (j == i + 1) allowed.push_back(D.loops[l][j]);
+            if ((j + 1) % n == i) allowed.push_back(D.loops[l][i]);
+          }
+          if (!edges_meet(E[l][i], E[m][j], allowed)) continue;
+          if (l == m)
+            throw ValidationError("loops[" + std::to_string(l) + "]",
+                                  "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
+                                  "split it into simple loops (no edge may cross or touch another)");
+          throw ValidationError("loops[" + std::to_string(m) + "]",
+                                "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " +
+                                    std::to_string(i) + ")",
+                                "trimming loops must be disjoint; merge them into one simple loop");
+        }
+  for (std::size_t l = 0; l < D.loops.size(); ++l)
+    if (loop_signed_area(D, l) == 0)
+      throw ValidationError("loops[" + std::to_string(l) + "]", "is degenerate: encloses zero area", "give a loop that encloses a region");
+}
+
+Rational loop_signed_area(const TrimmedDomain& D, std::size_t l) {
+  Rational a = 0;
+  for (std::size_t i = 0; i < D.loops[l].size(); ++i) {
+    const Polygon P = D.edge(l, i);
+    std::vector<Rational> xs, ys;
+    for (const auto& p : P) {
+      xs.push_back(p[0]);
+      ys.push_back(p[1]);
+    }
+    const Poly x = poly::from_bernstein(xs, 0, 1), y = poly::from_bernstein(ys, 0, 1);
+    a += poly::integral01(poly::mul(x, poly::derivative(y)));
+  }
+  return a;
+}
+
+bool inside_loop(const TrimmedDomain& D, std::size_t l, const Vec2<Rational>& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < D.loops[l].size(); ++i) {
+    const Edge e = make_edge(D, l, i);
+    if (e.vertical) continue;
+    // Half-open in x, so a ray through a vertex counts the two edges meeting there once.
+    if (e.x0 <= p[0] && p[0] < e.x1 && e.at(p[0]) > p[1]) in = !in;
+  }
+  return in;
+}
+
+std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::array<std::vector<Rational>, 2>& knot_lines,
+                                          int approx_bits) {
+  struct Arc {
+    Rational x0, x1;
+    std::vector<Rational> c;
+    bool loop;
+  };
+  std::vector<Arc> arcs;
+  std::vector<Rational> xs{D.lo[0], D.hi[0]};
+  for (const auto& k : knot_lines[0])
+    if (D.lo[0] < k && k < D.hi[0]) xs.push_back(k);
+  std::vector<Rational> hs{D.lo[1], D.hi[1]};
+  for (const auto& k : knot_lines[1])
+    if (D.lo[1] < k && k < D.hi[1]) hs.push_back(k);
+  for (const auto& loop : all_edges(D))
+    for (const auto& e : loop) {
+      xs.push_back(e.x0);
+      if (e.vertical) continue;
+      xs.push_back(e.x1);
+      arcs.push_back({e.x0, e.x1, e.c, true});
+      const Poly f = e.power();
+      for (const auto& k : hs) {
+        const Poly g = poly::sub(f, Poly{k});
+        if (poly::is_zero(g)) continue;  // the edge lies on the line: merged in the slabs
+        for (const auto& r : classify_real_roots(g, e.x0, e.x1)) {
+          if (r.exact) {
+            xs.push_back(*r.exact);
+            continue;
+          }
+          if (approx_bits > 0) {
+            for (const auto& a : isolate_real_roots(g, r.root.lo, r.root.hi, approx_bits))
+              xs.push_back(simplest_rational(a.lo, a.hi));
+            continue;
+          }
+          const bool box = k == D.lo[1] || k == D.hi[1];
+          throw DomainError(edge_name(e.loop, e.index),
+                            std::string(box ? "touches the domain's edge" : "crosses the knot line") + " y = " + qs(k) +
+                                " at an irrational x in [" + qs(r.root.lo) + ", " + qs(r.root.hi) + "]",
+                            "exact untrimming ends tiles at rational points only: choose a curve (or knot line) whose "
+                            "crossings are rational, or split the tile boundary there yourself");
+        }
+      }
+    }
+  for (const auto& k : hs) arcs.push_back({D.lo[0], D.hi[0], {k, k}, false});
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+
+  std::vector<Tile<Rational>> tiles;
+  // Open tiles by their right side (x, y_bottom, y_top).
+  std::map<std::array<Rational, 3>, std::size_t> open;
+  for (std::size_t s = 0; s + 1 < xs.size(); ++s) {
+    const Rational &xa = xs[s], &xb = xs[s + 1];
+    struct Active {
+      Rational mid;
+      std::vector<Rational> c;  // ordinates over [xa, xb]
+      bool loop;
+    };
+    std::vector<Active> act;
+    for (const auto& a : arcs) {
+      if (xa < a.x0 || a.x1 < xb) continue;
+      const Rational w = a.x1 - a.x0;
+      auto c = poly::bernstein_restrict(a.c, (xa - a.x0) / w, (xb - a.x0) / w);
+      const Rational mid = poly::bernstein_eval(c, Rational(1, 2));
+      act.push_back({mid, std::move(c), a.loop});
+    }
+    std::sort(act.begin(), act.end(), [](const Active& p, const Active& q) { return p.mid < q.mid || (p.mid == q.mid && p.loop && !q.loop); });
+    std::vector<Active> merged;
+    for (auto& a : act)
+      if (!merged.empty() && merged.back().mid == a.mid)
+        merged.back().loop = merged.back().loop || a.loop;
+      else
+        merged.push_back(std::move(a));
+    int parity = 0;
+    std::map<std::array<Rational, 3>, std::size_t> next_open;
+    for (std::size_t m = 0; m + 1 < merged.size(); ++m) {
+      parity ^= merged[m].loop ? 1 : 0;
+      if (!parity) continue;
+      const auto &lo = merged[m].c, &hi = merged[m + 1].c;
+      const std::array<Rational, 3> left{xa, lo.front(), hi.front()}, right{xb, lo.back(), hi.back()};
+      std::size_t t;
+      const auto it = open.find(left);
+      if (it != open.end()) {
+        t = it->second;
+        open.erase(it);
+      } else {
+        t = tiles.size();
+        Tile<Rational> tl;
+        tl.label = 0;
+        tl.x = {xa};
+        tl.yb = {lo.front()};
+        tl.yt = {hi.front()};
+        tiles.push_back(std::move(tl));
+      }
+      auto& tl = tiles[t];
+      tl.x.push_back(xb);
+      tl.yb.push_back(lo.back());
+      tl.yt.push_back(hi.back());
+      tl.bottom.push_back(lo.size() < 2 ? std::vector<Rational>{lo.front(), lo.front()} : lo);
+      tl.top.push_back(hi.size() < 2 ? std::vector<Rational>{hi.front(), hi.front()} : hi);
+      next_open.emplace(right, t);
+    }
+    open = std::move(next_open);
+  }
+  return tiles;
+}
+
+CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Rational>>& tiles) {
+  CoverCertificate cc;
+  cc.tiles = tiles.size();
+  const auto fail = [&](const std::string& why) {
+    if (cc.ok) {
+      cc.ok = false;
+      cc.failure = why;
+    }
+  };
+  // A tile piece as polynomials in x.
+  struct Piece {
+    std::size_t tile;
+    Rational x0, x1;
+    Poly b, t;
+  };
+  std::vector<Piece> pieces;
+  for (std::size_t k = 0; k < tiles.size(); ++k)
+    for (std::size_t i = 0; i + 1 < tiles[k].x.size(); ++i) {
+      const Rational &x0 = tiles[k].x[i], &x1 = tiles[k].x[i + 1];
+      if (!(x0 < x1)) {
+        fail("tile " + std::to_string(k) + ": chain x not increasing at piece " + std::to_string(i));
+        continue;
+      }
+      pieces.push_back({k, x0, x1, poly::from_bernstein(tiles[k].bottom_piece(i), x0, x1),
+                        poly::from_bernstein(tiles[k].top_piece(i), x0, x1)});
+    }
+  std::sort(pieces.begin(), pieces.end(), [](const Piece& p, const Piece& q) { return p.x0 < q.x0; });
+  // 1. Interior-disjoint: no x in a common open interval with max(bottoms) < min(tops).
+  for (std::size_t p = 0; p < pieces.size() && cc.ok; ++p)
+    for (std::size_t q = p + 1; q < pieces.size() && pieces[q].x0 < pieces[p].x1; ++q) {
+      const auto &A = pieces[p], &B = pieces[q];
+      if (A.tile == B.tile) continue;  // pieces of one tile have disjoint x-ranges
+      ++cc.pair_checks;
+      const Rational u = std::max(A.x0, B.x0), v = std::min(A.x1, B.x1);
+      if (poly::exists_positive({poly::sub(A.t, A.b), poly::sub(B.t, B.b), poly::sub(A.t, B.b), poly::sub(B.t, A.b)}, u, v)) {
+        fail("tiles " + std::to_string(A.tile) + " and " + std::to_string(B.tile) + " overlap over x in (" + qs(u) + ", " + qs(v) + ")");
+        break;
+      }
+    }
+  // 2. No loop edge enters a tile's interior.
+  const auto E = all_edges(D);
+  for (const auto& loop : E)
+    for (const auto& e : loop)
+      for (const auto& P : pieces) {
+        if (!cc.ok) break;
+        if (e.vertical) {
+          if (!(P.x0 < e.x0 && e.x0 < P.x1)) continue;
+          ++cc.edge_checks;
+          const Rational b = poly::eval(P.b, e.x0), t = poly::eval(P.t, e.x0);
+          if (std::max(b, e.c[0]) < std::min(t, e.c[1]))
+            fail(edge_name(e.loop, e.index) + " passes through the interior of tile " + std::to_string(P.tile));
+          continue;
+        }
+        const Rational u = std::max(P.x0, e.x0), v = std::min(P.x1, e.x1);
+        if (!(u < v)) continue;
+        ++cc.edge_checks;
+        const Poly f = e.power();
+        if (poly::exists_positive({poly::sub(f, P.b), poly::sub(P.t, f)}, u, v))
+          fail(edge_name(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
+               ", " + qs(v) + ")");
+      }
+  // 3. Every connected part of every tile is in the region: a sample between consecutive roots of
+  //    t - b (where the part is open) in every piece.
+  const auto in_region = [&](const Vec2<Rational>& p) {
+    int depth = 0;
+    for (std::size_t l = 0; l < D.loops.size(); ++l) depth += inside_loop(D, l, p) ? 1 : 0;
+    return depth % 2 == 1;
+  };
+  for (const auto& P : pieces) {
+    if (!cc.ok) break;
+    const Poly h = poly::sub(P.t, P.b);
+    if (poly::is_zero(h)) continue;  // zero thickness: no interior
+    std::vector<Rational> cuts{P.x0};
+    for (const auto& r : isolate_real_roots(h, P.x0, P.x1, 16)) {
+      cuts.push_back(r.lo);
+      cuts.push_back(r.hi);
+    }
+    cuts.push_back(P.x1);
+    for (std::size_t j = 0; j + 1 < cuts.size(); j += 2) {
+      if (!(cuts[j] < cuts[j + 1])) continue;
+      const Rational x = (cuts[j] + cuts[j + 1]) / 2;
+      const Rational b = poly::eval(P.b, x), t = poly::eval(P.t, x);
+      if (!(b < t)) {
+        if (t < b) fail("tile " + std::to_string(P.tile) + " has its top below its bottom at x = " + qs(x));
+        continue;
+      }
+      ++cc.samples;
+      if (!in_region({x, (b + t) / 2}))
+        fail("tile " + std::to_string(P.tile) + " has the point (" + qs(x) + ", " + qs(Rational((b + t) / 2)) + ") outside the region");
+    }
+  }
+  // 4. No gap: the areas add up.
+  for (const auto& t : tiles) cc.tile_area_sum += tile_area(t);
+  cc.region_area = region_area(D);
+  if (cc.ok && cc.tile_area_sum != cc.region_area)
+    fail("tile areas add up to " + qs(cc.tile_area_sum) + ", the region's area is " + qs(cc.region_area));
+  return cc;
+}
+
+}  // namespace splinex
