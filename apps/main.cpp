@@ -14,6 +14,9 @@
 #include "float/trimming_polyline.hpp"
 #include "spline/untrim_integrate.hpp"
 #include "untrim/algorithm2.hpp"
+#include "exact/hybrid_examples.hpp"
+#include "exact/hybrid_io.hpp"
+#include "spline/hybrid.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/loops.hpp"
 #include "experiments/report.hpp"
@@ -248,6 +251,17 @@ int main(int argc, char** argv) {
   c_untrim->add_option("--monomial", ut_monomial, "integrate x^a y^b over the region, given as \"a,b\"");
   c_untrim->add_option("FILE", ut_file, "trimmed domain document")->required();
 
+  auto* c_hybrid = app.add_subcommand("hybrid", "the hybrid multi-sided patch with B-spline boundaries (papers/003)");
+  c_hybrid->require_subcommand(1);
+  std::string hy_arith = "exact", hy_file, hy_example;
+  std::vector<std::string> hy_at;
+  auto* c_hy_eval = c_hybrid->add_subcommand("eval", "evaluate the patch (and its local parameters) at domain points");
+  c_hy_eval->add_option("--arith", hy_arith, "exact, double or mpfr:BITS")->capture_default_str();
+  c_hy_eval->add_option("--at", hy_at, "a domain point \"u,v\" (repeatable)")->required();
+  c_hy_eval->add_option("FILE", hy_file, "hybrid patch document")->required();
+  auto* c_hy_example = c_hybrid->add_subcommand("example", "print a paper example as a hybrid patch document (control points constructed)");
+  c_hy_example->add_option("NAME", hy_example, "2.1, 3.1-hexagon or 3.1-octagon")->required();
+
   try {
     try {
       app.parse(argc, argv);
@@ -288,6 +302,44 @@ int main(int argc, char** argv) {
       const auto S = sx::spline_from_json(sx::read_json_file(cm.file), limits);
       const auto spec = sx::ArithSpec::parse(cm.arith);
       std::cout << run_op_document(make_op(k, oo), S, spec, limits).dump() << "\n";
+      return 0;
+    }
+    if (c_hy_example->parsed()) {
+      sx::HybridPatch<sx::Rational> P;
+      if (hy_example == "2.1") P = sx::hybrid_example_2_1();
+      else if (hy_example == "3.1-hexagon") P = sx::hybrid_example_3_1_hexagon();
+      else if (hy_example == "3.1-octagon") P = sx::hybrid_example_3_1_octagon();
+      else throw sx::UsageError("NAME", "is not an example: " + hy_example, "use 2.1, 3.1-hexagon or 3.1-octagon");
+      std::cout << sx::hybrid_to_json(P).dump() << "\n";
+      return 0;
+    }
+    if (c_hy_eval->parsed()) {
+      const auto P = sx::hybrid_from_json(sx::read_json_file(hy_file), limits);
+      std::vector<std::array<sx::Rational, 2>> xs;
+      for (const auto& a : hy_at) {
+        const auto v = sx::parse_number_list(a, "at");
+        if (v.size() != 2) throw sx::UsageError("at", "needs two numbers, got \"" + a + "\"", "write --at \"u,v\"");
+        xs.push_back({v[0], v[1]});
+      }
+      const auto spec = sx::ArithSpec::parse(hy_arith);
+      const sx::Json out = without_flint(spec, "hybrid eval", [&](auto tag) {
+        using F = typename decltype(tag)::type;
+        using Tr = sx::ArithTraits<F>;
+        const auto cv = [](const sx::Rational& r) { return Tr::from_rational(r); };
+        const auto Q = sx::convert_hybrid<F>(P, cv);
+        sx::Json pts = sx::Json::array();
+        for (const auto& x : xs) {
+          const std::array<F, 2> xf{cv(x[0]), cv(x[1])};
+          const auto L = sx::hybrid_local(Q, xf);
+          pts.push_back({{"at", {sx::ArithTraits<sx::Rational>::to_json(x[0]), sx::ArithTraits<sx::Rational>::to_json(x[1])}},
+                         {"point", sx::point_to_json(sx::hybrid_evaluate(Q, xf))},
+                         {"wachspress", sx::point_to_json(L.lambda)},
+                         {"s", sx::point_to_json(L.s)},
+                         {"h", sx::point_to_json(L.h)}});
+        }
+        return sx::Json{{"points", pts}, {"arith", Tr::name()}};
+      });
+      std::cout << out.dump() << "\n";
       return 0;
     }
     if (c_untrim->parsed()) {

@@ -1,0 +1,270 @@
+// Implementation of spline/hybrid.hpp; included by the explicit instantiations only.
+#pragma once
+#include <algorithm>
+
+#include "spline/hybrid.hpp"
+
+namespace splinex {
+
+namespace hybrid_detail {
+
+template <class T>
+T binom(int n, int k) {
+  T r(1);
+  for (int i = 1; i <= k; ++i) r = r * T(n - k + i) / T(i);
+  return r;
+}
+
+template <class T>
+T power(const T& x, int e) {
+  T r(1);
+  for (int i = 0; i < e; ++i) r = r * x;
+  return r;
+}
+
+// B_j^d(t) for j = 0..d.
+template <class T>
+std::vector<T> bernstein_all(int d, const T& t) {
+  std::vector<T> b(d + 1);
+  const T u = T(1) - t;
+  for (int j = 0; j <= d; ++j) b[j] = binom<T>(d, j) * power(t, j) * power(u, d - j);
+  return b;
+}
+
+// The d + 1 B-splines N_j^{p,U}(s), s in [U_p, U_{n}] (n = #U - p - 1 functions), by Cox-de Boor
+// on the span (The NURBS Book A2.2); s at the right end uses the last non-empty span.
+template <class T>
+std::vector<T> bspline_all(int p, const std::vector<T>& U, const T& s) {
+  const int n = static_cast<int>(U.size()) - p - 1;
+  int span = p;
+  while (span + 1 < n && !(s < U[span + 1])) ++span;
+  std::vector<T> N(p + 1, T(0)), left(p + 1, T(0)), right(p + 1, T(0));
+  N[0] = T(1);
+  for (int r = 1; r <= p; ++r) {
+    left[r] = s - U[span + 1 - r];
+    right[r] = U[span + r] - s;
+    T saved(0);
+    for (int k = 0; k < r; ++k) {
+      const T tmp = N[k] / (right[k + 1] + left[r - k]);
+      N[k] = saved + right[k + 1] * tmp;
+      saved = left[r - k] * tmp;
+    }
+    N[r] = saved;
+  }
+  std::vector<T> all(n, T(0));
+  for (int k = 0; k <= p; ++k) all[span - p + k] = N[k];
+  return all;
+}
+
+// Outward normal of side i (from V_i to V_{i+1}) of a counter-clockwise polygon, not normalized.
+template <class T>
+std::array<T, 2> normal(const HybridPatch<T>& P, std::size_t i) {
+  const auto& a = P.vertices[i];
+  const auto& b = P.vertices[(i + 1) % P.sides()];
+  return {b[1] - a[1], a[0] - b[0]};
+}
+
+template <class T>
+T cross(const std::array<T, 2>& a, const std::array<T, 2>& b) {
+  return a[0] * b[1] - a[1] * b[0];
+}
+
+// mu^i_{j,k} (Definition 2.4) for layers k = 0..l-1.
+template <class T>
+T mu(int d, int j, int k, const T& alpha, const T& beta) {
+  if (2 * j <= d) {  // j <= d/2
+    if (j < k && k >= 2) return T(0);
+    if (2 <= j && j == k && k < (d + 1) / 2) return T(1) / T(2);
+    if (j < 2 && k < 2) return alpha;
+    return T(1);
+  }
+  if (j > d - k && k >= 2) return T(0);
+  if (j == d - k && k >= 2) return T(1) / T(2);
+  if (j > d - 2 && k < 2) return beta;
+  return T(1);
+}
+
+// Ribbon factor tau_j of side i (see the header).
+template <class T>
+T ribbon_factor(const HybridPatch<T>& P, std::size_t i, int j) {
+  const auto& U = P.knots[i];
+  const int p = P.p[i];
+  if (P.ribbon == RibbonFactor::side_interpolant) return T(p) / (U[p + 1] - U[1]);
+  const T den = U[p + j] - U[j];
+  if (den == T(0))
+    throw DomainError("sides[" + std::to_string(i) + "]",
+                      "Eq. 2.11's factor p / (U_{p+j} - U_j) is p/0 at j = " + std::to_string(j) +
+                          " (U_" + std::to_string(p + j) + " = U_" + std::to_string(j) + ")",
+                      "use \"ribbon_factor\": \"side_interpolant\" (p / (U_{p+1} - U_1), the h-derivative of the side "
+                      "interpolant I_i), the corrected Eq. 2.11");
+  return T(p) / den;
+}
+
+}  // namespace hybrid_detail
+
+template <class T>
+HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+  using namespace hybrid_detail;
+  const std::size_t n = P.sides();
+  std::vector<T> phi(n), c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto N = normal(P, i);
+    phi[i] = (P.vertices[i][0] - x[0]) * N[0] + (P.vertices[i][1] - x[1]) * N[1];
+    if (phi[i] < T(0))
+      throw DomainError("point", "lies outside the patch domain (beyond side " + std::to_string(i) + ")",
+                        "evaluate at points of the closed convex domain");
+  }
+  for (std::size_t k = 0; k < n; ++k) c[k] = cross(normal(P, (k + n - 1) % n), normal(P, k));
+  HybridLocal<T> L;
+  L.lambda.assign(n, T(0));
+  T sum(0);
+  for (std::size_t k = 0; k < n; ++k) {
+    T w = c[k];
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != k && j != (k + n - 1) % n) w = w * phi[j];
+    L.lambda[k] = w;
+    sum = sum + w;
+  }
+  for (auto& v : L.lambda) v = v / sum;
+  L.s.resize(n);
+  L.h.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t next = (i + 1) % n, prev = (i + n - 1) % n;
+    L.h[i] = T(1) - L.lambda[i] - L.lambda[next];
+    const T num = c[next] * phi[prev], den = c[next] * phi[prev] + c[i] * phi[next];
+    L.s[i] = den == T(0) ? T(1) / T(2) : num / den;  // 0/0 only at a triangle's opposite vertex
+  }
+  return L;
+}
+
+template <class T>
+std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& s) {
+  const auto N = hybrid_detail::bspline_all(P.p[i], P.knots[i], s);
+  std::vector<T> out(P.q, T(0));
+  for (int j = 0; j <= P.d; ++j)
+    for (int c = 0; c < P.q; ++c) out[c] = out[c] + P.points[P.index(i, j, 0) + c] * N[j];
+  return out;
+}
+
+template <class T>
+std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, const T& s) {
+  const auto N = hybrid_detail::bspline_all(P.p[i], P.knots[i], s);
+  std::vector<T> out(P.q, T(0));
+  for (int j = 0; j <= P.d; ++j) {
+    if (N[j] == T(0)) continue;
+    const T f = hybrid_detail::ribbon_factor(P, i, j) * N[j];
+    for (int c = 0; c < P.q; ++c) out[c] = out[c] + (P.points[P.index(i, j, 1) + c] - P.points[P.index(i, j, 0) + c]) * f;
+  }
+  return out;
+}
+
+template <class T>
+std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+  using namespace hybrid_detail;
+  const auto L = hybrid_local(P, x);
+  const std::size_t n = P.sides();
+  const int d = P.d, l = P.layers();
+  std::vector<T> S(P.q, T(0)), C0(P.q, T(0));
+  T blend(0);  // B_Sigma
+  for (std::size_t i = 0; i < n; ++i) {
+    const T &hp = L.h[(i + n - 1) % n], &hi = L.h[i], &hn = L.h[(i + 1) % n];
+    const T a_den = hp * hp + hi * hi, b_den = hn * hn + hi * hi;
+    const T alpha = a_den == T(0) ? T(1) / T(2) : hp * hp / a_den;  // corner V_i: see the header
+    const T beta = b_den == T(0) ? T(1) / T(2) : hn * hn / b_den;    // corner V_{i+1}
+    const auto Bs = bernstein_all(d, L.s[i]), Bh = bernstein_all(d, hi);
+    T lstar(0);
+    for (int k = 0; k < l; ++k)
+      for (int j = 0; j <= d; ++j) {
+        const T w = mu(d, j, k, alpha, beta) * Bs[j] * Bh[k];
+        if (w == T(0)) continue;
+        blend = blend + w;
+        if (k < 2) {
+          lstar = lstar + w;
+        } else {
+          for (int c = 0; c < P.q; ++c) S[c] = S[c] + P.points[P.index(i, j, k) + c] * w;
+        }
+      }
+    if (!(lstar == T(0))) {
+      const auto Pi = hybrid_boundary(P, i, L.s[i]);
+      const auto Ti = hybrid_cross_tangent(P, i, L.s[i]);
+      for (int c = 0; c < P.q; ++c) S[c] = S[c] + (Pi[c] + hi * Ti[c]) * lstar;
+    }
+    for (int c = 0; c < P.q; ++c) C0[c] = C0[c] + P.points[P.index(i, l, l - 1) + c];
+  }
+  const T b0 = T(1) - blend;
+  for (int c = 0; c < P.q; ++c) S[c] = S[c] + C0[c] / T(static_cast<long>(n)) * b0;
+  return S;
+}
+
+template <class T>
+void validate(const HybridPatch<T>& P) {
+  using namespace hybrid_detail;
+  const std::size_t n = P.sides();
+  if (n < 3) throw ValidationError("domain", "has " + std::to_string(n) + " vertices", "give a convex polygon with at least 3 vertices");
+  for (std::size_t i = 0; i < n; ++i) {
+    const T o = cross(std::array<T, 2>{P.vertices[(i + 1) % n][0] - P.vertices[i][0], P.vertices[(i + 1) % n][1] - P.vertices[i][1]},
+                      std::array<T, 2>{P.vertices[(i + 2) % n][0] - P.vertices[(i + 1) % n][0],
+                                       P.vertices[(i + 2) % n][1] - P.vertices[(i + 1) % n][1]});
+    const std::string f = "domain[" + std::to_string((i + 1) % n) + "]";
+    if (o == T(0)) throw ValidationError(f, "is degenerate: collinear with its neighbours (or repeated)", "remove the vertex; the domain must be strictly convex");
+    if (o < T(0)) {
+      bool all_cw = true;
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto &a = P.vertices[k], &b = P.vertices[(k + 1) % n], &c = P.vertices[(k + 2) % n];
+        if (!(cross(std::array<T, 2>{b[0] - a[0], b[1] - a[1]}, std::array<T, 2>{c[0] - b[0], c[1] - b[1]}) < T(0))) all_cw = false;
+      }
+      if (all_cw) throw ValidationError("domain", "is clockwise", "list the vertices counter-clockwise");
+      throw ValidationError(f, "is a reflex vertex: the domain is not convex", "give a strictly convex polygon");
+    }
+  }
+  // Convex turning at every vertex can still wind twice (a star); the winding must be 2 pi: the
+  // vertices must be sorted by angle around the first one.
+  for (std::size_t k = 2; k < n; ++k) {
+    const auto &a = P.vertices[0], &b = P.vertices[k - 1], &c = P.vertices[k];
+    if (!(cross(std::array<T, 2>{b[0] - a[0], b[1] - a[1]}, std::array<T, 2>{c[0] - a[0], c[1] - a[1]}) > T(0)))
+      throw ValidationError("domain", "winds around more than once (self-intersecting)", "give a simple strictly convex polygon");
+  }
+  if (P.d < 3) throw ValidationError("degree", "is " + std::to_string(P.d) + "; the patch needs two ribbon layers", "give d >= 3");
+  if (P.q < 1) throw ValidationError("points", "have no coordinates", "give points with at least one coordinate");
+  if (P.p.size() != n || P.knots.size() != n)
+    throw ValidationError("sides", "has " + std::to_string(P.p.size()) + " entries for " + std::to_string(n) + " domain sides",
+                          "give one side per domain edge");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string f = "sides[" + std::to_string(i) + "]";
+    const int p = P.p[i];
+    if (p < 1 || p > P.d) throw ValidationError(f + ".degree", "is " + std::to_string(p), "give 1 <= p_i <= d");
+    const auto& U = P.knots[i];
+    const std::size_t want = static_cast<std::size_t>(P.d + p + 2);
+    if (U.size() != want)
+      throw ValidationError(f + ".knots", "has " + std::to_string(U.size()) + " knots; d + 1 = " + std::to_string(P.d + 1) +
+                                              " control points of degree " + std::to_string(p) + " need " + std::to_string(want),
+                            "give d + p_i + 2 knots");
+    for (std::size_t k = 0; k + 1 < U.size(); ++k)
+      if (U[k + 1] < U[k]) throw ValidationError(f + ".knots", "decrease at index " + std::to_string(k + 1), "sort the knots");
+    for (int k = 0; k <= p; ++k)
+      if (!(U[k] == T(0)) || !(U[U.size() - 1 - k] == T(1)))
+        throw ValidationError(f + ".knots", "are not clamped on [0, 1]", "start with p + 1 zeros and end with p + 1 ones (s_i runs over [0, 1])");
+    for (std::size_t k = 0; k + static_cast<std::size_t>(p) + 1 < U.size(); ++k)
+      if (!(U[k] < U[k + p + 1]))
+        throw ValidationError(f + ".knots", "has a knot of multiplicity above p at index " + std::to_string(k), "lower the multiplicity");
+  }
+  const int l = P.layers();
+  const std::size_t want = n * static_cast<std::size_t>(l) * (P.d + 1) * P.q;
+  if (P.points.size() != want)
+    throw ValidationError("points", "has " + std::to_string(P.points.size() / P.q) + " control points, the patch needs " +
+                                        std::to_string(want / P.q) + " (n sides x l = ceil(d/2) layers x (d + 1) columns)",
+                          "give every side l layers of d + 1 points");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t prev = (i + n - 1) % n;
+    for (int a = 0; a < l; ++a)
+      for (int b = 0; b < l; ++b)
+        for (int c = 0; c < P.q; ++c)
+          if (!(P.points[P.index(i, a, b) + c] == P.points[P.index(prev, P.d - b, a) + c]))
+            throw ValidationError("sides[" + std::to_string(i) + "].layers[" + std::to_string(b) + "][" + std::to_string(a) + "]",
+                                  "disagrees with sides[" + std::to_string(prev) + "].layers[" + std::to_string(a) + "][" +
+                                      std::to_string(P.d - b) + "] (a shared corner control point, C^i_{a,b} = C^{i-1}_{d-b,a})",
+                                  "give neighbouring sides the same corner points");
+  }
+}
+
+}  // namespace splinex
