@@ -78,7 +78,7 @@ TEST_CASE("hybrid: limits at corners and at a triangle's opposite vertex are the
       for (const auto& v : P.vertices)
         for (int c = 0; c < 2; ++c) G[c] += v[c] / static_cast<long>(P.sides());
       Rational prev = -1;
-      for (const Rational eps : {Rational(1, 100), Rational(1, 10000), Rational(1, 1000000)}) {
+      for (const Rational& eps : {Rational(1, 100), Rational(1, 10000), Rational(1, 1000000)}) {
         const P2 x{P.vertices[k][0] + eps * (G[0] - P.vertices[k][0]), P.vertices[k][1] + eps * (G[1] - P.vertices[k][1])};
         const auto S = hybrid_evaluate(P, x);
         Rational dist = 0;
@@ -94,7 +94,7 @@ TEST_CASE("hybrid: limits at corners and at a triangle's opposite vertex are the
 TEST_CASE("hybrid: Theorem 3.1 spot check, boundary points equal P_i(t) exactly") {
   const auto P = hybrid_example_3_1_hexagon();
   for (std::size_t i = 0; i < P.sides(); ++i)
-    for (const Rational t : {Rational(1, 7), Rational(1, 2), Rational(5, 6), Rational(99, 100)}) {
+    for (const Rational& t : {Rational(1, 7), Rational(1, 2), Rational(5, 6), Rational(99, 100)}) {
       const auto &A = P.vertices[i], &B = P.vertices[(i + 1) % P.sides()];
       const P2 x{A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])};
       CHECK(hybrid_evaluate(P, x) == hybrid_boundary(P, i, t));
