@@ -23,6 +23,13 @@ Rational from_gmpq(const CGAL::Gmpq& q) {
 }
 CGAL::Gmpz to_gmpz(const Integer& z) { return CGAL::Gmpz(z.backend().data()); }
 
+// sum_i c_i x^i, by Horner.
+Rational eval_power(const std::vector<Rational>& c, const Rational& x) {
+  Rational v = 0;
+  for (std::size_t i = c.size(); i-- > 0;) v = v * x + c[i];
+  return v;
+}
+
 }  // namespace
 
 std::vector<Rational> bernstein_to_power(const std::vector<Rational>& b) {
@@ -71,11 +78,8 @@ std::vector<IsolatedRoot> isolate_real_roots(const std::vector<Rational>& coeffs
     ir.hi = from_gmpq(iv.second);
     ir.multiplicity = static_cast<unsigned>(m);
     // A rational root is reported exactly when the interval's end is it.
-    for (const Rational& e : {ir.lo, ir.hi}) {
-      Rational v = 0, pw = 1;
-      for (const auto& c : coeffs) { v += c * pw; pw *= e; }
-      if (v == 0) ir.lo = ir.hi = e;
-    }
+    for (const Rational& e : {ir.lo, ir.hi})
+      if (eval_power(coeffs, e) == 0) ir.lo = ir.hi = e;
     if (ir.lo < a) ir.lo = a;
     if (b < ir.hi) ir.hi = b;
     out.push_back(ir);
@@ -108,16 +112,11 @@ std::vector<ClassifiedRoot> classify_real_roots(const std::vector<Rational>& coe
   if (lead < 0) lead = -lead;
   // Width 2^-bits < 1 / lead^2.
   const int bits = 2 * static_cast<int>(lead == 0 ? 1 : boost::multiprecision::msb(lead) + 1) + 2;
-  const auto eval = [&](const Rational& x) {
-    Rational v = 0;
-    for (std::size_t i = coeffs.size(); i-- > 0;) v = v * x + coeffs[i];
-    return v;
-  };
   std::vector<ClassifiedRoot> out;
   for (const auto& r : isolate_real_roots(coeffs, a, b, bits)) {
     ClassifiedRoot c{r, std::nullopt};
     const Rational s = r.lo == r.hi ? r.lo : simplest_rational(r.lo, r.hi);
-    if (eval(s) == 0) c.exact = s;
+    if (eval_power(coeffs, s) == 0) c.exact = s;
     out.push_back(c);
   }
   return out;

@@ -41,6 +41,13 @@ std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
   for (const auto& t : tiles) dmax = std::max(dmax, tile_spline(t).degrees[0]);
 
   // Integrals of x^a y^b: exact tiles = Green; the rounded tiles in double and MPFR 113, measured.
+  // The same tiles rounded, once for all densities.
+  const auto td = untrim_domain<double>(D, kl);
+  std::vector<Tile<Mpfr>> tm;
+  {
+    Mpfr::Precision scope(113);
+    tm = untrim_domain<Mpfr>(D, kl);
+  }
   std::ostringstream rows;
   for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 0}, {1, 0}, {0, 1}, {2, 1}, {1, 3}}) {
     const auto f = monomial_density(a, b, D);
@@ -48,14 +55,12 @@ std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
     Rational ex = 0;
     for (const auto& t : tiles) ex += integrate_over_tile(f, t)[0];
     ok = ok && ex == green;
-    const auto td = untrim_domain<double>(D, kl);
     const auto fd = convert<double>(f, [](const Rational& x) { return to_double(x); });
     double sd = 0;
     for (const auto& t : td) sd += integrate_over_tile(fd, t)[0];
     Rational em;
     {
       Mpfr::Precision scope(113);
-      const auto tm = untrim_domain<Mpfr>(D, kl);
       const auto fm = convert<Mpfr>(f, [](const Rational& x) { return ArithTraits<Mpfr>::from_rational(x); });
       Mpfr sm(0);
       for (const auto& t : tm) sm = sm + integrate_over_tile(fm, t)[0];

@@ -2,20 +2,12 @@
 #include <algorithm>
 #include <string>
 
+#include "spline/binomial.hpp"
 #include "spline/elevate.hpp"
 #include "spline/insert_impl.hpp"
 
 namespace splinex {
 namespace detail {
-
-// Binomial coefficient as an exact T (T(integer) products; no floating intermediate).
-template <class T>
-T binomial(int n, int k) {
-  if (k < 0 || k > n) return T(0);
-  T r(1);
-  for (int i = 1; i <= k; ++i) r = r * T(n - k + i) / T(i);
-  return r;
-}
 
 // NURBS Book A5.9 DegreeElevateCurve on a clamped curve block (n points of m coordinates).
 template <class T>

@@ -2,18 +2,14 @@
 #pragma once
 #include <algorithm>
 
+#include "spline/basis.hpp"
+#include "spline/binomial.hpp"
 #include "spline/hybrid.hpp"
+#include "spline/knots.hpp"
 
 namespace splinex {
 
 namespace hybrid_detail {
-
-template <class T>
-T binom(int n, int k) {
-  T r(1);
-  for (int i = 1; i <= k; ++i) r = r * T(n - k + i) / T(i);
-  return r;
-}
 
 template <class T>
 T power(const T& x, int e) {
@@ -27,30 +23,16 @@ template <class T>
 std::vector<T> bernstein_all(int d, const T& t) {
   std::vector<T> b(d + 1);
   const T u = T(1) - t;
-  for (int j = 0; j <= d; ++j) b[j] = binom<T>(d, j) * power(t, j) * power(u, d - j);
+  for (int j = 0; j <= d; ++j) b[j] = detail::binomial<T>(d, j) * power(t, j) * power(u, d - j);
   return b;
 }
 
-// The d + 1 B-splines N_j^{p,U}(s), s in [U_p, U_{n}] (n = #U - p - 1 functions), by Cox-de Boor
-// on the span (The NURBS Book A2.2); s at the right end uses the last non-empty span.
+// All d + 1 B-splines N_j^{p_i,U_i}(s) of side i (zero outside s's span), by A2.2 on the span.
 template <class T>
-std::vector<T> bspline_all(int p, const std::vector<T>& U, const T& s) {
-  const int n = static_cast<int>(U.size()) - p - 1;
-  int span = p;
-  while (span + 1 < n && !(s < U[span + 1])) ++span;
-  std::vector<T> N(p + 1, T(0)), left(p + 1, T(0)), right(p + 1, T(0));
-  N[0] = T(1);
-  for (int r = 1; r <= p; ++r) {
-    left[r] = s - U[span + 1 - r];
-    right[r] = U[span + r] - s;
-    T saved(0);
-    for (int k = 0; k < r; ++k) {
-      const T tmp = N[k] / (right[k + 1] + left[r - k]);
-      N[k] = saved + right[k + 1] * tmp;
-      saved = left[r - k] * tmp;
-    }
-    N[r] = saved;
-  }
+std::vector<T> side_basis(const HybridPatch<T>& P, std::size_t i, const T& s) {
+  const int p = P.p[i];
+  const std::size_t n = static_cast<std::size_t>(P.d + 1), span = find_span(P.knots[i], p, n, s);
+  const auto N = basis_funs(span, s, p, P.knots[i]);
   std::vector<T> all(n, T(0));
   for (int k = 0; k <= p; ++k) all[span - p + k] = N[k];
   return all;
@@ -137,9 +119,11 @@ HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x) 
   return L;
 }
 
+namespace hybrid_detail {
+
+// P_i(s) and T_i(s) from side i's basis values N (one basis evaluation serves both).
 template <class T>
-std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& s) {
-  const auto N = hybrid_detail::bspline_all(P.p[i], P.knots[i], s);
+std::vector<T> boundary_from(const HybridPatch<T>& P, std::size_t i, const std::vector<T>& N) {
   std::vector<T> out(P.q, T(0));
   for (int j = 0; j <= P.d; ++j)
     for (int c = 0; c < P.q; ++c) out[c] = out[c] + P.points[P.index(i, j, 0) + c] * N[j];
@@ -147,15 +131,26 @@ std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& 
 }
 
 template <class T>
-std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, const T& s) {
-  const auto N = hybrid_detail::bspline_all(P.p[i], P.knots[i], s);
+std::vector<T> cross_tangent_from(const HybridPatch<T>& P, std::size_t i, const std::vector<T>& N) {
   std::vector<T> out(P.q, T(0));
   for (int j = 0; j <= P.d; ++j) {
     if (N[j] == T(0)) continue;
-    const T f = hybrid_detail::ribbon_factor(P, i, j) * N[j];
+    const T f = ribbon_factor(P, i, j) * N[j];
     for (int c = 0; c < P.q; ++c) out[c] = out[c] + (P.points[P.index(i, j, 1) + c] - P.points[P.index(i, j, 0) + c]) * f;
   }
   return out;
+}
+
+}  // namespace hybrid_detail
+
+template <class T>
+std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& s) {
+  return hybrid_detail::boundary_from(P, i, hybrid_detail::side_basis(P, i, s));
+}
+
+template <class T>
+std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, const T& s) {
+  return hybrid_detail::cross_tangent_from(P, i, hybrid_detail::side_basis(P, i, s));
 }
 
 template <class T>
@@ -185,8 +180,8 @@ std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& 
         }
       }
     if (!(lstar == T(0))) {
-      const auto Pi = hybrid_boundary(P, i, L.s[i]);
-      const auto Ti = hybrid_cross_tangent(P, i, L.s[i]);
+      const auto N = side_basis(P, i, L.s[i]);
+      const auto Pi = boundary_from(P, i, N), Ti = cross_tangent_from(P, i, N);
       for (int c = 0; c < P.q; ++c) S[c] = S[c] + (Pi[c] + hi * Ti[c]) * lstar;
     }
     for (int c = 0; c < P.q; ++c) C0[c] = C0[c] + P.points[P.index(i, l, l - 1) + c];

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "spline/binomial.hpp"
 #include "spline/compose.hpp"
 #include "spline/untrim.hpp"
 
@@ -48,16 +49,11 @@ std::vector<T> integrate_over_tile(const BSpline<T>& f, const Tile<T>& tile, con
     const auto bt = piece.top_piece(0), bb = piece.bottom_piece(0);
     const int e = static_cast<int>(std::max(bt.size(), bb.size())) - 1;
     const auto ct = elevate_ordinates(bt, e), cb = elevate_ordinates(bb, e);
-    const auto binom = [](int N, int K) {
-      T r(1);
-      for (int j = 1; j <= K; ++j) r = r * T(N - K + j) / T(j);
-      return r;
-    };
     const T dx = tile.x[i + 1] - tile.x[i];
     for (int c = 0; c <= e; ++c) {
       const T delta = ct[c] - cb[c];
       for (int a = 0; a <= n; ++a) {
-        const T w = delta * dx * binom(n, a) * binom(e, c) / (binom(n + e, a + c) * T(n + e + 1) * T(k + 1));
+        const T w = delta * dx * detail::binomial<T>(n, a) * detail::binomial<T>(e, c) / (detail::binomial<T>(n + e, a + c) * T(n + e + 1) * T(k + 1));
         for (int b = 0; b <= k; ++b)
           for (int q = 0; q < f.q; ++q)
             sum[q] = sum[q] + F.points[(static_cast<std::size_t>(b) * (n + 1) + a) * f.q + q] * w;

@@ -24,7 +24,7 @@ struct Edge {
   bool vertical = false;
   Rational x0, x1;            // arc: x0 < x1; vertical: x0 == x1
   std::vector<Rational> c;    // arc: Bernstein ordinates over [x0, x1]; vertical: {y_lo, y_hi}
-  Poly power() const { return poly::from_bernstein(c, x0, x1); }
+  Poly f;                     // arc: the same polynomial in powers of x
   Rational at(const Rational& x) const { return poly::bernstein_eval(c, (x - x0) / (x1 - x0)); }
 };
 
@@ -46,6 +46,7 @@ Edge make_edge(const TrimmedDomain& D, std::size_t l, std::size_t i) {
   e.x1 = rev ? a[0] : b[0];
   for (const auto& p : P) e.c.push_back(p[1]);
   if (rev) std::reverse(e.c.begin(), e.c.end());
+  e.f = poly::from_bernstein(e.c, e.x0, e.x1);
   return e;
 }
 
@@ -83,7 +84,7 @@ bool edges_meet(const Edge& A, const Edge& B, const std::vector<Vec2<Rational>>&
   const Rational c0 = std::max(A.x0, B.x0), c1 = std::min(A.x1, B.x1);
   if (c1 < c0) return false;
   if (c0 == c1) return A.at(c0) == B.at(c0) && !is_allowed(c0, A.at(c0));
-  const Poly h = poly::sub(A.power(), B.power());
+  const Poly h = poly::sub(A.f, B.f);
   if (poly::is_zero(h)) return true;
   const auto roots = isolate_real_roots(h, c0, c1, 8);
   std::size_t allowed_roots = 0;
@@ -107,15 +108,8 @@ void validate_curved_domain(const TrimmedDomain& D) {
                                    std::to_string(L.size()) + " edges",
                             "give one (possibly empty) list per edge");
     if (L.size() < 2) throw ValidationError(f, "is degenerate: fewer than 2 vertices", "give a closed loop of edges");
+    validate_loop_vertices(D, l);
     for (std::size_t i = 0; i < L.size(); ++i) {
-      const std::string vn = "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
-      if (L[i] == L[(i + 1) % L.size()])
-        throw ValidationError(vn, "is degenerate: repeats the next vertex (zero-length edge)", "remove the repeated vertex");
-      for (int d = 0; d < 2; ++d)
-        if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
-          throw DomainError(vn, "leaves the domain: coordinate " + std::to_string(d) + " is " + qs(L[i][d]) + ", outside [" +
-                                    qs(D.lo[d]) + ", " + qs(D.hi[d]) + "]",
-                            "keep trimming loops inside the parameter box");
       const Polygon P = D.edge(l, i);
       const int deg = static_cast<int>(P.size()) - 1;
       if (deg > 100)
@@ -133,15 +127,16 @@ void validate_curved_domain(const TrimmedDomain& D) {
                                     ", not " + qs(Rational(a[0] + (b[0] - a[0]) * Rational(j, deg))),
                                 "give curved edges with control x evenly spaced between the end points (x affine in "
                                 "the curve parameter); split other curves at their x-extremes and reparametrize");
-      const Edge e = make_edge(D, l, i);
-      const Poly f = e.power();
-      if (poly::exists_positive({poly::sub(f, Poly{D.hi[1]})}, e.x0, e.x1) ||
-          poly::exists_positive({poly::sub(Poly{D.lo[1]}, f)}, e.x0, e.x1))
-        throw DomainError(edge_name(l, i), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
-                          "keep trimming curves inside the parameter box");
     }
   }
   const auto E = all_edges(D);
+  for (const auto& loop : E)
+    for (const auto& e : loop)
+      if (!e.vertical && e.c.size() > 2 &&
+          (poly::exists_positive({poly::sub(e.f, Poly{D.hi[1]})}, e.x0, e.x1) ||
+           poly::exists_positive({poly::sub(Poly{D.lo[1]}, e.f)}, e.x0, e.x1)))
+        throw DomainError(edge_name(e.loop, e.index), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
+                          "keep trimming curves inside the parameter box");
   for (std::size_t l = 0; l < E.size(); ++l)
     for (std::size_t m = l; m < E.size(); ++m)
       for (std::size_t i = 0; i < E[l].size(); ++i)
@@ -213,9 +208,8 @@ std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::arr
       if (e.vertical) continue;
       xs.push_back(e.x1);
       arcs.push_back({e.x0, e.x1, e.c, true});
-      const Poly f = e.power();
       for (const auto& k : hs) {
-        const Poly g = poly::sub(f, Poly{k});
+        const Poly g = poly::sub(e.f, Poly{k});
         if (poly::is_zero(g)) continue;  // the edge lies on the line: merged in the slabs
         for (const auto& r : classify_real_roots(g, e.x0, e.x1)) {
           if (r.exact) {
@@ -355,8 +349,7 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
         const Rational u = std::max(P.x0, e.x0), v = std::min(P.x1, e.x1);
         if (!(u < v)) continue;
         ++cc.edge_checks;
-        const Poly f = e.power();
-        if (poly::exists_positive({poly::sub(f, P.b), poly::sub(P.t, f)}, u, v))
+        if (poly::exists_positive({poly::sub(e.f, P.b), poly::sub(P.t, e.f)}, u, v))
           fail(edge_name(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
                ", " + qs(v) + ")");
       }

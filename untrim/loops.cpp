@@ -56,6 +56,20 @@ Polygon TrimmedDomain::edge(std::size_t l, std::size_t i) const {
   return P;
 }
 
+void validate_loop_vertices(const TrimmedDomain& D, std::size_t l) {
+  const auto& L = D.loops[l];
+  const auto qs = [](const Rational& v) { return ArithTraits<Rational>::to_string(v); };
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    if (L[i] == L[(i + 1) % L.size()])
+      throw ValidationError(vname(l, i), "is degenerate: repeats the next vertex (zero-length edge)", "remove the repeated vertex");
+    for (int d = 0; d < 2; ++d)
+      if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
+        throw DomainError(vname(l, i), "leaves the domain: coordinate " + std::to_string(d) + " is " + qs(L[i][d]) + ", outside [" +
+                                           qs(D.lo[d]) + ", " + qs(D.hi[d]) + "]",
+                          "keep trimming loops inside the parameter box");
+  }
+}
+
 void validate_domain(const TrimmedDomain& D) {
   for (int d = 0; d < 2; ++d)
     if (!(D.lo[d] < D.hi[d]))
@@ -69,16 +83,7 @@ void validate_domain(const TrimmedDomain& D) {
     const std::string f = "loops[" + std::to_string(l) + "]";
     if (L.size() < 3)
       throw ValidationError(f, "is degenerate: " + std::to_string(L.size()) + " vertices", "give at least 3 vertices");
-    for (std::size_t i = 0; i < L.size(); ++i) {
-      if (L[i] == L[(i + 1) % L.size()])
-        throw ValidationError(vname(l, i), "is degenerate: repeats the next vertex (zero-length edge)",
-                              "remove the repeated vertex");
-      for (int d = 0; d < 2; ++d)
-        if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
-          throw DomainError(vname(l, i), "leaves the domain: coordinate " + std::to_string(d) + " is " +
-                                             ArithTraits<Rational>::to_string(L[i][d]) + ", outside [" + ArithTraits<Rational>::to_string(D.lo[d]) + ", " + ArithTraits<Rational>::to_string(D.hi[d]) + "]",
-                            "keep trimming loops inside the parameter box");
-    }
+    validate_loop_vertices(D, l);
     bool collinear = true;
     for (std::size_t i = 2; i < L.size(); ++i)
       if (detail::orient2(L[0], L[1], L[i]) != 0) collinear = false;
@@ -192,7 +197,7 @@ std::vector<int> loop_signs(const TrimmedDomain& D) {
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     int depth = 0;
     for (std::size_t m = 0; m < D.loops.size(); ++m)
-      if (m != l && (D.curved() ? inside_loop(D, m, D.loops[l][0]) : inside(D.loops[m], D.loops[l][0]))) ++depth;
+      if (m != l && inside_loop(D, m, D.loops[l][0])) ++depth;  // straight or curved edges
     s.push_back(depth % 2 == 0 ? 1 : -1);
   }
   return s;

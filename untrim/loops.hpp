@@ -45,6 +45,9 @@ struct TrimmedDomain {
 // graph y = f(x), control x evenly spaced between the end points).
 TrimmedDomain trimmed_domain_from_json(const Json& doc);
 void validate_domain(const TrimmedDomain& D);
+// The per-vertex rules both validations share: no vertex repeating the next (zero-length edge),
+// every vertex in the closed box (DomainError "leaves the domain").
+void validate_loop_vertices(const TrimmedDomain& D, std::size_t l);
 
 // The tiles of the trimmed region (labels 0), in arithmetic T (double: vertices rounded). Curved
 // domains are tiled exactly (untrim_curved) and the exact tiles rounded to T.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "exact/root_isolation.hpp"
+#include "spline/binomial.hpp"
 
 namespace splinex::poly {
 
@@ -60,16 +61,11 @@ Rational integral01(const Poly& p) {
   for (std::size_t k = 0; k < p.size(); ++k) s += p[k] / Rational(static_cast<long>(k + 1));
   return s;
 }
-Rational binom(int n, int k) {
-  Rational r(1);
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
 Poly bernstein_monomial(int n, int i, const Rational& lo, const Rational& hi) {
   const Rational w = hi - lo;
   const Poly s{-lo / w, 1 / w}, one_minus_s{1 + lo / w, -1 / w};
   Poly r = mul(pow(s, i), pow(one_minus_s, n - i));
-  for (auto& c : r) c *= binom(n, i);
+  for (auto& c : r) c *= detail::binomial<Rational>(n, i);
   return r;
 }
 Poly from_bernstein(const std::vector<Rational>& c, const Rational& lo, const Rational& hi) {

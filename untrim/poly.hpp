@@ -19,7 +19,6 @@ Rational eval(const Poly& p, const Rational& x);
 bool is_zero(const Poly& p);
 // int_0^1 p(t) dt.
 Rational integral01(const Poly& p);
-Rational binom(int n, int k);
 // B_i^n((x - lo) / (hi - lo)) in powers of x.
 Poly bernstein_monomial(int n, int i, const Rational& lo, const Rational& hi);
 // sum_i c_i B_i^n((x - lo) / (hi - lo)) in powers of x.
