@@ -100,6 +100,39 @@ std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& 
 template <class T>
 std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, const T& s);
 
+// First derivatives (exact in exact arithmetic: forward mode with Dual<T>, spline/dual.hpp).
+// The patch is differentiable on the closed domain except at the corners, where alpha_i and
+// beta_{i-1} have no limit (a 0/0 whose value depends on the direction of approach); there the
+// functions below throw DomainError. On knots of a side the one-sided derivative of the knot span
+// A2.1 picks is returned.
+template <class T>
+struct HybridJet {
+  std::vector<T> point, derivative;  // S(x) and d/dtau S(x + tau w) at tau = 0
+  HybridLocal<T> local, local_derivative;  // lambda, s, h and their derivatives along w
+};
+template <class T>
+HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const std::array<T, 2>& x, const std::array<T, 2>& w);
+
+template <class T>
+struct HybridDerivatives {
+  std::vector<T> point, du, dv;
+};
+template <class T>
+HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::array<T, 2>& x);
+
+// Theorem 3.2's derivative: dS/dh_i at fixed s_i. The level sets of s_i (Eq. 2.9) are the lines
+// through O_i, the intersection of the lines of sides i-1 and i+1 (parallel to them when those
+// sides are parallel), so the derivative is taken along w = O_i - x:
+//     dS/dh_i |_{s_i} = (d/dtau S) / (d/dtau h_i),
+// and d/dtau s_i = 0 exactly (tests check it). Returned with the direction w used.
+template <class T>
+struct HybridCrossDerivative {
+  std::vector<T> value;     // dS/dh_i at fixed s_i
+  std::array<T, 2> direction;  // w, tangent to the iso-line of s_i through x
+};
+template <class T>
+HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x);
+
 // Structural checks with typed errors naming the field: n >= 3, strictly convex and
 // counter-clockwise, d >= 3, p_i in [1, d], knot counts d + p_i + 2, clamped on [0, 1],
 // non-decreasing, control point count, shared corner points equal.

@@ -4,6 +4,7 @@
 
 #include "spline/basis.hpp"
 #include "spline/binomial.hpp"
+#include "spline/dual.hpp"
 #include "spline/hybrid.hpp"
 #include "spline/knots.hpp"
 
@@ -153,42 +154,130 @@ std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, cons
   return hybrid_detail::cross_tangent_from(P, i, hybrid_detail::side_basis(P, i, s));
 }
 
+namespace hybrid_detail {
+
+// The mu-weighted Bernstein terms of side i at L: adds them to `blend` (B_Sigma), calls
+// interior(j, k, w) for the interior layers k >= 2 (weight w = mu B_j^d(s_i) B_k^d(h_i)) and
+// returns L_i^*, the sum over the two ribbon layers k = 0, 1.
+template <class T, class F>
+T side_blend(const HybridPatch<T>& P, const HybridLocal<T>& L, std::size_t i, T& blend, F&& interior) {
+  const std::size_t n = P.sides();
+  const int d = P.d, l = P.layers();
+  const T &hp = L.h[(i + n - 1) % n], &hi = L.h[i], &hn = L.h[(i + 1) % n];
+  const T a_den = hp * hp + hi * hi, b_den = hn * hn + hi * hi;
+  const T alpha = a_den == T(0) ? T(1) / T(2) : hp * hp / a_den;  // corner V_i: see the header
+  const T beta = b_den == T(0) ? T(1) / T(2) : hn * hn / b_den;    // corner V_{i+1}
+  const auto Bs = bernstein_all(d, L.s[i]), Bh = bernstein_all(d, hi);
+  T lstar(0);
+  for (int k = 0; k < l; ++k)
+    for (int j = 0; j <= d; ++j) {
+      const T w = mu(d, j, k, alpha, beta) * Bs[j] * Bh[k];
+      if (w == T(0)) continue;
+      blend = blend + w;
+      if (k < 2) lstar = lstar + w;
+      else interior(j, k, w);
+    }
+  return lstar;
+}
+
+// C_0 (Eq. 2.7), the mean of the points C^i_{l,l-1}.
+template <class T>
+std::vector<T> central_point(const HybridPatch<T>& P) {
+  std::vector<T> C0(P.q, T(0));
+  const int l = P.layers();
+  for (std::size_t i = 0; i < P.sides(); ++i)
+    for (int c = 0; c < P.q; ++c) C0[c] = C0[c] + P.points[P.index(i, l, l - 1) + c];
+  for (auto& c : C0) c = c / T(static_cast<long>(P.sides()));
+  return C0;
+}
+
+}  // namespace hybrid_detail
+
 template <class T>
 std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& x) {
   using namespace hybrid_detail;
   const auto L = hybrid_local(P, x);
-  const std::size_t n = P.sides();
-  const int d = P.d, l = P.layers();
-  std::vector<T> S(P.q, T(0)), C0(P.q, T(0));
+  std::vector<T> S(P.q, T(0));
   T blend(0);  // B_Sigma
-  for (std::size_t i = 0; i < n; ++i) {
-    const T &hp = L.h[(i + n - 1) % n], &hi = L.h[i], &hn = L.h[(i + 1) % n];
-    const T a_den = hp * hp + hi * hi, b_den = hn * hn + hi * hi;
-    const T alpha = a_den == T(0) ? T(1) / T(2) : hp * hp / a_den;  // corner V_i: see the header
-    const T beta = b_den == T(0) ? T(1) / T(2) : hn * hn / b_den;    // corner V_{i+1}
-    const auto Bs = bernstein_all(d, L.s[i]), Bh = bernstein_all(d, hi);
-    T lstar(0);
-    for (int k = 0; k < l; ++k)
-      for (int j = 0; j <= d; ++j) {
-        const T w = mu(d, j, k, alpha, beta) * Bs[j] * Bh[k];
-        if (w == T(0)) continue;
-        blend = blend + w;
-        if (k < 2) {
-          lstar = lstar + w;
-        } else {
-          for (int c = 0; c < P.q; ++c) S[c] = S[c] + P.points[P.index(i, j, k) + c] * w;
-        }
-      }
+  for (std::size_t i = 0; i < P.sides(); ++i) {
+    const T lstar = side_blend(P, L, i, blend, [&](int j, int k, const T& w) {
+      for (int c = 0; c < P.q; ++c) S[c] = S[c] + P.points[P.index(i, j, k) + c] * w;
+    });
     if (!(lstar == T(0))) {
       const auto N = side_basis(P, i, L.s[i]);
       const auto Pi = boundary_from(P, i, N), Ti = cross_tangent_from(P, i, N);
-      for (int c = 0; c < P.q; ++c) S[c] = S[c] + (Pi[c] + hi * Ti[c]) * lstar;
+      for (int c = 0; c < P.q; ++c) S[c] = S[c] + (Pi[c] + L.h[i] * Ti[c]) * lstar;
     }
-    for (int c = 0; c < P.q; ++c) C0[c] = C0[c] + P.points[P.index(i, l, l - 1) + c];
   }
   const T b0 = T(1) - blend;
-  for (int c = 0; c < P.q; ++c) S[c] = S[c] + C0[c] / T(static_cast<long>(n)) * b0;
+  const auto C0 = central_point(P);
+  for (int c = 0; c < P.q; ++c) S[c] = S[c] + C0[c] * b0;
   return S;
+}
+
+template <class T>
+HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const std::array<T, 2>& x, const std::array<T, 2>& w) {
+  using D = Dual<T>;
+  for (std::size_t k = 0; k < P.sides(); ++k)
+    if (P.vertices[k][0] == x[0] && P.vertices[k][1] == x[1])
+      throw DomainError("point", "is corner " + std::to_string(k) + " of the domain, where the patch has no derivative in general "
+                                 "(alpha_i and beta_{i-1} are 0/0 with a direction-dependent limit)",
+                        "differentiate at a nearby point; along a side use the side's boundary curve");
+  const auto Q = convert_hybrid<D>(P, [](const T& v) { return D(v); });
+  const std::array<D, 2> xd{D(x[0], w[0]), D(x[1], w[1])};
+  const auto S = hybrid_evaluate(Q, xd);
+  const auto L = hybrid_local(Q, xd);
+  HybridJet<T> J;
+  for (const auto& c : S) {
+    J.point.push_back(c.v);
+    J.derivative.push_back(c.d);
+  }
+  auto split = [](const std::vector<D>& a, std::vector<T>& v, std::vector<T>& dv) {
+    for (const auto& c : a) {
+      v.push_back(c.v);
+      dv.push_back(c.d);
+    }
+  };
+  split(L.lambda, J.local.lambda, J.local_derivative.lambda);
+  split(L.s, J.local.s, J.local_derivative.s);
+  split(L.h, J.local.h, J.local_derivative.h);
+  return J;
+}
+
+template <class T>
+HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+  auto a = hybrid_jet(P, x, {T(1), T(0)});
+  auto b = hybrid_jet(P, x, {T(0), T(1)});
+  return {std::move(a.point), std::move(a.derivative), std::move(b.derivative)};
+}
+
+template <class T>
+HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x) {
+  using namespace hybrid_detail;
+  const std::size_t n = P.sides();
+  if (i >= n) throw UsageError("side", std::to_string(i) + " does not exist (the patch has " + std::to_string(n) + " sides)", "give a side 0..n-1");
+  // Lines of sides i-1 and i+1: points V_{i-1}, V_{i+1}, directions a, b.
+  const auto& A = P.vertices[(i + n - 1) % n];
+  const auto& B = P.vertices[(i + 1) % n];
+  const std::array<T, 2> a{P.vertices[i][0] - A[0], P.vertices[i][1] - A[1]};
+  const std::array<T, 2> b{P.vertices[(i + 2) % n][0] - B[0], P.vertices[(i + 2) % n][1] - B[1]};
+  const T den = cross(a, b);
+  std::array<T, 2> w;
+  if (den == T(0)) {
+    w = a;  // parallel sides: the iso-lines are parallel to them
+  } else {
+    const T t = cross(std::array<T, 2>{B[0] - A[0], B[1] - A[1]}, b) / den;  // O = A + t a
+    w = {A[0] + t * a[0] - x[0], A[1] + t * a[1] - x[1]};
+  }
+  const auto J = hybrid_jet(P, x, w);
+  const T dh = J.local_derivative.h[i];
+  if (dh == T(0))
+    throw DomainError("point", "is where h_" + std::to_string(i) + " is stationary along the iso-line of s_" + std::to_string(i),
+                      "take the derivative at a point of the closed domain away from the far corners");
+  HybridCrossDerivative<T> C;
+  for (const auto& c : J.derivative) C.value.push_back(c / dh);
+  C.direction = w;
+  return C;
 }
 
 template <class T>
