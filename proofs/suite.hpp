@@ -19,6 +19,13 @@ struct ProofReport {
   std::size_t cells = 0;
   bool proved = true;
   std::string counterexample;  // first failing case, exact
+  // A claim from a paper that splinex shows false (e.g. hybrid-thm-3.2 as stated) is expected to
+  // be refuted: the run succeeds when every verdict is the expected one.
+  bool expect_proved = true;
+  bool as_expected() const { return proved == expect_proved; }
+  std::string verdict() const {
+    return std::string(proved ? "proved" : "refuted") + (as_expected() ? "" : expect_proved ? " (UNEXPECTED: should prove)" : " (UNEXPECTED: should refute)");
+  }
 };
 
 struct ProofEntry {

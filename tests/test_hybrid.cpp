@@ -10,6 +10,8 @@
 #include "exact/hybrid_io.hpp"
 #include "float/mpfr.hpp"
 #include "spline/hybrid.hpp"
+#include "spline/hybrid_refine.hpp"
+#include "spline/kernel.hpp"
 
 using namespace splinex;
 
@@ -164,4 +166,123 @@ TEST_CASE("hybrid patch documents: round trip and typed errors") {
   expect([](Json& d) { d["sides"].erase(4); }, "sides: has 4 entries for 5 domain sides");
   expect([](Json& d) { d["sides"][0]["knots"][0] = "-1/2"; }, "not clamped on [0, 1]");
   expect([](Json& d) { d["ribbon_factor"] = "other"; }, "ribbon_factor");
+}
+
+TEST_CASE("hybrid: exact derivatives converge like symmetric difference quotients, s_i is constant along its iso-line") {
+  const auto P = hybrid_example_3_1_hexagon();
+  for (const auto& x : interior_points(P, 4, 7)) {
+    const auto D = hybrid_derivatives(P, x);
+    REQUIRE(D.point == hybrid_evaluate(P, x));
+    for (int dir = 0; dir < 2; ++dir) {
+      const auto& exact = dir == 0 ? D.du : D.dv;
+      // (S(x + e) - S(x - e)) / 2e - S' = O(e^2): the error must drop by about 4 when e halves.
+      auto err = [&](const Rational& e) {
+        P2 a = x, b = x;
+        a[dir] += e;
+        b[dir] -= e;
+        const auto Sa = hybrid_evaluate(P, a), Sb = hybrid_evaluate(P, b);
+        Rational m = 0;
+        for (std::size_t c = 0; c < Sa.size(); ++c) m = std::max(m, Rational(abs(Rational((Sa[c] - Sb[c]) / (2 * e) - exact[c]))));
+        return m;
+      };
+      const Rational e1 = err(Rational(1, 1000)), e2 = err(Rational(1, 2000));
+      REQUIRE(e1 > 0);
+      REQUIRE(e2 * 3 < e1);
+      REQUIRE(e2 * 5 > e1);
+    }
+    for (std::size_t i = 0; i < P.sides(); ++i) {
+      const auto C = hybrid_cross_derivative(P, i, x);
+      const auto J = hybrid_jet(P, x, C.direction);
+      REQUIRE(J.local_derivative.s[i] == 0);
+      REQUIRE(J.local_derivative.h[i] != 0);
+    }
+  }
+  REQUIRE_THROWS_AS(hybrid_derivatives(P, P.vertices[2]), DomainError);
+  const auto Pd = convert_hybrid<double>(P, [](const Rational& r) { return to_double(r); });
+  const P2 x = interior_points(P, 1, 3)[0];
+  const auto De = hybrid_derivatives(P, x);
+  const auto Df = hybrid_derivatives(Pd, std::array<double, 2>{to_double(x[0]), to_double(x[1])});
+  for (std::size_t c = 0; c < 3; ++c) REQUIRE(abs(Rational(Rational(Df.du[c]) - De.du[c])) < Rational(1, 1000000000));
+}
+
+TEST_CASE("hybrid: Theorem 3.2 holds exactly on open sides and fails at corners with unequal end factors") {
+  const auto P = hybrid_example_3_1_hexagon();
+  for (std::size_t i = 0; i < P.sides(); ++i) {
+    const auto& A = P.vertices[i];
+    const auto& B = P.vertices[(i + 1) % P.sides()];
+    for (const Rational t : {Rational(1, 7), Rational(1, 2), Rational(5, 6)}) {
+      const P2 x{A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])};
+      REQUIRE(hybrid_cross_derivative(P, i, x).value == hybrid_cross_tangent(P, i, t));
+    }
+  }
+  // Corner V_1: side 0 has p = 5 (end factor 5 / (1/2) = 10), side 1 p = 3 (ribbon factor 3 / (1/4) = 12).
+  BSpline<Rational> C0;
+  C0.degrees = {P.p[0]};
+  C0.knots = {P.knots[0]};
+  C0.q = 3;
+  for (int j = 0; j <= P.d; ++j)
+    for (int c = 0; c < 3; ++c) C0.points.push_back(P.points[P.index(0, j, 0) + c]);
+  auto along = derivative(C0, {Rational(1)}, {1});
+  for (auto& c : along) c = -c;
+  const auto T1 = hybrid_cross_tangent(P, 1, Rational(0));
+  REQUIRE(along != T1);
+  for (std::size_t c = 0; c < 3; ++c) REQUIRE(along[c] * 12 == T1[c] * 10);
+  // The cross derivative near the corner tends to T_1(0), not to the corner's value.
+  const auto& A = P.vertices[1];
+  const auto& B = P.vertices[2];
+  const Rational t(1, 100000);
+  const auto near = hybrid_cross_derivative(P, 1, P2{A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])}).value;
+  REQUIRE(near == hybrid_cross_tangent(P, 1, t));
+}
+
+TEST_CASE("hybrid: improved elevation (Eq. 4.5, 4.6) and knot insertion (Eq. 4.8-4.12) keep the patch; Salvi's moves it") {
+  const auto P = hybrid_example_2_1();
+  const auto F = hybrid_form(P);
+  const auto xs = interior_points(P, 12, 11);
+  for (const auto& x : xs) REQUIRE(hybrid_form_evaluate(F, x) == hybrid_evaluate(P, x));
+  auto G = F;
+  for (int r = 0; r < 3; ++r) {
+    BSpline<Rational> c;
+    c.degrees = {G.sides[1].p};
+    c.knots = {G.sides[1].Ub};
+    c.q = 3;
+    c.points = G.sides[1].Tbar;
+    const auto k = elevate_degree(c, 0, 1);
+    G = hybrid_elevate(G);
+    REQUIRE(k.points == G.sides[1].Tbar);
+  }
+  REQUIRE(G.sides[0].du == 21);  // Example 4.1: S^{6,2} -> S^{21,5}
+  REQUIRE(G.sides[0].p == 5);
+  REQUIRE(G.sides[0].count_b() == 22);
+  for (const auto& x : xs) REQUIRE(hybrid_form_evaluate(G, x) == hybrid_evaluate(P, x));
+  auto R = F;
+  for (int k = 0; k < 5; ++k) R = hybrid_insert(R, Rational(k + 1, 6), Rational(k + 1, 6), Rational(2 * k + 1, 10));
+  REQUIRE(R.sides[0].count_u() == 12);
+  REQUIRE(R.sides[0].count_b() == 12);
+  for (const auto& x : xs) REQUIRE(hybrid_form_evaluate(R, x) == hybrid_evaluate(P, x));
+  REQUIRE_THROWS_AS(hybrid_elevate(R), DomainError);                                       // interior no longer Bernstein
+  REQUIRE_THROWS_AS(hybrid_insert(F, Rational(0), Rational(1, 2), Rational(1, 2)), DomainError);  // not inside (0, 1)
+  auto M = hybrid_insert(F, Rational(1, 2), Rational(1, 2), Rational(1, 5));  // U^b's 1/5 now twice = p
+  REQUIRE_THROWS_AS(hybrid_insert(M, Rational(1, 3), Rational(1, 3), Rational(1, 5)), DomainError);  // would be 3 > p = 2
+  REQUIRE_THROWS_AS(hybrid_elevate_salvi(P), DomainError);                                 // d = 6 even, B-spline sides
+  const auto B = hybrid_dome(P.vertices, 5, std::vector<int>(5, 5), std::vector<std::vector<Rational>>(5, uniform_clamped_knots(5, 5)));
+  const auto Q = hybrid_elevate_salvi(B);
+  const auto E = hybrid_elevate(hybrid_form(B));
+  bool moved = false;
+  for (const auto& x : xs) {
+    moved = moved || hybrid_evaluate(Q, x) != hybrid_evaluate(B, x);
+    REQUIRE(hybrid_form_evaluate(E, x) == hybrid_evaluate(B, x));
+  }
+  REQUIRE(moved);
+}
+
+TEST_CASE("hybrid: Example 3.2 holes share their corner points exactly and meet the neighbours' boundaries") {
+  for (int n : {5, 6}) {
+    const auto H = hybrid_hole_example_3_2(n);
+    REQUIRE(H.conflicts == static_cast<std::size_t>(n));  // one disagreeing twist per corner
+    for (std::size_t i = 0; i < H.patch.sides(); ++i)
+      for (const Rational t : {Rational(0), Rational(1, 3), Rational(1)})
+        REQUIRE(hybrid_boundary(H.patch, i, t) == evaluate(H.neighbours[i], {t, Rational(0)}));
+  }
+  REQUIRE_THROWS_AS(hybrid_hole_example_3_2(7), UsageError);
 }
