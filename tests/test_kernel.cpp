@@ -53,11 +53,12 @@ TEST_CASE("mixed partial derivatives of a rational surface match a difference qu
   }
 }
 
-TEST_CASE("every named proof holds on many random exact cases") {
+TEST_CASE("every named proof gives its expected verdict on many random exact cases") {
   for (const auto& e : proof_registry()) {
-    const auto r = e.run(e.name == "teapot-merge" ? 1 : 30);
+    // The hybrid-patch proofs run patches of high degree (up to 21); `splinex report` runs them with 12 cases too.
+    const auto r = e.run(e.name == "teapot-merge" ? 1 : e.name.rfind("hybrid-", 0) == 0 ? 12 : 30);
     INFO(r.name << ": " << r.counterexample);
-    CHECK(r.proved);
+    CHECK(r.as_expected());
     CHECK(r.cases > 0);
     if (r.degree_bound.rfind("none", 0) != 0) CHECK(r.points > 0);  // identity proofs evaluate; equality ones compare nets
   }
