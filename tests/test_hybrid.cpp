@@ -235,7 +235,7 @@ TEST_CASE("hybrid: Theorem 3.2 holds exactly on open sides and fails at corners 
   REQUIRE(near == hybrid_cross_tangent(P, 1, t));
 }
 
-TEST_CASE("hybrid: improved elevation (Eq. 4.5, 4.6) and knot insertion (Eq. 4.8-4.12) keep the patch; Salvi's moves it") {
+TEST_CASE("hybrid: improved elevation (Eq. 4.5, 4.6) and knot insertion (Eq. 4.8-4.12) keep the patch, Salvi's moves it") {
   const auto P = hybrid_example_2_1();
   const auto F = hybrid_form(P);
   const auto xs = interior_points(P, 12, 11);
