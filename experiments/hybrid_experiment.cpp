@@ -161,8 +161,8 @@ std::string isolines_svg(const HybridPatch<Rational>& P) {
   o << polygon_svg(P, f);
   const auto [lx, ly] = f(to_double(P.vertices[0][0]), to_double(P.vertices[0][1]));
   o << "<text x=\"" << lx << "\" y=\"" << ly + 18 << "\">V_0</text>\n";
-  o << "<text x=\"20\" y=\"620\">Example 2.1 domain: iso-lines s_0 = 0.1..0.9 (blue, straight lines through the meeting point of sides 4 "
-       "and 1), h_0 = 0.1..0.9 (red); side 0 runs from V_0</text>\n</svg>\n";
+  o << "<text x=\"20\" y=\"605\">Example 2.1 domain: iso-lines s_0 = 0.1..0.9 (blue: lines through the meeting point of</text>\n"
+       "<text x=\"20\" y=\"625\">sides 4 and 1, here parallel), h_0 = 0.1..0.9 (red); side 0 runs from V_0</text>\n</svg>\n";
   return o.str();
 }
 
@@ -182,7 +182,7 @@ std::string height_svg(const HybridPatch<Rational>& P, const Fan& F, const std::
     for (auto k : t) z += pts[k][2] / 3;
     const double u = zmax > zmin ? (z - zmin) / (zmax - zmin) : 0.5;
     const int r = static_cast<int>(40 + 215 * u), g = static_cast<int>(60 + 170 * u), b = static_cast<int>(200 - 160 * u);
-    o << "<polygon stroke=\"none\" fill=\"rgb(" << r << "," << g << "," << b << ")\" points=\"";
+    o << "<polygon stroke-width=\"0.6\" stroke=\"rgb(" << r << "," << g << "," << b << ")\" fill=\"rgb(" << r << "," << g << "," << b << ")\" points=\"";
     for (auto k : t) {
       const auto [x, y] = f(to_double(F.x[k][0]), to_double(F.x[k][1]));
       o << x << "," << y << " ";
