@@ -272,14 +272,7 @@ std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
         zero_spans += span_max == 0 ? 1 : 0;
       }
       // Corner V_i: the patch's derivative along s_i = 0 is -P'_{i-1}(1) (hybrid-thm-3.2-corrected).
-      BSpline<Rational> Cp;
-      const std::size_t prev = (i + P.sides() - 1) % P.sides();
-      Cp.degrees = {P.p[prev]};
-      Cp.knots = {P.knots[prev]};
-      Cp.q = 3;
-      for (int j = 0; j <= P.d; ++j)
-        for (int c = 0; c < 3; ++c) Cp.points.push_back(P.points[P.index(prev, j, 0) + c]);
-      auto dc = derivative(Cp, {Rational(1)}, {1});
+      auto dc = derivative(hybrid_boundary_spline(P, (i + P.sides() - 1) % P.sides()), {Rational(1)}, {1});
       for (auto& c : dc) c = -c;
       const auto At0 = derivative(H.neighbours[i], {Rational(0), Rational(0)}, {0, 1});
       const Rational corner = max_norm_diff(dc, {-At0[0], -At0[1], -At0[2]});

@@ -98,17 +98,6 @@ Point2 on_side(const HybridPatch<Rational>& P, std::size_t s, const Rational& t)
   return {A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])};
 }
 
-// P_i as a kernel B-spline curve (for independent derivatives).
-BSpline<Rational> boundary_curve(const HybridPatch<Rational>& P, std::size_t i) {
-  BSpline<Rational> C;
-  C.degrees = {P.p[i]};
-  C.knots = {P.knots[i]};
-  C.q = P.q;
-  for (int j = 0; j <= P.d; ++j)
-    for (int c = 0; c < P.q; ++c) C.points.push_back(P.points[P.index(i, j, 0) + c]);
-  return C;
-}
-
 // Domain sample: the vertex centroid G and G + (a/m)(V_k - G) + (b/m)(V_{k+1} - G), a + b <= m.
 std::vector<Point2> fan_sample(const HybridPatch<Rational>& P, int m) {
   Rational gx = 0, gy = 0;
@@ -130,6 +119,38 @@ std::vector<Point2> fan_sample(const HybridPatch<Rational>& P, int m) {
   return X;
 }
 
+// Theorems 4.1 and 4.2: every side of G (elevated or refined) has the interior and ribbon of the
+// same side of F as functions of (s, h), proved per cell of G's knots; then the forms are compared
+// with the patch on a fan sample. `what` names the operation in messages.
+void prove_form_unchanged(const HybridPatch<Rational>& P, const HybridForm<Rational>& F, const HybridForm<Rational>& G,
+                          const std::string& what, Accumulator& acc, std::size_t i) {
+  for (std::size_t s = 0; s < P.sides(); ++s) {
+    const auto& A = F.sides[s];
+    const auto& B = G.sides[s];
+    acc.add(prove_by_samples({distinct(B.U), distinct(B.V)}, {B.du, B.dh},
+                             [&](const std::vector<Rational>& y) -> std::string {
+                               return hybrid_form_interior(B, P.q, y[0], y[1]) == hybrid_form_interior(A, P.q, y[0], y[1])
+                                          ? ""
+                                          : "side " + std::to_string(s) + " interior at " + pt(y);
+                             },
+                             what + " interior = interior"),
+            i);
+    for (int hh = 0; hh <= 1; ++hh)
+      acc.add(prove_by_samples({distinct(B.Ub)}, {B.p},
+                               [&](const std::vector<Rational>& y) -> std::string {
+                                 return hybrid_form_ribbon(B, P.q, y[0], Rational(hh)) == hybrid_form_ribbon(A, P.q, y[0], Rational(hh))
+                                            ? ""
+                                            : "side " + std::to_string(s) + " ribbon at s = " + fr(y[0]);
+                               },
+                               what + " ribbon = ribbon"),
+              i);
+  }
+  for (const auto& x : fan_sample(P, 6)) {
+    ++acc.rep.points;
+    if (hybrid_form_evaluate(G, x) != hybrid_evaluate(P, x)) acc.fail(what + " patch differs at " + fr(x[0]) + ", " + fr(x[1]), i);
+  }
+}
+
 HybridPatch<Rational> example_or_random(std::size_t i, std::mt19937_64& rng, bool same_p) {
   if (i == 0) return hybrid_example_2_1();
   if (i == 1) return same_p ? hybrid_example_3_1_octagon() : hybrid_example_3_1_hexagon();
@@ -142,7 +163,7 @@ HybridPatch<Rational> example_or_random(std::size_t i, std::mt19937_64& rng, boo
 // S = P_{i-1} (Theorem 3.1) and h_i = 1 - s_{i-1}) is -P'_{i-1}(1) (kernel derivative).
 std::vector<Rational> corner_cross_derivative(const HybridPatch<Rational>& P, std::size_t i) {
   const std::size_t prev = (i + P.sides() - 1) % P.sides();
-  auto D = derivative(boundary_curve(P, prev), {Rational(1)}, {1});
+  auto D = derivative(hybrid_boundary_spline(P, prev), {Rational(1)}, {1});
   for (auto& c : D) c = -c;
   return D;
 }
@@ -298,31 +319,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                                        std::to_string(S0.count_b()) + " ribbon coefficients (want 21, 5, 22)",
                                    i);
                       }
-                      for (std::size_t s = 0; s < P.sides(); ++s) {
-                        const auto& A = F.sides[s];
-                        const auto& B = G.sides[s];
-                        acc.add(prove_by_samples({{Rational(0), Rational(1)}, {Rational(0), Rational(1)}}, {B.du, B.dh},
-                                                 [&](const std::vector<Rational>& y) -> std::string {
-                                                   return hybrid_form_interior(B, P.q, y[0], y[1]) == hybrid_form_interior(A, P.q, y[0], y[1])
-                                                              ? ""
-                                                              : "side " + std::to_string(s) + " interior at " + pt(y);
-                                                 },
-                                                 "elevated interior = interior"),
-                                i);
-                        for (int hh = 0; hh <= 1; ++hh)
-                          acc.add(prove_by_samples({distinct(B.Ub)}, {B.p},
-                                                   [&](const std::vector<Rational>& y) -> std::string {
-                                                     return hybrid_form_ribbon(B, P.q, y[0], Rational(hh)) == hybrid_form_ribbon(A, P.q, y[0], Rational(hh))
-                                                                ? ""
-                                                                : "side " + std::to_string(s) + " ribbon at s = " + fr(y[0]);
-                                                   },
-                                                   "elevated ribbon = ribbon"),
-                                  i);
-                      }
-                      for (const auto& x : fan_sample(P, 6)) {
-                        ++acc.rep.points;
-                        if (hybrid_form_evaluate(G, x) != hybrid_evaluate(P, x)) acc.fail("elevated patch differs at " + fr(x[0]) + ", " + fr(x[1]), i);
-                      }
+                      prove_form_unchanged(P, F, G, "elevated", acc, i);
                     },
                     141));
   r.push_back(entry("hybrid-thm-4.2",
@@ -375,31 +372,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                         }
                         G = H;
                       }
-                      for (std::size_t s = 0; s < P.sides(); ++s) {
-                        const auto& A = F.sides[s];
-                        const auto& B = G.sides[s];
-                        acc.add(prove_by_samples({distinct(B.U), distinct(B.V)}, {B.du, B.dh},
-                                                 [&](const std::vector<Rational>& y) -> std::string {
-                                                   return hybrid_form_interior(B, P.q, y[0], y[1]) == hybrid_form_interior(A, P.q, y[0], y[1])
-                                                              ? ""
-                                                              : "side " + std::to_string(s) + " interior at " + pt(y);
-                                                 },
-                                                 "refined interior = interior"),
-                                i);
-                        for (int hh = 0; hh <= 1; ++hh)
-                          acc.add(prove_by_samples({distinct(B.Ub)}, {B.p},
-                                                   [&](const std::vector<Rational>& y) -> std::string {
-                                                     return hybrid_form_ribbon(B, P.q, y[0], Rational(hh)) == hybrid_form_ribbon(A, P.q, y[0], Rational(hh))
-                                                                ? ""
-                                                                : "side " + std::to_string(s) + " ribbon at s = " + fr(y[0]);
-                                                   },
-                                                   "refined ribbon = ribbon"),
-                                  i);
-                      }
-                      for (const auto& x : fan_sample(P, 6)) {
-                        ++acc.rep.points;
-                        if (hybrid_form_evaluate(G, x) != hybrid_evaluate(P, x)) acc.fail("refined patch differs at " + fr(x[0]) + ", " + fr(x[1]), i);
-                      }
+                      prove_form_unchanged(P, F, G, "refined", acc, i);
                     },
                     142));
   r.push_back(entry("hybrid-salvi-elevation",

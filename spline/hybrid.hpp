@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "spline/arith.hpp"
+#include "spline/bspline.hpp"
 #include "spline/errors.hpp"
 
 namespace splinex {
@@ -132,6 +133,19 @@ struct HybridCrossDerivative {
 };
 template <class T>
 HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x);
+
+// Side i's boundary P_i as a kernel B-spline curve (degree p_i, side i's knots, row C^i_{j,0}),
+// e.g. for its derivatives.
+template <class T>
+BSpline<T> hybrid_boundary_spline(const HybridPatch<T>& P, std::size_t i) {
+  BSpline<T> C;
+  C.degrees = {P.p[i]};
+  C.knots = {P.knots[i]};
+  C.q = P.q;
+  for (int j = 0; j <= P.d; ++j)
+    for (int c = 0; c < P.q; ++c) C.points.push_back(P.points[P.index(i, j, 0) + c]);
+  return C;
+}
 
 // Structural checks with typed errors naming the field: n >= 3, strictly convex and
 // counter-clockwise, d >= 3, p_i in [1, d], knot counts d + p_i + 2, clamped on [0, 1],
