@@ -11,6 +11,7 @@
 #include "crosscheck/operations_impl.hpp"
 #include "exact/json_io.hpp"
 #include "exact/root_isolation.hpp"
+#include "float/rounding.hpp"
 #include "float/trimming_polyline.hpp"
 #include "spline/untrim_integrate.hpp"
 #include "untrim/algorithm2.hpp"
@@ -90,8 +91,7 @@ sx::Json run_op_document(const sx::Operation& op, const sx::BSpline<sx::Rational
                          const sx::Limits& limits) {
   return sx::with_arith(spec, [&](auto tag) {
     using T = typename decltype(tag)::type;
-    auto conv = [](const sx::Rational& x) { return sx::ArithTraits<T>::from_rational(x); };
-    const sx::BSpline<T> in = sx::convert<T>(S, conv);
+    const sx::BSpline<T> in = sx::round_spline<T>(S);
     if (op.kind == sx::Operation::Kind::extract_bezier) {
       sx::Json pieces = sx::Json::array();
       for (const auto& pc : sx::extract_bezier(in, limits)) {
@@ -229,7 +229,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> proof_names;
   bool proof_json = false;
-  std::size_t proof_cases = 12;
+  long proof_cases = 12;
   auto* c_prove = app.add_subcommand("prove", "run the exact proofs (proof by identity)");
   c_prove->add_option("names", proof_names, "proof names (default: all)");
   c_prove->add_flag("--json", proof_json, "JSON output");
@@ -284,10 +284,8 @@ int main(int argc, char** argv) {
       const auto spec = sx::ArithSpec::parse(ev.arith);
       const sx::Json out = sx::with_arith(spec, [&](auto tag) {
         using T = typename decltype(tag)::type;
-        auto conv = [](const sx::Rational& v) { return sx::ArithTraits<T>::from_rational(v); };
-        const auto Sf = sx::convert<T>(S, conv);
-        std::vector<T> xf;
-        for (const auto& v : x) xf.push_back(conv(v));
+        const auto Sf = sx::round_spline<T>(S);
+        const std::vector<T> xf = sx::round_values<T>(x, "at");
         if (!ord.empty() && eval_method == "deboor")
           throw sx::UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
         const auto p = !ord.empty() ? sx::derivative(Sf, xf, ord) : eval_method == "deboor" ? sx::evaluate_de_boor(Sf, xf) : sx::evaluate(Sf, xf);
@@ -386,13 +384,12 @@ int main(int argc, char** argv) {
       auto run = [&](auto tag) {
         using F = typename decltype(tag)::type;
         using Tr = sx::ArithTraits<F>;
-        auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
         const auto tiles = sx::untrim_domain<F>(D, knot_lines);
         sx::Json out_tiles = sx::Json::array();
         F area(0), integral(0);
         std::optional<sx::BSpline<F>> Sf, ff;
-        if (S) Sf = sx::convert<F>(*S, conv);
-        if (f) ff = sx::convert<F>(*f, conv);
+        if (S) Sf = sx::round_spline<F>(*S, "surface");
+        if (f) ff = sx::round_spline<F>(*f, "density");
         sx::CompositionOptions co;
         co.expand = true;
         for (const auto& t : tiles) {
@@ -450,8 +447,7 @@ int main(int argc, char** argv) {
         auto run = [&](auto tag) {
           using F = typename decltype(tag)::type;
           using Tr = sx::ArithTraits<F>;
-          auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
-          const auto A = sx::compose_tensor(sx::convert<F>(T, conv), sx::convert<F>(S, conv), to, limits);
+          const auto A = sx::compose_tensor(sx::round_spline<F>(T, "outer"), sx::round_spline<F>(S, "inner"), to, limits);
           sx::Json tiles = sx::Json::array();
           for (const auto& t : A.tiles) {
             const auto& p = A.trimmed.patches[t.patch];
@@ -483,8 +479,7 @@ int main(int argc, char** argv) {
         const sx::Json out = sx::with_arith(spec, [&](auto tag) {
           using F = typename decltype(tag)::type;
           using Tr = sx::ArithTraits<F>;
-          auto conv = [](const sx::Rational& v) { return Tr::from_rational(v); };
-          const auto C = sx::compose_trimmed(sx::convert<F>(T, conv), sx::convert<F>(S, conv), {}, limits);
+          const auto C = sx::compose_trimmed(sx::round_spline<F>(T, "outer"), sx::round_spline<F>(S, "inner"), {}, limits);
           sx::Json pieces = sx::Json::array();
           for (const auto& p : C.patches) {
             sx::Json box = sx::Json::array(), obox = sx::Json::array(), region = sx::Json::array();
@@ -552,8 +547,7 @@ int main(int argc, char** argv) {
       const auto spec = sx::ArithSpec::parse(cp.arith);
       const sx::Json out = sx::with_arith(spec, [&](auto tag) {
         using F = typename decltype(tag)::type;
-        auto conv = [](const sx::Rational& v) { return sx::ArithTraits<F>::from_rational(v); };
-        return sx::spline_to_json(sx::compose(sx::convert<F>(T, conv), sx::convert<F>(S, conv), o, limits));
+        return sx::spline_to_json(sx::compose(sx::round_spline<F>(T, "outer"), sx::round_spline<F>(S, "inner"), o, limits));
       });
       std::cout << out.dump() << "\n";
       return 0;
@@ -573,20 +567,28 @@ int main(int argc, char** argv) {
         for (const auto& e : sx::proof_registry()) std::cout << e.name << "\t" << e.identity << "\n";
         return 0;
       }
-      const auto reps = sx::run_proofs(proof_names, proof_cases);
+      if (proof_cases < 1 || proof_cases > 100000)
+        throw sx::UsageError("cases", std::to_string(proof_cases) + " is outside [1, 100000] (0 cases would check nothing)",
+                             "give --cases N with 1 <= N <= 100000");
+      const auto reps = sx::run_proofs(proof_names, static_cast<std::size_t>(proof_cases));
       bool all = true;
       sx::Json j = sx::Json::array();
       for (const auto& r : reps) {
         all = all && r.as_expected();
         if (proof_json) {
           j.push_back({{"name", r.name}, {"identity", r.identity}, {"degree_bound", r.degree_bound}, {"cases", r.cases},
-                       {"cells", r.cells}, {"points", r.points}, {"verdict", r.proved ? "proved" : "refuted"}, {"expected", r.expect_proved ? "proved" : "refuted"},
-                       {"counterexample", r.counterexample}});
+                       {"cells", r.cells}, {"points", r.points}, {"verdict", r.verdict_key()},
+                       {"expected", r.expect_proved ? "holds" : "refuted"}, {"as_expected", r.as_expected()},
+                       {"structures", r.structures}, {"undecided", r.undecided}, {"counterexample", r.counterexample}});
         } else {
-          std::cout << r.name << ": " << (r.proved ? "proved" : r.expect_proved ? "REFUTED" : "refuted (expected)") << "\n  identity: " << r.identity
-                    << "\n  degree bound: " << r.degree_bound << "\n  points: " << r.points << " exact evaluations in "
-                    << r.cells << " cells over " << r.cases << " cases\n";
-          if (!r.proved) std::cout << "  counterexample: " << r.counterexample << "\n";
+          std::cout << r.name << ": " << r.verdict() << "\n  identity: " << r.identity << "\n  degree bound: " << r.degree_bound
+                    << "\n  points: " << r.points << " exact comparisons in " << r.cells << " cells over " << r.cases << " cases\n";
+          if (!r.structures.empty()) {
+            std::cout << "  structures:";
+            for (std::size_t k = 0; k < r.structures.size(); ++k) std::cout << (k ? ", " : " ") << r.structures[k];
+            std::cout << "\n";
+          }
+          if (r.refuted()) std::cout << "  counterexample: " << r.counterexample << "\n";
         }
       }
       if (proof_json) std::cout << j.dump(2) << "\n";

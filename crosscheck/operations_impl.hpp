@@ -1,15 +1,14 @@
 #pragma once
 #include "crosscheck/operations.hpp"
+#include "float/rounding.hpp"
 
 namespace splinex {
 
 template <class T>
 std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, const Limits& limits) {
-  auto conv = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
   switch (op.kind) {
     case Operation::Kind::insert_knots: {
-      std::vector<T> X;
-      for (const auto& x : op.knots) X.push_back(conv(x));
+      const std::vector<T> X = round_values<T>(op.knots, "knots");
       if (!op.boehm) return {refine_knots(S, op.dir, X, limits)};
       BSpline<T> R = S;
       for (const auto& x : X) R = insert_knot(R, op.dir, x, 1, limits);
@@ -22,10 +21,10 @@ std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, 
       return out;
     }
     case Operation::Kind::split: {
-      auto [L, R] = split_at(S, op.dir, conv(op.at), limits);
+      auto [L, R] = split_at(S, op.dir, round_checked<T>(op.at, "at"), limits);
       return {L, R};
     }
-    case Operation::Kind::reparametrize: return {reparametrize(S, op.dir, conv(op.lo), conv(op.hi))};
+    case Operation::Kind::reparametrize: return {reparametrize(S, op.dir, round_checked<T>(op.lo, "interval[0]"), round_checked<T>(op.hi, "interval[1]"))};
     case Operation::Kind::reverse: return {reverse(S, op.dir)};
     case Operation::Kind::identity: break;
   }

@@ -395,13 +395,17 @@ int run_report(const ReportOptions& opt) {
   for (const auto& a : ariths) md << "`" << a << "` ";
   md << (opt.full ? "(full sweep)" : "(default sweep; `splinex report --full` runs the long one)") << ".\n\n";
 
-  md << "## Proofs (exact, by identity)\n\n| proof | verdict | cases | exact evaluations | degree bound |\n|---|---|---|---|---|\n";
+  md << "## Proofs (exact, by identity)\n\n`proved`: an identity argument (degree bound, enough points per cell) covers "
+        "the claim on every case; `checked at N points`: sampled, no identity argument; `refuted`: with the exact "
+        "counterexample.\n\n| proof | verdict | cases | exact comparisons | degree bound | input structures |\n|---|---|---|---|---|---|\n";
   bool proofs_ok = true;
   for (const auto& p : proofs) {
     proofs_ok = proofs_ok && p.as_expected();
-    md << "| " << p.name << " | " << (p.proved ? "proved" : "**refuted**" + std::string(p.expect_proved ? "" : " (expected)") + ": " + p.counterexample)
+    std::string structures;
+    for (const auto& t : p.structures) structures += (structures.empty() ? "" : ", ") + t;
+    md << "| " << p.name << " | " << (p.refuted() ? "**" + p.verdict() + "**: " + p.counterexample : p.verdict())
        << (p.as_expected() ? "" : " **UNEXPECTED**") << " | " << p.cases << " | "
-       << p.points << " | " << p.degree_bound << " |\n";
+       << p.points << " | " << p.degree_bound << " | " << structures << " |\n";
   }
 
   auto table = [&](const std::string& suite, const std::string& title) {

@@ -26,7 +26,13 @@ Rational to_rational(const Mpfr& x) {
   return e < 0 ? Rational(r / Rational(p2)) : Rational(r * Rational(p2));
 }
 
+void throw_not_finite(const std::string& arith) {
+  throw RangeError("result", "a computed value is infinite or NaN in " + arith + " (beyond its range)",
+                   "use --arith exact, or mpfr:BITS (its exponent range is far wider), or rescale the input");
+}
+
 std::string to_decimal_string(const Mpfr& x) {
+  if (!mpfr_number_p(x.get())) throw_not_finite("mpfr:" + std::to_string(x.bits()));
   if (mpfr_zero_p(x.get())) return "0";
   mpfr_exp_t exp10 = 0;
   // n = 0: MPFR chooses enough digits that reading them back at this precision round-trips.

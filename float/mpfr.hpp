@@ -9,6 +9,7 @@
 #include <mpfr.h>
 
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -74,6 +75,8 @@ class Mpfr {
   mpfr_t v_;
 };
 
+[[noreturn]] void throw_not_finite(const std::string& arith);
+
 // Exact value of a finite MPFR number (mantissa * 2^exponent).
 Rational to_rational(const Mpfr& x);
 // All the significant digits needed to read the value back at its precision ("d.ddde-X").
@@ -97,7 +100,11 @@ struct ArithTraits<double> {
   static int precision_bits() { return 53; }
   static double from_rational(const Rational& x) { return to_double(x); }
   static Rational to_rational(double x) { return exact_from_double(x); }
-  static nlohmann::json to_json(double x) { return x; }  // nlohmann prints the shortest round-trip text
+  // nlohmann prints the shortest round-trip text; it would print inf and NaN as null.
+  static nlohmann::json to_json(double x) {
+    if (!std::isfinite(x)) throw_not_finite("double");
+    return x;
+  }
   static std::string to_string(double x) { return nlohmann::json(x).dump(); }
 };
 

@@ -198,7 +198,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                                                  "S(x(t)) = P_i(t)"),
                                 i);
                     },
-                    131));
+                    131, {true, false, false}));
   r.push_back(entry("hybrid-thm-3.2",
                     "Theorem 3.2 of papers/003 as stated: at every point of side i (h_i = 0), the derivative of S in h_i at "
                     "fixed s_i equals T_i(s_i). Checked at the corners (where the iso-line s_i = 0 is side i-1, so the "
@@ -206,7 +206,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                     "numbers). Cases: Example 3.1 hexagon, Example 2.1, the octagon, random patches",
                     "none (exact values compared point by point; the first mismatch refutes)",
                     [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
-                      if (!acc.rep.proved) return;
+                      if (!acc.rep.holds) return;
                       const auto P = i == 0 ? hybrid_example_3_1_hexagon() : example_or_random(i == 1 ? 0 : i, rng, false);
                       const std::string name = i == 0 ? "Example 3.1 hexagon" : i == 1 ? "Example 2.1" : i == 2 ? "octagon" : "random patch";
                       for (std::size_t s = 0; s < P.sides(); ++s) {
@@ -231,7 +231,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                           }
                       }
                     },
-                    132, false));
+                    132, {false, false, true}));
   r.push_back(entry("hybrid-thm-3.2-corrected",
                     "Theorem 3.2 corrected: (a) at every point x(t), 0 < t < 1, of side i, dS/dh_i at fixed s_i (along the "
                     "iso-line of s_i, a line through the meeting point of sides i-1 and i+1) equals T_i(t), for any ribbon "
@@ -277,7 +277,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                         if (corner_cross_derivative(P, s) != T0) acc.fail("corner V_" + std::to_string(s) + ": -P'_{i-1}(1) != (sigma/tau) T_i(0)", i);
                       }
                     },
-                    133));
+                    133, {true, false, false}));
   r.push_back(entry("hybrid-thm-4.1",
                     "Theorem 4.1 of papers/003 (improved degree elevation S^{d,p} -> S^{d+h,p+1}): per side, (a) Eq. 4.6 "
                     "(Cohen-Lyche-Schumaker, literally) gives exactly the kernel's elevated B-spline coefficients (A5.9) for "
@@ -321,7 +321,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                       }
                       prove_form_unchanged(P, F, G, "elevated", acc, i);
                     },
-                    141));
+                    141, {true, false, false}));
   r.push_back(entry("hybrid-thm-4.2",
                     "Theorem 4.2 of papers/003 (knot insertion): five knots inserted one at a time into U, V (interior) and "
                     "U^b (ribbons) by Eq. 4.8-4.12; per side (a) the coefficients equal the kernel's (A5.1) exactly; (b) the "
@@ -374,7 +374,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                       }
                       prove_form_unchanged(P, F, G, "refined", acc, i);
                     },
-                    142));
+                    142, {true, false, false}));
   r.push_back(entry("hybrid-salvi-elevation",
                     "Salvi's original degree elevation (the Bezier-sided patch's net elevated by Eq. 4.5, a new patch of degree "
                     "d + 1 with the new weights, L_i^* and C_0) gives the same surface, compared exactly at the vertex centroid "
@@ -399,7 +399,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                         }
                       }
                     },
-                    143, false));
+                    143, {false, false, true}));
   return r;
 }
 

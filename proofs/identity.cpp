@@ -14,6 +14,43 @@ std::vector<std::pair<Rational, Rational>> domain_box(const BSpline<Rational>& S
   return box;
 }
 
+PiecewiseShape shape_of(const BSpline<Rational>& S) {
+  PiecewiseShape s;
+  for (int d = 0; d < S.dim(); ++d) {
+    s.breaks.push_back(breakpoints(S.knots[d], S.degrees[d], S.count(d)));
+    s.numerator.push_back(S.degrees[d]);
+    s.denominator.push_back(S.is_rational() ? S.degrees[d] : 0);
+  }
+  return s;
+}
+
+std::vector<std::vector<Rational>> union_cuts(const PiecewiseShape& A, const PiecewiseShape& B,
+                                              const std::vector<std::pair<Rational, Rational>>& box) {
+  std::vector<std::vector<Rational>> cuts;
+  for (std::size_t d = 0; d < box.size(); ++d) {
+    const auto& [lo, hi] = box[d];
+    std::vector<Rational> c;
+    if (lo < hi) {
+      c = {lo, hi};
+      for (const auto* S : {&A, &B})
+        if (d < S->breaks.size())
+          for (const auto& u : S->breaks[d])
+            if (lo < u && u < hi) c.push_back(u);
+      std::sort(c.begin(), c.end());
+      c.erase(std::unique(c.begin(), c.end()), c.end());
+    }
+    cuts.push_back(std::move(c));
+  }
+  return cuts;
+}
+
+std::vector<int> identity_bound(const PiecewiseShape& A, const PiecewiseShape& B) {
+  std::vector<int> b;
+  for (std::size_t d = 0; d < A.numerator.size() && d < B.numerator.size(); ++d)
+    b.push_back(std::max(A.numerator[d] + B.denominator[d], B.numerator[d] + A.denominator[d]));
+  return b;
+}
+
 namespace {
 
 std::string show(const std::vector<Rational>& v) {
@@ -28,7 +65,8 @@ std::string show(const std::vector<Rational>& v) {
 
 IdentityCheck prove_equal_on_box(const BSpline<Rational>& A, const BSpline<Rational>& B,
                                  const std::vector<std::pair<Rational, Rational>>& box,
-                                 const std::vector<AffineMap1>& phi_in, const std::string& identity) {
+                                 const std::vector<AffineMap1>& phi_in, const std::string& identity,
+                                 bool open_cells_only) {
   IdentityCheck r;
   r.identity = identity;
   const int k = A.dim();
@@ -42,6 +80,11 @@ IdentityCheck prove_equal_on_box(const BSpline<Rational>& A, const BSpline<Ratio
   // Cells per direction: breakpoints of A and pulled-back breakpoints of B, clipped to the box.
   std::vector<std::vector<Rational>> cuts(k);
   for (int d = 0; d < k; ++d) {
+    if (!(box[d].first < box[d].second)) {  // empty or inverted: nothing to compare, no verdict
+      cuts.assign(k, {});
+      r.degree_bound.assign(k, 0);
+      break;
+    }
     std::vector<Rational> c{box[d].first, box[d].second};
     for (const auto& u : breakpoints(A.knots[d], A.degrees[d], A.count(d))) c.push_back(u);
     for (const auto& u : breakpoints(B.knots[d], B.degrees[d], B.count(d))) c.push_back(phi[d].inverse(u));
@@ -65,39 +108,51 @@ IdentityCheck prove_equal_on_box(const BSpline<Rational>& A, const BSpline<Ratio
     }
     return same ? std::string() : "left " + show(a) + ", right " + show(b) + " (homogeneous)";
   };
-  IdentityCheck res = prove_by_samples(cuts, r.degree_bound, mismatch, identity);
+  SampleEnds ends;
+  bool reversing = false;
+  for (const auto& m : phi) reversing = reversing || m.scale < 0;
+  if (!open_cells_only && !reversing) {
+    ends.lower = true;
+    ends.upper = true;
+    for (int d = 0; d < k; ++d) ends.upper = ends.upper && box[d].second == A.domain_hi(d);
+  }
+  IdentityCheck res = prove_by_samples(cuts, r.degree_bound, mismatch, identity, ends);
   return res;
 }
 
 IdentityCheck prove_by_samples(const std::vector<std::vector<Rational>>& cuts, const std::vector<int>& degree_bound,
                                const std::function<std::string(const std::vector<Rational>&)>& mismatch,
-                               const std::string& identity) {
+                               const std::string& identity, SampleEnds ends) {
   IdentityCheck r;
   r.identity = identity;
   r.degree_bound = degree_bound;
   const int k = static_cast<int>(cuts.size());
-  std::vector<std::vector<std::vector<Rational>>> samples(k);
+  // Per direction the flat list of sample values: per cell (its lower end), d+1 interior points;
+  // then (the upper end).
+  std::vector<std::vector<Rational>> samples(k);
   std::size_t ncells = 1;
   for (int d = 0; d < k; ++d) {
-    const int deg = degree_bound[d];
-    for (std::size_t c = 0; c + 1 < cuts[d].size(); ++c) {
-      std::vector<Rational> s;
-      const Rational lo = cuts[d][c], w = cuts[d][c + 1] - lo;
-      for (int i = 0; i <= deg; ++i) s.push_back(lo + w * Rational(i + 1, deg + 2));
-      samples[d].push_back(std::move(s));
+    if (degree_bound[d] < 0) {  // nothing to sample is no proof
+      ncells = 0;
+      break;
     }
-    ncells *= samples[d].size();
+    const int deg = degree_bound[d];
+    std::size_t cells = 0;
+    for (std::size_t c = 0; c + 1 < cuts[d].size(); ++c, ++cells) {
+      const Rational lo = cuts[d][c], w = cuts[d][c + 1] - lo;
+      if (ends.lower) samples[d].push_back(lo);
+      for (int i = 0; i <= deg; ++i) samples[d].push_back(lo + w * Rational(i + 1, deg + 2));
+    }
+    if (ends.upper && cells > 0) samples[d].push_back(cuts[d].back());
+    ncells *= cells;
   }
   r.cells = ncells;
   if (ncells == 0) return r;
   std::vector<std::size_t> per(k), idx(k, 0);
-  for (int d = 0; d < k; ++d) per[d] = samples[d].size() * (degree_bound[d] + 1);
+  for (int d = 0; d < k; ++d) per[d] = samples[d].size();
   std::vector<Rational> x(k);
   while (true) {
-    for (int d = 0; d < k; ++d) {
-      const std::size_t deg1 = degree_bound[d] + 1;
-      x[d] = samples[d][idx[d] / deg1][idx[d] % deg1];
-    }
+    for (int d = 0; d < k; ++d) x[d] = samples[d][idx[d]];
     ++r.points;
     const std::string why = mismatch(x);
     if (!why.empty()) {

@@ -15,16 +15,41 @@ struct ProofReport {
   std::string identity;
   std::string degree_bound;   // e.g. "max(p, p') per direction, up to 7"
   std::size_t cases = 0;
-  std::size_t points = 0;     // exact evaluations compared, all cases
+  std::size_t points = 0;     // exact evaluations (or coefficients) compared, all cases
   std::size_t cells = 0;
-  bool proved = true;
+  bool holds = true;           // no counterexample found
+  // The claim is only checked pointwise (no degree bound and cells cover it): the verdict is then
+  // "checked at N points", never "proved".
+  bool sampled = false;
+  std::string undecided;       // non-empty: nothing (or not everything) could be decided, and why
   std::string counterexample;  // first failing case, exact
+  std::vector<std::string> structures;  // input structures the cases contained (structured generator)
   // A claim from a paper that splinex shows false (e.g. hybrid-thm-3.2 as stated) is expected to
   // be refuted: the run succeeds when every verdict is the expected one.
   bool expect_proved = true;
-  bool as_expected() const { return proved == expect_proved; }
+
+  bool refuted() const { return !holds; }
+  bool is_undecided() const { return holds && !undecided.empty(); }
+  // "proved", "checked at N points", "refuted" or "undecided".
+  std::string verdict_word() const {
+    if (!holds) return "refuted";
+    if (!undecided.empty()) return "undecided";
+    return sampled ? "checked at " + std::to_string(points) + " points" : "proved";
+  }
+  // The JSON verdict: proved, checked, refuted or undecided.
+  std::string verdict_key() const {
+    if (!holds) return "refuted";
+    if (!undecided.empty()) return "undecided";
+    return sampled ? "checked" : "proved";
+  }
+  bool as_expected() const { return undecided.empty() ? holds == expect_proved : false; }
+  // One line: the verdict with the surprise marked ("refuted (expected)", "proved (UNEXPECTED:
+  // expected to be refuted)", "REFUTED", "undecided: why").
   std::string verdict() const {
-    return std::string(proved ? "proved" : "refuted") + (as_expected() ? "" : expect_proved ? " (UNEXPECTED: should prove)" : " (UNEXPECTED: should refute)");
+    std::string v = verdict_word();
+    if (is_undecided()) return v + ": " + undecided;
+    if (!holds) return expect_proved ? "REFUTED" : "refuted (expected)";
+    return expect_proved ? v : v + " (UNEXPECTED: expected to be refuted)";
   }
 };
 

@@ -33,15 +33,21 @@ std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& li
     const int p = B.degrees[d];
     const std::vector<T> bp = breakpoints(B.knots[d], p, B.count(d));
     std::vector<BezierPiece<T>> next;
-    // Direction-0-fastest ordering: later directions form the outer loop.
-    for (std::size_t seg = 0; seg + 1 < bp.size(); ++seg)
+    // Direction-0-fastest ordering: later directions form the outer loop. The piece on
+    // [bp[seg], bp[seg+1]) is carried by the p+1 control points before the end of its knot span s
+    // (U[s] <= bp[seg] < U[s+1]): points s-p..s. Counting from seg*p would assume every interior
+    // breakpoint has multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
+    const std::size_t n = B.count(d);
+    for (std::size_t seg = 0; seg + 1 < bp.size(); ++seg) {
+      const std::size_t first = find_span(B.knots[d], p, n, bp[seg]) - static_cast<std::size_t>(p);
       for (const auto& piece : pieces) {
         std::vector<T> knots(p + 1, bp[seg]);
         knots.insert(knots.end(), p + 1, bp[seg + 1]);
-        BezierPiece<T> np{piece.box, slice_direction(piece.spline, d, seg * p, p + 1, std::move(knots))};
+        BezierPiece<T> np{piece.box, slice_direction(piece.spline, d, first, p + 1, std::move(knots))};
         np.box.emplace_back(bp[seg], bp[seg + 1]);
         next.push_back(std::move(np));
       }
+    }
     pieces = std::move(next);
   }
   return pieces;

@@ -32,8 +32,11 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner,
 // Composition of B-splines T(S) when every Bezier piece of S lies in one polynomial piece of T
 // (decided exactly on the convex hull of the piece's control points): each piece of S is composed
 // with the piece of T that contains it, and the results are joined into one B-spline on S's
-// domain, with S's breakpoints as knots of multiplicity D_l (C^0 joins). A piece that crosses a
-// knot line of T needs trimmed composition (Algorithm 1): DomainError naming the knot. S leaving
+// domain, with S's breakpoints as knots of multiplicity D_l (C^0 joins), or D_l + 1 where T(S)
+// may jump: S has a knot of multiplicity d_l + 1 there, D_l = 0, or the two sides lie in pieces
+// of T separated by a knot of T of multiplicity e_j + 1. A piece that crosses a knot line of T
+// needs trimmed composition (Algorithm 1): DomainError naming the knot; so does a piece that
+// reaches a knot line where T may jump from below at a parameter it owns. S leaving
 // T's domain: DomainError naming how far, unless `expand` (then the nearest end piece of T is
 // used as a polynomial on all of R^n, Observation 1).
 struct CompositionOptions {

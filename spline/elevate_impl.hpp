@@ -125,6 +125,46 @@ CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, 
   return out;
 }
 
+// Elevation of a clamped block by t with A5.9, extended to the whole legal input: A5.9 (like
+// the book's text) assumes degree p >= 1 and interior multiplicities <= p. A knot of
+// multiplicity p+1 separates two independent curves (the spline may jump there), and a degree-0
+// curve has such a knot at every breakpoint. So the block is cut at those knots, each part is
+// elevated on its own (a constant piece of degree 0 becomes t+1 equal points), and the parts are
+// joined again, the shared knot now of multiplicity p+t+1 (the inverse of split_at).
+template <class T>
+CurveBlock<T> degree_elevate_curve_any(int p, const std::vector<T>& U, const T* Pw, std::size_t count, std::size_t mm,
+                                       int t) {
+  const std::size_t run = static_cast<std::size_t>(p) + 1;
+  // Start indices (into U, = first control point of the part) of each part.
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = run; i < count;) {
+    std::size_t j = i;
+    while (j + 1 < U.size() && U[j + 1] == U[i]) ++j;
+    if (j - i + 1 == run) starts.push_back(i);
+    i = j + 1;
+  }
+  if (starts.size() == 1 && p > 0) return degree_elevate_curve(p, U, Pw, count, mm, t);
+  starts.push_back(count);
+  CurveBlock<T> out;
+  out.p = p + t;
+  for (std::size_t part = 0; part + 1 < starts.size(); ++part) {
+    const std::size_t first = starts[part], n = starts[part + 1] - first;
+    CurveBlock<T> piece;
+    if (p == 0) {  // one constant span [U[first], U[first+1]]
+      piece.U.assign(t + 1, U[first]);
+      piece.U.insert(piece.U.end(), t + 1, U[first + 1]);
+      for (int c = 0; c <= t; ++c) piece.P.insert(piece.P.end(), Pw + first * mm, Pw + (first + 1) * mm);
+    } else {
+      const std::vector<T> V(U.begin() + first, U.begin() + first + n + run);
+      piece = degree_elevate_curve(p, V, Pw + first * mm, n, mm, t);
+    }
+    // Join: the part's leading run of p+t+1 knots is the previous part's trailing run.
+    out.U.insert(out.U.end(), piece.U.begin() + (part == 0 ? 0 : p + t + 1), piece.U.end());
+    out.P.insert(out.P.end(), std::make_move_iterator(piece.P.begin()), std::make_move_iterator(piece.P.end()));
+  }
+  return out;
+}
+
 // The polar form (blossom) of the polynomial piece of a degree-p block on span s, evaluated at
 // x[0..p-1]: de Boor's triangle with argument x[r-1] at level r.
 template <class T>
@@ -195,7 +235,7 @@ BSpline<T> elevate_degree(const BSpline<T>& S, int d, int t, ElevationMethod met
   BSpline<T> C = clamp(S, d, limits);
   if (method == ElevationMethod::bezier_pieces)
     return apply_along(C, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
-      return detail::degree_elevate_curve(p, U, P, n, m, t);
+      return detail::degree_elevate_curve_any(p, U, P, n, m, t);
     });
   for (int step = 0; step < t; ++step)
     C = apply_along(C, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {

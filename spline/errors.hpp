@@ -27,5 +27,8 @@ class DomainError : public Error { using Error::Error; };
 class SizeLimitError : public Error { using Error::Error; };
 // An unknown arithmetic, operation or option value.
 class UsageError : public Error { using Error::Error; };
+// A value a floating arithmetic cannot hold (overflow, a weight underflowing to 0), or a rounding
+// that would change the input's structure (distinct knots becoming equal).
+class RangeError : public Error { using Error::Error; };
 
 }  // namespace splinex

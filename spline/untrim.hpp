@@ -208,9 +208,15 @@ std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Seg2<T>>& seg
 }
 
 // Trapezoids (in sweep order) with labels merged into tiles: a trapezoid continues a tile of the
-// same label whose right side is exactly its left side. Labels < 0 are dropped (outside).
+// same label whose right side is exactly its left side, unless that side lies on one of the
+// vertical `barriers` (the knot lines x = k of a surface the tiles are composed into: a tile must
+// not cross them). Labels < 0 are dropped (outside).
 template <class T>
-std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, const std::vector<int>& labels) {
+std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, const std::vector<int>& labels,
+                                      std::vector<T> barriers = {}) {
+  const auto less = [](const T& a, const T& b) { return a < b; };
+  std::sort(barriers.begin(), barriers.end(), less);
+  const auto on_barrier = [&](const T& x) { return std::binary_search(barriers.begin(), barriers.end(), x, less); };
   std::vector<Tile<T>> tiles;
   // Open tiles keyed by their right side (x, yb, yt) in a map ordered by comparisons only.
   struct Key {
@@ -230,7 +236,7 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
   for (std::size_t i = 0; i < traps.size(); ++i) {
     if (labels[i] < 0) continue;
     const auto& z = traps[i];
-    const auto it = open.find(Key{z.x0, z.yb0, z.yt0, labels[i]});
+    const auto it = on_barrier(z.x0) ? open.end() : open.find(Key{z.x0, z.yb0, z.yt0, labels[i]});
     std::size_t t;
     if (it != open.end()) {
       t = it->second;

@@ -169,8 +169,12 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
   }
   const T x0 = cv(D.lo[0]), x1 = cv(D.hi[0]), y0 = cv(D.lo[1]), y1 = cv(D.hi[1]);
   std::vector<Seg2<T>> segs{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x0, y1}, {x1, y1}}, {{x0, y0}, {x0, y1}}};
+  std::vector<T> barriers;
   for (const auto& k : knot_lines[0])
-    if (D.lo[0] < k && k < D.hi[0]) segs.push_back({{cv(k), y0}, {cv(k), y1}});
+    if (D.lo[0] < k && k < D.hi[0]) {
+      segs.push_back({{cv(k), y0}, {cv(k), y1}});
+      barriers.push_back(cv(k));
+    }
   for (const auto& k : knot_lines[1])
     if (D.lo[1] < k && k < D.hi[1]) segs.push_back({{x0, cv(k)}, {x1, cv(k)}});
   std::vector<std::vector<Vec2<T>>> loops;
@@ -189,7 +193,7 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
     for (const auto& P : loops) depth += inside(P, m) ? 1 : 0;
     labels[z] = depth % 2 == 1 ? 0 : -1;
   }
-  return merge_trapezoids(traps, labels);
+  return merge_trapezoids(traps, labels, barriers);
 }
 
 std::vector<int> loop_signs(const TrimmedDomain& D) {
