@@ -61,6 +61,25 @@ struct ProofEntry {
 
 const std::vector<ProofEntry>& proof_registry();
 
+namespace proof_detail {
+// Test seam: a bug planted into every operation result the kernel and composition proofs check
+// (insertion, refinement, elevation, extraction, split, reparametrization, reversal, clamping,
+// hodograph, Bezier and B-spline composition), so tests can show that each proof refutes a
+// wrong result. Never set outside tests.
+using PlantedBug = std::function<void(BSpline<Rational>&)>;
+class ScopedPlantedBug {
+ public:
+  explicit ScopedPlantedBug(PlantedBug bug);
+  ~ScopedPlantedBug();
+  ScopedPlantedBug(const ScopedPlantedBug&) = delete;
+  ScopedPlantedBug& operator=(const ScopedPlantedBug&) = delete;
+
+ private:
+  PlantedBug previous_;
+};
+BSpline<Rational> planted(BSpline<Rational> R);
+}  // namespace proof_detail
+
 // Runs the named proofs (all when `names` is empty); unknown names throw UsageError.
 std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases = 12);
 

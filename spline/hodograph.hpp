@@ -13,15 +13,24 @@ BSpline<T> hodograph(const BSpline<T>& S, int d) {
     throw UsageError("spline", "the hodograph of a rational spline is not a B-spline", "use derivative()");
   if (S.degrees[d] == 0) throw UsageError("degrees", "a degree-0 spline has no hodograph here", "elevate first");
   return apply_along(S, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
+    // Q_i on knots U_1..U_{m-1}. At a knot of multiplicity p+1 (the spline may jump there)
+    // U_{i+1} = ... = U_{i+p+1}: that degree-(p-1) basis function is zero, so Q_i and one copy of
+    // the knot are dropped; the knot keeps multiplicity p = (p-1)+1, and the derivative may jump.
     CurveBlock<T> out;
     out.p = p - 1;
     out.U.assign(U.begin() + 1, U.end() - 1);
-    out.P.resize((n - 1) * m);
+    std::vector<char> drop(n - 1, 0);
     for (std::size_t i = 0; i + 1 < n; ++i) {
       const T den = U[i + p + 1] - U[i + 1];
-      const T f = (den == T(0)) ? T(0) : T(p) / den;  // 0/0: the basis function vanishes
-      for (std::size_t c = 0; c < m; ++c) out.P[i * m + c] = f * (P[(i + 1) * m + c] - P[i * m + c]);
+      if (den == T(0)) {
+        drop[i] = 1;
+        continue;
+      }
+      const T f = T(p) / den;
+      for (std::size_t c = 0; c < m; ++c) out.P.push_back(f * (P[(i + 1) * m + c] - P[i * m + c]));
     }
+    for (std::size_t i = n - 1; i-- > 0;)  // from the back, so earlier indices stay valid
+      if (drop[i]) out.U.erase(out.U.begin() + static_cast<std::ptrdiff_t>(i));
     return out;
   });
 }
