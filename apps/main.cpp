@@ -38,7 +38,7 @@ struct OpOptions {
   std::string knots;
   std::string insert_method = "a54";
   int by = 1;
-  std::string elevate_method = "a59";
+  std::string elevate_method = "auto";
   std::string at;
   std::string interval;
 };
@@ -52,8 +52,10 @@ void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
         ->capture_default_str();
   } else if (kind == "elevate") {
     c->add_option("--by", o.by, "elevate the degree by this amount")->required();
-    c->add_option("--method", o.elevate_method, "a59 (NURBS Book, via Bezier pieces) or blossom")
-        ->check(CLI::IsMember({"a59", "blossom"}))
+    c->add_option("--method", o.elevate_method,
+                  "auto (a59 in exact arithmetic, blossom in floating point: fewer bits lost), a59 (NURBS Book, "
+                  "via Bezier pieces) or blossom")
+        ->check(CLI::IsMember({"auto", "a59", "blossom"}))
         ->capture_default_str();
   } else if (kind == "split") {
     c->add_option("--at", o.at, "split parameter")->required();
@@ -73,6 +75,7 @@ sx::Operation make_op(const std::string& kind, const OpOptions& o) {
     case sx::Operation::Kind::elevate:
       op.by = o.by;
       op.method = o.elevate_method == "blossom" ? sx::ElevationMethod::blossom : sx::ElevationMethod::bezier_pieces;
+      op.method_auto = o.elevate_method == "auto";
       break;
     case sx::Operation::Kind::split: op.at = sx::parse_number(o.at, "at"); break;
     case sx::Operation::Kind::reparametrize: {
@@ -555,7 +558,8 @@ int main(int argc, char** argv) {
     if (c_cross->parsed()) {
       const auto S = sx::spline_from_json(sx::read_json_file(cc_file), limits);
       OpOptions o = cc_opts;
-      if (cc_op == "elevate") o.elevate_method = (cc_opts.insert_method == "blossom") ? "blossom" : "a59";
+      if (cc_op == "elevate")
+        o.elevate_method = cc_opts.insert_method == "blossom" ? "blossom" : cc_opts.insert_method == "a59" ? "a59" : "auto";
       if (cc_op == "insert-knots" && cc_opts.knots.empty())
         throw sx::UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
       const auto rep = sx::crosscheck(make_op(cc_op, o), S, sx::ArithSpec::parse(cc_float, "float"), cc_grid, limits);

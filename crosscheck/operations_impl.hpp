@@ -14,7 +14,11 @@ std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, 
       for (const auto& x : X) R = insert_knot(R, op.dir, x, 1, limits);
       return {R};
     }
-    case Operation::Kind::elevate: return {elevate_degree(S, op.dir, op.by, op.method, limits)};
+    case Operation::Kind::elevate: {
+      const ElevationMethod m = !op.method_auto ? op.method : ArithTraits<T>::exact ? ElevationMethod::bezier_pieces
+                                                                                     : ElevationMethod::blossom;
+      return {elevate_degree(S, op.dir, op.by, m, limits)};
+    }
     case Operation::Kind::extract_bezier: {
       std::vector<BSpline<T>> out;
       for (auto& pc : extract_bezier(S, limits)) out.push_back(std::move(pc.spline));
