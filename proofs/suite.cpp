@@ -202,7 +202,7 @@ std::vector<ProofEntry> make_registry() {
                       const int d = random_dir(S, rng);
                       const int t = 1 + static_cast<int>(rng() % 3);
                       compare_nets(acc, elevate_degree(S, d, t, ElevationMethod::bezier_pieces),
-                                   elevate_degree(S, d, t, ElevationMethod::blossom), "the control nets differ", i);
+                                   planted(elevate_degree(S, d, t, ElevationMethod::blossom)), "the control nets differ", i);
                     }, 106));
   r.push_back(entry("bezier-extraction", "every Bezier piece = S on its box, and the boxes tile the domain", same,
                     [](const BSpline<Rational>& S, std::mt19937_64&, Accumulator& acc, std::size_t i) {
@@ -306,15 +306,13 @@ std::vector<ProofEntry> make_registry() {
                     "de Boor's algorithm (A3.1, direction by direction) = the basis-function sum (A2.2), exactly",
                     "p per direction (2p for rational: cross-multiplied)",
                     [](const BSpline<Rational>& S, std::mt19937_64&, Accumulator& acc, std::size_t i) {
-                      std::vector<std::vector<Rational>> cuts;
-                      std::vector<int> bound;
-                      for (int e = 0; e < S.dim(); ++e) {
-                        cuts.push_back(breakpoints(S.knots[e], S.degrees[e], S.count(e)));
-                        bound.push_back(S.is_rational() ? 2 * S.degrees[e] : S.degrees[e]);
-                      }
+                      const BSpline<Rational> Sd = planted(S);  // the spline de Boor's triangle evaluates
+                      // Both sides' cells and degrees (the same spline unless a bug is planted).
+                      const auto cuts = union_cuts(shape_of(S), shape_of(Sd), domain_box(S));
+                      const auto bound = identity_bound(shape_of(S), shape_of(Sd));
                       acc.add(prove_by_samples(cuts, bound,
                                                [&](const std::vector<Rational>& x) {
-                                                 return evaluate(S, x) == evaluate_de_boor(S, x)
+                                                 return evaluate(S, x) == evaluate_de_boor(Sd, x)
                                                             ? std::string()
                                                             : std::string("A2.2 and de Boor differ");
                                                },
@@ -459,6 +457,13 @@ std::vector<ProofEntry> make_registry() {
                         }
                       }
                       validate(S);
+                      std::vector<std::string> tags;
+                      if (outer_jumps) tags.push_back("outer C^-1 (jumps)");
+                      if (inner_jumps) tags.push_back("inner C^-1 (jumps)");
+                      if (T.is_rational()) tags.push_back("rational outer");
+                      for (int e : T.degrees)
+                        if (e == 0) tags.push_back("outer degree 0");
+                      acc.structures(tags);
                       const auto R = planted(compose(T, S));
                       // T(S) is one polynomial (rational) map per piece of S (each piece in one cell
                       // of T, checked by compose): cells from S's and R's breakpoints, bound from the
@@ -520,7 +525,8 @@ std::vector<ProofEntry> make_registry() {
                           for (int c = 0; c < n; ++c)
                             S.points[unit[l] * n + c] = S.points[c] + (S.points[unit[l] * n + c] - S.points[c]) / k;
                       }
-                      const auto C = compose_trimmed(T, S);
+                      auto C = compose_trimmed(T, S);
+                      for (auto& patch : C.patches) patch.patch = planted(patch.patch);
                       std::size_t checked = 0;
                       auto check = [&](const std::vector<Rational>& r) -> bool {
                         ++checked;
@@ -626,7 +632,8 @@ std::vector<ProofEntry> make_registry() {
                       for (int b = 0; b <= 1; ++b)
                         for (int a = 0; a <= 1; ++a)
                           for (int d = 0; d < 2; ++d) S.points.push_back(c[d] + e1[d] * a + e2[d] * b);
-                      const auto A = compose_tensor(T, S);
+                      auto A = compose_tensor(T, S);
+                      for (auto& tile : A.tiles) tile.R = planted(tile.R);
                       if (A.curved_boundaries != 0) acc.fail("a curved trimming curve for affine S", i);
                       // Cover: per inner piece.
                       std::vector<std::vector<Polygon>> polys(A.trimmed.inner_pieces.size());
@@ -657,8 +664,10 @@ std::vector<ProofEntry> make_registry() {
                       const int dT = T.degrees[0] + T.degrees[1];
                       for (std::size_t k = 0; k < A.tiles.size(); ++k) {
                         const auto& t = A.tiles[k];
-                        const std::vector<int> bound{std::max(t.R.degrees[0], dT), std::max(t.R.degrees[1], dT)};
-                        acc.add(prove_by_samples({t.tile.x, {Rational(0), Rational(1)}}, bound,
+                        // Both sides: T(S(Q)) (Q's cells, degree dT) and R (its own cells and degrees).
+                        PiecewiseShape tsq{{t.tile.x, {Rational(0), Rational(1)}}, {dT, dT}, {0, 0}};
+                        const auto cuts = union_cuts(tsq, shape_of(t.R), {{t.tile.x.front(), t.tile.x.back()}, {Rational(0), Rational(1)}});
+                        acc.add(prove_by_samples(cuts, identity_bound(tsq, shape_of(t.R)),
                                                  [&](const std::vector<Rational>& xl) -> std::string {
                                                    const auto a = A.evaluate_tile(k, xl);
                                                    const auto b = evaluate(T, evaluate(S, evaluate(t.Q, xl)));
@@ -726,10 +735,12 @@ std::vector<ProofEntry> make_registry() {
                       co.expand = true;
                       for (std::size_t k = 0; k < tiles.size(); ++k) {
                         const auto Q = tile_spline(tiles[k]);
-                        const auto R = compose(T, Q, co);
+                        const auto R = planted(compose(T, Q, co));
                         const int dT = p0 + p1;
-                        const std::vector<int> bound{std::max(R.degrees[0], dT * Q.degrees[0]), std::max(R.degrees[1], dT)};
-                        acc.add(prove_by_samples({tiles[k].x, {Rational(0), Rational(1)}}, bound,
+                        // Both sides: T(Q) (Q's cells, degree (dT deg_x Q, dT)) and R (its own).
+                        PiecewiseShape tq{{tiles[k].x, {Rational(0), Rational(1)}}, {dT * Q.degrees[0], dT}, {0, 0}};
+                        const auto cuts = union_cuts(tq, shape_of(R), {{tiles[k].x.front(), tiles[k].x.back()}, {Rational(0), Rational(1)}});
+                        acc.add(prove_by_samples(cuts, identity_bound(tq, shape_of(R)),
                                                  [&](const std::vector<Rational>& xl) -> std::string {
                                                    if (evaluate(R, xl) == evaluate(T, evaluate(Q, xl))) return "";
                                                    return "tile " + std::to_string(k) + " at (" + to_fraction_string(xl[0]) + ", " +
@@ -823,7 +834,7 @@ std::vector<ProofEntry> make_registry() {
                       const FlintRational xf(x);
                       const int t = 1 + static_cast<int>(rng() % 3);
                       const int once = multiplicity(S.knots[d], x) < static_cast<std::size_t>(S.degrees[d]) + 1 ? 1 : 0;
-                      compare_nets(acc, insert_knot(S, d, x, once), back(insert_knot(F, d, xf, once)), "insertion differs", i);
+                      compare_nets(acc, insert_knot(S, d, x, once), planted(back(insert_knot(F, d, xf, once))), "insertion differs", i);
                       const auto X2 = legal_insertions(S, d, {x, x});
                       std::vector<FlintRational> X2f;
                       for (const auto& v : X2) X2f.emplace_back(v);
@@ -882,7 +893,7 @@ std::vector<ProofEntry> make_registry() {
             phi[1].shift = -Rational(static_cast<long>(J));
             const std::vector<std::pair<Rational, Rational>> box{{Rational(static_cast<long>(I)), Rational(static_cast<long>(I + 1))},
                                                                 {Rational(static_cast<long>(J)), Rational(static_cast<long>(J + 1))}};
-            acc.add(prove_equal_on_box(t.surface, patches[t.grid[J][I]], box, phi, ""), case_no);
+            acc.add(prove_equal_on_box(planted(t.surface), patches[t.grid[J][I]], box, phi, ""), case_no);
           }
         ++acc.rep.cases;
         ++case_no;

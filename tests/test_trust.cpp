@@ -211,16 +211,21 @@ void spike(BSpline<Rational>& R) {
 }
 }  // namespace
 
-TEST_CASE("planted bugs: every kernel and composition proof refutes them with an exact counterexample") {
+TEST_CASE("planted bugs: every kernel, composition, untrimming and teapot proof refutes them with an exact counterexample") {
   using proof_detail::ScopedPlantedBug;
   const std::vector<std::pair<const char*, proof_detail::PlantedBug>> bugs{
       {"offset after a C^-1 knot", offset_after_jump}, {"skipped knot", skip_a_knot}, {"dropped weight", drop_weights}, {"spike cell", spike}};
   for (const char* name : {"knot-insertion-boehm", "knot-refinement-a54", "insertion-agreement", "degree-elevation-a59",
                            "degree-elevation-blossom", "bezier-extraction", "split", "reparametrize", "reverse", "clamp",
-                           "derivative-hodograph", "compose-methods-agree", "compose-identity", "compose-bspline"}) {
+                           "derivative-hodograph", "compose-methods-agree", "compose-identity", "compose-bspline",
+                           "elevation-agreement", "evaluation-deboor", "flint-agreement", "compose-trimmed", "untrim-cover",
+                           "untrim-curved-cover", "teapot-merge"}) {
     for (const auto& [what, bug] : bugs) {
+      // compose-trimmed is a sampled check ("checked at N points"): a spike narrower than its grid
+      // is exactly what it cannot see, and why it does not say "proved".
+      if (std::string(name) == "compose-trimmed" && std::string(what) == "spike cell") continue;
       ScopedPlantedBug planted(bug);
-      const auto r = run_proofs({name}, 6).at(0);
+      const auto r = run_proofs({name}, std::string(name) == "teapot-merge" ? 1 : 6).at(0);
       INFO(name << " with a " << what << ": " << r.verdict());
       CHECK(r.refuted());
       CHECK(r.counterexample.find("case ") == 0);
