@@ -12,8 +12,32 @@
 namespace splinex::proof_detail {
 
 namespace {
+bool& hybrid_bug() {
+  static bool on = false;
+  return on;
+}
+}  // namespace
+
+ScopedPlantedHybridBug::ScopedPlantedHybridBug() : previous_(hybrid_bug()) { hybrid_bug() = true; }
+ScopedPlantedHybridBug::~ScopedPlantedHybridBug() { hybrid_bug() = previous_; }
+
+namespace {
 
 using Point2 = std::array<Rational, 2>;
+
+// The patch (or form) under test, with the planted bug when a test asked for it.
+HybridPatch<Rational> planted_patch(HybridPatch<Rational> P) {
+  if (hybrid_bug())
+    for (int k = 0; k < P.layers(); ++k)
+      for (int j = 0; j <= P.d; ++j)
+        for (int c = 0; c < P.q; ++c) P.points[P.index(0, j, k) + c] += Rational((k + 1) * (j + 1), 7);
+  return P;
+}
+void plant_form(HybridForm<Rational>& G) {
+  if (!hybrid_bug()) return;
+  for (auto& x : G.sides[0].interior) x += Rational(1, 7);
+  for (auto& x : G.sides[0].P) x += Rational(1, 7);
+}
 
 std::string fr(const Rational& x) { return to_fraction_string(x); }
 
@@ -92,6 +116,15 @@ std::vector<Rational> distinct(const std::vector<Rational>& U) {
   return c;
 }
 
+// The distinct values of two sorted knot vectors together.
+std::vector<Rational> merged(const std::vector<Rational>& U, const std::vector<Rational>& V) {
+  std::vector<Rational> m = distinct(U), n = distinct(V);
+  m.insert(m.end(), n.begin(), n.end());
+  std::sort(m.begin(), m.end());
+  m.erase(std::unique(m.begin(), m.end()), m.end());
+  return m;
+}
+
 Point2 on_side(const HybridPatch<Rational>& P, std::size_t s, const Rational& t) {
   const auto& A = P.vertices[s];
   const auto& B = P.vertices[(s + 1) % P.sides()];
@@ -127,7 +160,8 @@ void prove_form_unchanged(const HybridPatch<Rational>& P, const HybridForm<Ratio
   for (std::size_t s = 0; s < P.sides(); ++s) {
     const auto& A = F.sides[s];
     const auto& B = G.sides[s];
-    acc.add(prove_by_samples({distinct(B.U), distinct(B.V)}, {B.du, B.dh},
+    // Cells and bounds from both sides: the original form's (the input) and the new one's.
+    acc.add(prove_by_samples({merged(A.U, B.U), merged(A.V, B.V)}, {std::max(A.du, B.du), std::max(A.dh, B.dh)},
                              [&](const std::vector<Rational>& y) -> std::string {
                                return hybrid_form_interior(B, P.q, y[0], y[1]) == hybrid_form_interior(A, P.q, y[0], y[1])
                                           ? ""
@@ -136,7 +170,7 @@ void prove_form_unchanged(const HybridPatch<Rational>& P, const HybridForm<Ratio
                              what + " interior = interior"),
             i);
     for (int hh = 0; hh <= 1; ++hh)
-      acc.add(prove_by_samples({distinct(B.Ub)}, {B.p},
+      acc.add(prove_by_samples({merged(A.Ub, B.Ub)}, {std::max(A.p, B.p)},
                                [&](const std::vector<Rational>& y) -> std::string {
                                  return hybrid_form_ribbon(B, P.q, y[0], Rational(hh)) == hybrid_form_ribbon(A, P.q, y[0], Rational(hh))
                                             ? ""
@@ -184,6 +218,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                     [](const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
                       const auto P = example_or_random(i, rng, false);
                       const int degD = denominator_degree(P);
+                      const auto Pt = planted_patch(P);  // the patch whose evaluation is under test
                       for (std::size_t s = 0; s < P.sides(); ++s)
                         acc.add(prove_by_samples({distinct(P.knots[s])}, {degD + P.p[s]},
                                                  [&](const std::vector<Rational>& t) -> std::string {
@@ -192,7 +227,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                                                    if (L.s[s] != t[0] || L.h[s] != 0)
                                                      return "side " + std::to_string(s) + ": (s, h) = (" + fr(L.s[s]) + ", " + fr(L.h[s]) +
                                                             ") at t = " + fr(t[0]);
-                                                   if (hybrid_evaluate(P, x) == hybrid_boundary(P, s, t[0])) return "";
+                                                   if (hybrid_evaluate(Pt, x) == hybrid_boundary(P, s, t[0])) return "";
                                                    return "side " + std::to_string(s) + " at t = " + fr(t[0]);
                                                  },
                                                  "S(x(t)) = P_i(t)"),
@@ -250,10 +285,11 @@ std::vector<ProofEntry> hybrid_proofs() {
                                      : i == 1 ? hybrid_example_3_1_hexagon()
                                               : random_hybrid(rng, pick(3, 5), pick(3, 4), 3, false);
                       const int degD = denominator_degree(P), n = static_cast<int>(P.sides());
+                      const auto Pt = planted_patch(P);  // the patch whose derivative is under test
                       for (std::size_t s = 0; s < P.sides(); ++s) {
                         acc.add(prove_by_samples({distinct(P.knots[s])}, {2 * degD + 2 * (n - 2) + P.p[s]},
                                                  [&](const std::vector<Rational>& t) -> std::string {
-                                                   const auto C = hybrid_cross_derivative(P, s, on_side(P, s, t[0]));
+                                                   const auto C = hybrid_cross_derivative(Pt, s, on_side(P, s, t[0]));
                                                    if (C.value == hybrid_cross_tangent(P, s, t[0])) return "";
                                                    return "side " + std::to_string(s) + " at t = " + fr(t[0]) + ": dS/dh = " + pt(C.value) +
                                                           ", T_i = " + pt(hybrid_cross_tangent(P, s, t[0]));
@@ -319,6 +355,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                                        std::to_string(S0.count_b()) + " ribbon coefficients (want 21, 5, 22)",
                                    i);
                       }
+                      plant_form(G);
                       prove_form_unchanged(P, F, G, "elevated", acc, i);
                     },
                     141, {true, false, false}));
@@ -372,6 +409,7 @@ std::vector<ProofEntry> hybrid_proofs() {
                         }
                         G = H;
                       }
+                      plant_form(G);
                       prove_form_unchanged(P, F, G, "refined", acc, i);
                     },
                     142, {true, false, false}));

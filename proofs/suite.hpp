@@ -78,6 +78,19 @@ class ScopedPlantedBug {
   PlantedBug previous_;
 };
 BSpline<Rational> planted(BSpline<Rational> R);
+// The same for the hybrid-patch proofs (Theorems 3.1, 3.2 corrected, 4.1, 4.2): while alive, the
+// patch or form under test has the control points of side 0 moved ((k+1)(j+1)/7 for column j,
+// layer k; the form: by 1/7) (tests only).
+class ScopedPlantedHybridBug {
+ public:
+  ScopedPlantedHybridBug();
+  ~ScopedPlantedHybridBug();
+  ScopedPlantedHybridBug(const ScopedPlantedHybridBug&) = delete;
+  ScopedPlantedHybridBug& operator=(const ScopedPlantedHybridBug&) = delete;
+
+ private:
+  bool previous_;
+};
 }  // namespace proof_detail
 
 // Runs the named proofs (all when `names` is empty); unknown names throw UsageError.

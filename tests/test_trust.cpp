@@ -231,6 +231,13 @@ TEST_CASE("planted bugs: every kernel, composition, untrimming and teapot proof 
       CHECK(r.counterexample.find("case ") == 0);
     }
   }
+  // The hybrid-patch theorems: the patch or form under test with side 0 moved.
+  for (const char* name : {"hybrid-thm-3.1", "hybrid-thm-3.2-corrected", "hybrid-thm-4.1", "hybrid-thm-4.2"}) {
+    proof_detail::ScopedPlantedHybridBug planted;
+    const auto r = run_proofs({name}, 3).at(0);
+    INFO(name << ": " << r.verdict());
+    CHECK(r.refuted());
+  }
   // Without a bug they hold (the registry test runs more cases).
   const auto ok = run_proofs({"bezier-extraction"}, 6).at(0);
   CHECK(ok.verdict() == "proved");
