@@ -2,6 +2,7 @@
 // converted to the requested arithmetic by correct rounding, and written per arithmetic
 // (fractions, round-trip doubles, all MPFR digits). Every splinex::Error exits with status 2.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <type_traits>
 #include <iostream>
 #include <new>
@@ -164,14 +165,30 @@ sx::Json without_flint(const sx::ArithSpec& spec, const std::string& what, F&& r
   throw sx::UsageError("arith", what + " runs in exact, double or mpfr:BITS (not flint)", "use --arith exact, double or mpfr:BITS");
 }
 
+// A message on one line: input quoted in it may hold line breaks.
+std::string one_line(std::string s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else out += c;
+  }
+  while (!out.empty() && (out.back() == ' ')) out.pop_back();
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"splinex: exact and floating B-spline algorithms, cross-checked exactly"};
   app.require_subcommand(1);
   sx::Limits limits;
-  app.add_option("--max-control-points", limits.max_control_points, "size limit per result spline")->capture_default_str();
-  app.add_option("--max-degree", limits.max_degree, "degree limit per direction")->capture_default_str();
+  app.add_option("--max-control-points", limits.max_control_points, "size limit per result spline (1 .. 10^9)")
+      ->check(CLI::Range(1.0, 1e9))
+      ->capture_default_str();
+  app.add_option("--max-degree", limits.max_degree, "degree limit per direction (0 .. 10^8)")
+      ->check(CLI::Range(0.0, 1e8))
+      ->capture_default_str();
 
   Common ev;
   std::string at, orders, eval_method = "basis";
@@ -212,7 +229,7 @@ int main(int argc, char** argv) {
   auto* cp_eps_opt = c_compose->add_option("--eps", cp_eps,
                         "trimming polylines' tolerance: trimmed with --arith double; tensor (any arith): untrim curved "
                         "trimming curves by polylines (without --eps, tensor is exact and needs straight ones)")
-      ->check(CLI::Range(1e-15, 1e-1))
+      ->check(CLI::Range(1e-12, 1e-1))
       ->capture_default_str();
 
   std::string cc_op, cc_float = "double", cc_file;
@@ -221,7 +238,8 @@ int main(int argc, char** argv) {
   auto* c_cross = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
   c_cross->add_option("operation", cc_op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
   c_cross->add_option("--float", cc_float, "double, mpfr:BITS, or flint (exact: must agree exactly)")->capture_default_str();
-  c_cross->add_option("--grid", cc_grid, "evaluation points per direction (0: 65/17/7 by dimension)");
+  c_cross->add_option("--grid", cc_grid, "evaluation points per direction (0: 65/17/7 by dimension; at most 10000)")
+      ->check(CLI::Range(0, 10000));
   c_cross->add_option("--dir", cc_opts.dir, "parametric direction");
   c_cross->add_option("--knots", cc_opts.knots, "insert-knots: knots");
   c_cross->add_option("--by", cc_opts.by, "elevate: amount");
@@ -273,7 +291,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForAllHelp& e) {
       return app.exit(e);
     } catch (const CLI::ParseError& e) {
-      app.exit(e);
+      // CLI11's own errors (missing, unknown or repeated option, value not in the set, failed
+      // conversion) in the one-line format of every other user error.
+      std::cerr << "splinex: error: options: " << one_line(e.what())
+                << " (fix: see splinex --help, or splinex COMMAND --help)\n";
       return 2;
     }
 
@@ -600,13 +621,17 @@ int main(int argc, char** argv) {
     }
     if (c_report->parsed()) return sx::run_report(report);
   } catch (const sx::Error& e) {
-    std::cerr << "splinex: error: " << e.what() << "\n";
+    std::cerr << "splinex: error: " << one_line(e.what()) << "\n";
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "splinex: error: " << one_line(e.path1().string()) << ": " << one_line(e.code().message())
+              << " (fix: give a path that can be read or written)\n";
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "splinex: error: out of memory (fix: lower --max-control-points or ask for a smaller result)\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "splinex: internal error: " << e.what() << "\n";
+    std::cerr << "splinex: internal error: " << one_line(e.what()) << " (please report this with the input)\n";
     return 1;
   }
   return 0;

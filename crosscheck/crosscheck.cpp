@@ -168,6 +168,16 @@ void compare(const std::vector<BSpline<Rational>>& E, const std::vector<BSpline<
 CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, const ArithSpec& fl, int grid_per_dir,
                        const Limits& limits) {
   if (fl.kind == ArithSpec::Kind::exact) throw UsageError("float", "the crosscheck compares exact (GMP) with another arithmetic", "use --float double, mpfr:BITS or flint");
+  // The grid is checked before any work: G^k points per result, G >= 2 (both domain ends).
+  if (grid_per_dir == 1 || grid_per_dir < 0)
+    throw UsageError("grid", std::to_string(grid_per_dir) + " points per direction cannot span a domain", "use --grid 0 (automatic) or >= 2");
+  if (grid_per_dir > 0) {
+    double points = 1;
+    for (int d = 0; d < input.dim(); ++d) points *= grid_per_dir;
+    if (points > 1e6)
+      throw UsageError("grid", std::to_string(grid_per_dir) + "^" + std::to_string(input.dim()) + " evaluation points exceed 10^6",
+                       "use a smaller --grid");
+  }
   using clock = std::chrono::steady_clock;
   CrossReport rep;
   rep.operation = op.name();

@@ -1,5 +1,6 @@
 #include "exact/json_io.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <set>
@@ -30,14 +31,30 @@ class ExactNumberSax {
   bool number_float(number_float_t, const string_t& text) { put(text); return true; }
   bool string(string_t& s) { put(s); return true; }
   bool binary(binary_t&) { error = "binary values are not supported"; return false; }
-  bool start_object(std::size_t) { stack_.push_back(put(Json::object())); return true; }
+  // Documents nest a few levels (a spline: 3); a deep nesting is refused before it costs memory
+  // or stack (10^6 nested arrays would overflow the stack when the DOM is destroyed).
+  static constexpr std::size_t max_depth = 64;
+  bool too_deep() {
+    if (stack_.size() < max_depth) return false;
+    error = "nesting deeper than " + std::to_string(max_depth) + " levels";
+    return true;
+  }
+  bool start_object(std::size_t) {
+    if (too_deep()) return false;
+    stack_.push_back(put(Json::object()));
+    return true;
+  }
   bool key(string_t& k) {
     if (stack_.back()->contains(k)) { error = "duplicate key \"" + k + "\""; return false; }
     slot_ = &(*stack_.back())[k];
     return true;
   }
   bool end_object() { stack_.pop_back(); return true; }
-  bool start_array(std::size_t) { stack_.push_back(put(Json::array())); return true; }
+  bool start_array(std::size_t) {
+    if (too_deep()) return false;
+    stack_.push_back(put(Json::array()));
+    return true;
+  }
   bool end_array() { stack_.pop_back(); return true; }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& ex) {
     error = ex.what();
@@ -77,6 +94,9 @@ Json read_json(std::istream& in, const std::string& source) {
 
 Json read_json_file(const std::string& path) {
   if (path == "-") return read_json(std::cin, "<stdin>");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw UsageError(path, "is a directory, not a document", "give the path of a JSON file");
   std::ifstream in(path);
   if (!in) throw UsageError(path, "cannot open the file", "check the path");
   return read_json(in, path);

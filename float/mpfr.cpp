@@ -8,9 +8,11 @@
 namespace splinex {
 
 Mpfr::Precision::Precision(long bits) : old_(current_bits()) {
-  if (bits < 24 || bits > 1'000'000)
+  // Above 65536 bits (about 19,700 digits) exact arithmetic is the better tool, and a precision of
+  // 10^6 bits made ordinary commands run for minutes.
+  if (bits < 24 || bits > 65536)
     throw UsageError("arith", "MPFR precision " + std::to_string(bits) + " bits is out of range",
-                     "use mpfr:BITS with 24 <= BITS <= 1000000");
+                     "use mpfr:BITS with 24 <= BITS <= 65536, or --arith exact");
   current_bits() = bits;
 }
 
