@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -132,6 +133,18 @@ int run_report(const ReportOptions& opt) {
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
   fs::create_directories(opt.out_dir);
+  // A manifest marked incomplete first: an interrupted run (Ctrl-C) leaves it so, and its files
+  // cannot pass for a finished report. Writing it also probes that the folder is writable before
+  // minutes of work.
+  const std::string manifest = opt.out_dir + "/MANIFEST.json";
+  {
+    std::ofstream probe(manifest + ".tmp");
+    if (!probe)
+      throw UsageError("out", "cannot write into " + opt.out_dir, "give a writable folder with --out");
+  }
+  fs::remove(manifest + ".tmp");
+  write_file_atomically(manifest, "{\"status\": \"incomplete\", \"note\": \"a run started here and has not finished; "
+                                  "files in this folder may be from it or from an older run\"}\n");
   auto progress = [&](const std::string& s) {
     std::cerr << "[report " << std::fixed << std::setprecision(1)
               << std::chrono::duration<double>(clock::now() - t_start).count() << "s] " << s << std::endl;
@@ -443,6 +456,21 @@ int run_report(const ReportOptions& opt) {
   for (auto [a, t] : tsum) md << "| " << a << " | " << fmt(t.first) << " | " << fmt(t.second) << " | " << fmt1(t.first / t.second) << " |\n";
   md << "\nRaw data: `crosscheck.csv`, `crosscheck.json`. Regenerate with `build/bin/splinex report --out " << opt.out_dir << "`.\n";
   write_file_atomically(opt.out_dir + "/report.md", md.str());
+  {
+    std::ostringstream mf;
+    mf << "{\"status\": \"complete\", \"files\": [";
+    bool first = true;
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(opt.out_dir))
+      if (e.is_regular_file() && e.path().filename() != "MANIFEST.json") names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    for (const auto& n : names) {
+      mf << (first ? "" : ", ") << "\"" << n << "\"";
+      first = false;
+    }
+    mf << "]}\n";
+    write_file_atomically(manifest, mf.str());
+  }
   bool all_ran = true;
   for (const auto& r : run.rows) all_ran = all_ran && r.rep.structure_match;
   progress(std::string("done: ") + std::to_string(run.rows.size()) + " crosschecks, proofs " + (proofs_ok ? "all verdicts as expected" : "UNEXPECTED VERDICT") +
