@@ -130,9 +130,25 @@ void validate_curved_domain(const TrimmedDomain& D) {
     }
   }
   const auto E = all_edges(D);
+  // Cheap answers first: ordinates all inside [lo, hi] keep the curve inside (convex hull); a
+  // sample of the curve outside the box proves it leaves. Root isolation (costly for ordinates
+  // like -1e100000) only decides what neither settles.
+  for (const auto& loop : E)
+    for (const auto& e : loop) {
+      if (e.vertical || e.c.size() <= 2) continue;
+      const int m = 16;
+      for (int k = 0; k <= m; ++k) {
+        const Rational x = e.x0 + (e.x1 - e.x0) * Rational(k, m), y = poly::eval(e.f, x);
+        if (y < D.lo[1] || D.hi[1] < y)
+          throw DomainError(edge_name(e.loop, e.index), "leaves the domain: at x = " + qs(x) + " the curve is " +
+                                                            (y < D.lo[1] ? "below y = " + qs(D.lo[1]) : "above y = " + qs(D.hi[1])),
+                            "keep trimming curves inside the parameter box");
+      }
+    }
   for (const auto& loop : E)
     for (const auto& e : loop)
       if (!e.vertical && e.c.size() > 2 &&
+          !std::all_of(e.c.begin(), e.c.end(), [&](const Rational& y) { return !(y < D.lo[1]) && !(D.hi[1] < y); }) &&
           (poly::exists_positive({poly::sub(e.f, Poly{D.hi[1]})}, e.x0, e.x1) ||
            poly::exists_positive({poly::sub(Poly{D.lo[1]}, e.f)}, e.x0, e.x1)))
         throw DomainError(edge_name(e.loop, e.index), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
