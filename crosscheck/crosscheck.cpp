@@ -119,12 +119,7 @@ void compare(const std::vector<BSpline<Rational>>& E, const std::vector<BSpline<
       rep.structure_note = "result " + std::to_string(r) + " differs in degree or knot count";
       continue;
     }
-    bool finite = true;
-    for (const auto& K : f.knots)
-      for (const auto& x : K) finite = finite && is_finite_value(x);
-    for (const auto& x : f.points) finite = finite && is_finite_value(x);
-    for (const auto& x : f.weights) finite = finite && is_finite_value(x);
-    if (!finite) {
+    if (!is_finite_spline(f)) {
       rep.structure_match = false;
       rep.structure_note = "result " + std::to_string(r) + " has infinite or NaN values in " + ArithTraits<T>::name();
       continue;

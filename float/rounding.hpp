@@ -3,6 +3,7 @@
 // 1e-400 next to 0 becomes 0 in double and raises a multiplicity past degree+1; a weight 1e-400
 // becomes 0; 1e400 becomes infinite). Every such change is a RangeError naming the field.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -16,6 +17,15 @@ inline bool is_finite_value(double x) { return std::isfinite(x); }
 inline bool is_finite_value(const Mpfr& x) { return mpfr_number_p(x.get()) != 0; }
 template <class T>
 bool is_finite_value(const T&) { return true; }  // exact arithmetics
+
+// Whether every knot, point and weight of S is finite.
+template <class T>
+bool is_finite_spline(const BSpline<T>& S) {
+  const auto finite = [](const T& x) { return is_finite_value(x); };
+  for (const auto& K : S.knots)
+    if (!std::all_of(K.begin(), K.end(), finite)) return false;
+  return std::all_of(S.points.begin(), S.points.end(), finite) && std::all_of(S.weights.begin(), S.weights.end(), finite);
+}
 
 // x rounded to F (correctly); RangeError if F cannot hold it (infinite), or if a non-zero x
 // becomes 0 where `nonzero_needed` (weights, denominators).

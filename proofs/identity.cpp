@@ -77,24 +77,13 @@ IdentityCheck prove_equal_on_box(const BSpline<Rational>& A, const BSpline<Ratio
     return r;
   }
   const bool rational = A.is_rational() || B.is_rational();
-  // Cells per direction: breakpoints of A and pulled-back breakpoints of B, clipped to the box.
-  std::vector<std::vector<Rational>> cuts(k);
-  for (int d = 0; d < k; ++d) {
-    if (!(box[d].first < box[d].second)) {  // empty or inverted: nothing to compare, no verdict
-      cuts.assign(k, {});
-      r.degree_bound.assign(k, 0);
-      break;
-    }
-    std::vector<Rational> c{box[d].first, box[d].second};
-    for (const auto& u : breakpoints(A.knots[d], A.degrees[d], A.count(d))) c.push_back(u);
-    for (const auto& u : breakpoints(B.knots[d], B.degrees[d], B.count(d))) c.push_back(phi[d].inverse(u));
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
-    c.erase(std::remove_if(c.begin(), c.end(), [&](const Rational& x) { return x < box[d].first || box[d].second < x; }),
-            c.end());
-    cuts[d] = std::move(c);
-    r.degree_bound.push_back(rational ? A.degrees[d] + B.degrees[d] : std::max(A.degrees[d], B.degrees[d]));
-  }
+  // Cells per direction: breakpoints of A and pulled-back breakpoints of B, clipped to the box (an
+  // empty or inverted box gives none: no verdict); the bound from both shapes.
+  PiecewiseShape a = shape_of(A), b = shape_of(B);
+  for (int d = 0; d < k; ++d)
+    for (auto& u : b.breaks[d]) u = phi[d].inverse(u);
+  const auto cuts = union_cuts(a, b, box);
+  r.degree_bound = identity_bound(a, b);
   const auto mismatch = [&](const std::vector<Rational>& x) -> std::string {
     std::vector<Rational> y(k);
     for (int d = 0; d < k; ++d) y[d] = phi[d](x[d]);

@@ -356,9 +356,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
   }
   // A knot line of T where T may jump: multiplicity e_j + 1 (a C^-1 knot; degree 0 has one at
   // every breakpoint).
-  auto outer_jumps_at = [&](int j, const T& x) {
-    return multiplicity(outer.knots[j], x) == static_cast<std::size_t>(outer.degrees[j]) + 1;
-  };
+  auto outer_jumps_at = [&](int j, const T& x) { return is_full_multiplicity(outer.knots[j], outer.degrees[j], x); };
   std::vector<std::vector<T>> sb(k);
   std::vector<std::size_t> sstride(k);
   std::size_t ss = 1;
@@ -388,7 +386,6 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
       // the value of T's upper piece there. If T may jump at x, T(S) is then no polynomial on the
       // piece. Bernstein coefficients <= x reach x only where a corner value does.
       if (lo < hi && hi == tb[j][c + 1] && c + 2 < tb[j].size() && outer_jumps_at(j, hi)) {
-        std::vector<int> corner(k);
         const std::size_t corners = std::size_t(1) << k;
         for (std::size_t m = 0; m < corners; ++m) {
           bool owned = true;
@@ -418,7 +415,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
   for (int l = 0; l < k; ++l) {
     jump[l].assign(sb[l].size(), 0);
     for (std::size_t b = 1; b + 1 < sb[l].size(); ++b)
-      jump[l][b] = D[l] == 0 || multiplicity(inner.knots[l], sb[l][b]) == static_cast<std::size_t>(inner.degrees[l]) + 1;
+      jump[l][b] = D[l] == 0 || is_full_multiplicity(inner.knots[l], inner.degrees[l], sb[l][b]);
   }
   for (std::size_t pi = 0; pi < sp.size(); ++pi)
     for (int l = 0; l < k; ++l) {

@@ -67,6 +67,13 @@ std::size_t multiplicity(const std::vector<T>& U, const T& x) {
   return static_cast<std::size_t>(r.second - r.first);
 }
 
+// Whether x is a knot of multiplicity p+1: the spline may jump there (C^-1; at degree 0 every
+// breakpoint is one).
+template <class T>
+bool is_full_multiplicity(const std::vector<T>& U, int p, const T& x) {
+  return multiplicity(U, x) == static_cast<std::size_t>(p) + 1;
+}
+
 // The distinct knot values inside the domain [U[p], U[n]], ends included: the breakpoints.
 template <class T>
 std::vector<T> breakpoints(const std::vector<T>& U, int p, std::size_t n) {
