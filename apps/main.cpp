@@ -11,6 +11,7 @@
 #include "crosscheck/crosscheck.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "exact/json_io.hpp"
+#include "exact/memory.hpp"
 #include "exact/root_isolation.hpp"
 #include "float/rounding.hpp"
 #include "float/trimming_polyline.hpp"
@@ -180,9 +181,16 @@ std::string one_line(std::string s) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Memory exhaustion in GMP, MPFR or FLINT throws std::bad_alloc instead of aborting.
+  sx::install_throwing_allocators();
   CLI::App app{"splinex: exact and floating B-spline algorithms, cross-checked exactly"};
   app.require_subcommand(1);
   sx::Limits limits;
+  std::string max_memory = "auto";
+  app.add_option("--max-memory", max_memory,
+                 "memory budget (address space) of the whole run, e.g. 512M or 8G (at least 128M); auto: 3/4 of "
+                 "physical memory (" + sx::format_bytes(sx::default_memory_budget()) + " here)")
+      ->capture_default_str();
   app.add_option("--max-control-points", limits.max_control_points, "size limit per result spline (1 .. 10^9)")
       ->check(CLI::Range(1.0, 1e9))
       ->capture_default_str();
@@ -297,9 +305,11 @@ int main(int argc, char** argv) {
                 << " (fix: see splinex --help, or splinex COMMAND --help)\n";
       return 2;
     }
+    sx::set_memory_budget(max_memory == "auto" ? sx::default_memory_budget() : sx::parse_memory_size(max_memory, "max-memory"));
+    const sx::ReadLimits read_limits = sx::ReadLimits::from(limits);
 
     if (c_eval->parsed()) {
-      const auto S = sx::spline_from_json(sx::read_json_file(ev.file), limits);
+      const auto S = sx::spline_from_json(sx::read_json_file(ev.file, read_limits), limits);
       const auto x = sx::parse_number_list(at, "at");
       std::vector<int> ord;
       if (!orders.empty())
@@ -321,7 +331,7 @@ int main(int argc, char** argv) {
     for (auto& [k, c] : op_cmds) {
       if (!c->parsed()) continue;
       const auto& [cm, oo] = ops[k];
-      const auto S = sx::spline_from_json(sx::read_json_file(cm.file), limits);
+      const auto S = sx::spline_from_json(sx::read_json_file(cm.file, read_limits), limits);
       const auto spec = sx::ArithSpec::parse(cm.arith);
       std::cout << run_op_document(make_op(k, oo), S, spec, limits).dump() << "\n";
       return 0;
@@ -336,7 +346,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (c_hy_eval->parsed()) {
-      const auto P = sx::hybrid_from_json(sx::read_json_file(hy_file), limits);
+      const auto P = sx::hybrid_from_json(sx::read_json_file(hy_file, read_limits), limits);
       std::vector<std::array<sx::Rational, 2>> xs;
       for (const auto& a : hy_at) {
         const auto v = sx::parse_number_list(a, "at");
@@ -375,11 +385,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (c_untrim->parsed()) {
-      const auto D = sx::trimmed_domain_from_json(sx::read_json_file(ut_file));
+      const auto D = sx::trimmed_domain_from_json(sx::read_json_file(ut_file, read_limits));
       std::optional<sx::BSpline<sx::Rational>> S, f;
       std::array<std::vector<sx::Rational>, 2> knot_lines;
       if (!ut_surface.empty()) {
-        S = sx::spline_from_json(sx::read_json_file(ut_surface), limits, "surface");
+        S = sx::spline_from_json(sx::read_json_file(ut_surface, read_limits), limits, "surface");
         if (S->dim() != 2)
           throw sx::ValidationError("surface", "has " + std::to_string(S->dim()) + " parameters", "give a surface");
         for (int d = 0; d < 2; ++d) {
@@ -394,7 +404,7 @@ int main(int argc, char** argv) {
       }
       if (!ut_density.empty() && !ut_monomial.empty())
         throw sx::UsageError("density", "--density and --monomial both given", "give one density");
-      if (!ut_density.empty()) f = sx::spline_from_json(sx::read_json_file(ut_density), limits, "density");
+      if (!ut_density.empty()) f = sx::spline_from_json(sx::read_json_file(ut_density, read_limits), limits, "density");
       if (!ut_monomial.empty()) {
         const std::string hint = "write --monomial \"a,b\" for x^a y^b";
         const auto ab = sx::parse_number_list(ut_monomial, "monomial");
@@ -461,8 +471,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (c_compose->parsed()) {
-      const auto T = sx::spline_from_json(sx::read_json_file(cp_outer), limits, "outer");
-      const auto S = sx::spline_from_json(sx::read_json_file(cp_inner), limits, "inner");
+      const auto T = sx::spline_from_json(sx::read_json_file(cp_outer, read_limits), limits, "outer");
+      const auto S = sx::spline_from_json(sx::read_json_file(cp_inner, read_limits), limits, "inner");
       if (cp_method == "tensor") {
         const auto spec = sx::ArithSpec::parse(cp.arith);
         sx::TensorOptions to;
@@ -577,7 +587,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (c_cross->parsed()) {
-      const auto S = sx::spline_from_json(sx::read_json_file(cc_file), limits);
+      const auto S = sx::spline_from_json(sx::read_json_file(cc_file, read_limits), limits);
       OpOptions o = cc_opts;
       if (cc_op == "elevate")
         o.elevate_method = cc_opts.insert_method == "blossom" ? "blossom" : cc_opts.insert_method == "a59" ? "a59" : "auto";
@@ -627,8 +637,16 @@ int main(int argc, char** argv) {
     std::cerr << "splinex: error: " << one_line(e.path1().string()) << ": " << one_line(e.code().message())
               << " (fix: give a path that can be read or written)\n";
     return 2;
+  } catch (const std::length_error&) {
+    // A container asked for more elements than it can address: a size no budget can hold.
+    std::cerr << "splinex: error: memory: a result too large to allocate (fix: ask for a smaller result, or lower "
+                 "--max-control-points)\n";
+    return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "splinex: error: out of memory (fix: lower --max-control-points or ask for a smaller result)\n";
+    const auto& b = sx::current_memory_budget();
+    std::cerr << "splinex: error: memory: out of memory"
+              << (b.enforced ? " within the budget of " + sx::format_bytes(b.bytes) : std::string())
+              << " (fix: ask for a smaller result, lower --max-control-points, or raise --max-memory)\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "splinex: internal error: " << one_line(e.what()) << " (please report this with the input)\n";

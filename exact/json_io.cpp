@@ -5,7 +5,10 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <type_traits>
 
+#include "exact/memory.hpp"
 #include "spline/errors.hpp"
 
 namespace splinex {
@@ -21,15 +24,17 @@ class ExactNumberSax {
   using string_t = Json::string_t;
   using binary_t = Json::binary_t;
 
+  ExactNumberSax(std::size_t max_elements, std::size_t max_bytes) : max_elements_(max_elements), max_bytes_(max_bytes) {}
   Json root;
   std::string error;
+  bool size_limit = false;  // error is a size limit, not a syntax error
 
-  bool null() { put(nullptr); return true; }
-  bool boolean(bool b) { put(b); return true; }
-  bool number_integer(number_integer_t v) { put(std::to_string(v)); return true; }
-  bool number_unsigned(number_unsigned_t v) { put(std::to_string(v)); return true; }
-  bool number_float(number_float_t, const string_t& text) { put(text); return true; }
-  bool string(string_t& s) { put(s); return true; }
+  bool null() { return put(nullptr) != nullptr; }
+  bool boolean(bool b) { return put(b) != nullptr; }
+  bool number_integer(number_integer_t v) { return put(std::to_string(v)) != nullptr; }
+  bool number_unsigned(number_unsigned_t v) { return put(std::to_string(v)) != nullptr; }
+  bool number_float(number_float_t, const string_t& text) { return put(text) != nullptr; }
+  bool string(string_t& s) { return put(s) != nullptr; }
   bool binary(binary_t&) { error = "binary values are not supported"; return false; }
   // Documents nest a few levels (a spline: 3); a deep nesting is refused before it costs memory
   // or stack (10^6 nested arrays would overflow the stack when the DOM is destroyed).
@@ -41,31 +46,70 @@ class ExactNumberSax {
   }
   bool start_object(std::size_t) {
     if (too_deep()) return false;
-    stack_.push_back(put(Json::object()));
+    Json* j = put(Json::object());
+    if (!j) return false;
+    stack_.push_back(j);
+    keys_.emplace_back();
     return true;
   }
   bool key(string_t& k) {
     if (stack_.back()->contains(k)) { error = "duplicate key \"" + k + "\""; return false; }
+    if (!charge(k.size())) return false;
     slot_ = &(*stack_.back())[k];
+    keys_.back() = k;
     return true;
   }
-  bool end_object() { stack_.pop_back(); return true; }
+  bool end_object() { stack_.pop_back(); keys_.pop_back(); return true; }
   bool start_array(std::size_t) {
     if (too_deep()) return false;
-    stack_.push_back(put(Json::array()));
+    Json* j = put(Json::array());
+    if (!j) return false;
+    stack_.push_back(j);
+    keys_.emplace_back();
     return true;
   }
-  bool end_array() { stack_.pop_back(); return true; }
+  bool end_array() { stack_.pop_back(); keys_.pop_back(); return true; }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& ex) {
     error = ex.what();
     return false;
   }
 
  private:
+  // The path of the value being read (e.g. "points[17][0]"), or of the innermost open container.
+  std::string path(bool of_new_value = true) const {
+    std::string p;
+    const std::size_t n = stack_.size() - (of_new_value || stack_.empty() ? 0 : 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (stack_[i]->is_array())
+        p += "[" + std::to_string(stack_[i]->size() - (i + 1 < stack_.size() ? 1 : 0)) + "]";
+      else
+        p += (p.empty() ? "" : ".") + keys_[i];
+    }
+    return p.empty() ? "document" : p;
+  }
+  // Estimated tree memory: a value (16 bytes) with its heap node (a string or a container,
+  // about 48 bytes with malloc's overhead), plus text beyond the short-string buffer.
+  bool charge(std::size_t text) {
+    bytes_ += 64 + (text > 15 ? text + 1 : 0);
+    if (bytes_ <= max_bytes_) return true;
+    size_limit = true;
+    error = "reading it needs more than " + format_bytes(max_bytes_) + " of memory (at " + path() +
+            "); the limit is a quarter of the memory budget (fix: give a smaller document, or raise --max-memory)";
+    return false;
+  }
   template <class V>
   Json* put(V&& v) {
+    std::size_t text = 0;
+    if constexpr (std::is_same_v<std::decay_t<V>, std::string>) text = v.size();
+    if (!charge(text)) return nullptr;
     if (stack_.empty()) { root = Json(std::forward<V>(v)); return &root; }
     if (stack_.back()->is_array()) {
+      if (stack_.back()->size() >= max_elements_) {
+        size_limit = true;
+        error = path(false) + " has more than " + std::to_string(max_elements_) +
+                " elements (fix: give a smaller document, or raise --max-control-points)";
+        return nullptr;
+      }
       stack_.back()->push_back(Json(std::forward<V>(v)));
       return &stack_.back()->back();
     }
@@ -73,33 +117,47 @@ class ExactNumberSax {
     return slot_;
   }
   std::vector<Json*> stack_;
+  std::vector<std::string> keys_;
   Json* slot_ = nullptr;
+  std::size_t max_elements_, max_bytes_, bytes_ = 0;
 };
 
 std::string at(const std::string& where, const std::string& field) { return where.empty() ? field : where + "." + field; }
 
 }  // namespace
 
-Json read_json(std::istream& in, const std::string& source) {
-  ExactNumberSax sax;
+ReadLimits ReadLimits::from(const Limits& limits) {
+  ReadLimits r;
+  r.max_elements = limits.max_control_points + 2 * (static_cast<std::size_t>(limits.max_degree) + 1);
+  return r;
+}
+
+Json read_json(std::istream& in, const std::string& source, const ReadLimits& limits) {
+  std::size_t max_bytes = limits.max_tree_bytes;
+  if (max_bytes == 0) {
+    const auto& b = current_memory_budget();
+    max_bytes = (b.bytes ? b.bytes : default_memory_budget()) / 4;
+  }
+  ExactNumberSax sax(limits.max_elements, max_bytes);
   bool ok = false;
   try {
     ok = Json::sax_parse(in, &sax);
   } catch (const nlohmann::json::exception& e) {
     sax.error = e.what();
   }
+  if (!ok && sax.size_limit) throw SizeLimitError(source, sax.error, "");
   if (!ok) throw ParseError(source, "malformed JSON: " + sax.error, "fix the JSON syntax");
-  return sax.root;
+  return std::move(sax.root);  // a member: without the move, the whole tree would be copied
 }
 
-Json read_json_file(const std::string& path) {
-  if (path == "-") return read_json(std::cin, "<stdin>");
+Json read_json_file(const std::string& path, const ReadLimits& limits) {
+  if (path == "-") return read_json(std::cin, "<stdin>", limits);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw UsageError(path, "is a directory, not a document", "give the path of a JSON file");
   std::ifstream in(path);
   if (!in) throw UsageError(path, "cannot open the file", "check the path");
-  return read_json(in, path);
+  return read_json(in, path, limits);
 }
 
 Rational json_number(const Json& j, const std::string& field) {

@@ -16,10 +16,23 @@ namespace splinex {
 
 using Json = nlohmann::json;
 
+// What reading a document may cost, checked while reading (before the cost is paid).
+struct ReadLimits {
+  // Elements of any one array (points, knots, weights, loop vertices, a point's coordinates).
+  std::size_t max_elements = static_cast<std::size_t>(-1);
+  // Memory of the document tree, estimated per value as it is built (about 64 bytes per number
+  // or container plus the text of long numbers; a 40 MB document of short numbers takes about
+  // 0.7 GB). 0: a quarter of the memory budget (exact/memory.hpp).
+  std::size_t max_tree_bytes = 0;
+  // From the spline limits: an array may hold max_control_points + 2 (max_degree + 1) elements.
+  static ReadLimits from(const Limits& limits);
+};
+
 // Parses JSON text; every number becomes a JSON string holding its original text. Malformed
-// JSON and duplicate keys throw ParseError naming `source`.
-Json read_json(std::istream& in, const std::string& source);
-Json read_json_file(const std::string& path);  // "-" is standard input
+// JSON, duplicate keys, nesting deeper than 64 and documents beyond `limits` throw ParseError
+// (SizeLimitError for the limits) naming `source`.
+Json read_json(std::istream& in, const std::string& source, const ReadLimits& limits = {});
+Json read_json_file(const std::string& path, const ReadLimits& limits = {});  // "-" is standard input
 
 // A number field (string or number text) read exactly.
 Rational json_number(const Json& j, const std::string& field);

@@ -40,7 +40,9 @@ class Mpfr {
   Mpfr(long i) { mpfr_init2(v_, current_bits()); mpfr_set_si(v_, i, MPFR_RNDN); }
   explicit Mpfr(const Rational& q) { mpfr_init2(v_, current_bits()); mpfr_set_q(v_, q.backend().data(), MPFR_RNDN); }
   Mpfr(const Mpfr& o) { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_set(v_, o.v_, MPFR_RNDN); }
-  Mpfr(Mpfr&& o) noexcept { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_swap(v_, o.v_); }
+  // Not noexcept: the moved-from value needs limbs of its own (mpfr_init2 allocates), and that
+  // allocation may throw std::bad_alloc (exact/memory.hpp); a noexcept frame would terminate.
+  Mpfr(Mpfr&& o) { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_swap(v_, o.v_); }
   Mpfr& operator=(const Mpfr& o) {
     if (this != &o) mpfr_set(v_, o.v_, MPFR_RNDN);
     return *this;
