@@ -17,8 +17,13 @@ struct BezierPiece {
 
 // All polynomial pieces, ordered with direction 0 varying fastest. Every interior knot is raised
 // to multiplicity degree (A5.4) and the control net cut into Bezier nets.
+// Checked against limits.max_control_points before any work: the pieces' control points in
+// all, prod_d segments_d * (p_d + 1), which also bounds every intermediate Bezier form.
 template <class T>
 std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& limits = {});
+// That count (SizeLimitError "pieces" above the limit).
+template <class T>
+std::size_t bezier_pieces_size(const BSpline<T>& S, const Limits& limits = {});
 
 // The two halves of S at x in direction d (x strictly inside the domain).
 template <class T>

@@ -24,7 +24,22 @@ BSpline<T> to_bezier_form(const BSpline<T>& S, int d, const Limits& limits) {
 }  // namespace detail
 
 template <class T>
+std::size_t bezier_pieces_size(const BSpline<T>& S, const Limits& limits) {
+  std::size_t total = 1;
+  for (int d = 0; d < S.dim(); ++d) {
+    const std::size_t segs = breakpoints(S.knots[d], S.degrees[d], S.count(d)).size() - 1;
+    total = checked_product(total, checked_product(segs, static_cast<std::size_t>(S.degrees[d]) + 1, limits, "pieces"),
+                            limits, "pieces");
+  }
+  return total;
+}
+
+template <class T>
 std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& limits) {
+  // The whole result's size is known from the breakpoints: checked before any work (a surface
+  // would otherwise convert direction 0 in full before direction 1 reaches the limit). It bounds
+  // the Bezier form of every direction too.
+  bezier_pieces_size(S, limits);
   // Fully Bezier form in every direction first, then cut piece by piece.
   BSpline<T> B = S;
   for (int d = 0; d < S.dim(); ++d) B = detail::to_bezier_form(B, d, limits);

@@ -344,6 +344,19 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
   const int k = inner.dim(), n = outer.dim();
   const std::vector<int> D = composed_degrees(outer, inner);
   for (int l = 0; l < k; ++l) limits.check_degree(D[l], "inner");
+  // Before any work: the result has at least prod_l (segments_l * D_l + 1) control points (C^0
+  // joins; C^-1 joins add one each, counted once the joins are known, before the result is
+  // allocated), and both extractions are bounded.
+  {
+    std::size_t least = 1;
+    for (int l = 0; l < k; ++l) {
+      const std::size_t segs = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l)).size() - 1;
+      least = checked_product(least, checked_product(segs, static_cast<std::size_t>(D[l]), limits, "inner") + 1, limits,
+                              "inner");
+    }
+    bezier_pieces_size(outer, limits);
+    bezier_pieces_size(inner, limits);
+  }
   const auto tp = extract_bezier(outer, limits);
   const auto sp = extract_bezier(inner, limits);
   std::vector<std::vector<T>> tb(n);  // breakpoints of T per direction

@@ -1,10 +1,12 @@
 #include "untrim/curved.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 
 #include "exact/root_isolation.hpp"
+#include "untrim/interval_join.hpp"
 #include "untrim/poly.hpp"
 
 namespace splinex {
@@ -153,26 +155,43 @@ void validate_curved_domain(const TrimmedDomain& D) {
            poly::exists_positive({poly::sub(Poly{D.lo[1]}, e.f)}, e.x0, e.x1)))
         throw DomainError(edge_name(e.loop, e.index), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
                           "keep trimming curves inside the parameter box");
+  // Every pair of edges whose x-ranges meet (an interval join, not all pairs); the first meeting
+  // pair in loop order is reported.
+  std::vector<std::pair<Rational, Rational>> ex;
+  std::vector<std::pair<std::size_t, std::size_t>> id;
   for (std::size_t l = 0; l < E.size(); ++l)
-    for (std::size_t m = l; m < E.size(); ++m)
-      for (std::size_t i = 0; i < E[l].size(); ++i)
-        for (std::size_t j = (l == m ? i + 1 : 0); j < E[m].size(); ++j) {
-          std::vector<Vec2<Rational>> allowed;
-          if (l == m) {
-            const std::size_t n = E[l].size();
-            if (j == i + 1) allowed.push_back(D.loops[l][j]);
-            if ((j + 1) % n == i) allowed.push_back(D.loops[l][i]);
-          }
-          if (!edges_meet(E[l][i], E[m][j], allowed)) continue;
-          if (l == m)
-            throw ValidationError("loops[" + std::to_string(l) + "]",
-                                  "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
-                                  "split it into simple loops (no edge may cross or touch another)");
-          throw ValidationError("loops[" + std::to_string(m) + "]",
-                                "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " +
-                                    std::to_string(i) + ")",
-                                "trimming loops must be disjoint; merge them into one simple loop");
-        }
+    for (std::size_t i = 0; i < E[l].size(); ++i) {
+      ex.emplace_back(E[l][i].x0, E[l][i].x1);
+      id.emplace_back(l, i);
+    }
+  std::optional<std::array<std::size_t, 4>> first;
+  for_overlapping_pairs(ex, [&](std::size_t u, std::size_t v) {
+    auto [l, i] = id[u];
+    auto [m, j] = id[v];
+    if (std::make_pair(m, j) < std::make_pair(l, i)) {
+      std::swap(l, m);
+      std::swap(i, j);
+    }
+    const std::array<std::size_t, 4> key{l, m, i, j};
+    if (first && !(key < *first)) return;
+    std::vector<Vec2<Rational>> allowed;
+    if (l == m) {
+      const std::size_t n = E[l].size();
+      if (j == i + 1) allowed.push_back(D.loops[l][j]);
+      if ((j + 1) % n == i) allowed.push_back(D.loops[l][i]);
+    }
+    if (edges_meet(E[l][i], E[m][j], allowed)) first = key;
+  });
+  if (first) {
+    const auto [l, m, i, j] = *first;
+    if (l == m)
+      throw ValidationError("loops[" + std::to_string(l) + "]",
+                            "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
+                            "split it into simple loops (no edge may cross or touch another)");
+    throw ValidationError("loops[" + std::to_string(m) + "]",
+                          "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " + std::to_string(i) + ")",
+                          "trimming loops must be disjoint; merge them into one simple loop");
+  }
   for (std::size_t l = 0; l < D.loops.size(); ++l)
     if (loop_signed_area(D, l) == 0)
       throw ValidationError("loops[" + std::to_string(l) + "]", "is degenerate: encloses zero area", "give a loop that encloses a region");
@@ -335,55 +354,74 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
       pieces.push_back({k, x0, x1, poly::from_bernstein(tiles[k].bottom_piece(i), x0, x1),
                         poly::from_bernstein(tiles[k].top_piece(i), x0, x1)});
     }
-  std::sort(pieces.begin(), pieces.end(), [](const Piece& p, const Piece& q) { return p.x0 < q.x0; });
+  // The pairs below are found by interval joins on x (untrim/interval_join.hpp), so the work grows
+  // with the number of pairs whose x-ranges meet, not with the product of the counts.
+  std::vector<std::pair<Rational, Rational>> piece_x;
+  for (const auto& P : pieces) piece_x.emplace_back(P.x0, P.x1);
   // 1. Interior-disjoint: no x in a common open interval with max(bottoms) < min(tops).
-  for (std::size_t p = 0; p < pieces.size() && cc.ok; ++p)
-    for (std::size_t q = p + 1; q < pieces.size() && pieces[q].x0 < pieces[p].x1; ++q) {
-      const auto &A = pieces[p], &B = pieces[q];
-      if (A.tile == B.tile) continue;  // pieces of one tile have disjoint x-ranges
-      ++cc.pair_checks;
-      const Rational u = std::max(A.x0, B.x0), v = std::min(A.x1, B.x1);
-      if (poly::exists_positive({poly::sub(A.t, A.b), poly::sub(B.t, B.b), poly::sub(A.t, B.b), poly::sub(B.t, A.b)}, u, v)) {
-        fail("tiles " + std::to_string(A.tile) + " and " + std::to_string(B.tile) + " overlap over x in (" + qs(u) + ", " + qs(v) + ")");
-        break;
-      }
-    }
+  for_overlapping_pairs(piece_x, [&](std::size_t p, std::size_t q) {
+    const auto &A = pieces[p], &B = pieces[q];
+    if (!cc.ok || A.tile == B.tile) return;  // pieces of one tile have disjoint x-ranges
+    const Rational u = std::max(A.x0, B.x0), v = std::min(A.x1, B.x1);
+    if (!(u < v)) return;
+    ++cc.pair_checks;
+    if (poly::exists_positive({poly::sub(A.t, A.b), poly::sub(B.t, B.b), poly::sub(A.t, B.b), poly::sub(B.t, A.b)}, u, v))
+      fail("tiles " + std::to_string(A.tile) + " and " + std::to_string(B.tile) + " overlap over x in (" + qs(u) + ", " + qs(v) + ")");
+  });
   // 2. No loop edge enters a tile's interior.
-  const auto E = all_edges(D);
-  for (const auto& loop : E)
-    for (const auto& e : loop)
-      for (const auto& P : pieces) {
-        if (!cc.ok) break;
-        if (e.vertical) {
-          if (!(P.x0 < e.x0 && e.x0 < P.x1)) continue;
-          ++cc.edge_checks;
-          const Rational b = poly::eval(P.b, e.x0), t = poly::eval(P.t, e.x0);
-          if (std::max(b, e.c[0]) < std::min(t, e.c[1]))
-            fail(edge_name(e.loop, e.index) + " passes through the interior of tile " + std::to_string(P.tile));
-          continue;
-        }
-        const Rational u = std::max(P.x0, e.x0), v = std::min(P.x1, e.x1);
-        if (!(u < v)) continue;
-        ++cc.edge_checks;
-        if (poly::exists_positive({poly::sub(e.f, P.b), poly::sub(P.t, e.f)}, u, v))
-          fail(edge_name(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
-               ", " + qs(v) + ")");
-      }
+  std::vector<Edge> E;
+  for (auto& loop : all_edges(D))
+    for (auto& e : loop) E.push_back(std::move(e));
+  std::vector<std::pair<Rational, Rational>> edge_x;
+  for (const auto& e : E) edge_x.emplace_back(e.x0, e.x1);
+  for_overlapping_pairs(edge_x, piece_x, [&](std::size_t ei, std::size_t pi) {
+    const Edge& e = E[ei];
+    const Piece& P = pieces[pi];
+    if (!cc.ok) return;
+    if (e.vertical) {
+      if (!(P.x0 < e.x0 && e.x0 < P.x1)) return;
+      ++cc.edge_checks;
+      const Rational b = poly::eval(P.b, e.x0), t = poly::eval(P.t, e.x0);
+      if (std::max(b, e.c[0]) < std::min(t, e.c[1]))
+        fail(edge_name(e.loop, e.index) + " passes through the interior of tile " + std::to_string(P.tile));
+      return;
+    }
+    const Rational u = std::max(P.x0, e.x0), v = std::min(P.x1, e.x1);
+    if (!(u < v)) return;
+    ++cc.edge_checks;
+    if (poly::exists_positive({poly::sub(e.f, P.b), poly::sub(P.t, e.f)}, u, v))
+      fail(edge_name(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
+           ", " + qs(v) + ")");
+  });
   // 3. Every connected part of every tile is in the region: a sample between consecutive roots of
-  //    t - b (where the part is open) in every piece.
-  const auto in_region = [&](const Vec2<Rational>& p) {
-    int depth = 0;
-    for (std::size_t l = 0; l < D.loops.size(); ++l) depth += inside_loop(D, l, p) ? 1 : 0;
-    return depth % 2 == 1;
+  //    t - b (where the part is open) in every piece. In the region means an odd number of loop
+  //    edges above the sample (even-odd rule; the loops are disjoint, so this is the depth's parity),
+  //    edges half-open in x so a vertical ray through a vertex counts the two edges meeting there once.
+  struct Sample {
+    std::size_t tile;
+    Rational x, y;
+    bool in = false;
   };
+  std::vector<Sample> samples;
   for (const auto& P : pieces) {
     if (!cc.ok) break;
     const Poly h = poly::sub(P.t, P.b);
     if (poly::is_zero(h)) continue;  // zero thickness: no interior
     std::vector<Rational> cuts{P.x0};
-    for (const auto& r : isolate_real_roots(h, P.x0, P.x1, 16)) {
-      cuts.push_back(r.lo);
-      cuts.push_back(r.hi);
+    if (h.size() <= 2) {
+      // Constant or linear: its root, if any, is exact.
+      if (h.size() == 2 && h[1] != 0) {
+        const Rational r = -h[0] / h[1];
+        if (P.x0 < r && r < P.x1) {
+          cuts.push_back(r);
+          cuts.push_back(r);
+        }
+      }
+    } else {
+      for (const auto& r : isolate_real_roots(h, P.x0, P.x1, 16)) {
+        cuts.push_back(r.lo);
+        cuts.push_back(r.hi);
+      }
     }
     cuts.push_back(P.x1);
     for (std::size_t j = 0; j + 1 < cuts.size(); j += 2) {
@@ -395,10 +433,18 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
         continue;
       }
       ++cc.samples;
-      if (!in_region({x, (b + t) / 2}))
-        fail("tile " + std::to_string(P.tile) + " has the point (" + qs(x) + ", " + qs(Rational((b + t) / 2)) + ") outside the region");
+      samples.push_back({P.tile, x, (b + t) / 2});
     }
   }
+  std::vector<std::pair<Rational, Rational>> sample_x;
+  for (const auto& q : samples) sample_x.emplace_back(q.x, q.x);
+  for_overlapping_pairs(edge_x, sample_x, [&](std::size_t ei, std::size_t si) {
+    const Edge& e = E[ei];
+    Sample& q = samples[si];
+    if (!e.vertical && e.x0 <= q.x && q.x < e.x1 && e.at(q.x) > q.y) q.in = !q.in;
+  });
+  for (const auto& q : samples)
+    if (!q.in) fail("tile " + std::to_string(q.tile) + " has the point (" + qs(q.x) + ", " + qs(q.y) + ") outside the region");
   // 4. No gap: the areas add up.
   for (const auto& t : tiles) cc.tile_area_sum += tile_area(t);
   cc.region_area = region_area(D);

@@ -1,9 +1,14 @@
 #include "untrim/loops.hpp"
 
+#include <tuple>
+
+#include "untrim/interval_join.hpp"
+
 #include <string>
 
 #include "float/mpfr.hpp"
 #include "untrim/curved.hpp"
+#include "untrim/interval_join.hpp"
 #include "untrim/poly.hpp"
 
 namespace splinex {
@@ -92,17 +97,39 @@ void validate_domain(const TrimmedDomain& D) {
     if (!polygon_is_simple(L))
       throw ValidationError(f, "is self-intersecting", "split it into simple loops (no edge may cross or touch another)");
   }
+  // Loops meeting: edges of different loops paired by an interval join on x (each loop's own
+  // edges were checked by CGAL's simplicity test, a sweep).
+  std::vector<std::pair<Rational, Rational>> ex;
+  std::vector<std::pair<std::size_t, std::size_t>> id;
   for (std::size_t l = 0; l < D.loops.size(); ++l)
-    for (std::size_t m = l + 1; m < D.loops.size(); ++m) {
-      const auto &A = D.loops[l], &B = D.loops[m];
-      for (std::size_t i = 0; i < A.size(); ++i)
-        for (std::size_t j = 0; j < B.size(); ++j)
-          if (segments_meet(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()]))
-            throw ValidationError("loops[" + std::to_string(m) + "]",
-                                  "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " +
-                                      std::to_string(i) + ")",
-                                  "trimming loops must be disjoint; merge them into one simple loop");
+    for (std::size_t i = 0; i < D.loops[l].size(); ++i) {
+      const auto &a = D.loops[l][i], &b = D.loops[l][(i + 1) % D.loops[l].size()];
+      ex.emplace_back(std::min(a[0], b[0]), std::max(a[0], b[0]));
+      id.emplace_back(l, i);
     }
+  std::size_t first_l = 0, first_m = 0, first_i = 0, first_j = 0;
+  bool met = false;
+  for_overlapping_pairs(ex, [&](std::size_t u, std::size_t v) {
+    auto [l, i] = id[u];
+    auto [m, j] = id[v];
+    if (l == m) return;
+    if (m < l) {
+      std::swap(l, m);
+      std::swap(i, j);
+    }
+    const auto &A = D.loops[l], &B = D.loops[m];
+    if (!segments_meet(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()])) return;
+    // Report the first pair in loop order, as the pairwise loops did.
+    if (!met || std::tie(l, m, i, j) < std::tie(first_l, first_m, first_i, first_j)) {
+      met = true;
+      std::tie(first_l, first_m, first_i, first_j) = std::tie(l, m, i, j);
+    }
+  });
+  if (met)
+    throw ValidationError("loops[" + std::to_string(first_m) + "]",
+                          "meets loops[" + std::to_string(first_l) + "] (edge " + std::to_string(first_j) + " and edge " +
+                              std::to_string(first_i) + ")",
+                          "trimming loops must be disjoint; merge them into one simple loop");
 }
 
 TrimmedDomain trimmed_domain_from_json(const Json& doc) {
@@ -185,14 +212,31 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
     loops.push_back(std::move(P));
   }
   const auto traps = vertical_decomposition(planar_subdivision(segs));
-  std::vector<int> labels(traps.size(), -1);
-  for (std::size_t z = 0; z < traps.size(); ++z) {
-    const auto& tz = traps[z];
-    const Vec2<T> m{(tz.x0 + tz.x1) / T(2), (tz.yb0 + tz.yb1 + tz.yt0 + tz.yt1) / T(4)};
-    int depth = 0;
-    for (const auto& P : loops) depth += inside(P, m) ? 1 : 0;
-    labels[z] = depth % 2 == 1 ? 0 : -1;
+  // Each trapezoid is in the region when its centre is inside an odd number of loops: the parity of
+  // the loop edges a horizontal ray from the centre crosses (the rule of inside(), summed over the
+  // disjoint loops). Edges and centres are paired by an interval join on y, so the work grows with
+  // the crossings, not with trapezoids times edges.
+  std::vector<Vec2<T>> centres;
+  std::vector<std::pair<T, T>> centre_y, edge_y;
+  for (const auto& tz : traps) {
+    centres.push_back({(tz.x0 + tz.x1) / T(2), (tz.yb0 + tz.yb1 + tz.yt0 + tz.yt1) / T(4)});
+    centre_y.emplace_back(centres.back()[1], centres.back()[1]);
   }
+  std::vector<std::pair<const Vec2<T>*, const Vec2<T>*>> edges;
+  for (const auto& P : loops)
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      const auto &a = P[i], &b = P[(i + 1) % P.size()];
+      edges.emplace_back(&a, &b);
+      edge_y.emplace_back(a[1] < b[1] ? a[1] : b[1], a[1] < b[1] ? b[1] : a[1]);
+    }
+  std::vector<char> odd(traps.size(), 0);
+  for_overlapping_pairs(edge_y, centre_y, [&](std::size_t e, std::size_t z) {
+    const auto &a = *edges[e].first, &b = *edges[e].second;
+    const auto& p = centres[z];
+    if ((a[1] > p[1]) != (b[1] > p[1]) && (b[1] > a[1]) == (detail::orient2(a, b, p) > T(0))) odd[z] ^= 1;
+  });
+  std::vector<int> labels(traps.size(), -1);
+  for (std::size_t z = 0; z < traps.size(); ++z) labels[z] = odd[z] ? 0 : -1;
   return merge_trapezoids(traps, labels, barriers);
 }
 

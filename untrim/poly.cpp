@@ -111,6 +111,32 @@ std::vector<Rational> bernstein_restrict(const std::vector<Rational>& c, const R
 
 bool exists_positive(const std::vector<Poly>& gs, const Rational& a, const Rational& b) {
   if (!(a < b)) return false;
+  // All of degree <= 1 (straight tiles and edges): {x : g(x) > 0} is an open half-line, the whole
+  // line or empty, so the question is whether open intervals intersect, decided exactly without
+  // root isolation.
+  const auto degree = [](const Poly& g) {
+    int d = static_cast<int>(g.size()) - 1;
+    while (d >= 0 && g[d] == 0) --d;
+    return d;  // -1: the zero polynomial
+  };
+  bool linear = true;
+  for (const auto& g : gs) linear = linear && degree(g) <= 1;
+  if (linear) {
+    Rational lo = a, hi = b;  // the open interval (lo, hi) where all hold so far
+    for (const auto& g : gs) {
+      const int d = degree(g);
+      if (d < 0) return false;  // the zero polynomial is not positive
+      if (d == 0) {
+        if (!(g[0] > 0)) return false;
+        continue;
+      }
+      const Rational r = -g[0] / g[1];  // g > 0 right of r when the slope is positive, left of it otherwise
+      if (g[1] > 0) lo = std::max(lo, r);
+      else hi = std::min(hi, r);
+      if (!(lo < hi)) return false;
+    }
+    return true;
+  }
   Poly prod{Rational(1)};
   for (const auto& g : gs) {
     if (is_zero(g)) return false;

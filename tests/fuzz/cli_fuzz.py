@@ -1,0 +1,334 @@
+#!/usr/bin/env python3
+"""Mutation fuzzer for the splinex command line (issue 13).
+
+Every case runs one command on a mutated document and/or mutated options, with a wall-clock
+timeout and an address-space cap, and is classified:
+
+  ok-json    exit 0 and stdout is valid JSON (plain text for `prove`)
+  ok-error   exit 2 and stderr is exactly one line "splinex: error: <where>: <what> ... (fix: ...)"
+  FAIL-*     anything else: exit 1 (internal error), another status, a signal (crash, abort),
+             a timeout, an error of several lines or without the prefix, exit 0 with invalid JSON,
+             a JSON `null` where a number belongs
+
+Failures are written to OUT/failures/<n>/ (the document, the command line, stdout, stderr) so that
+each can be replayed by hand. The exit status is 1 if any case failed.
+
+  cli_fuzz.py --splinex build/bin/splinex --data tests/data --cases 2000 --seed 1 --out fuzz-out
+"""
+import argparse
+import json
+import os
+import random
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+EXTREME_NUMBERS = ["0", "-0", "1", "-1", "1e100000", "-1e100000", "1e-100000", "1e-400", "1e400", "1/3", "-7/3",
+                   "1/0", "0/0", "2^3", "0x10", "1e", ".", "-", "+1", " 1", "1 ", "nan", "inf", "-inf", "",
+                   "9" * 400, "1" + "0" * 20, "123456789012345678901234567890/7", "1e-20", "0.1", "1.5e3",
+                   "4.9e-324", "1.7976931348623157e308", "2.2250738585072014e-308", "1/" + "3" * 100]
+EXTREME_INTS = [-2147483649, -1, 0, 1, 2, 3, 7, 100, 101, 1000, 2147483647, 2147483648, 10 ** 19, 10 ** 30]
+OPTION_VALUES = ["-1", "0", "1", "2", "3", "100", "2147483647", "2147483648", "-2147483649", "1e308", "1e-15",
+                 "nan", "inf", "", "abc", "0.5", "1/3", "1e100000", "0,1", "0.5,0.5,0.5,0.5,0.5", "x,y",
+                 "\n", "1,", ",", "-0", "99999999999999999999"]
+ARITHS = ["exact", "flint", "double", "mpfr:24", "mpfr:53", "mpfr:113", "mpfr:2", "mpfr:65536", "mpfr:70000",
+          "mpfr:abc", "quad", ""]
+
+
+def load_documents(data):
+    docs = {}
+    for name in sorted(os.listdir(data)):
+        if name.endswith(".json"):
+            with open(os.path.join(data, name), "rb") as f:
+                docs[name] = f.read()
+    return docs
+
+
+def json_paths(value, path=()):
+    """Every (path, value) in a parsed document."""
+    yield path, value
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from json_paths(v, path + (k,))
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            yield from json_paths(v, path + (i,))
+
+
+def set_path(doc, path, value):
+    if not path:
+        return value
+    cur = doc
+    for p in path[:-1]:
+        cur = cur[p]
+    cur[path[-1]] = value
+    return doc
+
+
+def mutate_structured(rng, text):
+    try:
+        doc = json.loads(text)
+    except Exception:
+        return mutate_bytes(rng, text)
+    for _ in range(rng.choice([1, 1, 1, 2, 3])):
+        paths = list(json_paths(doc))
+        path, value = rng.choice(paths)
+        r = rng.random()
+        if isinstance(value, list) and value and r < 0.25:
+            op = rng.choice(["drop", "dup", "swap", "empty", "reverse", "grow"])
+            if op == "drop":
+                value.pop(rng.randrange(len(value)))
+            elif op == "dup":
+                i = rng.randrange(len(value))
+                value.insert(i, json.loads(json.dumps(value[i])))
+            elif op == "swap" and len(value) > 1:
+                i, j = rng.randrange(len(value)), rng.randrange(len(value))
+                value[i], value[j] = value[j], value[i]
+            elif op == "empty":
+                value.clear()
+            elif op == "reverse":
+                value.reverse()
+            elif op == "grow":
+                value.extend(json.loads(json.dumps(value)) * rng.choice([1, 3, 50]))
+        elif isinstance(value, dict) and value and r < 0.3:
+            k = rng.choice(list(value))
+            op = rng.choice(["drop", "rename", "extra"])
+            if op == "drop":
+                del value[k]
+            elif op == "rename":
+                value[k + "x"] = value.pop(k)
+            else:
+                value["extra"] = 1
+        elif path:
+            repl = rng.choice([
+                lambda: rng.choice(EXTREME_NUMBERS),
+                lambda: rng.choice(EXTREME_INTS),
+                lambda: rng.uniform(-1e3, 1e3),
+                lambda: None, lambda: True, lambda: [], lambda: {}, lambda: [value],
+                lambda: "\u00e9\n\"",
+            ])()
+            doc = set_path(doc, path, repl)
+    out = json.dumps(doc)
+    if rng.random() < 0.05:  # numbers as raw tokens instead of strings
+        out = out.replace('"', "")
+    return out.encode()
+
+
+def mutate_bytes(rng, text):
+    b = bytearray(text)
+    for _ in range(rng.randint(1, 8)):
+        if not b:
+            b += b"{"
+        i = rng.randrange(len(b))
+        op = rng.randrange(5)
+        if op == 0:
+            b[i] = rng.randrange(256)
+        elif op == 1:
+            del b[i]
+        elif op == 2:
+            b.insert(i, rng.choice(b'[]{},:"0123456789-e./ \n\xff\x00'))
+        elif op == 3:
+            j = rng.randrange(len(b))
+            b[i:i] = b[min(i, j):max(i, j)][:200]
+        else:
+            b = b[:i]
+    return bytes(b)
+
+
+def command_for(rng, docs):
+    """(argv after the program, document bytes or None, kind)"""
+    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid"))]
+    doc_name = rng.choice(curves)
+    doc = docs[doc_name]
+    kind = rng.choice(["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse",
+                       "compose", "crosscheck", "untrim", "hybrid", "prove"])
+    arith = rng.choice(ARITHS) if rng.random() < 0.3 else rng.choice(["exact", "double", "flint", "mpfr:113"])
+    argv = []
+    extra_files = {}
+    if kind == "eval":
+        argv = ["eval", "--arith", arith, "--at", rng.choice(["0.5", "0.3,0.5", "0", "1", "0.5,0.5,0.5", "1e-100000"])]
+        if rng.random() < 0.3:
+            argv += ["--derivative", rng.choice(["1", "1,0", "0,1", "3,3", "1000"])]
+        if rng.random() < 0.2:
+            argv += ["--method", "deboor"]
+        argv += ["DOC"]
+    elif kind == "insert-knots":
+        argv = ["insert-knots", "--arith", arith, "--knots", rng.choice(["0.25,1/3", "0.5", "0.5,0.5,0.5", "0.1,0.9"]),
+                "--dir", rng.choice(["0", "1"])]
+        if rng.random() < 0.3:
+            argv += ["--method", "boehm"]
+        argv += ["DOC"]
+    elif kind == "elevate":
+        argv = ["elevate", "--arith", arith, "--by", rng.choice(["1", "2", "5"]), "--dir", rng.choice(["0", "1"]),
+                "--method", rng.choice(["auto", "a59", "blossom"]), "DOC"]
+    elif kind in ("extract-bezier", "reverse"):
+        argv = [kind, "--arith", arith, "DOC"]
+        if kind == "reverse":
+            argv[-1:-1] = ["--dir", rng.choice(["0", "1"])]
+    elif kind == "split":
+        argv = ["split", "--arith", arith, "--at", rng.choice(["0.5", "0.25", "1/3"]), "--dir", rng.choice(["0", "1"]), "DOC"]
+    elif kind == "reparametrize":
+        argv = ["reparametrize", "--arith", arith, "--interval", rng.choice(["0,1", "-1,1", "0,1e-20", "2,1"]), "DOC"]
+    elif kind == "compose":
+        outer = rng.choice([n for n in docs if n.startswith("outer")] or curves)
+        extra_files["OUTER"] = docs[outer]
+        method = rng.choice(["symbolic", "interpolation", "trimmed", "tensor"])
+        argv = ["compose", "--arith", arith, "--method", method, "--outer", "OUTER", "--inner", "DOC"]
+        if method == "tensor" and rng.random() < 0.5:
+            argv += ["--eps", rng.choice(["1e-3", "1e-6", "1e-12"])]
+        if rng.random() < 0.2:
+            argv += ["--expand"]
+        doc = docs[rng.choice([n for n in docs if n.startswith("inner")] or curves)]
+    elif kind == "crosscheck":
+        op = rng.choice(["insert-knots", "elevate", "extract-bezier", "split", "reverse", "identity"])
+        argv = ["crosscheck", op, "--float", rng.choice(["double", "mpfr:64", "flint"]), "--grid", rng.choice(["0", "2", "5"])]
+        if op == "insert-knots":
+            argv += ["--knots", "0.3"]
+        if op == "elevate":
+            argv += ["--by", "1"]
+        if op == "split":
+            argv += ["--at", "0.5"]
+        argv += ["DOC"]
+    elif kind == "untrim":
+        doc = docs[rng.choice([n for n in docs if n.startswith(("domain", "bad_loops"))])]
+        argv = ["untrim", "--arith", rng.choice(["exact", "double", "mpfr:64"])]
+        if rng.random() < 0.3:
+            argv += ["--monomial", rng.choice(["1,1", "0,0", "3,2"])]
+        argv += ["DOC"]
+    elif kind == "hybrid":
+        doc = docs[rng.choice([n for n in docs if n.startswith(("hybrid", "bad_hybrid"))])]
+        argv = ["hybrid", "eval", "--arith", rng.choice(["exact", "double", "mpfr:64"]), "--at",
+                rng.choice(["1/2,1/2", "0.3,0.4", "0,0", "1,1"]), "DOC"]
+    elif kind == "prove":
+        argv = ["prove", rng.choice(["knot-insertion-boehm", "elevation-agreement", "bezier-extraction"]), "--cases", "1"]
+        doc = None
+    return argv, doc, extra_files, kind
+
+
+def mutate_options(rng, argv):
+    argv = list(argv)
+    idx = [i for i, a in enumerate(argv) if a.startswith("--") and i + 1 < len(argv) and not argv[i + 1].startswith("--")
+           and argv[i + 1] not in ("DOC", "OUTER")]
+    r = rng.random()
+    if idx and r < 0.5:
+        i = rng.choice(idx)
+        argv[i + 1] = rng.choice(OPTION_VALUES)
+    elif r < 0.6 and idx:
+        i = rng.choice(idx)
+        argv.insert(i, argv[i])  # a repeated option
+        argv.insert(i + 1, argv[i + 2])
+    elif r < 0.7:
+        argv.insert(rng.randrange(len(argv) + 1), rng.choice(["--nope", "-x", "--", "--max-control-points", "0"]))
+    elif r < 0.8:
+        argv = [rng.choice(["--max-control-points", "--max-degree", "--max-memory"]), rng.choice(OPTION_VALUES)] + argv
+    return argv
+
+
+def classify(kind, rc, out, err, timed_out):
+    if timed_out:
+        return "FAIL-timeout"
+    if rc < 0:
+        return "FAIL-signal-%d" % -rc
+    lines = err.decode(errors="replace").rstrip("\n").split("\n") if err else []
+    if rc == 2:
+        if len(lines) == 1 and lines[0].startswith("splinex: error: "):
+            return "ok-error"
+        return "FAIL-error-format"
+    if rc == 0:
+        if kind == "prove":
+            return "ok-json"
+        try:
+            j = json.loads(out)
+        except Exception:
+            return "FAIL-invalid-json"
+        if b"null" in out and kind not in ("compose",):
+            return "FAIL-null"
+        return "ok-json"
+    if rc == 1 and kind == "prove":
+        return "ok-json"  # a refuted proof exits 1 by design
+    return "FAIL-exit-%d" % rc
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--splinex", required=True)
+    ap.add_argument("--data", required=True)
+    ap.add_argument("--cases", type=int, default=500)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--timeout", type=float, default=30.0)
+    ap.add_argument("--memory", default="2G", help="--max-memory given to every case (a hard cap of twice that is set too)")
+    ap.add_argument("--out", default="fuzz-out")
+    a = ap.parse_args()
+
+    rng = random.Random(a.seed)
+    docs = load_documents(a.data)
+    work = os.path.join(a.out, "work")
+    shutil.rmtree(a.out, ignore_errors=True)
+    os.makedirs(work)
+    units = {"M": 20, "G": 30}
+    cap = int(a.memory[:-1]) << units[a.memory[-1]]
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (2 * cap, 2 * cap))
+
+    counts, failures, t0 = {}, 0, time.time()
+    for case in range(a.cases):
+        argv, doc, extra, kind = command_for(rng, docs)
+        r = rng.random()
+        if doc is not None and r < 0.45:
+            doc = mutate_structured(rng, doc)
+        elif doc is not None and r < 0.6:
+            doc = mutate_bytes(rng, doc)
+        if r >= 0.45 and rng.random() < 0.6:
+            argv = mutate_options(rng, argv)
+        files = {}
+        if doc is not None:
+            files["DOC"] = doc
+        files.update(extra)
+        args = []
+        for x in argv:
+            if x in files:
+                path = os.path.join(work, x.lower() + ".json")
+                with open(path, "wb") as f:
+                    f.write(files[x])
+                args.append(path)
+            else:
+                args.append(x)
+        cmd = [a.splinex, "--max-memory", a.memory] + args
+        timed_out = False
+        start = time.time()
+        try:
+            p = subprocess.run(cmd, capture_output=True, timeout=a.timeout, preexec_fn=limit)
+            rc, out, err = p.returncode, p.stdout, p.stderr
+        except subprocess.TimeoutExpired as e:
+            rc, out, err, timed_out = -999, e.stdout or b"", e.stderr or b"", True
+        verdict = classify(kind, rc, out, err, timed_out)
+        counts[verdict] = counts.get(verdict, 0) + 1
+        if verdict.startswith("FAIL"):
+            failures += 1
+            d = os.path.join(a.out, "failures", "%05d" % case)
+            os.makedirs(d)
+            for name, content in files.items():
+                with open(os.path.join(d, name.lower() + ".json"), "wb") as f:
+                    f.write(content)
+            with open(os.path.join(d, "command"), "w") as f:
+                f.write(" ".join(repr(x) for x in cmd) + "\n" + verdict + " after %.1f s\n" % (time.time() - start))
+            with open(os.path.join(d, "stdout"), "wb") as f:
+                f.write(out[:100000])
+            with open(os.path.join(d, "stderr"), "wb") as f:
+                f.write(err[:100000])
+            print("case %d: %s: %s" % (case, verdict, " ".join(argv)), file=sys.stderr)
+        if (case + 1) % 100 == 0:
+            print("%d/%d cases, %d failures, %.0f s" % (case + 1, a.cases, failures, time.time() - t0), file=sys.stderr)
+    summary = {"cases": a.cases, "seed": a.seed, "timeout_s": a.timeout, "max_memory": a.memory,
+               "seconds": round(time.time() - t0, 1), "outcomes": dict(sorted(counts.items())), "failures": failures}
+    with open(os.path.join(a.out, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=2)
+    print(json.dumps(summary, indent=2))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,58 @@
+// Output-sensitive interval joins for the sweeps of untrimming: instead of testing every pair of
+// edges, pieces or samples (quadratic in the loop size), sort by the left end and keep an active
+// list, so the work is O((n + m) log(n + m) + k) for k reported pairs.
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace splinex {
+
+// f(i, j) for every A[i], B[j] whose closed ranges [lo, hi] intersect (lo <= hi each).
+template <class R, class F>
+void for_overlapping_pairs(const std::vector<std::pair<R, R>>& A, const std::vector<std::pair<R, R>>& B, F&& f) {
+  std::vector<std::size_t> ia(A.size()), ib(B.size());
+  std::iota(ia.begin(), ia.end(), 0);
+  std::iota(ib.begin(), ib.end(), 0);
+  std::sort(ia.begin(), ia.end(), [&](std::size_t x, std::size_t y) { return A[x].first < A[y].first; });
+  std::sort(ib.begin(), ib.end(), [&](std::size_t x, std::size_t y) { return B[x].first < B[y].first; });
+  std::vector<std::size_t> active_a, active_b;
+  // Drops the intervals ending before x; the rest all contain x (their left ends are <= x).
+  const auto prune = [](std::vector<std::size_t>& act, const std::vector<std::pair<R, R>>& V, const R& x) {
+    act.erase(std::remove_if(act.begin(), act.end(), [&](std::size_t k) { return V[k].second < x; }), act.end());
+  };
+  std::size_t a = 0, b = 0;
+  while (a < ia.size() || b < ib.size()) {
+    const bool take_a = b == ib.size() || (a < ia.size() && !(B[ib[b]].first < A[ia[a]].first));
+    if (take_a) {
+      const std::size_t i = ia[a++];
+      prune(active_b, B, A[i].first);
+      for (std::size_t j : active_b) f(i, j);
+      active_a.push_back(i);
+    } else {
+      const std::size_t j = ib[b++];
+      prune(active_a, A, B[j].first);
+      for (std::size_t i : active_a) f(i, j);
+      active_b.push_back(j);
+    }
+  }
+}
+
+// f(i, j), i != j, once per unordered pair of V whose closed ranges intersect.
+template <class R, class F>
+void for_overlapping_pairs(const std::vector<std::pair<R, R>>& V, F&& f) {
+  std::vector<std::size_t> iv(V.size());
+  std::iota(iv.begin(), iv.end(), 0);
+  std::sort(iv.begin(), iv.end(), [&](std::size_t x, std::size_t y) { return V[x].first < V[y].first; });
+  std::vector<std::size_t> active;
+  for (std::size_t i : iv) {
+    const R& x = V[i].first;
+    active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t k) { return V[k].second < x; }), active.end());
+    for (std::size_t j : active) f(j, i);
+    active.push_back(i);
+  }
+}
+
+}  // namespace splinex
