@@ -10,9 +10,7 @@ std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, 
     case Operation::Kind::insert_knots: {
       const std::vector<T> X = round_values<T>(op.knots, "knots");
       if (!op.boehm) return {refine_knots(S, op.dir, X, limits)};
-      BSpline<T> R = S;
-      for (const auto& x : X) R = insert_knot(R, op.dir, x, 1, limits);
-      return {R};
+      return {insert_knots_boehm(S, op.dir, X, limits)};
     }
     case Operation::Kind::elevate: {
       const ElevationMethod m = !op.method_auto ? op.method : ArithTraits<T>::exact ? ElevationMethod::bezier_pieces

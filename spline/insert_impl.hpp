@@ -149,6 +149,57 @@ BSpline<T> insert_knot(const BSpline<T>& S, int d, const T& x, int times, const 
 }
 
 template <class T>
+BSpline<T> insert_knots_boehm(const BSpline<T>& S, int d, const std::vector<T>& X, const Limits& limits) {
+  detail::check_direction(S, d);
+  {
+    std::vector<T> sorted = X;
+    std::sort(sorted.begin(), sorted.end(), [](const T& a, const T& b) { return a < b; });
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      std::size_t same = 1;
+      while (i + same < sorted.size() && sorted[i + same] == sorted[i]) ++same;
+      detail::check_insertable(S, d, sorted[i], same, "knots[" + std::to_string(i) + "]");
+      i += same - 1;
+    }
+  }
+  limits.check_count(S.size() / S.count(d) * (S.count(d) + X.size()), "knots");
+  return apply_along(S, d, [&](int p, const std::vector<T>& U0, const T* P0, std::size_t n0, std::size_t m) {
+    CurveBlock<T> out;
+    out.p = p;
+    out.U = U0;
+    out.P.assign(P0, P0 + n0 * m);
+    std::vector<T>& U = out.U;
+    std::vector<T>& P = out.P;
+    std::vector<T> R;
+    for (const T& x : X) {
+      // A5.1 with r = 1 (curve_knot_ins): span k is the last knot <= x, s its multiplicity.
+      const std::size_t k = static_cast<std::size_t>(
+                                std::upper_bound(U.begin(), U.end(), x, [](const T& a, const T& b) { return a < b; }) -
+                                U.begin()) - 1;
+      const int s = static_cast<int>(multiplicity(U, x));
+      if (s >= p) {
+        // Multiplicity p to p+1: the net repeats P_{k-p} (as insert_knot does).
+        R.assign(P.begin() + (k - p) * m, P.begin() + (k - p + 1) * m);
+        P.insert(P.begin() + (k - p + 1) * m, std::make_move_iterator(R.begin()), std::make_move_iterator(R.end()));
+      } else {
+        // New points Q_{k-p+1..k-s} from P_{k-p..k-s}; the points from P_{k-s} on move up by one.
+        R.assign(P.begin() + (k - p) * m, P.begin() + (k - s + 1) * m);
+        const std::size_t L = k - p + 1;
+        for (int i = 0; i <= p - 1 - s; ++i) {
+          const T alpha = (x - U[L + i]) / (U[i + k + 1] - U[L + i]);
+          T* a = R.data() + i * m;
+          const T* b = R.data() + (i + 1) * m;
+          for (std::size_t c = 0; c < m; ++c) a[c] += alpha * (b[c] - a[c]);
+        }
+        P.insert(P.begin() + (k - s) * m, m, T(0));
+        std::move(R.begin(), R.begin() + (p - s) * m, P.begin() + L * m);
+      }
+      U.insert(U.begin() + k + 1, x);
+    }
+    return out;
+  });
+}
+
+template <class T>
 BSpline<T> refine_knots(const BSpline<T>& S, int d, std::vector<T> X, const Limits& limits) {
   detail::check_direction(S, d);
   std::sort(X.begin(), X.end(), [](const T& a, const T& b) { return a < b; });

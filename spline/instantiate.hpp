@@ -16,6 +16,7 @@
   template std::vector<T> derivative(const BSpline<T>&, const std::vector<T>&, const std::vector<int>&);        \
   template BSpline<T> insert_knot(const BSpline<T>&, int, const T&, int, const Limits&);                       \
   template BSpline<T> refine_knots(const BSpline<T>&, int, std::vector<T>, const Limits&);                     \
+  template BSpline<T> insert_knots_boehm(const BSpline<T>&, int, const std::vector<T>&, const Limits&);        \
   template BSpline<T> clamp(const BSpline<T>&, int, const Limits&);                                            \
   template BSpline<T> clamp_all(const BSpline<T>&, const Limits&);                                             \
   template BSpline<T> elevate_degree(const BSpline<T>&, int, int, ElevationMethod, const Limits&);             \

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "exact/flint_rational.hpp"
 #include "exact/random_spline.hpp"
 #include "float/mpfr.hpp"
 #include "helpers.hpp"
@@ -163,4 +164,47 @@ TEST_CASE("float runs of the kernel stay close to the exact result") {
     REQUIRE(E.points.size() == F.points.size());
     for (std::size_t k = 0; k < E.points.size(); ++k) CHECK(to_double(E.points[k]) == Approx(F.points[k]).margin(1e-12));
   }
+}
+
+TEST_CASE("insert_knots_boehm equals insert_knot knot by knot, exactly, on the structured generator") {
+  std::mt19937_64 rng(20261201);
+  int compared = 0;
+  for (int c = 0; c < 400; ++c) {
+    const auto sc = splinex::structured_case(rng);
+    const auto& S = sc.spline;
+    const int d = static_cast<int>(rng() % S.dim());
+    const splinex::Rational lo = S.domain_lo(d), hi = S.domain_hi(d);
+    // Knots inside the domain, some repeated, some equal to existing knots, in no particular order.
+    std::vector<splinex::Rational> X;
+    const int k = 1 + static_cast<int>(rng() % 6);
+    for (int i = 0; i < k; ++i) {
+      const auto& U = S.knots[d];
+      if (rng() % 3 == 0) X.push_back(U[rng() % U.size()]);
+      else X.push_back(lo + (hi - lo) * splinex::Rational(static_cast<long>(rng() % 1000), 1000));
+      if (rng() % 4 == 0) X.push_back(X.back());
+    }
+    splinex::BSpline<splinex::Rational> loop = S;
+    bool legal = true;
+    try {
+      for (const auto& x : X) loop = splinex::insert_knot(loop, d, x, 1);
+    } catch (const splinex::Error&) {
+      legal = false;  // a multiplicity above p+1, or a knot outside the domain
+    }
+    if (!legal) {
+      CHECK_THROWS_AS(splinex::insert_knots_boehm(S, d, X), splinex::Error);
+      continue;
+    }
+    const auto batch = splinex::insert_knots_boehm(S, d, X);
+    REQUIRE(batch.knots == loop.knots);
+    REQUIRE(batch.points == loop.points);
+    REQUIRE(batch.weights == loop.weights);
+    using splinex::FlintRational;
+    std::vector<FlintRational> Xf;
+    for (const auto& x : X) Xf.emplace_back(x);
+    const auto flint = splinex::insert_knots_boehm(
+        splinex::convert<FlintRational>(S, [](const splinex::Rational& x) { return FlintRational(x); }), d, Xf);
+    REQUIRE(splinex::convert<splinex::Rational>(flint, [](const FlintRational& x) { return x.to_rational(); }).points == loop.points);
+    ++compared;
+  }
+  CHECK(compared > 100);
 }
