@@ -111,7 +111,9 @@ BSpline<T> reverse(const BSpline<T>& S, int d) {
     const T& u = U[U.size() - 1 - i];
     R.knots[d][i] = (u == a) ? b : (u == b) ? a : c - u;
   }
-  const auto [before, n, after] = fibre_layout(S, d);
+  // Plain copies: a lambda may not capture structured bindings in C++17 (clang refuses it).
+  const auto layout = fibre_layout(S, d);
+  const std::size_t before = layout.before, n = layout.n, after = layout.after;
   auto flip = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
     for (std::size_t b = 0; b < after; ++b)
       for (std::size_t i = 0; i < n; ++i) {

@@ -255,7 +255,10 @@ HybridForm<T> hybrid_insert(const HybridForm<T>& F, const T& xs, const T& xh, co
     const std::string f = "sides[" + std::to_string(i) + "]";
     const auto [as, bs] = boehm_alpha_beta(S.U, S.du, xs, f + ".U");
     const auto [ah, bh] = boehm_alpha_beta(S.V, S.dh, xh, f + ".V");
-    const auto [ab, bb] = boehm_alpha_beta(S.Ub, S.p, xb, f + ".Ub");
+    // Not a structured binding: C++17 lambdas cannot capture those (clang refuses it).
+    const auto boundary_ab = boehm_alpha_beta(S.Ub, S.p, xb, f + ".Ub");
+    const std::vector<T>& ab = boundary_ab.first;
+    const std::vector<T>& bb = boundary_ab.second;
     const std::size_t nu = S.count_u(), nh = S.count_h(), nb = S.count_b();
     // Eq. 4.10 (coefficients outside the old index ranges are 0).
     auto C = [&](long j, long k, std::size_t c) -> T {
