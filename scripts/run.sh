@@ -3,14 +3,16 @@
 #   scripts/run.sh test      the default test suite through ctest (what CI runs)
 #   scripts/run.sh report    the main job: build/bin/splinex report --out results
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
+#   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
+[[ $what == fuzz ]] && extra_packages=(clang libclang-rt-14-dev) || extra_packages=()
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3)
 missing=()
-for p in "${packages[@]}"; do
+for p in "${packages[@]}" "${extra_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then
@@ -34,5 +36,9 @@ case "$what" in
     cmake --preset sanitize >&2
     cmake --build --preset sanitize
     ctest --preset sanitize ;;
-  *) echo "usage: scripts/run.sh [test|report|sanitize]" >&2; exit 2 ;;
+  fuzz)
+    cmake --preset fuzz >&2
+    cmake --build --preset fuzz --target fuzz_splinex
+    fuzz/run_fuzz.sh build-fuzz/bin/fuzz_splinex tests/data build-fuzz/corpus "${2:-10000000}" ;;
+  *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]]" >&2; exit 2 ;;
 esac

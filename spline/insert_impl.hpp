@@ -117,6 +117,17 @@ void check_insertable(const BSpline<T>& S, int d, const T& x, std::size_t extra,
                           "insert it at most " + std::to_string(p + 1 - std::min<std::size_t>(mult, p + 1)) + " more times");
 }
 
+// Every run of equal knots in the sorted list X, checked as one insertion of that many copies.
+template <class T>
+void check_insertable_sorted(const BSpline<T>& S, int d, const std::vector<T>& X) {
+  for (std::size_t i = 0; i < X.size(); ++i) {
+    std::size_t same = 1;
+    while (i + same < X.size() && X[i + same] == X[i]) ++same;
+    check_insertable(S, d, X[i], same, "knots[" + std::to_string(i) + "]");
+    i += same - 1;
+  }
+}
+
 }  // namespace detail
 
 template <class T>
@@ -151,16 +162,9 @@ BSpline<T> insert_knot(const BSpline<T>& S, int d, const T& x, int times, const 
 template <class T>
 BSpline<T> insert_knots_boehm(const BSpline<T>& S, int d, const std::vector<T>& X, const Limits& limits) {
   detail::check_direction(S, d);
-  {
-    std::vector<T> sorted = X;
-    std::sort(sorted.begin(), sorted.end(), [](const T& a, const T& b) { return a < b; });
-    for (std::size_t i = 0; i < sorted.size(); ++i) {
-      std::size_t same = 1;
-      while (i + same < sorted.size() && sorted[i + same] == sorted[i]) ++same;
-      detail::check_insertable(S, d, sorted[i], same, "knots[" + std::to_string(i) + "]");
-      i += same - 1;
-    }
-  }
+  std::vector<T> sorted = X;
+  std::sort(sorted.begin(), sorted.end(), [](const T& a, const T& b) { return a < b; });
+  detail::check_insertable_sorted(S, d, sorted);
   limits.check_count(S.size() / S.count(d) * (S.count(d) + X.size()), "knots");
   return apply_along(S, d, [&](int p, const std::vector<T>& U0, const T* P0, std::size_t n0, std::size_t m) {
     CurveBlock<T> out;
@@ -203,12 +207,7 @@ template <class T>
 BSpline<T> refine_knots(const BSpline<T>& S, int d, std::vector<T> X, const Limits& limits) {
   detail::check_direction(S, d);
   std::sort(X.begin(), X.end(), [](const T& a, const T& b) { return a < b; });
-  for (std::size_t i = 0; i < X.size(); ++i) {
-    std::size_t same = 1;
-    while (i + same < X.size() && X[i + same] == X[i]) ++same;
-    detail::check_insertable(S, d, X[i], same, "knots[" + std::to_string(i) + "]");
-    i += same - 1;
-  }
+  detail::check_insertable_sorted(S, d, X);
   limits.check_count(S.size() / S.count(d) * (S.count(d) + X.size()), "knots");
   return apply_along(S, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
     return detail::refine_knot_vect_curve(p, U, P, n, m, X);
