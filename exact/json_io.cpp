@@ -1,5 +1,6 @@
 #include "exact/json_io.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -31,8 +32,10 @@ class ExactNumberSax {
 
   bool null() { return put(nullptr) != nullptr; }
   bool boolean(bool b) { return put(b) != nullptr; }
-  bool number_integer(number_integer_t v) { return put(std::to_string(v)) != nullptr; }
-  bool number_unsigned(number_unsigned_t v) { return put(std::to_string(v)) != nullptr; }
+  // Integers that fit 64 bits are kept as JSON integers (exact, no heap node); every other number
+  // as its source text.
+  bool number_integer(number_integer_t v) { return put(v) != nullptr; }
+  bool number_unsigned(number_unsigned_t v) { return put(v) != nullptr; }
   bool number_float(number_float_t, const string_t& text) { return put(text) != nullptr; }
   bool string(string_t& s) { return put(s) != nullptr; }
   bool binary(binary_t&) { error = "binary values are not supported"; return false; }
@@ -87,10 +90,10 @@ class ExactNumberSax {
     }
     return p.empty() ? "document" : p;
   }
-  // Estimated tree memory: a value (16 bytes) with its heap node (a string or a container,
-  // about 48 bytes with malloc's overhead), plus text beyond the short-string buffer.
-  bool charge(std::size_t text) {
-    bytes_ += 64 + (text > 15 ? text + 1 : 0);
+  // Estimated tree memory: a value (16 bytes), with its heap node for a string or a container
+  // (about 48 bytes with malloc's overhead) plus text beyond the short-string buffer.
+  bool charge(std::size_t text, bool heap = true) {
+    bytes_ += 16 + (heap ? 48 : 0) + (text > 15 ? text + 1 : 0);
     if (bytes_ <= max_bytes_) return true;
     size_limit = true;
     error = "reading it needs more than " + format_bytes(max_bytes_) + " of memory (at " + path() +
@@ -100,8 +103,9 @@ class ExactNumberSax {
   template <class V>
   Json* put(V&& v) {
     std::size_t text = 0;
+    constexpr bool heap = !std::is_arithmetic_v<std::decay_t<V>> && !std::is_null_pointer_v<std::decay_t<V>>;
     if constexpr (std::is_same_v<std::decay_t<V>, std::string>) text = v.size();
-    if (!charge(text)) return nullptr;
+    if (!charge(text, heap)) return nullptr;
     if (stack_.empty()) { root = Json(std::forward<V>(v)); return &root; }
     if (stack_.back()->is_array()) {
       if (stack_.back()->size() >= max_elements_) {
@@ -161,6 +165,8 @@ Json read_json_file(const std::string& path, const ReadLimits& limits) {
 }
 
 Rational json_number(const Json& j, const std::string& field) {
+  if (j.is_number_integer() && !j.is_number_unsigned()) return Rational(j.get<std::int64_t>());
+  if (j.is_number_unsigned()) return Rational(j.get<std::uint64_t>());
   if (!j.is_string()) throw ParseError(field, "is not a number", "write a number or a string holding one");
   return parse_number(j.get<std::string>(), field);
 }

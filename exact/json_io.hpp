@@ -20,15 +20,16 @@ using Json = nlohmann::json;
 struct ReadLimits {
   // Elements of any one array (points, knots, weights, loop vertices, a point's coordinates).
   std::size_t max_elements = static_cast<std::size_t>(-1);
-  // Memory of the document tree, estimated per value as it is built (about 64 bytes per number
-  // or container plus the text of long numbers; a 40 MB document of short numbers takes about
-  // 0.7 GB). 0: a quarter of the memory budget (exact/memory.hpp).
+  // Memory of the document tree, estimated per value as it is built (16 bytes per integer or
+  // literal, about 64 per other number or container, plus the text of long numbers).
+  // 0: a quarter of the memory budget (exact/memory.hpp).
   std::size_t max_tree_bytes = 0;
   // From the spline limits: an array may hold max_control_points + 2 (max_degree + 1) elements.
   static ReadLimits from(const Limits& limits);
 };
 
-// Parses JSON text; every number becomes a JSON string holding its original text. Malformed
+// Parses JSON text; an integer that fits 64 bits stays a JSON integer, every other number becomes
+// a JSON string holding its original text (so json_number reads both exactly). Malformed
 // JSON, duplicate keys, nesting deeper than 64 and documents beyond `limits` throw ParseError
 // (SizeLimitError for the limits) naming `source`.
 Json read_json(std::istream& in, const std::string& source, const ReadLimits& limits = {});
