@@ -6,7 +6,6 @@
 #include <iostream>
 #include <set>
 #include <sstream>
-#include <string_view>
 #include <type_traits>
 
 #include "exact/memory.hpp"

@@ -28,6 +28,9 @@ struct Edge {
   std::vector<Rational> c;    // arc: Bernstein ordinates over [x0, x1]; vertical: {y_lo, y_hi}
   Poly f;                     // arc: the same polynomial in powers of x
   Rational at(const Rational& x) const { return poly::bernstein_eval(c, (x - x0) / (x1 - x0)); }
+  // Does the ray from p to +y cross this edge? Arcs only, half-open in x, so a ray through a
+  // vertex counts the two edges meeting there once; the parity over a loop is the crossing number.
+  bool above(const Vec2<Rational>& p) const { return !vertical && x0 <= p[0] && p[0] < x1 && at(p[0]) > p[1]; }
 };
 
 Edge make_edge(const TrimmedDomain& D, std::size_t l, std::size_t i) {
@@ -164,34 +167,16 @@ void validate_curved_domain(const TrimmedDomain& D) {
       ex.emplace_back(E[l][i].x0, E[l][i].x1);
       id.emplace_back(l, i);
     }
-  std::optional<std::array<std::size_t, 4>> first;
-  for_overlapping_pairs(ex, [&](std::size_t u, std::size_t v) {
-    auto [l, i] = id[u];
-    auto [m, j] = id[v];
-    if (std::make_pair(m, j) < std::make_pair(l, i)) {
-      std::swap(l, m);
-      std::swap(i, j);
-    }
-    const std::array<std::size_t, 4> key{l, m, i, j};
-    if (first && !(key < *first)) return;
+  const auto first = first_meeting_edges(ex, id, [&](std::size_t l, std::size_t i, std::size_t m, std::size_t j) {
     std::vector<Vec2<Rational>> allowed;
     if (l == m) {
       const std::size_t n = E[l].size();
       if (j == i + 1) allowed.push_back(D.loops[l][j]);
       if ((j + 1) % n == i) allowed.push_back(D.loops[l][i]);
     }
-    if (edges_meet(E[l][i], E[m][j], allowed)) first = key;
+    return edges_meet(E[l][i], E[m][j], allowed);
   });
-  if (first) {
-    const auto [l, m, i, j] = *first;
-    if (l == m)
-      throw ValidationError("loops[" + std::to_string(l) + "]",
-                            "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
-                            "split it into simple loops (no edge may cross or touch another)");
-    throw ValidationError("loops[" + std::to_string(m) + "]",
-                          "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " + std::to_string(i) + ")",
-                          "trimming loops must be disjoint; merge them into one simple loop");
-  }
+  if (first) throw_meeting_edges(*first);
   for (std::size_t l = 0; l < D.loops.size(); ++l)
     if (loop_signed_area(D, l) == 0)
       throw ValidationError("loops[" + std::to_string(l) + "]", "is degenerate: encloses zero area", "give a loop that encloses a region");
@@ -212,13 +197,21 @@ Rational loop_signed_area(const TrimmedDomain& D, std::size_t l) {
   return a;
 }
 
+void throw_meeting_edges(const std::array<std::size_t, 4>& pair) {
+  const auto [l, m, i, j] = pair;
+  if (l == m)
+    throw ValidationError("loops[" + std::to_string(l) + "]",
+                          "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
+                          "split it into simple loops (no edge may cross or touch another)");
+  throw ValidationError("loops[" + std::to_string(m) + "]",
+                        "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " + std::to_string(i) + ")",
+                        "trimming loops must be disjoint; merge them into one simple loop");
+}
+
 bool inside_loop(const TrimmedDomain& D, std::size_t l, const Vec2<Rational>& p) {
   bool in = false;
   for (std::size_t i = 0; i < D.loops[l].size(); ++i) {
-    const Edge e = make_edge(D, l, i);
-    if (e.vertical) continue;
-    // Half-open in x, so a ray through a vertex counts the two edges meeting there once.
-    if (e.x0 <= p[0] && p[0] < e.x1 && e.at(p[0]) > p[1]) in = !in;
+    if (make_edge(D, l, i).above(p)) in = !in;
   }
   return in;
 }
@@ -399,7 +392,7 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
   //    edges half-open in x so a vertical ray through a vertex counts the two edges meeting there once.
   struct Sample {
     std::size_t tile;
-    Rational x, y;
+    Vec2<Rational> p;
     bool in = false;
   };
   std::vector<Sample> samples;
@@ -433,18 +426,16 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
         continue;
       }
       ++cc.samples;
-      samples.push_back({P.tile, x, (b + t) / 2});
+      samples.push_back({P.tile, {x, (b + t) / 2}});
     }
   }
   std::vector<std::pair<Rational, Rational>> sample_x;
-  for (const auto& q : samples) sample_x.emplace_back(q.x, q.x);
+  for (const auto& q : samples) sample_x.emplace_back(q.p[0], q.p[0]);
   for_overlapping_pairs(edge_x, sample_x, [&](std::size_t ei, std::size_t si) {
-    const Edge& e = E[ei];
-    Sample& q = samples[si];
-    if (!e.vertical && e.x0 <= q.x && q.x < e.x1 && e.at(q.x) > q.y) q.in = !q.in;
+    if (E[ei].above(samples[si].p)) samples[si].in = !samples[si].in;
   });
   for (const auto& q : samples)
-    if (!q.in) fail("tile " + std::to_string(q.tile) + " has the point (" + qs(q.x) + ", " + qs(q.y) + ") outside the region");
+    if (!q.in) fail("tile " + std::to_string(q.tile) + " has the point (" + qs(q.p[0]) + ", " + qs(q.p[1]) + ") outside the region");
   // 4. No gap: the areas add up.
   for (const auto& t : tiles) cc.tile_area_sum += tile_area(t);
   cc.region_area = region_area(D);

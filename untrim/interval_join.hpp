@@ -3,8 +3,10 @@
 // list, so the work is O((n + m) log(n + m) + k) for k reported pairs.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <numeric>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -53,6 +55,26 @@ void for_overlapping_pairs(const std::vector<std::pair<R, R>>& V, F&& f) {
     for (std::size_t j : active) f(j, i);
     active.push_back(i);
   }
+}
+
+// The first pair of loop edges, in the order (loop l, loop m, edge i, edge j) with (l, i) < (m, j),
+// for which meets(l, i, m, j) holds, among the edges whose x-ranges x[k] meet; id[k] = (loop, edge).
+template <class R, class Meets>
+std::optional<std::array<std::size_t, 4>> first_meeting_edges(const std::vector<std::pair<R, R>>& x,
+                                                              const std::vector<std::pair<std::size_t, std::size_t>>& id,
+                                                              Meets&& meets) {
+  std::optional<std::array<std::size_t, 4>> first;
+  for_overlapping_pairs(x, [&](std::size_t u, std::size_t v) {
+    auto [l, i] = id[u];
+    auto [m, j] = id[v];
+    if (std::make_pair(m, j) < std::make_pair(l, i)) {
+      std::swap(l, m);
+      std::swap(i, j);
+    }
+    const std::array<std::size_t, 4> key{l, m, i, j};
+    if ((!first || key < *first) && meets(l, i, m, j)) first = key;
+  });
+  return first;
 }
 
 }  // namespace splinex

@@ -1,9 +1,5 @@
 #include "untrim/loops.hpp"
 
-#include <tuple>
-
-#include "untrim/interval_join.hpp"
-
 #include <string>
 
 #include "float/mpfr.hpp"
@@ -35,20 +31,13 @@ bool segments_meet(const Vec2<Rational>& a, const Vec2<Rational>& b, const Vec2<
   return false;
 }
 
-// Strictly inside the polygon (p not on its boundary): crossing number of a ray to +x.
+// Does the ray from p to +x cross the edge a-b? Half-open in y, so a ray through a vertex counts
+// the two edges meeting there once; p must not lie on the edge. The parity over a loop's edges
+// tells whether p is strictly inside it (crossing number).
 template <class T>
-bool inside(const std::vector<Vec2<T>>& poly, const Vec2<T>& p) {
-  bool in = false;
-  const std::size_t n = poly.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto &a = poly[i], &b = poly[(i + 1) % n];
-    if ((a[1] > p[1]) != (b[1] > p[1])) {
-      // x of the edge at height p[1] compared with p[0], without division: sign-corrected orientation.
-      const T o = detail::orient2(a, b, p);
-      if ((b[1] > a[1]) == (o > T(0))) in = !in;
-    }
-  }
-  return in;
+bool ray_crosses(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+  // x of the edge at height p[1] compared with p[0], without division: sign-corrected orientation.
+  return (a[1] > p[1]) != (b[1] > p[1]) && (b[1] > a[1]) == (detail::orient2(a, b, p) > T(0));
 }
 
 }  // namespace
@@ -107,29 +96,11 @@ void validate_domain(const TrimmedDomain& D) {
       ex.emplace_back(std::min(a[0], b[0]), std::max(a[0], b[0]));
       id.emplace_back(l, i);
     }
-  std::size_t first_l = 0, first_m = 0, first_i = 0, first_j = 0;
-  bool met = false;
-  for_overlapping_pairs(ex, [&](std::size_t u, std::size_t v) {
-    auto [l, i] = id[u];
-    auto [m, j] = id[v];
-    if (l == m) return;
-    if (m < l) {
-      std::swap(l, m);
-      std::swap(i, j);
-    }
+  const auto first = first_meeting_edges(ex, id, [&](std::size_t l, std::size_t i, std::size_t m, std::size_t j) {
     const auto &A = D.loops[l], &B = D.loops[m];
-    if (!segments_meet(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()])) return;
-    // Report the first pair in loop order, as the pairwise loops did.
-    if (!met || std::tie(l, m, i, j) < std::tie(first_l, first_m, first_i, first_j)) {
-      met = true;
-      std::tie(first_l, first_m, first_i, first_j) = std::tie(l, m, i, j);
-    }
+    return l != m && segments_meet(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()]);
   });
-  if (met)
-    throw ValidationError("loops[" + std::to_string(first_m) + "]",
-                          "meets loops[" + std::to_string(first_l) + "] (edge " + std::to_string(first_j) + " and edge " +
-                              std::to_string(first_i) + ")",
-                          "trimming loops must be disjoint; merge them into one simple loop");
+  if (first) throw_meeting_edges(*first);
 }
 
 TrimmedDomain trimmed_domain_from_json(const Json& doc) {
@@ -213,7 +184,7 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
   }
   const auto traps = vertical_decomposition(planar_subdivision(segs));
   // Each trapezoid is in the region when its centre is inside an odd number of loops: the parity of
-  // the loop edges a horizontal ray from the centre crosses (the rule of inside(), summed over the
+  // the loop edges a horizontal ray from the centre crosses (ray_crosses, summed over the
   // disjoint loops). Edges and centres are paired by an interval join on y, so the work grows with
   // the crossings, not with trapezoids times edges.
   std::vector<Vec2<T>> centres;
@@ -232,8 +203,7 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
   std::vector<char> odd(traps.size(), 0);
   for_overlapping_pairs(edge_y, centre_y, [&](std::size_t e, std::size_t z) {
     const auto &a = *edges[e].first, &b = *edges[e].second;
-    const auto& p = centres[z];
-    if ((a[1] > p[1]) != (b[1] > p[1]) && (b[1] > a[1]) == (detail::orient2(a, b, p) > T(0))) odd[z] ^= 1;
+    if (ray_crosses(a, b, centres[z])) odd[z] ^= 1;
   });
   std::vector<int> labels(traps.size(), -1);
   for (std::size_t z = 0; z < traps.size(); ++z) labels[z] = odd[z] ? 0 : -1;
