@@ -10,10 +10,11 @@
 #include <iostream>
 #include <map>
 
-#include "exact/bpt.hpp"
+#include "fixtures/teapot.hpp"
 #include "exact/flint_rational.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "float/mpfr.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/algorithm2.hpp"
 

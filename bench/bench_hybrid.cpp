@@ -7,9 +7,9 @@
 #include <iostream>
 #include <map>
 
-#include "exact/hybrid_examples.hpp"
+#include "fixtures/hybrid_examples.hpp"
 #include "float/mpfr.hpp"
-#include "spline/hybrid.hpp"
+#include "hybrid/hybrid.hpp"
 
 using namespace splinex;
 

@@ -13,7 +13,7 @@
 #include <random>
 
 #include "exact/flint_rational.hpp"
-#include "exact/random_spline.hpp"
+#include "fixtures/random_spline.hpp"
 #include "float/mpfr.hpp"
 #include "spline/kernel.hpp"
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "crosscheck/operations.hpp"
-#include "exact/json_io.hpp"
+#include "io/json_io.hpp"
 #include "float/arith_spec.hpp"
 
 namespace splinex {

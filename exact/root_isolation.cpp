@@ -32,23 +32,6 @@ Rational eval_power(const std::vector<Rational>& c, const Rational& x) {
 
 }  // namespace
 
-std::vector<Rational> bernstein_to_power(const std::vector<Rational>& b) {
-  // sum_i b_i C(n,i) t^i (1-t)^(n-i) = sum_k t^k sum_{i<=k} b_i C(n,i) C(n-i,k-i) (-1)^(k-i)
-  const int n = static_cast<int>(b.size()) - 1;
-  auto binom = [](int N, int K) {
-    Integer r = 1;
-    for (int i = 1; i <= K; ++i) r = r * (N - K + i) / i;
-    return Rational(r);
-  };
-  std::vector<Rational> c(n + 1, Rational(0));
-  for (int k = 0; k <= n; ++k)
-    for (int i = 0; i <= k; ++i) {
-      Rational term = b[i] * binom(n, i) * binom(n - i, k - i);
-      c[k] += ((k - i) % 2) ? Rational(-term) : term;
-    }
-  return c;
-}
-
 std::vector<IsolatedRoot> isolate_real_roots(const std::vector<Rational>& coeffs, const Rational& a, const Rational& b,
                                              int refine_bits) {
   // Clear denominators: multiply by the lcm of the denominators.
@@ -118,55 +101,6 @@ std::vector<ClassifiedRoot> classify_real_roots(const std::vector<Rational>& coe
     const Rational s = r.lo == r.hi ? r.lo : simplest_rational(r.lo, r.hi);
     if (eval_power(coeffs, s) == 0) c.exact = s;
     out.push_back(c);
-  }
-  return out;
-}
-
-std::vector<EdgeCrossing> trimming_edge_crossings(const TrimmedComposition<Rational>& C, std::size_t pi, int refine_bits) {
-  const auto& P = C.patches.at(pi);
-  const BSpline<Rational>& S = C.inner_pieces[P.inner_piece].spline;
-  const int k = S.dim();
-  std::vector<EdgeCrossing> out;
-  for (int free = 0; free < k; ++free) {
-    // Every edge in direction `free`: the other parameters at the lower or upper end of the box.
-    const int others = k - 1;
-    for (int mask = 0; mask < (1 << others); ++mask) {
-      std::vector<Rational> fixed(k);
-      std::vector<int> fixed_idx(k, 0);
-      for (int l = 0, bit = 0; l < k; ++l) {
-        if (l == free) continue;
-        const bool up = (mask >> bit++) & 1;
-        fixed[l] = up ? S.domain_hi(l) : S.domain_lo(l);
-        fixed_idx[l] = up ? S.degrees[l] : 0;
-      }
-      // The edge's Bernstein coefficients: the control points along `free` at the fixed corner indices.
-      std::vector<std::size_t> stride(k);
-      std::size_t st = 1;
-      for (int l = 0; l < k; ++l) { stride[l] = st; st *= S.count(l); }
-      for (std::size_t ci = 0; ci < P.region.size(); ++ci) {
-        const auto& cond = P.region[ci];
-        for (bool upper : {false, true}) {
-          if ((upper && !cond.check_hi) || (!upper && !cond.check_lo)) continue;
-          const Rational bound = upper ? cond.hi : cond.lo;
-          std::vector<Rational> bern;
-          for (int i = 0; i <= S.degrees[free]; ++i) {
-            std::size_t g = 0;
-            for (int l = 0; l < k; ++l) g += (l == free ? i : fixed_idx[l]) * stride[l];
-            const Rational w = S.is_rational() ? S.weights[g] : Rational(1);
-            bern.push_back(S.points[g * S.q + cond.coord] * w - bound * w);  // X_c - bound * W
-          }
-          bool all_zero = true;
-          for (const auto& x : bern) all_zero = all_zero && x == 0;
-          if (all_zero) continue;  // the edge lies on the knot line: no isolated crossing
-          const Rational lo = S.domain_lo(free), width = S.domain_hi(free) - lo;
-          for (auto root : isolate_real_roots(bernstein_to_power(bern), Rational(0), Rational(1), refine_bits)) {
-            root.lo = lo + width * root.lo;
-            root.hi = lo + width * root.hi;
-            out.push_back({static_cast<int>(ci), upper, free, fixed, root});
-          }
-        }
-      }
-    }
   }
   return out;
 }

@@ -1,4 +1,5 @@
 #include "experiments/algorithm2_stars.hpp"
+#include "experiments/section.hpp"
 
 #include <gmp.h>
 
@@ -7,11 +8,12 @@
 #include <set>
 #include <sstream>
 
-#include "exact/bpt.hpp"
+#include "fixtures/teapot.hpp"
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/teapot_stars.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/algorithm2.hpp"
 
@@ -147,6 +149,13 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
   }
   write_file_atomically(opt.out_dir + "/algorithm2_stars.csv", csv.str());
   return md.str();
+}
+
+void algorithm2_stars_section(ReportContext& ctx) {
+  Algorithm2StarsOptions options;
+  options.out_dir = ctx.options.out_dir;
+  if (!ctx.options.full) options.eps = {1e-2, 1e-3};
+  ctx.markdown["algorithm2-stars"] = run_algorithm2_stars(options, ctx.progress, ctx.ok);
 }
 
 }  // namespace splinex

@@ -1,4 +1,5 @@
 #include "experiments/checkerboard.hpp"
+#include "experiments/section.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -9,6 +10,7 @@
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/algorithm2.hpp"
 
@@ -180,6 +182,11 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
      << g(to_double(sum2 / Rational(static_cast<long>(n2)))) << " (T(S) spans about " << g(std::max(xmax - xmin, ymax - ymin))
      << "). Figure: `checkerboard.svg`.\n\n![checkerboard](checkerboard.svg)\n";
   return md.str();
+}
+
+void checkerboard_section(ReportContext& ctx) {
+  ctx.progress("checkerboard texture (Definition 1)");
+  ctx.markdown["checkerboard"] = run_checkerboard(ctx.options.out_dir, ctx.ok);
 }
 
 }  // namespace splinex

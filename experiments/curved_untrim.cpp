@@ -1,14 +1,16 @@
 #include "experiments/curved_untrim.hpp"
+#include "experiments/section.hpp"
 
 #include <chrono>
 #include <iomanip>
 #include <sstream>
 
-#include "exact/json_io.hpp"
+#include "io/json_io.hpp"
+#include "io/trimmed_domain_io.hpp"
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
-#include "spline/untrim_integrate.hpp"
+#include "untrim/tile_integrals.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/poly.hpp"
 
@@ -160,6 +162,11 @@ std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
      << "| density | exact integral | tiles (exact) vs Green | double abs error | MPFR 113 abs error |\n|---|---|---|---|---|\n"
      << rows.str() << "\nFigure: `untrim_curved.svg`.\n\n![curved tiles](untrim_curved.svg)\n";
   return md.str();
+}
+
+void curved_untrim_section(ReportContext& ctx) {
+  ctx.progress("untrimming with curved tile sides");
+  ctx.markdown["curved-untrim"] = run_curved_untrim(ctx.options.out_dir, ctx.ok);
 }
 
 }  // namespace splinex

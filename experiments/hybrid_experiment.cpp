@@ -1,4 +1,5 @@
 #include "experiments/hybrid_experiment.hpp"
+#include "experiments/section.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,12 +7,12 @@
 #include <iomanip>
 #include <sstream>
 
-#include "exact/hybrid_examples.hpp"
-#include "exact/hybrid_io.hpp"
+#include "fixtures/hybrid_examples.hpp"
+#include "io/hybrid_io.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
-#include "spline/hybrid.hpp"
-#include "spline/hybrid_refine.hpp"
+#include "hybrid/hybrid.hpp"
+#include "hybrid/form.hpp"
 #include "spline/kernel.hpp"
 
 namespace splinex {
@@ -216,7 +217,7 @@ std::vector<std::vector<double>> eval_double(const HybridPatch<Rational>& P, con
 std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
   std::ostringstream md;
   md << "## The hybrid patch with B-spline boundaries (papers/003, issue 5)\n\n"
-     << "Control points are constructed (the paper prints none; `exact/hybrid_examples.hpp` says how). Proofs: `hybrid-thm-3.1`, "
+     << "Control points are constructed (the paper prints none; `fixtures/hybrid_examples.hpp` says how). Proofs: `hybrid-thm-3.1`, "
         "`hybrid-thm-3.2` (as stated: refuted at corners), `hybrid-thm-3.2-corrected`, `hybrid-thm-4.1`, `hybrid-thm-4.2`, "
         "`hybrid-salvi-elevation` in the proof table above.\n\n";
   const auto P21 = hybrid_example_2_1();
@@ -422,6 +423,11 @@ std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
   md << "Figures: `hybrid_isolines.svg` (iso-lines of s_0 and h_0), `hybrid_height.svg` (height-shaded patch); meshes for ParaView: "
         "`hybrid_example_2_1.obj`, `hybrid_hole_5.obj`, `hybrid_hole_6.obj` (patch and neighbours); data: `hybrid_examples.json`.\n\n";
   return md.str();
+}
+
+void hybrid_section(ReportContext& ctx) {
+  ctx.progress("hybrid patch (papers/003)");
+  ctx.markdown["hybrid"] = run_hybrid_experiment(ctx.options.out_dir, ctx.ok);
 }
 
 }  // namespace splinex

@@ -1,4 +1,5 @@
 #include "experiments/teapot_stars.hpp"
+#include "experiments/section.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -7,10 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "exact/bpt.hpp"
+#include "fixtures/teapot.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
-#include "float/trimming_polyline.hpp"
+#include "untrim/trimming_polyline.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 
 namespace splinex {
@@ -257,6 +259,13 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
         "`stars_spout.svg`, `stars_lid.svg`; meshes (OBJ, one group per star): `stars_*.obj`; per-star data: "
         "`stars.csv`.\n\n![body](stars_body.svg)\n";
   return md.str();
+}
+
+void teapot_stars_section(ReportContext& ctx) {
+  ctx.progress("teapot star pattern");
+  StarPatternOptions options;
+  options.out_dir = ctx.options.out_dir;
+  ctx.markdown["teapot-stars"] = run_teapot_stars(options, ctx.progress, ctx.ok);
 }
 
 }  // namespace splinex

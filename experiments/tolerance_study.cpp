@@ -1,4 +1,5 @@
 #include "experiments/tolerance_study.hpp"
+#include "experiments/section.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -10,7 +11,8 @@
 #include "exact/root_isolation.hpp"
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
-#include "float/trimming_polyline.hpp"
+#include "untrim/trimming_polyline.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 
 namespace splinex {
@@ -305,7 +307,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   md2 << "\n### Surface case: trimming polylines within eps\n\n"
       << "S: degrees (1, 2), s_u = 1/5 + 3/5 r + 1/5 t(1-t), s_v = 1/10 + 4/5 t; T: bicubic surface in R^2 with the "
          "knot u0 = 1/2 of multiplicity m. The float trimming curve is a polyline within eps of s_u = 1/2 "
-         "(`float/trimming_polyline.hpp`: marching squares on 8 x 8 cells, crossings bisected to eps, chords refined "
+         "(`untrim/trimming_polyline.hpp`: marching squares on 8 x 8 cells, crossings bisected to eps, chords refined "
          "until their midpoints are within eps/2 of the curve). Along " << L << " lines t = t_i the exact crossing r*(t_i) "
          "is rational, so the misassigned length |r_poly - r*| and the error |R_eps - T(S)| at 15 points between them "
          "are exact. The misassigned area is the integral of |h(t) - r*(t)|, h the polyline as a graph over t "
@@ -410,6 +412,10 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
         "![tolerance, surface](tolerance_surface.svg)\n";
   md << volume_case(out_dir, progress, ok);
   return md.str();
+}
+
+void tolerance_section(ReportContext& ctx) {
+  ctx.markdown["tolerance"] = run_tolerance_study(ctx.options.out_dir, ctx.progress, ctx.ok);
 }
 
 }  // namespace splinex

@@ -1,4 +1,5 @@
 #include "experiments/untrim_tolerance.hpp"
+#include "experiments/section.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +14,7 @@
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/algorithm2.hpp"
 #include "untrim/polygon.hpp"
@@ -348,6 +350,13 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
      << "![untrimming tolerance](untrim_tolerance.svg)\n\n![untrimming cost](untrim_tolerance_cost.svg)\n";
   write_file_atomically(opt.out_dir + "/untrim_tolerance.md", "# Untrimming tolerance study\n" + md.str());
   return md.str();
+}
+
+void untrim_tolerance_section(ReportContext& ctx) {
+  UntrimToleranceOptions options;
+  options.out_dir = ctx.options.out_dir;
+  if (ctx.options.full) options = full_untrim_tolerance_options(ctx.options.out_dir);
+  ctx.markdown["untrim-tolerance"] = run_untrim_tolerance(options, ctx.progress, ctx.ok);
 }
 
 }  // namespace splinex

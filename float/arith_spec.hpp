@@ -2,10 +2,12 @@
 // generic code to it.
 #pragma once
 #include <string>
+#include <utility>
 
 #include "exact/flint_rational.hpp"
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
+#include "spline/errors.hpp"
 
 namespace splinex {
 
@@ -24,17 +26,36 @@ struct ArithTag {
   using type = T;
 };
 
-// Calls f(ArithTag<T>{}) with T the arithmetic named by spec; MPFR runs inside a precision scope.
-template <class F>
-decltype(auto) with_arith(const ArithSpec& spec, F&& f) {
+/// The one arithmetic dispatcher: calls f(ArithTag<T>{}) with T the arithmetic named by spec (MPFR
+/// inside a precision scope). A module instantiated for exact (GMP), double and MPFR but not FLINT
+/// says so with WithFlint = false: then flint is a UsageError naming `what`, and f is never
+/// instantiated for FlintRational.
+template <bool WithFlint = true, class F>
+decltype(auto) dispatch_arith(const ArithSpec& spec, const std::string& what, F&& f) {
   switch (spec.kind) {
     case ArithSpec::Kind::exact: return f(ArithTag<Rational>{});
-    case ArithSpec::Kind::flint: return f(ArithTag<FlintRational>{});
+    case ArithSpec::Kind::flint:
+      if constexpr (WithFlint) return f(ArithTag<FlintRational>{});
+      break;
     case ArithSpec::Kind::dbl: return f(ArithTag<double>{});
-    case ArithSpec::Kind::mpfr: break;
+    case ArithSpec::Kind::mpfr: {
+      Mpfr::Precision scope(spec.bits);
+      return f(ArithTag<Mpfr>{});
+    }
   }
-  Mpfr::Precision scope(spec.bits);
-  return f(ArithTag<Mpfr>{});
+  throw UsageError("arith", what + " runs in exact, double or mpfr:BITS (not flint)", "use --arith exact, double or mpfr:BITS");
+}
+
+/// Every arithmetic (the kernel and composition are instantiated for all four).
+template <class F>
+decltype(auto) with_arith(const ArithSpec& spec, F&& f) {
+  return dispatch_arith<true>(spec, "", std::forward<F>(f));
+}
+
+/// Exact (GMP), double and MPFR: untrimming, Algorithm 2 and the hybrid patch.
+template <class F>
+decltype(auto) with_arith_except_flint(const ArithSpec& spec, const std::string& what, F&& f) {
+  return dispatch_arith<false>(spec, what, std::forward<F>(f));
 }
 
 }  // namespace splinex

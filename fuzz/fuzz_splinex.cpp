@@ -14,12 +14,14 @@
 #include <string>
 
 #include "exact/flint_rational.hpp"
-#include "exact/hybrid_io.hpp"
-#include "exact/json_io.hpp"
+#include "io/hybrid_io.hpp"
+#include "io/json_io.hpp"
+#include "io/trimmed_domain_io.hpp"
 #include "exact/memory.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
-#include "spline/hybrid.hpp"
+#include "hybrid/hybrid.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/loops.hpp"

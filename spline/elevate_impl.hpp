@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <string>
 
-#include "spline/binomial.hpp"
+#include "spline/bernstein.hpp"
 #include "spline/elevate.hpp"
 #include "spline/insert_impl.hpp"
 

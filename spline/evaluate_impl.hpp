@@ -3,6 +3,7 @@
 #include <string>
 
 #include "spline/basis.hpp"
+#include "spline/bernstein.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {
@@ -185,7 +186,6 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
   // increasing multi-index so that every C^(a-b) is known.
   const int q = S.q;
   std::vector<std::vector<T>> C(nb, std::vector<T>(q));
-  auto binom = [](int n, int r) { long v = 1; for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i; return v; };
   for (std::size_t a = 0; a < nb; ++a) {
     std::vector<int> al(k);
     for (int d = 0; d < k; ++d) al[d] = static_cast<int>((a / bstride[d]) % (orders[d] + 1));
@@ -197,7 +197,7 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
       for (int d = 0; d < k; ++d) {
         int bd = static_cast<int>((b / bstride[d]) % (orders[d] + 1));
         if (bd > al[d]) { le = false; break; }
-        coef *= binom(al[d], bd);
+        coef *= detail::binomial<long>(al[d], bd);
         amb += (al[d] - bd) * bstride[d];
       }
       if (!le) continue;

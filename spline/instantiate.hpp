@@ -1,9 +1,8 @@
-// Explicit instantiation of the kernel for one scalar type. Included once per standard
-// arithmetic by exact/ and float/, so client code compiles against declarations only.
+// Explicit instantiation of the B-spline kernel for one scalar type. Included once per standard
+// arithmetic by exact/ and float/, so client code compiles against declarations only
+// (composition instantiates itself in compose/instances.cpp).
 #pragma once
 #include "spline/bezier_impl.hpp"
-#include "spline/compose_impl.hpp"
-#include "spline/trimmed_compose_impl.hpp"
 #include "spline/elevate_impl.hpp"
 #include "spline/evaluate_impl.hpp"
 #include "spline/insert_impl.hpp"
@@ -26,17 +25,7 @@
   template std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>&, int, const T&, const Limits&);        \
   template BSpline<T> reparametrize(const BSpline<T>&, int, const T&, const T&);                               \
   template BSpline<T> reverse(const BSpline<T>&, int);                                                         \
-  template std::vector<int> composed_degrees(const BSpline<T>&, const BSpline<T>&);                            \
-  template BSpline<T> compose_bezier(const BSpline<T>&, const BSpline<T>&, CompositionMethod, const Limits&);   \
-  template std::vector<T> evaluate_bezier_anywhere(const BSpline<T>&, const std::vector<T>&);                  \
-  template BSpline<T> compose(const BSpline<T>&, const BSpline<T>&, const CompositionOptions&, const Limits&);  \
-  template BSpline<T> compose_bezier_homogeneous(const BSpline<T>&, const BSpline<T>&, CompositionMethod,        \
-                                                 const Limits&, bool&);                                          \
   template std::vector<T> integrate(const BSpline<T>&);                                                         \
   template BSpline<T> difference(const BSpline<T>&, const BSpline<T>&, const Limits&);                          \
   template struct AbsIntegral<T>;                                                                               \
-  template AbsIntegral<T> integrate_abs(const BSpline<T>&, int, const T&);                                      \
-  template std::vector<T> evaluate_patch(const TrimmedPatch<T>&, const std::vector<T>&);                        \
-  template struct TrimmedComposition<T>;                                                                        \
-  template TrimmedComposition<T> compose_trimmed(const BSpline<T>&, const BSpline<T>&, const TrimmedOptions&,   \
-                                                 const Limits&);
+  template AbsIntegral<T> integrate_abs(const BSpline<T>&, int, const T&);

@@ -80,7 +80,7 @@ T polygon_crossing(const std::vector<T>& b) {
   const int p = static_cast<int>(b.size()) - 1;
   T x = T(1) / T(2);
   for (int i = 0; i < p; ++i) {
-    const bool change = (b[i] < T(0) && !(b[i + 1] < T(0))) || (b[i] > T(0) && !(b[i + 1] > T(0)));
+    const bool change = (b[i] < T(0) && !(b[i + 1] < T(0))) || (T(0) < b[i] && !(T(0) < b[i + 1]));
     if (change) {
       x = (T(i) + b[i] / (b[i] - b[i + 1])) / T(p);
       break;
@@ -90,7 +90,7 @@ T polygon_crossing(const std::vector<T>& b) {
   T lo(0), hi(1);
   for (int k = 0; k < bits; ++k) {
     const T m = (lo + hi) / T(2);
-    (m <= x ? lo : hi) = m;
+    (!(x < m) ? lo : hi) = m;
   }
   if (lo == T(0)) return hi;  // keep the split point strictly inside the cell
   return lo;
@@ -102,7 +102,7 @@ void integrate_abs_cell(const BSpline<T>& cell, int depth, const T& budget_per_v
   bool pos = false, neg = false;
   T sum(0), sum_abs(0);
   for (const T& b : cell.points) {
-    if (b > T(0)) pos = true;
+    if (T(0) < b) pos = true;
     if (b < T(0)) neg = true;
     sum = sum + b;
     sum_abs = sum_abs + (b < T(0) ? T(-b) : b);
@@ -117,7 +117,7 @@ void integrate_abs_cell(const BSpline<T>& cell, int depth, const T& budget_per_v
     acc.upper = acc.upper + abs_integral;
     return;
   }
-  if (depth == 0 || vol * (sum_abs - (sum < T(0) ? T(-sum) : sum)) / n <= budget_per_volume * vol) {
+  if (depth == 0 || !(budget_per_volume * vol < vol * (sum_abs - (sum < T(0) ? T(-sum) : sum)) / n)) {
     ++acc.undecided;
     acc.lower = acc.lower + abs_integral;
     acc.upper = acc.upper + vol * sum_abs / n;
@@ -125,7 +125,7 @@ void integrate_abs_cell(const BSpline<T>& cell, int depth, const T& budget_per_v
   }
   int dir = 0;  // halve the longest side
   for (int d = 1; d < cell.dim(); ++d)
-    if (cell.domain_hi(d) - cell.domain_lo(d) > cell.domain_hi(dir) - cell.domain_lo(dir)) dir = d;
+    if (cell.domain_hi(dir) - cell.domain_lo(dir) < cell.domain_hi(d) - cell.domain_lo(d)) dir = d;
   T frac = T(1) / T(2);
   if (cell.dim() == 1) frac = polygon_crossing(cell.points);
   const T mid = cell.domain_lo(dir) + (cell.domain_hi(dir) - cell.domain_lo(dir)) * frac;
@@ -149,13 +149,13 @@ AbsIntegral<T> integrate_abs(const BSpline<T>& f, int max_depth, const T& rel_wi
   // Without a relative target the budget is -1: no cell stops early. Else a first pass at depth 0
   // gives the lower bound the budget is relative to.
   T budget_per_volume(-1);
-  if (rel_width > T(0)) {
+  if (T(0) < rel_width) {
     AbsIntegral<T> first;
     first.lower = first.upper = T(0);
     for (const auto& piece : pieces) detail::integrate_abs_cell(piece.spline, 0, T(-1), first);
     T vol(1);
     for (int d = 0; d < f.dim(); ++d) vol = vol * (f.domain_hi(d) - f.domain_lo(d));
-    budget_per_volume = rel_width * (first.lower > T(0) ? first.lower : first.upper) / vol;
+    budget_per_volume = rel_width * (T(0) < first.lower ? first.lower : first.upper) / vol;
   }
   AbsIntegral<T> acc;
   acc.lower = T(0);

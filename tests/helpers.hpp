@@ -2,7 +2,7 @@
 #include <sstream>
 #include <string>
 
-#include "exact/json_io.hpp"
+#include "io/json_io.hpp"
 
 namespace splinex::test {
 

@@ -2,6 +2,7 @@
 
 #include "helpers.hpp"
 #include "spline/errors.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 
 using namespace splinex;

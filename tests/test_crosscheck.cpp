@@ -2,8 +2,8 @@
 #include <random>
 
 #include "crosscheck/crosscheck.hpp"
-#include "exact/bpt.hpp"
-#include "exact/random_spline.hpp"
+#include "fixtures/teapot.hpp"
+#include "fixtures/random_spline.hpp"
 #include "helpers.hpp"
 #include "spline/errors.hpp"
 

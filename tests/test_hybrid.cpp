@@ -1,4 +1,4 @@
-// The hybrid patch (spline/hybrid.hpp): Wachspress coordinates against CGAL exactly, the rational
+// The hybrid patch (hybrid/hybrid.hpp): Wachspress coordinates against CGAL exactly, the rational
 // form of s_i (Eq. 2.9 = Eq. 2.5), the limits at corners and at a triangle's opposite vertex,
 // boundary interpolation (Theorem 3.1) spot checks, float vs exact, typed errors.
 #include <catch2/catch.hpp>
@@ -6,11 +6,12 @@
 #include <random>
 #include <sstream>
 
-#include "exact/hybrid_examples.hpp"
-#include "exact/hybrid_io.hpp"
+#include "fixtures/hybrid_examples.hpp"
+#include "hybrid/wachspress_check.hpp"
+#include "io/hybrid_io.hpp"
 #include "float/mpfr.hpp"
-#include "spline/hybrid.hpp"
-#include "spline/hybrid_refine.hpp"
+#include "hybrid/hybrid.hpp"
+#include "hybrid/form.hpp"
 #include "spline/kernel.hpp"
 
 using namespace splinex;

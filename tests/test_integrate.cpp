@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "exact/random_spline.hpp"
+#include "fixtures/random_spline.hpp"
 #include "exact/rational.hpp"
 #include "spline/kernel.hpp"
 
@@ -107,7 +107,7 @@ TEST_CASE("integrate_abs: a relative target, checked against the antiderivative"
   const auto F = [](const Rational& t) { return Rational(t * t * t / 3 - Rational(13, 24) * t * t + t / 4); };
   const Rational truth = F(Rational(1, 3)) - F(0) - (F(Rational(3, 4)) - F(Rational(1, 3))) + F(1) - F(Rational(3, 4));
   const auto f = bezier1({Rational(1, 4), Rational(-7, 24), Rational(1, 6)}, 0, 1);
-  for (const Rational rel : {Rational(1, 1000), Rational(1, 1000000000000LL)}) {
+  for (const Rational& rel : {Rational(1, 1000), Rational(1, 1000000000000LL)}) {
     const auto e = integrate_abs(f, 60, rel);
     INFO("rel " << rel);
     CHECK(e.lower <= truth);

@@ -14,7 +14,7 @@
 #include "crosscheck/crosscheck.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "exact/flint_rational.hpp"
-#include "exact/random_spline.hpp"
+#include "fixtures/random_spline.hpp"
 #include "spline/kernel.hpp"
 
 namespace sx = splinex;

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
-#include "float/trimming_polyline.hpp"
+#include "untrim/trimming_polyline.hpp"
 #include "spline/kernel.hpp"
 
 using namespace splinex;

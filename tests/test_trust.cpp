@@ -3,11 +3,12 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "exact/random_spline.hpp"
+#include "fixtures/random_spline.hpp"
 #include "float/rounding.hpp"
 #include "helpers.hpp"
 #include "proofs/identity.hpp"
 #include "proofs/suite.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/loops.hpp"
 

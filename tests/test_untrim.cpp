@@ -1,12 +1,13 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
-#include "spline/untrim.hpp"
+#include "untrim/sweep.hpp"
 #include "untrim/algorithm2.hpp"
 #include "untrim/loops.hpp"
 #include "untrim/polygon.hpp"
-#include "spline/untrim_integrate.hpp"
+#include "untrim/tile_integrals.hpp"
 
 using namespace splinex;
 

@@ -5,9 +5,10 @@
 
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
-#include "spline/untrim.hpp"
-#include "spline/untrim_integrate.hpp"
+#include "untrim/sweep.hpp"
+#include "untrim/tile_integrals.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/loops.hpp"
 #include "untrim/polygon.hpp"

@@ -6,7 +6,7 @@
 #include "exact/flint_rational.hpp"
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
-#include "float/trimming_polyline.hpp"
+#include "untrim/trimming_polyline.hpp"
 
 namespace splinex {
 

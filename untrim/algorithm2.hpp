@@ -4,7 +4,7 @@
 // pieces S_i (isoparametric crossings split), each (i, j) a trimmed region with its composed patch
 // T_j^e(S_i). Step 5 (untrim): per inner piece, the trimming curves s_c = u_k are turned into a
 // planar straight-line subdivision of the piece's box and tiled by the vertical line sweep of
-// spline/untrim.hpp; each tile is labelled with the region that owns its interior. Step 9: the
+// untrim/sweep.hpp; each tile is labelled with the region that owns its interior. Step 9: the
 // tile's Coons patch Q (degree (1, 1)) is composed into the region's patch: R = T_j^e(S_i(Q)),
 // degree 1 x (sum of the patch's degrees) per direction. Step 7 (expansion of T_j) is automatic:
 // the patch is the polynomial T_j^e, defined off T_j's box (Observation 1), so tiles that stray
@@ -21,8 +21,9 @@
 #pragma once
 #include <vector>
 
+#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
-#include "spline/untrim.hpp"
+#include "untrim/sweep.hpp"
 
 namespace splinex {
 

@@ -18,7 +18,7 @@
 // slab's middle; arcs equal there are the same polynomial (a loop edge lying on a knot line) and
 // are merged. Between consecutive arcs lies a curved trapezoid; it is inside when an odd number of
 // loop arcs lie at or below its bottom (even-odd rule). Trapezoids continue tiles of the same
-// region across slab boundaries as in spline/untrim.hpp. Every tile's chains are piecewise
+// region across slab boundaries as in untrim/sweep.hpp. Every tile's chains are piecewise
 // polynomial; its Coons patch has degree (d, 1).
 //
 // certify_cover proves, exactly and independently of the sweep's bookkeeping, that tiles cover

@@ -6,7 +6,7 @@
 // consecutive vertex, non-zero area (degenerate loops); no self-intersection (CGAL is_simple);
 // every vertex in the closed box (loops leaving the domain); no two loops crossing or touching.
 //
-// Tiles come from the line sweep of spline/untrim.hpp (exact in rationals, or in double from the
+// Tiles come from the line sweep of untrim/sweep.hpp (exact in rationals, or in double from the
 // rounded vertices). Cross-checks, independent of the sweep: the region's area by CGAL's exact
 // polygon areas with nesting parity, and integrals of polynomial densities by Green's theorem on
 // the loops (the density in monomials, int_region f dA = sum over loops of +-oint F dy with
@@ -15,9 +15,8 @@
 #include <array>
 #include <vector>
 
-#include "exact/json_io.hpp"
 #include "exact/rational.hpp"
-#include "spline/untrim.hpp"
+#include "untrim/sweep.hpp"
 #include "untrim/polygon.hpp"
 
 namespace splinex {
@@ -39,11 +38,6 @@ struct TrimmedDomain {
   Polygon edge(std::size_t l, std::size_t i) const;
 };
 
-// Reads {"type": "trimmed_domain", "domain": [[x0, x1], [y0, y1]], "loops": [[[x, y], ...], ...]}
-// exactly and validates it (validate_domain). A loop item {"controls": [[x, y], ...]} after vertex
-// i makes edge i a Bezier curve with these inner control points (untrim/curved.hpp: a polynomial
-// graph y = f(x), control x evenly spaced between the end points).
-TrimmedDomain trimmed_domain_from_json(const Json& doc);
 void validate_domain(const TrimmedDomain& D);
 // The per-vertex rules both validations share: no vertex repeating the next (zero-length edge),
 // every vertex in the closed box (DomainError "leaves the domain").

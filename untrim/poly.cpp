@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "exact/root_isolation.hpp"
-#include "spline/binomial.hpp"
+#include "spline/bernstein.hpp"
 
 namespace splinex::poly {
 

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "exact/rational.hpp"
-#include "spline/trimmed_compose.hpp"
-#include "spline/untrim.hpp"
+#include "compose/trimmed_compose.hpp"
+#include "untrim/sweep.hpp"
 
 namespace splinex {
 

@@ -1,0 +1,42 @@
+// splinex crosscheck: one operation exactly and in a float arithmetic; the exact errors.
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "crosscheck/crosscheck.hpp"
+
+namespace splinex::app {
+
+Commands add_crosscheck(CLI::App& app) {
+  struct Options {
+    std::string op, float_arith = "double", file;
+    int grid = 0;
+    OpOptions op_options;
+  };
+  auto o = std::make_shared<Options>();
+  auto* c = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
+  c->add_option("operation", o->op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
+  c->add_option("--float", o->float_arith, "double, mpfr:BITS, or flint (exact: must agree exactly)")->capture_default_str();
+  c->add_option("--grid", o->grid, "evaluation points per direction (0: 65/17/7 by dimension; at most 10000)")
+      ->check(CLI::Range(0, 10000));
+  c->add_option("--dir", o->op_options.dir, "parametric direction");
+  c->add_option("--knots", o->op_options.knots, "insert-knots: knots");
+  c->add_option("--by", o->op_options.by, "elevate: amount");
+  c->add_option("--method", o->op_options.insert_method, "insert-knots: a54|boehm; elevate: a59|blossom");
+  c->add_option("--at", o->op_options.at, "split: parameter");
+  c->add_option("--interval", o->op_options.interval, "reparametrize: \"lo,hi\"");
+  c->add_option("file", o->file, "spline document, - for stdin")->required();
+  return {{c, [o](const Context& ctx) {
+             const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             OpOptions op = o->op_options;
+             const std::string& m = o->op_options.insert_method;  // --method serves both operations
+             if (o->op == "elevate") op.elevate_method = m == "blossom" ? "blossom" : m == "a59" ? "a59" : "auto";
+             if (o->op == "insert-knots" && o->op_options.knots.empty())
+               throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
+             const auto rep = crosscheck(make_op(o->op, op), S, ArithSpec::parse(o->float_arith, "float"), o->grid, ctx.limits);
+             std::cout << rep.to_json().dump(2) << "\n";
+             return 0;
+           }}};
+}
+
+}  // namespace splinex::app

@@ -1,0 +1,49 @@
+// splinex eval: a spline (or a partial derivative) at a parameter, in any arithmetic.
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "float/arith_spec.hpp"
+#include "float/rounding.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex::app {
+
+Commands add_eval(CLI::App& app) {
+  struct Options {
+    std::string arith = "exact", file, at, orders, method = "basis";
+  };
+  auto o = std::make_shared<Options>();
+  auto* c = app.add_subcommand("eval", "evaluate a spline (or a partial derivative) at a parameter");
+  add_arith_option(c, o->arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS");
+  c->add_option("--at", o->at, "parameter \"x0,x1,...\"")->required();
+  c->add_option("--derivative", o->orders, "derivative orders per direction, e.g. \"1,0\"");
+  c->add_option("--method", o->method, "basis (A2.2 basis functions) or deboor (de Boor's algorithm)")
+      ->check(CLI::IsMember({"basis", "deboor"}))
+      ->capture_default_str();
+  c->add_option("file", o->file, "spline document, - for stdin")->required();
+  return {{c, [o](const Context& ctx) {
+             const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             const auto x = parse_number_list(o->at, "at");
+             std::vector<int> ord;
+             if (!o->orders.empty())
+               ord = whole_numbers(parse_number_list(o->orders, "derivative"), "derivative", 1000,
+                                   "orders must be whole numbers in [0, 1000]", "write e.g. --derivative \"1,0\"");
+             const auto spec = ArithSpec::parse(o->arith);
+             const Json out = with_arith(spec, [&](auto tag) {
+               using T = typename decltype(tag)::type;
+               const auto Sf = round_spline<T>(S);
+               const std::vector<T> xf = round_values<T>(x, "at");
+               if (!ord.empty() && o->method == "deboor")
+                 throw UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
+               const auto p = !ord.empty()              ? derivative(Sf, xf, ord)
+                              : o->method == "deboor" ? evaluate_de_boor(Sf, xf)
+                                                      : evaluate(Sf, xf);
+               return Json{{"point", point_to_json(p)}};
+             });
+             std::cout << out.dump() << "\n";
+             return 0;
+           }}};
+}
+
+}  // namespace splinex::app

@@ -1,0 +1,113 @@
+// splinex insert-knots | elevate | extract-bezier | split | reparametrize | reverse: one operation
+// of the kernel on a spline document, in any arithmetic.
+#include <boost/multiprecision/number.hpp>
+
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "crosscheck/operations_impl.hpp"
+#include "float/arith_spec.hpp"
+#include "float/rounding.hpp"
+#include "io/result_json.hpp"
+
+namespace splinex::app {
+
+namespace {
+
+void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
+  if (kind != "extract-bezier") c->add_option("--dir", o.dir, "parametric direction (0-based)")->capture_default_str();
+  if (kind == "insert-knots") {
+    c->add_option("--knots", o.knots, "comma-separated knots, e.g. \"0.25,1/3\"")->required();
+    c->add_option("--method", o.insert_method, "a54 (refinement in one pass) or boehm (A5.1 knot by knot)")
+        ->check(CLI::IsMember({"a54", "boehm"}))
+        ->capture_default_str();
+  } else if (kind == "elevate") {
+    c->add_option("--by", o.by, "elevate the degree by this amount")->required();
+    c->add_option("--method", o.elevate_method,
+                  "auto (a59 in exact arithmetic, blossom in floating point: fewer bits lost), a59 (NURBS Book, "
+                  "via Bezier pieces) or blossom")
+        ->check(CLI::IsMember({"auto", "a59", "blossom"}))
+        ->capture_default_str();
+  } else if (kind == "split") {
+    c->add_option("--at", o.at, "split parameter")->required();
+  } else if (kind == "reparametrize") {
+    c->add_option("--interval", o.interval, "new domain \"lo,hi\" of the direction")->required();
+  }
+}
+
+Json run_op_document(const Operation& op, const BSpline<Rational>& S, const ArithSpec& spec, const Limits& limits) {
+  return with_arith(spec, [&](auto tag) {
+    using T = typename decltype(tag)::type;
+    const BSpline<T> in = round_spline<T>(S);
+    if (op.kind == Operation::Kind::extract_bezier) return bezier_pieces_to_json(extract_bezier(in, limits));
+    const auto R = run_operation(op, in, limits);
+    if (R.size() == 1) return spline_to_json(R[0]);
+    Json parts = Json::array();
+    for (const auto& r : R) parts.push_back(spline_to_json(r));
+    return Json{{"splines", parts}};
+  });
+}
+
+}  // namespace
+
+Operation make_op(const std::string& kind, const OpOptions& o) {
+  Operation op = Operation::parse_kind(kind);
+  op.dir = o.dir;
+  switch (op.kind) {
+    case Operation::Kind::insert_knots:
+      op.knots = parse_number_list(o.knots, "knots");
+      op.boehm = o.insert_method == "boehm";
+      break;
+    case Operation::Kind::elevate:
+      op.by = o.by;
+      op.method = o.elevate_method == "blossom" ? ElevationMethod::blossom : ElevationMethod::bezier_pieces;
+      op.method_auto = o.elevate_method == "auto";
+      break;
+    case Operation::Kind::split: op.at = parse_number(o.at, "at"); break;
+    case Operation::Kind::reparametrize: {
+      const auto v = parse_number_list(o.interval, "interval");
+      if (v.size() != 2) throw UsageError("interval", "needs two numbers", "write --interval \"lo,hi\"");
+      op.lo = v[0];
+      op.hi = v[1];
+      break;
+    }
+    default: break;
+  }
+  return op;
+}
+
+std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::string& field, int hi,
+                               const std::string& what, const std::string& fix) {
+  std::vector<int> out;
+  for (const auto& r : numbers) {
+    if (boost::multiprecision::denominator(r) != 1 || r < 0 || r > hi) throw UsageError(field, what, fix);
+    out.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
+  }
+  return out;
+}
+
+Commands add_operations(CLI::App& app) {
+  Commands out;
+  for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse"}) {
+    struct Options {
+      std::string arith = "exact", file;
+      OpOptions op;
+    };
+    auto o = std::make_shared<Options>();
+    const std::string kind = k;
+    auto* c = app.add_subcommand(kind, "spline document -> " + kind + " result");
+    add_arith_option(c, o->arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS");
+    add_op_options(c, o->op, kind);
+    c->add_option("file", o->file, "spline document, - for stdin")->required();
+    out.push_back({c, [o, kind](const Context& ctx) {
+                     const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+                     const auto spec = ArithSpec::parse(o->arith);
+                     std::cout << run_op_document(make_op(kind, o->op), S, spec, ctx.limits).dump() << "\n";
+                     return 0;
+                   }});
+  }
+  return out;
+}
+
+}  // namespace splinex::app

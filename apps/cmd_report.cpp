@@ -1,0 +1,17 @@
+// splinex report: the main job (experiments/): crosscheck suite, paper reproductions, figures.
+#include <memory>
+
+#include "apps/command.hpp"
+#include "experiments/report.hpp"
+
+namespace splinex::app {
+
+Commands add_report(CLI::App& app) {
+  auto o = std::make_shared<ReportOptions>();
+  auto* c = app.add_subcommand("report", "the main job: crosscheck suite, figures, report.md");
+  c->add_option("--out", o->out_dir, "output folder")->capture_default_str();
+  c->add_flag("--full", o->full, "the long sweep (larger cases, more precisions)");
+  return {{c, [o](const Context&) { return run_report(*o); }}};
+}
+
+}  // namespace splinex::app

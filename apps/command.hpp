@@ -1,0 +1,63 @@
+// The command line's parts: every subcommand lives in a file of its own (apps/cmd_*.cpp) and is
+// added to the main app by one function; main.cpp holds the global options, the list of those
+// functions and the one-line error handling.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "crosscheck/operations.hpp"
+#include "io/json_io.hpp"
+#include "spline/limits.hpp"
+
+namespace splinex::app {
+
+/// What a command sees when it runs: the global limits (--max-control-points, --max-degree).
+struct Context {
+  Limits limits;
+  ReadLimits read_limits;
+};
+
+/// One subcommand as added to the main app; run is called when it was the one parsed, and returns
+/// the exit status.
+struct Command {
+  CLI::App* cli = nullptr;
+  std::function<int(const Context&)> run;
+};
+using Commands = std::vector<Command>;
+
+// Each adds its subcommand(s) to app; main adds them in this order (the order of --help).
+Commands add_eval(CLI::App& app);
+Commands add_operations(CLI::App& app);  // insert-knots, elevate, extract-bezier, split, reparametrize, reverse
+Commands add_compose(CLI::App& app);
+Commands add_crosscheck(CLI::App& app);
+Commands add_prove(CLI::App& app);
+Commands add_report(CLI::App& app);
+Commands add_untrim(CLI::App& app);
+Commands add_hybrid(CLI::App& app);
+
+/// The options of the single-spline operations, shared by their commands and crosscheck.
+struct OpOptions {
+  int dir = 0;
+  std::string knots;
+  std::string insert_method = "a54";
+  int by = 1;
+  std::string elevate_method = "auto";
+  std::string at;
+  std::string interval;
+};
+Operation make_op(const std::string& kind, const OpOptions& o);
+
+/// Parsed numbers that must be whole and in [0, hi] (derivative orders, exponents); else
+/// UsageError(field, what, fix).
+std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::string& field, int hi,
+                               const std::string& what, const std::string& fix);
+
+/// The option every computing command has.
+inline CLI::Option* add_arith_option(CLI::App* c, std::string& arith, const std::string& which) {
+  return c->add_option("--arith", arith, which)->capture_default_str();
+}
+
+}  // namespace splinex::app

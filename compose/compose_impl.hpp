@@ -1,0 +1,502 @@
+#pragma once
+#include <algorithm>
+#include <string>
+
+#include "spline/bezier_impl.hpp"
+#include "spline/arith.hpp"
+#include "compose/compose.hpp"
+#include "spline/elevate_impl.hpp"
+#include "spline/evaluate_impl.hpp"
+
+namespace splinex {
+namespace detail {
+
+// A scalar tensor-product Bernstein polynomial: degrees per direction, coefficients with
+// direction 0 fastest.
+template <class T>
+struct Bern {
+  std::vector<int> deg;
+  std::vector<T> c;
+};
+
+inline std::size_t tensor_size(const std::vector<int>& deg) {
+  std::size_t s = 1;
+  for (int d : deg) s *= static_cast<std::size_t>(d) + 1;
+  return s;
+}
+
+// Multi-index of flat index i (direction 0 fastest).
+inline void unflatten(std::size_t i, const std::vector<int>& deg, std::vector<int>& idx) {
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    idx[l] = static_cast<int>(i % (deg[l] + 1));
+    i /= deg[l] + 1;
+  }
+}
+
+template <class T>
+Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
+  const std::size_t k = f.deg.size();
+  Bern<T> h;
+  h.deg.resize(k);
+  for (std::size_t l = 0; l < k; ++l) h.deg[l] = f.deg[l] + g.deg[l];
+  h.c.assign(tensor_size(h.deg), T(0));
+  // Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
+  // by binom(a+b, K).
+  auto scaled = [&](const Bern<T>& p) {
+    std::vector<T> s(p.c);
+    std::vector<int> idx(k);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      unflatten(i, p.deg, idx);
+      T b(1);
+      for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(p.deg[l], idx[l]);
+      s[i] *= b;
+    }
+    return s;
+  };
+  const std::vector<T> fs = scaled(f), gs = scaled(g);
+  std::vector<int> fi(k), gi(k);
+  std::vector<std::size_t> hstride(k);
+  std::size_t st = 1;
+  for (std::size_t l = 0; l < k; ++l) { hstride[l] = st; st *= h.deg[l] + 1; }
+  for (std::size_t a = 0; a < fs.size(); ++a) {
+    if (fs[a] == T(0)) continue;
+    unflatten(a, f.deg, fi);
+    for (std::size_t b = 0; b < gs.size(); ++b) {
+      unflatten(b, g.deg, gi);
+      std::size_t K = 0;
+      for (std::size_t l = 0; l < k; ++l) K += (fi[l] + gi[l]) * hstride[l];
+      h.c[K] += fs[a] * gs[b];
+    }
+  }
+  std::vector<int> hi(k);
+  for (std::size_t i = 0; i < h.c.size(); ++i) {
+    unflatten(i, h.deg, hi);
+    T b(1);
+    for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(h.deg[l], hi[l]);
+    h.c[i] /= b;
+  }
+  return h;
+}
+
+// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
+template <class T>
+std::size_t cell_index(const std::vector<T>& bp, const T& x) {
+  const auto less = [](const T& a, const T& b) { return a < b; };
+  std::size_t c = static_cast<std::size_t>(std::upper_bound(bp.begin(), bp.end(), x, less) - bp.begin());
+  c = c == 0 ? 0 : c - 1;
+  return std::min(c, bp.size() - 2);
+}
+
+template <class T>
+std::pair<T, T> hull_range(const BSpline<T>& P, int coord) {
+  T lo = P.points[coord], hi = P.points[coord];
+  for (std::size_t i = 1; i < P.size(); ++i) {
+    const T& x = P.points[i * P.q + coord];
+    if (x < lo) lo = x;
+    if (hi < x) hi = x;
+  }
+  return {lo, hi};
+}
+
+// DomainError naming how far the control-point hull [lo, hi] of coordinate j leaves [bp.front(), bp.back()].
+template <class T>
+void check_hull_in_domain(const std::pair<T, T>& hull, const std::vector<T>& bp, int j, const std::string& fix) {
+  const auto& [lo, hi] = hull;
+  if (!(lo < bp.front()) && !(bp.back() < hi)) return;
+  T far = lo < bp.front() ? T(bp.front() - lo) : T(0);
+  if (bp.back() < hi && far < T(hi - bp.back())) far = hi - bp.back();
+  throw DomainError("inner", "control points leave the outer domain in coordinate " + std::to_string(j) + " (by up to " +
+                                 ArithTraits<T>::to_string(far) + ")",
+                    fix);
+}
+
+// The inner spline's points must live in the outer spline's parameter space.
+template <class T>
+void check_composable(const BSpline<T>& outer, const BSpline<T>& inner) {
+  if (inner.q != outer.dim())
+    throw ValidationError("inner", "has points in R^" + std::to_string(inner.q) + " but the outer spline has " +
+                                       std::to_string(outer.dim()) + " parameters",
+                          "give the inner spline one coordinate per parameter of the outer one");
+}
+
+template <class T>
+void check_bezier(const BSpline<T>& S, const std::string& field) {
+  for (int d = 0; d < S.dim(); ++d)
+    if (S.count(d) != static_cast<std::size_t>(S.degrees[d]) + 1 || !is_clamped(S.knots[d], S.degrees[d], S.count(d)))
+      throw UsageError(field, "is not a single Bezier piece in direction " + std::to_string(d),
+                       "extract its Bezier pieces first (extract-bezier), or compose the B-splines");
+}
+
+// Solves the Bernstein interpolation at nodes i/D along direction `dir` of a tensor of values
+// with `width` values per point, in place. Gaussian elimination with partial pivoting (by
+// magnitude; in exact arithmetic any non-zero pivot is exact).
+template <class T>
+void bernstein_solve_direction(std::vector<T>& V, const std::vector<int>& deg, int dir, std::size_t width) {
+  const int D = deg[dir];
+  if (D == 0) return;
+  const std::size_t N = D + 1;
+  // M[i][j] = B_j^D(i/D)
+  std::vector<std::vector<T>> M(N, std::vector<T>(N));
+  for (std::size_t i = 0; i < N; ++i) {
+    const T t = T(static_cast<long>(i)) / T(D), s = T(1) - t;
+    for (std::size_t j = 0; j < N; ++j) {
+      T v = binomial<T>(D, static_cast<int>(j));
+      for (std::size_t a = 0; a < j; ++a) v *= t;
+      for (std::size_t a = j; a < N - 1; ++a) v *= s;
+      M[i][j] = v;
+    }
+  }
+  std::size_t before = width, after = 1;
+  for (int l = 0; l < dir; ++l) before *= deg[l] + 1;
+  for (std::size_t l = dir + 1; l < deg.size(); ++l) after *= deg[l] + 1;
+  // Factor once (LU with row permutation), then solve for every fibre: right-hand sides are the
+  // `before` contiguous values at each node.
+  std::vector<std::size_t> perm(N);
+  for (std::size_t i = 0; i < N; ++i) perm[i] = i;
+  auto mag = [](const T& x) { return x < T(0) ? T(-x) : x; };
+  for (std::size_t col = 0; col < N; ++col) {
+    std::size_t piv = col;
+    for (std::size_t r = col + 1; r < N; ++r)
+      if (mag(M[piv][col]) < mag(M[r][col])) piv = r;
+    std::swap(M[col], M[piv]);
+    std::swap(perm[col], perm[piv]);
+    for (std::size_t r = col + 1; r < N; ++r) {
+      M[r][col] /= M[col][col];
+      for (std::size_t c = col + 1; c < N; ++c) M[r][c] -= M[r][col] * M[col][c];
+    }
+  }
+  std::vector<T> rhs(N * before);
+  for (std::size_t b = 0; b < after; ++b) {
+    T* base = V.data() + b * N * before;
+    for (std::size_t i = 0; i < N; ++i)
+      std::copy(base + perm[i] * before, base + (perm[i] + 1) * before, rhs.begin() + i * before);
+    for (std::size_t i = 0; i < N; ++i)  // forward (unit lower)
+      for (std::size_t j = 0; j < i; ++j)
+        for (std::size_t c = 0; c < before; ++c) rhs[i * before + c] -= M[i][j] * rhs[j * before + c];
+    for (std::size_t ii = N; ii-- > 0;) {  // backward
+      for (std::size_t j = ii + 1; j < N; ++j)
+        for (std::size_t c = 0; c < before; ++c) rhs[ii * before + c] -= M[ii][j] * rhs[j * before + c];
+      for (std::size_t c = 0; c < before; ++c) rhs[ii * before + c] /= M[ii][ii];
+    }
+    std::copy(rhs.begin(), rhs.end(), base);
+  }
+}
+
+}  // namespace detail
+
+template <class T>
+std::vector<int> composed_degrees(const BSpline<T>& outer, const BSpline<T>& inner) {
+  int E = 0;
+  for (int e : outer.degrees) E += e;
+  std::vector<int> D;
+  for (int d : inner.degrees) D.push_back(d * E);
+  return D;
+}
+
+template <class T>
+std::vector<T> evaluate_bezier_anywhere(const BSpline<T>& B, const std::vector<T>& u) {
+  const int n = B.dim();
+  std::vector<std::vector<T>> basis(n);
+  for (int j = 0; j < n; ++j) {
+    const int e = B.degrees[j];
+    const T t = (u[j] - B.domain_lo(j)) / (B.domain_hi(j) - B.domain_lo(j)), s = T(1) - t;
+    basis[j].resize(e + 1);
+    for (int i = 0; i <= e; ++i) {
+      T v = detail::binomial<T>(e, i);
+      for (int a = 0; a < i; ++a) v *= t;
+      for (int a = i; a < e; ++a) v *= s;
+      basis[j][i] = v;
+    }
+  }
+  std::vector<std::size_t> span(n);
+  std::vector<const std::vector<T>*> ptr(n);
+  for (int j = 0; j < n; ++j) {
+    span[j] = B.degrees[j];
+    ptr[j] = &basis[j];
+  }
+  std::vector<T> out;
+  detail::tensor_sum(B, span, ptr, out);
+  return out;
+}
+
+template <class T>
+BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                                      const Limits& limits, bool& rational_out) {
+  detail::check_bezier(outer, "outer");
+  detail::check_bezier(inner, "inner");
+  detail::check_composable(outer, inner);
+  const int k = inner.dim(), n = outer.dim();
+  const std::vector<int> D = composed_degrees(outer, inner);
+  int E = 0;
+  for (int e : outer.degrees) E += e;
+  std::size_t total = 1;
+  for (int l = 0; l < k; ++l) {
+    limits.check_degree(D[l], "inner");
+    total = checked_product(total, static_cast<std::size_t>(D[l]) + 1, limits, "inner");
+  }
+  const bool rational = inner.is_rational() || outer.is_rational();
+  const std::size_t q = outer.q, qq = q + (rational ? 1 : 0);
+  std::vector<T> H(total * qq, T(0));  // homogeneous result, direction 0 fastest, coordinates fastest
+
+  if (method == CompositionMethod::symbolic) {
+    // Homogeneous inner components: W and the local coordinates U_j = (X_j - a_j W)/(b_j - a_j).
+    const std::size_t ns = inner.size();
+    detail::Bern<T> W{inner.degrees, std::vector<T>(ns, T(1))};
+    if (inner.is_rational()) W.c = inner.weights;
+    std::vector<std::vector<detail::Bern<T>>> basis(n);  // basis[j][i] = B^{e_j}_i(u_j(S)) * W^{e_j}
+    for (int j = 0; j < n; ++j) {
+      const T a = outer.domain_lo(j), w = outer.domain_hi(j) - a;
+      detail::Bern<T> U{inner.degrees, std::vector<T>(ns)}, V{inner.degrees, std::vector<T>(ns)};
+      for (std::size_t i = 0; i < ns; ++i) {
+        const T X = inner.points[i * inner.q + j] * (inner.is_rational() ? inner.weights[i] : T(1));
+        U.c[i] = (X - a * W.c[i]) / w;
+        V.c[i] = W.c[i] - U.c[i];
+      }
+      const int e = outer.degrees[j];
+      std::vector<detail::Bern<T>> PU{detail::Bern<T>{std::vector<int>(k, 0), {T(1)}}}, PV = PU;
+      for (int i = 1; i <= e; ++i) {
+        PU.push_back(detail::bern_product(PU.back(), U));
+        PV.push_back(detail::bern_product(PV.back(), V));
+      }
+      for (int i = 0; i <= e; ++i) {
+        detail::Bern<T> b = detail::bern_product(PU[i], PV[e - i]);
+        const T c = detail::binomial<T>(e, i);
+        for (auto& x : b.c) x *= c;
+        basis[j].push_back(std::move(b));
+      }
+    }
+    // Sum over the outer control points: prod_j basis[j][I_j] times (w_I C_I, w_I).
+    const std::size_t nt = outer.size();
+    std::vector<int> I(n);
+    for (std::size_t t = 0; t < nt; ++t) {
+      detail::unflatten(t, outer.degrees, I);
+      detail::Bern<T> term = basis[0][I[0]];
+      for (int j = 1; j < n; ++j) term = detail::bern_product(term, basis[j][I[j]]);
+      const T w = outer.is_rational() ? outer.weights[t] : T(1);
+      for (std::size_t K = 0; K < total; ++K) {
+        if (term.c[K] == T(0)) continue;
+        const T f = term.c[K] * w;
+        for (std::size_t c = 0; c < q; ++c) H[K * qq + c] += f * outer.points[t * q + c];
+        if (rational) H[K * qq + q] += f;
+      }
+    }
+  } else {
+    // Exact values of the homogeneous composition at (D_l + 1) equispaced nodes per direction.
+    std::vector<int> idx(k);
+    std::vector<T> r(k), u(n);
+    for (std::size_t K = 0; K < total; ++K) {
+      detail::unflatten(K, D, idx);
+      for (int l = 0; l < k; ++l) {
+        const T lo = inner.domain_lo(l), hi = inner.domain_hi(l);
+        r[l] = D[l] == 0 ? lo : lo + (hi - lo) * T(idx[l]) / T(D[l]);
+      }
+      const std::vector<T> s = evaluate_homogeneous(inner, r);
+      const T W = inner.is_rational() ? s[inner.q] : T(1);
+      if (W == T(0))
+        throw DomainError("inner.weights", "the inner spline's weight vanishes inside its domain",
+                          "use weights that keep the denominator non-zero");
+      for (int j = 0; j < n; ++j) u[j] = s[j] / W;
+      const std::vector<T> h = evaluate_bezier_anywhere(outer, u);
+      T WE(1);
+      for (int a = 0; a < E; ++a) WE *= W;
+      for (std::size_t c = 0; c < q; ++c) H[K * qq + c] = h[c] * WE;
+      if (rational) H[K * qq + q] = (outer.is_rational() ? h[q] : T(1)) * WE;
+    }
+    for (int l = 0; l < k; ++l) detail::bernstein_solve_direction(H, D, l, qq);
+  }
+
+  BSpline<T> R;
+  R.degrees = D;
+  R.q = static_cast<int>(qq);
+  for (int l = 0; l < k; ++l) {
+    std::vector<T> U(D[l] + 1, inner.domain_lo(l));
+    U.insert(U.end(), D[l] + 1, inner.domain_hi(l));
+    R.knots.push_back(std::move(U));
+  }
+  R.points = std::move(H);
+  rational_out = rational;
+  return R;
+}
+
+template <class T>
+BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                          const Limits& limits) {
+  bool rational = false;
+  BSpline<T> H = compose_bezier_homogeneous(outer, inner, method, limits, rational);
+  if (!rational) return H;
+  const std::size_t q = outer.q, qq = q + 1;
+  for (std::size_t K = 0; K < H.size(); ++K)
+    if (!(T(0) < H.points[K * qq + q]))
+      throw DomainError("composition.weights",
+                        "the composed weights are not all positive (the inner spline leaves the outer box, or "
+                        "a weight vanishes)",
+                        "keep the inner spline inside the outer piece's box for rational compositions");
+  std::vector<T> hom = std::move(H.points);  // set_from_homogeneous rewrites H.points
+  H.q = static_cast<int>(q);
+  set_from_homogeneous(H, std::move(hom), true);
+  return H;
+}
+
+template <class T>
+BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options,
+                   const Limits& limits) {
+  detail::check_composable(outer, inner);
+  const int k = inner.dim(), n = outer.dim();
+  const std::vector<int> D = composed_degrees(outer, inner);
+  for (int l = 0; l < k; ++l) limits.check_degree(D[l], "inner");
+  // Before any work: the result has at least prod_l (segments_l * D_l + 1) control points (C^0
+  // joins; C^-1 joins add one each, counted once the joins are known, before the result is
+  // allocated), and both extractions are bounded.
+  {
+    std::size_t least = 1;
+    for (int l = 0; l < k; ++l) {
+      const std::size_t segs = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l)).size() - 1;
+      least = checked_product(least, checked_product(segs, static_cast<std::size_t>(D[l]), limits, "inner") + 1, limits,
+                              "inner");
+    }
+    bezier_pieces_size(outer, limits);
+    bezier_pieces_size(inner, limits);
+  }
+  const auto tp = extract_bezier(outer, limits);
+  const auto sp = extract_bezier(inner, limits);
+  std::vector<std::vector<T>> tb(n);  // breakpoints of T per direction
+  std::vector<std::size_t> tstride(n);
+  std::size_t st = 1;
+  for (int j = 0; j < n; ++j) {
+    tb[j] = breakpoints(outer.knots[j], outer.degrees[j], outer.count(j));
+    tstride[j] = st;
+    st *= tb[j].size() - 1;
+  }
+  // A knot line of T where T may jump: multiplicity e_j + 1 (a C^-1 knot; degree 0 has one at
+  // every breakpoint).
+  auto outer_jumps_at = [&](int j, const T& x) { return is_full_multiplicity(outer.knots[j], outer.degrees[j], x); };
+  std::vector<std::vector<T>> sb(k);
+  std::vector<std::size_t> sstride(k);
+  std::size_t ss = 1;
+  for (int l = 0; l < k; ++l) {
+    sb[l] = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l));
+    sstride[l] = ss;
+    ss *= sb[l].size() - 1;
+  }
+  // Pass 1: the cell of T that holds each piece of S (exact control-point hull).
+  std::vector<std::vector<std::size_t>> piece_cell(sp.size(), std::vector<std::size_t>(n));
+  for (std::size_t pi = 0; pi < sp.size(); ++pi) {
+    const auto& S = sp[pi].spline;
+    for (int j = 0; j < n; ++j) {
+      const auto hull = detail::hull_range(S, j);
+      const auto& [lo, hi] = hull;
+      if (!options.expand)
+        detail::check_hull_in_domain(hull, tb[j], j,
+                                     "move the inner spline into the outer domain, or ask for expanded pieces (--expand)");
+      // The cell c with tb[c] <= lo and hi <= tb[c+1]; clamped to the end cells when expanding.
+      const std::size_t c = detail::cell_index(tb[j], lo);
+      if (tb[j][c + 1] < hi && !(c + 2 >= tb[j].size() && options.expand))
+        throw DomainError("inner", "a piece crosses the knot line u_" + std::to_string(j) + " = " +
+                                       ArithTraits<T>::to_string(tb[j][c + 1]) + " of the outer spline",
+                          "compose with --method trimmed (Algorithm 1: trimmed patches across knot lines)");
+      // A piece below an interior knot line x of T that reaches x (hi == x) at a parameter it owns
+      // (FindSpan's half-open rule: the left end, and the right end only at S's domain end) takes
+      // the value of T's upper piece there. If T may jump at x, T(S) is then no polynomial on the
+      // piece. Bernstein coefficients <= x reach x only where a corner value does.
+      if (lo < hi && hi == tb[j][c + 1] && c + 2 < tb[j].size() && outer_jumps_at(j, hi)) {
+        const std::size_t corners = std::size_t(1) << k;
+        for (std::size_t m = 0; m < corners; ++m) {
+          bool owned = true;
+          std::size_t idx = 0, stride = 1;
+          for (int l = 0; l < k; ++l) {
+            const bool right = (m >> l) & 1;
+            if (right && !(sp[pi].box[l].second == inner.domain_hi(l))) owned = false;
+            idx += (right ? S.count(l) - 1 : 0) * stride;
+            stride *= S.count(l);
+          }
+          if (owned && S.points[idx * S.q + j] == hi)
+            throw DomainError("inner", "a piece reaches the knot line u_" + std::to_string(j) + " = " +
+                                           ArithTraits<T>::to_string(hi) +
+                                           ", where the outer spline may jump, from below at a parameter it owns: T(S) "
+                                           "is not one polynomial on that piece",
+                              "compose with --method trimmed (Algorithm 1), or insert a knot into the inner spline there");
+        }
+      }
+      piece_cell[pi][j] = c;
+    }
+  }
+  // Pass 2: the join at each interior breakpoint of S. C^0 (multiplicity D_l) where S is
+  // continuous (multiplicity <= d_l) and both sides lie in one piece of T, or in pieces between
+  // which T is continuous; else C^-1 (multiplicity D_l + 1): T(S) may jump there. The rule reads
+  // only the inputs' structure, so every arithmetic gives the same knots.
+  std::vector<std::vector<char>> jump(k);
+  for (int l = 0; l < k; ++l) {
+    jump[l].assign(sb[l].size(), 0);
+    for (std::size_t b = 1; b + 1 < sb[l].size(); ++b)
+      jump[l][b] = D[l] == 0 || is_full_multiplicity(inner.knots[l], inner.degrees[l], sb[l][b]);
+  }
+  for (std::size_t pi = 0; pi < sp.size(); ++pi)
+    for (int l = 0; l < k; ++l) {
+      const std::size_t seg = (pi / sstride[l]) % (sb[l].size() - 1);
+      if (seg + 1 >= sb[l].size() - 1) continue;
+      const std::size_t other = pi + sstride[l];  // the neighbour across breakpoint seg + 1
+      for (int j = 0; j < n && !jump[l][seg + 1]; ++j) {
+        const std::size_t a = std::min(piece_cell[pi][j], piece_cell[other][j]),
+                          b = std::max(piece_cell[pi][j], piece_cell[other][j]);
+        for (std::size_t c = a + 1; c <= b; ++c)
+          if (outer_jumps_at(j, tb[j][c])) jump[l][seg + 1] = 1;
+      }
+    }
+  // The result net: per direction, first control point of each segment.
+  std::vector<std::vector<std::size_t>> offset(k);
+  std::vector<std::size_t> rcount(k), rstride(k);
+  std::size_t total = 1;
+  for (int l = 0; l < k; ++l) {
+    std::size_t o = 0;
+    for (std::size_t seg = 0; seg + 1 < sb[l].size(); ++seg) {
+      if (seg > 0) o += static_cast<std::size_t>(D[l]) + (jump[l][seg] ? 1 : 0);
+      offset[l].push_back(o);
+    }
+    rcount[l] = o + D[l] + 1;
+    rstride[l] = total;
+    total = checked_product(total, rcount[l], limits, "inner");
+  }
+  limits.check_count(total, "inner");
+  BSpline<T> R;
+  R.degrees = D;
+  R.q = outer.q;
+  for (int l = 0; l < k; ++l) {
+    std::vector<T> U(D[l] + 1, sb[l].front());
+    for (std::size_t b = 1; b + 1 < sb[l].size(); ++b) U.insert(U.end(), D[l] + (jump[l][b] ? 1 : 0), sb[l][b]);
+    U.insert(U.end(), D[l] + 1, sb[l].back());
+    R.knots.push_back(std::move(U));
+  }
+  const std::size_t q = outer.q;
+  R.points.assign(total * q, T(0));
+  std::vector<char> written(total, 0);
+  bool rational = false;
+  for (std::size_t pi = 0; pi < sp.size(); ++pi) {
+    std::size_t cell = 0;
+    for (int j = 0; j < n; ++j) cell += piece_cell[pi][j] * tstride[j];
+    const BSpline<T> piece = compose_bezier(tp[cell].spline, sp[pi].spline, options.method, limits);
+    if (piece.is_rational() && !rational) {
+      rational = true;
+      R.weights.assign(total, T(0));
+    }
+    std::vector<std::size_t> seg(k);
+    std::vector<int> loc(k);
+    for (int l = 0; l < k; ++l) seg[l] = (pi / sstride[l]) % (sb[l].size() - 1);
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      detail::unflatten(i, piece.degrees, loc);
+      std::size_t g = 0;
+      for (int l = 0; l < k; ++l) g += (offset[l][seg[l]] + loc[l]) * rstride[l];
+      if (written[g]) continue;  // shared C^0 boundary: equal in exact arithmetic (proved), first piece kept in float
+      written[g] = 1;
+      for (std::size_t c = 0; c < q; ++c) R.points[g * q + c] = piece.points[i * q + c];
+      if (piece.is_rational()) R.weights[g] = piece.weights[i];
+    }
+  }
+  if (rational)
+    for (std::size_t g = 0; g < total; ++g)
+      if (!(T(0) < R.weights[g]))
+        throw DomainError("composition.weights", "a piece of the composition is polynomial while another is rational",
+                          "internal inconsistency; please report");
+  return R;
+}
+
+}  // namespace splinex

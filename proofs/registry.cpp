@@ -1,0 +1,175 @@
+// The registry of `splinex prove`: the proofs of every topic in one list (its order is the order of
+// `splinex prove --list`), the seed of each proof's cases, the accumulator of identity checks, and
+// the planted-bug seams the trust tests use.
+#include <algorithm>
+#include <map>
+#include <random>
+#include <stdexcept>
+
+#include "fixtures/random_spline.hpp"
+#include "proofs/suite.hpp"
+#include "proofs/suite_detail.hpp"
+
+namespace splinex {
+
+namespace proof_detail {
+
+namespace {
+
+// The seed of every proof's random cases (the numbers are historical: the proofs were numbered
+// as they were written). A seed must never change: the counts and verdicts `splinex prove` prints
+// depend on it, and scripts/behaviour_snapshot.py pins them.
+const std::map<std::string, std::uint64_t>& seed_table() {
+  static const std::map<std::string, std::uint64_t> seeds{
+      {"knot-insertion-boehm", 101},
+      {"knot-refinement-a54", 102},
+      {"insertion-agreement", 103},
+      {"degree-elevation-a59", 104},
+      {"degree-elevation-blossom", 105},
+      {"elevation-agreement", 106},
+      {"bezier-extraction", 107},
+      {"split", 108},
+      {"reparametrize", 109},
+      {"reverse", 110},
+      {"clamp", 111},
+      {"derivative-hodograph", 112},
+      {"evaluation-deboor", 114},
+      {"compose-methods-agree", 115},
+      {"compose-identity", 116},
+      {"compose-bspline", 117},
+      {"compose-trimmed", 118},
+      {"untrim-cover", 120},
+      {"untrim-curved-cover", 121},
+      {"trimming-endpoints", 119},
+      {"flint-agreement", 113},
+      {"hybrid-thm-3.1", 131},
+      {"hybrid-thm-3.2", 132},
+      {"hybrid-thm-3.2-corrected", 133},
+      {"hybrid-thm-4.1", 141},
+      {"hybrid-thm-4.2", 142},
+      {"hybrid-salvi-elevation", 143},
+  };
+  return seeds;
+}
+
+PlantedBug& planted_bug() {
+  static PlantedBug bug;
+  return bug;
+}
+}  // namespace
+
+ScopedPlantedBug::ScopedPlantedBug(PlantedBug bug) : previous_(std::move(planted_bug())) { planted_bug() = std::move(bug); }
+ScopedPlantedBug::~ScopedPlantedBug() { planted_bug() = std::move(previous_); }
+
+BSpline<Rational> planted(BSpline<Rational> R) {
+  if (planted_bug()) planted_bug()(R);
+  return R;
+}
+
+// Aggregates the identity checks of one named proof over its cases.
+void Accumulator::add(const IdentityCheck& c, std::size_t case_no) {
+  rep.points += c.points;
+  rep.cells += c.cells;
+  for (int b : c.degree_bound) max_bound = std::max(max_bound, b);
+  if (!c.holds && rep.holds) {
+    rep.holds = false;
+    rep.counterexample = "case " + std::to_string(case_no) + ": " + c.counterexample;
+  }
+  if (!c.decided()) undecided("an identity check had no cell to compare (an empty or inverted box)", case_no);
+}
+
+void Accumulator::fail(const std::string& why, std::size_t case_no) {
+  if (rep.holds) {
+    rep.holds = false;
+    rep.counterexample = "case " + std::to_string(case_no) + ": " + why;
+  }
+}
+
+void Accumulator::undecided(const std::string& why, std::size_t case_no) {
+  if (rep.undecided.empty()) rep.undecided = "case " + std::to_string(case_no) + ": " + why;
+}
+
+void Accumulator::structures(const std::vector<std::string>& tags) {
+  for (const auto& t : tags)
+    if (std::find(rep.structures.begin(), rep.structures.end(), t) == rep.structures.end()) rep.structures.push_back(t);
+}
+
+void compare_nets(Accumulator& acc, const BSpline<Rational>& A, const BSpline<Rational>& B, const std::string& what,
+                  std::size_t case_no) {
+  const bool same = A.degrees == B.degrees && A.knots == B.knots && A.q == B.q && A.points == B.points &&
+                    A.weights == B.weights;
+  if (!same) return acc.fail(what, case_no);
+  std::size_t n = A.points.size() + A.weights.size();
+  for (const auto& K : A.knots) n += K.size();
+  acc.compared(n);
+}
+
+ProofEntry entry(std::string name, std::string identity, std::string bound, CaseFn fn, EntryOptions options) {
+  const auto found = seed_table().find(name);
+  if (found == seed_table().end()) throw std::logic_error("proof " + name + " has no seed in the seed table");
+  const std::uint64_t seed = found->second;
+  ProofEntry e;
+  e.name = name;
+  e.identity = identity;
+  e.run = [=](std::size_t cases) {
+    Accumulator acc;
+    acc.rep.name = name;
+    acc.rep.identity = identity;
+    acc.rep.expect_proved = options.expect_proved;
+    acc.rep.sampled = options.sampled;
+    std::mt19937_64 rng(seed);
+    for (std::size_t i = 0; i < cases; ++i) {
+      const StructuredCase c = structured_case(rng);
+      if (options.uses_case) acc.structures(c.structures);
+      fn(c.spline, rng, acc, i);
+      ++acc.rep.cases;
+    }
+    if (cases == 0) acc.rep.undecided = "no case was run (--cases 0)";
+    else if (acc.rep.points == 0) acc.rep.undecided = "nothing was compared";
+    acc.rep.degree_bound = bound + ", largest used: " + std::to_string(acc.max_bound);
+    return acc.rep;
+  };
+  return e;
+}
+
+}  // namespace proof_detail
+
+namespace {
+
+// Every topic's proofs, in the order of `splinex prove --list`.
+std::vector<ProofEntry> make_registry() {
+  std::vector<ProofEntry> r;
+  for (auto topic : {proof_detail::kernel_proofs, proof_detail::composition_proofs, proof_detail::untrimming_proofs,
+                     proof_detail::trimming_end_point_proofs, proof_detail::arithmetic_proofs,
+                     proof_detail::fixture_proofs, proof_detail::hybrid_proofs})
+    for (auto& e : topic()) r.push_back(std::move(e));
+  return r;
+}
+
+}  // namespace
+
+const std::vector<ProofEntry>& proof_registry() {
+  static const std::vector<ProofEntry> registry = make_registry();
+  return registry;
+}
+
+std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases) {
+  std::vector<ProofReport> out;
+  const auto& reg = proof_registry();
+  if (names.empty()) {
+    for (const auto& e : reg) out.push_back(e.run(cases));
+    return out;
+  }
+  for (const auto& n : names) {
+    auto it = std::find_if(reg.begin(), reg.end(), [&](const ProofEntry& e) { return e.name == n; });
+    if (it == reg.end()) {
+      std::string all;
+      for (const auto& e : reg) all += (all.empty() ? "" : ", ") + e.name;
+      throw UsageError("prove", "unknown proof \"" + n + "\"", "use one of: " + all);
+    }
+    out.push_back(it->run(cases));
+  }
+  return out;
+}
+
+}  // namespace splinex

@@ -1,0 +1,13 @@
+#!/bin/sh
+# find_package(splinex) from another project: install the build into a temporary prefix, then
+# configure, build and run examples/consumer against it.
+set -eu
+build=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log"
+cmake -S "$src/examples/consumer" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release > "$tmp/configure.log" \
+  || { cat "$tmp/configure.log"; exit 1; }
+cmake --build "$tmp/b" > "$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
+"$tmp/b/consumer"
