@@ -21,7 +21,7 @@ namespace splinex {
 
 enum class CompositionMethod { symbolic, interpolation };
 
-// The degrees of T(S) per direction of S: d_l * sum_j e_j.
+/// The degrees of T(S) per direction of S: d_l * sum_j e_j.
 template <class T>
 std::vector<int> composed_degrees(const BSpline<T>& outer, const BSpline<T>& inner);
 
@@ -29,16 +29,16 @@ template <class T>
 BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner,
                           CompositionMethod method = CompositionMethod::symbolic, const Limits& limits = {});
 
-// Composition of B-splines T(S) when every Bezier piece of S lies in one polynomial piece of T
-// (decided exactly on the convex hull of the piece's control points): each piece of S is composed
-// with the piece of T that contains it, and the results are joined into one B-spline on S's
-// domain, with S's breakpoints as knots of multiplicity D_l (C^0 joins), or D_l + 1 where T(S)
-// may jump: S has a knot of multiplicity d_l + 1 there, D_l = 0, or the two sides lie in pieces
-// of T separated by a knot of T of multiplicity e_j + 1. A piece that crosses a knot line of T
-// needs trimmed composition (Algorithm 1): DomainError naming the knot; so does a piece that
-// reaches a knot line where T may jump from below at a parameter it owns. S leaving
-// T's domain: DomainError naming how far, unless `expand` (then the nearest end piece of T is
-// used as a polynomial on all of R^n, Observation 1).
+/// Composition of B-splines T(S) when every Bezier piece of S lies in one polynomial piece of T
+/// (decided exactly on the convex hull of the piece's control points): each piece of S is composed
+/// with the piece of T that contains it, and the results are joined into one B-spline on S's
+/// domain, with S's breakpoints as knots of multiplicity D_l (C^0 joins), or D_l + 1 where T(S)
+/// may jump: S has a knot of multiplicity d_l + 1 there, D_l = 0, or the two sides lie in pieces
+/// of T separated by a knot of T of multiplicity e_j + 1. A piece that crosses a knot line of T
+/// needs trimmed composition (Algorithm 1): DomainError naming the knot; so does a piece that
+/// reaches a knot line where T may jump from below at a parameter it owns. S leaving
+/// T's domain: DomainError naming how far, unless `expand` (then the nearest end piece of T is
+/// used as a polynomial on all of R^n, Observation 1).
 struct CompositionOptions {
   CompositionMethod method = CompositionMethod::symbolic;
   bool expand = false;
@@ -48,16 +48,16 @@ template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options = {},
                    const Limits& limits = {});
 
-// The homogeneous composition: a polynomial Bezier piece with q+1 coordinates (w*T(S), w) when S
-// or T is rational (the weight is not required to be positive: trimmed patches evaluated only
-// inside their region may have non-positive weights elsewhere), q coordinates otherwise.
-// `rational` tells which.
+/// The homogeneous composition: a polynomial Bezier piece with q+1 coordinates (w*T(S), w) when S
+/// or T is rational (the weight is not required to be positive: trimmed patches evaluated only
+/// inside their region may have non-positive weights elsewhere), q coordinates otherwise.
+/// `rational` tells which.
 template <class T>
 BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
                                       const Limits& limits, bool& rational);
 
-// T evaluated as the polynomial (or rational) of its Bezier form at any u in R^n, inside its box
-// or not (Observation 1). Homogeneous (w*T, w) for rational T.
+/// T evaluated as the polynomial (or rational) of its Bezier form at any u in R^n, inside its box
+/// or not (Observation 1). Homogeneous (w*T, w) for rational T.
 template <class T>
 std::vector<T> evaluate_bezier_anywhere(const BSpline<T>& bezier, const std::vector<T>& u);
 

@@ -11,8 +11,8 @@
 namespace splinex {
 namespace detail {
 
-// A scalar tensor-product Bernstein polynomial: degrees per direction, coefficients with
-// direction 0 fastest.
+/// A scalar tensor-product Bernstein polynomial: degrees per direction, coefficients with
+/// direction 0 fastest.
 template <class T>
 struct Bern {
   std::vector<int> deg;
@@ -25,7 +25,7 @@ inline std::size_t tensor_size(const std::vector<int>& deg) {
   return s;
 }
 
-// Multi-index of flat index i (direction 0 fastest).
+/// Multi-index of flat index i (direction 0 fastest).
 inline void unflatten(std::size_t i, const std::vector<int>& deg, std::vector<int>& idx) {
   for (std::size_t l = 0; l < deg.size(); ++l) {
     idx[l] = static_cast<int>(i % (deg[l] + 1));
@@ -40,8 +40,8 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   h.deg.resize(k);
   for (std::size_t l = 0; l < k; ++l) h.deg[l] = f.deg[l] + g.deg[l];
   h.c.assign(tensor_size(h.deg), T(0));
-  // Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
-  // by binom(a+b, K).
+  /// Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
+  /// by binom(a+b, K).
   auto scaled = [&](const Bern<T>& p) {
     std::vector<T> s(p.c);
     std::vector<int> idx(k);
@@ -78,7 +78,7 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   return h;
 }
 
-// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
+/// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
 template <class T>
 std::size_t cell_index(const std::vector<T>& bp, const T& x) {
   const auto less = [](const T& a, const T& b) { return a < b; };
@@ -98,7 +98,7 @@ std::pair<T, T> hull_range(const BSpline<T>& P, int coord) {
   return {lo, hi};
 }
 
-// DomainError naming how far the control-point hull [lo, hi] of coordinate j leaves [bp.front(), bp.back()].
+/// DomainError naming how far the control-point hull [lo, hi] of coordinate j leaves [bp.front(), bp.back()].
 template <class T>
 void check_hull_in_domain(const std::pair<T, T>& hull, const std::vector<T>& bp, int j, const std::string& fix) {
   const auto& [lo, hi] = hull;
@@ -110,7 +110,7 @@ void check_hull_in_domain(const std::pair<T, T>& hull, const std::vector<T>& bp,
                     fix);
 }
 
-// The inner spline's points must live in the outer spline's parameter space.
+/// The inner spline's points must live in the outer spline's parameter space.
 template <class T>
 void check_composable(const BSpline<T>& outer, const BSpline<T>& inner) {
   if (inner.q != outer.dim())
@@ -127,15 +127,15 @@ void check_bezier(const BSpline<T>& S, const std::string& field) {
                        "extract its Bezier pieces first (extract-bezier), or compose the B-splines");
 }
 
-// Solves the Bernstein interpolation at nodes i/D along direction `dir` of a tensor of values
-// with `width` values per point, in place. Gaussian elimination with partial pivoting (by
-// magnitude; in exact arithmetic any non-zero pivot is exact).
+/// Solves the Bernstein interpolation at nodes i/D along direction `dir` of a tensor of values
+/// with `width` values per point, in place. Gaussian elimination with partial pivoting (by
+/// magnitude; in exact arithmetic any non-zero pivot is exact).
 template <class T>
 void bernstein_solve_direction(std::vector<T>& V, const std::vector<int>& deg, int dir, std::size_t width) {
   const int D = deg[dir];
   if (D == 0) return;
   const std::size_t N = D + 1;
-  // M[i][j] = B_j^D(i/D)
+  /// M[i][j] = B_j^D(i/D)
   std::vector<std::vector<T>> M(N, std::vector<T>(N));
   for (std::size_t i = 0; i < N; ++i) {
     const T t = T(static_cast<long>(i)) / T(D), s = T(1) - t;
@@ -149,8 +149,8 @@ void bernstein_solve_direction(std::vector<T>& V, const std::vector<int>& deg, i
   std::size_t before = width, after = 1;
   for (int l = 0; l < dir; ++l) before *= deg[l] + 1;
   for (std::size_t l = dir + 1; l < deg.size(); ++l) after *= deg[l] + 1;
-  // Factor once (LU with row permutation), then solve for every fibre: right-hand sides are the
-  // `before` contiguous values at each node.
+  /// Factor once (LU with row permutation), then solve for every fibre: right-hand sides are the
+  /// `before` contiguous values at each node.
   std::vector<std::size_t> perm(N);
   for (std::size_t i = 0; i < N; ++i) perm[i] = i;
   auto mag = [](const T& x) { return x < T(0) ? T(-x) : x; };
@@ -239,7 +239,7 @@ BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>&
   std::vector<T> H(total * qq, T(0));  // homogeneous result, direction 0 fastest, coordinates fastest
 
   if (method == CompositionMethod::symbolic) {
-    // Homogeneous inner components: W and the local coordinates U_j = (X_j - a_j W)/(b_j - a_j).
+    /// Homogeneous inner components: W and the local coordinates U_j = (X_j - a_j W)/(b_j - a_j).
     const std::size_t ns = inner.size();
     detail::Bern<T> W{inner.degrees, std::vector<T>(ns, T(1))};
     if (inner.is_rational()) W.c = inner.weights;
@@ -265,7 +265,7 @@ BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>&
         basis[j].push_back(std::move(b));
       }
     }
-    // Sum over the outer control points: prod_j basis[j][I_j] times (w_I C_I, w_I).
+    /// Sum over the outer control points: prod_j basis[j][I_j] times (w_I C_I, w_I).
     const std::size_t nt = outer.size();
     std::vector<int> I(n);
     for (std::size_t t = 0; t < nt; ++t) {
@@ -281,7 +281,7 @@ BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>&
       }
     }
   } else {
-    // Exact values of the homogeneous composition at (D_l + 1) equispaced nodes per direction.
+    /// Exact values of the homogeneous composition at (D_l + 1) equispaced nodes per direction.
     std::vector<int> idx(k);
     std::vector<T> r(k), u(n);
     for (std::size_t K = 0; K < total; ++K) {
@@ -367,8 +367,8 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
     tstride[j] = st;
     st *= tb[j].size() - 1;
   }
-  // A knot line of T where T may jump: multiplicity e_j + 1 (a C^-1 knot; degree 0 has one at
-  // every breakpoint).
+  /// A knot line of T where T may jump: multiplicity e_j + 1 (a C^-1 knot; degree 0 has one at
+  /// every breakpoint).
   auto outer_jumps_at = [&](int j, const T& x) { return is_full_multiplicity(outer.knots[j], outer.degrees[j], x); };
   std::vector<std::vector<T>> sb(k);
   std::vector<std::size_t> sstride(k);
@@ -378,7 +378,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
     sstride[l] = ss;
     ss *= sb[l].size() - 1;
   }
-  // Pass 1: the cell of T that holds each piece of S (exact control-point hull).
+  /// Pass 1: the cell of T that holds each piece of S (exact control-point hull).
   std::vector<std::vector<std::size_t>> piece_cell(sp.size(), std::vector<std::size_t>(n));
   for (std::size_t pi = 0; pi < sp.size(); ++pi) {
     const auto& S = sp[pi].spline;
@@ -388,7 +388,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
       if (!options.expand)
         detail::check_hull_in_domain(hull, tb[j], j,
                                      "move the inner spline into the outer domain, or ask for expanded pieces (--expand)");
-      // The cell c with tb[c] <= lo and hi <= tb[c+1]; clamped to the end cells when expanding.
+      /// The cell c with tb[c] <= lo and hi <= tb[c+1]; clamped to the end cells when expanding.
       const std::size_t c = detail::cell_index(tb[j], lo);
       if (tb[j][c + 1] < hi && !(c + 2 >= tb[j].size() && options.expand))
         throw DomainError("inner", "a piece crosses the knot line u_" + std::to_string(j) + " = " +
@@ -420,10 +420,10 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
       piece_cell[pi][j] = c;
     }
   }
-  // Pass 2: the join at each interior breakpoint of S. C^0 (multiplicity D_l) where S is
-  // continuous (multiplicity <= d_l) and both sides lie in one piece of T, or in pieces between
-  // which T is continuous; else C^-1 (multiplicity D_l + 1): T(S) may jump there. The rule reads
-  // only the inputs' structure, so every arithmetic gives the same knots.
+  /// Pass 2: the join at each interior breakpoint of S. C^0 (multiplicity D_l) where S is
+  /// continuous (multiplicity <= d_l) and both sides lie in one piece of T, or in pieces between
+  /// which T is continuous; else C^-1 (multiplicity D_l + 1): T(S) may jump there. The rule reads
+  /// only the inputs' structure, so every arithmetic gives the same knots.
   std::vector<std::vector<char>> jump(k);
   for (int l = 0; l < k; ++l) {
     jump[l].assign(sb[l].size(), 0);
@@ -442,7 +442,7 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
           if (outer_jumps_at(j, tb[j][c])) jump[l][seg + 1] = 1;
       }
     }
-  // The result net: per direction, first control point of each segment.
+  /// The result net: per direction, first control point of each segment.
   std::vector<std::vector<std::size_t>> offset(k);
   std::vector<std::size_t> rcount(k), rstride(k);
   std::size_t total = 1;

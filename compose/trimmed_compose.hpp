@@ -52,7 +52,7 @@ struct TrimmedPatch {
   bool homogeneous = false;              // patch holds (w*R, w): q+1 coordinates, divide to evaluate
 };
 
-// A trimmed patch's value at r (dividing by the weight for homogeneous patches).
+/// A trimmed patch's value at r (dividing by the weight for homogeneous patches).
 template <class T>
 std::vector<T> evaluate_patch(const TrimmedPatch<T>& p, const std::vector<T>& r);
 
@@ -66,15 +66,15 @@ struct TrimmedComposition {
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> index;  // (inner piece, cell) -> patch
   std::size_t isoparametric_splits = 0;
 
-  // The inner piece containing r (half-open boxes, closed at S's domain end).
+  /// The inner piece containing r (half-open boxes, closed at S's domain end).
   std::size_t locate_piece(const std::vector<T>& r) const;
-  // The outer cell containing u = S(r) (half-open, closed at T's domain end).
+  /// The outer cell containing u = S(r) (half-open, closed at T's domain end).
   std::size_t locate_cell(const std::vector<T>& u) const;
-  // The patch that owns r; DomainError if r is outside S's domain or S(r) outside T's domain.
+  /// The patch that owns r; DomainError if r is outside S's domain or S(r) outside T's domain.
   std::size_t locate(const std::vector<T>& r) const;
-  // R(r): the owning patch evaluated at r. Definition 1: R(r) = T(S(r)).
+  /// R(r): the owning patch evaluated at r. Definition 1: R(r) = T(S(r)).
   std::vector<T> evaluate(const std::vector<T>& r) const;
-  // Exact membership of r (inside the piece's box) in a patch's region.
+  /// Exact membership of r (inside the piece's box) in a patch's region.
   bool in_region(const TrimmedPatch<T>& p, const std::vector<T>& r) const;
 };
 

@@ -9,8 +9,8 @@
 namespace splinex {
 namespace detail {
 
-// Whether coordinate c of a polynomial Bezier piece depends only on parameter l and affinely
-// (Bernstein coefficients constant across the other directions, in arithmetic progression along l).
+/// Whether coordinate c of a polynomial Bezier piece depends only on parameter l and affinely
+/// (Bernstein coefficients constant across the other directions, in arithmetic progression along l).
 template <class T>
 bool affine_in(const BSpline<T>& P, int c, int l) {
   if (P.is_rational()) return false;
@@ -35,13 +35,13 @@ struct Candidate {
   std::vector<CellCondition<T>> conds;
 };
 
-// Whether some point of the piece maps into the conditions: first exact samples, then a proof
-// of emptiness by subdivision (a sub-piece whose hull misses a condition's interval holds no
-// such point). Returns 1 non-empty (a point found), 0 empty (proved), -1 undecided.
+/// Whether some point of the piece maps into the conditions: first exact samples, then a proof
+/// of emptiness by subdivision (a sub-piece whose hull misses a condition's interval holds no
+/// such point). Returns 1 non-empty (a point found), 0 empty (proved), -1 undecided.
 template <class T>
 int region_nonempty(const BSpline<T>& piece, const std::vector<CellCondition<T>>& conds, int depth, const Limits& limits) {
   const int k = piece.dim();
-  // Samples: 9 per direction including the corners.
+  /// Samples: 9 per direction including the corners.
   const int G = 9;
   std::vector<int> idx(k, 0);
   std::vector<T> r(k);
@@ -56,7 +56,7 @@ int region_nonempty(const BSpline<T>& piece, const std::vector<CellCondition<T>>
     while (l < k && ++idx[l] == G) { idx[l] = 0; ++l; }
     if (l == k) break;
   }
-  // Subdivision: every sub-piece's hull must miss some condition.
+  /// Subdivision: every sub-piece's hull must miss some condition.
   std::vector<BSpline<T>> work{piece};
   for (int level = 0; level <= depth && !work.empty(); ++level) {
     std::vector<BSpline<T>> next;
@@ -68,7 +68,7 @@ int region_nonempty(const BSpline<T>& piece, const std::vector<CellCondition<T>>
       }
       if (misses) continue;
       if (level == depth) return -1;
-      // Split in every direction at the middle.
+      /// Split in every direction at the middle.
       std::vector<BSpline<T>> parts{sub};
       for (int l = 0; l < k; ++l) {
         std::vector<BSpline<T>> halves;
@@ -165,7 +165,7 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
   R.outer_pieces = extract_bezier(outer, limits);
   const int n = outer.dim(), k = inner.dim();
   for (int j = 0; j < n; ++j) R.outer_breaks.push_back(breakpoints(outer.knots[j], outer.degrees[j], outer.count(j)));
-  // Inner pieces, split where a coordinate is affine in one parameter and meets a knot of T.
+  /// Inner pieces, split where a coordinate is affine in one parameter and meets a knot of T.
   std::vector<BezierPiece<T>> todo = extract_bezier(inner, limits);
   while (!todo.empty()) {
     BezierPiece<T> pc = std::move(todo.back());
@@ -175,7 +175,7 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
       for (int l = 0; l < k && !split; ++l) {
         if (!detail::affine_in(pc.spline, c, l)) continue;
         const BSpline<T>& P = pc.spline;
-        // s_c(r_l) runs affinely from a (r_l = lo) to b (r_l = hi).
+        /// s_c(r_l) runs affinely from a (r_l = lo) to b (r_l = hi).
         const T a = P.points[c], b = P.points[(P.size() - 1) * P.q + c];
         if (a == b) continue;
         for (const T& u : R.outer_breaks[c]) {
@@ -209,7 +209,7 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
   for (int j = 0; j < n; ++j) { cstride[j] = st; st *= R.outer_breaks[j].size() - 1; }
   for (std::size_t i = 0; i < R.inner_pieces.size(); ++i) {
     const BSpline<T>& P = R.inner_pieces[i].spline;
-    // Candidate cell ranges per coordinate from the exact hull.
+    /// Candidate cell ranges per coordinate from the exact hull.
     std::vector<std::pair<std::size_t, std::size_t>> range(n);
     std::vector<std::pair<T, T>> hull(n);
     for (int j = 0; j < n; ++j) {

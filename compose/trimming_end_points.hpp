@@ -9,10 +9,10 @@
 
 namespace splinex {
 
-// Where trimming curves of a patch meet the edges of its inner piece's box: for every region
-// condition (s_c = bound) and every edge (one parameter free, the others at a box end), the
-// isolated parameters of the crossings. For surfaces (k = 2) these are the end points of the
-// trimming curves; for curves (k = 1) the trimming points themselves.
+/// Where trimming curves of a patch meet the edges of its inner piece's box: for every region
+/// condition (s_c = bound) and every edge (one parameter free, the others at a box end), the
+/// isolated parameters of the crossings. For surfaces (k = 2) these are the end points of the
+/// trimming curves; for curves (k = 1) the trimming points themselves.
 struct EdgeCrossing {
   int condition = 0;          // index into the patch's region
   bool at_upper_bound = false;  // s_c = hi (else s_c = lo)

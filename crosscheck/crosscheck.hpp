@@ -43,7 +43,7 @@ struct CrossReport {
   Json to_json() const;
 };
 
-// grid_per_dir = 0 chooses 65 (curves), 17 (surfaces), 7 (trivariates) points per direction.
+/// grid_per_dir = 0 chooses 65 (curves), 17 (surfaces), 7 (trivariates) points per direction.
 CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, const ArithSpec& fl,
                        int grid_per_dir = 0, const Limits& limits = {});
 

@@ -18,9 +18,9 @@ struct Operation {
   bool boehm = false;           // insert_knots: A5.1 knot by knot instead of A5.4
   int by = 1;                   // elevate
   ElevationMethod method = ElevationMethod::bezier_pieces;
-  // Elevation method chosen per arithmetic: A5.9 in exact arithmetic (the same result, faster),
-  // the blossom method in floating point (measured: A5.9 in double loses 6 / 10 / 22 bits on
-  // random dyadic curves of degree 3 / 5 / 7, the blossom 0.6 / 1.2 / 1.4).
+  /// Elevation method chosen per arithmetic: A5.9 in exact arithmetic (the same result, faster),
+  /// the blossom method in floating point (measured: A5.9 in double loses 6 / 10 / 22 bits on
+  /// random dyadic curves of degree 3 / 5 / 7, the blossom 0.6 / 1.2 / 1.4).
   bool method_auto = false;
   Rational at;                  // split
   Rational lo, hi;              // reparametrize
@@ -29,7 +29,7 @@ struct Operation {
   static Operation parse_kind(const std::string& name);  // UsageError for unknown names
 };
 
-// The result splines (one for most operations; the pieces or the two halves otherwise).
+/// The result splines (one for most operations; the pieces or the two halves otherwise).
 template <class T>
 std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, const Limits& limits);
 

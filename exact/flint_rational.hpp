@@ -50,7 +50,7 @@ class FlintRational {
   }
 
  private:
-  // FLINT aborts the process on division by zero; a typed error is what the kernel promises.
+  /// FLINT aborts the process on division by zero; a typed error is what the kernel promises.
   static void div_checked(fmpq_t r, const fmpq_t a, const fmpq_t b);
   fmpq_t v_;
 };

@@ -18,16 +18,16 @@
 
 namespace splinex {
 
-// GMP, MPFR and FLINT allocate through functions that throw std::bad_alloc when malloc fails.
-// Call before the first GMP/MPFR/FLINT value is created (MPFR caches the functions).
+/// GMP, MPFR and FLINT allocate through functions that throw std::bad_alloc when malloc fails.
+/// Call before the first GMP/MPFR/FLINT value is created (MPFR caches the functions).
 void install_throwing_allocators();
 
-// Physical memory of the machine in bytes (sysconf), 0 if unknown.
+/// Physical memory of the machine in bytes (sysconf), 0 if unknown.
 std::size_t physical_memory_bytes();
-// Three quarters of physical memory, at most the current address-space limit.
+/// Three quarters of physical memory, at most the current address-space limit.
 std::size_t default_memory_budget();
-// "4G", "512M", "100000K", "1073741824" (binary units K, M, G, T; optional trailing "B", "iB").
-// UsageError naming `field` for anything else or below min_memory_budget.
+/// "4G", "512M", "100000K", "1073741824" (binary units K, M, G, T; optional trailing "B", "iB").
+/// UsageError naming `field` for anything else or below min_memory_budget.
 std::size_t parse_memory_size(const std::string& text, const std::string& field);
 constexpr std::size_t min_memory_budget = std::size_t(128) << 20;
 
@@ -36,11 +36,11 @@ struct MemoryBudget {
   bool enforced = false;   // RLIMIT_AS set to it
   std::string note;        // why not, when not enforced
 };
-// Sets RLIMIT_AS to `bytes` (never above the hard limit). Not under AddressSanitizer.
+/// Sets RLIMIT_AS to `bytes` (never above the hard limit). Not under AddressSanitizer.
 MemoryBudget set_memory_budget(std::size_t bytes);
-// The budget set last (bytes 0 if none).
+/// The budget set last (bytes 0 if none).
 const MemoryBudget& current_memory_budget();
-// "3.5 GiB" style text for messages.
+/// "3.5 GiB" style text for messages.
 std::string format_bytes(std::size_t bytes);
 
 }  // namespace splinex

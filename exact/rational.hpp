@@ -12,21 +12,21 @@ namespace splinex {
 using Rational = boost::multiprecision::mpq_rational;
 using Integer = boost::multiprecision::mpz_int;
 
-// Exact value of number text: an integer ("-3"), a fraction ("22/7") or a decimal with optional
-// exponent ("0.784" = 98/125, "1e-3", "-2.5E+4"). Anything else (NaN, Inf, hex, empty, a zero
-// denominator, an exponent beyond +-100000) throws ParseError naming `field`.
+/// Exact value of number text: an integer ("-3"), a fraction ("22/7") or a decimal with optional
+/// exponent ("0.784" = 98/125, "1e-3", "-2.5E+4"). Anything else (NaN, Inf, hex, empty, a zero
+/// denominator, an exponent beyond +-100000) throws ParseError naming `field`.
 Rational parse_number(std::string_view text, const std::string& field);
 
-// Every finite double is a dyadic rational; this is it. NaN/Inf throw ParseError naming `field`.
+/// Every finite double is a dyadic rational; this is it. NaN/Inf throw ParseError naming `field`.
 Rational exact_from_double(double x, const std::string& field = "value");
 
-// Correctly rounded (to nearest, ties to even) double of an exact rational.
+/// Correctly rounded (to nearest, ties to even) double of an exact rational.
 double to_double(const Rational& x);
 
-// "p/q" in lowest terms, or "p" when q = 1.
+/// "p/q" in lowest terms, or "p" when q = 1.
 std::string to_fraction_string(const Rational& x);
 
-// log2|x| (x != 0), to about 50 bits: for reporting error magnitudes and bits lost.
+/// log2|x| (x != 0), to about 50 bits: for reporting error magnitudes and bits lost.
 double log2_abs(const Rational& x);
 
 Rational abs(const Rational& x);

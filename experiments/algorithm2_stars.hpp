@@ -15,8 +15,8 @@ struct Algorithm2StarsOptions {
   bool exact_star = true;  // also run one star exactly (Algorithm 2 in rationals) for the cost ratio
 };
 
-// Writes algorithm2_stars.csv into out_dir and returns a Markdown section; ok is false when a
-// tile of orders other than (25, 25) appears or the tiles fail to cover a star's domain.
+/// Writes algorithm2_stars.csv into out_dir and returns a Markdown section; ok is false when a
+/// tile of orders other than (25, 25) appears or the tiles fail to cover a star's domain.
 std::string run_algorithm2_stars(const Algorithm2StarsOptions& options,
                                  const std::function<void(const std::string&)>& progress, bool& ok);
 

@@ -7,9 +7,9 @@
 
 namespace splinex {
 
-// Writes checkerboard.svg into out_dir; returns a Markdown section with the measured loss of the
-// parametrization: max |R_tile(texture point) - T(S(texture point))| over tiles and a grid, exact
-// (0 for Algorithm 1, proved pointwise here too). ok is false if Algorithm 1's loss is not 0.
+/// Writes checkerboard.svg into out_dir; returns a Markdown section with the measured loss of the
+/// parametrization: max |R_tile(texture point) - T(S(texture point))| over tiles and a grid, exact
+/// (0 for Algorithm 1, proved pointwise here too). ok is false if Algorithm 1's loss is not 0.
 std::string run_checkerboard(const std::string& out_dir, bool& ok);
 
 }  // namespace splinex

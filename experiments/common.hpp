@@ -10,17 +10,17 @@
 
 namespace splinex {
 
-// A number for Markdown tables: `precision` significant digits.
+/// A number for Markdown tables: `precision` significant digits.
 inline std::string fmt(double v, int precision = 3) {
   std::ostringstream o;
   o << std::setprecision(precision) << v;
   return o.str();
 }
 
-// One colour per knot multiplicity m = 1..4 in the tolerance plots.
+/// One colour per knot multiplicity m = 1..4 in the tolerance plots.
 inline const char* const kMultiplicityColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 
-// The clamped knot vector of degree p on [0, 1] with the interior knot u0 of multiplicity m.
+/// The clamped knot vector of degree p on [0, 1] with the interior knot u0 of multiplicity m.
 inline std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
   std::vector<Rational> U(p + 1, Rational(0));
   U.insert(U.end(), m, u0);
@@ -28,9 +28,9 @@ inline std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
   return U;
 }
 
-// The inner surface of the surface tolerance studies: degrees (1, 2) on [0, 1]^2 with
-// s_u = 1/5 + 3/5 r + 1/5 t(1-t) and s_v = 1/10 + 4/5 t, so the trimming curve s_u = 1/2 is the
-// parabola r*(t) = (3/10 - 1/5 t(1-t)) / (3/5) = 1/2 - t(1-t)/3, rational at rational t.
+/// The inner surface of the surface tolerance studies: degrees (1, 2) on [0, 1]^2 with
+/// s_u = 1/5 + 3/5 r + 1/5 t(1-t) and s_v = 1/10 + 4/5 t, so the trimming curve s_u = 1/2 is the
+/// parabola r*(t) = (3/10 - 1/5 t(1-t)) / (3/5) = 1/2 - t(1-t)/3, rational at rational t.
 inline BSpline<Rational> parabola_trimming_inner() {
   BSpline<Rational> S;
   S.degrees = {1, 2};

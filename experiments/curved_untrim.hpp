@@ -7,8 +7,8 @@
 
 namespace splinex {
 
-// Writes untrim_curved.svg and untrim_curved_domain.json into out_dir; returns a Markdown
-// section. ok is false if a certificate or an exact equality fails.
+/// Writes untrim_curved.svg and untrim_curved_domain.json into out_dir; returns a Markdown
+/// section. ok is false if a certificate or an exact equality fails.
 std::string run_curved_untrim(const std::string& out_dir, bool& ok);
 
 }  // namespace splinex

@@ -10,7 +10,7 @@ struct ReportOptions {
   bool full = false;  // the long sweep: larger cases, more precisions, longer refinements
 };
 
-// Returns the process exit status (0 when every proof held and every run finished).
+/// Returns the process exit status (0 when every proof held and every run finished).
 int run_report(const ReportOptions& options);
 
 }  // namespace splinex

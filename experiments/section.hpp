@@ -18,13 +18,13 @@ struct ReportContext {
   ReportContext(const ReportOptions& o, std::function<void(const std::string&)> p) : options(o), progress(std::move(p)) {}
   const ReportOptions& options;
   std::function<void(const std::string&)> progress;  // "[report 12.3s] ..." on stderr
-  // One seeded stream for the sections that draw random inputs, in the order they run (the
-  // crosscheck suite, then the composition orders).
+  /// One seeded stream for the sections that draw random inputs, in the order they run (the
+  /// crosscheck suite, then the composition orders).
   std::mt19937_64 rng{20261121};
   std::map<std::string, std::string> markdown;  // report.md's parts by name
   std::vector<std::function<void()>> deferred;   // files written after every section has run
   bool ok = true;                                // every section's own checks held
-  // For the closing progress line.
+  /// For the closing progress line.
   std::size_t crosschecks = 0;
   bool float_structures_match = true;
   bool proofs_as_expected = true;

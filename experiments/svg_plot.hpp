@@ -21,10 +21,10 @@ struct PlotSpec {
 
 std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& series);
 
-// Least-squares slope of log10(y) against log10(x) over the points (0 for fewer than two).
+/// Least-squares slope of log10(y) against log10(x) over the points (0 for fewer than two).
 double loglog_slope(const std::vector<std::pair<double, double>>& pts);
 
-// Writes text to path through a temporary file and a rename, so readers never see half a file.
+/// Writes text to path through a temporary file and a rename, so readers never see half a file.
 void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace splinex

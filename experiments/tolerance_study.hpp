@@ -9,9 +9,9 @@
 
 namespace splinex {
 
-// Curve case (trimming points by float bisection) and surface case (trimming polylines within eps,
-// untrim/trimming_polyline.hpp). Writes tolerance*.csv and tolerance*.svg into out_dir; returns a
-// Markdown section. ok is false when a fitted slope misses the predicted order by more than 0.25.
+/// Curve case (trimming points by float bisection) and surface case (trimming polylines within eps,
+/// untrim/trimming_polyline.hpp). Writes tolerance*.csv and tolerance*.svg into out_dir; returns a
+/// Markdown section. ok is false when a fitted slope misses the predicted order by more than 0.25.
 std::string run_tolerance_study(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok);
 
 }  // namespace splinex

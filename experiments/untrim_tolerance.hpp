@@ -20,8 +20,8 @@
 
 namespace splinex {
 
-// One arithmetic of the sweep: bits 0 is double, else MPFR at that precision; run for the
-// tolerances >= min_eps and the multiplicities 1..max_m (MPFR costs ~25x double here).
+/// One arithmetic of the sweep: bits 0 is double, else MPFR at that precision; run for the
+/// tolerances >= min_eps and the multiplicities 1..max_m (MPFR costs ~25x double here).
 struct UntrimRun {
   int bits = 0;
   double min_eps = 1e-6;
@@ -38,10 +38,10 @@ struct UntrimToleranceOptions {
 
 UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir);
 
-// Writes untrim_tolerance.csv, untrim_tolerance.svg, untrim_tolerance_cost.svg and
-// untrim_tolerance.md into out_dir; returns the Markdown section. ok is false when the slope fitted
-// at the highest precision misses p - m + 1 (0 for m = p + 1) by more than 0.3, or a gap or
-// overlap of positive area appears.
+/// Writes untrim_tolerance.csv, untrim_tolerance.svg, untrim_tolerance_cost.svg and
+/// untrim_tolerance.md into out_dir; returns the Markdown section. ok is false when the slope fitted
+/// at the highest precision misses p - m + 1 (0 for m = p + 1) by more than 0.3, or a gap or
+/// overlap of positive area appears.
 std::string run_untrim_tolerance(const UntrimToleranceOptions& options,
                                  const std::function<void(const std::string&)>& progress, bool& ok);
 

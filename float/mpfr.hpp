@@ -23,7 +23,7 @@ class Mpfr {
     thread_local mpfr_prec_t bits = 53;
     return bits;
   }
-  // RAII: values created in this scope have `bits` bits.
+  /// RAII: values created in this scope have `bits` bits.
   class Precision {
    public:
     explicit Precision(long bits);
@@ -79,9 +79,9 @@ class Mpfr {
 
 [[noreturn]] void throw_not_finite(const std::string& arith);
 
-// Exact value of a finite MPFR number (mantissa * 2^exponent).
+/// Exact value of a finite MPFR number (mantissa * 2^exponent).
 Rational to_rational(const Mpfr& x);
-// All the significant digits needed to read the value back at its precision ("d.ddde-X").
+/// All the significant digits needed to read the value back at its precision ("d.ddde-X").
 std::string to_decimal_string(const Mpfr& x);
 
 template <>
@@ -102,7 +102,7 @@ struct ArithTraits<double> {
   static int precision_bits() { return 53; }
   static double from_rational(const Rational& x) { return to_double(x); }
   static Rational to_rational(double x) { return exact_from_double(x); }
-  // nlohmann prints the shortest round-trip text; it would print inf and NaN as null.
+  /// nlohmann prints the shortest round-trip text; it would print inf and NaN as null.
   static nlohmann::json to_json(double x) {
     if (!std::isfinite(x)) throw_not_finite("double");
     return x;

@@ -18,7 +18,7 @@ inline bool is_finite_value(const Mpfr& x) { return mpfr_number_p(x.get()) != 0;
 template <class T>
 bool is_finite_value(const T&) { return true; }  // exact arithmetics
 
-// Whether every knot, point and weight of S is finite.
+/// Whether every knot, point and weight of S is finite.
 template <class T>
 bool is_finite_spline(const BSpline<T>& S) {
   const auto finite = [](const T& x) { return is_finite_value(x); };
@@ -27,8 +27,8 @@ bool is_finite_spline(const BSpline<T>& S) {
   return std::all_of(S.points.begin(), S.points.end(), finite) && std::all_of(S.weights.begin(), S.weights.end(), finite);
 }
 
-// x rounded to F (correctly); RangeError if F cannot hold it (infinite), or if a non-zero x
-// becomes 0 where `nonzero_needed` (weights, denominators).
+/// x rounded to F (correctly); RangeError if F cannot hold it (infinite), or if a non-zero x
+/// becomes 0 where `nonzero_needed` (weights, denominators).
 template <class F>
 F round_checked(const Rational& x, const std::string& field, bool nonzero_needed = false) {
   F y = ArithTraits<F>::from_rational(x);
@@ -41,9 +41,9 @@ F round_checked(const Rational& x, const std::string& field, bool nonzero_needed
   return y;
 }
 
-// The spline rounded to F, with every structural property of S kept: finite values, positive
-// weights, and the same order of every pair of neighbouring knots (distinct knots stay distinct,
-// so multiplicities and spans are those of S). `what` prefixes the field names ("outer", ...).
+/// The spline rounded to F, with every structural property of S kept: finite values, positive
+/// weights, and the same order of every pair of neighbouring knots (distinct knots stay distinct,
+/// so multiplicities and spans are those of S). `what` prefixes the field names ("outer", ...).
 template <class F>
 BSpline<F> round_spline(const BSpline<Rational>& S, const std::string& what = "") {
   const std::string pre = what.empty() ? "" : what + ".";
@@ -74,7 +74,7 @@ BSpline<F> round_spline(const BSpline<Rational>& S, const std::string& what = ""
   return R;
 }
 
-// A parameter list rounded to F (each finite).
+/// A parameter list rounded to F (each finite).
 template <class F>
 std::vector<F> round_values(const std::vector<Rational>& xs, const std::string& field) {
   std::vector<F> out;

@@ -11,7 +11,7 @@ namespace splinex {
 
 namespace hybrid_detail {
 
-// All B-splines of degree p over U at x (zero outside x's span).
+/// All B-splines of degree p over U at x (zero outside x's span).
 template <class T>
 std::vector<T> all_basis(const std::vector<T>& U, int p, const T& x) {
   const std::size_t n = U.size() - p - 1, span = find_span(U, p, n, x);
@@ -38,8 +38,8 @@ T ratio_or_zero(const T& num, const T& den) {
   return den == T(0) ? T(0) : num / den;
 }
 
-// Eq. 4.8: alpha_j (j = 0..n-1) and beta_j (j = 0..n-1) for inserting x into U (degree d, n
-// coefficients), 0-based knots; m is the span of x (U_m <= x < U_{m+1}).
+/// Eq. 4.8: alpha_j (j = 0..n-1) and beta_j (j = 0..n-1) for inserting x into U (degree d, n
+/// coefficients), 0-based knots; m is the span of x (U_m <= x < U_{m+1}).
 template <class T>
 std::pair<std::vector<T>, std::vector<T>> boehm_alpha_beta(const std::vector<T>& U, int d, const T& x, const std::string& field) {
   const std::size_t n = U.size() - d - 1;
@@ -155,7 +155,7 @@ std::vector<T> hybrid_form_evaluate(const HybridForm<T>& F, const std::array<T, 
 template <class T>
 std::pair<std::vector<T>, std::vector<T>> cls_elevate(int p, const std::vector<T>& u, const std::vector<T>& C, int q) {
   using hybrid_detail::ratio_or_zero;
-  // Ubar: every distinct knot once more.
+  /// Ubar: every distinct knot once more.
   std::vector<T> ub;
   for (std::size_t k = 0; k < u.size(); ++k) {
     ub.push_back(u[k]);
@@ -165,7 +165,7 @@ std::pair<std::vector<T>, std::vector<T>> cls_elevate(int p, const std::vector<T
   if (C.size() != n * q) throw ValidationError("ribbon", "has the wrong number of coefficients", "give #knots - p - 1 coefficients");
   std::vector<T> Q(nbar * q, T(0));
   for (std::size_t j = 0; j < nbar; ++j) {
-    // Level r: Lambda^r_s(j), alpha^r_s(j) for s = 0..u.size() - r - 2.
+    /// Level r: Lambda^r_s(j), alpha^r_s(j) for s = 0..u.size() - r - 2.
     const std::size_t n0 = u.size() - 1;
     std::vector<T> Lam(n0), alp(n0);
     for (std::size_t s = 0; s < n0; ++s) {
@@ -192,8 +192,8 @@ std::pair<std::vector<T>, std::vector<T>> cls_elevate(int p, const std::vector<T
 
 namespace hybrid_detail {
 
-// Eq. 4.5 once: a full (d+1) x (d+1) tensor Bernstein net (Ct_{j,k} at (k (d+1) + j) q) to
-// degree d + 1 in both directions.
+/// Eq. 4.5 once: a full (d+1) x (d+1) tensor Bernstein net (Ct_{j,k} at (k (d+1) + j) q) to
+/// degree d + 1 in both directions.
 template <class T>
 std::vector<T> elevate_net(const std::vector<T>& C, int d, int q) {
   const int e = d + 1;
@@ -255,12 +255,12 @@ HybridForm<T> hybrid_insert(const HybridForm<T>& F, const T& xs, const T& xh, co
     const std::string f = "sides[" + std::to_string(i) + "]";
     const auto [as, bs] = boehm_alpha_beta(S.U, S.du, xs, f + ".U");
     const auto [ah, bh] = boehm_alpha_beta(S.V, S.dh, xh, f + ".V");
-    // Not a structured binding: C++17 lambdas cannot capture those (clang refuses it).
+    /// Not a structured binding: C++17 lambdas cannot capture those (clang refuses it).
     const auto boundary_ab = boehm_alpha_beta(S.Ub, S.p, xb, f + ".Ub");
     const std::vector<T>& ab = boundary_ab.first;
     const std::vector<T>& bb = boundary_ab.second;
     const std::size_t nu = S.count_u(), nh = S.count_h(), nb = S.count_b();
-    // Eq. 4.10 (coefficients outside the old index ranges are 0).
+    /// Eq. 4.10 (coefficients outside the old index ranges are 0).
     auto C = [&](long j, long k, std::size_t c) -> T {
       if (j < 0 || k < 0 || j >= static_cast<long>(nu) || k >= static_cast<long>(nh)) return T(0);
       return S.interior[(static_cast<std::size_t>(k) * nu + j) * q + c];
@@ -273,7 +273,7 @@ HybridForm<T> hybrid_insert(const HybridForm<T>& F, const T& xs, const T& xh, co
           R.interior[(static_cast<std::size_t>(k) * (nu + 1) + j) * q + c] =
               A(as, j) * A(ah, k) * C(j, k, c) + A(as, j) * A(bh, k - 1) * C(j, k - 1, c) + A(bs, j - 1) * A(ah, k) * C(j - 1, k, c) +
               A(bs, j - 1) * A(bh, k - 1) * C(j - 1, k - 1, c);
-    // Eq. 4.11 and 4.12.
+    /// Eq. 4.11 and 4.12.
     auto ribbon = [&](const std::vector<T>& X) {
       std::vector<T> Y((nb + 1) * q, T(0));
       for (long j = 0; j <= static_cast<long>(nb); ++j)

@@ -52,8 +52,8 @@ struct HybridPatch {
   std::vector<int> p;                      // B-spline degree of side i's boundary, 1 <= p_i <= d
   std::vector<std::vector<T>> knots;       // side i: d + p_i + 2 knots, clamped on [0, 1]
   int q = 3;                               // coordinates of a control point
-  // Control point C^i_{j,k} (side i, column j = 0..d, layer k = 0..l-1) at
-  // ((i * l + k) * (d + 1) + j) * q; corners shared: C^i_{a,b} = C^{i-1}_{d-b,a} for a, b < l.
+  /// Control point C^i_{j,k} (side i, column j = 0..d, layer k = 0..l-1) at
+  /// ((i * l + k) * (d + 1) + j) * q; corners shared: C^i_{a,b} = C^{i-1}_{d-b,a} for a, b < l.
   std::vector<T> points;
   RibbonFactor ribbon = RibbonFactor::side_interpolant;
 
@@ -64,7 +64,7 @@ struct HybridPatch {
   }
 };
 
-// The patch with every number converted by conv (e.g. the exact patch rounded to double).
+/// The patch with every number converted by conv (e.g. the exact patch rounded to double).
 template <class B, class A, class F>
 HybridPatch<B> convert_hybrid(const HybridPatch<A>& P, F&& conv) {
   HybridPatch<B> Q;
@@ -81,7 +81,7 @@ HybridPatch<B> convert_hybrid(const HybridPatch<A>& P, F&& conv) {
   return Q;
 }
 
-// Everything the patch needs at one domain point.
+/// Everything the patch needs at one domain point.
 template <class T>
 struct HybridLocal {
   std::vector<T> lambda;  // Wachspress coordinates, one per vertex
@@ -91,21 +91,21 @@ struct HybridLocal {
 template <class T>
 HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x);
 
-// The patch's point at x (q coordinates). x must lie in the closed domain (DomainError).
+/// The patch's point at x (q coordinates). x must lie in the closed domain (DomainError).
 template <class T>
 std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& x);
 
-// The boundary curve P_i(s) and the ribbon's cross-derivative function T_i(s) (Eq. 2.11).
+/// The boundary curve P_i(s) and the ribbon's cross-derivative function T_i(s) (Eq. 2.11).
 template <class T>
 std::vector<T> hybrid_boundary(const HybridPatch<T>& P, std::size_t i, const T& s);
 template <class T>
 std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, const T& s);
 
-// First derivatives (exact in exact arithmetic: forward mode with Dual<T>, spline/dual.hpp).
-// The patch is differentiable on the closed domain except at the corners, where alpha_i and
-// beta_{i-1} have no limit (a 0/0 whose value depends on the direction of approach); there the
-// functions below throw DomainError. On knots of a side the one-sided derivative of the knot span
-// A2.1 picks is returned.
+/// First derivatives (exact in exact arithmetic: forward mode with Dual<T>, spline/dual.hpp).
+/// The patch is differentiable on the closed domain except at the corners, where alpha_i and
+/// beta_{i-1} have no limit (a 0/0 whose value depends on the direction of approach); there the
+/// functions below throw DomainError. On knots of a side the one-sided derivative of the knot span
+/// A2.1 picks is returned.
 template <class T>
 struct HybridJet {
   std::vector<T> point, derivative;  // S(x) and d/dtau S(x + tau w) at tau = 0
@@ -121,11 +121,11 @@ struct HybridDerivatives {
 template <class T>
 HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::array<T, 2>& x);
 
-// Theorem 3.2's derivative: dS/dh_i at fixed s_i. The level sets of s_i (Eq. 2.9) are the lines
-// through O_i, the intersection of the lines of sides i-1 and i+1 (parallel to them when those
-// sides are parallel), so the derivative is taken along w = O_i - x:
-//     dS/dh_i |_{s_i} = (d/dtau S) / (d/dtau h_i),
-// and d/dtau s_i = 0 exactly (tests check it). Returned with the direction w used.
+/// Theorem 3.2's derivative: dS/dh_i at fixed s_i. The level sets of s_i (Eq. 2.9) are the lines
+/// through O_i, the intersection of the lines of sides i-1 and i+1 (parallel to them when those
+/// sides are parallel), so the derivative is taken along w = O_i - x:
+///     dS/dh_i |_{s_i} = (d/dtau S) / (d/dtau h_i),
+/// and d/dtau s_i = 0 exactly (tests check it). Returned with the direction w used.
 template <class T>
 struct HybridCrossDerivative {
   std::vector<T> value;     // dS/dh_i at fixed s_i
@@ -134,8 +134,8 @@ struct HybridCrossDerivative {
 template <class T>
 HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x);
 
-// Side i's boundary P_i as a kernel B-spline curve (degree p_i, side i's knots, row C^i_{j,0}),
-// e.g. for its derivatives.
+/// Side i's boundary P_i as a kernel B-spline curve (degree p_i, side i's knots, row C^i_{j,0}),
+/// e.g. for its derivatives.
 template <class T>
 BSpline<T> hybrid_boundary_spline(const HybridPatch<T>& P, std::size_t i) {
   BSpline<T> C;
@@ -147,9 +147,9 @@ BSpline<T> hybrid_boundary_spline(const HybridPatch<T>& P, std::size_t i) {
   return C;
 }
 
-// Structural checks with typed errors naming the field: n >= 3, strictly convex and
-// counter-clockwise, d >= 3, p_i in [1, d], knot counts d + p_i + 2, clamped on [0, 1],
-// non-decreasing, control point count, shared corner points equal.
+/// Structural checks with typed errors naming the field: n >= 3, strictly convex and
+/// counter-clockwise, d >= 3, p_i in [1, d], knot counts d + p_i + 2, clamped on [0, 1],
+/// non-decreasing, control point count, shared corner points equal.
 template <class T>
 void validate(const HybridPatch<T>& P);
 

@@ -14,7 +14,7 @@ namespace hybrid_detail {
 
 using detail::power;
 
-// All d + 1 B-splines N_j^{p_i,U_i}(s) of side i (zero outside s's span), by A2.2 on the span.
+/// All d + 1 B-splines N_j^{p_i,U_i}(s) of side i (zero outside s's span), by A2.2 on the span.
 template <class T>
 std::vector<T> side_basis(const HybridPatch<T>& P, std::size_t i, const T& s) {
   const int p = P.p[i];
@@ -25,7 +25,7 @@ std::vector<T> side_basis(const HybridPatch<T>& P, std::size_t i, const T& s) {
   return all;
 }
 
-// Outward normal of side i (from V_i to V_{i+1}) of a counter-clockwise polygon, not normalized.
+/// Outward normal of side i (from V_i to V_{i+1}) of a counter-clockwise polygon, not normalized.
 template <class T>
 std::array<T, 2> normal(const HybridPatch<T>& P, std::size_t i) {
   const auto& a = P.vertices[i];
@@ -38,7 +38,7 @@ T cross(const std::array<T, 2>& a, const std::array<T, 2>& b) {
   return a[0] * b[1] - a[1] * b[0];
 }
 
-// mu^i_{j,k} (Definition 2.4) for layers k = 0..l-1.
+/// mu^i_{j,k} (Definition 2.4) for layers k = 0..l-1.
 template <class T>
 T mu(int d, int j, int k, const T& alpha, const T& beta) {
   if (2 * j <= d) {  // j <= d/2
@@ -53,7 +53,7 @@ T mu(int d, int j, int k, const T& alpha, const T& beta) {
   return T(1);
 }
 
-// Ribbon factor tau_j of side i (see the header).
+/// Ribbon factor tau_j of side i (see the header).
 template <class T>
 T ribbon_factor(const HybridPatch<T>& P, std::size_t i, int j) {
   const auto& U = P.knots[i];
@@ -108,7 +108,7 @@ HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x) 
 
 namespace hybrid_detail {
 
-// P_i(s) and T_i(s) from side i's basis values N (one basis evaluation serves both).
+/// P_i(s) and T_i(s) from side i's basis values N (one basis evaluation serves both).
 template <class T>
 std::vector<T> boundary_from(const HybridPatch<T>& P, std::size_t i, const std::vector<T>& N) {
   std::vector<T> out(P.q, T(0));
@@ -142,9 +142,9 @@ std::vector<T> hybrid_cross_tangent(const HybridPatch<T>& P, std::size_t i, cons
 
 namespace hybrid_detail {
 
-// The mu-weighted Bernstein terms of side i at L: adds them to `blend` (B_Sigma), calls
-// interior(j, k, w) for the interior layers k >= 2 (weight w = mu B_j^d(s_i) B_k^d(h_i)) and
-// returns L_i^*, the sum over the two ribbon layers k = 0, 1.
+/// The mu-weighted Bernstein terms of side i at L: adds them to `blend` (B_Sigma), calls
+/// interior(j, k, w) for the interior layers k >= 2 (weight w = mu B_j^d(s_i) B_k^d(h_i)) and
+/// returns L_i^*, the sum over the two ribbon layers k = 0, 1.
 template <class T, class F>
 T side_blend(const HybridPatch<T>& P, const HybridLocal<T>& L, std::size_t i, T& blend, F&& interior) {
   const std::size_t n = P.sides();
@@ -166,7 +166,7 @@ T side_blend(const HybridPatch<T>& P, const HybridLocal<T>& L, std::size_t i, T&
   return lstar;
 }
 
-// C_0 (Eq. 2.7), the mean of the points C^i_{l,l-1}.
+/// C_0 (Eq. 2.7), the mean of the points C^i_{l,l-1}.
 template <class T>
 std::vector<T> central_point(const HybridPatch<T>& P) {
   std::vector<T> C0(P.q, T(0));
@@ -242,7 +242,7 @@ HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::s
   using namespace hybrid_detail;
   const std::size_t n = P.sides();
   if (i >= n) throw UsageError("side", std::to_string(i) + " does not exist (the patch has " + std::to_string(n) + " sides)", "give a side 0..n-1");
-  // Lines of sides i-1 and i+1: points V_{i-1}, V_{i+1}, directions a, b.
+  /// Lines of sides i-1 and i+1: points V_{i-1}, V_{i+1}, directions a, b.
   const auto& A = P.vertices[(i + n - 1) % n];
   const auto& B = P.vertices[(i + 1) % n];
   const std::array<T, 2> a{P.vertices[i][0] - A[0], P.vertices[i][1] - A[1]};

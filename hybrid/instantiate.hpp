@@ -1,5 +1,5 @@
 // Explicit instantiation of the hybrid patch and its form for one scalar type
-// (hybrid/instances.cpp; tests/test_arith_concept.cpp).
+// (hybrid/instances.cpp; tests/spline/test_arith_concept.cpp).
 #pragma once
 #include "hybrid/form_impl.hpp"
 

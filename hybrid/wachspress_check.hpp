@@ -7,8 +7,8 @@
 
 namespace splinex {
 
-// CGAL::Barycentric_coordinates::wachspress_coordinates_2 over an exact kernel (Gmpq), in the
-// vertex order of the patch.
+/// CGAL::Barycentric_coordinates::wachspress_coordinates_2 over an exact kernel (Gmpq), in the
+/// vertex order of the patch.
 std::vector<Rational> cgal_wachspress(const std::vector<std::array<Rational, 2>>& polygon, const std::array<Rational, 2>& x);
 
 }  // namespace splinex

@@ -16,34 +16,34 @@ namespace splinex {
 
 using Json = nlohmann::json;
 
-// What reading a document may cost, checked while reading (before the cost is paid).
+/// What reading a document may cost, checked while reading (before the cost is paid).
 struct ReadLimits {
-  // Elements of any one array (points, knots, weights, loop vertices, a point's coordinates).
+  /// Elements of any one array (points, knots, weights, loop vertices, a point's coordinates).
   std::size_t max_elements = static_cast<std::size_t>(-1);
-  // Memory of the document tree, estimated per value as it is built (16 bytes per integer or
-  // literal, about 64 per other number or container, plus the text of long numbers).
-  // 0: a quarter of the memory budget (exact/memory.hpp).
+  /// Memory of the document tree, estimated per value as it is built (16 bytes per integer or
+  /// literal, about 64 per other number or container, plus the text of long numbers).
+  /// 0: a quarter of the memory budget (exact/memory.hpp).
   std::size_t max_tree_bytes = 0;
-  // From the spline limits: an array may hold max_control_points + 2 (max_degree + 1) elements.
+  /// From the spline limits: an array may hold max_control_points + 2 (max_degree + 1) elements.
   static ReadLimits from(const Limits& limits);
 };
 
-// Parses JSON text; an integer that fits 64 bits stays a JSON integer, every other number becomes
-// a JSON string holding its original text (so json_number reads both exactly). Malformed
-// JSON, duplicate keys, nesting deeper than 64 and documents beyond `limits` throw ParseError
-// (SizeLimitError for the limits) naming `source`.
+/// Parses JSON text; an integer that fits 64 bits stays a JSON integer, every other number becomes
+/// a JSON string holding its original text (so json_number reads both exactly). Malformed
+/// JSON, duplicate keys, nesting deeper than 64 and documents beyond `limits` throw ParseError
+/// (SizeLimitError for the limits) naming `source`.
 Json read_json(std::istream& in, const std::string& source, const ReadLimits& limits = {});
 Json read_json_file(const std::string& path, const ReadLimits& limits = {});  // "-" is standard input
 
-// A number field (string or number text) read exactly.
+/// A number field (string or number text) read exactly.
 Rational json_number(const Json& j, const std::string& field);
-// A non-negative integer field (e.g. a degree), range-checked.
+/// A non-negative integer field (e.g. a degree), range-checked.
 int json_int(const Json& j, const std::string& field, int lo, int hi);
 
-// The spline document read exactly and validated (validate() rules; unknown fields rejected).
+/// The spline document read exactly and validated (validate() rules; unknown fields rejected).
 BSpline<Rational> spline_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "");
 
-// Comma-separated numbers, each read exactly ("0.5,1/3,2e-1").
+/// Comma-separated numbers, each read exactly ("0.5,1/3,2e-1").
 std::vector<Rational> parse_number_list(const std::string& text, const std::string& field);
 
 template <class T>

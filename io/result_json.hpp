@@ -112,7 +112,7 @@ Json trimmed_composition_to_json(const TrimmedComposition<F>& C, double eps) {
     }
     Json polylines = Json::array();
     if constexpr (std::is_same_v<F, double>) {
-      // One polyline (as segments) per condition bound.
+      /// One polyline (as segments) per condition bound.
       const auto& piece = C.inner_pieces[p.inner_piece].spline;
       if (piece.dim() == 2 && !piece.is_rational())
         for (const auto& c : p.region)

@@ -5,10 +5,10 @@
 
 namespace splinex {
 
-// Reads {"type": "trimmed_domain", "domain": [[x0, x1], [y0, y1]], "loops": [[[x, y], ...], ...]}
-// exactly and validates it (validate_domain). A loop item {"controls": [[x, y], ...]} after vertex
-// i makes edge i a Bezier curve with these inner control points (untrim/curved.hpp: a polynomial
-// graph y = f(x), control x evenly spaced between the end points).
+/// Reads {"type": "trimmed_domain", "domain": [[x0, x1], [y0, y1]], "loops": [[[x, y], ...], ...]}
+/// exactly and validates it (validate_domain). A loop item {"controls": [[x, y], ...]} after vertex
+/// i makes edge i a Bezier curve with these inner control points (untrim/curved.hpp: a polynomial
+/// graph y = f(x), control x evenly spaced between the end points).
 TrimmedDomain trimmed_domain_from_json(const Json& doc);
 
 }  // namespace splinex

@@ -26,57 +26,57 @@ struct IdentityCheck {
   std::size_t points = 0;         // evaluations compared
   bool holds = true;
   std::string counterexample;     // exact point and both values, when it fails
-  // Nothing was compared (an empty or inverted box, no cells): no verdict either way.
+  /// Nothing was compared (an empty or inverted box, no cells): no verdict either way.
   bool decided() const { return !holds || points > 0; }
 };
 
-// Affine map of one direction: x -> scale * x + shift (scale != 0).
+/// Affine map of one direction: x -> scale * x + shift (scale != 0).
 struct AffineMap1 {
   Rational scale{1}, shift{0};
   Rational operator()(const Rational& x) const { return scale * x + shift; }
   Rational inverse(const Rational& y) const { return (y - shift) / scale; }
 };
 
-// Besides the interior points, compare at the cut values themselves: `lower` each cell's lower
-// end, `upper` the last cut. Not needed for the identity on the open cells, but where a side may
-// jump (C^-1 knots) its value at a breakpoint is a convention (FindSpan: the upper piece, closed
-// at the domain end) that the interior points cannot see.
+/// Besides the interior points, compare at the cut values themselves: `lower` each cell's lower
+/// end, `upper` the last cut. Not needed for the identity on the open cells, but where a side may
+/// jump (C^-1 knots) its value at a breakpoint is a convention (FindSpan: the upper piece, closed
+/// at the domain end) that the interior points cannot see.
 struct SampleEnds {
   bool lower = false;
   bool upper = false;
 };
 
-// The core: for cells given by sorted cut values per direction and a degree bound per direction,
-// calls `mismatch(x)` at (d+1)^k interior points of every cell (and the `ends`); `mismatch`
-// returns a non-empty description when the two sides differ at x. Stops at the first mismatch.
+/// The core: for cells given by sorted cut values per direction and a degree bound per direction,
+/// calls `mismatch(x)` at (d+1)^k interior points of every cell (and the `ends`); `mismatch`
+/// returns a non-empty description when the two sides differ at x. Stops at the first mismatch.
 IdentityCheck prove_by_samples(const std::vector<std::vector<Rational>>& cuts, const std::vector<int>& degree_bound,
                                const std::function<std::string(const std::vector<Rational>&)>& mismatch,
                                const std::string& identity, SampleEnds ends = {});
 
-// The shape of one side of an identity, read from its inputs: its breakpoints per direction (where
-// it may change polynomial piece) and the degrees of its numerator and denominator (0: polynomial).
+/// The shape of one side of an identity, read from its inputs: its breakpoints per direction (where
+/// it may change polynomial piece) and the degrees of its numerator and denominator (0: polynomial).
 struct PiecewiseShape {
   std::vector<std::vector<Rational>> breaks;
   std::vector<int> numerator, denominator;
 };
 PiecewiseShape shape_of(const BSpline<Rational>& S);
-// Cells and degree bound for A = B: the union of both sides' breakpoints clipped to `box`, and per
-// direction max(num_A + den_B, num_B + den_A) (cross-multiplied numerators). Empty or inverted
-// boxes give no cells.
+/// Cells and degree bound for A = B: the union of both sides' breakpoints clipped to `box`, and per
+/// direction max(num_A + den_B, num_B + den_A) (cross-multiplied numerators). Empty or inverted
+/// boxes give no cells.
 std::vector<std::vector<Rational>> union_cuts(const PiecewiseShape& A, const PiecewiseShape& B,
                                               const std::vector<std::pair<Rational, Rational>>& box);
 std::vector<int> identity_bound(const PiecewiseShape& A, const PiecewiseShape& B);
 
-// Proves A(x) = B(phi(x)) for x in `box` (one [lo, hi] per direction, inside A's domain, with
-// phi(box) inside B's domain). `phi` empty means identity. Also compares at every breakpoint
-// inside the box and at the box's upper end where that is A's domain end, unless phi reverses
-// a direction or `open_cells_only` (a reversal maps A's upper one-sided values to B's lower ones).
+/// Proves A(x) = B(phi(x)) for x in `box` (one [lo, hi] per direction, inside A's domain, with
+/// phi(box) inside B's domain). `phi` empty means identity. Also compares at every breakpoint
+/// inside the box and at the box's upper end where that is A's domain end, unless phi reverses
+/// a direction or `open_cells_only` (a reversal maps A's upper one-sided values to B's lower ones).
 IdentityCheck prove_equal_on_box(const BSpline<Rational>& A, const BSpline<Rational>& B,
                                  const std::vector<std::pair<Rational, Rational>>& box,
                                  const std::vector<AffineMap1>& phi, const std::string& identity,
                                  bool open_cells_only = false);
 
-// Proves A = B on A's whole domain, after checking that the domains are equal.
+/// Proves A = B on A's whole domain, after checking that the domains are equal.
 IdentityCheck prove_same_function(const BSpline<Rational>& A, const BSpline<Rational>& B, const std::string& identity);
 
 std::vector<std::pair<Rational, Rational>> domain_box(const BSpline<Rational>& S);

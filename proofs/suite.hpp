@@ -18,33 +18,33 @@ struct ProofReport {
   std::size_t points = 0;     // exact evaluations (or coefficients) compared, all cases
   std::size_t cells = 0;
   bool holds = true;           // no counterexample found
-  // The claim is only checked pointwise (no degree bound and cells cover it): the verdict is then
-  // "checked at N points", never "proved".
+  /// The claim is only checked pointwise (no degree bound and cells cover it): the verdict is then
+  /// "checked at N points", never "proved".
   bool sampled = false;
   std::string undecided;       // non-empty: nothing (or not everything) could be decided, and why
   std::string counterexample;  // first failing case, exact
   std::vector<std::string> structures;  // input structures the cases contained (structured generator)
-  // A claim from a paper that splinex shows false (e.g. hybrid-thm-3.2 as stated) is expected to
-  // be refuted: the run succeeds when every verdict is the expected one.
+  /// A claim from a paper that splinex shows false (e.g. hybrid-thm-3.2 as stated) is expected to
+  /// be refuted: the run succeeds when every verdict is the expected one.
   bool expect_proved = true;
 
   bool refuted() const { return !holds; }
   bool is_undecided() const { return holds && !undecided.empty(); }
-  // "proved", "checked at N points", "refuted" or "undecided".
+  /// "proved", "checked at N points", "refuted" or "undecided".
   std::string verdict_word() const {
     if (!holds) return "refuted";
     if (!undecided.empty()) return "undecided";
     return sampled ? "checked at " + std::to_string(points) + " points" : "proved";
   }
-  // The JSON verdict: proved, checked, refuted or undecided.
+  /// The JSON verdict: proved, checked, refuted or undecided.
   std::string verdict_key() const {
     if (!holds) return "refuted";
     if (!undecided.empty()) return "undecided";
     return sampled ? "checked" : "proved";
   }
   bool as_expected() const { return undecided.empty() ? holds == expect_proved : false; }
-  // One line: the verdict with the surprise marked ("refuted (expected)", "proved (UNEXPECTED:
-  // expected to be refuted)", "REFUTED", "undecided: why").
+  /// One line: the verdict with the surprise marked ("refuted (expected)", "proved (UNEXPECTED:
+  /// expected to be refuted)", "REFUTED", "undecided: why").
   std::string verdict() const {
     std::string v = verdict_word();
     if (is_undecided()) return v + ": " + undecided;
@@ -62,10 +62,10 @@ struct ProofEntry {
 const std::vector<ProofEntry>& proof_registry();
 
 namespace proof_detail {
-// Test seam: a bug planted into every operation result the kernel and composition proofs check
-// (insertion, refinement, elevation, extraction, split, reparametrization, reversal, clamping,
-// hodograph, Bezier and B-spline composition), so tests can show that each proof refutes a
-// wrong result. Never set outside tests.
+/// Test seam: a bug planted into every operation result the kernel and composition proofs check
+/// (insertion, refinement, elevation, extraction, split, reparametrization, reversal, clamping,
+/// hodograph, Bezier and B-spline composition), so tests can show that each proof refutes a
+/// wrong result. Never set outside tests.
 using PlantedBug = std::function<void(BSpline<Rational>&)>;
 class ScopedPlantedBug {
  public:
@@ -78,9 +78,9 @@ class ScopedPlantedBug {
   PlantedBug previous_;
 };
 BSpline<Rational> planted(BSpline<Rational> R);
-// The same for the hybrid-patch proofs (Theorems 3.1, 3.2 corrected, 4.1, 4.2): while alive, the
-// patch or form under test has the control points of side 0 moved ((k+1)(j+1)/7 for column j,
-// layer k; the form: by 1/7) (tests only).
+/// The same for the hybrid-patch proofs (Theorems 3.1, 3.2 corrected, 4.1, 4.2): while alive, the
+/// patch or form under test has the control points of side 0 moved ((k+1)(j+1)/7 for column j,
+/// layer k; the form: by 1/7) (tests only).
 class ScopedPlantedHybridBug {
  public:
   ScopedPlantedHybridBug();
@@ -93,7 +93,7 @@ class ScopedPlantedHybridBug {
 };
 }  // namespace proof_detail
 
-// Runs the named proofs (all when `names` is empty); unknown names throw UsageError.
+/// Runs the named proofs (all when `names` is empty); unknown names throw UsageError.
 std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases = 12);
 
 }  // namespace splinex

@@ -7,7 +7,7 @@
 
 A snapshot holds, one file per item, the exit status, standard output and standard error of
   - every command-line test registered with CTest (except the `long` label and the report),
-    run as the command after `--` of tests/cli_expect.sh, so the whole output is kept, not just
+    run as the command after `--` of tests/cli/cli_expect.sh, so the whole output is kept, not just
     the match the test asks for;
   - the help text of every subcommand, `prove --list` and all proofs (`prove --json`);
   - `splinex report` (every file it writes).

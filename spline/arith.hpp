@@ -15,7 +15,7 @@
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
 //
-// The concept is checked by the compiler: tests/test_arith_concept.cpp instantiates the kernel,
+// The concept is checked by the compiler: tests/spline/test_arith_concept.cpp instantiates the kernel,
 // composition, the hybrid patch and the untrimming sweep for a scalar that has these operations
 // and no others (>, <=, >=, != are deleted), so generic code that steps outside fails to build.
 #pragma once

@@ -5,7 +5,7 @@
 
 namespace splinex {
 
-// A2.2: the p+1 non-zero basis functions N_{s-p..s,p}(x) on span s.
+/// A2.2: the p+1 non-zero basis functions N_{s-p..s,p}(x) on span s.
 template <class T>
 std::vector<T> basis_funs(std::size_t s, const T& x, int p, const std::vector<T>& U) {
   std::vector<T> N(p + 1), left(p + 1), right(p + 1);
@@ -24,7 +24,7 @@ std::vector<T> basis_funs(std::size_t s, const T& x, int p, const std::vector<T>
   return N;
 }
 
-// A2.3: ders[k][j] = k-th derivative of N_{s-p+j,p} at x, k = 0..nd (rows past p are zero).
+/// A2.3: ders[k][j] = k-th derivative of N_{s-p+j,p} at x, k = 0..nd (rows past p are zero).
 template <class T>
 std::vector<std::vector<T>> ders_basis_funs(std::size_t s, const T& x, int p, int nd, const std::vector<T>& U) {
   std::vector<std::vector<T>> ndu(p + 1, std::vector<T>(p + 1)), a(2, std::vector<T>(p + 1));

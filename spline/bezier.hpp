@@ -7,34 +7,34 @@
 
 namespace splinex {
 
-// One polynomial piece: its parameter box [lo_d, hi_d] per direction and the Bezier spline
-// (end knots of multiplicity degree+1 on that box).
+/// One polynomial piece: its parameter box [lo_d, hi_d] per direction and the Bezier spline
+/// (end knots of multiplicity degree+1 on that box).
 template <class T>
 struct BezierPiece {
   std::vector<std::pair<T, T>> box;
   BSpline<T> spline;
 };
 
-// All polynomial pieces, ordered with direction 0 varying fastest. Every interior knot is raised
-// to multiplicity degree (A5.4) and the control net cut into Bezier nets.
-// Checked against limits.max_control_points before any work: the pieces' control points in
-// all, prod_d segments_d * (p_d + 1), which also bounds every intermediate Bezier form.
+/// All polynomial pieces, ordered with direction 0 varying fastest. Every interior knot is raised
+/// to multiplicity degree (A5.4) and the control net cut into Bezier nets.
+/// Checked against limits.max_control_points before any work: the pieces' control points in
+/// all, prod_d segments_d * (p_d + 1), which also bounds every intermediate Bezier form.
 template <class T>
 std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& limits = {});
-// That count (SizeLimitError "pieces" above the limit).
+/// That count (SizeLimitError "pieces" above the limit).
 template <class T>
 std::size_t bezier_pieces_size(const BSpline<T>& S, const Limits& limits = {});
 
-// The two halves of S at x in direction d (x strictly inside the domain).
+/// The two halves of S at x in direction d (x strictly inside the domain).
 template <class T>
 std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>& S, int d, const T& x, const Limits& limits = {});
 
-// S reparametrized affinely in direction d so that its domain becomes [lo, hi] (lo < hi):
-// R(phi(x)) = S(x) with phi mapping the old domain onto [lo, hi]. Control points are unchanged.
+/// S reparametrized affinely in direction d so that its domain becomes [lo, hi] (lo < hi):
+/// R(phi(x)) = S(x) with phi mapping the old domain onto [lo, hi]. Control points are unchanged.
 template <class T>
 BSpline<T> reparametrize(const BSpline<T>& S, int d, const T& lo, const T& hi);
 
-// S with direction d reversed on the same domain [a, b]: R(a + b - x) = S(x).
+/// S with direction d reversed on the same domain [a, b]: R(a + b - x) = S(x).
 template <class T>
 BSpline<T> reverse(const BSpline<T>& S, int d);
 

@@ -7,7 +7,7 @@
 namespace splinex {
 namespace detail {
 
-// Raises every interior breakpoint of direction d to multiplicity p (clamped first).
+/// Raises every interior breakpoint of direction d to multiplicity p (clamped first).
 template <class T>
 BSpline<T> to_bezier_form(const BSpline<T>& S, int d, const Limits& limits) {
   BSpline<T> C = clamp(S, d, limits);
@@ -40,7 +40,7 @@ std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& li
   // would otherwise convert direction 0 in full before direction 1 reaches the limit). It bounds
   // the Bezier form of every direction too.
   bezier_pieces_size(S, limits);
-  // Fully Bezier form in every direction first, then cut piece by piece.
+  /// Fully Bezier form in every direction first, then cut piece by piece.
   BSpline<T> B = S;
   for (int d = 0; d < S.dim(); ++d) B = detail::to_bezier_form(B, d, limits);
   std::vector<BezierPiece<T>> pieces{BezierPiece<T>{{}, B}};
@@ -48,10 +48,10 @@ std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& li
     const int p = B.degrees[d];
     const std::vector<T> bp = breakpoints(B.knots[d], p, B.count(d));
     std::vector<BezierPiece<T>> next;
-    // Direction-0-fastest ordering: later directions form the outer loop. The piece on
-    // [bp[seg], bp[seg+1]) is carried by the p+1 control points before the end of its knot span s
-    // (U[s] <= bp[seg] < U[s+1]): points s-p..s. Counting from seg*p would assume every interior
-    // breakpoint has multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
+    /// Direction-0-fastest ordering: later directions form the outer loop. The piece on
+    /// [bp[seg], bp[seg+1]) is carried by the p+1 control points before the end of its knot span s
+    /// (U[s] <= bp[seg] < U[s+1]): points s-p..s. Counting from seg*p would assume every interior
+    /// breakpoint has multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
     const std::size_t n = B.count(d);
     for (std::size_t seg = 0; seg + 1 < bp.size(); ++seg) {
       const std::size_t first = find_span(B.knots[d], p, n, bp[seg]) - static_cast<std::size_t>(p);
@@ -111,7 +111,7 @@ BSpline<T> reverse(const BSpline<T>& S, int d) {
     const T& u = U[U.size() - 1 - i];
     R.knots[d][i] = (u == a) ? b : (u == b) ? a : c - u;
   }
-  // Plain copies: a lambda may not capture structured bindings in C++17 (clang refuses it).
+  /// Plain copies: a lambda may not capture structured bindings in C++17 (clang refuses it).
   const auto layout = fibre_layout(S, d);
   const std::size_t before = layout.before, n = layout.n, after = layout.after;
   auto flip = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {

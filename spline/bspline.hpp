@@ -39,8 +39,8 @@ struct BSpline {
   T domain_hi(int d) const { return knots[d][count(d)]; }
 };
 
-// Checks every structural rule and throws ValidationError/DomainError naming the field.
-// Weights must be positive (zero or negative weights make the homogeneous form degenerate).
+/// Checks every structural rule and throws ValidationError/DomainError naming the field.
+/// Weights must be positive (zero or negative weights make the homogeneous form degenerate).
 template <class T>
 void validate(const BSpline<T>& S, const Limits& limits = {}) {
   if (S.degrees.empty()) throw ValidationError("degrees", "is empty", "give one degree per parametric direction");
@@ -82,8 +82,8 @@ void validate(const BSpline<T>& S, const Limits& limits = {}) {
   }
 }
 
-// Homogeneous coordinates: q+1 values (w*P, w) per control point for rational splines,
-// the q Cartesian values otherwise.
+/// Homogeneous coordinates: q+1 values (w*P, w) per control point for rational splines,
+/// the q Cartesian values otherwise.
 template <class T>
 std::vector<T> homogeneous_points(const BSpline<T>& S) {
   if (!S.is_rational()) return S.points;
@@ -112,8 +112,8 @@ void set_from_homogeneous(BSpline<T>& S, std::vector<T>&& H, bool rational) {
   }
 }
 
-// The storage seen from direction d: `before` control points of lower directions per step in d
-// (contiguous), n = count(d) steps, and `after` such fibres of higher directions.
+/// The storage seen from direction d: `before` control points of lower directions per step in d
+/// (contiguous), n = count(d) steps, and `after` such fibres of higher directions.
 struct FibreLayout {
   std::size_t before = 1, n = 0, after = 1;
 };
@@ -126,8 +126,8 @@ FibreLayout fibre_layout(const BSpline<T>& S, int d) {
   return f;
 }
 
-// The sub-spline of control points [first, first + n_new) in direction d, with the given knot
-// vector for that direction (the caller makes knots and points consistent).
+/// The sub-spline of control points [first, first + n_new) in direction d, with the given knot
+/// vector for that direction (the caller makes knots and points consistent).
 template <class T>
 BSpline<T> slice_direction(const BSpline<T>& S, int d, std::size_t first, std::size_t n_new, std::vector<T> knots) {
   const FibreLayout f = fibre_layout(S, d);
@@ -148,8 +148,8 @@ BSpline<T> slice_direction(const BSpline<T>& S, int d, std::size_t first, std::s
   return R;
 }
 
-// A curve operation on a block of n "points" of m coordinates each (contiguous, point-major),
-// with degree p and knot vector U. It returns the new degree, knots and points.
+/// A curve operation on a block of n "points" of m coordinates each (contiguous, point-major),
+/// with degree p and knot vector U. It returns the new degree, knots and points.
 template <class T>
 struct CurveBlock {
   int p = 0;
@@ -157,18 +157,18 @@ struct CurveBlock {
   std::vector<T> P;  // n' * m
 };
 
-// Applies a univariate operation along direction d of a tensor-product spline: every fibre in
-// direction d is one curve whose "point" gathers the q(+1) homogeneous coordinates of all control
-// points before d. With the storage order above such a fibre is one contiguous block, so no
-// copying into temporaries is needed. `op(p, U, P, n, m)` depends on the points only linearly, so
-// every fibre gets the same new degree and knot vector; the first fibre's are kept.
+/// Applies a univariate operation along direction d of a tensor-product spline: every fibre in
+/// direction d is one curve whose "point" gathers the q(+1) homogeneous coordinates of all control
+/// points before d. With the storage order above such a fibre is one contiguous block, so no
+/// copying into temporaries is needed. `op(p, U, P, n, m)` depends on the points only linearly, so
+/// every fibre gets the same new degree and knot vector; the first fibre's are kept.
 template <class T, class Op>
 BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
   const bool rational = S.is_rational();
   const std::size_t qq = S.q + (rational ? 1 : 0);
   const auto [before, n, after] = fibre_layout(S, d);
   const std::size_t m = qq * before;
-  // Polynomial splines are worked on in place; only rational ones need the homogeneous copy.
+  /// Polynomial splines are worked on in place; only rational ones need the homogeneous copy.
   std::vector<T> H;
   if (rational) H = homogeneous_points(S);
   const T* src = rational ? H.data() : S.points.data();
@@ -194,7 +194,7 @@ BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
   return R;
 }
 
-// Converts every scalar with `conv` (e.g. exact -> double by correct rounding).
+/// Converts every scalar with `conv` (e.g. exact -> double by correct rounding).
 template <class U, class T, class Conv>
 BSpline<U> convert(const BSpline<T>& S, Conv&& conv) {
   BSpline<U> R;

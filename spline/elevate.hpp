@@ -19,7 +19,7 @@ template <class T>
 BSpline<T> elevate_degree(const BSpline<T>& S, int d, int t, ElevationMethod method = ElevationMethod::bezier_pieces,
                           const Limits& limits = {});
 
-// The control-point count after elevating direction d by t (for size checks before the work).
+/// The control-point count after elevating direction d by t (for size checks before the work).
 template <class T>
 std::size_t elevated_count(const BSpline<T>& S, int d, int t);
 

@@ -9,7 +9,7 @@
 namespace splinex {
 namespace detail {
 
-// NURBS Book A5.9 DegreeElevateCurve on a clamped curve block (n points of m coordinates).
+/// NURBS Book A5.9 DegreeElevateCurve on a clamped curve block (n points of m coordinates).
 template <class T>
 CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, std::size_t count, std::size_t mm,
                                    int t) {
@@ -27,7 +27,7 @@ CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, 
     const int mpi = std::min(p, i);
     for (int j = std::max(0, i - t); j <= mpi; ++j) bezalfs[i][j] = bezalfs[ph - i][p - j];
   }
-  // Number of distinct interior knots s gives the result size n + 1 + t*(s+1).
+  /// Number of distinct interior knots s gives the result size n + 1 + t*(s+1).
   const int s_int = static_cast<int>(breakpoints(U, p, count).size()) - 2;
   const int nh_max = n + t * (s_int + 1);
   CurveBlock<T> out;
@@ -40,7 +40,7 @@ CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, 
   auto pt = [mm](std::vector<T>& v, int i) { return v.data() + static_cast<std::size_t>(i) * mm; };
   auto qt = [mm, Qw](int i) { return Qw + static_cast<std::size_t>(i) * mm; };
   auto assign = [mm](T* dst, const T* src) { std::copy(src, src + mm, dst); };
-  // dst = a*dst + (1-a)*other  ==  other + a*(dst - other)
+  /// dst = a*dst + (1-a)*other  ==  other + a*(dst - other)
   auto blend = [mm](T* dst, const T& a, const T* other) {
     for (std::size_t c = 0; c < mm; ++c) dst[c] = other[c] + a * (dst[c] - other[c]);
   };
@@ -125,17 +125,17 @@ CurveBlock<T> degree_elevate_curve(int p, const std::vector<T>& U, const T* Pw, 
   return out;
 }
 
-// Elevation of a clamped block by t with A5.9, extended to the whole legal input: A5.9 (like
-// the book's text) assumes degree p >= 1 and interior multiplicities <= p. A knot of
-// multiplicity p+1 separates two independent curves (the spline may jump there), and a degree-0
-// curve has such a knot at every breakpoint. So the block is cut at those knots, each part is
-// elevated on its own (a constant piece of degree 0 becomes t+1 equal points), and the parts are
-// joined again, the shared knot now of multiplicity p+t+1 (the inverse of split_at).
+/// Elevation of a clamped block by t with A5.9, extended to the whole legal input: A5.9 (like
+/// the book's text) assumes degree p >= 1 and interior multiplicities <= p. A knot of
+/// multiplicity p+1 separates two independent curves (the spline may jump there), and a degree-0
+/// curve has such a knot at every breakpoint. So the block is cut at those knots, each part is
+/// elevated on its own (a constant piece of degree 0 becomes t+1 equal points), and the parts are
+/// joined again, the shared knot now of multiplicity p+t+1 (the inverse of split_at).
 template <class T>
 CurveBlock<T> degree_elevate_curve_any(int p, const std::vector<T>& U, const T* Pw, std::size_t count, std::size_t mm,
                                        int t) {
   const std::size_t run = static_cast<std::size_t>(p) + 1;
-  // Start indices (into U, = first control point of the part) of each part.
+  /// Start indices (into U, = first control point of the part) of each part.
   std::vector<std::size_t> starts{0};
   for (std::size_t i = run; i < count;) {
     std::size_t j = i;
@@ -165,8 +165,8 @@ CurveBlock<T> degree_elevate_curve_any(int p, const std::vector<T>& U, const T* 
   return out;
 }
 
-// The polar form (blossom) of the polynomial piece of a degree-p block on span s, evaluated at
-// x[0..p-1]: de Boor's triangle with argument x[r-1] at level r.
+/// The polar form (blossom) of the polynomial piece of a degree-p block on span s, evaluated at
+/// x[0..p-1]: de Boor's triangle with argument x[r-1] at level r.
 template <class T>
 void blossom(int p, const std::vector<T>& U, const T* P, std::size_t mm, std::size_t s, const T* x, std::vector<T>& work,
              T* out) {
@@ -182,7 +182,7 @@ void blossom(int p, const std::vector<T>& U, const T* P, std::size_t mm, std::si
   std::copy(work.begin() + p * mm, work.begin() + (p + 1) * mm, out);
 }
 
-// Elevation by one via the blossom on a clamped block.
+/// Elevation by one via the blossom on a clamped block.
 template <class T>
 CurveBlock<T> elevate_by_one_blossom(int p, const std::vector<T>& U, const T* P, std::size_t count, std::size_t mm) {
   CurveBlock<T> out;
@@ -198,7 +198,7 @@ CurveBlock<T> elevate_by_one_blossom(int p, const std::vector<T>& U, const T* P,
   std::vector<T> args(p), work, val(mm);
   const T inv = T(1) / T(p + 1);
   for (std::size_t j = 0; j < nbar; ++j) {
-    // A non-empty elevated interval [V_l, V_{l+1}) with j <= l <= j+p+1 inside the domain.
+    /// A non-empty elevated interval [V_l, V_{l+1}) with j <= l <= j+p+1 inside the domain.
     std::size_t l = j + p + 1;
     while (l > std::max<std::size_t>(j, p + 1) && !(V[l] < V[l + 1])) --l;
     const std::size_t s = find_span(U, p, count, V[l]);

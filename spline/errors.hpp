@@ -17,18 +17,18 @@ class Error : public std::runtime_error {
   std::string field_;
 };
 
-// Text that is not a document or not a number: malformed JSON, "abc" as a knot, NaN/Inf.
+/// Text that is not a document or not a number: malformed JSON, "abc" as a knot, NaN/Inf.
 class ParseError : public Error { using Error::Error; };
-// A well-formed document that violates a rule: unknown field, non-monotone knots, counts.
+/// A well-formed document that violates a rule: unknown field, non-monotone knots, counts.
 class ValidationError : public Error { using Error::Error; };
-// A parameter outside the spline's domain, or an empty domain.
+/// A parameter outside the spline's domain, or an empty domain.
 class DomainError : public Error { using Error::Error; };
-// A result that would exceed a configured size limit (control points, degree).
+/// A result that would exceed a configured size limit (control points, degree).
 class SizeLimitError : public Error { using Error::Error; };
-// An unknown arithmetic, operation or option value.
+/// An unknown arithmetic, operation or option value.
 class UsageError : public Error { using Error::Error; };
-// A value a floating arithmetic cannot hold (overflow, a weight underflowing to 0), or a rounding
-// that would change the input's structure (distinct knots becoming equal).
+/// A value a floating arithmetic cannot hold (overflow, a weight underflowing to 0), or a rounding
+/// that would change the input's structure (distinct knots becoming equal).
 class RangeError : public Error { using Error::Error; };
 
 }  // namespace splinex

@@ -21,8 +21,8 @@ void check_point(const BSpline<T>& S, const std::vector<T>& x) {
                         "give a parameter in [U[p], U[n]] of that direction");
 }
 
-// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H_i[c], with
-// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched.
+/// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H_i[c], with
+/// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched.
 template <class T>
 void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const std::vector<const std::vector<T>*>& B,
                 std::vector<T>& out) {
@@ -96,7 +96,7 @@ std::vector<T> evaluate_de_boor(const BSpline<T>& S, const std::vector<T>& x) {
     st *= S.count(d);
     active *= S.degrees[d] + 1;
   }
-  // Gather the active homogeneous net, direction 0 fastest.
+  /// Gather the active homogeneous net, direction 0 fastest.
   std::vector<T> net;
   net.reserve(active * qq);
   std::vector<int> i(k, 0);
@@ -109,8 +109,8 @@ std::vector<T> evaluate_de_boor(const BSpline<T>& S, const std::vector<T>& x) {
     while (d < k && ++i[d] > S.degrees[d]) { i[d] = 0; ++d; }
     if (d == k) break;
   }
-  // Reduce direction 0 (fastest) first: each run of p_0+1 consecutive points collapses to one,
-  // which leaves direction 1 fastest, and so on.
+  /// Reduce direction 0 (fastest) first: each run of p_0+1 consecutive points collapses to one,
+  /// which leaves direction 1 fastest, and so on.
   const std::size_t width = qq;
   for (int d = 0; d < k; ++d) {
     const int p = S.degrees[d];
@@ -149,7 +149,7 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
   if (!S.is_rational())
     for (int d = 0; d < k; ++d)
       if (orders[d] > S.degrees[d]) return std::vector<T>(S.q, T(0));
-  // The quotient rule needs every lower mixed partial: prod (k_d + 1) of them.
+  /// The quotient rule needs every lower mixed partial: prod (k_d + 1) of them.
   std::size_t needed = 1;
   for (int o : orders) {
     needed *= static_cast<std::size_t>(o) + 1;
@@ -164,7 +164,7 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
     D[d] = ders_basis_funs(span[d], x[d], S.degrees[d], std::min(orders[d], S.degrees[d]), S.knots[d]);
   }
   const std::size_t qq = S.q + (S.is_rational() ? 1 : 0);
-  // Homogeneous partials A^(beta) for every multi-index beta <= orders (beta_d past the degree: 0).
+  /// Homogeneous partials A^(beta) for every multi-index beta <= orders (beta_d past the degree: 0).
   std::vector<std::size_t> bstride(k);
   std::size_t nb = 1;
   for (int d = 0; d < k; ++d) { bstride[d] = nb; nb *= orders[d] + 1; }
@@ -182,8 +182,8 @@ std::vector<T> derivative(const BSpline<T>& S, const std::vector<T>& x, const st
   }
   const std::size_t top = nb - 1;
   if (!S.is_rational()) return A[top];
-  // Quotient rule: C^(a) = (A^(a) - sum_{0 != b <= a} binom(a,b) w^(b) C^(a-b)) / w, in order of
-  // increasing multi-index so that every C^(a-b) is known.
+  /// Quotient rule: C^(a) = (A^(a) - sum_{0 != b <= a} binom(a,b) w^(b) C^(a-b)) / w, in order of
+  /// increasing multi-index so that every C^(a-b) is known.
   const int q = S.q;
   std::vector<std::vector<T>> C(nb, std::vector<T>(q));
   for (std::size_t a = 0; a < nb; ++a) {

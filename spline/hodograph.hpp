@@ -13,9 +13,9 @@ BSpline<T> hodograph(const BSpline<T>& S, int d) {
     throw UsageError("spline", "the hodograph of a rational spline is not a B-spline", "use derivative()");
   if (S.degrees[d] == 0) throw UsageError("degrees", "a degree-0 spline has no hodograph here", "elevate first");
   return apply_along(S, d, [&](int p, const std::vector<T>& U, const T* P, std::size_t n, std::size_t m) {
-    // Q_i on knots U_1..U_{m-1}. At a knot of multiplicity p+1 (the spline may jump there)
-    // U_{i+1} = ... = U_{i+p+1}: that degree-(p-1) basis function is zero, so Q_i and one copy of
-    // the knot are dropped; the knot keeps multiplicity p = (p-1)+1, and the derivative may jump.
+    /// Q_i on knots U_1..U_{m-1}. At a knot of multiplicity p+1 (the spline may jump there)
+    /// U_{i+1} = ... = U_{i+p+1}: that degree-(p-1) basis function is zero, so Q_i and one copy of
+    /// the knot are dropped; the knot keeps multiplicity p = (p-1)+1, and the derivative may jump.
     CurveBlock<T> out;
     out.p = p - 1;
     out.U.assign(U.begin() + 1, U.end() - 1);

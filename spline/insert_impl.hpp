@@ -15,9 +15,9 @@ void check_direction(const BSpline<T>& S, int d) {
                      "give a direction in [0, " + std::to_string(S.dim() - 1) + "]");
 }
 
-// A5.1 CurveKnotIns on a block of n points of m coordinates: insert x r times into span k where
-// x already has multiplicity s. Each new point is P_{i-1} + alpha (P_i - P_{i-1}): one
-// multiplication per coordinate, alpha computed once per point.
+/// A5.1 CurveKnotIns on a block of n points of m coordinates: insert x r times into span k where
+/// x already has multiplicity s. Each new point is P_{i-1} + alpha (P_i - P_{i-1}): one
+/// multiplication per coordinate, alpha computed once per point.
 template <class T>
 CurveBlock<T> curve_knot_ins(int p, const std::vector<T>& UP, const T* P, std::size_t n, std::size_t m, const T& x,
                              std::size_t k, int s, int r) {
@@ -55,7 +55,7 @@ CurveBlock<T> curve_knot_ins(int p, const std::vector<T>& UP, const T* P, std::s
   return out;
 }
 
-// A5.4 RefineKnotVectCurve: insert the sorted knots X (r+1 of them) in one pass.
+/// A5.4 RefineKnotVectCurve: insert the sorted knots X (r+1 of them) in one pass.
 template <class T>
 CurveBlock<T> refine_knot_vect_curve(int p, const std::vector<T>& U, const T* P, std::size_t count, std::size_t mm,
                                      const std::vector<T>& X) {
@@ -117,7 +117,7 @@ void check_insertable(const BSpline<T>& S, int d, const T& x, std::size_t extra,
                           "insert it at most " + std::to_string(p + 1 - std::min<std::size_t>(mult, p + 1)) + " more times");
 }
 
-// Every run of equal knots in the sorted list X, checked as one insertion of that many copies.
+/// Every run of equal knots in the sorted list X, checked as one insertion of that many copies.
 template <class T>
 void check_insertable_sorted(const BSpline<T>& S, int d, const std::vector<T>& X) {
   for (std::size_t i = 0; i < X.size(); ++i) {
@@ -137,15 +137,15 @@ BSpline<T> insert_knot(const BSpline<T>& S, int d, const T& x, int times, const 
   if (times == 0) return S;
   detail::check_insertable(S, d, x, times, "knots");
   limits.check_count(S.size() / S.count(d) * (S.count(d) + times), "knots");
-  // A5.1 wants the span k with U[k] <= x < U[k+1]: the last knot <= x. (For x on the right end
-  // of an unclamped domain this lies past FindSpan's last span.)
+  /// A5.1 wants the span k with U[k] <= x < U[k+1]: the last knot <= x. (For x on the right end
+  /// of an unclamped domain this lies past FindSpan's last span.)
   const auto& U0 = S.knots[d];
   const std::size_t k =
       static_cast<std::size_t>(std::upper_bound(U0.begin(), U0.end(), x, [](const T& a, const T& b) { return a < b; }) -
                                U0.begin()) - 1;
   const int s = static_cast<int>(multiplicity(U0, x));
   const int p = S.degrees[d];
-  // A5.1 up to multiplicity p, then (if asked) the last step to p+1 separately.
+  /// A5.1 up to multiplicity p, then (if asked) the last step to p+1 separately.
   const int r1 = std::min(times, p - s);
   BSpline<T> R = S;
   if (r1 > 0)
@@ -175,7 +175,7 @@ BSpline<T> insert_knots_boehm(const BSpline<T>& S, int d, const std::vector<T>& 
     std::vector<T>& P = out.P;
     std::vector<T> R;
     for (const T& x : X) {
-      // A5.1 with r = 1 (curve_knot_ins): span k is the last knot <= x, s its multiplicity.
+      /// A5.1 with r = 1 (curve_knot_ins): span k is the last knot <= x, s its multiplicity.
       const std::size_t k = static_cast<std::size_t>(
                                 std::upper_bound(U.begin(), U.end(), x, [](const T& a, const T& b) { return a < b; }) -
                                 U.begin()) - 1;
@@ -220,10 +220,10 @@ BSpline<T> clamp(const BSpline<T>& S, int d, const Limits& limits) {
   const int p = S.degrees[d];
   if (is_clamped(S.knots[d], p, S.count(d))) return S;
   const T lo = S.domain_lo(d), hi = S.domain_hi(d);
-  // Raise the multiplicity of both domain ends to p+1 by Boehm insertion, then cut.
+  /// Raise the multiplicity of both domain ends to p+1 by Boehm insertion, then cut.
   BSpline<T> R = S;
   for (const T& e : {lo, hi}) {
-    // Multiplicity counted inside the domain end's own run (knots outside the domain may repeat it).
+    /// Multiplicity counted inside the domain end's own run (knots outside the domain may repeat it).
     std::size_t mult = multiplicity(R.knots[d], e);
     if (mult < static_cast<std::size_t>(p) + 1) R = insert_knot(R, d, e, static_cast<int>(p + 1 - mult), limits);
   }

@@ -21,9 +21,9 @@ namespace splinex {
 template <class T>
 std::vector<T> integrate(const BSpline<T>& f);
 
-// A - B as one spline: both polynomial, same dimension, q and domain. Each direction is elevated
-// to the larger degree and refined to the union of the knot vectors (largest multiplicity of each
-// value), so the control points subtract. Exact in exact arithmetic. Clamps both first.
+/// A - B as one spline: both polynomial, same dimension, q and domain. Each direction is elevated
+/// to the larger degree and refined to the union of the knot vectors (largest multiplicity of each
+/// value), so the control points subtract. Exact in exact arithmetic. Clamps both first.
 template <class T>
 BSpline<T> difference(const BSpline<T>& A, const BSpline<T>& B, const Limits& limits = {});
 

@@ -50,7 +50,7 @@ BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& 
                         "reparametrize one of them first");
     if (A.degrees[d] < B.degrees[d]) A = elevate_degree(A, d, B.degrees[d] - A.degrees[d], ElevationMethod::bezier_pieces, limits);
     if (B.degrees[d] < A.degrees[d]) B = elevate_degree(B, d, A.degrees[d] - B.degrees[d], ElevationMethod::bezier_pieces, limits);
-    // Insert into each what the other has more of.
+    /// Insert into each what the other has more of.
     auto missing = [](const std::vector<T>& from, const std::vector<T>& into) {
       std::vector<T> out;
       for (std::size_t i = 0; i < from.size();) {
@@ -72,9 +72,9 @@ BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& 
 
 namespace detail {
 
-// Curves: where the control polygon first crosses zero, as a fraction of the cell in (0, 1),
-// rounded to 20 bits (comparisons only, so exact denominators stay small). Near a simple root
-// this converges fast (Bezier-clipping-like), where the midpoint would gain one bit per level.
+/// Curves: where the control polygon first crosses zero, as a fraction of the cell in (0, 1),
+/// rounded to 20 bits (comparisons only, so exact denominators stay small). Near a simple root
+/// this converges fast (Bezier-clipping-like), where the midpoint would gain one bit per level.
 template <class T>
 T polygon_crossing(const std::vector<T>& b) {
   const int p = static_cast<int>(b.size()) - 1;
@@ -146,8 +146,8 @@ AbsIntegral<T> integrate_abs(const BSpline<T>& f, int max_depth, const T& rel_wi
     throw ValidationError("max_depth", "must be in 0..60", "use a subdivision depth like 10");
   if (rel_width < T(0)) throw ValidationError("rel_width", "is negative", "use 0 (depth only) or a small positive value");
   const auto pieces = extract_bezier(f);
-  // Without a relative target the budget is -1: no cell stops early. Else a first pass at depth 0
-  // gives the lower bound the budget is relative to.
+  /// Without a relative target the budget is -1: no cell stops early. Else a first pass at depth 0
+  /// gives the lower bound the budget is relative to.
   T budget_per_volume(-1);
   if (T(0) < rel_width) {
     AbsIntegral<T> first;

@@ -10,8 +10,8 @@
 
 namespace splinex {
 
-// Validates a knot vector of degree p for n control points. Rules: p >= 0, n >= p+1,
-// size == n+p+1, non-decreasing, every multiplicity <= p+1, non-empty domain [U[p], U[n]].
+/// Validates a knot vector of degree p for n control points. Rules: p >= 0, n >= p+1,
+/// size == n+p+1, non-decreasing, every multiplicity <= p+1, non-empty domain [U[p], U[n]].
 template <class T>
 void validate_knots(const std::vector<T>& U, int p, std::size_t n, const std::string& field) {
   if (p < 0) throw ValidationError(field, "degree " + std::to_string(p) + " is negative", "use a degree >= 0");
@@ -42,8 +42,8 @@ void validate_knots(const std::vector<T>& U, int p, std::size_t n, const std::st
     throw DomainError(field, "the domain [U[p], U[n]] is empty", "make U[p] < U[n]");
 }
 
-// A2.1 FindSpan: the index s with U[s] <= x < U[s+1], p <= s <= n-1; x == U[n] gives the last
-// non-empty span. Assumes x inside [U[p], U[n]] (callers check the domain first).
+/// A2.1 FindSpan: the index s with U[s] <= x < U[s+1], p <= s <= n-1; x == U[n] gives the last
+/// non-empty span. Assumes x inside [U[p], U[n]] (callers check the domain first).
 template <class T>
 std::size_t find_span(const std::vector<T>& U, int p, std::size_t n, const T& x) {
   if (!(x < U[n])) {  // right end: the last span with U[s] < U[s+1]
@@ -59,7 +59,7 @@ std::size_t find_span(const std::vector<T>& U, int p, std::size_t n, const T& x)
   return lo;
 }
 
-// How often x occurs in the (sorted) knot vector U: O(log n).
+/// How often x occurs in the (sorted) knot vector U: O(log n).
 template <class T>
 std::size_t multiplicity(const std::vector<T>& U, const T& x) {
   const auto less = [](const T& a, const T& b) { return a < b; };
@@ -67,14 +67,14 @@ std::size_t multiplicity(const std::vector<T>& U, const T& x) {
   return static_cast<std::size_t>(r.second - r.first);
 }
 
-// Whether x is a knot of multiplicity p+1: the spline may jump there (C^-1; at degree 0 every
-// breakpoint is one).
+/// Whether x is a knot of multiplicity p+1: the spline may jump there (C^-1; at degree 0 every
+/// breakpoint is one).
 template <class T>
 bool is_full_multiplicity(const std::vector<T>& U, int p, const T& x) {
   return multiplicity(U, x) == static_cast<std::size_t>(p) + 1;
 }
 
-// The distinct knot values inside the domain [U[p], U[n]], ends included: the breakpoints.
+/// The distinct knot values inside the domain [U[p], U[n]], ends included: the breakpoints.
 template <class T>
 std::vector<T> breakpoints(const std::vector<T>& U, int p, std::size_t n) {
   std::vector<T> b;

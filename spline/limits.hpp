@@ -28,7 +28,7 @@ struct Limits {
   }
 };
 
-// Multiply counts, throwing SizeLimitError instead of overflowing.
+/// Multiply counts, throwing SizeLimitError instead of overflowing.
 inline std::size_t checked_product(std::size_t a, std::size_t b, const Limits& limits,
                                    const std::string& what) {
   std::size_t r = 0;

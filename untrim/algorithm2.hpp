@@ -55,7 +55,7 @@ struct TensorComposition {
   std::size_t straight_boundaries = 0;  // exact straight trimming segments
   T gap_area = T(0);      // parameter area no region's polyline sides claim (0 when exact)
   T overlap_area = T(0);  // parameter area claimed by two regions (0 when exact)
-  // R of tile k at (x, l), divided by the weight for homogeneous patches.
+  /// R of tile k at (x, l), divided by the weight for homogeneous patches.
   std::vector<T> evaluate_tile(std::size_t k, const std::vector<T>& xl) const;
 };
 

@@ -34,23 +34,23 @@
 
 namespace splinex {
 
-// Typed errors for curved loops: a curved edge that is not a graph y = f(x), a degree above
-// 100, an edge leaving the box, loops crossing/touching (exact root isolation), zero area.
+/// Typed errors for curved loops: a curved edge that is not a graph y = f(x), a degree above
+/// 100, an edge leaving the box, loops crossing/touching (exact root isolation), zero area.
 void validate_curved_domain(const TrimmedDomain& D);
 
-// Signed area oint x dy of one loop (positive counter-clockwise), exact.
+/// Signed area oint x dy of one loop (positive counter-clockwise), exact.
 Rational loop_signed_area(const TrimmedDomain& D, std::size_t l);
-// p strictly inside loop l (p must not lie on it): parity of the loop's graph arcs above p.
+/// p strictly inside loop l (p must not lie on it): parity of the loop's graph arcs above p.
 bool inside_loop(const TrimmedDomain& D, std::size_t l, const Vec2<Rational>& p);
 // ValidationError for the loop edges (loop l, loop m, edge i, edge j) that meet: "is
 // self-intersecting" when l == m, else "meets loops[l]" (first_meeting_edges finds them).
 [[noreturn]] void throw_meeting_edges(const std::array<std::size_t, 4>& pair);
 
-// The exact tiles of a validated curved (or straight) domain; labels 0. approx_bits = 0: an
-// irrational crossing with a horizontal line is a DomainError. approx_bits > 0 (the float
-// arithmetics): the tiles end at a rational within 2^-approx_bits of the crossing instead, so the
-// tiles there cross the knot line by up to that much (a sliver of area O(4^-approx_bits); the
-// composition evaluates the knot cell's polynomial beyond its cell, Step 7 of Algorithm 2).
+/// The exact tiles of a validated curved (or straight) domain; labels 0. approx_bits = 0: an
+/// irrational crossing with a horizontal line is a DomainError. approx_bits > 0 (the float
+/// arithmetics): the tiles end at a rational within 2^-approx_bits of the crossing instead, so the
+/// tiles there cross the knot line by up to that much (a sliver of area O(4^-approx_bits); the
+/// composition evaluates the knot cell's polynomial beyond its cell, Step 7 of Algorithm 2).
 std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::array<std::vector<Rational>, 2>& knot_lines = {},
                                           int approx_bits = 0);
 

@@ -12,7 +12,7 @@
 
 namespace splinex {
 
-// f(i, j) for every A[i], B[j] whose closed ranges [lo, hi] intersect (lo <= hi each).
+/// f(i, j) for every A[i], B[j] whose closed ranges [lo, hi] intersect (lo <= hi each).
 template <class R, class F>
 void for_overlapping_pairs(const std::vector<std::pair<R, R>>& A, const std::vector<std::pair<R, R>>& B, F&& f) {
   std::vector<std::size_t> ia(A.size()), ib(B.size());
@@ -21,7 +21,7 @@ void for_overlapping_pairs(const std::vector<std::pair<R, R>>& A, const std::vec
   std::sort(ia.begin(), ia.end(), [&](std::size_t x, std::size_t y) { return A[x].first < A[y].first; });
   std::sort(ib.begin(), ib.end(), [&](std::size_t x, std::size_t y) { return B[x].first < B[y].first; });
   std::vector<std::size_t> active_a, active_b;
-  // Drops the intervals ending before x; the rest all contain x (their left ends are <= x).
+  /// Drops the intervals ending before x; the rest all contain x (their left ends are <= x).
   const auto prune = [](std::vector<std::size_t>& act, const std::vector<std::pair<R, R>>& V, const R& x) {
     act.erase(std::remove_if(act.begin(), act.end(), [&](std::size_t k) { return V[k].second < x; }), act.end());
   };
@@ -42,7 +42,7 @@ void for_overlapping_pairs(const std::vector<std::pair<R, R>>& A, const std::vec
   }
 }
 
-// f(i, j), i != j, once per unordered pair of V whose closed ranges intersect.
+/// f(i, j), i != j, once per unordered pair of V whose closed ranges intersect.
 template <class R, class F>
 void for_overlapping_pairs(const std::vector<std::pair<R, R>>& V, F&& f) {
   std::vector<std::size_t> iv(V.size());
@@ -57,8 +57,8 @@ void for_overlapping_pairs(const std::vector<std::pair<R, R>>& V, F&& f) {
   }
 }
 
-// The first pair of loop edges, in the order (loop l, loop m, edge i, edge j) with (l, i) < (m, j),
-// for which meets(l, i, m, j) holds, among the edges whose x-ranges x[k] meet; id[k] = (loop, edge).
+/// The first pair of loop edges, in the order (loop l, loop m, edge i, edge j) with (l, i) < (m, j),
+/// for which meets(l, i, m, j) holds, among the edges whose x-ranges x[k] meet; id[k] = (loop, edge).
 template <class R, class Meets>
 std::optional<std::array<std::size_t, 4>> first_meeting_edges(const std::vector<std::pair<R, R>>& x,
                                                               const std::vector<std::pair<std::size_t, std::size_t>>& id,

@@ -11,23 +11,23 @@ namespace splinex {
 
 using Polygon = std::vector<Vec2<Rational>>;
 
-// Signed area (positive for counter-clockwise), by CGAL::Polygon_2 over exact rationals.
+/// Signed area (positive for counter-clockwise), by CGAL::Polygon_2 over exact rationals.
 Rational polygon_area(const Polygon& p);
-// CGAL::Polygon_2::is_simple (no self-intersection, no repeated vertex).
+/// CGAL::Polygon_2::is_simple (no self-intersection, no repeated vertex).
 bool polygon_is_simple(const Polygon& p);
-// The part of the polygon p where a*x + b*y + c >= 0, by Sutherland-Hodgman (exact). For a
-// non-convex p whose kept part is disconnected the result joins the parts along the line, which
-// adds no area.
-// Area of the union of simple polygons (any orientation), by CGAL's exact Boolean operations
-// (Polygon_set_2 over exact rationals): with the sum of the areas it gives the exact overlap, with
-// the area of the domain the exact gap of a tiling. Polygons with fewer than 3 vertices or zero
-// area are ignored; a non-simple polygon is a std::invalid_argument (CGAL needs simple ones).
+/// The part of the polygon p where a*x + b*y + c >= 0, by Sutherland-Hodgman (exact). For a
+/// non-convex p whose kept part is disconnected the result joins the parts along the line, which
+/// adds no area.
+/// Area of the union of simple polygons (any orientation), by CGAL's exact Boolean operations
+/// (Polygon_set_2 over exact rationals): with the sum of the areas it gives the exact overlap, with
+/// the area of the domain the exact gap of a tiling. Polygons with fewer than 3 vertices or zero
+/// area are ignored; a non-simple polygon is a std::invalid_argument (CGAL needs simple ones).
 Rational polygon_union_area(const std::vector<Polygon>& polygons);
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
 
-// The region of an inner piece for an affine inner map s_c(r, t) = al[c] + be[c] r + ga[c] t: the
-// piece's box clipped by the half-planes of the region's conditions (lo <= s_c, s_c <= hi; the
-// open side of s_c < hi adds no area). Built independently of the sweep, as its check.
+/// The region of an inner piece for an affine inner map s_c(r, t) = al[c] + be[c] r + ga[c] t: the
+/// piece's box clipped by the half-planes of the region's conditions (lo <= s_c, s_c <= hi; the
+/// open side of s_c < hi adds no area). Built independently of the sweep, as its check.
 Polygon affine_region_polygon(const std::vector<std::pair<Rational, Rational>>& box,
                               const std::vector<CellCondition<Rational>>& region, const Rational al[2], const Rational be[2],
                               const Rational ga[2]);

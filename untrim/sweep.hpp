@@ -54,7 +54,7 @@ struct Tile {
   bool curved() const { return !bottom.empty(); }
   std::vector<T> bottom_piece(std::size_t i) const { return curved() ? bottom[i] : std::vector<T>{yb[i], yb[i + 1]}; }
   std::vector<T> top_piece(std::size_t i) const { return curved() ? top[i] : std::vector<T>{yt[i], yt[i + 1]}; }
-  // The sub-tile over [x[i], x[i+1]].
+  /// The sub-tile over [x[i], x[i+1]].
   Tile piece(std::size_t i) const {
     Tile p{label, {x[i], x[i + 1]}, {yb[i], yb[i + 1]}, {yt[i], yt[i + 1]}, {}, {}};
     if (curved()) {
@@ -65,7 +65,7 @@ struct Tile {
   }
 };
 
-// Bernstein ordinates of degree n raised to degree m >= n (exact for exact T).
+/// Bernstein ordinates of degree n raised to degree m >= n (exact for exact T).
 template <class T>
 std::vector<T> elevate_ordinates(const std::vector<T>& c, int m) {
   std::vector<T> a = c;
@@ -93,14 +93,14 @@ template <class T>
 bool lex_less(const Vec2<T>& p, const Vec2<T>& q) {
   return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
 }
-// p on the closed segment [a, b], given collinear.
+/// p on the closed segment [a, b], given collinear.
 template <class T>
 bool within(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
   const auto mn = [](const T& u, const T& v) { return u < v ? u : v; };
   const auto mx = [](const T& u, const T& v) { return u < v ? v : u; };
   return !(p[0] < mn(a[0], b[0])) && !(mx(a[0], b[0]) < p[0]) && !(p[1] < mn(a[1], b[1])) && !(mx(a[1], b[1]) < p[1]);
 }
-// y of the non-vertical segment s at x.
+/// y of the non-vertical segment s at x.
 template <class T>
 T y_at(const Seg2<T>& s, const T& x) {
   if (x == s.a[0]) return s.a[1];
@@ -110,8 +110,8 @@ T y_at(const Seg2<T>& s, const T& x) {
 
 }  // namespace detail
 
-// Splits the segments where they cross or touch, so that they meet only at end points; removes
-// zero-length and duplicate segments; orients each from its lexicographically smaller end.
+/// Splits the segments where they cross or touch, so that they meet only at end points; removes
+/// zero-length and duplicate segments; orients each from its lexicographically smaller end.
 template <class T>
 std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
   using detail::orient2;
@@ -143,7 +143,7 @@ std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
       if (o2 == 0) { cuts[i].push_back(t.b); continue; }
       if (o3 == 0) { cuts[j].push_back(s.a); continue; }
       if (o4 == 0) { cuts[j].push_back(s.b); continue; }
-      // Proper crossing: s.a + u (s.b - s.a) with u = orient(t.a, t.b, s.a) / (that - orient(t.a, t.b, s.b)).
+      /// Proper crossing: s.a + u (s.b - s.a) with u = orient(t.a, t.b, s.a) / (that - orient(t.a, t.b, s.b)).
       const T d3 = orient2(t.a, t.b, s.a), d4 = orient2(t.a, t.b, s.b);
       const T u = d3 / (d3 - d4);
       const Vec2<T> p{s.a[0] + (s.b[0] - s.a[0]) * u, s.a[1] + (s.b[1] - s.a[1]) * u};
@@ -168,8 +168,8 @@ std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
   return out;
 }
 
-// The trapezoids between consecutive non-vertical segments in every slab between consecutive
-// vertex x values. The segments must meet only at end points (planar_subdivision).
+/// The trapezoids between consecutive non-vertical segments in every slab between consecutive
+/// vertex x values. The segments must meet only at end points (planar_subdivision).
 template <class T>
 std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Seg2<T>>& segs) {
   std::vector<T> xs;
@@ -207,10 +207,10 @@ std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Seg2<T>>& seg
   return out;
 }
 
-// Trapezoids (in sweep order) with labels merged into tiles: a trapezoid continues a tile of the
-// same label whose right side is exactly its left side, unless that side lies on one of the
-// vertical `barriers` (the knot lines x = k of a surface the tiles are composed into: a tile must
-// not cross them). Labels < 0 are dropped (outside).
+/// Trapezoids (in sweep order) with labels merged into tiles: a trapezoid continues a tile of the
+/// same label whose right side is exactly its left side, unless that side lies on one of the
+/// vertical `barriers` (the knot lines x = k of a surface the tiles are composed into: a tile must
+/// not cross them). Labels < 0 are dropped (outside).
 template <class T>
 std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, const std::vector<int>& labels,
                                       std::vector<T> barriers = {}) {
@@ -218,7 +218,7 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
   std::sort(barriers.begin(), barriers.end(), less);
   const auto on_barrier = [&](const T& x) { return std::binary_search(barriers.begin(), barriers.end(), x, less); };
   std::vector<Tile<T>> tiles;
-  // Open tiles keyed by their right side (x, yb, yt) in a map ordered by comparisons only.
+  /// Open tiles keyed by their right side (x, yb, yt) in a map ordered by comparisons only.
   struct Key {
     T x, yb, yt;
     int label;
@@ -246,12 +246,12 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
       tiles.push_back(Tile<T>{labels[i], {z.x0}, {z.yb0}, {z.yt0}, {}, {}});
     }
     auto& tl = tiles[t];
-    // Drop the previous sample when both chains run straight through it, decided exactly by
-    // orientation. Not in floating point: there a chain's sample y_at(s, x) is rounded off the
-    // segment s, and a tile that drops it no longer shares the boundary with its neighbour that
-    // keeps it (measured: a gap of 2.8e-23 at eps 1e-6; dropping samples where the same two segments
-    // continue instead left a gap of 8e-21 and an overlap of 2.9e-20). Keeping every slab sample makes
-    // adjacent float tiles share identical boundary points, so they partition the box exactly.
+    /// Drop the previous sample when both chains run straight through it, decided exactly by
+    /// orientation. Not in floating point: there a chain's sample y_at(s, x) is rounded off the
+    /// segment s, and a tile that drops it no longer shares the boundary with its neighbour that
+    /// keeps it (measured: a gap of 2.8e-23 at eps 1e-6; dropping samples where the same two segments
+    /// continue instead left a gap of 8e-21 and an overlap of 2.9e-20). Keeping every slab sample makes
+    /// adjacent float tiles share identical boundary points, so they partition the box exactly.
     const std::size_t m = tl.x.size();
     bool straight = false;
     if constexpr (ArithTraits<T>::exact)
@@ -274,7 +274,7 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
   return tiles;
 }
 
-// The tile with every number converted by conv (e.g. exact tiles rounded, or float tiles taken exactly).
+/// The tile with every number converted by conv (e.g. exact tiles rounded, or float tiles taken exactly).
 template <class B, class A, class F>
 Tile<B> convert_tile(const Tile<A>& t, F&& conv) {
   Tile<B> u;
@@ -292,9 +292,9 @@ Tile<B> convert_tile(const Tile<A>& t, F&& conv) {
   return u;
 }
 
-// The tile's Coons patch Q(x, l), degree (d, 1) with d the highest chain piece degree (1 for
-// straight chains), x in [x_0, x_m], l in [0, 1]; points in R^2. Break points have multiplicity d
-// (the chains are only C0 there); x is linear in its parameter, so Q(x, l) has first coordinate x.
+/// The tile's Coons patch Q(x, l), degree (d, 1) with d the highest chain piece degree (1 for
+/// straight chains), x in [x_0, x_m], l in [0, 1]; points in R^2. Break points have multiplicity d
+/// (the chains are only C0 there); x is linear in its parameter, so Q(x, l) has first coordinate x.
 template <class T>
 BSpline<T> tile_spline(const Tile<T>& t) {
   int d = 1;
@@ -324,8 +324,8 @@ BSpline<T> tile_spline(const Tile<T>& t) {
   return Q;
 }
 
-// The tile's area: the integral of det dQ = y_t - y_b over x; on a piece the integral of a
-// Bernstein polynomial is the width times the mean of its ordinates (the trapezoid rule for lines).
+/// The tile's area: the integral of det dQ = y_t - y_b over x; on a piece the integral of a
+/// Bernstein polynomial is the width times the mean of its ordinates (the trapezoid rule for lines).
 template <class T>
 T tile_area(const Tile<T>& t) {
   T a(0);
@@ -339,8 +339,8 @@ T tile_area(const Tile<T>& t) {
   return a;
 }
 
-// The tile's boundary as a counter-clockwise polygon (bottom left to right, top right to left;
-// repeated points of degenerate sides removed). Straight chains only.
+/// The tile's boundary as a counter-clockwise polygon (bottom left to right, top right to left;
+/// repeated points of degenerate sides removed). Straight chains only.
 template <class T>
 std::vector<Vec2<T>> tile_polygon(const Tile<T>& t) {
   if (t.curved()) throw std::logic_error("tile_polygon: the tile has curved chains");

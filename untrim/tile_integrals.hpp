@@ -23,8 +23,8 @@
 
 namespace splinex {
 
-// The integral of the polynomial density f (one polynomial piece in (x, y), any box: it is used
-// as the polynomial on all of R^2; points in R^q, one integral per coordinate) over the tile.
+/// The integral of the polynomial density f (one polynomial piece in (x, y), any box: it is used
+/// as the polynomial on all of R^2; points in R^q, one integral per coordinate) over the tile.
 template <class T>
 std::vector<T> integrate_over_tile(const BSpline<T>& f, const Tile<T>& tile, const Limits& limits = {}) {
   if (f.dim() != 2) throw ValidationError("density", "has " + std::to_string(f.dim()) + " parameters", "give a density in (x, y)");
@@ -45,7 +45,7 @@ std::vector<T> integrate_over_tile(const BSpline<T>& f, const Tile<T>& tile, con
     const int n = F.degrees[0], k = F.degrees[1];
     if (F.count(0) != static_cast<std::size_t>(n + 1) || F.count(1) != static_cast<std::size_t>(k + 1))
       throw std::logic_error("integrate_over_tile: f(Q) on a chain piece is not one Bezier piece");
-    // det dQ = y_t - y_b in Bernstein form of degree e.
+    /// det dQ = y_t - y_b in Bernstein form of degree e.
     const auto bt = piece.top_piece(0), bb = piece.bottom_piece(0);
     const int e = static_cast<int>(std::max(bt.size(), bb.size())) - 1;
     const auto ct = elevate_ordinates(bt, e), cb = elevate_ordinates(bb, e);

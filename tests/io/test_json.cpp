@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "float/mpfr.hpp"
-#include "helpers.hpp"
+#include "tests/helpers.hpp"
 #include "spline/errors.hpp"
 
 using namespace splinex;

@@ -4,7 +4,7 @@
 #include "crosscheck/crosscheck.hpp"
 #include "fixtures/teapot.hpp"
 #include "fixtures/random_spline.hpp"
-#include "helpers.hpp"
+#include "tests/helpers.hpp"
 #include "spline/errors.hpp"
 
 using namespace splinex;

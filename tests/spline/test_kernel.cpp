@@ -4,7 +4,7 @@
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "float/mpfr.hpp"
-#include "helpers.hpp"
+#include "tests/helpers.hpp"
 #include "proofs/identity.hpp"
 #include "proofs/suite.hpp"
 #include "spline/errors.hpp"

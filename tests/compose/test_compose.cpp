@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "helpers.hpp"
+#include "tests/helpers.hpp"
 #include "spline/errors.hpp"
 #include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"

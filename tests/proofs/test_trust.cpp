@@ -5,7 +5,7 @@
 
 #include "fixtures/random_spline.hpp"
 #include "float/rounding.hpp"
-#include "helpers.hpp"
+#include "tests/helpers.hpp"
 #include "proofs/identity.hpp"
 #include "proofs/suite.hpp"
 #include "compose/trimmed_compose.hpp"
