@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "spline/bezier.hpp"
+#include "spline/errors.hpp"
 #include "compose/compose.hpp"
 
 namespace splinex {
@@ -51,6 +52,18 @@ struct TrimmedPatch {
   BSpline<T> patch;                      // T_j^e(S_i) on the inner piece's box (Observation 1)
   bool homogeneous = false;              // patch holds (w*R, w): q+1 coordinates, divide to evaluate
 };
+
+/// The point R of a homogeneous value h = (w*R, w) (the composition's rational form, Observation 1
+/// of papers/000): R = (w*R) / w. A vanishing weight is a DomainError.
+template <class T>
+std::vector<T> divide_by_weight(const std::vector<T>& h) {
+  const std::size_t q = h.size() - 1;
+  if (h[q] == T(0))
+    throw DomainError("composition.weights", "the composed weight vanishes at this point", "check the rational input");
+  std::vector<T> out(q);
+  for (std::size_t c = 0; c < q; ++c) out[c] = h[c] / h[q];
+  return out;
+}
 
 /// A trimmed patch's value at r (dividing by the weight for homogeneous patches).
 template <class T>

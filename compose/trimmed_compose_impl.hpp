@@ -133,13 +133,7 @@ std::size_t TrimmedComposition<T>::locate(const std::vector<T>& r) const {
 template <class T>
 std::vector<T> evaluate_patch(const TrimmedPatch<T>& p, const std::vector<T>& r) {
   std::vector<T> h = splinex::evaluate(p.patch, r);
-  if (!p.homogeneous) return h;
-  const std::size_t q = h.size() - 1;
-  if (h[q] == T(0))
-    throw DomainError("composition.weights", "the composed weight vanishes at this point", "check the rational input");
-  std::vector<T> out(q);
-  for (std::size_t c = 0; c < q; ++c) out[c] = h[c] / h[q];
-  return out;
+  return p.homogeneous ? divide_by_weight(h) : h;
 }
 
 template <class T>

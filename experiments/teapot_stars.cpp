@@ -154,7 +154,7 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
             TrimmingTolerance tol;
             tol.eps = poly_eps[ei];
             tol.grid = 8;
-            std::map<std::pair<std::size_t, std::size_t>, std::vector<Segment2>> lines;  // (patch, bound) -> polyline
+            std::map<std::pair<std::size_t, std::size_t>, std::vector<Segment2<double>>> lines;  // (patch, bound) -> polyline
             for (std::size_t k = 0; k < Cd.patches.size(); ++k)
               for (std::size_t ci = 0; ci < Cd.patches[k].region.size(); ++ci)
                 for (int ub = 0; ub < 2; ++ub) {
@@ -167,7 +167,7 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
             for (int b = 0; b < P; ++b)
               for (int a = 0; a < P; ++a) {
                 const std::vector<Rational> r{Rational(2 * a + 1, 2 * P), Rational(2 * b + 1, 2 * P)};
-                const Point2 rd{to_double(r[0]), to_double(r[1])};
+                const Point2<double> rd{to_double(r[0]), to_double(r[1])};
                 const std::size_t piece = Cd.locate_piece({rd[0], rd[1]});
                 std::size_t chosen = Cd.patches.size(), owners = 0;
                 for (std::size_t k = 0; k < Cd.patches.size(); ++k) {

@@ -21,7 +21,7 @@ namespace {
 
 // The polyline as the graph r = h(t) over t in [0, 1]: a degree-1 spline with knots at the
 // vertices' t (exact values of the doubles). Throws when the polyline is not such a graph.
-BSpline<Rational> polyline_graph(const std::vector<Segment2>& poly) {
+BSpline<Rational> polyline_graph(const std::vector<Segment2<double>>& poly) {
   std::vector<std::pair<Rational, Rational>> v;  // (t, r)
   for (const auto& s : poly)
     for (const auto& p : {s.a, s.b}) v.emplace_back(exact_from_double(p[1]), exact_from_double(p[0]));
@@ -318,7 +318,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
       << "| m | continuity | fitted slope of max error | predicted p-m+1 | max misassigned length at eps=1e-6 | "
          "misassigned area at eps=1e-6 | slope of area | error at eps=1e-6 |\n|---|---|---|---|---|---|---|---|\n";
   // The polylines and their misassigned areas do not depend on T: computed once per eps.
-  std::map<double, std::pair<std::vector<Segment2>, AbsIntegral<Rational>>> polylines;
+  std::map<double, std::pair<std::vector<Segment2<double>>, AbsIntegral<Rational>>> polylines;
   {
     // r*(t) = 1/2 - t(1-t)/3: Bernstein coefficients 1/2, 1/3, 1/2 on [0, 1].
     BSpline<Rational> rs;

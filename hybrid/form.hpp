@@ -42,7 +42,7 @@ template <class T>
 HybridForm<T> hybrid_form(const HybridPatch<T>& P);
 
 template <class T>
-std::vector<T> hybrid_form_evaluate(const HybridForm<T>& F, const std::array<T, 2>& x);
+std::vector<T> hybrid_form_evaluate(const HybridForm<T>& F, const Point2<T>& x);
 
 /// Side i's interior sum_{j,k} Ct_{j,k} N_j(s) N_k(h) and ribbon R_i(s, h) at one (s, h).
 template <class T>

@@ -131,7 +131,7 @@ std::vector<T> hybrid_form_ribbon(const HybridFormSide<T>& S, int q, const T& s,
 }
 
 template <class T>
-std::vector<T> hybrid_form_evaluate(const HybridForm<T>& F, const std::array<T, 2>& x) {
+std::vector<T> hybrid_form_evaluate(const HybridForm<T>& F, const Point2<T>& x) {
   using namespace hybrid_detail;
   const auto& P = F.base;
   const auto L = hybrid_local(P, x);

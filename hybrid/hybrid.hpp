@@ -40,6 +40,7 @@
 #include "spline/arith.hpp"
 #include "spline/bspline.hpp"
 #include "spline/errors.hpp"
+#include "spline/point.hpp"
 
 namespace splinex {
 
@@ -47,7 +48,7 @@ enum class RibbonFactor { side_interpolant, eq_2_11 };
 
 template <class T>
 struct HybridPatch {
-  std::vector<std::array<T, 2>> vertices;  // strictly convex, counter-clockwise, n >= 3
+  std::vector<Point2<T>> vertices;  // strictly convex, counter-clockwise, n >= 3
   int d = 0;                               // Bernstein degree of the patch, d >= 3
   std::vector<int> p;                      // B-spline degree of side i's boundary, 1 <= p_i <= d
   std::vector<std::vector<T>> knots;       // side i: d + p_i + 2 knots, clamped on [0, 1]
@@ -89,11 +90,11 @@ struct HybridLocal {
 };
 
 template <class T>
-HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x);
+HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const Point2<T>& x);
 
 /// The patch's point at x (q coordinates). x must lie in the closed domain (DomainError).
 template <class T>
-std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& x);
+std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const Point2<T>& x);
 
 /// The boundary curve P_i(s) and the ribbon's cross-derivative function T_i(s) (Eq. 2.11).
 template <class T>
@@ -112,14 +113,14 @@ struct HybridJet {
   HybridLocal<T> local, local_derivative;  // lambda, s, h and their derivatives along w
 };
 template <class T>
-HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const std::array<T, 2>& x, const std::array<T, 2>& w);
+HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const Point2<T>& x, const Point2<T>& w);
 
 template <class T>
 struct HybridDerivatives {
   std::vector<T> point, du, dv;
 };
 template <class T>
-HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::array<T, 2>& x);
+HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const Point2<T>& x);
 
 /// Theorem 3.2's derivative: dS/dh_i at fixed s_i. The level sets of s_i (Eq. 2.9) are the lines
 /// through O_i, the intersection of the lines of sides i-1 and i+1 (parallel to them when those
@@ -129,10 +130,10 @@ HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::arra
 template <class T>
 struct HybridCrossDerivative {
   std::vector<T> value;     // dS/dh_i at fixed s_i
-  std::array<T, 2> direction;  // w, tangent to the iso-line of s_i through x
+  Point2<T> direction;  // w, tangent to the iso-line of s_i through x
 };
 template <class T>
-HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x);
+HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const Point2<T>& x);
 
 /// Side i's boundary P_i as a kernel B-spline curve (degree p_i, side i's knots, row C^i_{j,0}),
 /// e.g. for its derivatives.

@@ -27,14 +27,14 @@ std::vector<T> side_basis(const HybridPatch<T>& P, std::size_t i, const T& s) {
 
 /// Outward normal of side i (from V_i to V_{i+1}) of a counter-clockwise polygon, not normalized.
 template <class T>
-std::array<T, 2> normal(const HybridPatch<T>& P, std::size_t i) {
+Point2<T> normal(const HybridPatch<T>& P, std::size_t i) {
   const auto& a = P.vertices[i];
   const auto& b = P.vertices[(i + 1) % P.sides()];
   return {b[1] - a[1], a[0] - b[0]};
 }
 
 template <class T>
-T cross(const std::array<T, 2>& a, const std::array<T, 2>& b) {
+T cross(const Point2<T>& a, const Point2<T>& b) {
   return a[0] * b[1] - a[1] * b[0];
 }
 
@@ -72,7 +72,7 @@ T ribbon_factor(const HybridPatch<T>& P, std::size_t i, int j) {
 }  // namespace hybrid_detail
 
 template <class T>
-HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+HybridLocal<T> hybrid_local(const HybridPatch<T>& P, const Point2<T>& x) {
   using namespace hybrid_detail;
   const std::size_t n = P.sides();
   std::vector<T> phi(n), c(n);
@@ -180,7 +180,7 @@ std::vector<T> central_point(const HybridPatch<T>& P) {
 }  // namespace hybrid_detail
 
 template <class T>
-std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const Point2<T>& x) {
   using namespace hybrid_detail;
   const auto L = hybrid_local(P, x);
   std::vector<T> S(P.q, T(0));
@@ -202,7 +202,7 @@ std::vector<T> hybrid_evaluate(const HybridPatch<T>& P, const std::array<T, 2>& 
 }
 
 template <class T>
-HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const std::array<T, 2>& x, const std::array<T, 2>& w) {
+HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const Point2<T>& x, const Point2<T>& w) {
   using D = Dual<T>;
   for (std::size_t k = 0; k < P.sides(); ++k)
     if (P.vertices[k][0] == x[0] && P.vertices[k][1] == x[1])
@@ -231,28 +231,28 @@ HybridJet<T> hybrid_jet(const HybridPatch<T>& P, const std::array<T, 2>& x, cons
 }
 
 template <class T>
-HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const std::array<T, 2>& x) {
+HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>& P, const Point2<T>& x) {
   auto a = hybrid_jet(P, x, {T(1), T(0)});
   auto b = hybrid_jet(P, x, {T(0), T(1)});
   return {std::move(a.point), std::move(a.derivative), std::move(b.derivative)};
 }
 
 template <class T>
-HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const std::array<T, 2>& x) {
+HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>& P, std::size_t i, const Point2<T>& x) {
   using namespace hybrid_detail;
   const std::size_t n = P.sides();
   if (i >= n) throw UsageError("side", std::to_string(i) + " does not exist (the patch has " + std::to_string(n) + " sides)", "give a side 0..n-1");
   /// Lines of sides i-1 and i+1: points V_{i-1}, V_{i+1}, directions a, b.
   const auto& A = P.vertices[(i + n - 1) % n];
   const auto& B = P.vertices[(i + 1) % n];
-  const std::array<T, 2> a{P.vertices[i][0] - A[0], P.vertices[i][1] - A[1]};
-  const std::array<T, 2> b{P.vertices[(i + 2) % n][0] - B[0], P.vertices[(i + 2) % n][1] - B[1]};
+  const Point2<T> a{P.vertices[i][0] - A[0], P.vertices[i][1] - A[1]};
+  const Point2<T> b{P.vertices[(i + 2) % n][0] - B[0], P.vertices[(i + 2) % n][1] - B[1]};
   const T den = cross(a, b);
-  std::array<T, 2> w;
+  Point2<T> w;
   if (den == T(0)) {
     w = a;  // parallel sides: the iso-lines are parallel to them
   } else {
-    const T t = cross(std::array<T, 2>{B[0] - A[0], B[1] - A[1]}, b) / den;  // O = A + t a
+    const T t = cross(Point2<T>{B[0] - A[0], B[1] - A[1]}, b) / den;  // O = A + t a
     w = {A[0] + t * a[0] - x[0], A[1] + t * a[1] - x[1]};
   }
   const auto J = hybrid_jet(P, x, w);
@@ -272,8 +272,8 @@ void validate(const HybridPatch<T>& P) {
   const std::size_t n = P.sides();
   if (n < 3) throw ValidationError("domain", "has " + std::to_string(n) + " vertices", "give a convex polygon with at least 3 vertices");
   for (std::size_t i = 0; i < n; ++i) {
-    const T o = cross(std::array<T, 2>{P.vertices[(i + 1) % n][0] - P.vertices[i][0], P.vertices[(i + 1) % n][1] - P.vertices[i][1]},
-                      std::array<T, 2>{P.vertices[(i + 2) % n][0] - P.vertices[(i + 1) % n][0],
+    const T o = cross(Point2<T>{P.vertices[(i + 1) % n][0] - P.vertices[i][0], P.vertices[(i + 1) % n][1] - P.vertices[i][1]},
+                      Point2<T>{P.vertices[(i + 2) % n][0] - P.vertices[(i + 1) % n][0],
                                        P.vertices[(i + 2) % n][1] - P.vertices[(i + 1) % n][1]});
     const std::string f = "domain[" + std::to_string((i + 1) % n) + "]";
     if (o == T(0)) throw ValidationError(f, "is degenerate: collinear with its neighbours (or repeated)", "remove the vertex; the domain must be strictly convex");
@@ -281,7 +281,7 @@ void validate(const HybridPatch<T>& P) {
       bool all_cw = true;
       for (std::size_t k = 0; k < n; ++k) {
         const auto &a = P.vertices[k], &b = P.vertices[(k + 1) % n], &c = P.vertices[(k + 2) % n];
-        if (!(cross(std::array<T, 2>{b[0] - a[0], b[1] - a[1]}, std::array<T, 2>{c[0] - b[0], c[1] - b[1]}) < T(0))) all_cw = false;
+        if (!(cross(Point2<T>{b[0] - a[0], b[1] - a[1]}, Point2<T>{c[0] - b[0], c[1] - b[1]}) < T(0))) all_cw = false;
       }
       if (all_cw) throw ValidationError("domain", "is clockwise", "list the vertices counter-clockwise");
       throw ValidationError(f, "is a reflex vertex: the domain is not convex", "give a strictly convex polygon");
@@ -291,7 +291,7 @@ void validate(const HybridPatch<T>& P) {
   // vertices must be sorted by angle around the first one.
   for (std::size_t k = 2; k < n; ++k) {
     const auto &a = P.vertices[0], &b = P.vertices[k - 1], &c = P.vertices[k];
-    if (!(T(0) < cross(std::array<T, 2>{b[0] - a[0], b[1] - a[1]}, std::array<T, 2>{c[0] - a[0], c[1] - a[1]})))
+    if (!(T(0) < cross(Point2<T>{b[0] - a[0], b[1] - a[1]}, Point2<T>{c[0] - a[0], c[1] - a[1]})))
       throw ValidationError("domain", "winds around more than once (self-intersecting)", "give a simple strictly convex polygon");
   }
   if (P.d < 3) throw ValidationError("degree", "is " + std::to_string(P.d) + "; the patch needs two ribbon layers", "give d >= 3");

@@ -4,17 +4,17 @@
 #include "hybrid/form_impl.hpp"
 
 #define SPLINEX_INSTANTIATE_HYBRID(T)                                                                              \
-  template HybridLocal<T> hybrid_local(const HybridPatch<T>&, const std::array<T, 2>&);                            \
-  template std::vector<T> hybrid_evaluate(const HybridPatch<T>&, const std::array<T, 2>&);                         \
+  template HybridLocal<T> hybrid_local(const HybridPatch<T>&, const Point2<T>&);                            \
+  template std::vector<T> hybrid_evaluate(const HybridPatch<T>&, const Point2<T>&);                         \
   template std::vector<T> hybrid_boundary(const HybridPatch<T>&, std::size_t, const T&);                           \
   template std::vector<T> hybrid_cross_tangent(const HybridPatch<T>&, std::size_t, const T&);                      \
   template void validate(const HybridPatch<T>&);                                                                   \
-  template HybridJet<T> hybrid_jet(const HybridPatch<T>&, const std::array<T, 2>&, const std::array<T, 2>&);         \
-  template HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>&, const std::array<T, 2>&);                 \
+  template HybridJet<T> hybrid_jet(const HybridPatch<T>&, const Point2<T>&, const Point2<T>&);         \
+  template HybridDerivatives<T> hybrid_derivatives(const HybridPatch<T>&, const Point2<T>&);                 \
   template HybridCrossDerivative<T> hybrid_cross_derivative(const HybridPatch<T>&, std::size_t,                    \
-                                                            const std::array<T, 2>&);                              \
+                                                            const Point2<T>&);                              \
   template HybridForm<T> hybrid_form(const HybridPatch<T>&);                                                       \
-  template std::vector<T> hybrid_form_evaluate(const HybridForm<T>&, const std::array<T, 2>&);                    \
+  template std::vector<T> hybrid_form_evaluate(const HybridForm<T>&, const Point2<T>&);                    \
   template std::vector<T> hybrid_form_interior(const HybridFormSide<T>&, int, const T&, const T&);                 \
   template std::vector<T> hybrid_form_ribbon(const HybridFormSide<T>&, int, const T&, const T&);                   \
   template std::pair<std::vector<T>, std::vector<T>> cls_elevate(int, const std::vector<T>&, const std::vector<T>&, \

@@ -23,7 +23,6 @@ ScopedPlantedHybridBug::~ScopedPlantedHybridBug() { hybrid_bug() = previous_; }
 
 namespace {
 
-using Point2 = std::array<Rational, 2>;
 
 // The patch (or form) under test, with the planted bug when a test asked for it.
 HybridPatch<Rational> planted_patch(HybridPatch<Rational> P) {
@@ -60,7 +59,7 @@ void share_corners(HybridPatch<Rational>& P) {
 // (all equal when `same`, with one shared random knot vector), random heights, corners shared.
 // `domain` non-empty replaces the random vertices.
 HybridPatch<Rational> random_hybrid(std::mt19937_64& rng, int n, int d, int pmax, bool same, bool bezier = false,
-                                    std::vector<Point2> V = {}) {
+                                    std::vector<Point2<Rational>> V = {}) {
   auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
   std::vector<int> ts;
   while (V.empty() && static_cast<int>(ts.size()) < n) {
@@ -125,14 +124,14 @@ std::vector<Rational> merged(const std::vector<Rational>& U, const std::vector<R
   return m;
 }
 
-Point2 on_side(const HybridPatch<Rational>& P, std::size_t s, const Rational& t) {
+Point2<Rational> on_side(const HybridPatch<Rational>& P, std::size_t s, const Rational& t) {
   const auto& A = P.vertices[s];
   const auto& B = P.vertices[(s + 1) % P.sides()];
   return {A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])};
 }
 
 // Domain sample: the vertex centroid G and G + (a/m)(V_k - G) + (b/m)(V_{k+1} - G), a + b <= m.
-std::vector<Point2> fan_sample(const HybridPatch<Rational>& P, int m) {
+std::vector<Point2<Rational>> fan_sample(const HybridPatch<Rational>& P, int m) {
   Rational gx = 0, gy = 0;
   for (const auto& v : P.vertices) {
     gx += v[0];
@@ -140,7 +139,7 @@ std::vector<Point2> fan_sample(const HybridPatch<Rational>& P, int m) {
   }
   gx /= static_cast<long>(P.sides());
   gy /= static_cast<long>(P.sides());
-  std::vector<Point2> X{{gx, gy}};
+  std::vector<Point2<Rational>> X{{gx, gy}};
   for (std::size_t k = 0; k < P.sides(); ++k) {
     const auto& A = P.vertices[k];
     const auto& B = P.vertices[(k + 1) % P.sides()];

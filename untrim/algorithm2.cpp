@@ -49,12 +49,7 @@ template <class T>
 std::vector<T> TensorComposition<T>::evaluate_tile(std::size_t k, const std::vector<T>& xl) const {
   const auto& tt = tiles.at(k);
   auto v = evaluate(tt.R, xl);
-  if (trimmed.patches[tt.patch].homogeneous) {
-    const T w = v.back();
-    v.pop_back();
-    for (auto& x : v) x = x / w;
-  }
-  return v;
+  return trimmed.patches[tt.patch].homogeneous ? divide_by_weight(v) : v;
 }
 
 template <class T>
@@ -77,7 +72,7 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
   for (std::size_t i = 0; i < C.inner_pieces.size(); ++i) {
     const BSpline<T>& P = C.inner_pieces[i].spline;
     const T r0 = P.domain_lo(0), r1 = P.domain_hi(0), t0 = P.domain_lo(1), t1 = P.domain_hi(1);
-    std::vector<Seg2<T>> segs{{{r0, t0}, {r1, t0}}, {{r1, t0}, {r1, t1}}, {{r0, t1}, {r1, t1}}, {{r0, t0}, {r0, t1}}};
+    std::vector<Segment2<T>> segs{{{r0, t0}, {r1, t0}}, {{r1, t0}, {r1, t1}}, {{r0, t1}, {r1, t1}}, {{r0, t0}, {r0, t1}}};
     // The distinct trimming levels (coordinate, value) tested by this piece's regions.
     std::vector<std::pair<int, T>> levels;
     auto level_index = [&](int c, const T& v) {
@@ -93,7 +88,7 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
       }
     // The piece on [0, 1]^2 in double, for tracing and for polyline sides.
     BSpline<double> unit;
-    std::vector<std::vector<Segment2>> polylines(levels.size());
+    std::vector<std::vector<Segment2<double>>> polylines(levels.size());
     std::vector<bool> straight(levels.size(), false);
     bool have_unit = false;
     for (std::size_t l = 0; l < levels.size(); ++l) {
@@ -104,10 +99,10 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
         straight[l] = true;
         ++R.straight_boundaries;
         // The line al + be r + ga t = L against the box: corners on it and strict edge crossings.
-        const Vec2<T> cs[4] = {{r0, t0}, {r1, t0}, {r1, t1}, {r0, t1}};
+        const Point2<T> cs[4] = {{r0, t0}, {r1, t0}, {r1, t1}, {r0, t1}};
         T g[4];
         for (int e = 0; e < 4; ++e) g[e] = al + be * cs[e][0] + ga * cs[e][1] - L;
-        std::vector<Vec2<T>> pts;
+        std::vector<Point2<T>> pts;
         for (int e = 0; e < 4; ++e) {
           const int f = (e + 1) % 4;
           if (g[e] == T(0)) pts.push_back(cs[e]);
@@ -134,9 +129,9 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
       tol.grid = options.grid;
       polylines[l] = trace_level_set(unit, c, dbl(L), tol);
       ++R.curved_boundaries;
-      auto map = [&](const Point2& p) {
+      auto map = [&](const Point2<double>& p) {
         const T x = from_dbl<T>(p[0]), y = from_dbl<T>(p[1]);
-        return Vec2<T>{x == T(1) ? r1 : r0 + (r1 - r0) * x, y == T(1) ? t1 : t0 + (t1 - t0) * y};
+        return Point2<T>{x == T(1) ? r1 : r0 + (r1 - r0) * x, y == T(1) ? t1 : t0 + (t1 - t0) * y};
       };
       for (const auto& s : polylines[l]) segs.push_back({map(s.a), map(s.b)});
     }
@@ -153,7 +148,7 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
       auto at_least = [&](int c, const T& L) {  // the side of level (c, L) that m is on: s_c >= L?
         const std::size_t l = level_index(c, L);
         if (straight[l] || options.boundary == TrimBoundary::exact) return !(s[c] < L);
-        const Point2 mu{dbl(T((mx - r0) / (r1 - r0))), dbl(T((my - t0) / (t1 - t0)))};
+        const Point2<double> mu{dbl(T((mx - r0) / (r1 - r0))), dbl(T((my - t0) / (t1 - t0)))};
         return polyline_side(unit, c, dbl(L), polylines[l], mu);
       };
       int owner = -1, owners = 0;

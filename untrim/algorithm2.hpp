@@ -49,7 +49,7 @@ template <class T>
 struct TensorComposition {
   TrimmedComposition<T> trimmed;
   std::vector<TensorTile<T>> tiles;
-  std::vector<std::vector<Seg2<T>>> subdivisions;  // per inner piece, the segments tiled
+  std::vector<std::vector<Segment2<T>>> subdivisions;  // per inner piece, the segments tiled
   std::size_t trapezoids = 0;
   std::size_t curved_boundaries = 0;    // trimming curves traced as polylines
   std::size_t straight_boundaries = 0;  // exact straight trimming segments

@@ -30,7 +30,7 @@ struct Edge {
   Rational at(const Rational& x) const { return poly::bernstein_eval(c, (x - x0) / (x1 - x0)); }
   // Does the ray from p to +y cross this edge? Arcs only, half-open in x, so a ray through a
   // vertex counts the two edges meeting there once; the parity over a loop is the crossing number.
-  bool above(const Vec2<Rational>& p) const { return !vertical && x0 <= p[0] && p[0] < x1 && at(p[0]) > p[1]; }
+  bool above(const Point2<Rational>& p) const { return !vertical && x0 <= p[0] && p[0] < x1 && at(p[0]) > p[1]; }
 };
 
 Edge make_edge(const TrimmedDomain& D, std::size_t l, std::size_t i) {
@@ -65,7 +65,7 @@ std::vector<std::vector<Edge>> all_edges(const TrimmedDomain& D) {
 }
 
 // Do the two edges share a point other than the allowed ones (shared vertices of consecutive edges)?
-bool edges_meet(const Edge& A, const Edge& B, const std::vector<Vec2<Rational>>& allowed) {
+bool edges_meet(const Edge& A, const Edge& B, const std::vector<Point2<Rational>>& allowed) {
   const auto is_allowed = [&](const Rational& x, const Rational& y) {
     for (const auto& v : allowed)
       if (v[0] == x && v[1] == y) return true;
@@ -168,7 +168,7 @@ void validate_curved_domain(const TrimmedDomain& D) {
       id.emplace_back(l, i);
     }
   const auto first = first_meeting_edges(ex, id, [&](std::size_t l, std::size_t i, std::size_t m, std::size_t j) {
-    std::vector<Vec2<Rational>> allowed;
+    std::vector<Point2<Rational>> allowed;
     if (l == m) {
       const std::size_t n = E[l].size();
       if (j == i + 1) allowed.push_back(D.loops[l][j]);
@@ -208,7 +208,7 @@ void throw_meeting_edges(const std::array<std::size_t, 4>& pair) {
                         "trimming loops must be disjoint; merge them into one simple loop");
 }
 
-bool inside_loop(const TrimmedDomain& D, std::size_t l, const Vec2<Rational>& p) {
+bool inside_loop(const TrimmedDomain& D, std::size_t l, const Point2<Rational>& p) {
   bool in = false;
   for (std::size_t i = 0; i < D.loops[l].size(); ++i) {
     if (make_edge(D, l, i).above(p)) in = !in;
@@ -392,7 +392,7 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
   //    edges half-open in x so a vertical ray through a vertex counts the two edges meeting there once.
   struct Sample {
     std::size_t tile;
-    Vec2<Rational> p;
+    Point2<Rational> p;
     bool in = false;
   };
   std::vector<Sample> samples;

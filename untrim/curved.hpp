@@ -41,7 +41,7 @@ void validate_curved_domain(const TrimmedDomain& D);
 /// Signed area oint x dy of one loop (positive counter-clockwise), exact.
 Rational loop_signed_area(const TrimmedDomain& D, std::size_t l);
 /// p strictly inside loop l (p must not lie on it): parity of the loop's graph arcs above p.
-bool inside_loop(const TrimmedDomain& D, std::size_t l, const Vec2<Rational>& p);
+bool inside_loop(const TrimmedDomain& D, std::size_t l, const Point2<Rational>& p);
 // ValidationError for the loop edges (loop l, loop m, edge i, edge j) that meet: "is
 // self-intersecting" when l == m, else "meets loops[l]" (first_meeting_edges finds them).
 [[noreturn]] void throw_meeting_edges(const std::array<std::size_t, 4>& pair);

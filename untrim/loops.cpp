@@ -19,7 +19,7 @@ std::string vname(std::size_t l, std::size_t i) {
 }
 
 // Closed segments [a, b] and [c, d] share a point (exact orientation tests).
-bool segments_meet(const Vec2<Rational>& a, const Vec2<Rational>& b, const Vec2<Rational>& c, const Vec2<Rational>& d) {
+bool segments_meet(const Point2<Rational>& a, const Point2<Rational>& b, const Point2<Rational>& c, const Point2<Rational>& d) {
   using detail::orient2;
   using detail::sgn;
   const int o1 = sgn(orient2(a, b, c)), o2 = sgn(orient2(a, b, d)), o3 = sgn(orient2(c, d, a)), o4 = sgn(orient2(c, d, b));
@@ -35,7 +35,7 @@ bool segments_meet(const Vec2<Rational>& a, const Vec2<Rational>& b, const Vec2<
 // the two edges meeting there once; p must not lie on the edge. The parity over a loop's edges
 // tells whether p is strictly inside it (crossing number).
 template <class T>
-bool ray_crosses(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+bool ray_crosses(const Point2<T>& a, const Point2<T>& b, const Point2<T>& p) {
   // x of the edge at height p[1] compared with p[0], without division: sign-corrected orientation.
   return (a[1] > p[1]) != (b[1] > p[1]) && (b[1] > a[1]) == (detail::orient2(a, b, p) > T(0));
 }
@@ -114,7 +114,7 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
     return out;
   }
   const T x0 = cv(D.lo[0]), x1 = cv(D.hi[0]), y0 = cv(D.lo[1]), y1 = cv(D.hi[1]);
-  std::vector<Seg2<T>> segs{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x0, y1}, {x1, y1}}, {{x0, y0}, {x0, y1}}};
+  std::vector<Segment2<T>> segs{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x0, y1}, {x1, y1}}, {{x0, y0}, {x0, y1}}};
   std::vector<T> barriers;
   for (const auto& k : knot_lines[0])
     if (D.lo[0] < k && k < D.hi[0]) {
@@ -123,9 +123,9 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
     }
   for (const auto& k : knot_lines[1])
     if (D.lo[1] < k && k < D.hi[1]) segs.push_back({{x0, cv(k)}, {x1, cv(k)}});
-  std::vector<std::vector<Vec2<T>>> loops;
+  std::vector<std::vector<Point2<T>>> loops;
   for (const auto& L : D.loops) {
-    std::vector<Vec2<T>> P;
+    std::vector<Point2<T>> P;
     for (const auto& v : L) P.push_back({cv(v[0]), cv(v[1])});
     for (std::size_t i = 0; i < P.size(); ++i) segs.push_back({P[i], P[(i + 1) % P.size()]});
     loops.push_back(std::move(P));
@@ -135,13 +135,13 @@ std::vector<Tile<T>> untrim_domain(const TrimmedDomain& D, const std::array<std:
   // the loop edges a horizontal ray from the centre crosses (ray_crosses, summed over the
   // disjoint loops). Edges and centres are paired by an interval join on y, so the work grows with
   // the crossings, not with trapezoids times edges.
-  std::vector<Vec2<T>> centres;
+  std::vector<Point2<T>> centres;
   std::vector<std::pair<T, T>> centre_y, edge_y;
   for (const auto& tz : traps) {
     centres.push_back({(tz.x0 + tz.x1) / T(2), (tz.yb0 + tz.yb1 + tz.yt0 + tz.yt1) / T(4)});
     centre_y.emplace_back(centres.back()[1], centres.back()[1]);
   }
-  std::vector<std::pair<const Vec2<T>*, const Vec2<T>*>> edges;
+  std::vector<std::pair<const Point2<T>*, const Point2<T>*>> edges;
   for (const auto& P : loops)
     for (std::size_t i = 0; i < P.size(); ++i) {
       const auto &a = P[i], &b = P[(i + 1) % P.size()];

@@ -55,7 +55,7 @@ Rational polygon_union_area(const std::vector<Polygon>& polygons) {
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c) {
   Polygon out;
   const std::size_t n = p.size();
-  auto f = [&](const Vec2<Rational>& v) { return Rational(a * v[0] + b * v[1] + c); };
+  auto f = [&](const Point2<Rational>& v) { return Rational(a * v[0] + b * v[1] + c); };
   for (std::size_t i = 0; i < n; ++i) {
     const auto &P = p[i], &Q = p[(i + 1) % n];
     const Rational fp = f(P), fq = f(Q);

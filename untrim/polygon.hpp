@@ -9,7 +9,7 @@
 
 namespace splinex {
 
-using Polygon = std::vector<Vec2<Rational>>;
+using Polygon = std::vector<Point2<Rational>>;
 
 /// Signed area (positive for counter-clockwise), by CGAL::Polygon_2 over exact rationals.
 Rational polygon_area(const Polygon& p);

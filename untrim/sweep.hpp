@@ -23,16 +23,9 @@
 #include "spline/arith.hpp"
 #include "spline/bspline.hpp"
 #include "spline/errors.hpp"
+#include "spline/point.hpp"
 
 namespace splinex {
-
-template <class T>
-using Vec2 = std::array<T, 2>;
-
-template <class T>
-struct Seg2 {
-  Vec2<T> a, b;
-};
 
 template <class T>
 struct Trapezoid {
@@ -82,7 +75,7 @@ std::vector<T> elevate_ordinates(const std::vector<T>& c, int m) {
 namespace detail {
 
 template <class T>
-T orient2(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c) {
+T orient2(const Point2<T>& a, const Point2<T>& b, const Point2<T>& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 }
 template <class T>
@@ -90,19 +83,19 @@ int sgn(const T& v) {
   return T(0) < v ? 1 : (v < T(0) ? -1 : 0);
 }
 template <class T>
-bool lex_less(const Vec2<T>& p, const Vec2<T>& q) {
+bool lex_less(const Point2<T>& p, const Point2<T>& q) {
   return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
 }
 /// p on the closed segment [a, b], given collinear.
 template <class T>
-bool within(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+bool within(const Point2<T>& a, const Point2<T>& b, const Point2<T>& p) {
   const auto mn = [](const T& u, const T& v) { return u < v ? u : v; };
   const auto mx = [](const T& u, const T& v) { return u < v ? v : u; };
   return !(p[0] < mn(a[0], b[0])) && !(mx(a[0], b[0]) < p[0]) && !(p[1] < mn(a[1], b[1])) && !(mx(a[1], b[1]) < p[1]);
 }
 /// y of the non-vertical segment s at x.
 template <class T>
-T y_at(const Seg2<T>& s, const T& x) {
+T y_at(const Segment2<T>& s, const T& x) {
   if (x == s.a[0]) return s.a[1];
   if (x == s.b[0]) return s.b[1];
   return s.a[1] + (s.b[1] - s.a[1]) * (x - s.a[0]) / (s.b[0] - s.a[0]);
@@ -113,18 +106,18 @@ T y_at(const Seg2<T>& s, const T& x) {
 /// Splits the segments where they cross or touch, so that they meet only at end points; removes
 /// zero-length and duplicate segments; orients each from its lexicographically smaller end.
 template <class T>
-std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
+std::vector<Segment2<T>> planar_subdivision(const std::vector<Segment2<T>>& in) {
   using detail::orient2;
   using detail::sgn;
-  std::vector<Seg2<T>> segs;
+  std::vector<Segment2<T>> segs;
   for (auto s : in) {
     if (s.a == s.b) continue;
     if (detail::lex_less(s.b, s.a)) std::swap(s.a, s.b);
     segs.push_back(s);
   }
   // Sort by x of the left end: only segments whose x-ranges overlap are compared.
-  std::sort(segs.begin(), segs.end(), [](const Seg2<T>& p, const Seg2<T>& q) { return p.a[0] < q.a[0]; });
-  std::vector<std::vector<Vec2<T>>> cuts(segs.size());
+  std::sort(segs.begin(), segs.end(), [](const Segment2<T>& p, const Segment2<T>& q) { return p.a[0] < q.a[0]; });
+  std::vector<std::vector<Point2<T>>> cuts(segs.size());
   for (std::size_t i = 0; i < segs.size(); ++i) {
     const auto& s = segs[i];
     for (std::size_t j = i + 1; j < segs.size() && !(s.b[0] < segs[j].a[0]); ++j) {
@@ -146,12 +139,12 @@ std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
       /// Proper crossing: s.a + u (s.b - s.a) with u = orient(t.a, t.b, s.a) / (that - orient(t.a, t.b, s.b)).
       const T d3 = orient2(t.a, t.b, s.a), d4 = orient2(t.a, t.b, s.b);
       const T u = d3 / (d3 - d4);
-      const Vec2<T> p{s.a[0] + (s.b[0] - s.a[0]) * u, s.a[1] + (s.b[1] - s.a[1]) * u};
+      const Point2<T> p{s.a[0] + (s.b[0] - s.a[0]) * u, s.a[1] + (s.b[1] - s.a[1]) * u};
       cuts[i].push_back(p);
       cuts[j].push_back(p);
     }
   }
-  std::vector<Seg2<T>> out;
+  std::vector<Segment2<T>> out;
   for (std::size_t i = 0; i < segs.size(); ++i) {
     auto pts = cuts[i];
     pts.push_back(segs[i].a);
@@ -160,10 +153,10 @@ std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
     for (std::size_t k = 0; k + 1 < pts.size(); ++k) out.push_back({pts[k], pts[k + 1]});
   }
-  std::sort(out.begin(), out.end(), [](const Seg2<T>& p, const Seg2<T>& q) {
+  std::sort(out.begin(), out.end(), [](const Segment2<T>& p, const Segment2<T>& q) {
     return detail::lex_less(p.a, q.a) || (p.a == q.a && detail::lex_less(p.b, q.b));
   });
-  out.erase(std::unique(out.begin(), out.end(), [](const Seg2<T>& p, const Seg2<T>& q) { return p.a == q.a && p.b == q.b; }),
+  out.erase(std::unique(out.begin(), out.end(), [](const Segment2<T>& p, const Segment2<T>& q) { return p.a == q.a && p.b == q.b; }),
             out.end());
   return out;
 }
@@ -171,7 +164,7 @@ std::vector<Seg2<T>> planar_subdivision(const std::vector<Seg2<T>>& in) {
 /// The trapezoids between consecutive non-vertical segments in every slab between consecutive
 /// vertex x values. The segments must meet only at end points (planar_subdivision).
 template <class T>
-std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Seg2<T>>& segs) {
+std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Segment2<T>>& segs) {
   std::vector<T> xs;
   for (const auto& s : segs) {
     xs.push_back(s.a[0]);
@@ -256,10 +249,10 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
     bool straight = false;
     if constexpr (ArithTraits<T>::exact)
       straight = m >= 2 &&
-                 detail::sgn(detail::orient2(Vec2<T>{tl.x[m - 2], tl.yb[m - 2]}, Vec2<T>{tl.x[m - 1], tl.yb[m - 1]},
-                                             Vec2<T>{z.x1, z.yb1})) == 0 &&
-                 detail::sgn(detail::orient2(Vec2<T>{tl.x[m - 2], tl.yt[m - 2]}, Vec2<T>{tl.x[m - 1], tl.yt[m - 1]},
-                                             Vec2<T>{z.x1, z.yt1})) == 0;
+                 detail::sgn(detail::orient2(Point2<T>{tl.x[m - 2], tl.yb[m - 2]}, Point2<T>{tl.x[m - 1], tl.yb[m - 1]},
+                                             Point2<T>{z.x1, z.yb1})) == 0 &&
+                 detail::sgn(detail::orient2(Point2<T>{tl.x[m - 2], tl.yt[m - 2]}, Point2<T>{tl.x[m - 1], tl.yt[m - 1]},
+                                             Point2<T>{z.x1, z.yt1})) == 0;
     if (straight) {
       tl.x.back() = z.x1;
       tl.yb.back() = z.yb1;
@@ -342,12 +335,12 @@ T tile_area(const Tile<T>& t) {
 /// The tile's boundary as a counter-clockwise polygon (bottom left to right, top right to left;
 /// repeated points of degenerate sides removed). Straight chains only.
 template <class T>
-std::vector<Vec2<T>> tile_polygon(const Tile<T>& t) {
+std::vector<Point2<T>> tile_polygon(const Tile<T>& t) {
   if (t.curved()) throw std::logic_error("tile_polygon: the tile has curved chains");
-  std::vector<Vec2<T>> p;
+  std::vector<Point2<T>> p;
   for (std::size_t i = 0; i < t.x.size(); ++i) p.push_back({t.x[i], t.yb[i]});
   for (std::size_t i = t.x.size(); i-- > 0;) p.push_back({t.x[i], t.yt[i]});
-  std::vector<Vec2<T>> out;
+  std::vector<Point2<T>> out;
   for (const auto& v : p)
     if (out.empty() || !(out.back() == v)) out.push_back(v);
   while (out.size() > 1 && out.front() == out.back()) out.pop_back();

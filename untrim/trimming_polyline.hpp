@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "spline/bspline.hpp"
+#include "spline/point.hpp"
 
 namespace splinex {
 
@@ -17,21 +18,17 @@ struct TrimmingTolerance {
   int max_depth = 40; // chord refinement depth
 };
 
-using Point2 = std::array<double, 2>;
-struct Segment2 {
-  Point2 a, b;
-};
 
-std::vector<Segment2> trace_level_set(const BSpline<double>& piece, int coord, double level, const TrimmingTolerance& tol);
+std::vector<Segment2<double>> trace_level_set(const BSpline<double>& piece, int coord, double level, const TrimmingTolerance& tol);
 
 /// The side of r relative to the traced curve: true when s_c(r) >= level as the polyline says.
 /// Decided by parity: the box corner where |s_c - level| is largest has a known sign, and every
 /// crossing of the segment from that corner to r with the polyline flips it. Agrees with the
 /// exact sign for points farther than the polyline's deviation from the curve.
-bool polyline_side(const BSpline<double>& piece, int coord, double level, const std::vector<Segment2>& polyline,
-                   const Point2& r);
+bool polyline_side(const BSpline<double>& piece, int coord, double level, const std::vector<Segment2<double>>& polyline,
+                   const Point2<double>& r);
 
 /// Where the horizontal line r_1 = t meets the polyline (every crossing, sorted by r_0).
-std::vector<double> crossings_at(const std::vector<Segment2>& polyline, double t);
+std::vector<double> crossings_at(const std::vector<Segment2<double>>& polyline, double t);
 
 }  // namespace splinex

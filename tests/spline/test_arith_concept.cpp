@@ -59,7 +59,7 @@ struct ArithTraits<Strict> {
   static std::string to_string(const Strict& x) { return to_fraction_string(x.value()); }
 };
 
-using T_Seg = Seg2<Strict>;
+using T_Seg = Segment2<Strict>;
 SPLINEX_INSTANTIATE_KERNEL(Strict)
 SPLINEX_INSTANTIATE_COMPOSE(Strict)
 SPLINEX_INSTANTIATE_HYBRID(Strict)
@@ -71,7 +71,7 @@ template std::vector<Tile<Strict>> merge_trapezoids(const std::vector<Trapezoid<
 template std::vector<Strict> elevate_ordinates(const std::vector<Strict>&, int);
 template BSpline<Strict> tile_spline(const Tile<Strict>&);
 template Strict tile_area(const Tile<Strict>&);
-template std::vector<Vec2<Strict>> tile_polygon(const Tile<Strict>&);
+template std::vector<Point2<Strict>> tile_polygon(const Tile<Strict>&);
 template std::vector<Strict> integrate_over_tile(const BSpline<Strict>&, const Tile<Strict>&, const Limits&);
 
 }  // namespace splinex

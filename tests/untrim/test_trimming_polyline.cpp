@@ -37,7 +37,7 @@ TEST_CASE("trimming polylines stay within eps of the exact level set") {
     REQUIRE(!poly.empty());
     const Rational bound = Rational(11, 10) * exact_from_double(eps) + Rational(1, 1000000000000LL);
     for (const auto& seg : poly)
-      for (const auto& p : {seg.a, seg.b, Point2{0.5 * (seg.a[0] + seg.b[0]), 0.5 * (seg.a[1] + seg.b[1])}}) {
+      for (const auto& p : {seg.a, seg.b, Point2<double>{0.5 * (seg.a[0] + seg.b[0]), 0.5 * (seg.a[1] + seg.b[1])}}) {
         const Rational t = exact_from_double(p[1]), r = exact_from_double(p[0]);
         INFO("eps " << eps << " at (" << p[0] << ", " << p[1] << ")");
         CHECK(abs(Rational(r - rstar(t))) <= bound);
@@ -57,7 +57,7 @@ TEST_CASE("polyline side agrees with the exact sign away from the curve") {
     int checked = 0, near = 0;
     for (int j = 0; j <= 60; ++j)
       for (int i = 0; i <= 60; ++i) {
-        const Point2 r{i / 60.0 + 1e-7 * j, j / 60.0};
+        const Point2<double> r{i / 60.0 + 1e-7 * j, j / 60.0};
         if (r[0] > 1) continue;
         const Rational d = exact_from_double(r[0]) - rstar(exact_from_double(r[1]));
         // s_u >= 1/2 exactly when r >= r*(t) (s_u increases with r).

@@ -12,8 +12,8 @@
 using namespace splinex;
 
 namespace {
-using V = Vec2<Rational>;
-std::vector<Seg2<Rational>> square_edges(const Rational& a, const Rational& b) {
+using V = Point2<Rational>;
+std::vector<Segment2<Rational>> square_edges(const Rational& a, const Rational& b) {
   return {{{a, a}, {b, a}}, {{b, a}, {b, b}}, {{a, b}, {b, b}}, {{a, a}, {a, b}}};
 }
 // Affine S (degree (1, 1), a parallelogram net) into a T with knots that S crosses obliquely.

@@ -16,7 +16,7 @@
 using namespace splinex;
 
 namespace {
-using V = Vec2<Rational>;
+using V = Point2<Rational>;
 const Rational h(1, 2);
 
 // The lens between y = 1/2 and the parabola y = 1/2 + x (1 - x) over [0, 1] (control (1/2, 1)).
