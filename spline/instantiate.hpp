@@ -1,6 +1,6 @@
 // Explicit instantiation of the B-spline kernel for one scalar type. Included once per standard
 // arithmetic by exact/ and float/, so client code compiles against declarations only
-// (composition instantiates itself in compose/instances.cpp).
+// (composition instantiates itself in compose/instances_exact.cpp and instances_float.cpp).
 #pragma once
 #include "spline/bezier_impl.hpp"
 #include "spline/elevate_impl.hpp"
