@@ -1,7 +1,5 @@
 // splinex insert-knots | elevate | extract-bezier | split | reparametrize | reverse: one operation
 // of the kernel on a spline document, in any arithmetic.
-#include <boost/multiprecision/number.hpp>
-
 #include <iostream>
 #include <memory>
 
@@ -75,16 +73,6 @@ Operation make_op(const std::string& kind, const OpOptions& o) {
     default: break;
   }
   return op;
-}
-
-std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::string& field, int hi,
-                               const std::string& what, const std::string& fix) {
-  std::vector<int> out;
-  for (const auto& r : numbers) {
-    if (boost::multiprecision::denominator(r) != 1 || r < 0 || r > hi) throw UsageError(field, what, fix);
-    out.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
-  }
-  return out;
 }
 
 Commands add_operations(CLI::App& app) {

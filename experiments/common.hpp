@@ -17,9 +17,6 @@ inline std::string fmt(double v, int precision = 3) {
   return o.str();
 }
 
-/// One colour per knot multiplicity m = 1..4 in the tolerance plots.
-inline const char* const kMultiplicityColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
-
 /// The clamped knot vector of degree p on [0, 1] with the interior knot u0 of multiplicity m.
 inline std::vector<Rational> knots_with(int p, const Rational& u0, int m) {
   std::vector<Rational> U(p + 1, Rational(0));

@@ -3,7 +3,6 @@
 // float arithmetic of the sweep, the errors measured exactly (crosscheck/).
 #include <iomanip>
 #include <map>
-#include <memory>
 #include <random>
 #include <sstream>
 
@@ -113,8 +112,6 @@ std::string csv(const std::vector<Row>& rows) {
   return o.str();
 }
 
-const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#7f7f7f"};
-
 }  // namespace
 
 void crosscheck_section(ReportContext& ctx) {
@@ -123,8 +120,7 @@ void crosscheck_section(ReportContext& ctx) {
   std::mt19937_64& rng = ctx.rng;
   const std::vector<std::string> ariths = opt.full ? std::vector<std::string>{"double", "mpfr:24", "mpfr:64", "mpfr:113", "mpfr:256"}
                                                    : std::vector<std::string>{"double", "mpfr:113"};
-  auto run_ptr = std::make_shared<Runner>(ariths);
-  Runner& run = *run_ptr;
+  Runner run(ariths);
 
   // 1. Random curves, surfaces and trivariates of degrees 1-7.
   const int max_deg = 7;
@@ -222,72 +218,69 @@ void crosscheck_section(ReportContext& ctx) {
   ctx.crosschecks = run.rows.size();
   for (const auto& r : run.rows) ctx.float_structures_match = ctx.float_structures_match && r.rep.structure_match;
 
-  // Files, written after every section has run.
-  ctx.deferred.push_back([run_ptr, ariths, out_dir = opt.out_dir] {
-    const Runner& run = *run_ptr;
-    write_file_atomically(out_dir + "/crosscheck.csv", csv(run.rows));
-    Json all = Json::array();
-    for (const auto& r : run.rows) {
-      Json j = r.rep.to_json();
-      j["suite"] = r.suite;
-      j["case"] = r.case_name;
-      j["dim"] = r.dim;
-      j["degree"] = r.degree;
-      j["rational"] = r.rational;
-      j["inserted"] = r.inserted;
-      all.push_back(std::move(j));
-    }
-    write_file_atomically(out_dir + "/crosscheck.json", all.dump(1) + "\n");
+  // Files: the data and the figures.
+  write_file_atomically(opt.out_dir + "/crosscheck.csv", csv(run.rows));
+  Json all = Json::array();
+  for (const auto& r : run.rows) {
+    Json j = r.rep.to_json();
+    j["suite"] = r.suite;
+    j["case"] = r.case_name;
+    j["dim"] = r.dim;
+    j["degree"] = r.degree;
+    j["rational"] = r.rational;
+    j["inserted"] = r.inserted;
+    all.push_back(std::move(j));
+  }
+  write_file_atomically(opt.out_dir + "/crosscheck.json", all.dump(1) + "\n");
 
-    // Figures 1 and 1b: worst grid error against degree, per operation and arithmetic, as a relative
-    // error (log scale) and as bits lost (linear; comparable across precisions).
-    auto by_degree = [&](bool bits) {
-      std::vector<PlotSeries> out;
-      int ci = 0;
-      for (const std::string opn : {"insert-knots", "elevate"})
-        for (const auto& a : ariths) {
-          PlotSeries s;
-          s.label = opn + ", " + a;
-          s.color = kColors[ci++ % 8];
-          s.dashed = opn == "elevate";
-          std::map<int, double> worst;
-          for (const auto& r : run.rows)
-            if (r.suite == "random" && r.rep.operation == opn && r.rep.arith == a)
-              worst[r.degree] = std::max(worst[r.degree], bits ? r.rep.grid.bits_lost(r.rep.precision) : r.rep.grid.rel());
-          for (auto [d, e] : worst) s.points.emplace_back(d, e);
-          out.push_back(std::move(s));
-        }
-      return out;
-    };
-    const std::string note = "random curves, surfaces, trivariates; worst over dimension and rationality";
-    write_file_atomically(out_dir + "/error_vs_degree.svg",
-                          svg_line_plot({"Max relative error of evaluated points vs degree", "degree",
-                                         "max relative error (exact measurement)", false, true, note},
-                                        by_degree(false)));
-    write_file_atomically(out_dir + "/bits_lost_vs_degree.svg",
-                          svg_line_plot({"Bits lost at evaluated points vs degree", "degree", "bits lost", false, false, note},
-                                        by_degree(true)));
-    // Figure 2: error against number of inserted knots.
-    std::vector<PlotSeries> s2;
+  // Figures 1 and 1b: worst grid error against degree, per operation and arithmetic, as a relative
+  // error (log scale) and as bits lost (linear; comparable across precisions).
+  auto by_degree = [&](bool bits) {
+    std::vector<PlotSeries> out;
     int ci = 0;
-    for (const std::string suite : {"refinement", "refinement-boehm"})
-      for (const std::string cname : {"curve-p3", "curve-p5"})
-        for (const auto& a : ariths) {
-          PlotSeries s;
-          s.label = (suite == "refinement" ? "A5.4 " : "A5.1 ") + cname.substr(6) + ", " + a;
-          s.color = kColors[ci++ % 8];
-          s.dashed = suite != "refinement";
-          for (const auto& r : run.rows)
-            if (r.suite == suite && r.case_name == cname && r.rep.arith == a)
-              s.points.emplace_back(static_cast<double>(r.inserted), r.rep.control_points.rel());
-          s2.push_back(std::move(s));
-        }
-    write_file_atomically(out_dir + "/error_vs_inserted_knots.svg",
-                          svg_line_plot({"Control-point relative error vs number of inserted knots", "knots inserted",
-                                         "max relative error (exact measurement)", true, true,
-                                         "errors that are exactly zero are drawn on the bottom line"},
-                                        s2));
-  });
+    for (const std::string opn : {"insert-knots", "elevate"})
+      for (const auto& a : ariths) {
+        PlotSeries s;
+        s.label = opn + ", " + a;
+        s.color = kPalette[ci++ % kPaletteSize];
+        s.dashed = opn == "elevate";
+        std::map<int, double> worst;
+        for (const auto& r : run.rows)
+          if (r.suite == "random" && r.rep.operation == opn && r.rep.arith == a)
+            worst[r.degree] = std::max(worst[r.degree], bits ? r.rep.grid.bits_lost(r.rep.precision) : r.rep.grid.rel());
+        for (auto [d, e] : worst) s.points.emplace_back(d, e);
+        out.push_back(std::move(s));
+      }
+    return out;
+  };
+  const std::string note = "random curves, surfaces, trivariates; worst over dimension and rationality";
+  write_file_atomically(opt.out_dir + "/error_vs_degree.svg",
+                        svg_line_plot({"Max relative error of evaluated points vs degree", "degree",
+                                       "max relative error (exact measurement)", false, true, note},
+                                      by_degree(false)));
+  write_file_atomically(opt.out_dir + "/bits_lost_vs_degree.svg",
+                        svg_line_plot({"Bits lost at evaluated points vs degree", "degree", "bits lost", false, false, note},
+                                      by_degree(true)));
+  // Figure 2: error against number of inserted knots.
+  std::vector<PlotSeries> s2;
+  int ci = 0;
+  for (const std::string suite : {"refinement", "refinement-boehm"})
+    for (const std::string cname : {"curve-p3", "curve-p5"})
+      for (const auto& a : ariths) {
+        PlotSeries s;
+        s.label = (suite == "refinement" ? "A5.4 " : "A5.1 ") + cname.substr(6) + ", " + a;
+        s.color = kPalette[ci++ % kPaletteSize];
+        s.dashed = suite != "refinement";
+        for (const auto& r : run.rows)
+          if (r.suite == suite && r.case_name == cname && r.rep.arith == a)
+            s.points.emplace_back(static_cast<double>(r.inserted), r.rep.control_points.rel());
+        s2.push_back(std::move(s));
+      }
+  write_file_atomically(opt.out_dir + "/error_vs_inserted_knots.svg",
+                        svg_line_plot({"Control-point relative error vs number of inserted knots", "knots inserted",
+                                       "max relative error (exact measurement)", true, true,
+                                       "errors that are exactly zero are drawn on the bottom line"},
+                                      s2));
 
   // report.md: the introduction, the figures, the tables.
   {

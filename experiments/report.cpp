@@ -79,7 +79,6 @@ int run_report(const ReportOptions& opt) {
   for (Section section : kSections) section(ctx);
 
   ctx.progress("writing " + opt.out_dir);
-  for (const auto& write : ctx.deferred) write();
   std::string md;
   for (const char* part : kDocument) md += ctx.markdown.at(part);
   write_file_atomically(opt.out_dir + "/report.md", md);

@@ -22,7 +22,6 @@ struct ReportContext {
   /// crosscheck suite, then the composition orders).
   std::mt19937_64 rng{20261121};
   std::map<std::string, std::string> markdown;  // report.md's parts by name
-  std::vector<std::function<void()>> deferred;   // files written after every section has run
   bool ok = true;                                // every section's own checks held
   /// For the closing progress line.
   std::size_t crosschecks = 0;

@@ -1,10 +1,15 @@
 // Minimal SVG line plots (log or linear axes) for experiment figures; no plotting dependency.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace splinex {
+
+/// The colours of every figure's series, in order.
+inline const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#7f7f7f"};
+inline constexpr std::size_t kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 
 struct PlotSeries {
   std::string label;

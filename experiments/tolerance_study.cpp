@@ -165,7 +165,7 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
     const auto C = compose_trimmed(T, S);
     PlotSeries ps;
     ps.label = "trivariate, m = " + std::to_string(m);
-    ps.color = kMultiplicityColors[m - 1];
+    ps.color = kPalette[m - 1];
     ps.dashed = true;
     std::string vol4;
     double err4 = 0;
@@ -254,7 +254,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     const std::size_t left = C.locate({Rational(0)});
     PlotSeries ps;
     ps.label = "m = " + std::to_string(m) + " (C^" + std::to_string(p - m) + ")";
-    ps.color = kMultiplicityColors[m - 1];
+    ps.color = kPalette[m - 1];
     double at6 = 0;
     for (double eps : eps_list) {
       // Float trimming: bisection in double on s(r) - u0 until the bracket is shorter than eps.
@@ -357,7 +357,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     const auto C = compose_trimmed(T, S2);
     PlotSeries ps;
     ps.label = "surface, m = " + std::to_string(m);
-    ps.color = kMultiplicityColors[m - 1];
+    ps.color = kPalette[m - 1];
     ps.dashed = true;
     double len6 = 0, err6 = 0;
     std::string area6;

@@ -257,7 +257,7 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
     for (std::size_t ai = 0; ai < ariths.size(); ++ai) {
       PlotSeries s;
       s.label = "m = " + std::to_string(m) + ", " + ariths[ai];
-      s.color = kMultiplicityColors[m - 1];
+      s.color = kPalette[m - 1];
       s.dashed = ai == 0;
       std::string last = "-";
       double last_eps = 1;

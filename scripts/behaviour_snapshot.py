@@ -19,6 +19,8 @@ coordinates. Absolute paths of the source and build trees become $SRC and $BUILD
 --diff compares two snapshots and lists every file that differs (exit 1) or prints "identical".
 --remask BUILD_DIR OUT_DIR applies the masks again to the raw outputs a snapshot keeps in raw/.
 """
+import csv
+import io
 import json
 import os
 import re
@@ -51,11 +53,8 @@ def mask_times(text: str) -> str:
 
 
 def mask_csv(text: str) -> str:
-    lines = text.splitlines(keepends=True)
-    if not lines:
+    if not text:
         return text
-    import csv
-    import io
     rows = list(csv.reader(io.StringIO(text)))
     header = rows[0]
     timed = [i for i, h in enumerate(header) if "seconds" in h or h.endswith("_time") or h == "time"]
@@ -76,25 +75,22 @@ def mask_report_md(text: str) -> str:
     # The section "## Time ..." lists wall-clock times only: its numbers are masked. In every
     # Markdown table, the cells of columns whose header names a time ("exact s", "time", ratios
     # of times) are masked.
-    out, in_time, timed = [], False, set()
+    out, in_time, in_table, timed = [], False, False, set()
     for line in text.splitlines(keepends=True):
         if line.startswith("## "):
             in_time = line.startswith("## Time")
         if line.startswith("|"):
             cells = line.rstrip("\n").split("|")
-            if not timed and not re.match(r"^\|[-| :]+\|$", line.strip()) and not getattr(mask_report_md, "in_table", False):
+            if not in_table:  # the header row
                 timed = {i for i, c in enumerate(cells) if timed_column(c)}
-                mask_report_md.in_table = True
+                in_table = True
             elif timed and not re.match(r"^\|[-| :]+\|$", line.strip()):
-                cells = ["<t>" if i in timed and c.strip() else c for i, c in enumerate(cells)]
-                line = "|".join(cells) + "\n"
+                line = "|".join("<t>" if i in timed and c.strip() else c for i, c in enumerate(cells)) + "\n"
         else:
-            timed = set()
-            mask_report_md.in_table = False
+            in_table, timed = False, set()
         if in_time and not line.startswith("## "):
             line = re.sub(NUMBER, "<n>", line)
         out.append(line)
-    mask_report_md.in_table = False
     return mask_times("".join(out))
 
 

@@ -37,7 +37,7 @@ bool segments_meet(const Point2<Rational>& a, const Point2<Rational>& b, const P
 template <class T>
 bool ray_crosses(const Point2<T>& a, const Point2<T>& b, const Point2<T>& p) {
   // x of the edge at height p[1] compared with p[0], without division: sign-corrected orientation.
-  return (a[1] > p[1]) != (b[1] > p[1]) && (b[1] > a[1]) == (detail::orient2(a, b, p) > T(0));
+  return (p[1] < a[1]) != (p[1] < b[1]) && (a[1] < b[1]) == (T(0) < detail::orient2(a, b, p));
 }
 
 }  // namespace
