@@ -64,12 +64,12 @@ void untrim_star(benchmark::State& st, const TeapotSurface& surf) {
     const auto A = compose_tensor(outer, inner, to);
     tiles = A.tiles.size();
     cps = 0;
-    for (const auto& t : A.tiles) cps += t.R.size();
+    for (const auto& t : A.tiles) cps += t.R.net.size();
     if constexpr (std::is_same_v<T, Rational>) {
       BitStats b, in;
       std::size_t n = 0;
       for (const auto& t : A.tiles)
-        for (const auto& x : t.R.points) {
+        for (const auto& x : t.R.net.points) {
           const std::size_t k = bits(x);
           b.mean += static_cast<double>(k);
           b.max = std::max(b.max, k);

@@ -51,10 +51,10 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
 /// The homogeneous composition: a polynomial Bezier piece with q+1 coordinates (w*T(S), w) when S
 /// or T is rational (the weight is not required to be positive: trimmed patches evaluated only
 /// inside their region may have non-positive weights elsewhere), q coordinates otherwise.
-/// `rational` tells which.
+/// The result is `weighted` exactly then.
 template <class T>
-BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
-                                      const Limits& limits, bool& rational);
+Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                                          const Limits& limits);
 
 /// T evaluated as the polynomial (or rational) of its Bezier form at any u in R^n, inside its box
 /// or not (Observation 1). Homogeneous (w*T, w) for rational T.

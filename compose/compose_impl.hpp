@@ -220,8 +220,8 @@ std::vector<T> evaluate_bezier_anywhere(const BSpline<T>& B, const std::vector<T
 }
 
 template <class T>
-BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
-                                      const Limits& limits, bool& rational_out) {
+Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
+                                          const Limits& limits) {
   detail::check_bezier(outer, "outer");
   detail::check_bezier(inner, "inner");
   detail::check_composable(outer, inner);
@@ -314,16 +314,15 @@ BSpline<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline<T>&
     R.knots.push_back(std::move(U));
   }
   R.points = std::move(H);
-  rational_out = rational;
-  return R;
+  return Homogeneous<T>{std::move(R), rational};
 }
 
 template <class T>
 BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, CompositionMethod method,
                           const Limits& limits) {
-  bool rational = false;
-  BSpline<T> H = compose_bezier_homogeneous(outer, inner, method, limits, rational);
-  if (!rational) return H;
+  Homogeneous<T> form = compose_bezier_homogeneous(outer, inner, method, limits);
+  BSpline<T>& H = form.net;
+  if (!form.weighted) return std::move(H);
   const std::size_t q = outer.q, qq = q + 1;
   for (std::size_t K = 0; K < H.size(); ++K)
     if (!(T(0) < H.points[K * qq + q]))
@@ -334,7 +333,7 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, Comp
   std::vector<T> hom = std::move(H.points);  // set_from_homogeneous rewrites H.points
   H.q = static_cast<int>(q);
   set_from_homogeneous(H, std::move(hom), true);
-  return H;
+  return std::move(H);
 }
 
 template <class T>

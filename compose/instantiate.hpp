@@ -8,8 +8,8 @@
   template BSpline<T> compose_bezier(const BSpline<T>&, const BSpline<T>&, CompositionMethod, const Limits&);     \
   template std::vector<T> evaluate_bezier_anywhere(const BSpline<T>&, const std::vector<T>&);                    \
   template BSpline<T> compose(const BSpline<T>&, const BSpline<T>&, const CompositionOptions&, const Limits&);    \
-  template BSpline<T> compose_bezier_homogeneous(const BSpline<T>&, const BSpline<T>&, CompositionMethod,          \
-                                                 const Limits&, bool&);                                            \
+  template Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>&, const BSpline<T>&, CompositionMethod,      \
+                                                     const Limits&);                                               \
   template std::vector<T> evaluate_patch(const TrimmedPatch<T>&, const std::vector<T>&);                          \
   template struct TrimmedComposition<T>;                                                                          \
   template TrimmedComposition<T> compose_trimmed(const BSpline<T>&, const BSpline<T>&, const TrimmedOptions&,     \

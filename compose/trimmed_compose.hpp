@@ -49,8 +49,7 @@ struct TrimmedPatch {
   std::size_t outer_cell = 0;            // index into TrimmedComposition::outer_pieces
   std::vector<CellCondition<T>> region;  // conjunction; empty = the whole piece box
   RegionStatus status = RegionStatus::trimmed;
-  BSpline<T> patch;                      // T_j^e(S_i) on the inner piece's box (Observation 1)
-  bool homogeneous = false;              // patch holds (w*R, w): q+1 coordinates, divide to evaluate
+  Homogeneous<T> patch;                  // T_j^e(S_i) on the inner piece's box (Observation 1)
 };
 
 /// The point R of a homogeneous value h = (w*R, w) (the composition's rational form, Observation 1

@@ -3,32 +3,12 @@
 #include <string>
 
 #include "spline/arith.hpp"
+#include "compose/affine.hpp"
 #include "compose/compose_impl.hpp"
 #include "compose/trimmed_compose.hpp"
 
 namespace splinex {
 namespace detail {
-
-/// Whether coordinate c of a polynomial Bezier piece depends only on parameter l and affinely
-/// (Bernstein coefficients constant across the other directions, in arithmetic progression along l).
-template <class T>
-bool affine_in(const BSpline<T>& P, int c, int l) {
-  if (P.is_rational()) return false;
-  const int k = P.dim();
-  std::vector<int> deg = P.degrees, idx(k);
-  const int pl = deg[l];
-  std::vector<T> along(pl + 1);
-  std::vector<bool> seen(pl + 1, false);
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    unflatten(i, deg, idx);
-    const T& v = P.points[i * P.q + c];
-    if (!seen[idx[l]]) { along[idx[l]] = v; seen[idx[l]] = true; }
-    else if (!(along[idx[l]] == v)) return false;
-  }
-  for (int i = 1; i + 1 <= pl; ++i)
-    if (!(along[i + 1] - along[i] == along[1] - along[0])) return false;
-  return true;
-}
 
 template <class T>
 struct Candidate {
@@ -132,8 +112,8 @@ std::size_t TrimmedComposition<T>::locate(const std::vector<T>& r) const {
 
 template <class T>
 std::vector<T> evaluate_patch(const TrimmedPatch<T>& p, const std::vector<T>& r) {
-  std::vector<T> h = splinex::evaluate(p.patch, r);
-  return p.homogeneous ? divide_by_weight(h) : h;
+  std::vector<T> h = splinex::evaluate(p.patch.net, r);
+  return p.patch.weighted ? divide_by_weight(h) : h;
 }
 
 template <class T>
@@ -167,7 +147,8 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
     bool split = false;
     for (int c = 0; c < n && !split; ++c)
       for (int l = 0; l < k && !split; ++l) {
-        if (!detail::affine_in(pc.spline, c, l)) continue;
+        const auto form = affine_form(pc.spline, c);
+        if (!form || !form->only_in(l)) continue;
         const BSpline<T>& P = pc.spline;
         /// s_c(r_l) runs affinely from a (r_l = lo) to b (r_l = hi).
         const T a = P.points[c], b = P.points[(P.size() - 1) * P.q + c];
@@ -236,7 +217,7 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
         tp.outer_cell = cell;
         tp.region = std::move(conds);
         tp.status = tp.region.empty() ? RegionStatus::untrimmed : ne == 1 ? RegionStatus::trimmed : RegionStatus::unproven_nonempty;
-        tp.patch = compose_bezier_homogeneous(R.outer_pieces[cell].spline, P, options.method, limits, tp.homogeneous);
+        tp.patch = compose_bezier_homogeneous(R.outer_pieces[cell].spline, P, options.method, limits);
         R.index[{i, cell}] = R.patches.size();
         R.patches.push_back(std::move(tp));
       }

@@ -77,13 +77,13 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
           t1 += std::chrono::duration<double>(c1 - c0).count();
           t2 += std::chrono::duration<double>(c2 - c1).count();
           a1_patches += C1.patches.size();
-          for (const auto& p : C1.patches) a1_cp += p.patch.size();
+          for (const auto& p : C1.patches) a1_cp += p.patch.net.size();
           a2_tiles += A.tiles.size();
           Rational area(0);
           for (std::size_t k = 0; k < A.tiles.size(); ++k) {
             const auto& t = A.tiles[k];
-            a2_cp += t.R.size();
-            orders.insert({t.R.degrees[0] + 1, t.R.degrees[1] + 1});
+            a2_cp += t.R.net.size();
+            orders.insert({t.R.net.degrees[0] + 1, t.R.net.degrees[1] + 1});
             area += exact_from_double(t.area);
             const BSpline<Rational> Qx = to_exact(t.Q);
             for (int a = 1; a <= 2; ++a)
@@ -138,7 +138,7 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
     const auto c2 = clock::now();
     std::size_t bits = 0, coefs = 0;
     for (const auto& t : A.tiles)
-      for (const auto& v : t.R.points) {
+      for (const auto& v : t.R.net.points) {
         bits += mpz_sizeinbase(mpq_numref(v.backend().data()), 2) + mpz_sizeinbase(mpq_denref(v.backend().data()), 2);
         ++coefs;
       }

@@ -120,7 +120,7 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
         std::size_t tr = 0, un = 0, up = 0;
         for (const auto& p : C.patches) {
           (p.status == RegionStatus::untrimmed ? un : p.status == RegionStatus::trimmed ? tr : up)++;
-          orders.insert({p.patch.degrees[0] + 1, p.patch.degrees[1] + 1});
+          orders.insert({p.patch.net.degrees[0] + 1, p.patch.net.degrees[1] + 1});
         }
         n_trim += tr;
         n_untrim += un;
@@ -203,7 +203,7 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
         if (max_abs < s_abs) max_abs = s_abs;
         if (max_ref < s_ref) max_ref = s_ref;
         csv << surf.name << "," << i << "," << j << "," << C.patches.size() << "," << tr << "," << un << "," << up << ","
-            << C.isoparametric_splits << "," << C.patches[0].patch.degrees[0] + 1 << "," << C.patches[0].patch.degrees[1] + 1
+            << C.isoparametric_splits << "," << C.patches[0].patch.net.degrees[0] + 1 << "," << C.patches[0].patch.net.degrees[1] + 1
             << "," << to_double(s_abs) << "," << (s_ref == 0 ? 0.0 : to_double(Rational(s_abs / s_ref))) << "," << s_mis << ","
             << G * G << "," << std::chrono::duration<double>(t1 - t0).count() << "," << std::chrono::duration<double>(t2 - t1).count()
             << "\n";

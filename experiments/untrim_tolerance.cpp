@@ -123,9 +123,9 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
     by_piece[piece].push_back(tile_polygon(et.back()));
     area_sum[piece] += tile_area(et.back());
     row.max_chain = std::max(row.max_chain, tt.tile.x.size());
-    row.control_points += tt.R.size();
-    row.deg_x = std::max(row.deg_x, tt.R.degrees[0]);
-    row.deg_l = std::max(row.deg_l, tt.R.degrees[1]);
+    row.control_points += tt.R.net.size();
+    row.deg_x = std::max(row.deg_x, tt.R.net.degrees[0]);
+    row.deg_l = std::max(row.deg_l, tt.R.net.degrees[1]);
   }
   for (const auto& [piece, polys] : by_piece) {
     const auto& P = C.trimmed.inner_pieces[piece].spline;
@@ -139,7 +139,7 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
     const auto& tt = C.tiles[k];
     const auto& te = et[k];
     const BSpline<Rational> Q = tile_spline(te);
-    const bool homogeneous = C.trimmed.patches[tt.patch].homogeneous;
+    const bool homogeneous = tt.R.weighted;
     std::vector<std::pair<Rational, Rational>> pts;
     const std::size_t nx = te.x.size();
     const std::size_t stride = std::max<std::size_t>(1, (2 * nx) / opt.max_boundary_samples);
@@ -156,7 +156,7 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
     for (const auto& [x, l] : pts) {
       const auto r = evaluate(Q, {x, l});
       const auto good = evaluate(T, evaluate(S, r));
-      auto bad = evaluate_exactly(tt.R, {x, l});
+      auto bad = evaluate_exactly(tt.R.net, {x, l});
       if (homogeneous) {
         const Rational w = bad.back();
         bad.pop_back();

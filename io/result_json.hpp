@@ -67,8 +67,8 @@ Json tensor_composition_to_json(const TensorComposition<F>& A) {
                      {"tile", tile_to_json(t.tile)},
                      {"area", Tr::to_json(t.area)},
                      {"coons_patch", spline_to_json(t.Q)},
-                     {"homogeneous", p.homogeneous},
-                     {"patch", spline_to_json(t.R)}});
+                     {"homogeneous", p.patch.weighted},
+                     {"patch", spline_to_json(t.R.net)}});
   }
   return Json{{"tiles", tiles},
               {"straight_trimming_curves", A.straight_boundaries},
@@ -134,8 +134,8 @@ Json trimmed_composition_to_json(const TrimmedComposition<F>& C, double eps) {
                       {"status", p.status == RegionStatus::untrimmed ? "untrimmed"
                                  : p.status == RegionStatus::trimmed ? "trimmed" : "unproven_nonempty"},
                       {"region", region},
-                      {"homogeneous", p.homogeneous},
-                      {"patch", spline_to_json(p.patch)}});
+                      {"homogeneous", p.patch.weighted},
+                      {"patch", spline_to_json(p.patch.net)}});
   }
   return Json{{"pieces", pieces}, {"isoparametric_splits", C.isoparametric_splits},
               {"region_rule", "each condition on the inner spline's coordinate s_c = S(r)_c: at_least lo, below hi "

@@ -6,14 +6,6 @@
 
 namespace splinex {
 
-namespace {
-
-std::string vname(std::size_t l, std::size_t i) {
-  return "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
-}
-
-}  // namespace
-
 TrimmedDomain trimmed_domain_from_json(const Json& doc) {
   if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"trimmed_domain\", ...}");
   for (auto it = doc.begin(); it != doc.end(); ++it)
@@ -35,12 +27,12 @@ TrimmedDomain trimmed_domain_from_json(const Json& doc) {
     throw ParseError("loops", "must be an array of loops", "give [[[x, y], ...], ...]");
   for (std::size_t l = 0; l < doc["loops"].size(); ++l) {
     const auto& L = doc["loops"][l];
-    if (!L.is_array()) throw ParseError("loops[" + std::to_string(l) + "]", "is not an array of points", "give [[x, y], ...]");
+    if (!L.is_array()) throw ParseError(loop_field(l), "is not an array of points", "give [[x, y], ...]");
     Polygon P;
     std::vector<Polygon> C;
     for (std::size_t i = 0; i < L.size(); ++i) {
       if (L[i].is_object()) {
-        const std::string f = "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
+        const std::string f = vertex_field(l, i);
         if (L[i].size() != 1 || !L[i].contains("controls") || !L[i]["controls"].is_array())
           throw ParseError(f, "is an object but not {\"controls\": [[x, y], ...]}", "give a vertex [x, y] or an edge's inner control points");
         if (P.empty() || C.back().size() > 0)
@@ -55,8 +47,8 @@ TrimmedDomain trimmed_domain_from_json(const Json& doc) {
         if (C.back().empty()) throw ParseError(f, "has no control points", "drop the item for a straight edge");
         continue;
       }
-      if (!L[i].is_array() || L[i].size() != 2) throw ParseError(vname(l, i), "must be [x, y]", "give two numbers");
-      P.push_back({json_number(L[i][0], vname(l, i) + "[0]"), json_number(L[i][1], vname(l, i) + "[1]")});
+      if (!L[i].is_array() || L[i].size() != 2) throw ParseError(vertex_field(l, i), "must be [x, y]", "give two numbers");
+      P.push_back({json_number(L[i][0], vertex_field(l, i) + "[0]"), json_number(L[i][1], vertex_field(l, i) + "[1]")});
       C.emplace_back();
     }
     D.controls.push_back(std::move(C));

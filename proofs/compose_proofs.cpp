@@ -216,7 +216,7 @@ void compose_trimmed(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator
         S.points[unit[l] * n + c] = S.points[c] + (S.points[unit[l] * n + c] - S.points[c]) / k;
   }
   auto C = compose_trimmed(T, S);
-  for (auto& patch : C.patches) patch.patch = planted(patch.patch);
+  for (auto& patch : C.patches) patch.patch.net = planted(patch.patch.net);
   std::size_t checked = 0;
   auto check = [&](const std::vector<Rational>& r) -> bool {
     ++checked;

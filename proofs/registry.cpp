@@ -96,9 +96,7 @@ void Accumulator::structures(const std::vector<std::string>& tags) {
 
 void compare_nets(Accumulator& acc, const BSpline<Rational>& A, const BSpline<Rational>& B, const std::string& what,
                   std::size_t case_no) {
-  const bool same = A.degrees == B.degrees && A.knots == B.knots && A.q == B.q && A.points == B.points &&
-                    A.weights == B.weights;
-  if (!same) return acc.fail(what, case_no);
+  if (!same_net(A, B)) return acc.fail(what, case_no);
   std::size_t n = A.points.size() + A.weights.size();
   for (const auto& K : A.knots) n += K.size();
   acc.compared(n);

@@ -35,7 +35,7 @@ void untrim_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& a
     for (int a = 0; a <= 1; ++a)
       for (int d = 0; d < 2; ++d) S.points.push_back(c[d] + e1[d] * a + e2[d] * b);
   auto A = compose_tensor(T, S);
-  for (auto& tile : A.tiles) tile.R = planted(tile.R);
+  for (auto& tile : A.tiles) tile.R.net = planted(tile.R.net);
   if (A.curved_boundaries != 0) acc.fail("a curved trimming curve for affine S", i);
   // Cover: per inner piece.
   std::vector<std::vector<Polygon>> polys(A.trimmed.inner_pieces.size());
@@ -68,8 +68,8 @@ void untrim_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& a
     const auto& t = A.tiles[k];
     // Both sides: T(S(Q)) (Q's cells, degree dT) and R (its own cells and degrees).
     PiecewiseShape tsq{{t.tile.x, {Rational(0), Rational(1)}}, {dT, dT}, {0, 0}};
-    const auto cuts = union_cuts(tsq, shape_of(t.R), {{t.tile.x.front(), t.tile.x.back()}, {Rational(0), Rational(1)}});
-    acc.add(prove_by_samples(cuts, identity_bound(tsq, shape_of(t.R)),
+    const auto cuts = union_cuts(tsq, shape_of(t.R.net), {{t.tile.x.front(), t.tile.x.back()}, {Rational(0), Rational(1)}});
+    acc.add(prove_by_samples(cuts, identity_bound(tsq, shape_of(t.R.net)),
                              [&](const std::vector<Rational>& xl) -> std::string {
                                const auto a = A.evaluate_tile(k, xl);
                                const auto b = evaluate(T, evaluate(S, evaluate(t.Q, xl)));

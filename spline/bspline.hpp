@@ -39,6 +39,27 @@ struct BSpline {
   T domain_hi(int d) const { return knots[d][count(d)]; }
 };
 
+/// A spline in homogeneous form (papers/000 Observation 1; The NURBS Book Section 4.2): `net` is a
+/// polynomial spline. When `weighted`, its last coordinate is the weight w and the others are w*P
+/// (q() = net.q - 1 Cartesian coordinates, the weight not required to be positive); otherwise `net`
+/// is the polynomial spline itself. The type carries the convention, so a polynomial net with q+1
+/// coordinates is never mistaken for a spline with q.
+template <class T>
+struct Homogeneous {
+  BSpline<T> net;
+  bool weighted = false;
+
+  /// Cartesian coordinates per point.
+  int q() const { return weighted ? net.q - 1 : net.q; }
+};
+
+/// The same representation: degrees, knot vectors, homogeneous flag and every stored number equal
+/// (not the same function: use the proofs' identity checker for that).
+template <class T>
+bool same_net(const BSpline<T>& A, const BSpline<T>& B) {
+  return A.degrees == B.degrees && A.knots == B.knots && A.q == B.q && A.points == B.points && A.weights == B.weights;
+}
+
 /// Checks every structural rule and throws ValidationError/DomainError naming the field.
 /// Weights must be positive (zero or negative weights make the homogeneous form degenerate).
 template <class T>

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "compose/affine.hpp"
 #include "exact/flint_rational.hpp"
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
@@ -21,35 +22,13 @@ T from_dbl(double x) {
   return ArithTraits<T>::from_rational(exact_from_double(x));
 }
 
-// Coordinate c of the Bezier piece P as an affine function alpha + beta r + gamma t, if it is one
-// (its Bernstein coefficients are those of that function at P's degrees).
-template <class T>
-bool affine_coordinate(const BSpline<T>& P, int c, T& alpha, T& beta, T& gamma) {
-  if (P.is_rational()) return false;
-  const int p0 = P.degrees[0], p1 = P.degrees[1];
-  const T r0 = P.domain_lo(0), r1 = P.domain_hi(0), t0 = P.domain_lo(1), t1 = P.domain_hi(1);
-  const std::size_t n0 = P.count(0);
-  auto coef = [&](std::size_t i, std::size_t j) { return P.points[(j * n0 + i) * P.q + c]; };
-  const T f00 = coef(0, 0);
-  beta = p0 == 0 ? T(0) : (coef(p0, 0) - f00) / (r1 - r0);
-  gamma = p1 == 0 ? T(0) : (coef(0, p1) - f00) / (t1 - t0);
-  alpha = f00 - beta * r0 - gamma * t0;
-  for (int j = 0; j <= p1; ++j)
-    for (int i = 0; i <= p0; ++i) {
-      const T r = p0 == 0 ? r0 : r0 + (r1 - r0) * T(i) / T(p0);
-      const T t = p1 == 0 ? t0 : t0 + (t1 - t0) * T(j) / T(p1);
-      if (!(coef(i, j) == alpha + beta * r + gamma * t)) return false;
-    }
-  return true;
-}
-
 }  // namespace
 
 template <class T>
 std::vector<T> TensorComposition<T>::evaluate_tile(std::size_t k, const std::vector<T>& xl) const {
   const auto& tt = tiles.at(k);
-  auto v = evaluate(tt.R, xl);
-  return trimmed.patches[tt.patch].homogeneous ? divide_by_weight(v) : v;
+  auto v = evaluate(tt.R.net, xl);
+  return tt.R.weighted ? divide_by_weight(v) : v;
 }
 
 template <class T>
@@ -94,8 +73,8 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
     for (std::size_t l = 0; l < levels.size(); ++l) {
       const int c = levels[l].first;
       const T& L = levels[l].second;
-      T al, be, ga;
-      if (affine_coordinate(P, c, al, be, ga)) {
+      if (const auto form = affine_form(P, c)) {
+        const T &al = form->alpha, &be = form->beta[0], &ga = form->beta[1];
         straight[l] = true;
         ++R.straight_boundaries;
         // The line al + be r + ga t = L against the box: corners on it and strict edge crossings.
@@ -181,7 +160,7 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
       co.method = options.trimmed.method;
       co.expand = true;
       // The patch is polynomial (homogeneous if rational): compose its Bezier form with Q.
-      tt.R = compose(C.patches[tt.patch].patch, tt.Q, co, limits);
+      tt.R = {compose(C.patches[tt.patch].patch.net, tt.Q, co, limits), C.patches[tt.patch].patch.weighted};
       tt.area = tile_area(tile);
       tt.tile = std::move(tile);
       R.tiles.push_back(std::move(tt));

@@ -41,7 +41,7 @@ struct TensorTile {
   std::size_t patch = 0;  // index into TensorComposition::trimmed.patches
   Tile<T> tile;           // in the inner piece's parameters (x = r_0, y = r_1)
   BSpline<T> Q;           // the tile's Coons patch, degree (1, 1), on [x_0, x_m] x [0, 1]
-  BSpline<T> R;           // T_j^e(S_i(Q)); homogeneous (q+1 coordinates) if the patch is
+  Homogeneous<T> R;       // T_j^e(S_i(Q)), weighted when the patch is
   T area;                 // exact parameter area of the tile (in S's parameters)
 };
 

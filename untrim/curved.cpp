@@ -16,9 +16,6 @@ namespace {
 using poly::Poly;
 
 std::string qs(const Rational& v) { return ArithTraits<Rational>::to_string(v); }
-std::string edge_name(std::size_t l, std::size_t i) {
-  return "loops[" + std::to_string(l) + "] edge " + std::to_string(i);
-}
 
 // A loop edge in the sweep's terms: a vertical segment, or a graph arc y = f(x) oriented left to right.
 struct Edge {
@@ -107,7 +104,7 @@ void validate_curved_domain(const TrimmedDomain& D) {
                           "give one list of edge controls per loop");
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     const auto& L = D.loops[l];
-    const std::string f = "loops[" + std::to_string(l) + "]";
+    const std::string f = loop_field(l);
     if (D.controls[l].size() != L.size())
       throw ValidationError(f, "has " + std::to_string(D.controls[l].size()) + " edge control lists for " +
                                    std::to_string(L.size()) + " edges",
@@ -118,16 +115,16 @@ void validate_curved_domain(const TrimmedDomain& D) {
       const Polygon P = D.edge(l, i);
       const int deg = static_cast<int>(P.size()) - 1;
       if (deg > 100)
-        throw SizeLimitError(edge_name(l, i), "has degree " + std::to_string(deg) + ", above the limit of 100",
+        throw SizeLimitError(edge_field(l, i), "has degree " + std::to_string(deg) + ", above the limit of 100",
                              "split the edge into pieces of lower degree");
       if (deg == 1) continue;
       const auto &a = P.front(), &b = P.back();
       if (a[0] == b[0])
-        throw ValidationError(edge_name(l, i), "is curved with both end points at x = " + qs(a[0]) + " (not a graph y = f(x))",
+        throw ValidationError(edge_field(l, i), "is curved with both end points at x = " + qs(a[0]) + " (not a graph y = f(x))",
                               "split the curve into graphs over x (pieces between its x-extremes)");
       for (int j = 1; j < deg; ++j)
         if (P[j][0] != a[0] + (b[0] - a[0]) * Rational(j, deg))
-          throw ValidationError(edge_name(l, i),
+          throw ValidationError(edge_field(l, i),
                                 "is not a graph y = f(x): control point " + std::to_string(j) + " has x = " + qs(P[j][0]) +
                                     ", not " + qs(Rational(a[0] + (b[0] - a[0]) * Rational(j, deg))),
                                 "give curved edges with control x evenly spaced between the end points (x affine in "
@@ -145,7 +142,7 @@ void validate_curved_domain(const TrimmedDomain& D) {
       for (int k = 0; k <= m; ++k) {
         const Rational x = e.x0 + (e.x1 - e.x0) * Rational(k, m), y = poly::eval(e.f, x);
         if (y < D.lo[1] || D.hi[1] < y)
-          throw DomainError(edge_name(e.loop, e.index), "leaves the domain: at x = " + qs(x) + " the curve is " +
+          throw DomainError(edge_field(e.loop, e.index), "leaves the domain: at x = " + qs(x) + " the curve is " +
                                                             (y < D.lo[1] ? "below y = " + qs(D.lo[1]) : "above y = " + qs(D.hi[1])),
                             "keep trimming curves inside the parameter box");
       }
@@ -156,7 +153,7 @@ void validate_curved_domain(const TrimmedDomain& D) {
           !std::all_of(e.c.begin(), e.c.end(), [&](const Rational& y) { return !(y < D.lo[1]) && !(D.hi[1] < y); }) &&
           (poly::exists_positive({poly::sub(e.f, Poly{D.hi[1]})}, e.x0, e.x1) ||
            poly::exists_positive({poly::sub(Poly{D.lo[1]}, e.f)}, e.x0, e.x1)))
-        throw DomainError(edge_name(e.loop, e.index), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
+        throw DomainError(edge_field(e.loop, e.index), "leaves the domain: the curve crosses y = " + qs(D.lo[1]) + " or y = " + qs(D.hi[1]),
                           "keep trimming curves inside the parameter box");
   // Every pair of edges whose x-ranges meet (an interval join, not all pairs); the first meeting
   // pair in loop order is reported.
@@ -179,7 +176,7 @@ void validate_curved_domain(const TrimmedDomain& D) {
   if (first) throw_meeting_edges(*first);
   for (std::size_t l = 0; l < D.loops.size(); ++l)
     if (loop_signed_area(D, l) == 0)
-      throw ValidationError("loops[" + std::to_string(l) + "]", "is degenerate: encloses zero area", "give a loop that encloses a region");
+      throw ValidationError(loop_field(l), "is degenerate: encloses zero area", "give a loop that encloses a region");
 }
 
 Rational loop_signed_area(const TrimmedDomain& D, std::size_t l) {
@@ -200,10 +197,10 @@ Rational loop_signed_area(const TrimmedDomain& D, std::size_t l) {
 void throw_meeting_edges(const std::array<std::size_t, 4>& pair) {
   const auto [l, m, i, j] = pair;
   if (l == m)
-    throw ValidationError("loops[" + std::to_string(l) + "]",
+    throw ValidationError(loop_field(l),
                           "is self-intersecting (edge " + std::to_string(i) + " and edge " + std::to_string(j) + " meet)",
                           "split it into simple loops (no edge may cross or touch another)");
-  throw ValidationError("loops[" + std::to_string(m) + "]",
+  throw ValidationError(loop_field(m),
                         "meets loops[" + std::to_string(l) + "] (edge " + std::to_string(j) + " and edge " + std::to_string(i) + ")",
                         "trimming loops must be disjoint; merge them into one simple loop");
 }
@@ -250,7 +247,7 @@ std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::arr
             continue;
           }
           const bool box = k == D.lo[1] || k == D.hi[1];
-          throw DomainError(edge_name(e.loop, e.index),
+          throw DomainError(edge_field(e.loop, e.index),
                             std::string(box ? "touches the domain's edge" : "crosses the knot line") + " y = " + qs(k) +
                                 " at an irrational x in [" + qs(r.root.lo) + ", " + qs(r.root.hi) + "]",
                             "exact untrimming ends tiles at rational points only: choose a curve (or knot line) whose "
@@ -262,9 +259,9 @@ std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::arr
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
-  std::vector<Tile<Rational>> tiles;
-  // Open tiles by their right side (x, y_bottom, y_top).
-  std::map<std::array<Rational, 3>, std::size_t> open;
+  // The straight sweep's bookkeeping (TileAssembler): trapezoids continue the open tile whose right
+  // side is their left side; every tile has label 0.
+  TileAssembler<Rational> tiles;
   for (std::size_t s = 0; s + 1 < xs.size(); ++s) {
     const Rational &xa = xs[s], &xb = xs[s + 1];
     struct Active {
@@ -288,37 +285,21 @@ std::vector<Tile<Rational>> untrim_curved(const TrimmedDomain& D, const std::arr
       else
         merged.push_back(std::move(a));
     int parity = 0;
-    std::map<std::array<Rational, 3>, std::size_t> next_open;
     for (std::size_t m = 0; m + 1 < merged.size(); ++m) {
       parity ^= merged[m].loop ? 1 : 0;
       if (!parity) continue;
       const auto &lo = merged[m].c, &hi = merged[m + 1].c;
-      const std::array<Rational, 3> left{xa, lo.front(), hi.front()}, right{xb, lo.back(), hi.back()};
-      std::size_t t;
-      const auto it = open.find(left);
-      if (it != open.end()) {
-        t = it->second;
-        open.erase(it);
-      } else {
-        t = tiles.size();
-        Tile<Rational> tl;
-        tl.label = 0;
-        tl.x = {xa};
-        tl.yb = {lo.front()};
-        tl.yt = {hi.front()};
-        tiles.push_back(std::move(tl));
-      }
-      auto& tl = tiles[t];
+      const std::size_t t = tiles.open_at(0, xa, lo.front(), hi.front());
+      auto& tl = tiles.tiles()[t];
       tl.x.push_back(xb);
       tl.yb.push_back(lo.back());
       tl.yt.push_back(hi.back());
       tl.bottom.push_back(lo.size() < 2 ? std::vector<Rational>{lo.front(), lo.front()} : lo);
       tl.top.push_back(hi.size() < 2 ? std::vector<Rational>{hi.front(), hi.front()} : hi);
-      next_open.emplace(right, t);
+      tiles.close(t, xb, lo.back(), hi.back());
     }
-    open = std::move(next_open);
   }
-  return tiles;
+  return std::move(tiles.tiles());
 }
 
 CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Rational>>& tiles) {
@@ -376,14 +357,14 @@ CoverCertificate certify_cover(const TrimmedDomain& D, const std::vector<Tile<Ra
       ++cc.edge_checks;
       const Rational b = poly::eval(P.b, e.x0), t = poly::eval(P.t, e.x0);
       if (std::max(b, e.c[0]) < std::min(t, e.c[1]))
-        fail(edge_name(e.loop, e.index) + " passes through the interior of tile " + std::to_string(P.tile));
+        fail(edge_field(e.loop, e.index) + " passes through the interior of tile " + std::to_string(P.tile));
       return;
     }
     const Rational u = std::max(P.x0, e.x0), v = std::min(P.x1, e.x1);
     if (!(u < v)) return;
     ++cc.edge_checks;
     if (poly::exists_positive({poly::sub(e.f, P.b), poly::sub(P.t, e.f)}, u, v))
-      fail(edge_name(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
+      fail(edge_field(e.loop, e.index) + " enters the interior of tile " + std::to_string(P.tile) + " over x in (" + qs(u) +
            ", " + qs(v) + ")");
   });
   // 3. Every connected part of every tile is in the region: a sample between consecutive roots of

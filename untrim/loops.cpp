@@ -14,10 +14,6 @@ namespace {
 using poly::Poly;
 using poly::bernstein_monomial;
 
-std::string vname(std::size_t l, std::size_t i) {
-  return "loops[" + std::to_string(l) + "][" + std::to_string(i) + "]";
-}
-
 // Closed segments [a, b] and [c, d] share a point (exact orientation tests).
 bool segments_meet(const Point2<Rational>& a, const Point2<Rational>& b, const Point2<Rational>& c, const Point2<Rational>& d) {
   using detail::orient2;
@@ -55,10 +51,10 @@ void validate_loop_vertices(const TrimmedDomain& D, std::size_t l) {
   const auto qs = [](const Rational& v) { return ArithTraits<Rational>::to_string(v); };
   for (std::size_t i = 0; i < L.size(); ++i) {
     if (L[i] == L[(i + 1) % L.size()])
-      throw ValidationError(vname(l, i), "is degenerate: repeats the next vertex (zero-length edge)", "remove the repeated vertex");
+      throw ValidationError(vertex_field(l, i), "is degenerate: repeats the next vertex (zero-length edge)", "remove the repeated vertex");
     for (int d = 0; d < 2; ++d)
       if (L[i][d] < D.lo[d] || D.hi[d] < L[i][d])
-        throw DomainError(vname(l, i), "leaves the domain: coordinate " + std::to_string(d) + " is " + qs(L[i][d]) + ", outside [" +
+        throw DomainError(vertex_field(l, i), "leaves the domain: coordinate " + std::to_string(d) + " is " + qs(L[i][d]) + ", outside [" +
                                            qs(D.lo[d]) + ", " + qs(D.hi[d]) + "]",
                           "keep trimming loops inside the parameter box");
   }
@@ -74,7 +70,7 @@ void validate_domain(const TrimmedDomain& D) {
   }
   for (std::size_t l = 0; l < D.loops.size(); ++l) {
     const auto& L = D.loops[l];
-    const std::string f = "loops[" + std::to_string(l) + "]";
+    const std::string f = loop_field(l);
     if (L.size() < 3)
       throw ValidationError(f, "is degenerate: " + std::to_string(L.size()) + " vertices", "give at least 3 vertices");
     validate_loop_vertices(D, l);

@@ -13,6 +13,7 @@
 // F = int f dx).
 #pragma once
 #include <array>
+#include <string>
 #include <vector>
 
 #include "exact/rational.hpp"
@@ -20,6 +21,17 @@
 #include "untrim/polygon.hpp"
 
 namespace splinex {
+
+/// The document field naming loop l ("loops[l]"), for errors.
+inline std::string loop_field(std::size_t l) { return "loops[" + std::to_string(l) + "]"; }
+/// The document field naming vertex i of loop l ("loops[l][i]"), for errors.
+inline std::string vertex_field(std::size_t l, std::size_t i) {
+  return loop_field(l) + "[" + std::to_string(i) + "]";
+}
+/// The field naming edge i of loop l (from vertex i to vertex i + 1), for errors.
+inline std::string edge_field(std::size_t l, std::size_t i) {
+  return loop_field(l) + " edge " + std::to_string(i);
+}
 
 struct TrimmedDomain {
   std::array<Rational, 2> lo, hi;  // the box [lo_0, hi_0] x [lo_1, hi_1]

@@ -200,18 +200,33 @@ std::vector<Trapezoid<T>> vertical_decomposition(const std::vector<Segment2<T>>&
   return out;
 }
 
-/// Trapezoids (in sweep order) with labels merged into tiles: a trapezoid continues a tile of the
-/// same label whose right side is exactly its left side, unless that side lies on one of the
-/// vertical `barriers` (the knot lines x = k of a surface the tiles are composed into: a tile must
-/// not cross them). Labels < 0 are dropped (outside).
+/// The open-tile bookkeeping of a left-to-right sweep, shared by the straight sweep
+/// (merge_trapezoids) and the curved one (untrim/curved.cpp): a trapezoid whose left side
+/// (x, y_bottom, y_top) and label are exactly the right side of an open tile continues that tile;
+/// otherwise it starts a new one. Keys are ordered by comparisons only (the arithmetic concept).
 template <class T>
-std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, const std::vector<int>& labels,
-                                      std::vector<T> barriers = {}) {
-  const auto less = [](const T& a, const T& b) { return a < b; };
-  std::sort(barriers.begin(), barriers.end(), less);
-  const auto on_barrier = [&](const T& x) { return std::binary_search(barriers.begin(), barriers.end(), x, less); };
-  std::vector<Tile<T>> tiles;
-  /// Open tiles keyed by their right side (x, yb, yt) in a map ordered by comparisons only.
+class TileAssembler {
+ public:
+  /// The tile a trapezoid with this left side and label belongs to (a new one when `may_continue`
+  /// is false, e.g. on a barrier, or when no open tile ends there). The caller appends the
+  /// trapezoid's right samples to tiles()[t] and then calls close(t, ...).
+  std::size_t open_at(int label, const T& x0, const T& yb0, const T& yt0, bool may_continue = true) {
+    const auto it = may_continue ? open_.find(Key{x0, yb0, yt0, label}) : open_.end();
+    if (it != open_.end()) {
+      const std::size_t t = it->second;
+      open_.erase(it);
+      return t;
+    }
+    tiles_.push_back(Tile<T>{label, {x0}, {yb0}, {yt0}, {}, {}});
+    return tiles_.size() - 1;
+  }
+  /// Tile t now ends at the right side (x1, yb1, yt1).
+  void close(std::size_t t, const T& x1, const T& yb1, const T& yt1) {
+    open_.emplace(Key{x1, yb1, yt1, tiles_[t].label}, t);
+  }
+  std::vector<Tile<T>>& tiles() { return tiles_; }
+
+ private:
   struct Key {
     T x, yb, yt;
     int label;
@@ -225,20 +240,26 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
       return label < o.label;
     }
   };
-  std::map<Key, std::size_t> open;
+  std::vector<Tile<T>> tiles_;
+  std::map<Key, std::size_t> open_;
+};
+
+/// Trapezoids (in sweep order) with labels merged into tiles: a trapezoid continues a tile of the
+/// same label whose right side is exactly its left side, unless that side lies on one of the
+/// vertical `barriers` (the knot lines x = k of a surface the tiles are composed into: a tile must
+/// not cross them). Labels < 0 are dropped (outside).
+template <class T>
+std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, const std::vector<int>& labels,
+                                      std::vector<T> barriers = {}) {
+  const auto less = [](const T& a, const T& b) { return a < b; };
+  std::sort(barriers.begin(), barriers.end(), less);
+  const auto on_barrier = [&](const T& x) { return std::binary_search(barriers.begin(), barriers.end(), x, less); };
+  TileAssembler<T> tiles;
   for (std::size_t i = 0; i < traps.size(); ++i) {
     if (labels[i] < 0) continue;
     const auto& z = traps[i];
-    const auto it = on_barrier(z.x0) ? open.end() : open.find(Key{z.x0, z.yb0, z.yt0, labels[i]});
-    std::size_t t;
-    if (it != open.end()) {
-      t = it->second;
-      open.erase(it);
-    } else {
-      t = tiles.size();
-      tiles.push_back(Tile<T>{labels[i], {z.x0}, {z.yb0}, {z.yt0}, {}, {}});
-    }
-    auto& tl = tiles[t];
+    const std::size_t t = tiles.open_at(labels[i], z.x0, z.yb0, z.yt0, !on_barrier(z.x0));
+    auto& tl = tiles.tiles()[t];
     /// Drop the previous sample when both chains run straight through it, decided exactly by
     /// orientation. Not in floating point: there a chain's sample y_at(s, x) is rounded off the
     /// segment s, and a tile that drops it no longer shares the boundary with its neighbour that
@@ -262,9 +283,9 @@ std::vector<Tile<T>> merge_trapezoids(const std::vector<Trapezoid<T>>& traps, co
       tl.yb.push_back(z.yb1);
       tl.yt.push_back(z.yt1);
     }
-    open.emplace(Key{z.x1, z.yb1, z.yt1, labels[i]}, t);
+    tiles.close(t, z.x1, z.yb1, z.yt1);
   }
-  return tiles;
+  return std::move(tiles.tiles());
 }
 
 /// The tile with every number converted by conv (e.g. exact tiles rounded, or float tiles taken exactly).

@@ -135,8 +135,8 @@ TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
     // Tiles reproduce T(S) exactly inside (the tile's own parametrization, not S's).
     for (std::size_t k = 0; k < A.tiles.size(); ++k) {
       const auto& t = A.tiles[k];
-      const auto deg = A.trimmed.patches[t.patch].patch.degrees;
-      CHECK(t.R.degrees == std::vector<int>{deg[0] + deg[1], deg[0] + deg[1]});
+      const auto deg = A.trimmed.patches[t.patch].patch.net.degrees;
+      CHECK(t.R.net.degrees == std::vector<int>{deg[0] + deg[1], deg[0] + deg[1]});
       for (int a = 1; a <= 3; ++a)
         for (int b = 1; b <= 3; ++b) {
           const Rational x = t.tile.x.front() + (t.tile.x.back() - t.tile.x.front()) * Rational(a, 4);
