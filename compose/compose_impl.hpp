@@ -356,55 +356,55 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
     bezier_pieces_size(outer, limits);
     bezier_pieces_size(inner, limits);
   }
-  const auto tp = extract_bezier(outer, limits);
-  const auto sp = extract_bezier(inner, limits);
-  std::vector<std::vector<T>> tb(n);  // breakpoints of T per direction
-  std::vector<std::size_t> tstride(n);
+  const auto outer_pieces = extract_bezier(outer, limits);
+  const auto inner_pieces = extract_bezier(inner, limits);
+  std::vector<std::vector<T>> outer_breaks(n);  // per direction
+  std::vector<std::size_t> cell_stride(n);
   std::size_t st = 1;
   for (int j = 0; j < n; ++j) {
-    tb[j] = breakpoints(outer.knots[j], outer.degrees[j], outer.count(j));
-    tstride[j] = st;
-    st *= tb[j].size() - 1;
+    outer_breaks[j] = breakpoints(outer.knots[j], outer.degrees[j], outer.count(j));
+    cell_stride[j] = st;
+    st *= outer_breaks[j].size() - 1;
   }
   /// A knot line of T where T may jump: multiplicity e_j + 1 (a C^-1 knot; degree 0 has one at
   /// every breakpoint).
   auto outer_jumps_at = [&](int j, const T& x) { return is_full_multiplicity(outer.knots[j], outer.degrees[j], x); };
-  std::vector<std::vector<T>> sb(k);
-  std::vector<std::size_t> sstride(k);
+  std::vector<std::vector<T>> inner_breaks(k);
+  std::vector<std::size_t> piece_stride(k);
   std::size_t ss = 1;
   for (int l = 0; l < k; ++l) {
-    sb[l] = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l));
-    sstride[l] = ss;
-    ss *= sb[l].size() - 1;
+    inner_breaks[l] = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l));
+    piece_stride[l] = ss;
+    ss *= inner_breaks[l].size() - 1;
   }
   /// Pass 1: the cell of T that holds each piece of S (exact control-point hull).
-  std::vector<std::vector<std::size_t>> piece_cell(sp.size(), std::vector<std::size_t>(n));
-  for (std::size_t pi = 0; pi < sp.size(); ++pi) {
-    const auto& S = sp[pi].spline;
+  std::vector<std::vector<std::size_t>> piece_cell(inner_pieces.size(), std::vector<std::size_t>(n));
+  for (std::size_t pi = 0; pi < inner_pieces.size(); ++pi) {
+    const auto& S = inner_pieces[pi].spline;
     for (int j = 0; j < n; ++j) {
       const auto hull = detail::hull_range(S, j);
       const auto& [lo, hi] = hull;
       if (!options.expand)
-        detail::check_hull_in_domain(hull, tb[j], j,
+        detail::check_hull_in_domain(hull, outer_breaks[j], j,
                                      "move the inner spline into the outer domain, or ask for expanded pieces (--expand)");
-      /// The cell c with tb[c] <= lo and hi <= tb[c+1]; clamped to the end cells when expanding.
-      const std::size_t c = detail::cell_index(tb[j], lo);
-      if (tb[j][c + 1] < hi && !(c + 2 >= tb[j].size() && options.expand))
+      /// The cell c with outer_breaks[c] <= lo and hi <= outer_breaks[c+1]; clamped to the end cells when expanding.
+      const std::size_t c = detail::cell_index(outer_breaks[j], lo);
+      if (outer_breaks[j][c + 1] < hi && !(c + 2 >= outer_breaks[j].size() && options.expand))
         throw DomainError("inner", "a piece crosses the knot line u_" + std::to_string(j) + " = " +
-                                       ArithTraits<T>::to_string(tb[j][c + 1]) + " of the outer spline",
+                                       ArithTraits<T>::to_string(outer_breaks[j][c + 1]) + " of the outer spline",
                           "compose with --method trimmed (Algorithm 1: trimmed patches across knot lines)");
       // A piece below an interior knot line x of T that reaches x (hi == x) at a parameter it owns
       // (FindSpan's half-open rule: the left end, and the right end only at S's domain end) takes
       // the value of T's upper piece there. If T may jump at x, T(S) is then no polynomial on the
       // piece. Bernstein coefficients <= x reach x only where a corner value does.
-      if (lo < hi && hi == tb[j][c + 1] && c + 2 < tb[j].size() && outer_jumps_at(j, hi)) {
+      if (lo < hi && hi == outer_breaks[j][c + 1] && c + 2 < outer_breaks[j].size() && outer_jumps_at(j, hi)) {
         const std::size_t corners = std::size_t(1) << k;
         for (std::size_t m = 0; m < corners; ++m) {
           bool owned = true;
           std::size_t idx = 0, stride = 1;
           for (int l = 0; l < k; ++l) {
             const bool right = (m >> l) & 1;
-            if (right && !(sp[pi].box[l].second == inner.domain_hi(l))) owned = false;
+            if (right && !(inner_pieces[pi].box[l].second == inner.domain_hi(l))) owned = false;
             idx += (right ? S.count(l) - 1 : 0) * stride;
             stride *= S.count(l);
           }
@@ -425,65 +425,65 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
   /// only the inputs' structure, so every arithmetic gives the same knots.
   std::vector<std::vector<char>> jump(k);
   for (int l = 0; l < k; ++l) {
-    jump[l].assign(sb[l].size(), 0);
-    for (std::size_t b = 1; b + 1 < sb[l].size(); ++b)
-      jump[l][b] = D[l] == 0 || is_full_multiplicity(inner.knots[l], inner.degrees[l], sb[l][b]);
+    jump[l].assign(inner_breaks[l].size(), 0);
+    for (std::size_t b = 1; b + 1 < inner_breaks[l].size(); ++b)
+      jump[l][b] = D[l] == 0 || is_full_multiplicity(inner.knots[l], inner.degrees[l], inner_breaks[l][b]);
   }
-  for (std::size_t pi = 0; pi < sp.size(); ++pi)
+  for (std::size_t pi = 0; pi < inner_pieces.size(); ++pi)
     for (int l = 0; l < k; ++l) {
-      const std::size_t seg = (pi / sstride[l]) % (sb[l].size() - 1);
-      if (seg + 1 >= sb[l].size() - 1) continue;
-      const std::size_t other = pi + sstride[l];  // the neighbour across breakpoint seg + 1
+      const std::size_t seg = (pi / piece_stride[l]) % (inner_breaks[l].size() - 1);
+      if (seg + 1 >= inner_breaks[l].size() - 1) continue;
+      const std::size_t other = pi + piece_stride[l];  // the neighbour across breakpoint seg + 1
       for (int j = 0; j < n && !jump[l][seg + 1]; ++j) {
         const std::size_t a = std::min(piece_cell[pi][j], piece_cell[other][j]),
                           b = std::max(piece_cell[pi][j], piece_cell[other][j]);
         for (std::size_t c = a + 1; c <= b; ++c)
-          if (outer_jumps_at(j, tb[j][c])) jump[l][seg + 1] = 1;
+          if (outer_jumps_at(j, outer_breaks[j][c])) jump[l][seg + 1] = 1;
       }
     }
   /// The result net: per direction, first control point of each segment.
   std::vector<std::vector<std::size_t>> offset(k);
-  std::vector<std::size_t> rcount(k), rstride(k);
+  std::vector<std::size_t> result_count(k), result_stride(k);
   std::size_t total = 1;
   for (int l = 0; l < k; ++l) {
     std::size_t o = 0;
-    for (std::size_t seg = 0; seg + 1 < sb[l].size(); ++seg) {
+    for (std::size_t seg = 0; seg + 1 < inner_breaks[l].size(); ++seg) {
       if (seg > 0) o += static_cast<std::size_t>(D[l]) + (jump[l][seg] ? 1 : 0);
       offset[l].push_back(o);
     }
-    rcount[l] = o + D[l] + 1;
-    rstride[l] = total;
-    total = checked_product(total, rcount[l], limits, "inner");
+    result_count[l] = o + D[l] + 1;
+    result_stride[l] = total;
+    total = checked_product(total, result_count[l], limits, "inner");
   }
   limits.check_count(total, "inner");
   BSpline<T> R;
   R.degrees = D;
   R.q = outer.q;
   for (int l = 0; l < k; ++l) {
-    std::vector<T> U(D[l] + 1, sb[l].front());
-    for (std::size_t b = 1; b + 1 < sb[l].size(); ++b) U.insert(U.end(), D[l] + (jump[l][b] ? 1 : 0), sb[l][b]);
-    U.insert(U.end(), D[l] + 1, sb[l].back());
+    std::vector<T> U(D[l] + 1, inner_breaks[l].front());
+    for (std::size_t b = 1; b + 1 < inner_breaks[l].size(); ++b) U.insert(U.end(), D[l] + (jump[l][b] ? 1 : 0), inner_breaks[l][b]);
+    U.insert(U.end(), D[l] + 1, inner_breaks[l].back());
     R.knots.push_back(std::move(U));
   }
   const std::size_t q = outer.q;
   R.points.assign(total * q, T(0));
   std::vector<char> written(total, 0);
   bool rational = false;
-  for (std::size_t pi = 0; pi < sp.size(); ++pi) {
+  for (std::size_t pi = 0; pi < inner_pieces.size(); ++pi) {
     std::size_t cell = 0;
-    for (int j = 0; j < n; ++j) cell += piece_cell[pi][j] * tstride[j];
-    const BSpline<T> piece = compose_bezier(tp[cell].spline, sp[pi].spline, options.method, limits);
+    for (int j = 0; j < n; ++j) cell += piece_cell[pi][j] * cell_stride[j];
+    const BSpline<T> piece = compose_bezier(outer_pieces[cell].spline, inner_pieces[pi].spline, options.method, limits);
     if (piece.is_rational() && !rational) {
       rational = true;
       R.weights.assign(total, T(0));
     }
     std::vector<std::size_t> seg(k);
     std::vector<int> loc(k);
-    for (int l = 0; l < k; ++l) seg[l] = (pi / sstride[l]) % (sb[l].size() - 1);
+    for (int l = 0; l < k; ++l) seg[l] = (pi / piece_stride[l]) % (inner_breaks[l].size() - 1);
     for (std::size_t i = 0; i < piece.size(); ++i) {
       detail::unflatten(i, piece.degrees, loc);
       std::size_t g = 0;
-      for (int l = 0; l < k; ++l) g += (offset[l][seg[l]] + loc[l]) * rstride[l];
+      for (int l = 0; l < k; ++l) g += (offset[l][seg[l]] + loc[l]) * result_stride[l];
       if (written[g]) continue;  // shared C^0 boundary: equal in exact arithmetic (proved), first piece kept in float
       written[g] = 1;
       for (std::size_t c = 0; c < q; ++c) R.points[g * q + c] = piece.points[i * q + c];

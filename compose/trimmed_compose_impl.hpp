@@ -212,14 +212,14 @@ TrimmedComposition<T> compose_trimmed(const BSpline<T>& outer, const BSpline<T>&
       }
       const int ne = conds.empty() ? 1 : detail::region_nonempty(P, conds, options.emptiness_depth, limits);
       if (ne != 0) {
-        TrimmedPatch<T> tp;
-        tp.inner_piece = i;
-        tp.outer_cell = cell;
-        tp.region = std::move(conds);
-        tp.status = tp.region.empty() ? RegionStatus::untrimmed : ne == 1 ? RegionStatus::trimmed : RegionStatus::unproven_nonempty;
-        tp.patch = compose_bezier_homogeneous(R.outer_pieces[cell].spline, P, options.method, limits);
+        TrimmedPatch<T> patch;
+        patch.inner_piece = i;
+        patch.outer_cell = cell;
+        patch.region = std::move(conds);
+        patch.status = patch.region.empty() ? RegionStatus::untrimmed : ne == 1 ? RegionStatus::trimmed : RegionStatus::unproven_nonempty;
+        patch.patch = compose_bezier_homogeneous(R.outer_pieces[cell].spline, P, options.method, limits);
         R.index[{i, cell}] = R.patches.size();
-        R.patches.push_back(std::move(tp));
+        R.patches.push_back(std::move(patch));
       }
       int j = 0;
       while (j < n && ++c[j] > range[j].second) { c[j] = range[j].first; ++j; }

@@ -55,6 +55,8 @@ class FlintRational {
   fmpq_t v_;
 };
 
+static_assert(Arithmetic<FlintRational>, "FlintRational must model the arithmetic concept (spline/arith.hpp)");
+
 template <>
 struct ArithTraits<FlintRational> {
   static constexpr bool exact = true;

@@ -31,6 +31,8 @@ double log2_abs(const Rational& x);
 
 Rational abs(const Rational& x);
 
+static_assert(Arithmetic<Rational>, "Rational must model the arithmetic concept (spline/arith.hpp)");
+
 template <>
 struct ArithTraits<Rational> {
   static constexpr bool exact = true;

@@ -77,30 +77,17 @@ void texture(std::ostringstream& svg, const Canvas& c, F&& f, In&& inside, std::
 
 std::string run_checkerboard(const std::string& out_dir, bool& ok) {
   // T: a biquadratic map of [0, 1]^2 into the plane with knot lines u = 1/2, v = 1/2 (C^1 there).
-  BSpline<Rational> T;
-  T.degrees = {2, 2};
-  T.q = 2;
-  T.knots = {{0, 0, 0, Rational(1, 2), 1, 1, 1}, {0, 0, 0, Rational(1, 2), 1, 1, 1}};
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      const Rational x(i, 3), y(j, 3);
-      T.points.push_back(x + (j == 1 || j == 2 ? Rational(1, 6) : Rational(0)) * (i == 1 ? 1 : 0));
-      T.points.push_back(y + Rational((i * j) % 3, 12) - (i == 2 ? Rational(1, 10) : Rational(0)));
-    }
-  validate(T);
+  const auto U = clamped_knots(2, Rational(0), Rational(1), {Rational(1, 2)});
+  const auto T = spline_from<Rational>({2, 2}, {U, U}, 2, [](const std::vector<std::size_t>& ij) {
+    const int i = static_cast<int>(ij[0]), j = static_cast<int>(ij[1]);
+    const Rational x(i, 3), y(j, 3);
+    return std::vector<Rational>{x + (j == 1 || j == 2 ? Rational(1, 6) : Rational(0)) * (i == 1 ? 1 : 0),
+                                 y + Rational((i * j) % 3, 12) - (i == 2 ? Rational(1, 10) : Rational(0))};
+  });
   // S: affine, a rotated square inside T's domain crossing both knot lines obliquely.
-  BSpline<Rational> S;
-  S.degrees = {1, 1};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
   const Rational c0(1, 2), c1(1, 2), a(7, 20), b(3, 20);  // centre, half-axes of the rotated square
-  for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      const Rational r = 2 * Rational(i) - 1, t = 2 * Rational(j) - 1;
-      S.points.push_back(c0 + a * r - b * t);
-      S.points.push_back(c1 + b * r + a * t);
-    }
-  validate(S);
+  // Corners c + (a r - b t, b r + a t) for r, t = -1, 1: the affine map from the corner (-1, -1).
+  const auto S = affine_map<Rational>({c0 - a + b, c1 - b - a}, {{2 * a, 2 * b}, {-2 * b, 2 * a}});
   const auto A = compose_tensor(T, S);  // exact: S is affine, the trimming lines are straight
   const auto& C = A.trimmed;
   // Canvas from T(S) at the texture corners and edges.

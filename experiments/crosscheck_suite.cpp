@@ -167,15 +167,11 @@ void crosscheck_section(ReportContext& ctx) {
   {
     // Nearly coincident knots: 1/10 and 1/10 + 2^-50 (distinct in double: 64 ulps apart).
     const Rational eps = Rational(1) / Rational(Integer(1) << 50);
-    BSpline<Rational> S;
-    S.degrees = {3};
-    S.q = 2;
-    S.knots = {{0, 0, 0, 0, Rational(1, 10), Rational(1, 10) + eps, Rational(1, 2), 1, 1, 1, 1}};
-    for (int i = 0; i < 7; ++i) {
-      S.points.push_back(Rational(i * i - 3 * i, 7));
-      S.points.push_back(Rational(2 * i + 1, 3));
-    }
-    validate(S);
+    const auto S = spline_from<Rational>({3}, {clamped_knots(3, Rational(0), Rational(1), {Rational(1, 10), Rational(1, 10) + eps, Rational(1, 2)})},
+                              2, [](const std::vector<std::size_t>& idx) {
+                                const int i = static_cast<int>(idx[0]);
+                                return std::vector<Rational>{Rational(i * i - 3 * i, 7), Rational(2 * i + 1, 3)};
+                              });
     run.run("adversarial", "near-coincident-knots", S, op_insert(0, {Rational(1, 10) + eps / 2, Rational(1, 10) - eps}));
     run.run("adversarial", "near-coincident-knots", S, op_elevate(0, 2));
     Operation blossom = op_elevate(0, 2);

@@ -18,16 +18,11 @@
 namespace splinex {
 
 BSpline<Rational> unit_star() {
-  BSpline<Rational> S;
-  S.degrees = {2, 2};
-  S.q = 2;
-  S.knots = {{0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
   const Rational h(1, 2), q(1, 4), t(3, 4);
-  S.points = {0, 0, h, q, 1, 0,   //
-              q, h, h, h, t, h,   //
-              0, 1, h, t, 1, 1};
-  validate(S);
-  return S;
+  return bezier<Rational>({2, 2}, 2,
+                          {0, 0, h, q, 1, 0,   //
+                           q, h, h, h, t, h,   //
+                           0, 1, h, t, 1, 1});
 }
 
 BSpline<Rational> star_in_tile(int i, int j, int n, const Rational& w, const Rational& h) {

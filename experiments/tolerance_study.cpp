@@ -31,18 +31,13 @@ BSpline<Rational> polyline_graph(const std::vector<Segment2<double>>& poly) {
     if (v[i].first == v[i - 1].first) throw std::logic_error("tolerance study: the polyline is not a graph over t");
   if (v.size() != poly.size() + 1 || v.front().first != 0 || v.back().first != 1)
     throw std::logic_error("tolerance study: the polyline does not span t in [0, 1] as one graph");
-  BSpline<Rational> h;
-  h.degrees = {1};
-  h.q = 1;
-  std::vector<Rational> U{v.front().first};
+  std::vector<Rational> U{v.front().first}, r;
   for (const auto& tr : v) {
     U.push_back(tr.first);
-    h.points.push_back(tr.second);
+    r.push_back(tr.second);
   }
   U.push_back(v.back().first);
-  h.knots = {U};
-  validate(h);
-  return h;
+  return make_spline<Rational>({1}, {U}, 1, std::move(r));
 }
 
 
@@ -71,29 +66,20 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
   const Rational u0(1, 2);
   // S: degrees (1, 2, 2) with s_u = 1/5 + 3/5 r + 1/5 t(1-t) + 1/5 w(1-w), s_v = 1/10 + 4/5 t,
   // s_w = 1/10 + 4/5 w: the trimming surface s_u = 1/2 is r*(t, w) = 1/2 - t(1-t)/3 - w(1-w)/3.
-  BSpline<Rational> S;
-  S.degrees = {1, 2, 2};
-  S.q = 3;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int l = 0; l <= 2; ++l)
-    for (int j = 0; j <= 2; ++j)
-      for (int i = 0; i <= 1; ++i) {
-        S.points.push_back(Rational(1, 5) + Rational(3, 5) * i + (j == 1 ? Rational(1, 10) : Rational(0)) +
-                           (l == 1 ? Rational(1, 10) : Rational(0)));
-        S.points.push_back(Rational(1, 10) + Rational(2, 5) * j);
-        S.points.push_back(Rational(1, 10) + Rational(2, 5) * l);
-      }
-  validate(S);
+  const auto S = bezier_from<Rational>({1, 2, 2}, 3, [](const std::vector<std::size_t>& ijl) {
+    const long i = static_cast<long>(ijl[0]), j = static_cast<long>(ijl[1]), l = static_cast<long>(ijl[2]);
+    return std::vector<Rational>{Rational(1, 5) + Rational(3, 5) * i + (j == 1 ? Rational(1, 10) : Rational(0)) +
+                                     (l == 1 ? Rational(1, 10) : Rational(0)),
+                                 Rational(1, 10) + Rational(2, 5) * j, Rational(1, 10) + Rational(2, 5) * l};
+  });
   auto rstar = [](const Rational& t, const Rational& w) {
     return Rational(1, 2) - t * (1 - t) / 3 - w * (1 - w) / 3;
   };
-  BSpline<Rational> rs;  // r* in Bernstein form on [0,1]^2
-  rs.degrees = {2, 2};
-  rs.q = 1;
-  rs.knots = {{0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int l = 0; l <= 2; ++l)
-    for (int j = 0; j <= 2; ++j)
-      rs.points.push_back(Rational(1, 2) - (j == 1 ? Rational(1, 6) : Rational(0)) - (l == 1 ? Rational(1, 6) : Rational(0)));
+  // r* in Bernstein form on [0,1]^2
+  const auto rs = bezier_from<Rational>({2, 2}, 1, [](const std::vector<std::size_t>& jl) {
+    return std::vector<Rational>{Rational(1, 2) - (jl[0] == 1 ? Rational(1, 6) : Rational(0)) -
+                                 (jl[1] == 1 ? Rational(1, 6) : Rational(0))};
+  });
   // Float trimming surface: a height field r = h(t, w) on a G x G grid (G a power of two, so the
   // nodes are exact doubles), the crossing bisected in double at each node to eps (midpoint of the
   // last bracket), bilinear in between. G is the smallest power of two with the interpolation
@@ -109,25 +95,19 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
     progress("tolerance study (volume): trimming surface for eps " + g(eps));
     int G = 1;
     while (1.0 / (static_cast<double>(G) * G) / 6 > eps / 2) G *= 2;
-    BSpline<Rational> h;
-    h.degrees = {1, 1};
-    h.q = 1;
     std::vector<Rational> K{0};
     for (int i = 0; i <= G; ++i) K.push_back(Rational(i, G));
     K.push_back(1);
-    h.knots = {K, K};
-    for (int l = 0; l <= G; ++l)
-      for (int j = 0; j <= G; ++j) {
-        const double t = static_cast<double>(j) / G, w = static_cast<double>(l) / G;
+    const auto h = spline_from<Rational>({1, 1}, {K, K}, 1, [&](const std::vector<std::size_t>& jl) {
+        const double t = static_cast<double>(jl[0]) / G, w = static_cast<double>(jl[1]) / G;
         auto su = [&](double r) { return 0.2 + 0.6 * r + 0.2 * t * (1 - t) + 0.2 * w * (1 - w) - 0.5; };
         double a = 0, b = 1;
         while (b - a >= eps) {
           const double mid = 0.5 * (a + b);
           (su(mid) < 0 ? a : b) = mid;
         }
-        h.points.push_back(exact_from_double(0.5 * (a + b)));
-      }
-    validate(h);
+        return std::vector<Rational>{exact_from_double(0.5 * (a + b))};
+    });
     auto vol = integrate_abs(difference(h, rs), 8, Rational(1, 100));
     levels.push_back({eps, G, std::move(h), std::move(vol)});
   }
@@ -149,19 +129,13 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
   std::vector<PlotSeries> series;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study (volume): knot multiplicity " + std::to_string(m));
-    BSpline<Rational> T;
-    T.degrees = {p, 1, 1};
-    T.q = 2;
-    const std::vector<Rational> U = knots_with(p, u0, m);
-    T.knots = {U, {0, 0, 1, 1}, {0, 0, 1, 1}};
-    const std::size_t nu = U.size() - p - 1;
-    for (std::size_t l = 0; l <= 1; ++l)
-      for (std::size_t j = 0; j <= 1; ++j)
-        for (std::size_t i = 0; i < nu; ++i) {
-          T.points.push_back(Rational(static_cast<long>((i * i + 3 * j + l) % 7) - 3, 4));
-          T.points.push_back(Rational(static_cast<long>((3 * i + j + 2 * l + 1) % 5), 3));
-        }
-    validate(T);
+    const auto T = spline_from<Rational>({p, 1, 1}, {knots_with(p, u0, m), {0, 0, 1, 1}, {0, 0, 1, 1}}, 2,
+                                         [](const std::vector<std::size_t>& ijl) {
+                                           const std::size_t i = ijl[0], j = ijl[1], l = ijl[2];
+                                           return std::vector<Rational>{
+                                               Rational(static_cast<long>((i * i + 3 * j + l) % 7) - 3, 4),
+                                               Rational(static_cast<long>((3 * i + j + 2 * l + 1) % 5), 3)};
+                                         });
     const auto C = compose_trimmed(T, S);
     PlotSeries ps;
     ps.label = "trivariate, m = " + std::to_string(m);
@@ -213,12 +187,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   const int p = 3;
   const Rational u0(1, 2);
   // S: a quadratic from 1/5 to 4/5 crossing u0 transversally at an irrational parameter.
-  BSpline<Rational> S;
-  S.degrees = {2};
-  S.q = 1;
-  S.knots = {{0, 0, 0, 1, 1, 1}};
-  S.points = {Rational(1, 5), Rational(3, 10), Rational(4, 5)};
-  validate(S);
+  const auto S = bezier<Rational>({2}, 1, {Rational(1, 5), Rational(3, 10), Rational(4, 5)});
   // s(r) - u0 in power form: exact root r* isolated by CGAL.
   const auto bern = std::vector<Rational>{S.points[0] - u0, S.points[1] - u0, S.points[2] - u0};
   const auto roots = isolate_real_roots(bernstein_to_power(bern), 0, 1, 200);
@@ -238,17 +207,10 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   std::vector<PlotSeries> series;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study: knot multiplicity " + std::to_string(m));
-    BSpline<Rational> T;
-    T.degrees = {p};
-    T.q = 2;
-    const std::vector<Rational> U = knots_with(p, u0, m);
-    T.knots = {U};
-    const std::size_t n = U.size() - p - 1;
-    for (std::size_t i = 0; i < n; ++i) {
-      T.points.push_back(Rational(static_cast<long>(i * i % 7) - 3, 4));
-      T.points.push_back(Rational(static_cast<long>((3 * i + 1) % 5), 3));
-    }
-    validate(T);
+    const auto T = spline_from<Rational>({p}, {knots_with(p, u0, m)}, 2, [](const std::vector<std::size_t>& idx) {
+      const std::size_t i = idx[0];
+      return std::vector<Rational>{Rational(static_cast<long>(i * i % 7) - 3, 4), Rational(static_cast<long>((3 * i + 1) % 5), 3)};
+    });
     const auto C = compose_trimmed(T, S);
     // The two pieces: the one left of the crossing owns [0, r*), the other [r*, 1].
     const std::size_t left = C.locate({Rational(0)});
@@ -321,11 +283,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   std::map<double, std::pair<std::vector<Segment2<double>>, AbsIntegral<Rational>>> polylines;
   {
     // r*(t) = 1/2 - t(1-t)/3: Bernstein coefficients 1/2, 1/3, 1/2 on [0, 1].
-    BSpline<Rational> rs;
-    rs.degrees = {2};
-    rs.q = 1;
-    rs.knots = {{0, 0, 0, 1, 1, 1}};
-    rs.points = {Rational(1, 2), Rational(1, 3), Rational(1, 2)};
+    const auto rs = bezier<Rational>({2}, 1, {Rational(1, 2), Rational(1, 3), Rational(1, 2)});
     for (double eps : eps_list) {
       if (eps < 1e-9) continue;
       progress("tolerance study (surface): polyline and misassigned area for eps " + g(eps));
@@ -340,20 +298,13 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   std::vector<PlotSeries> series2;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study (surface): knot multiplicity " + std::to_string(m));
-    BSpline<Rational> T;
-    T.degrees = {p, p};
-    T.q = 2;
-    const std::vector<Rational> U = knots_with(p, u0, m);
-    std::vector<Rational> V(p + 1, Rational(0));
-    V.insert(V.end(), p + 1, Rational(1));
-    T.knots = {U, V};
-    const std::size_t nu = U.size() - p - 1;
-    for (std::size_t j = 0; j <= static_cast<std::size_t>(p); ++j)
-      for (std::size_t i = 0; i < nu; ++i) {
-        T.points.push_back(Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4));
-        T.points.push_back(Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3));
-      }
-    validate(T);
+    const auto T = spline_from<Rational>({p, p}, {knots_with(p, u0, m), clamped_knots(p, Rational(0), Rational(1))}, 2,
+                                         [](const std::vector<std::size_t>& ij) {
+                                           const std::size_t i = ij[0], j = ij[1];
+                                           return std::vector<Rational>{
+                                               Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4),
+                                               Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3)};
+                                         });
     const auto C = compose_trimmed(T, S2);
     PlotSeries ps;
     ps.label = "surface, m = " + std::to_string(m);

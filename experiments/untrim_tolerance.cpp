@@ -189,18 +189,11 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
   const BSpline<Rational> S = parabola_trimming_inner();
   std::vector<Row> rows;
   for (int m = 1; m <= p + 1; ++m) {
-    BSpline<Rational> T;
-    T.degrees = {p, 1};
-    T.q = 2;
-    const auto U = knots_with(p, u0, m);
-    T.knots = {U, {0, 0, 1, 1}};
-    const std::size_t nu = U.size() - p - 1;
-    for (std::size_t j = 0; j <= 1; ++j)
-      for (std::size_t i = 0; i < nu; ++i) {
-        T.points.push_back(Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4));
-        T.points.push_back(Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3));
-      }
-    validate(T);
+    const auto T = spline_from<Rational>({p, 1}, {knots_with(p, u0, m), {0, 0, 1, 1}}, 2, [](const std::vector<std::size_t>& ij) {
+      const std::size_t i = ij[0], j = ij[1];
+      return std::vector<Rational>{Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4),
+                                   Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3)};
+    });
     for (const auto& run : opt.runs)
       for (double eps : opt.eps) {
         if (eps < run.min_eps || m > run.max_m) continue;

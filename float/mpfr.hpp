@@ -84,6 +84,8 @@ Rational to_rational(const Mpfr& x);
 /// All the significant digits needed to read the value back at its precision ("d.ddde-X").
 std::string to_decimal_string(const Mpfr& x);
 
+static_assert(Arithmetic<Mpfr>, "Mpfr must model the arithmetic concept (spline/arith.hpp)");
+
 template <>
 struct ArithTraits<Mpfr> {
   static constexpr bool exact = false;

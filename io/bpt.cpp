@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "spline/errors.hpp"
+#include "spline/factories.hpp"
 
 namespace splinex {
 
@@ -35,11 +36,7 @@ std::vector<BSpline<Rational>> read_bpt(const std::string& path) {
     BSpline<Rational> P;
     P.degrees = {du, dv};
     P.q = 3;
-    for (int d : {du, dv}) {
-      std::vector<Rational> U(d + 1, Rational(0));
-      U.insert(U.end(), d + 1, Rational(1));
-      P.knots.push_back(std::move(U));
-    }
+    for (int d : {du, dv}) P.knots.push_back(clamped_knots(d, Rational(0), Rational(1)));
     for (int i = 0; i < (du + 1) * (dv + 1); ++i) {
       next("a control point of patch " + std::to_string(k));
       std::istringstream ps(line);
@@ -74,10 +71,9 @@ BSpline<Rational> merge_bezier_grid(const std::vector<BSpline<Rational>>& patche
   S.degrees = {du, dv};
   S.q = q;
   for (auto [d, n] : {std::pair<int, std::size_t>{du, nc}, std::pair<int, std::size_t>{dv, nr}}) {
-    std::vector<Rational> U(d + 1, Rational(0));
-    for (std::size_t j = 1; j < n; ++j) U.insert(U.end(), d, Rational(static_cast<long>(j)));
-    U.insert(U.end(), d + 1, Rational(static_cast<long>(n)));
-    S.knots.push_back(std::move(U));
+    std::vector<Rational> interior;  // the patch boundaries 1 .. n-1, each of multiplicity d (C^0)
+    for (std::size_t j = 1; j < n; ++j) interior.insert(interior.end(), d, Rational(static_cast<long>(j)));
+    S.knots.push_back(clamped_knots(d, Rational(0), Rational(static_cast<long>(n)), interior));
   }
   const std::size_t NU = nc * du + 1, NV = nr * dv + 1;
   S.points.assign(NU * NV * q, Rational(0));

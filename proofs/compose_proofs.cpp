@@ -31,20 +31,20 @@ PiecewiseShape composed_shape(const BSpline<Rational>& T, const BSpline<Rational
 std::pair<BSpline<Rational>, BSpline<Rational>> random_composition(std::mt19937_64& rng, bool inside) {
   auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
   const int k = pick(1, 3), n = pick(1, 3);
-  RandomSplineSpec si, so;
+  RandomSplineSpec inner_spec, outer_spec;
   for (int l = 0; l < k; ++l) {
-    si.degrees.push_back(pick(1, k == 3 ? 1 : 2));
-    si.counts.push_back(si.degrees.back() + 1);
+    inner_spec.degrees.push_back(pick(1, k == 3 ? 1 : 2));
+    inner_spec.counts.push_back(inner_spec.degrees.back() + 1);
   }
   for (int j = 0; j < n; ++j) {
-    so.degrees.push_back(pick(1, n == 3 ? 2 : 3));
-    so.counts.push_back(so.degrees.back() + 1);
+    outer_spec.degrees.push_back(pick(1, n == 3 ? 2 : 3));
+    outer_spec.counts.push_back(outer_spec.degrees.back() + 1);
   }
-  si.q = n;
-  so.q = pick(1, 3);
-  si.rational = pick(0, 2) == 0;
-  so.rational = pick(0, 2) == 0;
-  BSpline<Rational> S = random_spline(si, rng), T = random_spline(so, rng);
+  inner_spec.q = n;
+  outer_spec.q = pick(1, 3);
+  inner_spec.rational = pick(0, 2) == 0;
+  outer_spec.rational = pick(0, 2) == 0;
+  BSpline<Rational> S = random_spline(inner_spec, rng), T = random_spline(outer_spec, rng);
   for (int l = 0; l < k; ++l) S = reparametrize(S, l, Rational(pick(-3, 0), 2), Rational(pick(1, 4), 3));
   for (int j = 0; j < n; ++j) T = reparametrize(T, j, Rational(pick(-4, 0), 5), Rational(pick(1, 5), 4));
   // Inner points in [-2, 2]; inside: mapped into the outer box instead (rational outer splines
@@ -90,14 +90,14 @@ void compose_identity(const BSpline<Rational>&, std::mt19937_64& rng, Accumulato
 void compose_bspline(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
   auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
   const int n = pick(1, 2);
-  RandomSplineSpec so;
+  RandomSplineSpec outer_spec;
   for (int j = 0; j < n; ++j) {
-    so.degrees.push_back(pick(0, 3));
-    so.counts.push_back(so.degrees.back() + 1 + pick(0, 2));
+    outer_spec.degrees.push_back(pick(0, 3));
+    outer_spec.counts.push_back(outer_spec.degrees.back() + 1 + pick(0, 2));
   }
-  so.q = pick(1, 3);
-  so.rational = pick(0, 2) == 0;
-  BSpline<Rational> T = random_spline(so, rng);
+  outer_spec.q = pick(1, 3);
+  outer_spec.rational = pick(0, 2) == 0;
+  BSpline<Rational> T = random_spline(outer_spec, rng);
   // Half the cases: T jumps at one interior knot (raised to multiplicity e+1, then
   // the first control point after it moved).
   const bool outer_jumps = pick(0, 1) == 1;
@@ -181,22 +181,22 @@ void compose_trimmed(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator
   // Curves, surfaces and trivariates on both sides (trimmed trivariates: k = n = 3;
   // surfaces into trivariates: k = 2, n = 3).
   const int n = pick(1, 3), k = pick(1, 3);
-  RandomSplineSpec so, si;
+  RandomSplineSpec outer_spec, inner_spec;
   for (int j = 0; j < n; ++j) {
-    so.degrees.push_back(pick(1, n == 3 ? 2 : 3));
-    so.counts.push_back(so.degrees.back() + 1 + pick(1, n == 3 ? 2 : 3));
+    outer_spec.degrees.push_back(pick(1, n == 3 ? 2 : 3));
+    outer_spec.counts.push_back(outer_spec.degrees.back() + 1 + pick(1, n == 3 ? 2 : 3));
   }
-  so.q = pick(1, 3);
-  so.rational = pick(0, 2) == 0;
+  outer_spec.q = pick(1, 3);
+  outer_spec.rational = pick(0, 2) == 0;
   const bool affine = pick(0, 2) == 0;
   for (int l = 0; l < k; ++l) {
-    si.degrees.push_back(affine || k == 3 ? 1 : pick(1, 2));
-    si.counts.push_back(si.degrees.back() + 1 + (affine || k == 3 ? 0 : pick(0, 1)));
+    inner_spec.degrees.push_back(affine || k == 3 ? 1 : pick(1, 2));
+    inner_spec.counts.push_back(inner_spec.degrees.back() + 1 + (affine || k == 3 ? 0 : pick(0, 1)));
   }
-  si.q = n;
-  si.rational = !affine && pick(0, 3) == 0;
-  const BSpline<Rational> T = random_spline(so, rng);
-  BSpline<Rational> S = random_spline(si, rng);
+  inner_spec.q = n;
+  inner_spec.rational = !affine && pick(0, 3) == 0;
+  const BSpline<Rational> T = random_spline(outer_spec, rng);
+  BSpline<Rational> S = random_spline(inner_spec, rng);
   for (auto& x : S.points) x = (x + 2) / 4;  // [-2, 2] -> [0, 1], T's domain
   if (affine) {
     // Degree 1 and no interior knots per direction: make the map affine (not just
@@ -301,16 +301,16 @@ void compose_trimmed(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator
 
 void trimming_endpoints(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
   auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
-  RandomSplineSpec so, si;
-  so.degrees = {pick(1, 3), pick(1, 3)};
-  so.counts = {static_cast<std::size_t>(so.degrees[0] + 1 + pick(1, 3)), static_cast<std::size_t>(so.degrees[1] + 1 + pick(1, 3))};
-  so.q = 3;
-  si.degrees = {pick(1, 3), pick(1, 3)};
-  si.counts = {static_cast<std::size_t>(si.degrees[0] + 1), static_cast<std::size_t>(si.degrees[1] + 1)};
-  si.q = 2;
-  si.rational = pick(0, 2) == 0;
-  const auto T = random_spline(so, rng);
-  auto S = random_spline(si, rng);
+  RandomSplineSpec outer_spec, inner_spec;
+  outer_spec.degrees = {pick(1, 3), pick(1, 3)};
+  outer_spec.counts = {static_cast<std::size_t>(outer_spec.degrees[0] + 1 + pick(1, 3)), static_cast<std::size_t>(outer_spec.degrees[1] + 1 + pick(1, 3))};
+  outer_spec.q = 3;
+  inner_spec.degrees = {pick(1, 3), pick(1, 3)};
+  inner_spec.counts = {static_cast<std::size_t>(inner_spec.degrees[0] + 1), static_cast<std::size_t>(inner_spec.degrees[1] + 1)};
+  inner_spec.q = 2;
+  inner_spec.rational = pick(0, 2) == 0;
+  const auto T = random_spline(outer_spec, rng);
+  auto S = random_spline(inner_spec, rng);
   for (auto& x : S.points) x = (x + 2) / 4;
   const auto C = compose_trimmed(T, S);
   for (std::size_t pi = 0; pi < C.patches.size(); ++pi) {
@@ -386,7 +386,7 @@ std::vector<ProofEntry> composition_proofs() {
             "(property 2), at grid points, on both sides of trimming curves within 2^-40, and (affine S) "
             "exactly on knot lines and at their crossings",
             "none: pointwise exact checks only (R is piecewise by semi-algebraic regions; no identity argument "
-            "covers the regions' boundaries), so the verdict is 'checked at N points'",
+            "covers the regions' boundaries), outer_spec the verdict is 'checked at N points'",
             compose_trimmed, own_inputs_sampled),
   };
 }

@@ -292,11 +292,7 @@ void hybrid_thm_4_1(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator&
     for (std::size_t s = 0; s < P.sides(); ++s) {
       const auto& A = G.sides[s];
       const auto& B = H.sides[s];
-      BSpline<Rational> c;
-      c.degrees = std::vector<int>{A.p};
-      c.knots = {A.Ub};
-      c.q = P.q;
-      c.points = A.P;
+      auto c = make_spline<Rational>({A.p}, {A.Ub}, P.q, A.P);
       const auto eP = elevate_degree(c, 0, 1);
       c.points = A.Tbar;
       const auto eT = elevate_degree(c, 0, 1);
@@ -338,17 +334,9 @@ void hybrid_thm_4_2(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator&
     const auto H = hybrid_insert(G, xs, xh, xb);
     for (std::size_t s = 0; s < P.sides(); ++s) {
       const auto& A = G.sides[s];
-      BSpline<Rational> in;
-      in.degrees = std::vector<int>{A.du, A.dh};
-      in.knots = {A.U, A.V};
-      in.q = P.q;
-      in.points = A.interior;
+      const auto in = make_spline<Rational>({A.du, A.dh}, {A.U, A.V}, P.q, A.interior);
       const auto kin = insert_knot(insert_knot(in, 0, xs), 1, xh);
-      BSpline<Rational> c;
-      c.degrees = std::vector<int>{A.p};
-      c.knots = {A.Ub};
-      c.q = P.q;
-      c.points = A.P;
+      auto c = make_spline<Rational>({A.p}, {A.Ub}, P.q, A.P);
       const auto kP = insert_knot(c, 0, xb);
       c.points = A.Tbar;
       const auto kT = insert_knot(c, 0, xb);

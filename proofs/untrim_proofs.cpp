@@ -19,21 +19,15 @@ namespace {
 void untrim_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumulator& acc, std::size_t i) {
   auto pick = [&](int lo, int hi) { return static_cast<int>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
   auto frac = [&](int lo, int hi, int den) { return Rational(pick(lo, hi), den); };
-  RandomSplineSpec so;
-  so.degrees = {pick(1, 3), pick(1, 3)};
-  so.counts = {static_cast<std::size_t>(so.degrees[0] + 1 + pick(1, 3)), static_cast<std::size_t>(so.degrees[1] + 1 + pick(1, 3))};
-  so.q = 3;
-  const auto T = random_spline(so, rng);
+  RandomSplineSpec outer_spec;
+  outer_spec.degrees = {pick(1, 3), pick(1, 3)};
+  outer_spec.counts = {static_cast<std::size_t>(outer_spec.degrees[0] + 1 + pick(1, 3)), static_cast<std::size_t>(outer_spec.degrees[1] + 1 + pick(1, 3))};
+  outer_spec.q = 3;
+  const auto T = random_spline(outer_spec, rng);
   // S(r, t) = c + r e1 + t e2, its image inside (0, 1)^2.
   const Rational c[2] = {frac(100, 250, 1000), frac(100, 250, 1000)};
   const Rational e1[2] = {frac(300, 600, 1000), frac(-50, 50, 1000)}, e2[2] = {frac(-50, 50, 1000), frac(300, 600, 1000)};
-  BSpline<Rational> S;
-  S.degrees = {1, 1};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
-  for (int b = 0; b <= 1; ++b)
-    for (int a = 0; a <= 1; ++a)
-      for (int d = 0; d < 2; ++d) S.points.push_back(c[d] + e1[d] * a + e2[d] * b);
+  const auto S = affine_map<Rational>({c[0], c[1]}, {{e1[0], e1[1]}, {e2[0], e2[1]}});
   auto A = compose_tensor(T, S);
   for (auto& tile : A.tiles) tile.R.net = planted(tile.R.net);
   if (A.curved_boundaries != 0) acc.fail("a curved trimming curve for affine S", i);
@@ -87,7 +81,7 @@ void untrim_curved_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumul
   const Rational h(1, 2);
   const Rational a(pick(1, 3), 20), b(pick(17, 19), 20);
   // Top arc (right to left) above y = 1/2, bottom arc (left to right) below: interior ordinates
-  // in [3/4, 19/20] and [1/20, 1/4], so they meet only at their shared end points.
+  // in [3/4, 19/20] and [1/20, 1/4], outer_spec they meet only at their shared end points.
   const int dt = pick(2, 4), db = pick(2, 4);
   TrimmedDomain D{{0, 0}, {1, 1}, {{{a, h}, {b, h}}}};
   Polygon bottom, top;
@@ -116,18 +110,12 @@ void untrim_curved_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumul
     }
   // T with the knot lines, random small integer control points.
   const int p0 = pick(1, 3), p1 = pick(1, 2);
-  BSpline<Rational> T;
-  T.degrees = {p0, p1};
-  T.q = 3;
-  std::vector<Rational> U(p0 + 1, Rational(0));
-  U.insert(U.end(), kx.begin(), kx.end());
-  U.insert(U.end(), p0 + 1, Rational(1));
-  std::vector<Rational> W(p1 + 1, Rational(0));
-  W.push_back(h);
-  W.insert(W.end(), p1 + 1, Rational(1));
-  T.knots = {U, W};
-  for (std::size_t k = 0; k < (U.size() - p0 - 1) * (W.size() - p1 - 1) * 3; ++k) T.points.push_back(Rational(pick(-9, 9), 4));
-  validate(T);
+  const auto T = spline_from<Rational>({p0, p1}, {clamped_knots(p0, Rational(0), Rational(1), kx), clamped_knots(p1, Rational(0), Rational(1), {h})},
+                                       3, [&](const std::vector<std::size_t>&) {
+                                         std::vector<Rational> v;
+                                         for (int d = 0; d < 3; ++d) v.push_back(Rational(pick(-9, 9), 4));
+                                         return v;
+                                       });
   CompositionOptions co;
   co.expand = true;
   for (std::size_t k = 0; k < tiles.size(); ++k) {

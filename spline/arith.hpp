@@ -15,12 +15,35 @@
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
 //
-// The concept is checked by the compiler: tests/spline/test_arith_concept.cpp instantiates the kernel,
-// composition, the hybrid patch and the untrimming sweep for a scalar that has these operations
-// and no others (>, <=, >=, != are deleted), so generic code that steps outside fails to build.
+// The concept is checked by the compiler twice: `Arithmetic` below (a C++20 concept) constrains
+// BSpline<T>, so a scalar without an operation of the list is rejected where a spline of it is
+// named; and tests/spline/test_arith_concept.cpp instantiates the kernel, composition, the hybrid
+// patch and the untrimming sweep for a scalar that has these operations and no others (>, <=, >=,
+// != are deleted), so generic code that steps outside the list fails to build.
 #pragma once
+#include <concepts>
 
 namespace splinex {
+
+/// The operations generic code may use on a scalar (see above). A concept constrains what a type
+/// offers, not what generic code uses; the Strict scalar of tests/spline/test_arith_concept.cpp
+/// checks the other direction.
+template <class T>
+concept Arithmetic = std::copy_constructible<T> && std::default_initializable<T> && std::constructible_from<T, int> &&
+                     std::constructible_from<T, long> && requires(T a, const T& b) {
+                       { a + b } -> std::convertible_to<T>;
+                       { a - b } -> std::convertible_to<T>;
+                       { a * b } -> std::convertible_to<T>;
+                       { a / b } -> std::convertible_to<T>;
+                       { -b } -> std::convertible_to<T>;
+                       a += b;
+                       a -= b;
+                       a *= b;
+                       a /= b;
+                       a = b;
+                       { b == b } -> std::convertible_to<bool>;
+                       { b < b } -> std::convertible_to<bool>;
+                     };
 
 template <class T>
 struct ArithTraits;  // specialized per arithmetic; see above

@@ -13,13 +13,14 @@
 #include <utility>
 #include <vector>
 
+#include "spline/arith.hpp"
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
 #include "spline/limits.hpp"
 
 namespace splinex {
 
-template <class T>
+template <Arithmetic T>
 struct BSpline {
   std::vector<int> degrees;           // one per direction
   std::vector<std::vector<T>> knots;  // one knot vector per direction

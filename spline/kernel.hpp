@@ -5,6 +5,7 @@
 #include "spline/bspline.hpp"
 #include "spline/elevate.hpp"
 #include "spline/evaluate.hpp"
+#include "spline/factories.hpp"
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"

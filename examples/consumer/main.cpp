@@ -5,23 +5,16 @@
 #include "compose/compose.hpp"
 #include "exact/rational.hpp"
 #include "spline/evaluate.hpp"
+#include "spline/factories.hpp"
 #include "spline/insert.hpp"
 
 int main() {
   using splinex::BSpline;
   using splinex::Rational;
   // T(u) = Bezier curve in the plane on [0, 1] with control points (0,0), (1,2), (2,0).
-  BSpline<Rational> T;
-  T.degrees = {2};
-  T.knots = {{0, 0, 0, 1, 1, 1}};
-  T.q = 2;
-  T.points = {0, 0, 1, 2, 2, 0};
+  const auto T = splinex::bezier<Rational>({2}, 2, {0, 0, 1, 2, 2, 0});
   // S(t) = t / 2 on [0, 1]: a line inside T's domain.
-  BSpline<Rational> S;
-  S.degrees = {1};
-  S.knots = {{0, 0, 1, 1}};
-  S.q = 1;
-  S.points = {0, Rational(1, 2)};
+  const auto S = splinex::bezier<Rational>({1}, 1, {0, Rational(1, 2)});
   const auto C = splinex::insert_knot(splinex::compose(T, S), 0, Rational(1, 2), 1);
   const auto p = splinex::evaluate(C, {Rational(1, 3)});
   // T(1/6) = (1/3, 5/9)

@@ -12,16 +12,9 @@ TEST_CASE("composed degree is inner degree times the sum of outer degrees") {
   // Surface S (degrees 2, 1) into a trivariate T (degrees 1, 2, 3): degrees (12, 6).
   const auto S = spline(R"({"type":"bspline","degrees":[2,1],"knots":[[0,0,0,1,1,1],[0,0,1,1]],
       "points":[[0.1,0.2,0.3],[0.5,0.1,0.2],[0.9,0.3,0.1],[0.2,0.8,0.4],[0.6,0.7,0.9],[0.8,0.9,0.5]]})");
-  BSpline<Rational> T;
-  T.degrees = {1, 2, 3};
-  T.q = 1;
-  for (int e : T.degrees) {
-    std::vector<Rational> U(e + 1, Rational(0));
-    U.insert(U.end(), e + 1, Rational(1));
-    T.knots.push_back(U);
-  }
-  for (int i = 0; i < 2 * 3 * 4; ++i) T.points.emplace_back(i * i - 7 * i, 5);
-  validate(T);
+  std::vector<Rational> coefs;
+  for (int i = 0; i < 2 * 3 * 4; ++i) coefs.emplace_back(i * i - 7 * i, 5);
+  const auto T = bezier<Rational>({1, 2, 3}, 1, coefs);
   const auto R = compose_bezier(T, S);
   CHECK(R.degrees == std::vector<int>{12, 6});
   CHECK(compose_bezier(T, S, CompositionMethod::interpolation).points == R.points);

@@ -46,12 +46,7 @@ TEST_CASE("nearly coincident knots that double cannot separate are reported, not
   // 1/10 and 1/10 + 2^-60 round to the same double: in double the knot has multiplicity 2 = p+1,
   // and inserting 1/10 + 2^-61 (rounds to it too) would exceed it.
   const Rational eps = Rational(1) / Rational(Integer(1) << 60);
-  BSpline<Rational> S;
-  S.degrees = {1};
-  S.q = 1;
-  S.knots = {{0, 0, Rational(1, 10), Rational(1, 10) + eps, 1, 1}};
-  S.points = {0, 1, 2, 3};
-  validate(S);
+  const auto S = make_spline<Rational>({1}, {{0, 0, Rational(1, 10), Rational(1, 10) + eps, 1, 1}}, 1, {0, 1, 2, 3});
   Operation op;
   op.kind = Operation::Kind::insert_knots;
   op.knots = {Rational(1, 10) + eps / 2};

@@ -237,11 +237,7 @@ TEST_CASE("hybrid: improved elevation (Eq. 4.5, 4.6) and knot insertion (Eq. 4.8
   for (const auto& x : xs) REQUIRE(hybrid_form_evaluate(F, x) == hybrid_evaluate(P, x));
   auto G = F;
   for (int r = 0; r < 3; ++r) {
-    BSpline<Rational> c;
-    c.degrees = {G.sides[1].p};
-    c.knots = {G.sides[1].Ub};
-    c.q = 3;
-    c.points = G.sides[1].Tbar;
+    const auto c = make_spline<Rational>({G.sides[1].p}, {G.sides[1].Ub}, 3, G.sides[1].Tbar);
     const auto k = elevate_degree(c, 0, 1);
     G = hybrid_elevate(G);
     REQUIRE(k.points == G.sides[1].Tbar);

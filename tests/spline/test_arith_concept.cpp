@@ -48,6 +48,29 @@ class Strict {
   Rational v_;
 };
 
+// The C++20 concept accepts Strict and every arithmetic of the project, and rejects a scalar that
+// lacks one operation of the list (here <).
+struct NoLess {
+  NoLess() = default;
+  NoLess(int) {}   // NOLINT
+  NoLess(long) {}  // NOLINT
+  friend NoLess operator+(NoLess, NoLess) { return {}; }
+  friend NoLess operator-(NoLess, NoLess) { return {}; }
+  friend NoLess operator*(NoLess, NoLess) { return {}; }
+  friend NoLess operator/(NoLess, NoLess) { return {}; }
+  friend NoLess operator-(NoLess) { return {}; }
+  NoLess& operator+=(NoLess) { return *this; }
+  NoLess& operator-=(NoLess) { return *this; }
+  NoLess& operator*=(NoLess) { return *this; }
+  NoLess& operator/=(NoLess) { return *this; }
+  friend bool operator==(NoLess, NoLess) { return true; }
+};
+static_assert(Arithmetic<Strict>);
+static_assert(Arithmetic<Rational>);
+static_assert(Arithmetic<double>);
+static_assert(!Arithmetic<NoLess>);
+static_assert(!Arithmetic<int*>);
+
 template <>
 struct ArithTraits<Strict> {
   static constexpr bool exact = true;

@@ -8,15 +8,8 @@ using namespace splinex;
 
 namespace {
 BSpline<Rational> bezier1(std::vector<Rational> coefs, Rational lo, Rational hi) {
-  BSpline<Rational> f;
   const int p = static_cast<int>(coefs.size()) - 1;
-  f.degrees = {p};
-  f.q = 1;
-  std::vector<Rational> U(p + 1, lo);
-  U.insert(U.end(), p + 1, hi);
-  f.knots = {U};
-  f.points = std::move(coefs);
-  return f;
+  return make_spline<Rational>({p}, {clamped_knots(p, lo, hi)}, 1, std::move(coefs));
 }
 }  // namespace
 
@@ -28,12 +21,8 @@ TEST_CASE("integrate: closed form of the basis integrals, exact") {
   const auto g = elevate_degree(refine_knots(f, 0, {Rational(1, 3), Rational(1, 3), Rational(7, 5)}), 0, 2);
   CHECK(integrate(g)[0] == Rational(8, 3));
   // A surface x * y^2 on [0,1] x [0,3]: integral 1/2 * 9 = 9/2.
-  BSpline<Rational> s;
-  s.degrees = {1, 2};
-  s.q = 1;
-  s.knots = {{0, 0, 1, 1}, {0, 0, 0, 3, 3, 3}};
   // y^2 on [0, 3]: coefficients 0, 0, 9; times x: coefficients 0 at x = 0 and those at x = 1.
-  s.points = {0, 0, 0, 0, 0, 9};
+  const auto s = make_spline<Rational>({1, 2}, {{0, 0, 1, 1}, {0, 0, 0, 3, 3, 3}}, 1, {0, 0, 0, 0, 0, 9});
   CHECK(integrate(s)[0] == Rational(9, 2));
 }
 
@@ -60,11 +49,7 @@ TEST_CASE("integrate_abs: exact where the sign is certified, an enclosure elsewh
     last_width = width;
   }
   // x - y on the unit square: int |x - y| = 1/3; the diagonal is never resolved exactly.
-  BSpline<Rational> s;
-  s.degrees = {1, 1};
-  s.q = 1;
-  s.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
-  s.points = {0, 1, -1, 0};
+  const auto s = bezier<Rational>({1, 1}, 1, {0, 1, -1, 0});
   const auto e = integrate_abs(s, 12);
   CHECK(e.lower <= Rational(1, 3));
   CHECK(Rational(1, 3) <= e.upper);

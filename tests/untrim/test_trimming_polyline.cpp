@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
+#include "fixtures/trimming_examples.hpp"
 #include "untrim/trimming_polyline.hpp"
 #include "spline/kernel.hpp"
 
@@ -10,17 +11,10 @@ using namespace splinex;
 // rational at rational t, with |dr*/dt| <= 1/3, so the horizontal distance bounds the normal
 // distance within a factor sqrt(1 + 1/9) < 1.06.
 namespace {
+// The inner surface of the tolerance studies, rounded to double (its control points are
+// 1/5 + 3/5 i (+ 1/10) and 1/10 + 2/5 j).
 BSpline<double> level_set_surface() {
-  BSpline<double> S;
-  S.degrees = {1, 2};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      S.points.push_back(0.2 + 0.6 * i + (j == 1 ? 0.1 : 0.0));
-      S.points.push_back(0.1 + 0.4 * j);
-    }
-  return S;
+  return convert<double>(parabola_trimming_inner(), [](const Rational& x) { return to_double(x); });
 }
 Rational rstar(const Rational& t) { return (Rational(3, 10) - t * (1 - t) / 5) / Rational(3, 5); }
 }  // namespace

@@ -18,31 +18,18 @@ std::vector<Segment2<Rational>> square_edges(const Rational& a, const Rational& 
 }
 // Affine S (degree (1, 1), a parallelogram net) into a T with knots that S crosses obliquely.
 BSpline<Rational> affine_inner() {
-  BSpline<Rational> S;
-  S.degrees = {1, 1};
-  S.q = 2;
-  S.knots = {{0, 0, 1, 1}, {0, 0, 1, 1}};
   // S(r, t) = (1/10 + 7/10 r + 3/20 t, 1/20 + 1/10 r + 4/5 t)
-  for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      S.points.push_back(Rational(1, 10) + Rational(7, 10) * i + Rational(3, 20) * j);
-      S.points.push_back(Rational(1, 20) + Rational(1, 10) * i + Rational(4, 5) * j);
-    }
-  return S;
+  return affine_map<Rational>({Rational(1, 10), Rational(1, 20)}, {{Rational(7, 10), Rational(1, 10)}, {Rational(3, 20), Rational(4, 5)}});
 }
 BSpline<Rational> outer_surface() {
-  BSpline<Rational> T;
-  T.degrees = {2, 3};
-  T.q = 3;
-  T.knots = {{0, 0, 0, Rational(1, 3), Rational(1, 2), Rational(1, 2), 1, 1, 1}, {0, 0, 0, 0, Rational(2, 5), 1, 1, 1, 1}};
-  for (std::size_t j = 0; j < 5; ++j)
-    for (std::size_t i = 0; i < 6; ++i) {
-      T.points.push_back(Rational(static_cast<long>(i), 5));
-      T.points.push_back(Rational(static_cast<long>(j), 4));
-      T.points.push_back(Rational(static_cast<long>((i * 7 + j * 3) % 11), 5));
-    }
-  validate(T);
-  return T;
+  return spline_from<Rational>({2, 3},
+                               {clamped_knots(2, Rational(0), Rational(1), {Rational(1, 3), Rational(1, 2), Rational(1, 2)}),
+                                clamped_knots(3, Rational(0), Rational(1), {Rational(2, 5)})},
+                               3, [](const std::vector<std::size_t>& ij) {
+                                 const std::size_t i = ij[0], j = ij[1];
+                                 return std::vector<Rational>{Rational(static_cast<long>(i), 5), Rational(static_cast<long>(j), 4),
+                                                              Rational(static_cast<long>((i * 7 + j * 3) % 11), 5)};
+                               });
 }
 }  // namespace
 
@@ -150,16 +137,11 @@ TEST_CASE("Algorithm 2, exact: affine S crossing knot lines obliquely") {
 
 TEST_CASE("Algorithm 2: curved trimming needs a tolerance, with polylines the error is small") {
   const auto T = outer_surface();
-  BSpline<Rational> S;
-  S.degrees = {2, 1};
-  S.q = 2;
-  S.knots = {{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}};
-  for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 2; ++i) {
-      S.points.push_back(Rational(1, 10) + Rational(2, 5) * i + (i == 1 ? Rational(1, 10) : Rational(0)) + Rational(j, 10));
-      S.points.push_back(Rational(1, 10) + Rational(7, 10) * j + Rational(i, 20));
-    }
-  validate(S);
+  const auto S = bezier_from<Rational>({2, 1}, 2, [](const std::vector<std::size_t>& ij) {
+    const long i = static_cast<long>(ij[0]), j = static_cast<long>(ij[1]);
+    return std::vector<Rational>{Rational(1, 10) + Rational(2, 5) * i + (i == 1 ? Rational(1, 10) : Rational(0)) + Rational(j, 10),
+                                 Rational(1, 10) + Rational(7, 10) * j + Rational(i, 20)};
+  });
   CHECK_THROWS_AS(compose_tensor(T, S), DomainError);
   TensorOptions o;
   o.boundary = TrimBoundary::polyline;
@@ -218,11 +200,8 @@ TEST_CASE("untrim a domain with a hole: exact areas and integrals against CGAL a
       CHECK(sum == green_integral(D, f));
     }
   // A general density (not a monomial): Green's theorem converts it to monomials itself.
-  BSpline<Rational> f;
-  f.degrees = {2, 1};
-  f.q = 1;
-  f.knots = {{-1, -1, -1, 3, 3, 3}, {0, 0, 1, 1}};
-  f.points = {Rational(1, 3), -2, 5, Rational(7, 2), 0, Rational(-1, 9)};
+  const auto f = make_spline<Rational>({2, 1}, {{-1, -1, -1, 3, 3, 3}, {0, 0, 1, 1}}, 1,
+                                      {Rational(1, 3), -2, 5, Rational(7, 2), 0, Rational(-1, 9)});
   Rational sum(0);
   for (const auto& t : tiles) sum += integrate_over_tile(f, t)[0];
   CHECK(sum == green_integral(D, f));

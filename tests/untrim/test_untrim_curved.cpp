@@ -120,17 +120,11 @@ TEST_CASE("curved untrimming: cubic loop with a hole, integrals equal Green's th
       CHECK(sum == green_integral(D, f));
     }
   // Composition: every tile patch equals S(Q) (S biquadratic with the knot lines above).
-  BSpline<Rational> S;
-  S.degrees = {2, 1};
-  S.q = 3;
-  S.knots = {{0, 0, 0, Rational(1, 4), h, Rational(2, 3), 1, 1, 1}, {0, 0, h, 1, 1}};
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 6; ++i) {
-      S.points.push_back(Rational(i, 5));
-      S.points.push_back(Rational(j, 2));
-      S.points.push_back(Rational((i * 5 + j * 3) % 7, 4));
-    }
-  validate(S);
+  const auto S = spline_from<Rational>({2, 1}, {{0, 0, 0, Rational(1, 4), h, Rational(2, 3), 1, 1, 1}, {0, 0, h, 1, 1}}, 3,
+                                       [](const std::vector<std::size_t>& ij) {
+                                         const int i = static_cast<int>(ij[0]), j = static_cast<int>(ij[1]);
+                                         return std::vector<Rational>{Rational(i, 5), Rational(j, 2), Rational((i * 5 + j * 3) % 7, 4)};
+                                       });
   CompositionOptions co;
   co.expand = true;
   for (const auto& t : tiles) {
