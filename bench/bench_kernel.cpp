@@ -12,6 +12,19 @@
 #include <map>
 #include <random>
 
+#ifdef SPLINEX_HAVE_SISL
+#define SISLNEEDPROTOTYPES
+#include <sisl.h>
+#endif
+#ifdef SPLINEX_HAVE_OCCT
+#include <Geom_BSplineCurve.hxx>
+#include <GeomConvert_BSplineCurveToBezierCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <gp_Pnt.hxx>
+#endif
+
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "float/mpfr.hpp"
@@ -93,6 +106,80 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
   st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
 }
 
+#ifdef SPLINEX_HAVE_SISL
+// SISL 4.6 (SINTEF): the same curve as a polynomial B-spline of order p+1 (kind 1), the same
+// operations by s1017 (one knot), s1018 (several), s1750 (order + 1), s1730 (to Bezier form) and
+// s1227 (value from the left). Each result is freed inside the timed loop, as splinex's is.
+void run_sisl(benchmark::State& st, const std::string& op, int p, std::size_t n) {
+  Input<double> in(p, n);
+  SISLCurve* c = newCurve(static_cast<int>(n), p + 1, in.S.knots[0].data(), in.S.points.data(), 1, 3, 1);
+  int stat = 0;
+  std::vector<double> value(3);
+  for (auto _ : st) {
+    SISLCurve* r = nullptr;
+    if (op == "insert") s1017(c, &r, in.knot, &stat);
+    else if (op == "refine") s1018(c, in.refine.data(), static_cast<int>(in.refine.size()), &r, &stat);
+    else if (op == "elevate") s1750(c, p + 2, &r, &stat);
+    else if (op == "extract") s1730(c, &r, &stat);
+    else if (op == "eval")
+      for (const double x : in.at) {
+        int left = 0;
+        s1227(c, 0, x, &left, value.data(), &stat);
+        benchmark::DoNotOptimize(value.data());
+      }
+    if (stat < 0) st.SkipWithError("SISL reported an error");
+    if (r) freeCurve(r);
+  }
+  freeCurve(c);
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
+}
+#endif
+
+#ifdef SPLINEX_HAVE_OCCT
+// OpenCASCADE 7.6: Geom_BSplineCurve has only in-place modifiers, so insert, refine and elevate
+// copy the curve (Geom_Geometry::Copy) and modify the copy; extraction is
+// GeomConvert_BSplineCurveToBezierCurve with every arc fetched; evaluation is D0.
+void run_occt(benchmark::State& st, const std::string& op, int p, std::size_t n) {
+  Input<double> in(p, n);
+  const auto& U = in.S.knots[0];
+  std::vector<double> kv;
+  std::vector<int> mv;
+  for (double u : U)
+    if (!kv.empty() && kv.back() == u) ++mv.back();
+    else { kv.push_back(u); mv.push_back(1); }
+  TColgp_Array1OfPnt poles(1, static_cast<int>(n));
+  for (std::size_t i = 0; i < n; ++i) poles(static_cast<int>(i) + 1) = gp_Pnt(in.S.points[3 * i], in.S.points[3 * i + 1], in.S.points[3 * i + 2]);
+  TColStd_Array1OfReal knots(1, static_cast<int>(kv.size()));
+  TColStd_Array1OfInteger mults(1, static_cast<int>(kv.size()));
+  for (std::size_t i = 0; i < kv.size(); ++i) { knots(static_cast<int>(i) + 1) = kv[i]; mults(static_cast<int>(i) + 1) = mv[i]; }
+  Handle(Geom_BSplineCurve) c = new Geom_BSplineCurve(poles, knots, mults, p);
+  std::vector<double> rk = in.refine;
+  std::sort(rk.begin(), rk.end());
+  TColStd_Array1OfReal ins(1, static_cast<int>(rk.size()));
+  TColStd_Array1OfInteger insm(1, static_cast<int>(rk.size()));
+  for (std::size_t i = 0; i < rk.size(); ++i) { ins(static_cast<int>(i) + 1) = rk[i]; insm(static_cast<int>(i) + 1) = 1; }
+  for (auto _ : st) {
+    if (op == "insert" || op == "refine" || op == "elevate") {
+      Handle(Geom_BSplineCurve) r = Handle(Geom_BSplineCurve)::DownCast(c->Copy());
+      if (op == "insert") r->InsertKnot(in.knot, 1, 0.0);
+      else if (op == "refine") r->InsertKnots(ins, insm, 0.0, Standard_True);
+      else r->IncreaseDegree(p + 1);
+      benchmark::DoNotOptimize(r.get());
+    } else if (op == "extract") {
+      GeomConvert_BSplineCurveToBezierCurve conv(c);
+      for (int i = 1; i <= conv.NbArcs(); ++i) benchmark::DoNotOptimize(conv.Arc(i).get());
+    } else {
+      for (const double x : in.at) {
+        gp_Pnt v;
+        c->D0(x, v);
+        benchmark::DoNotOptimize(v);
+      }
+    }
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
+}
+#endif
+
 // Collects real time per benchmark name for the ratio table.
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
@@ -112,7 +199,13 @@ int main(int argc, char** argv) {
   const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "eval"};
   const std::vector<int> degrees{1, 3, 5, 7};
   const std::vector<std::size_t> sizes{10, 100, 1000, 10000};
-  const std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}};
+  std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}};
+#ifdef SPLINEX_HAVE_SISL
+  ariths.emplace_back("sisl", 0);
+#endif
+#ifdef SPLINEX_HAVE_OCCT
+  ariths.emplace_back("occt", 0);
+#endif
   for (const auto& op : ops)
     for (int p : degrees)
       for (std::size_t n : sizes) {
@@ -124,6 +217,12 @@ int main(int argc, char** argv) {
             if (a == "double") run_op<double>(st, op, p, n, 0);
             else if (a == "exact") run_op<Rational>(st, op, p, n, 0);
             else if (a == "flint") run_op<FlintRational>(st, op, p, n, 0);
+#ifdef SPLINEX_HAVE_SISL
+            else if (a == "sisl") run_sisl(st, op, p, n);
+#endif
+#ifdef SPLINEX_HAVE_OCCT
+            else if (a == "occt") run_occt(st, op, p, n);
+#endif
             else run_op<Mpfr>(st, op, p, n, b);
           })->Unit(benchmark::kMicrosecond);
         }

@@ -85,6 +85,9 @@ Rational to_rational(const Mpfr& x);
 std::string to_decimal_string(const Mpfr& x);
 
 static_assert(Arithmetic<Mpfr>, "Mpfr must model the arithmetic concept (spline/arith.hpp)");
+/// An Mpfr keeps its precision on assignment: no scratch values across calls (spline/arith.hpp).
+template <>
+inline constexpr bool reusable_scratch<Mpfr> = false;
 
 template <>
 struct ArithTraits<Mpfr> {

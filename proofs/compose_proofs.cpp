@@ -386,7 +386,7 @@ std::vector<ProofEntry> composition_proofs() {
             "(property 2), at grid points, on both sides of trimming curves within 2^-40, and (affine S) "
             "exactly on knot lines and at their crossings",
             "none: pointwise exact checks only (R is piecewise by semi-algebraic regions; no identity argument "
-            "covers the regions' boundaries), outer_spec the verdict is 'checked at N points'",
+            "covers the regions' boundaries), so the verdict is 'checked at N points'",
             compose_trimmed, own_inputs_sampled),
   };
 }

@@ -81,7 +81,7 @@ void untrim_curved_cover(const BSpline<Rational>&, std::mt19937_64& rng, Accumul
   const Rational h(1, 2);
   const Rational a(pick(1, 3), 20), b(pick(17, 19), 20);
   // Top arc (right to left) above y = 1/2, bottom arc (left to right) below: interior ordinates
-  // in [3/4, 19/20] and [1/20, 1/4], outer_spec they meet only at their shared end points.
+  // in [3/4, 19/20] and [1/20, 1/4], so they meet only at their shared end points.
   const int dt = pick(2, 4), db = pick(2, 4);
   TrimmedDomain D{{0, 0}, {1, 1}, {{{a, h}, {b, h}}}};
   Polygon bottom, top;

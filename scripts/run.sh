@@ -4,6 +4,7 @@
 #   scripts/run.sh report    the main job: build/bin/splinex report --out results
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
 #   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
+#   scripts/run.sh bench     every kernel benchmark, then the ratio table bench/results/kernel.md (+ .json)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
@@ -40,5 +41,11 @@ case "$what" in
     cmake --preset fuzz >&2
     cmake --build --preset fuzz --target fuzz_splinex
     fuzz/run_fuzz.sh build-fuzz/bin/fuzz_splinex tests/data build-fuzz/corpus "${2:-10000000}" ;;
-  *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]]" >&2; exit 2 ;;
+  bench)
+    cmake --preset default >&2
+    cmake --build --preset default --target bench_kernel
+    build/bin/bench_kernel --benchmark_out=build/bench_kernel.json --benchmark_out_format=json \
+      "${@:2}" >&2
+    python3 scripts/bench_table.py build/bench_kernel.json bench/results ;;
+  *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]]" >&2; exit 2 ;;
 esac

@@ -5,22 +5,40 @@
 
 namespace splinex {
 
+/// A2.2 into caller storage: N[0..p] receives the p+1 non-zero basis functions N_{s-p..s,p}(x) on
+/// span s; left and right hold p+1 scratch values, den and temp two more. Written with compound
+/// operations only, so an exact scalar reuses the storage it holds (no temporaries); in floating
+/// point every operation is the one of A2.2, in the same order.
+template <class T>
+void basis_funs_into(std::size_t s, const T& x, int p, const std::vector<T>& U, T* N, T* left, T* right, T& den, T& temp) {
+  N[0] = T(1);
+  for (int j = 1; j <= p; ++j) {
+    left[j] = x;
+    left[j] -= U[s + 1 - j];
+    right[j] = U[s + j];
+    right[j] -= x;
+    T& saved = N[j];  // N[j] is written last, so it holds `saved` meanwhile
+    saved = T(0);
+    for (int r = 0; r < j; ++r) {
+      den = right[r + 1];
+      den += left[j - r];
+      temp = N[r];
+      temp /= den;  // temp = N[r] / (right[r+1] + left[j-r])
+      N[r] = right[r + 1];
+      N[r] *= temp;
+      N[r] += saved;  // N[r] = saved + right[r+1] * temp
+      saved = left[j - r];
+      saved *= temp;
+    }
+  }
+}
+
 /// A2.2: the p+1 non-zero basis functions N_{s-p..s,p}(x) on span s.
 template <class T>
 std::vector<T> basis_funs(std::size_t s, const T& x, int p, const std::vector<T>& U) {
   std::vector<T> N(p + 1), left(p + 1), right(p + 1);
-  N[0] = T(1);
-  for (int j = 1; j <= p; ++j) {
-    left[j] = x - U[s + 1 - j];
-    right[j] = U[s + j] - x;
-    T saved(0);
-    for (int r = 0; r < j; ++r) {
-      T temp = N[r] / (right[r + 1] + left[j - r]);
-      N[r] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    N[j] = saved;
-  }
+  T den, temp;
+  basis_funs_into(s, x, p, U, N.data(), left.data(), right.data(), den, temp);
   return N;
 }
 

@@ -10,7 +10,9 @@ namespace detail {
 /// Raises every interior breakpoint of direction d to multiplicity p (clamped first).
 template <class T>
 BSpline<T> to_bezier_form(const BSpline<T>& S, int d, const Limits& limits) {
-  BSpline<T> C = clamp(S, d, limits);
+  /// A clamped direction is refined from the input itself (clamp would return a copy).
+  if (!is_clamped(S.knots[d], S.degrees[d], S.count(d))) return to_bezier_form(clamp(S, d, limits), d, limits);
+  const BSpline<T>& C = S;
   const int p = C.degrees[d];
   const std::vector<T> bp = breakpoints(C.knots[d], p, C.count(d));
   std::vector<T> X;
@@ -41,20 +43,26 @@ std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& li
   // the Bezier form of every direction too.
   bezier_pieces_size(S, limits);
   /// Fully Bezier form in every direction first, then cut piece by piece.
-  BSpline<T> B = S;
-  for (int d = 0; d < S.dim(); ++d) B = detail::to_bezier_form(B, d, limits);
-  std::vector<BezierPiece<T>> pieces{BezierPiece<T>{{}, B}};
+  /// (Each direction is converted from the previous result; the input is never copied whole.)
+  BSpline<T> B = detail::to_bezier_form(S, 0, limits);
+  for (int d = 1; d < S.dim(); ++d) B = detail::to_bezier_form(B, d, limits);
+  const std::vector<int> degrees = B.degrees;
+  const std::vector<std::vector<T>> knots_all = B.knots;
+  std::vector<std::size_t> counts(S.dim());
+  for (int d = 0; d < S.dim(); ++d) counts[d] = B.count(d);
+  std::vector<BezierPiece<T>> pieces;
+  pieces.push_back(BezierPiece<T>{{}, std::move(B)});
   for (int d = 0; d < S.dim(); ++d) {
-    const int p = B.degrees[d];
-    const std::vector<T> bp = breakpoints(B.knots[d], p, B.count(d));
+    const int p = degrees[d];
+    const std::vector<T> bp = breakpoints(knots_all[d], p, counts[d]);
     std::vector<BezierPiece<T>> next;
     /// Direction-0-fastest ordering: later directions form the outer loop. The piece on
     /// [bp[seg], bp[seg+1]) is carried by the p+1 control points before the end of its knot span s
     /// (U[s] <= bp[seg] < U[s+1]): points s-p..s. Counting from seg*p would assume every interior
     /// breakpoint has multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
-    const std::size_t n = B.count(d);
+    const std::size_t n = counts[d];
     for (std::size_t seg = 0; seg + 1 < bp.size(); ++seg) {
-      const std::size_t first = find_span(B.knots[d], p, n, bp[seg]) - static_cast<std::size_t>(p);
+      const std::size_t first = find_span(knots_all[d], p, n, bp[seg]) - static_cast<std::size_t>(p);
       for (const auto& piece : pieces) {
         std::vector<T> knots(p + 1, bp[seg]);
         knots.insert(knots.end(), p + 1, bp[seg + 1]);

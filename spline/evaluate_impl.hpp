@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <string>
 
@@ -21,37 +22,76 @@ void check_point(const BSpline<T>& S, const std::vector<T>& x) {
                         "give a parameter in [U[p], U[n]] of that direction");
 }
 
-/// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H_i[c], with
-/// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched.
+/// Scratch storage of evaluation: basis values, A2.2's left/right, index vectors and scalar
+/// temporaries. Reused across calls on one thread where the arithmetic allows it
+/// (reusable_scratch<T>), so evaluating a point allocates only its result.
 template <class T>
-void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const std::vector<const std::vector<T>*>& B,
-                std::vector<T>& out) {
+struct EvalScratch {
+  std::vector<T> N, left, right;
+  T den, temp, w, prod;
+  std::vector<std::size_t> span, stride;
+  std::vector<int> i;
+  std::vector<const T*> B;
+};
+
+/// Calls f(scratch) with this thread's scratch, or with a fresh one for arithmetics whose values
+/// carry state that must not outlive a call (MPFR's precision).
+template <class T, class F>
+decltype(auto) with_eval_scratch(F&& f) {
+  if constexpr (reusable_scratch<T>) {
+    thread_local EvalScratch<T> ws;
+    return f(ws);
+  } else {
+    EvalScratch<T> ws;
+    return f(ws);
+  }
+}
+
+/// Sum over the (p_d+1) tensor of basis values: out[c] = sum_i prod_d B[d][i_d] * H_i[c], with
+/// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched;
+/// products go through the scratch scalars, so an exact scalar makes no temporaries.
+template <class T>
+void tensor_sum(const BSpline<T>& S, const std::size_t* span, const T* const* B, std::vector<T>& out, EvalScratch<T>& ws) {
   const int k = S.dim();
   const bool rational = S.is_rational();
   const std::size_t q = S.q, qq = q + (rational ? 1 : 0);
-  std::vector<std::size_t> stride(k);
+  ws.stride.resize(k);
   std::size_t st = 1;
-  for (int d = 0; d < k; ++d) { stride[d] = st; st *= S.count(d); }
-  std::vector<int> i(k, 0);
+  for (int d = 0; d < k; ++d) { ws.stride[d] = st; st *= S.count(d); }
+  ws.i.assign(k, 0);
   out.assign(qq, T(0));
-  T w;
+  T& w = ws.w;
   while (true) {
     w = T(1);
     std::size_t idx = 0;
     for (int d = 0; d < k; ++d) {
-      w *= (*B[d])[i[d]];
-      idx += (span[d] - S.degrees[d] + i[d]) * stride[d];
+      w *= B[d][ws.i[d]];
+      idx += (span[d] - S.degrees[d] + ws.i[d]) * ws.stride[d];
     }
     if (rational) {
       w *= S.weights[idx];
       out[q] += w;
     }
     const T* P = S.points.data() + idx * q;
-    for (std::size_t c = 0; c < q; ++c) out[c] += w * P[c];
+    for (std::size_t c = 0; c < q; ++c) {
+      ws.prod = w;
+      ws.prod *= P[c];
+      out[c] += ws.prod;
+    }
     int d = 0;
-    while (d < k && ++i[d] > S.degrees[d]) { i[d] = 0; ++d; }
+    while (d < k && ++ws.i[d] > S.degrees[d]) { ws.i[d] = 0; ++d; }
     if (d == k) break;
   }
+}
+
+template <class T>
+void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const std::vector<const std::vector<T>*>& B,
+                std::vector<T>& out) {
+  with_eval_scratch<T>([&](EvalScratch<T>& ws) {
+    std::vector<const T*> ptr(B.size());
+    for (std::size_t d = 0; d < B.size(); ++d) ptr[d] = B[d]->data();
+    tensor_sum(S, span.data(), ptr.data(), out, ws);
+  });
 }
 
 }  // namespace detail
@@ -59,18 +99,33 @@ void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const
 template <class T>
 std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x) {
   detail::check_point(S, x);
-  const int k = S.dim();
-  std::vector<std::size_t> span(k);
-  std::vector<std::vector<T>> N(k);
-  std::vector<const std::vector<T>*> B(k);
-  for (int d = 0; d < k; ++d) {
-    span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
-    N[d] = basis_funs(span[d], x[d], S.degrees[d], S.knots[d]);
-    B[d] = &N[d];
-  }
-  std::vector<T> out;
-  detail::tensor_sum(S, span, B, out);
-  return out;
+  return detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) {
+    const int k = S.dim();
+    std::size_t total = 0;
+    int pmax = 0;
+    for (int d = 0; d < k; ++d) {
+      total += static_cast<std::size_t>(S.degrees[d]) + 1;
+      pmax = std::max(pmax, S.degrees[d]);
+    }
+    if (ws.N.size() < total) ws.N.resize(total);
+    if (ws.left.size() < static_cast<std::size_t>(pmax) + 1) {
+      ws.left.resize(pmax + 1);
+      ws.right.resize(pmax + 1);
+    }
+    ws.span.resize(k);
+    ws.B.resize(k);
+    std::size_t off = 0;
+    for (int d = 0; d < k; ++d) {
+      ws.span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
+      T* N = ws.N.data() + off;
+      basis_funs_into(ws.span[d], x[d], S.degrees[d], S.knots[d], N, ws.left.data(), ws.right.data(), ws.den, ws.temp);
+      ws.B[d] = N;
+      off += static_cast<std::size_t>(S.degrees[d]) + 1;
+    }
+    std::vector<T> out;
+    detail::tensor_sum(S, ws.span.data(), ws.B.data(), out, ws);
+    return out;
+  });
 }
 
 template <class T>

@@ -147,15 +147,17 @@ BSpline<T> insert_knot(const BSpline<T>& S, int d, const T& x, int times, const 
   const int p = S.degrees[d];
   /// A5.1 up to multiplicity p, then (if asked) the last step to p+1 separately.
   const int r1 = std::min(times, p - s);
-  BSpline<T> R = S;
-  if (r1 > 0)
-    R = apply_along(S, d, [&](int pp, const std::vector<T>& U, const T* P, std::size_t nn, std::size_t m) {
-      return detail::curve_knot_ins(pp, U, P, nn, m, x, k, s, r1);
-    });
-  if (times > r1)
-    R = apply_along(R, d, [&](int pp, const std::vector<T>& U, const T* P, std::size_t nn, std::size_t m) {
+  /// The input is read in place (apply_along); no copy of S is made unless nothing is inserted.
+  const auto last_step = [&](const BSpline<T>& R) {
+    return apply_along(R, d, [&](int pp, const std::vector<T>& U, const T* P, std::size_t nn, std::size_t m) {
       return detail::curve_knot_ins(pp, U, P, nn, m, x, k + r1, p, 1);
     });
+  };
+  if (r1 == 0) return last_step(S);
+  BSpline<T> R = apply_along(S, d, [&](int pp, const std::vector<T>& U, const T* P, std::size_t nn, std::size_t m) {
+    return detail::curve_knot_ins(pp, U, P, nn, m, x, k, s, r1);
+  });
+  if (times > r1) return last_step(R);
   return R;
 }
 
