@@ -8,7 +8,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
-[[ $what == fuzz ]] && extra_packages=(clang libclang-rt-14-dev) || extra_packages=()
+extra_packages=()
+[[ $what == fuzz ]] && extra_packages=(clang libclang-rt-14-dev)
+# The peers the kernel is benchmarked against (bench/bench_kernel.cpp): SISL and OpenCASCADE.
+[[ $what == bench ]] && extra_packages=(libsisl-dev libocct-foundation-dev libocct-modeling-data-dev)
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3)

@@ -200,9 +200,9 @@ BSpline<T> apply_along(const BSpline<T>& S, int d, Op&& op) {
     CurveBlock<T> r = op(S.degrees[d], S.knots[d], src + b * n * m, n, m);
     if (b == 0) {
       R.degrees = S.degrees;
-      R.knots = S.knots;
       R.degrees[d] = r.p;
-      R.knots[d] = std::move(r.U);
+      R.knots.reserve(S.knots.size());
+      for (int e = 0; e < S.dim(); ++e) R.knots.push_back(e == d ? std::move(r.U) : S.knots[e]);
       if (after == 1) {
         out = std::move(r.P);
         break;

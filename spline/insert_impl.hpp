@@ -24,20 +24,20 @@ CurveBlock<T> curve_knot_ins(int p, const std::vector<T>& UP, const T* P, std::s
   const std::size_t np = n - 1, mp = np + p + 1;
   CurveBlock<T> out;
   out.p = p;
-  out.U.resize(UP.size() + r);
-  for (std::size_t i = 0; i <= k; ++i) out.U[i] = UP[i];
-  for (int i = 1; i <= r; ++i) out.U[k + i] = x;
-  for (std::size_t i = k + 1; i <= mp; ++i) out.U[i + r] = UP[i];
-  out.P.resize((n + r) * m);
+  /// Built in order with block copies (no zero fill of what is copied next): knots U[0..k], r
+  /// copies of x, U[k+1..]; points Q_i = P_i (i <= k-p), the p-s+r-1 new ones, Q_{i+r} = P_i (i >= k-s).
+  out.U.reserve(UP.size() + r);
+  out.U.insert(out.U.end(), UP.begin(), UP.begin() + k + 1);
+  out.U.insert(out.U.end(), static_cast<std::size_t>(r), x);
+  out.U.insert(out.U.end(), UP.begin() + k + 1, UP.begin() + mp + 1);
+  out.P.reserve((n + r) * m);
+  out.P.insert(out.P.end(), P, P + (k - p + 1) * m);
+  out.P.resize((k - s + r) * m);
+  out.P.insert(out.P.end(), P + (k - s) * m, P + (np + 1) * m);
   T* Q = out.P.data();
-  for (std::size_t i = 0; i + p <= k; ++i) std::copy(P + i * m, P + (i + 1) * m, Q + i * m);
-  for (std::size_t i = k - s; i <= np; ++i) std::copy(P + i * m, P + (i + 1) * m, Q + (i + r) * m);
-  if (s == p) {
-    // Raising multiplicity p to p+1 (outside A5.1, which assumes s + r <= p): the curve passes
-    // through P_{k-p} at x, and the new net repeats that point.
-    std::copy(P + (k - p) * m, P + (k - p + 1) * m, Q + (k - p + 1) * m);
-    return out;
-  }
+  // Raising multiplicity p to p+1 (outside A5.1, which assumes s + r <= p; r = 1 here): the curve
+  // passes through P_{k-p} at x, and the new net repeats that point (Q_{k-p+1} = P_{k-p}, above).
+  if (s == p) return out;
   std::vector<T> R(P + (k - p) * m, P + (k - s + 1) * m);  // R_i = P_{k-p+i}, i = 0..p-s
   std::size_t L = 0;
   for (int j = 1; j <= r; ++j) {
