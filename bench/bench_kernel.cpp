@@ -100,8 +100,7 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
     else if (op == "refine") benchmark::DoNotOptimize(refine_knots(in.S, 0, in.refine));
     else if (op == "elevate") benchmark::DoNotOptimize(elevate_degree(in.S, 0, 1));
     else if (op == "extract") benchmark::DoNotOptimize(extract_bezier(in.S));
-    else if (op == "eval")
-      for (const auto& x : in.at) benchmark::DoNotOptimize(evaluate(in.S, {x}));
+    else if (op == "eval") benchmark::DoNotOptimize(evaluate_points(in.S, in.at));
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
 }

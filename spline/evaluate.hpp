@@ -12,6 +12,12 @@ namespace splinex {
 template <class T>
 std::vector<T> evaluate(const BSpline<T>& S, const std::vector<T>& x);
 
+/// S at many points at once: `params` holds N points of dim() parameters each (point-major), the
+/// result their N values of q coordinates each. One allocation for the whole batch (the result),
+/// none per point; each point is checked as evaluate() checks it ("params[i]" in errors).
+template <class T>
+std::vector<T> evaluate_points(const BSpline<T>& S, const std::vector<T>& params);
+
 /// S(x) by de Boor's algorithm (NURBS Book A3.1 generalized): the (p_d+1)-point active net is
 /// reduced one direction at a time by the de Boor triangle, on homogeneous coordinates. An
 /// independent route to evaluate(), which uses the basis functions (A2.2); proofs require that

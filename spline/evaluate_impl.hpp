@@ -32,6 +32,7 @@ struct EvalScratch {
   std::vector<std::size_t> span, stride;
   std::vector<int> i;
   std::vector<const T*> B;
+  std::vector<T> h;  // a homogeneous value (rational batches)
 };
 
 /// Calls f(scratch) with this thread's scratch, or with a fresh one for arithmetics whose values
@@ -51,7 +52,7 @@ decltype(auto) with_eval_scratch(F&& f) {
 /// H_i the homogeneous control point (w_i P_i, w_i) or P_i. Only the active points are touched;
 /// products go through the scratch scalars, so an exact scalar makes no temporaries.
 template <class T>
-void tensor_sum(const BSpline<T>& S, const std::size_t* span, const T* const* B, std::vector<T>& out, EvalScratch<T>& ws) {
+void tensor_sum(const BSpline<T>& S, const std::size_t* span, const T* const* B, T* out, EvalScratch<T>& ws) {
   const int k = S.dim();
   const bool rational = S.is_rational();
   const std::size_t q = S.q, qq = q + (rational ? 1 : 0);
@@ -59,7 +60,7 @@ void tensor_sum(const BSpline<T>& S, const std::size_t* span, const T* const* B,
   std::size_t st = 1;
   for (int d = 0; d < k; ++d) { ws.stride[d] = st; st *= S.count(d); }
   ws.i.assign(k, 0);
-  out.assign(qq, T(0));
+  for (std::size_t c = 0; c < qq; ++c) out[c] = T(0);
   T& w = ws.w;
   while (true) {
     w = T(1);
@@ -90,8 +91,41 @@ void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const
   with_eval_scratch<T>([&](EvalScratch<T>& ws) {
     std::vector<const T*> ptr(B.size());
     for (std::size_t d = 0; d < B.size(); ++d) ptr[d] = B[d]->data();
-    tensor_sum(S, span.data(), ptr.data(), out, ws);
+    out.resize(S.q + (S.is_rational() ? 1 : 0));
+    tensor_sum(S, span.data(), ptr.data(), out.data(), ws);
   });
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// The homogeneous value at x (dim() parameters) into out (q or q+1 values), with the scratch.
+template <class T>
+void evaluate_homogeneous_into(const BSpline<T>& S, const T* x, T* out, EvalScratch<T>& ws) {
+  const int k = S.dim();
+  std::size_t total = 0;
+  int pmax = 0;
+  for (int d = 0; d < k; ++d) {
+    total += static_cast<std::size_t>(S.degrees[d]) + 1;
+    pmax = std::max(pmax, S.degrees[d]);
+  }
+  if (ws.N.size() < total) ws.N.resize(total);
+  if (ws.left.size() < static_cast<std::size_t>(pmax) + 1) {
+    ws.left.resize(pmax + 1);
+    ws.right.resize(pmax + 1);
+  }
+  ws.span.resize(k);
+  ws.B.resize(k);
+  std::size_t off = 0;
+  for (int d = 0; d < k; ++d) {
+    ws.span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
+    T* N = ws.N.data() + off;
+    basis_funs_into(ws.span[d], x[d], S.degrees[d], S.knots[d], N, ws.left.data(), ws.right.data(), ws.den, ws.temp);
+    ws.B[d] = N;
+    off += static_cast<std::size_t>(S.degrees[d]) + 1;
+  }
+  tensor_sum(S, ws.span.data(), ws.B.data(), out, ws);
 }
 
 }  // namespace detail
@@ -99,33 +133,41 @@ void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const
 template <class T>
 std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x) {
   detail::check_point(S, x);
-  return detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) {
-    const int k = S.dim();
-    std::size_t total = 0;
-    int pmax = 0;
-    for (int d = 0; d < k; ++d) {
-      total += static_cast<std::size_t>(S.degrees[d]) + 1;
-      pmax = std::max(pmax, S.degrees[d]);
+  std::vector<T> out(S.q + (S.is_rational() ? 1 : 0));
+  detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) { detail::evaluate_homogeneous_into(S, x.data(), out.data(), ws); });
+  return out;
+}
+
+template <class T>
+std::vector<T> evaluate_points(const BSpline<T>& S, const std::vector<T>& params) {
+  const std::size_t k = S.dim(), q = S.q;
+  if (params.size() % k != 0)
+    throw DomainError("params", "has " + std::to_string(params.size()) + " numbers, not a multiple of the dimension " +
+                                    std::to_string(k),
+                      "give dim() parameters per point");
+  const std::size_t N = params.size() / k;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t d = 0; d < k; ++d)
+      if (params[i * k + d] < S.domain_lo(static_cast<int>(d)) || S.domain_hi(static_cast<int>(d)) < params[i * k + d])
+        throw DomainError("params[" + std::to_string(i) + "][" + std::to_string(d) + "]",
+                          "lies outside the domain of direction " + std::to_string(d),
+                          "give a parameter in [U[p], U[n]] of that direction");
+  std::vector<T> out(N * q);
+  detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) {
+    if (!S.is_rational()) {
+      for (std::size_t i = 0; i < N; ++i) detail::evaluate_homogeneous_into(S, params.data() + i * k, out.data() + i * q, ws);
+      return;
     }
-    if (ws.N.size() < total) ws.N.resize(total);
-    if (ws.left.size() < static_cast<std::size_t>(pmax) + 1) {
-      ws.left.resize(pmax + 1);
-      ws.right.resize(pmax + 1);
+    ws.h.resize(q + 1);
+    for (std::size_t i = 0; i < N; ++i) {
+      detail::evaluate_homogeneous_into(S, params.data() + i * k, ws.h.data(), ws);
+      for (std::size_t c = 0; c < q; ++c) {
+        out[i * q + c] = ws.h[c];
+        out[i * q + c] /= ws.h[q];
+      }
     }
-    ws.span.resize(k);
-    ws.B.resize(k);
-    std::size_t off = 0;
-    for (int d = 0; d < k; ++d) {
-      ws.span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
-      T* N = ws.N.data() + off;
-      basis_funs_into(ws.span[d], x[d], S.degrees[d], S.knots[d], N, ws.left.data(), ws.right.data(), ws.den, ws.temp);
-      ws.B[d] = N;
-      off += static_cast<std::size_t>(S.degrees[d]) + 1;
-    }
-    std::vector<T> out;
-    detail::tensor_sum(S, ws.span.data(), ws.B.data(), out, ws);
-    return out;
   });
+  return out;
 }
 
 template <class T>

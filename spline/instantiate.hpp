@@ -11,6 +11,7 @@
 #define SPLINEX_INSTANTIATE_KERNEL(T)                                                                           \
   template std::vector<T> evaluate(const BSpline<T>&, const std::vector<T>&);                                  \
   template std::vector<T> evaluate_de_boor(const BSpline<T>&, const std::vector<T>&);                         \
+  template std::vector<T> evaluate_points(const BSpline<T>&, const std::vector<T>&);                          \
   template std::vector<T> evaluate_homogeneous(const BSpline<T>&, const std::vector<T>&);                      \
   template std::vector<T> derivative(const BSpline<T>&, const std::vector<T>&, const std::vector<int>&);        \
   template BSpline<T> insert_knot(const BSpline<T>&, int, const T&, int, const Limits&);                       \

@@ -37,6 +37,51 @@ TEST_CASE("evaluation against hand-computed values") {
   CHECK_THROWS_AS(evaluate(B, {Rational(1), Rational(1)}), DomainError);
 }
 
+TEST_CASE("evaluate_points equals evaluate point by point: exactly, bit for bit in double and MPFR") {
+  std::mt19937_64 rng(1515);
+  for (int trial = 0; trial < 30; ++trial) {
+    const auto c = structured_case(rng);
+    const BSpline<Rational>& S = c.spline;
+    std::vector<Rational> params;
+    std::vector<std::vector<Rational>> pts;
+    for (int i = 0; i < 5; ++i) {
+      std::vector<Rational> x;
+      for (int d = 0; d < S.dim(); ++d) {
+        const Rational t(static_cast<long>(rng() % 17), 16);
+        x.push_back(S.domain_lo(d) + (S.domain_hi(d) - S.domain_lo(d)) * t);
+      }
+      params.insert(params.end(), x.begin(), x.end());
+      pts.push_back(x);
+    }
+    const auto all = evaluate_points(S, params);
+    REQUIRE(all.size() == pts.size() * S.q);
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      CHECK(std::vector<Rational>(all.begin() + i * S.q, all.begin() + (i + 1) * S.q) == evaluate(S, pts[i]));
+    const auto D = convert<double>(S, [](const Rational& x) { return to_double(x); });
+    std::vector<double> dp;
+    for (const auto& x : params) dp.push_back(to_double(x));
+    const auto dall = evaluate_points(D, dp);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const auto one = evaluate(D, std::vector<double>(dp.begin() + i * S.dim(), dp.begin() + (i + 1) * S.dim()));
+      for (int c2 = 0; c2 < S.q; ++c2) CHECK(dall[i * S.q + c2] == one[c2]);  // the same operations in the same order
+    }
+    {
+      Mpfr::Precision prec(80);
+      const auto M = convert<Mpfr>(S, [](const Rational& x) { return Mpfr(x); });
+      std::vector<Mpfr> mp;
+      for (const auto& x : params) mp.emplace_back(x);
+      const auto mall = evaluate_points(M, mp);
+      const auto one = evaluate(M, std::vector<Mpfr>(mp.begin(), mp.begin() + S.dim()));
+      for (int c2 = 0; c2 < S.q; ++c2) {
+        CHECK(mall[c2] == one[c2]);
+        CHECK(mall[c2].bits() == 80);
+      }
+    }
+  }
+  const auto B = spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[0,0],[1,2],[4,0]]})");
+  CHECK_THROWS_AS(evaluate_points(B, {Rational(1, 2), Rational(3, 2)}), DomainError);
+}
+
 TEST_CASE("mixed partial derivatives of a rational surface match a difference quotient identity") {
   // d^2/dudv of a bilinear rational patch, checked against the exact quotient-rule expansion at
   // a point: S = A/w with A, w bilinear, S_uv = (A_uv - w_u S_v - w_v S_u - w_uv S) / w.
