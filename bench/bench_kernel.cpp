@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -27,6 +28,7 @@
 
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
+#include "io/json_io.hpp"
 #include "float/mpfr.hpp"
 #include "spline/kernel.hpp"
 
@@ -192,9 +194,30 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 }  // namespace
 
+// --write-cases DIR: the inputs of the insert and eval cases with splinex's exact results, one JSON
+// document per (p, n), for the Python Fraction peer (scripts/bench_python.py), which checks its
+// results against them before it times anything.
+int write_cases(const std::string& dir, const std::vector<int>& degrees, const std::vector<std::size_t>& sizes) {
+  for (int p : degrees)
+    for (std::size_t n : sizes) {
+      if (n < static_cast<std::size_t>(p) + 1) continue;
+      const Case& c = get_case(p, n);
+      Json at = Json::array(), values = Json::array();
+      for (const auto& x : c.at) at.push_back(ArithTraits<Rational>::to_json(x));
+      const auto all = evaluate_points(c.exact, c.at);
+      for (const auto& v : all) values.push_back(ArithTraits<Rational>::to_json(v));
+      const Json doc{{"p", p}, {"n", n}, {"spline", spline_to_json(c.exact)}, {"knot", ArithTraits<Rational>::to_json(c.knot)},
+                     {"inserted", spline_to_json(insert_knot(c.exact, 0, c.knot, 1))}, {"at", at}, {"values", values}};
+      std::ofstream(dir + "/case_p" + std::to_string(p) + "_n" + std::to_string(n) + ".json") << doc.dump() << "\n";
+    }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--decimal") == 0) g_dyadic = false;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::strcmp(argv[i], "--write-cases") == 0) return write_cases(argv[i + 1], {1, 3, 5, 7}, {10, 100, 1000, 10000});
   const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "eval"};
   const std::vector<int> degrees{1, 3, 5, 7};
   const std::vector<std::size_t> sizes{10, 100, 1000, 10000};

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Ratio table of one bench_kernel run (Google Benchmark JSON), as markdown and JSON.
 
-    scripts/bench_table.py KERNEL.json OUT_DIR
+    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json]
 
 Every ratio is taken between timings of the same run (CPU time per iteration): each arithmetic
 against double for the same operation, degree p and size n, and the geometric mean per operation.
@@ -32,7 +32,7 @@ def pkg(name):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         print(__doc__, file=sys.stderr)
         return 2
     doc = json.load(open(sys.argv[1]))
@@ -45,6 +45,11 @@ def main():
         op, arith, p, n = b["name"].split("/")[:4]
         scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
         t[(op, arith, int(p[1:]), int(n[1:]))] = b["cpu_time"] * scale
+    python = None
+    if len(sys.argv) == 4:
+        python = json.load(open(sys.argv[3]))
+        for c in python["cases"]:
+            t[(c["op"], "fraction", c["p"], c["n"])] = c["seconds"]
     present = {k[1] for k in t}
     ariths = [a for a in ("exact", "flint", "mpfr128") if a in present]
     peers = [a for a in ("sisl", "occt") if a in present]
@@ -54,7 +59,10 @@ def main():
     cols = [("double", pr) for pr in peers] + [(a, "double") for a in ariths]
     if "sisl" in peers:
         cols += [(a, "sisl") for a in ("exact", "flint") if a in ariths]
-    names = {"exact": "GMP", "flint": "flint", "mpfr128": "mpfr128", "double": "double", "sisl": "SISL", "occt": "OCCT"}
+    if "fraction" in present:
+        cols += [(a, "fraction") for a in ("exact", "flint") if a in ariths]
+    names = {"exact": "GMP", "flint": "flint", "mpfr128": "mpfr128", "double": "double", "sisl": "SISL", "occt": "OCCT",
+             "fraction": "Fraction"}
     rows, geo = [], defaultdict(list)
     order = ["insert", "refine", "elevate", "extract", "eval"]
     for (op, arith, p, n), sec in sorted(t.items(), key=lambda kv: (order.index(kv[0][0]), kv[0][2], kv[0][3])):
@@ -78,8 +86,10 @@ def main():
         "build_type": ctx.get("library_build_type"),
         "versions": {"gmp": pkg("libgmp-dev"), "mpfr": pkg("libmpfr-dev"), "flint": pkg("libflint-dev"),
                      "boost": pkg("libboost-dev"), "benchmark": pkg("libbenchmark-dev"), "g++": version(["g++", "--version"])},
-        "peers": ("peers: " + ", ".join(names[p] for p in peers)) if peers else
-                 "no peer installed (scripts/run.sh bench installs SISL and OpenCASCADE)",
+        "peers": (("peers: " + ", ".join(names[p] for p in peers)) if peers else
+                  "no peer installed (scripts/run.sh bench installs SISL and OpenCASCADE)") +
+                 (f"; Python {python['python']} fractions.Fraction for insert and eval (scripts/bench_python.py, "
+                  "results checked equal to splinex's exact ones; timed right after the C++ run)" if python else ""),
     }
     try:
         meta["cpu"] = next(l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name"))

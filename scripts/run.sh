@@ -49,6 +49,9 @@ case "$what" in
     cmake --build --preset default --target bench_kernel
     build/bin/bench_kernel --benchmark_out=build/bench_kernel.json --benchmark_out_format=json \
       "${@:2}" >&2
-    python3 scripts/bench_table.py build/bench_kernel.json bench/results ;;
+    mkdir -p build/bench_cases
+    build/bin/bench_kernel --write-cases build/bench_cases
+    python3 scripts/bench_python.py build/bench_cases build/bench_python.json
+    python3 scripts/bench_table.py build/bench_kernel.json bench/results build/bench_python.json ;;
   *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]]" >&2; exit 2 ;;
 esac
