@@ -46,12 +46,12 @@ concept Arithmetic = std::copy_constructible<T> && std::default_initializable<T>
                      };
 
 template <class T>
-struct ArithTraits;
+struct ArithTraits;  // specialized per arithmetic; see above
 
 /// Whether scratch values of T may be kept between calls on one thread (evaluation's workspace).
 /// False for arithmetics whose values carry state that an assignment does not replace (MPFR's
 /// precision: a value made at 128 bits stays at 128 bits when a later call runs at 256).
 template <class T>
-inline constexpr bool reusable_scratch = true;  // specialized per arithmetic; see above
+inline constexpr bool reusable_scratch = true;
 
 }  // namespace splinex

@@ -10,16 +10,22 @@
 namespace splinex {
 namespace detail {
 
+/// The dim() parameters at x inside the domain; `field` names the point in errors ("at[d]").
+template <class T>
+void check_in_domain(const BSpline<T>& S, const T* x, const std::string& field) {
+  for (int d = 0; d < S.dim(); ++d)
+    if (x[d] < S.domain_lo(d) || S.domain_hi(d) < x[d])
+      throw DomainError(field + "[" + std::to_string(d) + "]", "lies outside the domain of direction " + std::to_string(d),
+                        "give a parameter in [U[p], U[n]] of that direction");
+}
+
 template <class T>
 void check_point(const BSpline<T>& S, const std::vector<T>& x) {
   if (x.size() != static_cast<std::size_t>(S.dim()))
     throw DomainError("at", "has " + std::to_string(x.size()) + " coordinates for a spline of dimension " +
                                 std::to_string(S.dim()),
                       "give one parameter per direction");
-  for (int d = 0; d < S.dim(); ++d)
-    if (x[d] < S.domain_lo(d) || S.domain_hi(d) < x[d])
-      throw DomainError("at[" + std::to_string(d) + "]", "lies outside the domain of direction " + std::to_string(d),
-                        "give a parameter in [U[p], U[n]] of that direction");
+  check_in_domain(S, x.data(), "at");
 }
 
 /// Scratch storage of evaluation: basis values, A2.2's left/right, index vectors and scalar
@@ -96,13 +102,9 @@ void tensor_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const
   });
 }
 
-}  // namespace detail
-
-namespace detail {
-
-/// The homogeneous value at x (dim() parameters) into out (q or q+1 values), with the scratch.
+/// Sizes the scratch for S (once per call or batch, not per point).
 template <class T>
-void evaluate_homogeneous_into(const BSpline<T>& S, const T* x, T* out, EvalScratch<T>& ws) {
+void size_scratch(const BSpline<T>& S, EvalScratch<T>& ws) {
   const int k = S.dim();
   std::size_t total = 0;
   int pmax = 0;
@@ -117,6 +119,13 @@ void evaluate_homogeneous_into(const BSpline<T>& S, const T* x, T* out, EvalScra
   }
   ws.span.resize(k);
   ws.B.resize(k);
+}
+
+/// The homogeneous value at x (dim() parameters) into out (q or q+1 values), with a scratch that
+/// size_scratch(S, ws) has sized.
+template <class T>
+void evaluate_homogeneous_into(const BSpline<T>& S, const T* x, T* out, EvalScratch<T>& ws) {
+  const int k = S.dim();
   std::size_t off = 0;
   for (int d = 0; d < k; ++d) {
     ws.span[d] = find_span(S.knots[d], S.degrees[d], S.count(d), x[d]);
@@ -134,7 +143,10 @@ template <class T>
 std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x) {
   detail::check_point(S, x);
   std::vector<T> out(S.q + (S.is_rational() ? 1 : 0));
-  detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) { detail::evaluate_homogeneous_into(S, x.data(), out.data(), ws); });
+  detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) {
+    detail::size_scratch(S, ws);
+    detail::evaluate_homogeneous_into(S, x.data(), out.data(), ws);
+  });
   return out;
 }
 
@@ -146,14 +158,10 @@ std::vector<T> evaluate_points(const BSpline<T>& S, const std::vector<T>& params
                                     std::to_string(k),
                       "give dim() parameters per point");
   const std::size_t N = params.size() / k;
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t d = 0; d < k; ++d)
-      if (params[i * k + d] < S.domain_lo(static_cast<int>(d)) || S.domain_hi(static_cast<int>(d)) < params[i * k + d])
-        throw DomainError("params[" + std::to_string(i) + "][" + std::to_string(d) + "]",
-                          "lies outside the domain of direction " + std::to_string(d),
-                          "give a parameter in [U[p], U[n]] of that direction");
+  for (std::size_t i = 0; i < N; ++i) detail::check_in_domain(S, params.data() + i * k, "params[" + std::to_string(i) + "]");
   std::vector<T> out(N * q);
   detail::with_eval_scratch<T>([&](detail::EvalScratch<T>& ws) {
+    detail::size_scratch(S, ws);
     if (!S.is_rational()) {
       for (std::size_t i = 0; i < N; ++i) detail::evaluate_homogeneous_into(S, params.data() + i * k, out.data() + i * q, ws);
       return;

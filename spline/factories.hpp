@@ -67,19 +67,25 @@ BSpline<T> spline_from(std::vector<int> degrees, std::vector<std::vector<T>> kno
   return make_spline<T>(std::move(degrees), std::move(knots), q, std::move(points));
 }
 
+/// The knot vectors of a Bezier piece of these degrees on [0, 1]^k.
+template <class T>
+std::vector<std::vector<T>> unit_bezier_knots(const std::vector<int>& degrees) {
+  std::vector<std::vector<T>> knots;
+  for (int p : degrees) knots.push_back(clamped_knots(p, T(0), T(1)));
+  return knots;
+}
+
 /// The polynomial Bezier piece of these degrees on [0, 1]^k (control points direction 0 fastest).
 template <class T>
 BSpline<T> bezier(std::vector<int> degrees, int q, std::vector<T> points) {
-  std::vector<std::vector<T>> knots;
-  for (int p : degrees) knots.push_back(clamped_knots(p, T(0), T(1)));
+  auto knots = unit_bezier_knots<T>(degrees);
   return make_spline<T>(std::move(degrees), std::move(knots), q, std::move(points));
 }
 
 /// The polynomial Bezier piece of these degrees on [0, 1]^k whose control point idx is point(idx).
 template <class T, class F>
 BSpline<T> bezier_from(std::vector<int> degrees, int q, F&& point) {
-  std::vector<std::vector<T>> knots;
-  for (int p : degrees) knots.push_back(clamped_knots(p, T(0), T(1)));
+  auto knots = unit_bezier_knots<T>(degrees);
   return spline_from<T>(std::move(degrees), std::move(knots), q, std::forward<F>(point));
 }
 
