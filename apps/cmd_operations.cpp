@@ -59,8 +59,9 @@ Operation make_op(const std::string& kind, const OpOptions& o) {
       break;
     case Operation::Kind::elevate:
       op.by = o.by;
-      op.method = o.elevate_method == "blossom" ? ElevationMethod::blossom : ElevationMethod::bezier_pieces;
-      op.method_auto = o.elevate_method == "auto";
+      op.method = o.elevate_method == "blossom" ? ElevationMethod::blossom
+                  : o.elevate_method == "a59"   ? ElevationMethod::bezier_pieces
+                                                : ElevationMethod::automatic;
       break;
     case Operation::Kind::split: op.at = parse_number(o.at, "at"); break;
     case Operation::Kind::reparametrize: {

@@ -26,6 +26,7 @@
 #include <gp_Pnt.hxx>
 #endif
 
+#include "bench/memory_probe.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "io/json_io.hpp"
@@ -92,19 +93,36 @@ struct Input {
   }
 };
 
+/// The memory counters of one more run of the case's operation (after the timing, which runs
+/// with counting off): heap allocations per operation (per point for eval), the peak of the live
+/// heap above its level before the operation, and the process's peak RSS during it.
+template <class F>
+void report_memory(benchmark::State& st, F&& once, long items) {
+  if (!memprobe::available()) return;
+  const memprobe::Usage u = memprobe::measure(once);
+  st.counters["allocs"] = static_cast<double>(u.allocations);
+  st.counters["allocs_per_item"] = static_cast<double>(u.allocations) / static_cast<double>(items);
+  st.counters["heap_peak_kib"] = static_cast<double>(u.peak_heap) / 1024.0;
+  if (u.peak_rss_kib >= 0) st.counters["rss_peak_mib"] = static_cast<double>(u.peak_rss_kib) / 1024.0;
+}
+
 template <class T>
 void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, long bits) {
   std::unique_ptr<Mpfr::Precision> scope;
   if (bits) scope = std::make_unique<Mpfr::Precision>(bits);
   Input<T> in(p, n);
-  for (auto _ : st) {
+  auto once = [&] {
     if (op == "insert") benchmark::DoNotOptimize(insert_knot(in.S, 0, in.knot, 1));
     else if (op == "refine") benchmark::DoNotOptimize(refine_knots(in.S, 0, in.refine));
     else if (op == "elevate") benchmark::DoNotOptimize(elevate_degree(in.S, 0, 1));
-    else if (op == "extract") benchmark::DoNotOptimize(extract_bezier(in.S));
+    else if (op == "extract") benchmark::DoNotOptimize(bezier_form(in.S));
+    else if (op == "pieces") benchmark::DoNotOptimize(extract_bezier(in.S));
     else if (op == "eval") benchmark::DoNotOptimize(evaluate_points(in.S, in.at));
-  }
-  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
+  };
+  for (auto _ : st) once();
+  const long items = static_cast<long>(op == "eval" ? in.at.size() : 1);
+  st.SetItemsProcessed(st.iterations() * items);
+  report_memory(st, once, items);
 }
 
 #ifdef SPLINEX_HAVE_SISL
@@ -116,7 +134,7 @@ void run_sisl(benchmark::State& st, const std::string& op, int p, std::size_t n)
   SISLCurve* c = newCurve(static_cast<int>(n), p + 1, in.S.knots[0].data(), in.S.points.data(), 1, 3, 1);
   int stat = 0;
   std::vector<double> value(3);
-  for (auto _ : st) {
+  auto once = [&] {
     SISLCurve* r = nullptr;
     if (op == "insert") s1017(c, &r, in.knot, &stat);
     else if (op == "refine") s1018(c, in.refine.data(), static_cast<int>(in.refine.size()), &r, &stat);
@@ -128,11 +146,19 @@ void run_sisl(benchmark::State& st, const std::string& op, int p, std::size_t n)
         s1227(c, 0, x, &left, value.data(), &stat);
         benchmark::DoNotOptimize(value.data());
       }
-    if (stat < 0) st.SkipWithError("SISL reported an error");
     if (r) freeCurve(r);
+  };
+  for (auto _ : st) {
+    once();
+    if (stat < 0) {
+      st.SkipWithError("SISL reported an error");
+      break;
+    }
   }
+  const long items = static_cast<long>(op == "eval" ? in.at.size() : 1);
+  st.SetItemsProcessed(st.iterations() * items);
+  report_memory(st, once, items);
   freeCurve(c);
-  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
 }
 #endif
 
@@ -159,7 +185,7 @@ void run_occt(benchmark::State& st, const std::string& op, int p, std::size_t n)
   TColStd_Array1OfReal ins(1, static_cast<int>(rk.size()));
   TColStd_Array1OfInteger insm(1, static_cast<int>(rk.size()));
   for (std::size_t i = 0; i < rk.size(); ++i) { ins(static_cast<int>(i) + 1) = rk[i]; insm(static_cast<int>(i) + 1) = 1; }
-  for (auto _ : st) {
+  auto once = [&] {
     if (op == "insert" || op == "refine" || op == "elevate") {
       Handle(Geom_BSplineCurve) r = Handle(Geom_BSplineCurve)::DownCast(c->Copy());
       if (op == "insert") r->InsertKnot(in.knot, 1, 0.0);
@@ -176,8 +202,11 @@ void run_occt(benchmark::State& st, const std::string& op, int p, std::size_t n)
         benchmark::DoNotOptimize(v);
       }
     }
-  }
-  st.SetItemsProcessed(st.iterations() * static_cast<long>(op == "eval" ? in.at.size() : 1));
+  };
+  for (auto _ : st) once();
+  const long items = static_cast<long>(op == "eval" ? in.at.size() : 1);
+  st.SetItemsProcessed(st.iterations() * items);
+  report_memory(st, once, items);
 }
 #endif
 
@@ -218,7 +247,9 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--decimal") == 0) g_dyadic = false;
   for (int i = 1; i + 1 < argc; ++i)
     if (std::strcmp(argv[i], "--write-cases") == 0) return write_cases(argv[i + 1], {1, 3, 5, 7}, {10, 100, 1000, 10000});
-  const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "eval"};
+  // extract: the Bezier form in one object (bezier_form; SISL's s1730 returns the same, OCCT's
+  // converter one arc per piece); pieces: one BSpline per piece (extract_bezier), splinex only.
+  const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "pieces", "eval"};
   const std::vector<int> degrees{1, 3, 5, 7};
   const std::vector<std::size_t> sizes{10, 100, 1000, 10000};
   std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}};
@@ -233,6 +264,7 @@ int main(int argc, char** argv) {
       for (std::size_t n : sizes) {
         if (n < static_cast<std::size_t>(p) + 1) continue;
         for (const auto& [a, bits] : ariths) {
+          if (op == "pieces" && (a == "sisl" || a == "occt")) continue;
           const std::string name = op + "/" + a + "/p" + std::to_string(p) + "/n" + std::to_string(n);
           const long b = bits;
           benchmark::RegisterBenchmark(name.c_str(), [op, p, n, a, b](benchmark::State& st) {

@@ -14,7 +14,8 @@ namespace splinex {
 std::string Operation::name() const {
   switch (kind) {
     case Kind::insert_knots: return boehm ? "insert-knots(boehm)" : "insert-knots";
-    case Kind::elevate: return method == ElevationMethod::blossom ? "elevate(blossom)" : "elevate";
+    case Kind::elevate:
+      return method == ElevationMethod::blossom ? "elevate(blossom)" : method == ElevationMethod::automatic ? "elevate(auto)" : "elevate";
     case Kind::extract_bezier: return "extract-bezier";
     case Kind::split: return "split";
     case Kind::reparametrize: return "reparametrize";

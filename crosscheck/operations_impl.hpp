@@ -13,9 +13,7 @@ std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, 
       return {insert_knots_boehm(S, op.dir, X, limits)};
     }
     case Operation::Kind::elevate: {
-      const ElevationMethod m = !op.method_auto ? op.method : ArithTraits<T>::exact ? ElevationMethod::bezier_pieces
-                                                                                     : ElevationMethod::blossom;
-      return {elevate_degree(S, op.dir, op.by, m, limits)};
+      return {elevate_degree(S, op.dir, op.by, op.method, limits)};
     }
     case Operation::Kind::extract_bezier: {
       std::vector<BSpline<T>> out;

@@ -48,6 +48,8 @@ void untrim_tolerance_section(ReportContext& ctx);
 void checkerboard_section(ReportContext& ctx);
 /// Untrimming with curved tile sides; part curved-untrim.
 void curved_untrim_section(ReportContext& ctx);
+/// What A5.9 and the blossom lose when elevating in double; part elevation-accuracy.
+void elevation_accuracy_section(ReportContext& ctx);
 /// The hybrid patch (papers/003); part hybrid.
 void hybrid_section(ReportContext& ctx);
 /// The exact proofs of `splinex prove`; part proofs.

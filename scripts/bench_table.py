@@ -18,6 +18,9 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+# extract: the Bezier form in one object (SISL's s1730 returns the same); pieces: one BSpline per piece.
+ORDER = ["insert", "refine", "elevate", "extract", "pieces", "eval"]
+
 
 def version(cmd):
     try:
@@ -53,7 +56,7 @@ def main():
     present = {k[1] for k in t}
     ariths = [a for a in ("exact", "flint", "mpfr128") if a in present]
     peers = [a for a in ("sisl", "occt") if a in present]
-    ops = sorted({k[0] for k in t}, key=["insert", "refine", "elevate", "extract", "eval"].index)
+    ops = sorted({k[0] for k in t}, key=ORDER.index)
     # Columns: double against each peer, each exact/float arithmetic against double, the exact ones
     # against SISL (the fastest double peer).
     cols = [("double", pr) for pr in peers] + [(a, "double") for a in ariths]
@@ -64,8 +67,7 @@ def main():
     names = {"exact": "GMP", "flint": "flint", "mpfr128": "mpfr128", "double": "double", "sisl": "SISL", "occt": "OCCT",
              "fraction": "Fraction"}
     rows, geo = [], defaultdict(list)
-    order = ["insert", "refine", "elevate", "extract", "eval"]
-    for (op, arith, p, n), sec in sorted(t.items(), key=lambda kv: (order.index(kv[0][0]), kv[0][2], kv[0][3])):
+    for (op, arith, p, n), sec in sorted(t.items(), key=lambda kv: (ORDER.index(kv[0][0]), kv[0][2], kv[0][3])):
         if arith != "double":
             continue
         row = {"op": op, "p": p, "n": n, "double_us": sec * 1e6}

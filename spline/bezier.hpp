@@ -15,8 +15,31 @@ struct BezierPiece {
   BSpline<T> spline;
 };
 
+/// The Bezier form of a spline in one object, as SISL's s1730 returns it: the spline with every
+/// interior breakpoint raised to multiplicity >= degree in every direction (clamped), its
+/// breakpoints, and where each piece's net starts. Piece (s_0, s_1, ...) is the (p_0+1) x (p_1+1)
+/// x ... block of `spline`'s control net starting at index first[d][s_d] in direction d, on the
+/// box [breaks[d][s_d], breaks[d][s_d + 1]]. Consecutive pieces share their end points where
+/// the spline is continuous. No per-piece allocation: O(1) vectors whatever the piece count.
+template <class T>
+struct BezierForm {
+  BSpline<T> spline;
+  std::vector<std::vector<T>> breaks;              // per direction: the breakpoints
+  std::vector<std::vector<std::size_t>> first;     // per direction, per segment: first control index
+  /// The number of pieces: the product of the segment counts.
+  std::size_t size() const;
+  /// Piece k (direction 0 varying fastest) as a spline of its own.
+  BezierPiece<T> piece(std::size_t k) const;
+};
+
+/// S in Bezier form (A5.4 refinement per direction; the input is never copied whole). Checked
+/// against limits as extract_bezier is, before any work.
+template <class T>
+BezierForm<T> bezier_form(const BSpline<T>& S, const Limits& limits = {});
+
 /// All polynomial pieces, ordered with direction 0 varying fastest. Every interior knot is raised
-/// to multiplicity degree (A5.4) and the control net cut into Bezier nets.
+/// to multiplicity degree (A5.4) and the control net cut into Bezier nets (bezier_form, then
+/// piece by piece: one BSpline per piece).
 /// Checked against limits.max_control_points before any work: the pieces' control points in
 /// all, prod_d segments_d * (p_d + 1), which also bounds every intermediate Bezier form.
 template <class T>

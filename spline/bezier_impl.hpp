@@ -12,15 +12,35 @@ template <class T>
 BSpline<T> to_bezier_form(const BSpline<T>& S, int d, const Limits& limits) {
   /// A clamped direction is refined from the input itself (clamp would return a copy).
   if (!is_clamped(S.knots[d], S.degrees[d], S.count(d))) return to_bezier_form(clamp(S, d, limits), d, limits);
-  const BSpline<T>& C = S;
-  const int p = C.degrees[d];
-  const std::vector<T> bp = breakpoints(C.knots[d], p, C.count(d));
+  const int p = S.degrees[d];
+  const std::vector<T>& U = S.knots[d];
+  const std::size_t n = S.count(d);
+  /// One walk over the interior runs U[p+1 .. n-1] (the domain ends are runs of p+1).
   std::vector<T> X;
-  for (std::size_t i = 1; i + 1 < bp.size(); ++i) {
-    const std::size_t mult = multiplicity(C.knots[d], bp[i]);
-    for (std::size_t r = mult; r < static_cast<std::size_t>(p); ++r) X.push_back(bp[i]);
+  for (std::size_t i = static_cast<std::size_t>(p) + 1; i < n;) {
+    std::size_t j = i;
+    while (j + 1 < n && U[j + 1] == U[i]) ++j;
+    for (std::size_t r = j - i + 1; r < static_cast<std::size_t>(p); ++r) X.push_back(U[i]);
+    i = j + 1;
   }
-  return refine_knots(C, d, X, limits);
+  if (X.empty()) return S;
+  return refine_knots(S, d, std::move(X), limits);
+}
+
+/// Index (into the points of direction d) of the first control point of every segment of a
+/// clamped knot vector: the piece on [bp[s], bp[s+1]) is carried by points span-p..span with
+/// U[span] <= bp[s] < U[span+1]. Counting from s*p would assume every interior breakpoint has
+/// multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
+template <class T>
+std::vector<std::size_t> segment_starts(const std::vector<T>& U, int p, std::size_t n, const std::vector<T>& bp) {
+  std::vector<std::size_t> out;
+  out.reserve(bp.size() - 1);
+  std::size_t span = static_cast<std::size_t>(p);
+  for (std::size_t s = 0; s + 1 < bp.size(); ++s) {
+    while (span + 1 < n && !(bp[s] < U[span + 1])) ++span;
+    out.push_back(span - static_cast<std::size_t>(p));
+  }
+  return out;
 }
 
 }  // namespace detail
@@ -37,42 +57,82 @@ std::size_t bezier_pieces_size(const BSpline<T>& S, const Limits& limits) {
 }
 
 template <class T>
-std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& limits) {
+BezierForm<T> bezier_form(const BSpline<T>& S, const Limits& limits) {
   // The whole result's size is known from the breakpoints: checked before any work (a surface
   // would otherwise convert direction 0 in full before direction 1 reaches the limit). It bounds
   // the Bezier form of every direction too.
   bezier_pieces_size(S, limits);
-  /// Fully Bezier form in every direction first, then cut piece by piece.
-  /// (Each direction is converted from the previous result; the input is never copied whole.)
-  BSpline<T> B = detail::to_bezier_form(S, 0, limits);
-  for (int d = 1; d < S.dim(); ++d) B = detail::to_bezier_form(B, d, limits);
-  const std::vector<int> degrees = B.degrees;
-  const std::vector<std::vector<T>> knots_all = B.knots;
-  std::vector<std::size_t> counts(S.dim());
-  for (int d = 0; d < S.dim(); ++d) counts[d] = B.count(d);
-  std::vector<BezierPiece<T>> pieces;
-  pieces.push_back(BezierPiece<T>{{}, std::move(B)});
+  /// Each direction is converted from the previous result; the input is never copied whole.
+  BezierForm<T> F;
+  F.spline = detail::to_bezier_form(S, 0, limits);
+  for (int d = 1; d < S.dim(); ++d) F.spline = detail::to_bezier_form(F.spline, d, limits);
   for (int d = 0; d < S.dim(); ++d) {
-    const int p = degrees[d];
-    const std::vector<T> bp = breakpoints(knots_all[d], p, counts[d]);
-    std::vector<BezierPiece<T>> next;
-    /// Direction-0-fastest ordering: later directions form the outer loop. The piece on
-    /// [bp[seg], bp[seg+1]) is carried by the p+1 control points before the end of its knot span s
-    /// (U[s] <= bp[seg] < U[s+1]): points s-p..s. Counting from seg*p would assume every interior
-    /// breakpoint has multiplicity exactly p; a C^-1 knot (multiplicity p+1) or degree 0 breaks it.
-    const std::size_t n = counts[d];
-    for (std::size_t seg = 0; seg + 1 < bp.size(); ++seg) {
-      const std::size_t first = find_span(knots_all[d], p, n, bp[seg]) - static_cast<std::size_t>(p);
-      for (const auto& piece : pieces) {
-        std::vector<T> knots(p + 1, bp[seg]);
-        knots.insert(knots.end(), p + 1, bp[seg + 1]);
-        BezierPiece<T> np{piece.box, slice_direction(piece.spline, d, first, p + 1, std::move(knots))};
-        np.box.emplace_back(bp[seg], bp[seg + 1]);
-        next.push_back(std::move(np));
-      }
-    }
-    pieces = std::move(next);
+    const BSpline<T>& B = F.spline;
+    F.breaks.push_back(breakpoints(B.knots[d], B.degrees[d], B.count(d)));
+    F.first.push_back(detail::segment_starts(B.knots[d], B.degrees[d], B.count(d), F.breaks.back()));
   }
+  return F;
+}
+
+template <class T>
+std::size_t BezierForm<T>::size() const {
+  std::size_t k = 1;
+  for (const auto& f : first) k *= f.size();
+  return k;
+}
+
+template <class T>
+BezierPiece<T> BezierForm<T>::piece(std::size_t k) const {
+  const int dim = spline.dim();
+  BezierPiece<T> out;
+  out.box.reserve(static_cast<std::size_t>(dim));
+  BSpline<T>& R = out.spline;
+  R.degrees = spline.degrees;
+  R.q = spline.q;
+  R.knots.resize(static_cast<std::size_t>(dim));
+  /// The piece's multi-index (direction 0 fastest) and the offset of its first control point.
+  std::size_t rest = k, offset = 0, stride = 1, local = 1;
+  std::vector<std::size_t> strides(static_cast<std::size_t>(dim));
+  for (int d = 0; d < dim; ++d) {
+    const std::size_t segs = first[d].size(), s = rest % segs;
+    rest /= segs;
+    const int p = spline.degrees[d];
+    out.box.emplace_back(breaks[d][s], breaks[d][s + 1]);
+    R.knots[d].reserve(2 * static_cast<std::size_t>(p + 1));
+    R.knots[d].insert(R.knots[d].end(), static_cast<std::size_t>(p + 1), breaks[d][s]);
+    R.knots[d].insert(R.knots[d].end(), static_cast<std::size_t>(p + 1), breaks[d][s + 1]);
+    strides[d] = stride;
+    offset += first[d][s] * stride;
+    stride *= spline.count(d);
+    local *= static_cast<std::size_t>(p + 1);
+  }
+  /// Gather the local net: rows of direction 0 are contiguous in the spline's storage.
+  const std::size_t row = static_cast<std::size_t>(spline.degrees[0] + 1), rows = local / row;
+  auto gather = [&](const std::vector<T>& V, std::size_t width, std::vector<T>& W) {
+    W.reserve(local * width);
+    for (std::size_t r = 0; r < rows; ++r) {
+      std::size_t at = offset, rr = r;
+      for (int d = 1; d < dim; ++d) {
+        const std::size_t m = static_cast<std::size_t>(spline.degrees[d] + 1);
+        at += (rr % m) * strides[d];
+        rr /= m;
+      }
+      const T* src = V.data() + at * width;
+      W.insert(W.end(), src, src + row * width);
+    }
+  };
+  gather(spline.points, spline.q, R.points);
+  if (spline.is_rational()) gather(spline.weights, 1, R.weights);
+  return out;
+}
+
+template <class T>
+std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>& S, const Limits& limits) {
+  const BezierForm<T> F = bezier_form(S, limits);
+  std::vector<BezierPiece<T>> pieces;
+  const std::size_t k = F.size();
+  pieces.reserve(k);
+  for (std::size_t i = 0; i < k; ++i) pieces.push_back(F.piece(i));
   return pieces;
 }
 

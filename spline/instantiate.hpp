@@ -22,6 +22,8 @@
   template BSpline<T> elevate_degree(const BSpline<T>&, int, int, ElevationMethod, const Limits&);             \
   template std::size_t elevated_count(const BSpline<T>&, int, int);                                            \
   template std::vector<BezierPiece<T>> extract_bezier(const BSpline<T>&, const Limits&);                       \
+  template struct BezierForm<T>;                                                                                \
+  template BezierForm<T> bezier_form(const BSpline<T>&, const Limits&);                                        \
   template std::size_t bezier_pieces_size(const BSpline<T>&, const Limits&);                                   \
   template std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>&, int, const T&, const Limits&);        \
   template BSpline<T> reparametrize(const BSpline<T>&, int, const T&, const T&);                               \

@@ -48,8 +48,8 @@ BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& 
     if (!(A.domain_lo(d) == B.domain_lo(d)) || !(A.domain_hi(d) == B.domain_hi(d)))
       throw DomainError("knots[" + std::to_string(d) + "]", "the two splines have different domains",
                         "reparametrize one of them first");
-    if (A.degrees[d] < B.degrees[d]) A = elevate_degree(A, d, B.degrees[d] - A.degrees[d], ElevationMethod::bezier_pieces, limits);
-    if (B.degrees[d] < A.degrees[d]) B = elevate_degree(B, d, A.degrees[d] - B.degrees[d], ElevationMethod::bezier_pieces, limits);
+    if (A.degrees[d] < B.degrees[d]) A = elevate_degree(A, d, B.degrees[d] - A.degrees[d], ElevationMethod::automatic, limits);
+    if (B.degrees[d] < A.degrees[d]) B = elevate_degree(B, d, A.degrees[d] - B.degrees[d], ElevationMethod::automatic, limits);
     /// Insert into each what the other has more of.
     auto missing = [](const std::vector<T>& from, const std::vector<T>& into) {
       std::vector<T> out;

@@ -78,6 +78,7 @@ bool is_full_multiplicity(const std::vector<T>& U, int p, const T& x) {
 template <class T>
 std::vector<T> breakpoints(const std::vector<T>& U, int p, std::size_t n) {
   std::vector<T> b;
+  b.reserve(n + 1 - static_cast<std::size_t>(p));  // at most one per knot of the domain
   for (std::size_t i = p; i <= n; ++i)
     if (b.empty() || b.back() < U[i]) b.push_back(U[i]);
   return b;
