@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Ratio table of one bench_kernel run (Google Benchmark JSON), as markdown and JSON.
 
-    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json]
+    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json] [--compose COMPOSE.json] [--hybrid HYBRID.json]
 
 Every ratio is taken between timings of the same run (CPU time per iteration): each arithmetic
 against double for the same operation, degree p and size n, and the geometric mean per operation.
@@ -34,20 +34,95 @@ def pkg(name):
     return out or "not installed"
 
 
+def seconds(b):
+    return b["cpu_time"] * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+
+
+def load_runs(path):
+    """name without the /iterations:N suffix -> CPU seconds, of one Google Benchmark JSON file."""
+    out = {}
+    for b in json.load(open(path))["benchmarks"]:
+        if b.get("error_occurred") or b.get("run_type", "iteration") != "iteration":
+            continue
+        out[b["name"].split("/iterations:")[0]] = seconds(b)
+    return out
+
+
+def fmt(x):
+    return "-" if x is None else f"{x:.3g}"
+
+
+def targets(t, compose, hybrid):
+    """Issue 15's targets against this run: each one's measured value, the bound, met or how far."""
+    rows = []
+
+    def add(what, value, bound, better="<="):
+        if value is None:
+            rows.append((what, "-", f"{better} {bound:g}", "not measured in this run"))
+            return
+        met = value <= bound if better == "<=" else value >= bound
+        rows.append((what, f"{value:.3g}", f"{better} {bound:g}",
+                     "met" if met else f"{value / bound:.3g}x the bound" if better == "<=" else f"{bound / value:.3g}x short"))
+
+    cases = sorted({(k[0], k[2], k[3]) for k in t if k[1] == "double"})
+    for op in ("insert", "refine", "elevate", "extract", "eval"):
+        for peer in ("sisl", "occt"):
+            r = [t[(o, "double", p, n)] / t[(o, peer, p, n)] for (o, p, n) in cases if o == op and (o, peer, p, n) in t]
+            if r:
+                add(f"{op}: worst double/{peer.upper()} over p, n ({sum(x > 1 for x in r)} of {len(r)} cases above 1)",
+                    max(r), 1.0)
+    for op, bound in (("insert", 10), ("refine", 10), ("extract", 10), ("eval", 10), ("elevate", 40)):
+        d = t.get((op, "double", 3, 1000))
+        best = min((t[(op, a, 3, 1000)] for a in ("exact", "flint") if (op, a, 3, 1000) in t), default=None)
+        add(f"{op}: best exact arithmetic / double at p = 3, n = 1000", best / d if best and d else None, bound)
+    for op, bound in (("insert", 1.0), ("eval", 0.1)):
+        r = [t[(op, "exact", p, n)] / t[(op, "fraction", p, n)] for (o, p, n) in cases
+             if o == op and (op, "fraction", p, n) in t and (op, "exact", p, n) in t]
+        add(f"{op}: worst GMP / Python Fraction over p, n", max(r) if r else None, bound)
+    if compose:
+        for a in ("exact", "flint"):
+            tot = [v for k, v in compose.items() if k.startswith(f"stars/{a}/")]
+            add(f"Algorithm 1, teapot star pattern, all four surfaces, {a} (s)", sum(tot) if len(tot) == 4 else None, 1.0)
+        for k, v in sorted(compose.items()):
+            if k.startswith("untrim_star/exact/"):
+                surf = k.split("/")[2]
+                d = compose.get(f"untrim_star/double/{surf}")
+                add(f"Algorithm 2, one star, {surf}: exact / double", v / d if d else None, 20)
+    if hybrid:
+        for k, v in sorted(hybrid.items()):
+            parts = k.split("/")
+            if len(parts) == 4 and parts[2] == "exact":
+                d = hybrid.get(f"{parts[0]}/{parts[1]}/double/{parts[3]}")
+                add(f"hybrid patch {parts[1]}, {parts[3][1:]} sides: exact / double per point", v / d if d else None, 50)
+    return rows
+
+
 def main():
-    if len(sys.argv) not in (3, 4):
+    args = sys.argv[1:]
+    extra = {}
+    for flag in ("--compose", "--hybrid"):
+        if flag in args:
+            i = args.index(flag)
+            extra[flag] = load_runs(args[i + 1])
+            del args[i:i + 2]
+    if len(args) not in (2, 3):
         print(__doc__, file=sys.stderr)
         return 2
+    sys.argv = [sys.argv[0]] + args
     doc = json.load(open(sys.argv[1]))
     out = Path(sys.argv[2])
     out.mkdir(parents=True, exist_ok=True)
     t = {}
+    mem = {}  # (op, arith, p, n) -> the memory counters of bench/memory_probe.hpp
     for b in doc["benchmarks"]:
         if b.get("error_occurred") or b.get("run_type", "iteration") != "iteration":
             continue
         op, arith, p, n = b["name"].split("/")[:4]
         scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
         t[(op, arith, int(p[1:]), int(n[1:]))] = b["cpu_time"] * scale
+        if "allocs" in b:
+            mem[(op, arith, int(p[1:]), int(n[1:]))] = {k: b[k] for k in ("allocs", "allocs_per_item", "heap_peak_kib",
+                                                                            "rss_peak_mib") if k in b}
     python = None
     if len(sys.argv) == 4:
         python = json.load(open(sys.argv[3]))
@@ -116,7 +191,39 @@ def main():
     for r in rows:
         md.append(f"| {r['op']} | {r['p']} | {r['n']} | {r['double_us']:.3g} | " +
                   " | ".join(f"{r[f'{a}/{b_}']:.3g}" if f"{a}/{b_}" in r else "-" for a, b_ in cols) + " |")
-    json.dump({"meta": meta, "geometric_means": summary, "rows": rows}, open(out / "kernel.json", "w"), indent=1)
+    # Memory: one more run of each case with the allocator counted (bench/memory_probe.hpp).
+    mem_ariths = [a for a in ("double", "exact", "flint", "mpfr128", "sisl", "occt") if any(k[1] == a for k in mem)]
+    mem_md = []
+    if mem:
+        md += ["", "## Memory of one operation", "",
+               "Heap allocations of one operation (per evaluated point for eval) and the peak of its live heap above "
+               "the level before it (KiB), counted by malloc/free interposed in the benchmark executable, so every "
+               "library's allocations count (libstdc++, GMP, MPFR, FLINT, SISL, OpenCASCADE); the process's peak RSS "
+               "during the operation (MiB; it includes the benchmark's cached inputs).", ""]
+        mem_md.append("| operation | p | n | " + " | ".join(f"{names[a]} allocs" for a in mem_ariths) + " | " +
+                      " | ".join(f"{names[a]} heap KiB" for a in mem_ariths) + " | peak RSS MiB |")
+        mem_md.append("|---|---|---|" + "---|" * (2 * len(mem_ariths) + 1))
+        for (op, p, n) in sorted({(k[0], k[2], k[3]) for k in mem}, key=lambda k: (ORDER.index(k[0]), k[1], k[2])):
+            cells = [mem.get((op, a, p, n)) for a in mem_ariths]
+            fmt_alloc = lambda c: "-" if c is None else f"{c['allocs_per_item']:.3g}"
+            fmt_heap = lambda c: "-" if c is None else f"{c['heap_peak_kib']:.3g}"
+            rss = max((c.get("rss_peak_mib", 0) for c in cells if c), default=0)
+            mem_md.append(f"| {op} | {p} | {n} | " + " | ".join(fmt_alloc(c) for c in cells) + " | " +
+                          " | ".join(fmt_heap(c) for c in cells) + f" | {rss:.3g} |")
+        md += mem_md
+        for r in rows:
+            for a in mem_ariths:
+                c = mem.get((r["op"], a, r["p"], r["n"]))
+                if c:
+                    r[f"{a}_memory"] = c
+    target_rows = targets(t, extra.get("--compose"), extra.get("--hybrid"))
+    target_md = ["## Issue 15's targets in this run", "",
+                 "| target | measured | bound | verdict |", "|---|---|---|---|"] + \
+                [f"| {w} | {v} | {b} | {m} |" for w, v, b, m in target_rows]
+    md[8 + len(ops):8 + len(ops)] = [""] + target_md
+    json.dump({"meta": meta, "geometric_means": summary, "targets": [dict(zip(("target", "measured", "bound", "verdict"), r))
+                                                                     for r in target_rows], "rows": rows},
+              open(out / "kernel.json", "w"), indent=1)
     (out / "kernel.md").write_text("\n".join(md) + "\n")
     # The generated block of docs/speed.md: the summary table and where it was measured.
     speed = Path(__file__).resolve().parent.parent / "docs" / "speed.md"
@@ -124,11 +231,11 @@ def main():
         text = speed.read_text()
         begin, end = "<!-- bench:kernel:begin -->", "<!-- bench:kernel:end -->"
         if begin in text and end in text:
-            block = "\n".join([begin, md[2], ""] + md[4:8 + len(ops)] +
+            block = "\n".join([begin, md[2], ""] + md[4:8 + len(ops)] + [""] + target_md +
                                ["", "Every case: [bench/results/kernel.md](../bench/results/kernel.md).", end])
             text = text[:text.index(begin)] + block + text[text.index(end) + len(end):]
             speed.write_text(text)
-    print("\n".join(md[:8 + len(ops)]))
+    print("\n".join(md[:8 + len(ops)] + [""] + target_md))
     return 0
 
 

@@ -46,12 +46,16 @@ case "$what" in
     fuzz/run_fuzz.sh build-fuzz/bin/fuzz_splinex tests/data build-fuzz/corpus "${2:-10000000}" ;;
   bench)
     cmake --preset default >&2
-    cmake --build --preset default --target bench_kernel
+    cmake --build --preset default --target bench_kernel bench_compose bench_hybrid
     build/bin/bench_kernel --benchmark_out=build/bench_kernel.json --benchmark_out_format=json \
       "${@:2}" >&2
     mkdir -p build/bench_cases
     build/bin/bench_kernel --write-cases build/bench_cases
     python3 scripts/bench_python.py build/bench_cases build/bench_python.json
-    python3 scripts/bench_table.py build/bench_kernel.json bench/results build/bench_python.json ;;
+    # The higher levels (Algorithms 1 and 2 on the teapot, the hybrid patch) for the targets table.
+    build/bin/bench_compose --benchmark_out=build/bench_compose.json --benchmark_out_format=json >&2
+    build/bin/bench_hybrid --benchmark_out=build/bench_hybrid.json --benchmark_out_format=json >&2
+    python3 scripts/bench_table.py build/bench_kernel.json bench/results build/bench_python.json \
+      --compose build/bench_compose.json --hybrid build/bench_hybrid.json ;;
   *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]]" >&2; exit 2 ;;
 esac

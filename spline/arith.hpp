@@ -54,4 +54,18 @@ struct ArithTraits;  // specialized per arithmetic; see above
 template <class T>
 inline constexpr bool reusable_scratch = true;
 
+/// 0 and 1 made once: assigning them (`x = zero_value<T>()`) reuses x's storage, where `x = T(0)`
+/// makes a temporary and, for GMP through Boost, hands x the temporary's fresh allocation. Both
+/// are exact at any precision, so the MPFR precision rule above does not concern them.
+template <class T>
+const T& zero_value() {
+  static const T z(0);
+  return z;
+}
+template <class T>
+const T& one_value() {
+  static const T o(1);
+  return o;
+}
+
 }  // namespace splinex

@@ -62,14 +62,34 @@ void tensor_sum(const BSpline<T>& S, const std::size_t* span, const T* const* B,
   const int k = S.dim();
   const bool rational = S.is_rational();
   const std::size_t q = S.q, qq = q + (rational ? 1 : 0);
+  if (k == 1) {  // a curve: one run of p+1 consecutive control points, no index bookkeeping
+    const int p = S.degrees[0];
+    const std::size_t first = span[0] - static_cast<std::size_t>(p);
+    for (std::size_t c = 0; c < qq; ++c) out[c] = zero_value<T>();
+    for (int i = 0; i <= p; ++i) {
+      T& w = ws.w;
+      w = B[0][i];
+      if (rational) {
+        w *= S.weights[first + i];
+        out[q] += w;
+      }
+      const T* P = S.points.data() + (first + i) * q;
+      for (std::size_t c = 0; c < q; ++c) {
+        ws.prod = w;
+        ws.prod *= P[c];
+        out[c] += ws.prod;
+      }
+    }
+    return;
+  }
   ws.stride.resize(k);
   std::size_t st = 1;
   for (int d = 0; d < k; ++d) { ws.stride[d] = st; st *= S.count(d); }
   ws.i.assign(k, 0);
-  for (std::size_t c = 0; c < qq; ++c) out[c] = T(0);
+  for (std::size_t c = 0; c < qq; ++c) out[c] = zero_value<T>();
   T& w = ws.w;
   while (true) {
-    w = T(1);
+    w = one_value<T>();
     std::size_t idx = 0;
     for (int d = 0; d < k; ++d) {
       w *= B[d][ws.i[d]];
