@@ -37,6 +37,7 @@ Commands add_prove(CLI::App& app);
 Commands add_report(CLI::App& app);
 Commands add_untrim(CLI::App& app);
 Commands add_hybrid(CLI::App& app);
+Commands add_verify(CLI::App& app);  // verify OPERATION --input --candidate
 
 /// The options of the single-spline operations, shared by their commands and crosscheck.
 struct OpOptions {

@@ -180,8 +180,10 @@ def main():
           f"FLINT {meta['versions']['flint']}, {meta['versions']['g++']}; {meta['peers']}. "
           "CPU time per operation; every ratio is between timings of this run (below 1: the first is faster). "
           "Data: random clamped curves in R^3 with dyadic knots and coordinates (k/1024), `bench/bench_kernel.cpp`; "
-          "OCCT modifies in place, so its insert/refine/elevate include a copy of the curve; SISL's extraction "
-          "returns one curve in Bezier form, splinex's a list of Bezier pieces.", "",
+          "OCCT modifies in place, so its insert/refine/elevate include a copy of the curve; `extract` is the Bezier "
+          "form in one object (splinex `bezier_form`, SISL s1730; OCCT's converter makes one arc object per piece), "
+          "`pieces` one BSpline per piece (splinex `extract_bezier`); elevation is splinex's default method (A5.9 in "
+          "exact arithmetic, the blossom in floating point).", "",
           "## Geometric mean over p and n", "",
           "| operation | " + " | ".join(head) + " |", "|---|" + "---|" * len(cols)]
     for op in ops:

@@ -1,0 +1,119 @@
+// splinex verify: a result computed elsewhere judged exactly against splinex's exact reference
+// (crosscheck/verify.hpp).
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "crosscheck/verify.hpp"
+
+namespace splinex::app {
+
+namespace {
+
+/// The candidate's splines: one spline document, {"splines": [...]} or {"pieces": [{"spline": ...}]}.
+std::vector<BSpline<Rational>> candidate_splines(const Json& doc, const Limits& limits) {
+  std::vector<BSpline<Rational>> out;
+  if (doc.is_object() && doc.contains("splines")) {
+    if (!doc["splines"].is_array()) throw ValidationError("candidate.splines", "is not an array", "give a list of spline documents");
+    for (std::size_t i = 0; i < doc["splines"].size(); ++i)
+      out.push_back(spline_from_json(doc["splines"][i], limits, "candidate.splines[" + std::to_string(i) + "]"));
+  } else if (doc.is_object() && doc.contains("pieces")) {
+    if (!doc["pieces"].is_array()) throw ValidationError("candidate.pieces", "is not an array", "give a list of pieces");
+    for (std::size_t i = 0; i < doc["pieces"].size(); ++i) {
+      const std::string where = "candidate.pieces[" + std::to_string(i) + "]";
+      const Json& pc = doc["pieces"][i];
+      if (!pc.is_object() || !pc.contains("spline"))
+        throw ValidationError(where, "has no \"spline\"", "give each piece as {\"box\": ..., \"spline\": {...}}");
+      out.push_back(spline_from_json(pc["spline"], limits, where + ".spline"));
+    }
+  } else {
+    out.push_back(spline_from_json(doc, limits, "candidate"));
+  }
+  return out;
+}
+
+std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::string& field) {
+  if (!doc.contains(field) || !doc[field].is_array())
+    throw ValidationError("candidate." + field, "is missing or not an array", "give \"at\" and \"values\" as lists of points");
+  std::vector<std::vector<Rational>> out;
+  for (std::size_t i = 0; i < doc[field].size(); ++i) {
+    const Json& row = doc[field][i];
+    const std::string where = "candidate." + field + "[" + std::to_string(i) + "]";
+    if (!row.is_array()) throw ValidationError(where, "is not a list of numbers", "write [x0, x1, ...]");
+    std::vector<Rational> r;
+    for (std::size_t c = 0; c < row.size(); ++c) r.push_back(json_number(row[c], where + "[" + std::to_string(c) + "]"));
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+Commands add_verify(CLI::App& app) {
+  struct Options {
+    std::string operation, input, candidate, read_as = "double";
+    OpOptions op;
+    int precision = 53, rounds = 24;
+    std::string factor = "2";
+    double max_bits = -1;
+  };
+  auto o = std::make_shared<Options>();
+  auto* c = app.add_subcommand("verify", "judge a result computed elsewhere exactly against the exact reference");
+  c->add_option("operation", o->operation, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse or eval")
+      ->required()
+      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval"}));
+  c->add_option("--input", o->input, "the input spline document")->required();
+  c->add_option("--candidate", o->candidate,
+                "the candidate: a spline document, {\"splines\": [...]}, {\"pieces\": [...]}; for eval {\"at\": [[...]], "
+                "\"values\": [[...]]}")
+      ->required();
+  c->add_option("--read-as", o->read_as,
+                "double: a decimal in the candidate is the double nearest to it (what a float program printed); "
+                "exact: decimals read exactly. Fractions p/q are exact either way")
+      ->check(CLI::IsMember({"double", "exact"}))
+      ->capture_default_str();
+  c->add_option("--precision", o->precision, "the candidate's significand bits, for bits lost")->check(CLI::Range(2, 100000))->capture_default_str();
+  c->add_option("--factor", o->factor, "refine the function-level bound until it is within this factor of the witness (> 1)")
+      ->capture_default_str();
+  c->add_option("--rounds", o->rounds, "refinement rounds at most")->check(CLI::Range(0, 64))->capture_default_str();
+  c->add_option("--max-bits-lost", o->max_bits, "exit 1 when the candidate loses more bits than this (coefficients, values or "
+                                                 "the function-level error) or its structure differs");
+  c->add_option("--dir", o->op.dir, "parametric direction (0-based)")->capture_default_str();
+  c->add_option("--knots", o->op.knots, "insert-knots: comma-separated knots");
+  c->add_option("--method", o->op.insert_method, "insert-knots: a54|boehm; elevate: auto|a59|blossom (the same exact result)");
+  c->add_option("--by", o->op.by, "elevate: amount");
+  c->add_option("--at", o->op.at, "split: parameter");
+  c->add_option("--interval", o->op.interval, "reparametrize: \"lo,hi\"");
+  return {{c, [o](const Context& ctx) {
+             VerifyOptions vo;
+             vo.precision = o->precision;
+             vo.max_rounds = o->rounds;
+             vo.factor = parse_number(o->factor, "factor");
+             if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "give e.g. --factor 2");
+             const auto S = spline_from_json(read_json_file(o->input, ctx.read_limits), ctx.limits, "input");
+             Json cand = read_json_file(o->candidate, ctx.read_limits);
+             if (o->read_as == "double") cand = candidate_numbers_as_doubles(cand);
+             VerifyReport rep;
+             if (o->operation == "eval") {
+               rep = verify_values(S, number_rows(cand, "at"), number_rows(cand, "values"), vo);
+             } else {
+               OpOptions op = o->op;
+               if (o->operation == "elevate") op.elevate_method = op.insert_method == "a54" ? "auto" : op.insert_method;
+               if (o->operation == "insert-knots" && op.knots.empty())
+                 throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
+               rep = verify(make_op(o->operation, op), S, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+             }
+             Json j = rep.to_json();
+             std::cout << j.dump(2) << "\n";
+             if (o->max_bits >= 0) {
+               double worst = 0;
+               for (const char* part : {"control_points", "values"})
+                 if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
+               if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
+               if (worst > o->max_bits || rep.structure == "different") return 1;
+             }
+             return 0;
+           }}};
+}
+
+}  // namespace splinex::app

@@ -1,0 +1,412 @@
+#include "crosscheck/verify.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+
+#include "float/mpfr.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/insert.hpp"
+#include "spline/integrate.hpp"
+
+namespace splinex {
+
+namespace {
+
+/// x rounded to nearest at `precision` significand bits (53: double), as the rational it is.
+Rational rounded(const Rational& x, int precision) {
+  if (precision == 53) return exact_from_double(to_double(x));
+  Mpfr::Precision scope(precision);
+  return ArithTraits<Mpfr>::to_rational(ArithTraits<Mpfr>::from_rational(x));
+}
+
+std::string list(const std::vector<int>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  return s + "]";
+}
+
+/// max_c |v_c| of one point.
+Rational max_abs(const std::vector<Rational>& v) {
+  Rational m(0);
+  for (const auto& x : v) m = std::max(m, Rational(abs(x)));
+  return m;
+}
+
+/// Points per direction for sampled (rational) comparisons.
+int grid_for(int dim, int grid) {
+  if (grid > 0) return grid;
+  return dim == 1 ? 65 : dim == 2 ? 17 : 7;
+}
+
+/// The Greville abscissa of control index i in direction d (inside the domain of a clamped spline).
+Rational greville(const BSpline<Rational>& S, int d, std::size_t i) {
+  const int p = S.degrees[d];
+  const auto& U = S.knots[d];
+  if (p == 0) return (U[i] + U[i + 1]) / 2;
+  Rational s(0);
+  for (int k = 1; k <= p; ++k) s += U[i + k];
+  return s / p;
+}
+
+/// The multi-index (direction 0 fastest) of flat control index k.
+std::vector<std::size_t> multi_index(const BSpline<Rational>& S, std::size_t k) {
+  std::vector<std::size_t> idx(S.dim());
+  for (int d = 0; d < S.dim(); ++d) {
+    idx[d] = k % S.count(d);
+    k /= S.count(d);
+  }
+  return idx;
+}
+
+void check_comparable(const BSpline<Rational>& C, const BSpline<Rational>& R, const std::string& where) {
+  if (C.dim() != R.dim())
+    throw ValidationError(where + ".degrees", "the candidate has " + std::to_string(C.dim()) + " parametric directions, the reference " +
+                                                  std::to_string(R.dim()),
+                          "hand in the result of the same operation on the same input");
+  if (C.q != R.q)
+    throw ValidationError(where + ".points", "the candidate's points have " + std::to_string(C.q) + " coordinates, the reference's " +
+                                                 std::to_string(R.q),
+                          "hand in the result of the same operation on the same input");
+}
+
+/// Structure of one pair; returns "equal", "equal after rounding" or "different", with notes.
+std::string compare_structure(const BSpline<Rational>& C, const BSpline<Rational>& R, int precision, const std::string& where,
+                              std::vector<std::string>& notes) {
+  if (C.degrees != R.degrees) {
+    notes.push_back(where + ": degrees " + list(C.degrees) + " (candidate) vs " + list(R.degrees) + " (reference)");
+    return "different";
+  }
+  if (C.is_rational() != R.is_rational()) {
+    notes.push_back(where + (C.is_rational() ? ": the candidate is rational, the reference polynomial"
+                                             : ": the candidate is polynomial, the reference rational"));
+    return "different";
+  }
+  std::string verdict = "equal";
+  for (int d = 0; d < C.dim(); ++d) {
+    const auto &A = C.knots[d], &B = R.knots[d];
+    const std::string at = where + ": knots[" + std::to_string(d) + "]";
+    if (A.size() != B.size()) {
+      notes.push_back(at + " has " + std::to_string(A.size()) + " knots in the candidate, " + std::to_string(B.size()) +
+                      " in the reference");
+      return "different";
+    }
+    if (A == B) continue;
+    for (std::size_t i = 0; i < A.size(); ++i)
+      if (!(A[i] == B[i]) && !(A[i] == rounded(B[i], precision))) {
+        notes.push_back(at + "[" + std::to_string(i) + "] is " + to_fraction_string(A[i]) + ", the reference " +
+                        to_fraction_string(B[i]) + " (not its rounding)");
+        return "different";
+      }
+    verdict = "equal after rounding";
+  }
+  return verdict;
+}
+
+int worse(const std::string& s) { return s == "equal" ? 0 : s == "equal after rounding" ? 1 : 2; }
+
+}  // namespace
+
+// ---- the function-level error --------------------------------------------------------------------
+
+FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>& R, const VerifyOptions& options,
+                             const Limits& limits) {
+  check_comparable(C, R, "candidate");
+  FunctionError fe;
+  if (C.is_rational() || R.is_rational()) {
+    // A difference of rational splines is no B-spline with these weights: sample it.
+    const int g = grid_for(C.dim(), options.grid);
+    std::vector<std::size_t> idx(C.dim(), 0);
+    std::size_t n = 0;
+    for (int d = 0; d < C.dim(); ++d)
+      if (!(C.domain_lo(d) == R.domain_lo(d)) || !(C.domain_hi(d) == R.domain_hi(d)))
+        throw DomainError("candidate.knots[" + std::to_string(d) + "]", "the candidate's domain differs from the reference's",
+                          "hand in the result on the same domain");
+    while (true) {
+      std::vector<Rational> x(C.dim());
+      for (int d = 0; d < C.dim(); ++d)
+        x[d] = C.domain_lo(d) + (C.domain_hi(d) - C.domain_lo(d)) * Rational(static_cast<long>(idx[d]), g - 1);
+      std::vector<Rational> diff = evaluate(C, x);
+      const auto r = evaluate(R, x);
+      for (std::size_t c = 0; c < diff.size(); ++c) diff[c] -= r[c];
+      const Rational m = max_abs(diff);
+      if (n == 0 || fe.lower < m) {
+        fe.lower = m;
+        fe.at = x;
+      }
+      ++n;
+      int d = 0;
+      while (d < C.dim() && ++idx[d] == static_cast<std::size_t>(g)) idx[d++] = 0;
+      if (d == C.dim()) break;
+    }
+    fe.upper = fe.lower;
+    fe.method = "rational: checked at " + std::to_string(n) + " points (a grid), not a bound";
+    return fe;
+  }
+  BSpline<Rational> D = difference(C, R, limits);  // DomainError for different domains
+  fe.certified = true;
+  fe.method = "max |coefficient| of the exact difference on a common refinement (convex hull), refined at span midpoints";
+  const std::size_t q = D.q;
+  // Refinement budget: 64 times the first difference's coefficients (about three rounds of global
+  // halving of a surface, six of a curve). Refinement is local where the error is local.
+  const std::size_t budget = 64 * (D.points.size() / q) + 4096;
+  auto coef = [&](std::size_t k) {
+    Rational m(0);
+    for (std::size_t c = 0; c < q; ++c) m = std::max(m, Rational(abs(D.points[k * q + c])));
+    return m;
+  };
+  for (fe.rounds = 0;; ++fe.rounds) {
+    const std::size_t n = D.points.size() / q;
+    std::vector<Rational> a(n);
+    for (std::size_t k = 0; k < n; ++k) a[k] = coef(k);
+    // The bound: the largest coefficient. It only decreases under refinement (each new
+    // coefficient is a convex combination of old ones); keep the smallest seen.
+    const Rational upper = *std::max_element(a.begin(), a.end());
+    if (fe.rounds == 0 || upper < fe.upper) fe.upper = upper;
+    if (fe.upper == 0) {
+      fe.lower = 0;
+      fe.at.clear();
+      for (int d = 0; d < D.dim(); ++d) fe.at.push_back(D.domain_lo(d));
+      fe.within_factor = true;
+      return fe;
+    }
+    // Witnesses: the Greville points of the 8 largest coefficients.
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    const std::size_t top = std::min<std::size_t>(8, n);
+    std::partial_sort(order.begin(), order.begin() + top, order.end(), [&](std::size_t i, std::size_t j) { return a[j] < a[i]; });
+    for (std::size_t t = 0; t < top; ++t) {
+      const auto mi = multi_index(D, order[t]);
+      std::vector<Rational> x(D.dim());
+      for (int d = 0; d < D.dim(); ++d) x[d] = greville(D, d, mi[d]);
+      const Rational v = max_abs(evaluate(D, x));
+      if (fe.at.empty() || fe.lower < v) {
+        fe.lower = v;
+        fe.at = x;
+      }
+    }
+    if (fe.upper <= options.factor * fe.lower) {
+      fe.within_factor = true;
+      return fe;
+    }
+    if (fe.rounds >= options.max_rounds) return fe;
+    // Refine where the bound is not yet within the factor: midpoints of every non-empty span in
+    // the support of a coefficient above factor * lower, direction by direction.
+    const Rational bar = options.factor * fe.lower;
+    bool inserted = false;
+    for (int d = 0; d < D.dim(); ++d) {
+      const auto& U = D.knots[d];
+      const int p = D.degrees[d];
+      std::vector<char> split(U.size(), 0);
+      for (std::size_t k = 0; k < n; ++k)
+        if (bar < a[k]) {
+          const std::size_t i = multi_index(D, k)[d];
+          for (std::size_t s = i; s < i + static_cast<std::size_t>(p) + 1; ++s) split[s] = 1;
+        }
+      std::vector<Rational> X;
+      for (std::size_t s = static_cast<std::size_t>(p); s < D.count(d); ++s)
+        if (split[s] && U[s] < U[s + 1]) X.push_back((U[s] + U[s + 1]) / 2);
+      if (X.empty()) continue;
+      if ((D.points.size() / q) / D.count(d) * (D.count(d) + X.size()) > budget) {
+        fe.method += "; stopped at the refinement budget (64x the first difference's coefficients)";
+        return fe;
+      }
+      try {
+        D = refine_knots(D, d, std::move(X), limits);
+      } catch (const SizeLimitError&) {
+        fe.method += "; stopped at the size limit";
+        return fe;
+      }
+      inserted = true;
+    }
+    if (!inserted) return fe;
+  }
+}
+
+Json FunctionError::to_json() const {
+  Json j;
+  j["certified"] = certified;
+  j["upper"] = to_double(upper);
+  j["upper_exact"] = to_fraction_string(upper);
+  j["lower"] = to_double(lower);
+  j["lower_exact"] = to_fraction_string(lower);
+  Json x = Json::array();
+  for (const auto& v : at) x.push_back(to_fraction_string(v));
+  j["at"] = x;
+  j["within_factor"] = within_factor;
+  j["rounds"] = rounds;
+  j["method"] = method;
+  return j;
+}
+
+// ---- whole reports ---------------------------------------------------------------------------------
+
+VerifyReport verify_splines(const std::string& operation, const std::vector<BSpline<Rational>>& reference,
+                            const std::vector<BSpline<Rational>>& candidate, const VerifyOptions& options, const Limits& limits) {
+  VerifyReport rep;
+  rep.operation = operation;
+  rep.precision = options.precision;
+  rep.results = candidate.size();
+  if (candidate.size() != reference.size()) {
+    rep.structure = "different";
+    rep.structure_notes.push_back("the candidate has " + std::to_string(candidate.size()) + " splines, the reference " +
+                                  std::to_string(reference.size()));
+    rep.function.method = "not compared: the results do not pair up";
+    return rep;
+  }
+  for (const auto& R : reference)
+    for (const auto& x : R.points) rep.reference_scale = std::max(rep.reference_scale, Rational(abs(x)));
+  bool shapes = true;
+  int verdict = 0;
+  for (std::size_t i = 0; i < candidate.size(); ++i) {
+    const std::string where = candidate.size() == 1 ? "result" : "result[" + std::to_string(i) + "]";
+    check_comparable(candidate[i], reference[i], where);
+    const std::string s = compare_structure(candidate[i], reference[i], options.precision, where, rep.structure_notes);
+    verdict = std::max(verdict, worse(s));
+    if (candidate[i].degrees != reference[i].degrees || candidate[i].points.size() != reference[i].points.size() ||
+        candidate[i].is_rational() != reference[i].is_rational())
+      shapes = false;
+  }
+  rep.structure = verdict == 0 ? "equal" : verdict == 1 ? "equal after rounding" : "different";
+  if (shapes) {
+    rep.coefficients_compared = true;
+    for (std::size_t i = 0; i < candidate.size(); ++i) {
+      const auto &C = candidate[i], &R = reference[i];
+      for (std::size_t k = 0; k < C.points.size(); ++k) rep.control_points.add(R.points[k], C.points[k]);
+      for (std::size_t k = 0; k < C.weights.size(); ++k) rep.weights.add(R.weights[k], C.weights[k]);
+      for (int d = 0; d < C.dim(); ++d)
+        if (C.knots[d].size() == R.knots[d].size())
+          for (std::size_t k = 0; k < C.knots[d].size(); ++k) rep.knots.add(R.knots[d][k], C.knots[d][k]);
+    }
+  }
+  // The function-level error: the worst pair.
+  bool first = true;
+  for (std::size_t i = 0; i < candidate.size(); ++i) {
+    FunctionError fe;
+    try {
+      fe = function_error(candidate[i], reference[i], options, limits);
+    } catch (const DomainError& e) {
+      rep.structure = "different";
+      rep.structure_notes.push_back(std::string(candidate.size() == 1 ? "result" : "result[" + std::to_string(i) + "]") +
+                                    ": the domains differ, so the functions are not compared");
+      rep.function = FunctionError{};
+      rep.function.method = "not compared: different domains";
+      return rep;
+    }
+    if (first || rep.function.upper < fe.upper) {
+      const bool certified = first ? fe.certified : (rep.function.certified && fe.certified);
+      const bool within = first ? fe.within_factor : (rep.function.within_factor && fe.within_factor);
+      rep.function = fe;
+      rep.function.certified = certified;
+      rep.function.within_factor = within;
+      if (candidate.size() > 1) rep.function.method += " (worst of " + std::to_string(candidate.size()) + " results, result " + std::to_string(i) + ")";
+    } else {
+      rep.function.certified = rep.function.certified && fe.certified;
+      rep.function.within_factor = rep.function.within_factor && fe.within_factor;
+    }
+    first = false;
+  }
+  return rep;
+}
+
+VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const std::vector<BSpline<Rational>>& candidate,
+                    const VerifyOptions& options, const Limits& limits) {
+  return verify_splines(op.name(), run_operation(op, input, limits), candidate, options, limits);
+}
+
+VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::vector<Rational>>& at,
+                           const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options) {
+  if (at.size() != candidate_values.size())
+    throw ValidationError("candidate.values", "has " + std::to_string(candidate_values.size()) + " points for " +
+                                                  std::to_string(at.size()) + " parameters",
+                          "give one value per parameter");
+  VerifyReport rep;
+  rep.operation = "eval";
+  rep.precision = options.precision;
+  rep.results = at.size();
+  rep.function.method = "values at the given parameters (no function-level bound for point values)";
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const std::string field = "candidate.values[" + std::to_string(i) + "]";
+    const auto exact = evaluate(S, at[i]);
+    if (candidate_values[i].size() != exact.size())
+      throw ValidationError(field, "has " + std::to_string(candidate_values[i].size()) + " coordinates, the spline's points " +
+                                       std::to_string(exact.size()),
+                            "give a value with as many coordinates as the control points");
+    rep.reference_scale = std::max(rep.reference_scale, max_abs(exact));
+    std::vector<Rational> diff(exact.size());
+    for (std::size_t c = 0; c < exact.size(); ++c) {
+      rep.values.add(exact[c], candidate_values[i][c]);
+      diff[c] = candidate_values[i][c] - exact[c];
+    }
+    const Rational m = max_abs(diff);
+    if (i == 0 || rep.function.lower < m) {
+      rep.function.lower = m;
+      rep.function.upper = m;
+      rep.function.at = at[i];
+    }
+  }
+  return rep;
+}
+
+Json VerifyReport::to_json() const {
+  Json j;
+  j["operation"] = operation;
+  j["precision"] = precision;
+  j["structure"] = structure;
+  j["structure_notes"] = structure_notes;
+  j["results"] = results;
+  if (coefficients_compared) {
+    j["control_points"] = control_points.to_json(precision);
+    if (weights.count) j["weights"] = weights.to_json(precision);
+    j["knots"] = knots.to_json(precision);
+  }
+  if (values.count) j["values"] = values.to_json(precision);
+  Json f = function.to_json();
+  // Relative to the largest reference coefficient (values: the largest exact value), and as bits
+  // lost at the candidate's precision, as the coefficient errors are.
+  if (reference_scale > 0) {
+    ErrorStat e;  // the same definitions as the coefficient errors'
+    e.max_abs = function.upper;
+    e.max_ref = reference_scale;
+    f["relative"] = e.rel();
+    f["bits_lost"] = e.bits_lost(precision);
+  }
+  j["function"] = f;
+  return j;
+}
+
+// ---- reading a candidate as a float program meant it ------------------------------------------------
+
+Json candidate_numbers_as_doubles(const Json& doc) {
+  if (doc.is_object()) {
+    Json out = Json::object();
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+      out[it.key()] = (it.key() == "type" || it.key() == "degrees") ? it.value() : candidate_numbers_as_doubles(it.value());
+    return out;
+  }
+  if (doc.is_array()) {
+    Json out = Json::array();
+    for (const auto& v : doc) out.push_back(candidate_numbers_as_doubles(v));
+    return out;
+  }
+  std::string text;
+  if (doc.is_number_integer() || doc.is_number_unsigned()) text = doc.dump();
+  else if (doc.is_string()) text = doc.get<std::string>();
+  else return doc;
+  if (text.find('/') != std::string::npos) return doc;  // a fraction is what it says
+  Rational exact;
+  try {
+    exact = parse_number(text, "candidate");
+  } catch (const ParseError&) {
+    return doc;  // not a number: the reader will say what is wrong with it
+  }
+  const double d = to_double(exact);
+  if (!std::isfinite(d))
+    throw RangeError("candidate", "the number " + text.substr(0, 40) + " is beyond the range of double",
+                     "read the candidate with --read-as exact if it is not a double");
+  return Json(to_fraction_string(exact_from_double(d)));
+}
+
+}  // namespace splinex

@@ -1,0 +1,82 @@
+// Judging a result computed elsewhere (issue 16): a candidate spline (or values) handed in from
+// another program - a student's knot insertion in double, SciPy, the Octave NURBS toolbox,
+// OpenCASCADE - compared exactly with splinex's exact reference for the same operation on the same
+// input.
+//
+// The report has three parts:
+//  - structure: degrees, knot vectors and counts "equal", "equal after rounding" (the candidate's
+//    knots are the reference's rounded to the candidate's precision) or "different" (and where);
+//  - coefficients (when the shapes agree): max absolute error, normwise relative error and bits
+//    lost at the candidate's precision, for control points, weights and knots;
+//  - the function-level error: candidate and reference compared as functions, whatever their
+//    representations (other knots, another degree): for polynomial splines a certified upper bound
+//    of sup_x max_c |C_c(x) - R_c(x)| over the domain - the largest coefficient of the exact
+//    difference on a common refinement (B-splines are non-negative and sum to one) - refined by
+//    inserting span midpoints where the bound is attained until it is within `factor` of a
+//    witnessed lower bound |C(x*) - R(x*)| (evaluated exactly at the Greville point of the
+//    largest coefficient), with x*. Rational splines get the witnessed lower bound only, on a
+//    grid, and say "checked at N points".
+#pragma once
+#include <string>
+#include <vector>
+
+#include "crosscheck/crosscheck.hpp"
+
+namespace splinex {
+
+struct VerifyOptions {
+  int precision = 53;         // the candidate's significand bits, for bits lost (53: double)
+  Rational factor{2};         // stop refining when upper <= factor * lower
+  int max_rounds = 24;        // refinement rounds of the function-level bound
+  int grid = 0;               // rational splines: points per direction (0: 65 / 17 / 7 by dimension)
+};
+
+struct FunctionError {
+  bool certified = false;     // upper is a proved bound (polynomial); else only `lower` was measured
+  Rational upper{0}, lower{0};
+  std::vector<Rational> at;   // where `lower` is attained
+  int rounds = 0;             // refinement rounds used
+  bool within_factor = false; // upper <= factor * lower (or both 0)
+  std::string method;
+  Json to_json() const;
+};
+
+struct VerifyReport {
+  std::string operation;
+  int precision = 53;
+  std::string structure = "equal";  // "equal", "equal after rounding", "different"
+  std::vector<std::string> structure_notes;
+  std::size_t results = 0;          // splines (or points) compared
+  bool coefficients_compared = false;
+  ErrorStat control_points, weights, knots, values;
+  FunctionError function;
+  Rational reference_scale{0};  // max |reference coefficient| (or value): the function error's scale
+  Json to_json() const;
+};
+
+/// Reference splines against candidate splines, one to one (a piece list for extraction, the two
+/// halves of a split). Different counts are a structure finding, not an error; a candidate of
+/// another dimension or point size is a ValidationError (it cannot be the result asked for).
+VerifyReport verify_splines(const std::string& operation, const std::vector<BSpline<Rational>>& reference,
+                            const std::vector<BSpline<Rational>>& candidate, const VerifyOptions& options = {},
+                            const Limits& limits = {});
+
+/// The exact result of `op` on `input` against the candidate.
+VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const std::vector<BSpline<Rational>>& candidate,
+                    const VerifyOptions& options = {}, const Limits& limits = {});
+
+/// Values at points: candidate_values[i] against the exact S(at[i]).
+VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::vector<Rational>>& at,
+                           const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options = {});
+
+/// The function-level error of candidate C against reference R (same dimension, point size and
+/// domain; DomainError otherwise).
+FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>& R, const VerifyOptions& options = {},
+                             const Limits& limits = {});
+
+/// Number text as a float program meant it: a decimal is the double nearest to it (the candidate
+/// printed a double; shortest round-trip text reads back to that double), a fraction p/q stays
+/// exact. Used by `splinex verify --read-as double` (the default) on every number of a candidate.
+Json candidate_numbers_as_doubles(const Json& doc);
+
+}  // namespace splinex
