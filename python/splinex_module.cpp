@@ -1,0 +1,253 @@
+// The Python module `splinex` (pybind11): spline documents, the exact kernel operations and
+// verify, with numbers going in and out exactly. In: int, float (the double it is, a dyadic
+// rational), fractions.Fraction, or a string ("1/3", "0.1" = 1/10). Out: fractions.Fraction.
+//
+//   import splinex
+//   S = {"degrees": [3], "knots": [[0, 0, 0, 0, 0.5, 1, 1, 1, 1]], "points": [[0], [1], [3], [2], [5]]}
+//   E = splinex.elevate(S, by=1)                  # exact, Fractions
+//   rep = splinex.verify("elevate", S, my_float_result, by=1)
+//   assert rep.bits_lost < 4 and rep.structure != "different"
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "crosscheck/verify.hpp"
+#include "spline/kernel.hpp"
+
+namespace py = pybind11;
+using namespace splinex;
+
+namespace {
+
+/// A Python number as the exact text splinex's readers take (floats exactly as their doubles).
+std::string number_text(const py::handle& v, const std::string& field) {
+  if (py::isinstance<py::bool_>(v)) throw ValidationError(field, "is a bool", "give a number");
+  if (py::isinstance<py::int_>(v)) return py::str(v);
+  if (py::isinstance<py::float_>(v)) return to_fraction_string(exact_from_double(v.cast<double>(), field));
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator"))  // fractions.Fraction, numbers.Rational
+    return std::string(py::str(v.attr("numerator"))) + "/" + std::string(py::str(v.attr("denominator")));
+  throw ValidationError(field, "is not a number (" + std::string(py::str(v.get_type().attr("__name__"))) + ")",
+                        "give an int, float, fractions.Fraction or a string such as \"1/3\"");
+}
+
+Rational to_rational(const py::handle& v, const std::string& field) { return parse_number(number_text(v, field), field); }
+
+py::object fraction(const Rational& x) {
+  static py::object F = py::module_::import("fractions").attr("Fraction");
+  return F(to_fraction_string(x));
+}
+
+/// Python containers of numbers -> the JSON document splinex reads (numbers as exact strings).
+Json to_json_numbers(const py::handle& v, const std::string& field) {
+  if (py::isinstance<py::dict>(v)) {
+    Json out = Json::object();
+    for (auto kv : v.cast<py::dict>()) {
+      const std::string key = py::str(kv.first);
+      out[key] = (key == "type") ? Json(std::string(py::str(kv.second)))
+                 : (key == "degrees") ? Json(kv.second.cast<std::vector<int>>())
+                                      : to_json_numbers(kv.second, field + "." + key);
+    }
+    return out;
+  }
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    Json out = Json::array();
+    std::size_t i = 0;
+    for (auto x : v) out.push_back(to_json_numbers(x, field + "[" + std::to_string(i++) + "]"));
+    return out;
+  }
+  return Json(number_text(v, field));
+}
+
+BSpline<Rational> to_spline(const py::handle& v, const std::string& field = "spline") {
+  if (!py::isinstance<py::dict>(v))
+    throw ValidationError(field, "is not a dict", "give {\"degrees\": [...], \"knots\": [[...]], \"points\": [[...]]}");
+  Json doc = to_json_numbers(v, field);
+  if (!doc.contains("type")) doc["type"] = "bspline";
+  return spline_from_json(doc, Limits{}, field);
+}
+
+py::dict from_spline(const BSpline<Rational>& S) {
+  py::dict d;
+  d["type"] = "bspline";
+  d["degrees"] = S.degrees;
+  py::list knots, points;
+  for (const auto& U : S.knots) {
+    py::list row;
+    for (const auto& u : U) row.append(fraction(u));
+    knots.append(row);
+  }
+  for (std::size_t i = 0; i < S.points.size() / S.q; ++i) {
+    py::list p;
+    for (int c = 0; c < S.q; ++c) p.append(fraction(S.points[i * S.q + c]));
+    points.append(p);
+  }
+  d["knots"] = knots;
+  d["points"] = points;
+  if (S.is_rational()) {
+    py::list w;
+    for (const auto& x : S.weights) w.append(fraction(x));
+    d["weights"] = w;
+  }
+  return d;
+}
+
+std::vector<Rational> to_rationals(const py::handle& v, const std::string& field) {
+  std::vector<Rational> out;
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    std::size_t i = 0;
+    for (auto x : v) out.push_back(to_rational(x, field + "[" + std::to_string(i++) + "]"));
+  } else {
+    out.push_back(to_rational(v, field));
+  }
+  return out;
+}
+
+py::list fractions_of(const std::vector<Rational>& v) {
+  py::list l;
+  for (const auto& x : v) l.append(fraction(x));
+  return l;
+}
+
+/// The Operation for `name` from keyword arguments (the CLI's options).
+Operation make_operation(const std::string& name, const py::kwargs& kw) {
+  Operation op = Operation::parse_kind(name);
+  if (kw.contains("dir")) op.dir = kw["dir"].cast<int>();
+  switch (op.kind) {
+    case Operation::Kind::insert_knots:
+      if (!kw.contains("knots")) throw UsageError("knots", "insert-knots needs knots", "pass knots=[...]");
+      op.knots = to_rationals(kw["knots"], "knots");
+      break;
+    case Operation::Kind::elevate: op.by = kw.contains("by") ? kw["by"].cast<int>() : 1; break;
+    case Operation::Kind::split:
+      if (!kw.contains("at")) throw UsageError("at", "split needs a parameter", "pass at=...");
+      op.at = to_rational(kw["at"], "at");
+      break;
+    case Operation::Kind::reparametrize: {
+      if (!kw.contains("interval")) throw UsageError("interval", "reparametrize needs an interval", "pass interval=(lo, hi)");
+      const auto v = to_rationals(kw["interval"], "interval");
+      if (v.size() != 2) throw UsageError("interval", "needs two numbers", "pass interval=(lo, hi)");
+      op.lo = v[0];
+      op.hi = v[1];
+      break;
+    }
+    default: break;
+  }
+  return op;
+}
+
+/// What verify returns: the report's main numbers as attributes, the whole report as `report`.
+struct PyReport {
+  std::string structure;
+  double bits_lost = 0;  // the worst of coefficients, values and the function-level error
+  py::object function_upper, function_lower;
+  py::list at;
+  bool certified = false, within_factor = false;
+  py::object report;  // the JSON report as Python objects
+};
+
+PyReport to_py(const VerifyReport& r) {
+  PyReport p;
+  p.structure = r.structure;
+  const Json j = r.to_json();
+  for (const char* part : {"control_points", "values"})
+    if (j.contains(part)) p.bits_lost = std::max(p.bits_lost, j[part]["bits_lost"].get<double>());
+  if (j["function"].contains("bits_lost")) p.bits_lost = std::max(p.bits_lost, j["function"]["bits_lost"].get<double>());
+  p.function_upper = fraction(r.function.upper);
+  p.function_lower = fraction(r.function.lower);
+  p.at = fractions_of(r.function.at);
+  p.certified = r.function.certified;
+  p.within_factor = r.function.within_factor;
+  p.report = py::module_::import("json").attr("loads")(j.dump());
+  return p;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(splinex, m) {
+  m.doc() = "splinex: exact B-spline kernel operations and exact verification of results computed elsewhere";
+  // Every splinex error (bad input, limits, domains) is a ValueError with splinex's one-line text.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const splinex::Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  py::class_<PyReport>(m, "Report")
+      .def_readonly("structure", &PyReport::structure, "\"equal\", \"equal after rounding\" or \"different\"")
+      .def_readonly("bits_lost", &PyReport::bits_lost, "worst bits lost: coefficients, values, function-level error")
+      .def_readonly("function_upper", &PyReport::function_upper, "certified bound of sup |candidate - exact| (polynomial)")
+      .def_readonly("function_lower", &PyReport::function_lower, "witnessed |candidate - exact| at `at`")
+      .def_readonly("at", &PyReport::at)
+      .def_readonly("certified", &PyReport::certified)
+      .def_readonly("within_factor", &PyReport::within_factor)
+      .def_readonly("report", &PyReport::report, "the whole report (as `splinex verify` prints it)")
+      .def("__repr__", [](const PyReport& r) {
+        return "<splinex.Report structure=" + r.structure + " bits_lost=" + std::to_string(r.bits_lost) + ">";
+      });
+  m.def("validate", [](const py::dict& S) { return from_spline(to_spline(S)); },
+        "the spline read exactly and validated, as Fractions");
+  m.def("evaluate", [](const py::dict& S, const py::object& at) { return fractions_of(evaluate(to_spline(S), to_rationals(at, "at"))); },
+        py::arg("spline"), py::arg("at"), "the exact value at a parameter (a number or a list, one per direction)");
+  m.def("insert_knots", [](const py::dict& S, const py::object& knots, int dir) {
+          return from_spline(refine_knots(to_spline(S), dir, to_rationals(knots, "knots")));
+        },
+        py::arg("spline"), py::arg("knots"), py::arg("dir") = 0);
+  m.def("elevate", [](const py::dict& S, int by, int dir) { return from_spline(elevate_degree(to_spline(S), dir, by)); },
+        py::arg("spline"), py::arg("by") = 1, py::arg("dir") = 0);
+  m.def("extract_bezier", [](const py::dict& S) {
+    py::list out;
+    for (const auto& pc : extract_bezier(to_spline(S))) {
+      py::list box;
+      for (const auto& [lo, hi] : pc.box) box.append(py::make_tuple(fraction(lo), fraction(hi)));
+      py::dict d;
+      d["box"] = box;
+      d["spline"] = from_spline(pc.spline);
+      out.append(d);
+    }
+    return out;
+  });
+  m.def("split", [](const py::dict& S, const py::object& at, int dir) {
+          auto [L, R] = split_at(to_spline(S), dir, to_rational(at, "at"));
+          return py::make_tuple(from_spline(L), from_spline(R));
+        },
+        py::arg("spline"), py::arg("at"), py::arg("dir") = 0);
+  m.def("reverse", [](const py::dict& S, int dir) { return from_spline(reverse(to_spline(S), dir)); }, py::arg("spline"),
+        py::arg("dir") = 0);
+  m.def(
+      "verify",
+      [](const std::string& operation, const py::dict& S, const py::object& candidate, int precision, const py::object& factor,
+         const py::kwargs& kw) {
+        VerifyOptions vo;
+        vo.precision = precision;
+        vo.factor = to_rational(factor, "factor");
+        if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "pass e.g. factor=2");
+        const BSpline<Rational> input = to_spline(S, "spline");
+        if (operation == "eval") {
+          if (!py::isinstance<py::dict>(candidate) || !candidate.contains("at") || !candidate.contains("values"))
+            throw ValidationError("candidate", "an eval candidate is {\"at\": [...], \"values\": [...]}", "give both lists");
+          std::vector<std::vector<Rational>> at, values;
+          std::size_t i = 0;
+          for (auto x : candidate["at"]) at.push_back(to_rationals(x, "candidate.at[" + std::to_string(i++) + "]"));
+          i = 0;
+          for (auto x : candidate["values"]) values.push_back(to_rationals(x, "candidate.values[" + std::to_string(i++) + "]"));
+          return to_py(verify_values(input, at, values, vo));
+        }
+        std::vector<BSpline<Rational>> cands;
+        if (py::isinstance<py::dict>(candidate)) {
+          cands.push_back(to_spline(candidate, "candidate"));
+        } else {
+          std::size_t i = 0;
+          for (auto c : candidate) {
+            const std::string where = "candidate[" + std::to_string(i++) + "]";
+            cands.push_back(py::isinstance<py::dict>(c) && c.contains("spline") ? to_spline(c["spline"], where + ".spline")
+                                                                                  : to_spline(c, where));
+          }
+        }
+        return to_py(verify(make_operation(operation, kw), input, cands, vo));
+      },
+      py::arg("operation"), py::arg("spline"), py::arg("candidate"), py::arg("precision") = 53, py::arg("factor") = 2,
+      "Judge a candidate result exactly: operation is insert-knots (knots=...), elevate (by=...), extract-bezier, "
+      "split (at=...), reparametrize (interval=(lo, hi)), reverse or eval (candidate {\"at\": [...], \"values\": [...]}); "
+      "dir=... selects the direction. Floats are taken as the doubles they are.");
+}

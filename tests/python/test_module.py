@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""The Python module splinex (pybind11): exact operations with Fractions, and verify judging a
+candidate computed here in plain Python floats. Run by ctest (python.module) with PYTHONPATH set
+to the build's python/ folder; plain asserts, no pytest needed."""
+from fractions import Fraction
+
+import splinex
+
+S = {"degrees": [3], "knots": [[0, 0, 0, 0, "1/3", 0.5, 1, 1, 1, 1]],
+     "points": [[0, 0], [1, 2], ["22/7", "1e-3"], [3, 0.784], [4, 1], [5, "-1/2"]]}
+
+
+def boehm_float(spline, u):
+    """One knot inserted into a curve by Boehm's algorithm (NURBS Book A5.1), in floats."""
+    p = spline["degrees"][0]
+    num = lambda x: float(Fraction(x)) if isinstance(x, str) else float(x)
+    U = [num(x) for x in spline["knots"][0]]
+    P = [[num(c) for c in pt] for pt in spline["points"]]
+    k = max(i for i in range(len(U) - 1) if U[i] <= u < U[i + 1])
+    Q = []
+    for i in range(len(P) + 1):
+        if i <= k - p:
+            Q.append(P[i])
+        elif i > k:
+            Q.append(P[i - 1])
+        else:
+            a = (u - U[i]) / (U[i + p] - U[i])
+            Q.append([(1 - a) * x + a * y for x, y in zip(P[i - 1], P[i])])
+    return {"degrees": [p], "knots": [U[:k + 1] + [u] + U[k + 1:]], "points": Q}
+
+
+def main():
+    # Exact operations: Fractions out; "1/3" and 0.5 read exactly; elevation keeps the function.
+    E = splinex.elevate(S, by=1)
+    assert E["degrees"] == [4]
+    assert all(isinstance(x, Fraction) for x in E["knots"][0])
+    for t in (Fraction(1, 7), Fraction(1, 3), Fraction(2, 3), Fraction(99, 100)):
+        assert splinex.evaluate(E, t) == splinex.evaluate(S, t)
+    assert Fraction(1, 3) in splinex.validate(S)["knots"][0]
+    # A float is the double it is: 0.1 is not 1/10.
+    assert splinex.validate({"degrees": [1], "knots": [[0, 0, 1, 1]], "points": [[0.1], [1]]})["points"][0][0] != Fraction(1, 10)
+
+    # verify: the exact result itself.
+    rep = splinex.verify("elevate", S, E, by=1)
+    assert rep.structure == "equal" and rep.bits_lost == 0 and rep.function_upper == 0 and rep.certified, rep
+
+    # verify: a candidate computed here in floats (Boehm in plain Python) loses a few bits at most.
+    C = boehm_float(S, 0.7)
+    rep = splinex.verify("insert-knots", S, C, knots=[0.7])
+    assert rep.structure in ("equal", "equal after rounding"), rep.report
+    assert rep.bits_lost < 4, rep.report
+    assert rep.certified and rep.within_factor
+    assert rep.function_lower <= rep.function_upper
+
+    # A wrong candidate (one coordinate off by 1e-6) is found, with the place.
+    C["points"][3][1] += 1e-6
+    rep = splinex.verify("insert-knots", S, C, knots=[0.7])
+    assert rep.bits_lost > 20, rep.report
+    assert rep.function_upper >= Fraction(1, 10**7), rep.report
+    lo, hi = C["knots"][0][3], C["knots"][0][3 + 4]
+    assert lo <= rep.at[0] <= hi, (rep.at, lo, hi)
+
+    # Values at points.
+    rep = splinex.verify("eval", S, {"at": [[0.25]], "values": [[float(x) for x in splinex.evaluate(S, 0.25)]]})
+    assert rep.bits_lost <= 1, rep.report
+
+    # Bad input: a ValueError with splinex's one-line text naming the field.
+    for bad, field in (({"degrees": [3], "knots": [[0, 1]], "points": [[0]]}, "knots[0]"),
+                       ({"degrees": [1], "knots": [[0, 0, 1, 1]], "points": [[0], ["NaN"]]}, "points[1][0]")):
+        try:
+            splinex.validate(bad)
+        except ValueError as e:
+            assert field in str(e), str(e)
+        else:
+            raise AssertionError("no error for " + repr(bad))
+    try:
+        splinex.verify("elevate", S, {"degrees": [4, 1], "knots": [[0, 1], [0, 1]], "points": [[0]]})
+    except ValueError:
+        pass
+    else:
+        raise AssertionError("a candidate of another dimension was accepted")
+    print("python module: all checks passed")
+
+
+if __name__ == "__main__":
+    main()
