@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "crosscheck/verify.hpp"
+#include "fixtures/random_spline.hpp"
 #include "spline/kernel.hpp"
 
 namespace py = pybind11;
@@ -185,6 +186,22 @@ PYBIND11_MODULE(splinex, m) {
       .def("__repr__", [](const PyReport& r) {
         return "<splinex.Report structure=" + r.structure + " bits_lost=" + std::to_string(r.bits_lost) + ">";
       });
+  m.def(
+      "structured_case",
+      [](std::uint64_t seed, int max_dim, bool rational, bool discontinuous, bool extreme_values) {
+        std::mt19937_64 rng(seed);
+        StructuredOptions so;
+        so.max_dim = max_dim;
+        so.rational = rational;
+        so.discontinuous = discontinuous;
+        so.extreme_values = extreme_values;
+        const StructuredCase c = structured_case(rng, so);
+        return py::make_tuple(from_spline(c.spline), c.structures);
+      },
+      py::arg("seed"), py::arg("max_dim") = 1, py::arg("rational") = false, py::arg("discontinuous") = true,
+      py::arg("extreme_values") = false,
+      "splinex's structured generator (degree 0..7, C^-1 knots, single spans, unclamped ends, knots 2^-60 apart, "
+      "shifted domains, ...): (spline, the structures it contains), reproducible from the seed");
   m.def("validate", [](const py::dict& S) { return from_spline(to_spline(S)); },
         "the spline read exactly and validated, as Fractions");
   m.def("evaluate", [](const py::dict& S, const py::object& at) { return fractions_of(evaluate(to_spline(S), to_rationals(at, "at"))); },

@@ -19,7 +19,7 @@ DIRECT = {
     "proofs": ["fixtures"],
     "experiments": ["proofs", "crosscheck"],
     "apps": ["experiments"],
-    "python": ["crosscheck"],
+    "python": ["crosscheck", "fixtures"],
 }
 
 
