@@ -5,7 +5,7 @@
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
 #   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
 #   scripts/run.sh bench     every kernel benchmark, then the ratio table bench/results/kernel.md (+ .json)
-#   scripts/run.sh peers     SciPy's results judged by splinex verify: results/peers/scipy.md
+#   scripts/run.sh peers     SciPy's and Octave NURBS's results judged by splinex verify: results/peers/
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
@@ -13,8 +13,8 @@ extra_packages=()
 [[ $what == fuzz ]] && extra_packages=(clang libclang-rt-14-dev)
 # The peers the kernel is benchmarked against (bench/bench_kernel.cpp): SISL and OpenCASCADE.
 [[ $what == bench ]] && extra_packages=(libsisl-dev libocct-foundation-dev libocct-modeling-data-dev)
-# The peers whose results `verify` judges (scripts/peers/): SciPy.
-[[ $what == peers ]] && extra_packages=(python3-scipy)
+# The peers whose results `verify` judges (scripts/peers/): SciPy and the Octave NURBS toolbox.
+[[ $what == peers ]] && extra_packages=(python3-scipy octave-nurbs)
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3
@@ -64,6 +64,7 @@ case "$what" in
   peers)
     cmake --preset default >&2
     cmake --build --preset default --target splinex_python
-    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_scipy.py results/peers "${2:-200}" ;;
+    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_scipy.py results/peers "${2:-200}"
+    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_octave.py results/peers "${2:-200}" ;;
   *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]|peers [cases]]" >&2; exit 2 ;;
 esac

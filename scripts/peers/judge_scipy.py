@@ -21,6 +21,8 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
 try:
     import scipy
 except ImportError:
@@ -30,20 +32,7 @@ import numpy as np
 from scipy.interpolate import BSpline, insert
 
 import splinex
-
-
-def rounded(S):
-    """The spline with every number rounded to double, as exact Fractions of those doubles."""
-    out = dict(S)
-    out["knots"] = [[Fraction(float(u)) for u in U] for U in S["knots"]]
-    out["points"] = [[Fraction(float(x)) for x in p] for p in S["points"]]
-    return out
-
-
-def domain(S):
-    p, U = S["degrees"][0], S["knots"][0]
-    n = len(S["points"])
-    return U[p], U[n]
+from common import cases as make_cases, domain, rounded, svg
 
 
 def scipy_insert(S, u):
@@ -67,33 +56,6 @@ def scipy_eval(S, xs):
     return [[float(v) for v in f(x)] for x in xs]
 
 
-def svg(series, title):
-    """A small line plot of bits lost against degree (one series per operation)."""
-    W, H, L, B = 560, 320, 50, 40
-    xs = [x for pts in series.values() for x, _ in pts] or [0, 1]
-    x0, x1 = min(xs), max(max(xs), min(xs) + 1)
-    y1 = max([y for pts in series.values() for _, y in pts] + [53])
-    sx = lambda x: L + (x - x0) / (x1 - x0) * (W - L - 20)
-    sy = lambda y: H - B - y / y1 * (H - B - 30)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="11">',
-           f'<text x="{W/2}" y="16" text-anchor="middle" font-size="13">{title}</text>',
-           f'<line x1="{L}" y1="{H-B}" x2="{W-20}" y2="{H-B}" stroke="black"/><line x1="{L}" y1="{H-B}" x2="{L}" y2="30" stroke="black"/>',
-           f'<text x="{W/2}" y="{H-8}" text-anchor="middle">degree</text>',
-           f'<text x="12" y="{H/2}" transform="rotate(-90 12 {H/2})" text-anchor="middle">bits lost (worst, of 53)</text>']
-    for d in range(int(x0), int(x1) + 1):
-        out.append(f'<text x="{sx(d)}" y="{H-B+14}" text-anchor="middle">{d}</text>')
-    for y in range(0, int(y1) + 1, 10):
-        out.append(f'<text x="{L-6}" y="{sy(y)+4}" text-anchor="end">{y}</text>')
-    colors = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"]
-    for i, (name, pts) in enumerate(sorted(series.items())):
-        pts = sorted(pts)
-        path = " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y in pts)
-        out.append(f'<polyline fill="none" stroke="{colors[i % 4]}" stroke-width="2" points="{path}"/>')
-        out.append(f'<text x="{W-150}" y="{40+14*i}" fill="{colors[i % 4]}">{name}</text>')
-    out.append("</svg>")
-    return "\n".join(out) + "\n"
-
-
 def main():
     if len(sys.argv) not in (2, 3):
         print(__doc__, file=sys.stderr)
@@ -103,18 +65,17 @@ def main():
     cases = int(sys.argv[2]) if len(sys.argv) == 3 else 200
     rng = random.Random(20261202)
     rows = []
-    for seed in range(cases):
-        S0, tags = splinex.structured_case(seed, max_dim=1, rational=False)
+    for seed, (suite, S0, tags) in enumerate(make_cases(cases, 1202)):
         try:
             S = splinex.validate(rounded(S0))
         except ValueError as e:  # knots closer than double can hold: not a double input at all
-            rows.append({"seed": seed, "op": "input", "tags": tags, "failure": "not representable in double: " + str(e)[:80]})
+            rows.append({"seed": seed, "suite": suite, "op": "input", "tags": tags, "failure": "not representable in double: " + str(e)[:80]})
             continue
         p = S["degrees"][0]
         lo, hi = domain(S)
         u = float(lo + (hi - lo) * Fraction(rng.randint(1, 999), 1000))
         for op in ("insert", "eval"):
-            row = {"seed": seed, "op": op, "degree": p, "tags": tags}
+            row = {"seed": seed, "suite": suite, "op": op, "degree": p, "tags": tags}
             try:
                 if op == "insert":
                     cand = scipy_insert(S, u)
@@ -133,28 +94,31 @@ def main():
             rows.append(row)
     (out / "scipy.json").write_text(json.dumps({"scipy": scipy.__version__, "cases": cases, "rows": rows}, indent=1) + "\n")
     md = [f"# SciPy {scipy.__version__} judged exactly by splinex", "",
-          f"{cases} curves of splinex's structured generator, rounded to double; one knot inserted "
+          f"{cases} curves of splinex's structured generator and {cases} ordinary clamped curves (degree 1..7, simple "
+          "dyadic knots), rounded to double; one knot inserted "
           "(`scipy.interpolate.insert`, per coordinate) and values at 9 points (`BSpline.__call__`), each judged by "
           "`splinex.verify` against the exact result on the same input. Bits lost: the worst of the coefficient "
           "(or value) error and the certified function-level bound, relative to the largest reference coefficient "
           "(or value), of 53.", "",
-          "| operation | judged | bits lost, median | bits lost, max | structure differs | failures |", "|---|---|---|---|---|---|"]
+          "| cases | operation | judged | bits lost, median | bits lost, max | structure differs | failures |",
+          "|---|---|---|---|---|---|---|"]
     series = {}
-    for op in ("insert", "eval"):
-        ok = [r for r in rows if r["op"] == op and "bits_lost" in r]
-        fails = [r for r in rows if r["op"] == op and "failure" in r]
-        bits = [r["bits_lost"] for r in ok]
-        md.append(f"| {op} | {len(ok)} | {statistics.median(bits) if bits else '-':.3g} | {max(bits) if bits else '-':.3g} | "
-                  f"{sum(r['structure'] == 'different' for r in ok)} | {len(fails)} |")
-        worst = {}
-        for r in ok:
-            worst[r["degree"]] = max(worst.get(r["degree"], 0), r["bits_lost"])
-        series[op] = sorted(worst.items())
+    for suite in ("ordinary", "structured"):
+        for op in ("insert", "eval"):
+            ok = [r for r in rows if r["suite"] == suite and r["op"] == op and "bits_lost" in r]
+            fails = [r for r in rows if r["suite"] == suite and r["op"] == op and "failure" in r]
+            bits = [r["bits_lost"] for r in ok]
+            md.append(f"| {suite} | {op} | {len(ok)} | {statistics.median(bits) if bits else 0:.3g} | "
+                      f"{max(bits) if bits else 0:.3g} | {sum(r['structure'] == 'different' for r in ok)} | {len(fails)} |")
+            worst = series.setdefault(op, {})
+            for r in ok:
+                worst[r["degree"]] = max(worst.get(r["degree"], 0), r["bits_lost"])
+    series = {op: sorted(w.items()) for op, w in series.items()}
     md += ["", "Failures and structure differences (first 20):", ""]
     shown = 0
     for r in rows:
         if shown < 20 and ("failure" in r or r.get("structure") == "different"):
-            md.append(f"- seed {r['seed']}, {r['op']}, structures {', '.join(r['tags']) or '-'}: "
+            md.append(f"- {r['suite']} case {r['seed']}, {r['op']}, structures {', '.join(r['tags']) or '-'}: "
                       f"{r.get('failure', 'structure differs')}")
             shown += 1
     not_double = sum(r["op"] == "input" for r in rows)
