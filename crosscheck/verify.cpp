@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <numeric>
 
+#include "compose/compose_impl.hpp"  // detail::Bern, bern_product: Bernstein products
 #include "float/mpfr.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
@@ -33,12 +34,6 @@ Rational max_abs(const std::vector<Rational>& v) {
   Rational m(0);
   for (const auto& x : v) m = std::max(m, Rational(abs(x)));
   return m;
-}
-
-/// Points per direction for sampled (rational) comparisons.
-int grid_for(int dim, int grid) {
-  if (grid > 0) return grid;
-  return dim == 1 ? 65 : dim == 2 ? 17 : 7;
 }
 
 /// The Greville abscissa of control index i in direction d (inside the domain of a clamped spline).
@@ -111,40 +106,106 @@ int worse(const std::string& s) { return s == "equal" ? 0 : s == "equal after ro
 
 // ---- the function-level error --------------------------------------------------------------------
 
+namespace {
+
+/// One homogeneous coordinate (c < q: w P_c, or P_c for a polynomial spline; c == q: the weight,
+/// 1 for a polynomial spline) of a Bezier piece as a tensor Bernstein polynomial.
+detail::Bern<Rational> homogeneous_coordinate(const BSpline<Rational>& piece, int c) {
+  detail::Bern<Rational> b;
+  b.deg = piece.degrees;
+  const std::size_t n = piece.size(), q = piece.q;
+  b.c.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Rational w = piece.is_rational() ? piece.weights[i] : Rational(1);
+    b.c[i] = c == piece.q ? w : Rational(w * piece.points[i * q + c]);
+  }
+  return b;
+}
+
+/// Rational candidate or reference: on every Bezier piece of the common refinement,
+/// C - R = (C_h R_w - R_h C_w) / (C_w R_w) per coordinate; the numerator's largest Bernstein
+/// coefficient over the denominator's smallest (positive: the weights are) bounds |C - R| there.
+FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline<Rational>& R0, const VerifyOptions& options,
+                                      const Limits& limits) {
+  auto [C, R] = make_compatible(C0, R0, limits);  // DomainError for different domains
+  FunctionError fe;
+  fe.certified = true;
+  fe.method = "rational: per Bezier piece, max |Bernstein coefficient| of (C_h R_w - R_h C_w) over min of C_w R_w, "
+              "refined at span midpoints";
+  const std::size_t budget = 64 * C.size() + 4096;
+  const int q = C.q;
+  for (fe.rounds = 0;; ++fe.rounds) {
+    const BezierForm<Rational> FC = bezier_form(C, limits), FR = bezier_form(R, limits);
+    const std::size_t pieces = FC.size();
+    std::vector<Rational> bound(pieces);
+    std::vector<std::vector<std::pair<Rational, Rational>>> boxes(pieces);
+    for (std::size_t k = 0; k < pieces; ++k) {
+      const BezierPiece<Rational> pc = FC.piece(k), pr = FR.piece(k);
+      boxes[k] = pc.box;
+      const auto cw = homogeneous_coordinate(pc.spline, q), rw = homogeneous_coordinate(pr.spline, q);
+      const auto W = detail::bern_product(cw, rw);
+      const Rational wmin = *std::min_element(W.c.begin(), W.c.end());
+      Rational nmax(0);
+      for (int c = 0; c < q; ++c) {
+        const auto a = detail::bern_product(homogeneous_coordinate(pc.spline, c), rw);
+        const auto b = detail::bern_product(homogeneous_coordinate(pr.spline, c), cw);
+        for (std::size_t i = 0; i < a.c.size(); ++i) nmax = std::max(nmax, Rational(abs(Rational(a.c[i] - b.c[i]))));
+      }
+      bound[k] = nmax / wmin;
+    }
+    const Rational upper = *std::max_element(bound.begin(), bound.end());
+    if (fe.rounds == 0 || upper < fe.upper) fe.upper = upper;
+    // Witnesses: the centres of the 8 pieces with the largest bounds.
+    std::vector<std::size_t> order(pieces);
+    std::iota(order.begin(), order.end(), 0);
+    const std::size_t top = std::min<std::size_t>(8, pieces);
+    std::partial_sort(order.begin(), order.begin() + top, order.end(), [&](std::size_t i, std::size_t j) { return bound[j] < bound[i]; });
+    for (std::size_t t = 0; t < top; ++t) {
+      std::vector<Rational> x;
+      for (const auto& [lo, hi] : boxes[order[t]]) x.push_back((lo + hi) / 2);
+      std::vector<Rational> diff = evaluate(C, x);
+      const auto r = evaluate(R, x);
+      for (std::size_t c = 0; c < diff.size(); ++c) diff[c] -= r[c];
+      const Rational v = max_abs(diff);
+      if (fe.at.empty() || fe.lower < v) {
+        fe.lower = v;
+        fe.at = x;
+      }
+    }
+    if (fe.upper <= options.factor * fe.lower) {
+      fe.within_factor = true;
+      return fe;
+    }
+    if (fe.rounds >= options.max_rounds) return fe;
+    const Rational bar = options.factor * fe.lower;
+    bool inserted = false;
+    for (int d = 0; d < C.dim(); ++d) {
+      std::vector<Rational> X;
+      for (std::size_t k = 0; k < pieces; ++k)
+        if (bar < bound[k]) X.push_back((boxes[k][d].first + boxes[k][d].second) / 2);
+      std::sort(X.begin(), X.end());
+      X.erase(std::unique(X.begin(), X.end()), X.end());
+      if (X.empty()) continue;
+      if (C.size() / C.count(d) * (C.count(d) + X.size()) > budget) {
+        fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
+        return fe;
+      }
+      C = refine_knots(C, d, X, limits);
+      R = refine_knots(R, d, std::move(X), limits);
+      inserted = true;
+    }
+    if (!inserted) return fe;
+  }
+}
+
+}  // namespace
+
+
 FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>& R, const VerifyOptions& options,
                              const Limits& limits) {
   check_comparable(C, R, "candidate");
   FunctionError fe;
-  if (C.is_rational() || R.is_rational()) {
-    // A difference of rational splines is no B-spline with these weights: sample it.
-    const int g = grid_for(C.dim(), options.grid);
-    std::vector<std::size_t> idx(C.dim(), 0);
-    std::size_t n = 0;
-    for (int d = 0; d < C.dim(); ++d)
-      if (!(C.domain_lo(d) == R.domain_lo(d)) || !(C.domain_hi(d) == R.domain_hi(d)))
-        throw DomainError("candidate.knots[" + std::to_string(d) + "]", "the candidate's domain differs from the reference's",
-                          "hand in the result on the same domain");
-    while (true) {
-      std::vector<Rational> x(C.dim());
-      for (int d = 0; d < C.dim(); ++d)
-        x[d] = C.domain_lo(d) + (C.domain_hi(d) - C.domain_lo(d)) * Rational(static_cast<long>(idx[d]), g - 1);
-      std::vector<Rational> diff = evaluate(C, x);
-      const auto r = evaluate(R, x);
-      for (std::size_t c = 0; c < diff.size(); ++c) diff[c] -= r[c];
-      const Rational m = max_abs(diff);
-      if (n == 0 || fe.lower < m) {
-        fe.lower = m;
-        fe.at = x;
-      }
-      ++n;
-      int d = 0;
-      while (d < C.dim() && ++idx[d] == static_cast<std::size_t>(g)) idx[d++] = 0;
-      if (d == C.dim()) break;
-    }
-    fe.upper = fe.lower;
-    fe.method = "rational: checked at " + std::to_string(n) + " points (a grid), not a bound";
-    return fe;
-  }
+  if (C.is_rational() || R.is_rational()) return rational_function_error(C, R, options, limits);
   BSpline<Rational> D = difference(C, R, limits);  // DomainError for different domains
   fe.certified = true;
   fe.method = "max |coefficient| of the exact difference on a common refinement (convex hull), refined at span midpoints";

@@ -14,8 +14,9 @@
 //    difference on a common refinement (B-splines are non-negative and sum to one) - refined by
 //    inserting span midpoints where the bound is attained until it is within `factor` of a
 //    witnessed lower bound |C(x*) - R(x*)| (evaluated exactly at the Greville point of the
-//    largest coefficient), with x*. Rational splines get the witnessed lower bound only, on a
-//    grid, and say "checked at N points".
+//    largest coefficient), with x*. Rational splines: per Bezier piece of the common refinement,
+//    C - R = (C_h R_w - R_h C_w) / (C_w R_w); the numerator's largest Bernstein coefficient over
+//    the denominator's smallest (positive weights) bounds it, refined the same way.
 #pragma once
 #include <string>
 #include <vector>
@@ -28,11 +29,10 @@ struct VerifyOptions {
   int precision = 53;         // the candidate's significand bits, for bits lost (53: double)
   Rational factor{2};         // stop refining when upper <= factor * lower
   int max_rounds = 24;        // refinement rounds of the function-level bound
-  int grid = 0;               // rational splines: points per direction (0: 65 / 17 / 7 by dimension)
 };
 
 struct FunctionError {
-  bool certified = false;     // upper is a proved bound (polynomial); else only `lower` was measured
+  bool certified = false;     // upper is a proved bound; else only `lower` was measured
   Rational upper{0}, lower{0};
   std::vector<Rational> at;   // where `lower` is attained
   int rounds = 0;             // refinement rounds used

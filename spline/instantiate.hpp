@@ -30,5 +30,6 @@
   template BSpline<T> reverse(const BSpline<T>&, int);                                                         \
   template std::vector<T> integrate(const BSpline<T>&);                                                         \
   template BSpline<T> difference(const BSpline<T>&, const BSpline<T>&, const Limits&);                          \
+  template std::pair<BSpline<T>, BSpline<T>> make_compatible(const BSpline<T>&, const BSpline<T>&, const Limits&); \
   template struct AbsIntegral<T>;                                                                               \
   template AbsIntegral<T> integrate_abs(const BSpline<T>&, int, const T&);

@@ -12,6 +12,7 @@
 //   against the lower bound of an unsplit first pass); max_depth still caps the work.
 #pragma once
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "spline/bspline.hpp"
@@ -20,6 +21,12 @@ namespace splinex {
 
 template <class T>
 std::vector<T> integrate(const BSpline<T>& f);
+
+/// A and B on one structure: both clamped, each direction elevated to the larger degree and refined
+/// to the union of the knot vectors (largest multiplicity of each value); the same functions,
+/// rational ones included. Same dimension and q, and the same domain (DomainError otherwise).
+template <class T>
+std::pair<BSpline<T>, BSpline<T>> make_compatible(const BSpline<T>& A, const BSpline<T>& B, const Limits& limits = {});
 
 /// A - B as one spline: both polynomial, same dimension, q and domain. Each direction is elevated
 /// to the larger degree and refined to the union of the knot vectors (largest multiplicity of each

@@ -36,13 +36,11 @@ std::vector<T> integrate(const BSpline<T>& f) {
 }
 
 template <class T>
-BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& limits) {
+std::pair<BSpline<T>, BSpline<T>> make_compatible(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& limits) {
   validate(A0, limits);
   validate(B0, limits);
-  if (A0.is_rational() || B0.is_rational())
-    throw ValidationError("weights", "difference needs polynomial splines", "subtract homogeneous forms instead");
   if (A0.dim() != B0.dim() || A0.q != B0.q)
-    throw ValidationError("degrees", "the two splines differ in dimension or point size", "subtract like from like");
+    throw ValidationError("degrees", "the two splines differ in dimension or point size", "compare like with like");
   BSpline<T> A = clamp_all(A0, limits), B = clamp_all(B0, limits);
   for (int d = 0; d < A.dim(); ++d) {
     if (!(A.domain_lo(d) == B.domain_lo(d)) || !(A.domain_hi(d) == B.domain_hi(d)))
@@ -66,8 +64,18 @@ BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& 
     if (!toA.empty()) A = refine_knots(A, d, toA, limits);
     if (!toB.empty()) B = refine_knots(B, d, toB, limits);
   }
-  for (std::size_t i = 0; i < A.points.size(); ++i) A.points[i] = A.points[i] - B.points[i];
-  return A;
+  return {std::move(A), std::move(B)};
+}
+
+template <class T>
+BSpline<T> difference(const BSpline<T>& A0, const BSpline<T>& B0, const Limits& limits) {
+  if (A0.is_rational() || B0.is_rational())
+    throw ValidationError("weights", "difference needs polynomial splines", "subtract homogeneous forms instead");
+  std::pair<BSpline<T>, BSpline<T>> AB = make_compatible(A0, B0, limits);
+  BSpline<T>& A = AB.first;
+  const BSpline<T>& B = AB.second;
+  for (std::size_t i = 0; i < A.points.size(); ++i) A.points[i] -= B.points[i];
+  return std::move(A);
 }
 
 namespace detail {

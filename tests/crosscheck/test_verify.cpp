@@ -151,6 +151,39 @@ TEST_CASE("verify: a control point moved by 2^-40 is found, bounded within a fac
   }
 }
 
+TEST_CASE("verify: rational candidates get a certified bound too, within the factor") {
+  // The exact quarter circle (weights 1, 1, 2 on (1,0), (1,1), (0,1)), elevated; the candidate
+  // has one weight off by 2^-30.
+  const auto S = test::spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[1,0],[1,1],[0,1]],"weights":[1,1,2]})");
+  const auto op = elevate_by(1);
+  const auto R = run_operation(op, S, Limits{});
+  const auto same = verify(op, S, R);
+  CHECK(same.function.certified);
+  CHECK(same.function.upper == 0);
+  BSpline<Rational> C = R[0];
+  C.weights[1] += Rational(1, 1 << 30);
+  const auto rep = verify(op, S, {C});
+  CHECK(rep.structure == "equal");
+  CHECK(rep.function.certified);
+  CHECK(rep.function.within_factor);
+  CHECK(rep.function.upper > 0);
+  CHECK(rep.function.lower <= rep.function.upper);
+  CHECK(rep.function.upper <= 2 * rep.function.lower);
+  // The bound holds at sampled points (a necessary check of a bound).
+  for (int i = 0; i <= 64; ++i) {
+    const Rational x(i, 64);
+    const auto a = evaluate(C, {x}), b = evaluate(R[0], {x});
+    for (std::size_t c = 0; c < a.size(); ++c) CHECK(abs(Rational(a[c] - b[c])) <= rep.function.upper);
+  }
+  // A rational candidate against a polynomial reference: another structure, still a bound.
+  const auto P = test::spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[1,0],[1,1],[0,1]]})");
+  const auto mixed = verify_splines("identity", {P}, {S});
+  CHECK(mixed.structure == "different");
+  CHECK(mixed.function.certified);
+  CHECK(mixed.function.upper >= mixed.function.lower);
+  CHECK(mixed.function.lower > 0);
+}
+
 TEST_CASE("verify: values at points, and candidate numbers read as the doubles a program printed") {
   const auto S = test::spline(R"({"type":"bspline","degrees":[2],"knots":[[0,0,0,1,1,1]],"points":[[0,0],[1,2],[4,0]]})");
   // B(1/2) = (3/2, 1): exact candidate, then one off by 2^-30.
