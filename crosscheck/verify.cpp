@@ -177,21 +177,31 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
       return fe;
     }
     if (fe.rounds >= options.max_rounds) return fe;
+    // Midpoints of the pieces whose bound is not yet within the factor, every direction.
     const Rational bar = options.factor * fe.lower;
+    std::vector<std::vector<Rational>> X(C.dim());
+    std::size_t after = 1;
+    for (int d = 0; d < C.dim(); ++d) {
+      for (std::size_t k = 0; k < pieces; ++k)
+        if (bar < bound[k]) X[d].push_back((boxes[k][d].first + boxes[k][d].second) / 2);
+      std::sort(X[d].begin(), X[d].end());
+      X[d].erase(std::unique(X[d].begin(), X[d].end()), X[d].end());
+      after *= C.count(d) + X[d].size();
+    }
+    if (after > budget) {
+      fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
+      return fe;
+    }
     bool inserted = false;
     for (int d = 0; d < C.dim(); ++d) {
-      std::vector<Rational> X;
-      for (std::size_t k = 0; k < pieces; ++k)
-        if (bar < bound[k]) X.push_back((boxes[k][d].first + boxes[k][d].second) / 2);
-      std::sort(X.begin(), X.end());
-      X.erase(std::unique(X.begin(), X.end()), X.end());
-      if (X.empty()) continue;
-      if (C.size() / C.count(d) * (C.count(d) + X.size()) > budget) {
-        fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
+      if (X[d].empty()) continue;
+      try {
+        C = refine_knots(C, d, X[d], limits);
+        R = refine_knots(R, d, std::move(X[d]), limits);
+      } catch (const SizeLimitError&) {
+        fe.method += "; stopped at the size limit";
         return fe;
       }
-      C = refine_knots(C, d, X, limits);
-      R = refine_knots(R, d, std::move(X), limits);
       inserted = true;
     }
     if (!inserted) return fe;
@@ -254,9 +264,10 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
     }
     if (fe.rounds >= options.max_rounds) return fe;
     // Refine where the bound is not yet within the factor: midpoints of every non-empty span in
-    // the support of a coefficient above factor * lower, direction by direction.
+    // the support of a coefficient above factor * lower. The spans of every direction are chosen
+    // from this D before any direction is refined (refining changes the indices).
     const Rational bar = options.factor * fe.lower;
-    bool inserted = false;
+    std::vector<std::vector<Rational>> X(D.dim());
     for (int d = 0; d < D.dim(); ++d) {
       const auto& U = D.knots[d];
       const int p = D.degrees[d];
@@ -266,16 +277,20 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
           const std::size_t i = multi_index(D, k)[d];
           for (std::size_t s = i; s < i + static_cast<std::size_t>(p) + 1; ++s) split[s] = 1;
         }
-      std::vector<Rational> X;
       for (std::size_t s = static_cast<std::size_t>(p); s < D.count(d); ++s)
-        if (split[s] && U[s] < U[s + 1]) X.push_back((U[s] + U[s + 1]) / 2);
-      if (X.empty()) continue;
-      if ((D.points.size() / q) / D.count(d) * (D.count(d) + X.size()) > budget) {
-        fe.method += "; stopped at the refinement budget (64x the first difference's coefficients)";
-        return fe;
-      }
+        if (split[s] && U[s] < U[s + 1]) X[d].push_back((U[s] + U[s + 1]) / 2);
+    }
+    std::size_t after = 1;
+    for (int d = 0; d < D.dim(); ++d) after *= D.count(d) + X[d].size();
+    if (after > budget) {
+      fe.method += "; stopped at the refinement budget (64x the first difference's coefficients)";
+      return fe;
+    }
+    bool inserted = false;
+    for (int d = 0; d < D.dim(); ++d) {
+      if (X[d].empty()) continue;
       try {
-        D = refine_knots(D, d, std::move(X), limits);
+        D = refine_knots(D, d, std::move(X[d]), limits);
       } catch (const SizeLimitError&) {
         fe.method += "; stopped at the size limit";
         return fe;

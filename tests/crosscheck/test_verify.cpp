@@ -151,6 +151,35 @@ TEST_CASE("verify: a control point moved by 2^-40 is found, bounded within a fac
   }
 }
 
+TEST_CASE("verify: a planted error in a surface is bounded within the factor, inside its support") {
+  std::mt19937_64 rng(4040);
+  for (int i = 0; i < 4; ++i) {
+    RandomSplineSpec spec;
+    spec.degrees = {2 + static_cast<int>(rng() % 2), 1 + static_cast<int>(rng() % 3)};
+    spec.counts = {static_cast<std::size_t>(spec.degrees[0] + 3 + rng() % 4), static_cast<std::size_t>(spec.degrees[1] + 3 + rng() % 4)};
+    spec.q = 2;
+    spec.dyadic = true;
+    const auto S = random_spline(spec, rng);
+    Operation op = elevate_by(1);
+    op.dir = 1;
+    const auto R = run_operation(op, S, Limits{});
+    BSpline<Rational> C = R[0];
+    const std::size_t n0 = C.count(0), i0 = 1 + rng() % (n0 - 2), i1 = 1 + rng() % (C.count(1) - 2);
+    const Rational eps = Rational(1) / (Integer(1) << 40);
+    C.points[(i1 * n0 + i0) * 2 + rng() % 2] -= eps;
+    const auto rep = verify(op, S, {C});
+    CHECK(rep.function.certified);
+    CHECK(rep.function.within_factor);
+    CHECK(rep.function.upper <= eps);  // the largest coefficient of eps * N_i0 N_i1 is eps at most
+    CHECK(rep.function.upper <= 2 * rep.function.lower);
+    REQUIRE(rep.function.at.size() == 2);
+    CHECK(C.knots[0][i0] <= rep.function.at[0]);
+    CHECK(rep.function.at[0] <= C.knots[0][i0 + C.degrees[0] + 1]);
+    CHECK(C.knots[1][i1] <= rep.function.at[1]);
+    CHECK(rep.function.at[1] <= C.knots[1][i1 + C.degrees[1] + 1]);
+  }
+}
+
 TEST_CASE("verify: rational candidates get a certified bound too, within the factor") {
   // The exact quarter circle (weights 1, 1, 2 on (1,0), (1,1), (0,1)), elevated; the candidate
   // has one weight off by 2^-30.
