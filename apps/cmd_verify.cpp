@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "compose/compose.hpp"
 #include "crosscheck/verify.hpp"
 
 namespace splinex::app {
@@ -47,11 +48,23 @@ std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::strin
   return out;
 }
 
+/// 1 when --max-bits-lost is given and the candidate loses more or its structure differs.
+int verdict_status(const VerifyReport& rep, double max_bits) {
+  if (max_bits < 0) return 0;
+  const Json j = rep.to_json();
+  double worst = 0;
+  for (const char* part : {"control_points", "values"})
+    if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
+  if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
+  return worst > max_bits || rep.structure == "different" ? 1 : 0;
+}
+
 }  // namespace
 
 Commands add_verify(CLI::App& app) {
   struct Options {
-    std::string operation, input, candidate, read_as = "double";
+    std::string operation, input, candidate, read_as = "double", outer, inner;
+    bool expand = false;
     OpOptions op;
     int precision = 53, rounds = 24;
     std::string factor = "2";
@@ -59,10 +72,14 @@ Commands add_verify(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("verify", "judge a result computed elsewhere exactly against the exact reference");
-  c->add_option("operation", o->operation, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse or eval")
+  c->add_option("operation", o->operation,
+                "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, eval or compose (T(S) as one spline)")
       ->required()
-      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval"}));
-  c->add_option("--input", o->input, "the input spline document")->required();
+      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval", "compose"}));
+  c->add_option("--input", o->input, "the input spline document (every operation but compose)");
+  c->add_option("--outer", o->outer, "compose: the outer spline T");
+  c->add_option("--inner", o->inner, "compose: the inner spline S (points in T's parameter space)");
+  c->add_flag("--expand", o->expand, "compose: T's end pieces as polynomials where S leaves T's domain (as compose --expand)");
   c->add_option("--candidate", o->candidate,
                 "the candidate: a spline document, {\"splines\": [...]}, {\"pieces\": [...]}; for eval {\"at\": [[...]], "
                 "\"values\": [[...]]}")
@@ -90,10 +107,24 @@ Commands add_verify(CLI::App& app) {
              vo.max_rounds = o->rounds;
              vo.factor = parse_number(o->factor, "factor");
              if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "give e.g. --factor 2");
-             const auto S = spline_from_json(read_json_file(o->input, ctx.read_limits), ctx.limits, "input");
              Json cand = read_json_file(o->candidate, ctx.read_limits);
              if (o->read_as == "double") cand = candidate_numbers_as_doubles(cand);
              VerifyReport rep;
+             if (o->operation == "compose") {
+               // T(S) as one spline (compose's symbolic and interpolation methods give the same
+               // exact result); Algorithms 1 and 2 (trimmed patches, tiles) are not judged yet.
+               if (o->outer.empty() || o->inner.empty())
+                 throw UsageError("outer", "verify compose needs --outer and --inner", "give both spline documents");
+               const auto T = spline_from_json(read_json_file(o->outer, ctx.read_limits), ctx.limits, "outer");
+               const auto Sin = spline_from_json(read_json_file(o->inner, ctx.read_limits), ctx.limits, "inner");
+               CompositionOptions co;
+               co.expand = o->expand;
+               rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               std::cout << rep.to_json().dump(2) << "\n";
+               return verdict_status(rep, o->max_bits);
+             }
+             if (o->input.empty()) throw UsageError("input", "verify " + o->operation + " needs --input", "give the input spline document");
+             const auto S = spline_from_json(read_json_file(o->input, ctx.read_limits), ctx.limits, "input");
              if (o->operation == "eval") {
                rep = verify_values(S, number_rows(cand, "at"), number_rows(cand, "values"), vo);
              } else {
@@ -103,16 +134,8 @@ Commands add_verify(CLI::App& app) {
                  throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
                rep = verify(make_op(o->operation, op), S, candidate_splines(cand, ctx.limits), vo, ctx.limits);
              }
-             Json j = rep.to_json();
-             std::cout << j.dump(2) << "\n";
-             if (o->max_bits >= 0) {
-               double worst = 0;
-               for (const char* part : {"control_points", "values"})
-                 if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
-               if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
-               if (worst > o->max_bits || rep.structure == "different") return 1;
-             }
-             return 0;
+             std::cout << rep.to_json().dump(2) << "\n";
+             return verdict_status(rep, o->max_bits);
            }}};
 }
 
