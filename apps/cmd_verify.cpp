@@ -5,6 +5,8 @@
 
 #include "apps/command.hpp"
 #include "compose/compose.hpp"
+#include "hybrid/hybrid.hpp"
+#include "io/hybrid_io.hpp"
 #include "crosscheck/verify.hpp"
 
 namespace splinex::app {
@@ -63,7 +65,7 @@ int verdict_status(const VerifyReport& rep, double max_bits) {
 
 Commands add_verify(CLI::App& app) {
   struct Options {
-    std::string operation, input, candidate, read_as = "double", outer, inner;
+    std::string operation, input, candidate, read_as = "double", outer, inner, patch;
     bool expand = false;
     OpOptions op;
     int precision = 53, rounds = 24;
@@ -73,9 +75,12 @@ Commands add_verify(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("verify", "judge a result computed elsewhere exactly against the exact reference");
   c->add_option("operation", o->operation,
-                "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, eval or compose (T(S) as one spline)")
+                "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, eval, compose (T(S) as one spline) or "
+                "hybrid-eval (the hybrid patch's values)")
       ->required()
-      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval", "compose"}));
+      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval", "compose",
+                             "hybrid-eval"}));
+  c->add_option("--patch", o->patch, "hybrid-eval: the hybrid patch document");
   c->add_option("--input", o->input, "the input spline document (every operation but compose)");
   c->add_option("--outer", o->outer, "compose: the outer spline T");
   c->add_option("--inner", o->inner, "compose: the inner spline S (points in T's parameter space)");
@@ -120,6 +125,30 @@ Commands add_verify(CLI::App& app) {
                CompositionOptions co;
                co.expand = o->expand;
                rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               std::cout << rep.to_json().dump(2) << "\n";
+               return verdict_status(rep, o->max_bits);
+             }
+             if (o->operation == "hybrid-eval") {
+               if (o->patch.empty()) throw UsageError("patch", "verify hybrid-eval needs --patch", "give the hybrid patch document");
+               const auto P = hybrid_from_json(read_json_file(o->patch, ctx.read_limits), ctx.limits);
+               // Also the output of `splinex hybrid eval`: {"points": [{"at": [u, v], "point": [...]}, ...]}.
+               if (cand.is_object() && cand.contains("points") && !cand.contains("values")) {
+                 Json at = Json::array(), values = Json::array();
+                 for (const auto& row : cand["points"]) {
+                   if (!row.is_object() || !row.contains("at") || !row.contains("point"))
+                     throw ValidationError("candidate.points", "an entry has no \"at\" or \"point\"", "give {\"at\": [u, v], \"point\": [...]}");
+                   at.push_back(row["at"]);
+                   values.push_back(row["point"]);
+                 }
+                 cand = Json{{"at", at}, {"values", values}};
+               }
+               rep = verify_point_values("hybrid-eval", number_rows(cand, "at"), number_rows(cand, "values"),
+                                         [&](const std::vector<Rational>& x) {
+                                           if (x.size() != 2)
+                                             throw ValidationError("candidate.at", "a hybrid patch point has two parameters", "write [u, v]");
+                                           return hybrid_evaluate(P, Point2<Rational>{x[0], x[1]});
+                                         },
+                                         vo);
                std::cout << rep.to_json().dump(2) << "\n";
                return verdict_status(rep, o->max_bits);
              }

@@ -392,22 +392,24 @@ VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const s
   return verify_splines(op.name(), run_operation(op, input, limits), candidate, options, limits);
 }
 
-VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::vector<Rational>>& at,
-                           const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options) {
+VerifyReport verify_point_values(const std::string& operation, const std::vector<std::vector<Rational>>& at,
+                                 const std::vector<std::vector<Rational>>& candidate_values,
+                                 const std::function<std::vector<Rational>(const std::vector<Rational>&)>& exact_at,
+                                 const VerifyOptions& options) {
   if (at.size() != candidate_values.size())
     throw ValidationError("candidate.values", "has " + std::to_string(candidate_values.size()) + " points for " +
                                                   std::to_string(at.size()) + " parameters",
                           "give one value per parameter");
   VerifyReport rep;
-  rep.operation = "eval";
+  rep.operation = operation;
   rep.precision = options.precision;
   rep.results = at.size();
   rep.function.method = "values at the given parameters (no function-level bound for point values)";
   for (std::size_t i = 0; i < at.size(); ++i) {
     const std::string field = "candidate.values[" + std::to_string(i) + "]";
-    const auto exact = evaluate(S, at[i]);
+    const auto exact = exact_at(at[i]);
     if (candidate_values[i].size() != exact.size())
-      throw ValidationError(field, "has " + std::to_string(candidate_values[i].size()) + " coordinates, the spline's points " +
+      throw ValidationError(field, "has " + std::to_string(candidate_values[i].size()) + " coordinates, the exact value " +
                                        std::to_string(exact.size()),
                             "give a value with as many coordinates as the control points");
     rep.reference_scale = std::max(rep.reference_scale, max_abs(exact));
@@ -424,6 +426,12 @@ VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::ve
     }
   }
   return rep;
+}
+
+VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::vector<Rational>>& at,
+                           const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options) {
+  return verify_point_values("eval", at, candidate_values, [&](const std::vector<Rational>& x) { return evaluate(S, x); },
+                             options);
 }
 
 Json VerifyReport::to_json() const {

@@ -18,6 +18,7 @@
 //    C - R = (C_h R_w - R_h C_w) / (C_w R_w); the numerator's largest Bernstein coefficient over
 //    the denominator's smallest (positive weights) bounds it, refined the same way.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,13 @@ VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const s
 /// Values at points: candidate_values[i] against the exact S(at[i]).
 VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::vector<Rational>>& at,
                            const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options = {});
+
+/// Values at points against any exact evaluator (the hybrid patch's, ...): candidate_values[i]
+/// against exact(at[i]).
+VerifyReport verify_point_values(const std::string& operation, const std::vector<std::vector<Rational>>& at,
+                                 const std::vector<std::vector<Rational>>& candidate_values,
+                                 const std::function<std::vector<Rational>(const std::vector<Rational>&)>& exact,
+                                 const VerifyOptions& options = {});
 
 /// The function-level error of candidate C against reference R (same dimension, point size and
 /// domain; DomainError otherwise).
