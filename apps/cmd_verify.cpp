@@ -53,12 +53,7 @@ std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::strin
 /// 1 when --max-bits-lost is given and the candidate loses more or its structure differs.
 int verdict_status(const VerifyReport& rep, double max_bits) {
   if (max_bits < 0) return 0;
-  const Json j = rep.to_json();
-  double worst = 0;
-  for (const char* part : {"control_points", "values"})
-    if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
-  if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
-  return worst > max_bits || rep.structure == "different" ? 1 : 0;
+  return rep.worst_bits_lost() > max_bits || rep.structure == "different" ? 1 : 0;
 }
 
 }  // namespace

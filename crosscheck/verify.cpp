@@ -108,6 +108,52 @@ int worse(const std::string& s) { return s == "equal" ? 0 : s == "equal after ro
 
 namespace {
 
+/// Indices of the (at most) k largest values, largest first.
+std::vector<std::size_t> largest(const std::vector<Rational>& v, std::size_t k) {
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), 0);
+  k = std::min(k, v.size());
+  std::partial_sort(order.begin(), order.begin() + k, order.end(), [&](std::size_t i, std::size_t j) { return v[j] < v[i]; });
+  order.resize(k);
+  return order;
+}
+
+/// Keeps the largest witnessed |C(x) - R(x)| and where.
+void offer_witness(FunctionError& fe, const std::vector<Rational>& x, const Rational& v) {
+  if (fe.at.empty() || fe.lower < v) {
+    fe.lower = v;
+    fe.at = x;
+  }
+}
+
+/// Inserts X[d] into direction d of every spline in `nets` (they share their knots), unless the
+/// result would exceed `budget` control points or the size limit; false (with the reason in
+/// fe.method) when it stops, or when there is nothing to insert.
+bool refine_within_budget(const std::vector<BSpline<Rational>*>& nets, std::vector<std::vector<Rational>> X,
+                          std::size_t budget, const Limits& limits, FunctionError& fe) {
+  const BSpline<Rational>& first = *nets.front();
+  std::size_t after = 1;
+  bool any = false;
+  for (int d = 0; d < first.dim(); ++d) {
+    after *= first.count(d) + X[d].size();
+    any = any || !X[d].empty();
+  }
+  if (!any) return false;
+  if (after > budget) {
+    fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
+    return false;
+  }
+  try {
+    for (int d = 0; d < first.dim(); ++d)
+      if (!X[d].empty())
+        for (BSpline<Rational>* S : nets) *S = refine_knots(*S, d, X[d], limits);
+  } catch (const SizeLimitError&) {
+    fe.method += "; stopped at the size limit";
+    return false;
+  }
+  return true;
+}
+
 /// One homogeneous coordinate (c < q: w P_c, or P_c for a polynomial spline; c == q: the weight,
 /// 1 for a polynomial spline) of a Bezier piece as a tensor Bernstein polynomial.
 detail::Bern<Rational> homogeneous_coordinate(const BSpline<Rational>& piece, int c) {
@@ -156,21 +202,13 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
     const Rational upper = *std::max_element(bound.begin(), bound.end());
     if (fe.rounds == 0 || upper < fe.upper) fe.upper = upper;
     // Witnesses: the centres of the 8 pieces with the largest bounds.
-    std::vector<std::size_t> order(pieces);
-    std::iota(order.begin(), order.end(), 0);
-    const std::size_t top = std::min<std::size_t>(8, pieces);
-    std::partial_sort(order.begin(), order.begin() + top, order.end(), [&](std::size_t i, std::size_t j) { return bound[j] < bound[i]; });
-    for (std::size_t t = 0; t < top; ++t) {
+    for (const std::size_t k : largest(bound, 8)) {
       std::vector<Rational> x;
-      for (const auto& [lo, hi] : boxes[order[t]]) x.push_back((lo + hi) / 2);
+      for (const auto& [lo, hi] : boxes[k]) x.push_back((lo + hi) / 2);
       std::vector<Rational> diff = evaluate(C, x);
       const auto r = evaluate(R, x);
       for (std::size_t c = 0; c < diff.size(); ++c) diff[c] -= r[c];
-      const Rational v = max_abs(diff);
-      if (fe.at.empty() || fe.lower < v) {
-        fe.lower = v;
-        fe.at = x;
-      }
+      offer_witness(fe, x, max_abs(diff));
     }
     if (fe.upper <= options.factor * fe.lower) {
       fe.within_factor = true;
@@ -180,31 +218,13 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
     // Midpoints of the pieces whose bound is not yet within the factor, every direction.
     const Rational bar = options.factor * fe.lower;
     std::vector<std::vector<Rational>> X(C.dim());
-    std::size_t after = 1;
     for (int d = 0; d < C.dim(); ++d) {
       for (std::size_t k = 0; k < pieces; ++k)
         if (bar < bound[k]) X[d].push_back((boxes[k][d].first + boxes[k][d].second) / 2);
       std::sort(X[d].begin(), X[d].end());
       X[d].erase(std::unique(X[d].begin(), X[d].end()), X[d].end());
-      after *= C.count(d) + X[d].size();
     }
-    if (after > budget) {
-      fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
-      return fe;
-    }
-    bool inserted = false;
-    for (int d = 0; d < C.dim(); ++d) {
-      if (X[d].empty()) continue;
-      try {
-        C = refine_knots(C, d, X[d], limits);
-        R = refine_knots(R, d, std::move(X[d]), limits);
-      } catch (const SizeLimitError&) {
-        fe.method += "; stopped at the size limit";
-        return fe;
-      }
-      inserted = true;
-    }
-    if (!inserted) return fe;
+    if (!refine_within_budget({&C, &R}, std::move(X), budget, limits, fe)) return fe;
   }
 }
 
@@ -244,19 +264,11 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
       return fe;
     }
     // Witnesses: the Greville points of the 8 largest coefficients.
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    const std::size_t top = std::min<std::size_t>(8, n);
-    std::partial_sort(order.begin(), order.begin() + top, order.end(), [&](std::size_t i, std::size_t j) { return a[j] < a[i]; });
-    for (std::size_t t = 0; t < top; ++t) {
-      const auto mi = multi_index(D, order[t]);
+    for (const std::size_t k : largest(a, 8)) {
+      const auto mi = multi_index(D, k);
       std::vector<Rational> x(D.dim());
       for (int d = 0; d < D.dim(); ++d) x[d] = greville(D, d, mi[d]);
-      const Rational v = max_abs(evaluate(D, x));
-      if (fe.at.empty() || fe.lower < v) {
-        fe.lower = v;
-        fe.at = x;
-      }
+      offer_witness(fe, x, max_abs(evaluate(D, x)));
     }
     if (fe.upper <= options.factor * fe.lower) {
       fe.within_factor = true;
@@ -280,24 +292,7 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
       for (std::size_t s = static_cast<std::size_t>(p); s < D.count(d); ++s)
         if (split[s] && U[s] < U[s + 1]) X[d].push_back((U[s] + U[s + 1]) / 2);
     }
-    std::size_t after = 1;
-    for (int d = 0; d < D.dim(); ++d) after *= D.count(d) + X[d].size();
-    if (after > budget) {
-      fe.method += "; stopped at the refinement budget (64x the first difference's coefficients)";
-      return fe;
-    }
-    bool inserted = false;
-    for (int d = 0; d < D.dim(); ++d) {
-      if (X[d].empty()) continue;
-      try {
-        D = refine_knots(D, d, std::move(X[d]), limits);
-      } catch (const SizeLimitError&) {
-        fe.method += "; stopped at the size limit";
-        return fe;
-      }
-      inserted = true;
-    }
-    if (!inserted) return fe;
+    if (!refine_within_budget({&D}, std::move(X), budget, limits, fe)) return fe;
   }
 }
 
@@ -357,13 +352,13 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
           for (std::size_t k = 0; k < C.knots[d].size(); ++k) rep.knots.add(R.knots[d][k], C.knots[d][k]);
     }
   }
-  // The function-level error: the worst pair.
-  bool first = true;
+  // The function-level error: the worst pair; certified and within the factor only if every pair is.
+  bool certified = true, within = true;
   for (std::size_t i = 0; i < candidate.size(); ++i) {
     FunctionError fe;
     try {
       fe = function_error(candidate[i], reference[i], options, limits);
-    } catch (const DomainError& e) {
+    } catch (const DomainError&) {
       rep.structure = "different";
       rep.structure_notes.push_back(std::string(candidate.size() == 1 ? "result" : "result[" + std::to_string(i) + "]") +
                                     ": the domains differ, so the functions are not compared");
@@ -371,19 +366,15 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
       rep.function.method = "not compared: different domains";
       return rep;
     }
-    if (first || rep.function.upper < fe.upper) {
-      const bool certified = first ? fe.certified : (rep.function.certified && fe.certified);
-      const bool within = first ? fe.within_factor : (rep.function.within_factor && fe.within_factor);
-      rep.function = fe;
-      rep.function.certified = certified;
-      rep.function.within_factor = within;
+    certified = certified && fe.certified;
+    within = within && fe.within_factor;
+    if (i == 0 || rep.function.upper < fe.upper) {
+      rep.function = std::move(fe);
       if (candidate.size() > 1) rep.function.method += " (worst of " + std::to_string(candidate.size()) + " results, result " + std::to_string(i) + ")";
-    } else {
-      rep.function.certified = rep.function.certified && fe.certified;
-      rep.function.within_factor = rep.function.within_factor && fe.within_factor;
     }
-    first = false;
   }
+  rep.function.certified = certified;
+  rep.function.within_factor = within;
   return rep;
 }
 
@@ -432,6 +423,15 @@ VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::ve
                            const std::vector<std::vector<Rational>>& candidate_values, const VerifyOptions& options) {
   return verify_point_values("eval", at, candidate_values, [&](const std::vector<Rational>& x) { return evaluate(S, x); },
                              options);
+}
+
+double VerifyReport::worst_bits_lost() const {
+  const Json j = to_json();
+  double worst = 0;
+  for (const char* part : {"control_points", "values"})
+    if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
+  if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
+  return worst;
 }
 
 Json VerifyReport::to_json() const {

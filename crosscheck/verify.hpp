@@ -52,6 +52,8 @@ struct VerifyReport {
   ErrorStat control_points, weights, knots, values;
   FunctionError function;
   Rational reference_scale{0};  // max |reference coefficient| (or value): the function error's scale
+  /// The worst bits lost of the coefficients, the values and the function-level error.
+  double worst_bits_lost() const;
   Json to_json() const;
 };
 

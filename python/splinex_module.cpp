@@ -150,9 +150,7 @@ PyReport to_py(const VerifyReport& r) {
   PyReport p;
   p.structure = r.structure;
   const Json j = r.to_json();
-  for (const char* part : {"control_points", "values"})
-    if (j.contains(part)) p.bits_lost = std::max(p.bits_lost, j[part]["bits_lost"].get<double>());
-  if (j["function"].contains("bits_lost")) p.bits_lost = std::max(p.bits_lost, j["function"]["bits_lost"].get<double>());
+  p.bits_lost = r.worst_bits_lost();
   p.function_upper = fraction(r.function.upper);
   p.function_lower = fraction(r.function.lower);
   p.at = fractions_of(r.function.at);

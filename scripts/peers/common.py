@@ -68,3 +68,25 @@ def cases(count, seed):
         p = 1 + s % 7
         out.append(("ordinary", ordinary_curve(rng, p), ["degree %d, simple dyadic knots" % p]))
     return out
+
+
+def double_inputs(count, seed):
+    """The judges' inputs: each case rounded to double, with one knot u to insert and 9 evaluation
+    points. Returns (inputs, rows): inputs as (index, suite, S, tags, u, xs); rows hold the cases
+    that are not representable in double (knots closer than double can tell apart)."""
+    import random
+    import splinex
+    rng = random.Random(seed)
+    inputs, rows = [], []
+    for index, (suite, S0, tags) in enumerate(cases(count, 1202)):
+        try:
+            S = splinex.validate(rounded(S0))
+        except ValueError as e:
+            rows.append({"seed": index, "suite": suite, "op": "input", "tags": tags,
+                         "failure": "not representable in double: " + str(e)[:80]})
+            continue
+        lo, hi = domain(S)
+        u = float(lo + (hi - lo) * Fraction(rng.randint(1, 999), 1000))
+        xs = [float(lo + (hi - lo) * Fraction(i, 8)) for i in range(9)]
+        inputs.append((index, suite, S, tags, u, xs))
+    return inputs, rows

@@ -11,18 +11,16 @@ on the same input. Writes octave.md (bits lost median / max, structure mismatche
 the worst cases with their structures), octave.json and octave_bits_vs_degree.svg.
 """
 import json
-import random
 import statistics
 import subprocess
 import sys
 import tempfile
-from fractions import Fraction
 from pathlib import Path
 
 import splinex
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import cases as make_cases, domain, rounded, svg  # noqa: E402  (the same input handling and figure)
+from common import double_inputs, svg  # noqa: E402  (the same input handling and figure)
 
 
 def mat(rows):
@@ -36,22 +34,12 @@ def main():
     out = Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     cases = int(sys.argv[2]) if len(sys.argv) == 3 else 200
-    rng = random.Random(20261203)
-    inputs, rows = {}, []
+    inputs, rows = double_inputs(cases, 20261203)
     script = ["pkg load nurbs",
               "function put(fid, tag, v)", "  fprintf(fid, '%s', tag); fprintf(fid, ' %.17g', v); fprintf(fid, '\\n');", "end",
               "args = argv(); fid = fopen(args{1}, 'w');"]
-    for seed, (suite, S0, tags) in enumerate(make_cases(cases, 1202)):
-        try:
-            S = splinex.validate(rounded(S0))
-        except ValueError as e:
-            rows.append({"seed": seed, "suite": suite, "op": "input", "tags": tags, "failure": "not representable in double: " + str(e)[:80]})
-            continue
+    for seed, suite, S, tags, u, xs in inputs:
         p = S["degrees"][0]
-        lo, hi = domain(S)
-        u = float(lo + (hi - lo) * Fraction(rng.randint(1, 999), 1000))
-        xs = [float(lo + (hi - lo) * Fraction(i, 8)) for i in range(9)]
-        inputs[seed] = (suite, S, tags, u, xs)
         c = [list(col) for col in zip(*S["points"])]  # dim x n, as the toolbox wants
         k = S["knots"][0]
         script.append(f"d = {p}; c = {mat(c)}; k = {mat([k])}; u = {u:.17g}; x = {mat([xs])};")
@@ -90,7 +78,7 @@ def main():
         coef = [[float(v) for v in lines[i + 1 + r].split()[1:]] for r in range(nrows)]
         results[(seed, op)] = (knots, coef)
         i += 1 + nrows
-    for seed, (suite, S, tags, u, xs) in inputs.items():
+    for seed, suite, S, tags, u, xs in inputs:
         p = S["degrees"][0]
         for op in ("insert", "elevate", "eval"):
             row = {"seed": seed, "suite": suite, "op": op, "degree": p, "tags": tags}
