@@ -70,11 +70,12 @@ Commands add_verify(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("verify", "judge a result computed elsewhere exactly against the exact reference");
   c->add_option("operation", o->operation,
-                "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, eval, compose (T(S) as one spline) or "
-                "hybrid-eval (the hybrid patch's values)")
+                "insert-knots, refine (insert-knots by A5.4), elevate, extract-bezier, split, reparametrize, reverse, eval, "
+                "compose (--method symbolic|interpolation: T(S) as one spline; trimmed: Algorithm 1's patches; "
+                "tensor: Algorithm 2's tiles) or hybrid-eval (the hybrid patch's values)")
       ->required()
-      ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval", "compose",
-                             "hybrid-eval"}));
+      ->check(CLI::IsMember({"insert-knots", "refine", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval",
+                             "compose", "hybrid-eval"}));
   c->add_option("--patch", o->patch, "hybrid-eval: the hybrid patch document");
   c->add_option("--input", o->input, "the input spline document (every operation but compose)");
   c->add_option("--outer", o->outer, "compose: the outer spline T");
@@ -97,7 +98,10 @@ Commands add_verify(CLI::App& app) {
                                                  "the function-level error) or its structure differs");
   c->add_option("--dir", o->op.dir, "parametric direction (0-based)")->capture_default_str();
   c->add_option("--knots", o->op.knots, "insert-knots: comma-separated knots");
-  c->add_option("--method", o->op.insert_method, "insert-knots: a54|boehm; elevate: auto|a59|blossom (the same exact result)");
+  c->add_option("--method", o->op.insert_method,
+                "insert-knots: a54|boehm; elevate: auto|a59|blossom (the same exact result); compose: the method the candidate "
+                "ran: symbolic|interpolation (one spline), trimmed (Algorithm 1, {\"pieces\": ...}) or tensor (Algorithm 2, "
+                "{\"tiles\": ...})");
   c->add_option("--by", o->op.by, "elevate: amount");
   c->add_option("--at", o->op.at, "split: parameter");
   c->add_option("--interval", o->op.interval, "reparametrize: \"lo,hi\"");
@@ -111,15 +115,24 @@ Commands add_verify(CLI::App& app) {
              if (o->read_as == "double") cand = candidate_numbers_as_doubles(cand);
              VerifyReport rep;
              if (o->operation == "compose") {
-               // T(S) as one spline (compose's symbolic and interpolation methods give the same
-               // exact result); Algorithms 1 and 2 (trimmed patches, tiles) are not judged yet.
                if (o->outer.empty() || o->inner.empty())
                  throw UsageError("outer", "verify compose needs --outer and --inner", "give both spline documents");
                const auto T = spline_from_json(read_json_file(o->outer, ctx.read_limits), ctx.limits, "outer");
                const auto Sin = spline_from_json(read_json_file(o->inner, ctx.read_limits), ctx.limits, "inner");
-               CompositionOptions co;
-               co.expand = o->expand;
-               rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               const std::string method = o->op.insert_method == "a54" ? "symbolic" : o->op.insert_method;
+               if (method != "symbolic" && method != "interpolation" && method != "trimmed" && method != "tensor")
+                 throw UsageError("method", "verify compose --method " + method + " is not a composition method",
+                                  "give symbolic, interpolation, trimmed or tensor");
+               if (method == "trimmed") {
+                 rep = verify_trimmed_composition(T, Sin, cand, vo, ctx.limits);
+               } else if (method == "tensor") {
+                 rep = verify_tensor_composition(T, Sin, cand, vo, ctx.limits);
+               } else {
+                 // T(S) as one spline: the symbolic and interpolation methods give the same exact result.
+                 CompositionOptions co;
+                 co.expand = o->expand;
+                 rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               }
                std::cout << rep.to_json().dump(2) << "\n";
                return verdict_status(rep, o->max_bits);
              }
@@ -153,10 +166,15 @@ Commands add_verify(CLI::App& app) {
                rep = verify_values(S, number_rows(cand, "at"), number_rows(cand, "values"), vo);
              } else {
                OpOptions op = o->op;
+               std::string kind = o->operation;
+               if (kind == "refine") {  // knot refinement: insert-knots by A5.4
+                 kind = "insert-knots";
+                 op.insert_method = "a54";
+               }
                if (o->operation == "elevate") op.elevate_method = op.insert_method == "a54" ? "auto" : op.insert_method;
-               if (o->operation == "insert-knots" && op.knots.empty())
-                 throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
-               rep = verify(make_op(o->operation, op), S, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               if (kind == "insert-knots" && op.knots.empty())
+                 throw UsageError("knots", o->operation + " needs --knots", "add --knots \"k1,k2,...\"");
+               rep = verify(make_op(kind, op), S, candidate_splines(cand, ctx.limits), vo, ctx.limits);
              }
              std::cout << rep.to_json().dump(2) << "\n";
              return verdict_status(rep, o->max_bits);

@@ -16,13 +16,6 @@ namespace splinex {
 
 namespace {
 
-/// x rounded to nearest at `precision` significand bits (53: double), as the rational it is.
-Rational rounded(const Rational& x, int precision) {
-  if (precision == 53) return exact_from_double(to_double(x));
-  Mpfr::Precision scope(precision);
-  return ArithTraits<Mpfr>::to_rational(ArithTraits<Mpfr>::from_rational(x));
-}
-
 std::string list(const std::vector<int>& v) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
@@ -90,7 +83,7 @@ std::string compare_structure(const BSpline<Rational>& C, const BSpline<Rational
     }
     if (A == B) continue;
     for (std::size_t i = 0; i < A.size(); ++i)
-      if (!(A[i] == B[i]) && !(A[i] == rounded(B[i], precision))) {
+      if (!(A[i] == B[i]) && !(A[i] == rounded_to_precision(B[i], precision))) {
         notes.push_back(at + "[" + std::to_string(i) + "] is " + to_fraction_string(A[i]) + ", the reference " +
                         to_fraction_string(B[i]) + " (not its rounding)");
         return "different";
@@ -103,6 +96,12 @@ std::string compare_structure(const BSpline<Rational>& C, const BSpline<Rational
 int worse(const std::string& s) { return s == "equal" ? 0 : s == "equal after rounding" ? 1 : 2; }
 
 }  // namespace
+
+Rational rounded_to_precision(const Rational& x, int precision) {
+  if (precision == 53) return exact_from_double(to_double(x));
+  Mpfr::Precision scope(precision);
+  return ArithTraits<Mpfr>::to_rational(ArithTraits<Mpfr>::from_rational(x));
+}
 
 // ---- the function-level error --------------------------------------------------------------------
 
@@ -140,7 +139,7 @@ bool refine_within_budget(const std::vector<BSpline<Rational>*>& nets, std::vect
   }
   if (!any) return false;
   if (after > budget) {
-    fe.method += "; stopped at the refinement budget (64x the first common refinement's coefficients)";
+    fe.method += "; stopped at the refinement budget";
     return false;
   }
   try {
@@ -178,7 +177,7 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
   fe.certified = true;
   fe.method = "rational: per Bezier piece, max |Bernstein coefficient| of (C_h R_w - R_h C_w) over min of C_w R_w, "
               "refined at span midpoints";
-  const std::size_t budget = 64 * C.size() + 4096;
+  const std::size_t budget = options.budget * (C.size() + 64);
   const int q = C.q;
   for (fe.rounds = 0;; ++fe.rounds) {
     const BezierForm<Rational> FC = bezier_form(C, limits), FR = bezier_form(R, limits);
@@ -240,9 +239,9 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
   fe.certified = true;
   fe.method = "max |coefficient| of the exact difference on a common refinement (convex hull), refined at span midpoints";
   const std::size_t q = D.q;
-  // Refinement budget: 64 times the first difference's coefficients (about three rounds of global
-  // halving of a surface, six of a curve). Refinement is local where the error is local.
-  const std::size_t budget = 64 * (D.points.size() / q) + 4096;
+  // Refinement budget: by default 64 times the first difference's coefficients (about three rounds
+  // of global halving of a surface, six of a curve). Refinement is local where the error is local.
+  const std::size_t budget = options.budget * (D.points.size() / q + 64);
   auto coef = [&](std::size_t k) {
     Rational m(0);
     for (std::size_t c = 0; c < q; ++c) m = std::max(m, Rational(abs(D.points[k * q + c])));
@@ -444,9 +443,17 @@ Json VerifyReport::to_json() const {
   if (coefficients_compared) {
     j["control_points"] = control_points.to_json(precision);
     if (weights.count) j["weights"] = weights.to_json(precision);
-    j["knots"] = knots.to_json(precision);
+    if (knots.count) j["knots"] = knots.to_json(precision);
   }
   if (values.count) j["values"] = values.to_json(precision);
+  if (points_checked)
+    j["sampled"] = Json{{"points", points_checked},
+                        {"unclaimed", points_unclaimed},
+                        {"misassigned", points_misassigned},
+                        {"zero_weight", points_failed},
+                        {"note", "values: checked at " + std::to_string(points_checked) + " points (a sample, not a bound)"}};
+  if (area_compared) j["area_moved"] = Json{{"value", to_double(area_moved)}, {"exact", to_fraction_string(area_moved)}};
+  if (!parts.empty()) j["parts"] = parts;
   Json f = function.to_json();
   // Relative to the largest reference coefficient (values: the largest exact value), and as bits
   // lost at the candidate's precision, as the coefficient errors are.

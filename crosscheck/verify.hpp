@@ -30,6 +30,7 @@ struct VerifyOptions {
   int precision = 53;         // the candidate's significand bits, for bits lost (53: double)
   Rational factor{2};         // stop refining when upper <= factor * lower
   int max_rounds = 24;        // refinement rounds of the function-level bound
+  std::size_t budget = 64;    // refinement stops before (budget x (first coefficients + 64)) coefficients
 };
 
 struct FunctionError {
@@ -52,6 +53,15 @@ struct VerifyReport {
   ErrorStat control_points, weights, knots, values;
   FunctionError function;
   Rational reference_scale{0};  // max |reference coefficient| (or value): the function error's scale
+  // Sampled checks (compositions): values of the candidate's parts at points against the exact
+  // T(S(r)) - `values` holds the errors; a sampled claim, "checked at N points", not a bound.
+  std::size_t points_checked = 0;
+  std::size_t points_unclaimed = 0;    // no candidate part claims the point (or a tile leaves S's domain)
+  std::size_t points_misassigned = 0;  // claimed by a part of another cell of T than the true one
+  std::size_t points_failed = 0;       // a homogeneous part's weight is 0 there
+  bool area_compared = false;          // tiles against the exact tiling:
+  Rational area_moved{0};              // sum over regions of |candidate tiles' area - exact area|
+  Json parts = Json::array();          // per trimmed patch or tile: what it was paired with, its error
   /// The worst bits lost of the coefficients, the values and the function-level error.
   double worst_bits_lost() const;
   Json to_json() const;
@@ -78,6 +88,25 @@ VerifyReport verify_point_values(const std::string& operation, const std::vector
                                  const std::vector<std::vector<Rational>>& candidate_values,
                                  const std::function<std::vector<Rational>(const std::vector<Rational>&)>& exact,
                                  const VerifyOptions& options = {});
+
+/// Algorithm 1 (papers/000): the candidate's trimmed patches of T(S), in the JSON of `splinex
+/// compose --method trimmed` ({"pieces": [{"inner_box", "outer_cell", "region", "homogeneous",
+/// "patch"}]}), paired with the exact ones by inner box and outer cell: regions compared, patches
+/// compared as functions on their boxes (certified; the box contains the region), and sampled: at a
+/// grid of S's domain every candidate patch that claims the point against T(S(r)).
+VerifyReport verify_trimmed_composition(const BSpline<Rational>& T, const BSpline<Rational>& S, const Json& candidate,
+                                        const VerifyOptions& options = {}, const Limits& limits = {});
+
+/// Algorithm 2: the candidate's tiles ({"tiles": [{"inner_box", "outer_cell", "tile",
+/// "coons_patch", "homogeneous", "patch"}]}, as `splinex compose --method tensor` writes them).
+/// Each tile's patch against the exact T_j^e(S_i(Q)) of its own Coons patch Q (certified); where
+/// every trimming curve is straight, the tiling against the exact one (chains, area moved between
+/// regions, exact); and sampled: R(x, l) against T(S(Q(x, l))) in the true region of Q(x, l).
+VerifyReport verify_tensor_composition(const BSpline<Rational>& T, const BSpline<Rational>& S, const Json& candidate,
+                                       const VerifyOptions& options = {}, const Limits& limits = {});
+
+/// x rounded to nearest at `precision` significand bits (53: double), as the rational it is.
+Rational rounded_to_precision(const Rational& x, int precision);
 
 /// The function-level error of candidate C against reference R (same dimension, point size and
 /// domain; DomainError otherwise).
