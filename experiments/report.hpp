@@ -8,6 +8,7 @@ namespace splinex {
 struct ReportOptions {
   std::string out_dir = "results";
   bool full = false;  // the long sweep: larger cases, more precisions, longer refinements
+  std::string peers_dir;  // the peers' judged results (scripts/run.sh peers); empty: not included
 };
 
 /// Returns the process exit status (0 when every proof held and every run finished).

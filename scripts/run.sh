@@ -5,7 +5,8 @@
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
 #   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
 #   scripts/run.sh bench     every kernel benchmark, then the ratio table bench/results/kernel.md (+ .json)
-#   scripts/run.sh peers     SciPy's and Octave NURBS's results judged by splinex verify: results/peers/
+#   scripts/run.sh peers     SciPy's, Octave NURBS's and OpenCASCADE's results judged by splinex verify:
+#                            results/peers/, then the report with them: results/report.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-test}
@@ -13,8 +14,8 @@ extra_packages=()
 [[ $what == fuzz ]] && extra_packages=(clang libclang-rt-14-dev)
 # The peers the kernel is benchmarked against (bench/bench_kernel.cpp): SISL and OpenCASCADE.
 [[ $what == bench ]] && extra_packages=(libsisl-dev libocct-foundation-dev libocct-modeling-data-dev)
-# The peers whose results `verify` judges (scripts/peers/): SciPy and the Octave NURBS toolbox.
-[[ $what == peers ]] && extra_packages=(python3-scipy octave-nurbs)
+# The peers whose results `verify` judges (scripts/peers/): SciPy, the Octave NURBS toolbox, OpenCASCADE.
+[[ $what == peers ]] && extra_packages=(python3-scipy octave-nurbs libocct-foundation-dev libocct-modeling-data-dev)
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3
@@ -63,8 +64,10 @@ case "$what" in
       --compose build/bench_compose.json --hybrid build/bench_hybrid.json ;;
   peers)
     cmake --preset default >&2
-    cmake --build --preset default --target splinex_python
+    cmake --build --preset default --target splinex splinex_python occt_peer
     PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_scipy.py results/peers "${2:-200}"
-    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_octave.py results/peers "${2:-200}" ;;
+    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_octave.py results/peers "${2:-200}"
+    PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_occt.py results/peers "${2:-200}" build/bin/occt_peer
+    build/bin/splinex report --out results --peers results/peers ;;
   *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]|peers [cases]]" >&2; exit 2 ;;
 esac

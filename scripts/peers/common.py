@@ -1,4 +1,5 @@
 """What the peer judges share: the input as a double program gets it, the domain, the figure."""
+import math
 from fractions import Fraction
 
 
@@ -16,8 +17,9 @@ def domain(S):
     return U[p], U[n]
 
 
-def svg(series, title):
-    """A small line plot of bits lost against degree (one series per operation)."""
+def svg(series, title, xlabel="degree", points=False):
+    """A small plot of bits lost against x (one series per operation): lines through the worst per
+    degree, or with points=True a scatter (x: log2 of the smallest knot spacing)."""
     W, H, L, B = 560, 320, 50, 40
     xs = [x for pts in series.values() for x, _ in pts] or [0, 1]
     x0, x1 = min(xs), max(max(xs), min(xs) + 1)
@@ -27,20 +29,87 @@ def svg(series, title):
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="11">',
            f'<text x="{W/2}" y="16" text-anchor="middle" font-size="13">{title}</text>',
            f'<line x1="{L}" y1="{H-B}" x2="{W-20}" y2="{H-B}" stroke="black"/><line x1="{L}" y1="{H-B}" x2="{L}" y2="30" stroke="black"/>',
-           f'<text x="{W/2}" y="{H-8}" text-anchor="middle">degree</text>',
-           f'<text x="12" y="{H/2}" transform="rotate(-90 12 {H/2})" text-anchor="middle">bits lost (worst, of 53)</text>']
-    for d in range(int(x0), int(x1) + 1):
+           f'<text x="{W/2}" y="{H-8}" text-anchor="middle">{xlabel}</text>',
+           f'<text x="12" y="{H/2}" transform="rotate(-90 12 {H/2})" text-anchor="middle">bits lost (of 53)</text>']
+    step = max(1, int((x1 - x0) // 12))
+    for d in range(int(math.floor(x0)), int(math.ceil(x1)) + 1, step):
         out.append(f'<text x="{sx(d)}" y="{H-B+14}" text-anchor="middle">{d}</text>')
     for y in range(0, int(y1) + 1, 10):
         out.append(f'<text x="{L-6}" y="{sy(y)+4}" text-anchor="end">{y}</text>')
     colors = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"]
     for i, (name, pts) in enumerate(sorted(series.items())):
-        pts = sorted(pts)
-        path = " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y in pts)
-        out.append(f'<polyline fill="none" stroke="{colors[i % 4]}" stroke-width="2" points="{path}"/>')
-        out.append(f'<text x="{W-150}" y="{40+14*i}" fill="{colors[i % 4]}">{name}</text>')
+        col = colors[i % 4]
+        if points:
+            out += [f'<circle cx="{sx(x):.1f}" cy="{sy(y):.1f}" r="2.5" fill="{col}" fill-opacity="0.6"/>' for x, y in pts]
+        else:
+            path = " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y in sorted(pts))
+            out.append(f'<polyline fill="none" stroke="{col}" stroke-width="2" points="{path}"/>')
+        out.append(f'<text x="{W-150}" y="{40+14*i}" fill="{col}">{name}</text>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
+
+
+def min_gap_log2(S):
+    """log2 of the smallest positive spacing of distinct knots (0 for a single span on [0, 1])."""
+    U = sorted(set(S["knots"][0]))
+    gaps = [b - a for a, b in zip(U, U[1:]) if b > a]
+    return math.log2(min(gaps)) if gaps else 0.0
+
+
+def judged_row(seed, suite, op, S, tags):
+    return {"seed": seed, "suite": suite, "op": op, "degree": S["degrees"][0], "tags": tags,
+            "min_gap_log2": round(min_gap_log2(S), 3)}
+
+
+def verify_into(row, rep):
+    row.update({"structure": rep.structure, "bits_lost": rep.bits_lost, "certified": rep.certified,
+                "function_upper": float(rep.function_upper)})
+    notes = rep.report.get("structure_notes", [])
+    if rep.structure == "different" and notes:
+        row["structure_note"] = "; ".join(notes)[:160]
+
+
+def write_results(out, name, title, intro, rows, ops, cases, label):
+    """The peer's table (per suite and operation: judged, bits lost median and max, cases above 10
+    bits, structure differences, failures), the worst cases and failures, and two figures: worst
+    bits lost by degree (ordinary curves) and every judged case's bits lost against the smallest
+    knot spacing. Returns the markdown lines."""
+    import statistics
+    md = [f"# {title}", "", intro, "",
+          "| cases | operation | judged | bits lost, median | bits lost, max | cases above 10 bits | structure differs | failures |",
+          "|---|---|---|---|---|---|---|---|"]
+    by_degree, by_gap = {}, {}
+    for suite in ("ordinary", "structured"):
+        for op in ops:
+            ok = [r for r in rows if r["suite"] == suite and r["op"] == op and "bits_lost" in r]
+            fails = [r for r in rows if r["suite"] == suite and r["op"] == op and "failure" in r]
+            bits = [r["bits_lost"] for r in ok]
+            md.append(f"| {suite} | {op} | {len(ok)} | {statistics.median(bits) if bits else 0:.3g} | "
+                      f"{max(bits) if bits else 0:.3g} | {sum(b > 10 for b in bits)} | "
+                      f"{sum(r['structure'] == 'different' for r in ok)} | {len(fails)} |")
+            if suite == "ordinary":
+                worst = {}
+                for r in ok:
+                    worst[r["degree"]] = max(worst.get(r["degree"], 0), r["bits_lost"])
+                by_degree[op] = sorted(worst.items())
+            by_gap.setdefault(op, []).extend((r["min_gap_log2"], r["bits_lost"]) for r in ok)
+    md += ["", "Worst judged cases (first 15), then failures (first 15):", ""]
+    judged = sorted([r for r in rows if "bits_lost" in r and r["bits_lost"] > 10], key=lambda r: -r["bits_lost"])
+    failed = [r for r in rows if r["op"] != "input" and "failure" in r]
+    for r in judged[:15] + failed[:15]:
+        what = r.get("failure") or (f"{r['bits_lost']:.1f} bits lost, structure {r['structure']}"
+                                    + (f" ({r['structure_note']})" if "structure_note" in r else ""))
+        md.append(f"- {r['suite']} case {r['seed']}, {r['op']}, degree {r['degree']}, structures {', '.join(r['tags']) or '-'}: {what}")
+    if not judged and not failed:
+        md.append("- none")
+    not_double = sum(r["op"] == "input" for r in rows)
+    md += ["", f"{not_double} of {cases} inputs are not representable in double and were not handed over.", "",
+           f"![bits lost vs degree]({name}_bits_vs_degree.svg) ![bits lost vs knot spacing]({name}_bits_vs_spacing.svg)", ""]
+    (out / f"{name}.md").write_text("\n".join(md))
+    (out / f"{name}_bits_vs_degree.svg").write_text(svg(by_degree, f"{label}, ordinary curves: worst bits lost by degree"))
+    (out / f"{name}_bits_vs_spacing.svg").write_text(
+        svg(by_gap, f"{label}: bits lost against the smallest knot spacing", "log2 of the smallest knot spacing", points=True))
+    return md
 
 
 def ordinary_curve(rng, p):

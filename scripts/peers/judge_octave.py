@@ -8,10 +8,9 @@ Debian's octave-nurbs (the spline layer under GeoPDEs): bspkntins (one knot), bs
 input Octave gets), all cases in one Octave run. Numbers cross as text with 17 significant digits,
 which reads back to the same double. Every result goes to splinex.verify against the exact result
 on the same input. Writes octave.md (bits lost median / max, structure mismatches, failures, and
-the worst cases with their structures), octave.json and octave_bits_vs_degree.svg.
+the worst cases with their structures), octave.json, octave_bits_vs_degree.svg and octave_bits_vs_spacing.svg.
 """
 import json
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -20,7 +19,7 @@ from pathlib import Path
 import splinex
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import double_inputs, svg  # noqa: E402  (the same input handling and figure)
+from common import double_inputs, judged_row, verify_into, write_results  # noqa: E402  (the same input handling and figure)
 
 
 def mat(rows):
@@ -81,7 +80,7 @@ def main():
     for seed, suite, S, tags, u, xs in inputs:
         p = S["degrees"][0]
         for op in ("insert", "elevate", "eval"):
-            row = {"seed": seed, "suite": suite, "op": op, "degree": p, "tags": tags}
+            row = judged_row(seed, suite, op, S, tags)
             r = results.get((seed, op))
             try:
                 if r is None:
@@ -96,46 +95,19 @@ def main():
                     cand = {"degrees": [p + (op == "elevate")], "knots": [knots], "points": [list(v) for v in zip(*coef)]}
                     rep = (splinex.verify("insert-knots", S, cand, knots=[u]) if op == "insert"
                            else splinex.verify("elevate", S, cand, by=1))
-                row.update({"structure": rep.structure, "bits_lost": rep.bits_lost, "certified": rep.certified,
-                            "function_upper": float(rep.function_upper)})
+                verify_into(row, rep)
             except Exception as e:
                 row["failure"] = f"{type(e).__name__}: {str(e)[:120]}"
             rows.append(row)
     (out / "octave.json").write_text(json.dumps({"octave": version, "cases": cases, "rows": rows}, indent=1) + "\n")
-    md = [f"# The Octave NURBS toolbox judged exactly by splinex ({version}, Debian octave-nurbs)", "",
-          f"{cases} curves of splinex's structured generator (C^-1 knots, unclamped ends, degree 0, single spans, "
-          f"knots 2^-60 apart, shifted domains) and {cases} ordinary clamped curves of degree 1..7 with simple knots at "
-          "dyadic positions k/1024 (exact in double), all rounded to double; `bspkntins` (one knot), `bspdegelev` "
-          "(degree + 1) and `bspeval` (9 points), each judged by `splinex.verify` against the exact result on the same "
-          "input. Bits lost: the worst of the coefficient (or value) error and the certified function-level bound, "
-          "relative to the largest reference coefficient (or value), of 53.", "",
-          "| cases | operation | judged | bits lost, median | bits lost, max | cases above 10 bits | structure differs | failures |",
-          "|---|---|---|---|---|---|---|---|"]
-    series = {}
-    for suite in ("ordinary", "structured"):
-        for op in ("insert", "elevate", "eval"):
-            ok = [r for r in rows if r["suite"] == suite and r["op"] == op and "bits_lost" in r]
-            fails = [r for r in rows if r["suite"] == suite and r["op"] == op and "failure" in r]
-            bits = [r["bits_lost"] for r in ok]
-            md.append(f"| {suite} | {op} | {len(ok)} | {statistics.median(bits) if bits else 0:.3g} | "
-                      f"{max(bits) if bits else 0:.3g} | {sum(b > 10 for b in bits)} | "
-                      f"{sum(r['structure'] == 'different' for r in ok)} | {len(fails)} |")
-            if suite == "ordinary":
-                worst = {}
-                for r in ok:
-                    worst[r["degree"]] = max(worst.get(r["degree"], 0), r["bits_lost"])
-                series[op] = sorted(worst.items())
-    md += ["", "Worst judged cases (first 15), then failures (first 15):", ""]
-    judged = sorted([r for r in rows if "bits_lost" in r and r["bits_lost"] > 10], key=lambda r: -r["bits_lost"])
-    failed = [r for r in rows if r["op"] != "input" and "failure" in r]
-    for r in judged[:15] + failed[:15]:
-        what = r.get("failure") or f"{r['bits_lost']:.1f} bits lost, structure {r['structure']}"
-        md.append(f"- {r['suite']} case {r['seed']}, {r['op']}, degree {r['degree']}, structures {', '.join(r['tags']) or '-'}: {what}")
-    not_double = sum(r["op"] == "input" for r in rows)
-    md += ["", f"{not_double} of {cases} inputs are not representable in double and were not given to Octave.", "",
-           "![bits lost vs degree](octave_bits_vs_degree.svg)", ""]
-    (out / "octave.md").write_text("\n".join(md))
-    (out / "octave_bits_vs_degree.svg").write_text(svg(series, "Octave NURBS toolbox, ordinary curves: worst bits lost by degree"))
+    md = write_results(out, "octave", f"The Octave NURBS toolbox judged exactly by splinex ({version}, Debian octave-nurbs)",
+                       f"{cases} curves of splinex's structured generator (C^-1 knots, unclamped ends, degree 0, single "
+                       f"spans, knots 2^-60 apart, shifted domains) and {cases} ordinary clamped curves of degree 1..7 with "
+                       "simple knots at dyadic positions k/1024 (exact in double), all rounded to double; `bspkntins` (one "
+                       "knot), `bspdegelev` (degree + 1) and `bspeval` (9 points), each judged by `splinex.verify` against "
+                       "the exact result on the same input. Bits lost: the worst of the coefficient (or value) error and "
+                       "the certified function-level bound, relative to the largest reference coefficient (or value), of 53.",
+                       rows, ("insert", "elevate", "eval"), cases, "Octave NURBS toolbox")
     print("\n".join(md[:10]))
     return 0
 

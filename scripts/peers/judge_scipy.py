@@ -10,12 +10,11 @@ each case rounded to double (the input SciPy gets, so SciPy is judged on its own
   - eval:   scipy.interpolate.BSpline(t, c, k)(x) at 9 points of the domain.
 Every result goes to splinex.verify against the exact result on the same (rounded) input. Writes
 scipy.md (the table: bits lost median / max, structure mismatches, failures), scipy.json (every
-case) and scipy_bits_vs_degree.svg. Debian's python3-scipy lives in /usr/lib/python3/dist-packages;
+case), scipy_bits_vs_degree.svg and scipy_bits_vs_spacing.svg. Debian's python3-scipy lives in /usr/lib/python3/dist-packages;
 that folder is added to the path when another interpreter runs this script.
 """
 import json
 import math
-import statistics
 import sys
 from pathlib import Path
 
@@ -30,7 +29,7 @@ import numpy as np
 from scipy.interpolate import BSpline, insert
 
 import splinex
-from common import double_inputs, svg
+from common import double_inputs, judged_row, verify_into, write_results
 
 
 def scipy_insert(S, u):
@@ -63,9 +62,8 @@ def main():
     cases = int(sys.argv[2]) if len(sys.argv) == 3 else 200
     inputs, rows = double_inputs(cases, 20261202)
     for seed, suite, S, tags, u, xs in inputs:
-        p = S["degrees"][0]
         for op in ("insert", "eval"):
-            row = {"seed": seed, "suite": suite, "op": op, "degree": p, "tags": tags}
+            row = judged_row(seed, suite, op, S, tags)
             try:
                 if op == "insert":
                     cand = scipy_insert(S, u)
@@ -75,46 +73,19 @@ def main():
                     if any(not math.isfinite(v) for r in vals for v in r):
                         raise ArithmeticError("SciPy returned NaN/inf")
                     rep = splinex.verify("eval", S, {"at": [[x] for x in xs], "values": vals})
-                row.update({"structure": rep.structure, "bits_lost": rep.bits_lost, "certified": rep.certified,
-                            "function_upper": float(rep.function_upper)})
+                verify_into(row, rep)
             except Exception as e:  # SciPy refused or crashed on a legal input: a finding
                 row["failure"] = f"{type(e).__name__}: {str(e)[:100]}"
             rows.append(row)
     rows.sort(key=lambda r: r["seed"])  # stable: by case, the unrepresentable inputs in their place
     (out / "scipy.json").write_text(json.dumps({"scipy": scipy.__version__, "cases": cases, "rows": rows}, indent=1) + "\n")
-    md = [f"# SciPy {scipy.__version__} judged exactly by splinex", "",
-          f"{cases} curves of splinex's structured generator and {cases} ordinary clamped curves (degree 1..7, simple "
-          "dyadic knots), rounded to double; one knot inserted "
-          "(`scipy.interpolate.insert`, per coordinate) and values at 9 points (`BSpline.__call__`), each judged by "
-          "`splinex.verify` against the exact result on the same input. Bits lost: the worst of the coefficient "
-          "(or value) error and the certified function-level bound, relative to the largest reference coefficient "
-          "(or value), of 53.", "",
-          "| cases | operation | judged | bits lost, median | bits lost, max | structure differs | failures |",
-          "|---|---|---|---|---|---|---|"]
-    series = {}
-    for suite in ("ordinary", "structured"):
-        for op in ("insert", "eval"):
-            ok = [r for r in rows if r["suite"] == suite and r["op"] == op and "bits_lost" in r]
-            fails = [r for r in rows if r["suite"] == suite and r["op"] == op and "failure" in r]
-            bits = [r["bits_lost"] for r in ok]
-            md.append(f"| {suite} | {op} | {len(ok)} | {statistics.median(bits) if bits else 0:.3g} | "
-                      f"{max(bits) if bits else 0:.3g} | {sum(r['structure'] == 'different' for r in ok)} | {len(fails)} |")
-            worst = series.setdefault(op, {})
-            for r in ok:
-                worst[r["degree"]] = max(worst.get(r["degree"], 0), r["bits_lost"])
-    series = {op: sorted(w.items()) for op, w in series.items()}
-    md += ["", "Failures and structure differences (first 20):", ""]
-    shown = 0
-    for r in rows:
-        if shown < 20 and ("failure" in r or r.get("structure") == "different"):
-            md.append(f"- {r['suite']} case {r['seed']}, {r['op']}, structures {', '.join(r['tags']) or '-'}: "
-                      f"{r.get('failure', 'structure differs')}")
-            shown += 1
-    not_double = sum(r["op"] == "input" for r in rows)
-    md += ["", f"{not_double} of {cases} inputs are not representable in double (knots closer than double can tell apart) "
-               "and were not given to SciPy.", "", "![bits lost vs degree](scipy_bits_vs_degree.svg)", ""]
-    (out / "scipy.md").write_text("\n".join(md))
-    (out / "scipy_bits_vs_degree.svg").write_text(svg(series, f"SciPy {scipy.__version__}: worst bits lost by degree"))
+    md = write_results(out, "scipy", f"SciPy {scipy.__version__} judged exactly by splinex",
+                       f"{cases} curves of splinex's structured generator and {cases} ordinary clamped curves (degree 1..7, "
+                       "simple dyadic knots), rounded to double; one knot inserted (`scipy.interpolate.insert`, per "
+                       "coordinate) and values at 9 points (`BSpline.__call__`), each judged by `splinex.verify` against "
+                       "the exact result on the same input. Bits lost: the worst of the coefficient (or value) error and "
+                       "the certified function-level bound, relative to the largest reference coefficient (or value), of 53.",
+                       rows, ("insert", "eval"), cases, f"SciPy {scipy.__version__}")
     print("\n".join(md[:10]))
     return 0
 

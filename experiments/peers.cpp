@@ -1,0 +1,51 @@
+// Report section `peers`: the peers' results judged by verify (scripts/peers/judge_*.py, run by
+// `scripts/run.sh peers`), included from the folder given with `splinex report --peers DIR`. The
+// peers run outside this process (Python, Octave, OpenCASCADE); the section copies their tables
+// and figures into the report and says where they came from, or that they were not run.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/section.hpp"
+#include "experiments/svg_plot.hpp"
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+void peers_section(ReportContext& ctx) {
+  namespace fs = std::filesystem;
+  std::ostringstream md;
+  md << "## Peers judged exactly (splinex verify)\n\n";
+  const std::string& dir = ctx.options.peers_dir;
+  if (dir.empty()) {
+    md << "Not included in this run. `scripts/run.sh peers` judges SciPy, the Octave NURBS toolbox and OpenCASCADE "
+          "on the structured and ordinary cases and writes `results/peers/`; `splinex report --peers results/peers` "
+          "includes their tables and figures here (docs/verify.md holds the last measured tables).\n\n";
+    ctx.markdown["peers"] = md.str();
+    return;
+  }
+  if (!fs::is_directory(dir)) throw UsageError("peers", dir + " is not a folder", "give the folder scripts/run.sh peers wrote");
+  ctx.progress("peers from " + dir);
+  int found = 0;
+  for (const char* name : {"scipy", "octave", "occt"}) {
+    const fs::path table = fs::path(dir) / (std::string(name) + ".md");
+    if (!fs::exists(table)) {
+      md << "- " << name << ": no results in " << dir << "\n\n";
+      continue;
+    }
+    ++found;
+    std::ifstream in(table);
+    std::string line;
+    while (std::getline(in, line)) md << (line.rfind("# ", 0) == 0 ? "##" : "") << line << "\n";  // titles one level down
+    md << "\n";
+    for (const char* fig : {"_bits_vs_degree.svg", "_bits_vs_spacing.svg"}) {
+      const fs::path src = fs::path(dir) / (std::string(name) + fig);
+      if (fs::exists(src) && fs::path(ctx.options.out_dir) != fs::path(dir))
+        fs::copy_file(src, fs::path(ctx.options.out_dir) / src.filename(), fs::copy_options::overwrite_existing);
+    }
+  }
+  if (found == 0) throw UsageError("peers", dir + " holds no scipy.md, octave.md or occt.md", "run scripts/run.sh peers first");
+  ctx.markdown["peers"] = md.str();
+}
+
+}  // namespace splinex
