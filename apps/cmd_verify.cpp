@@ -1,5 +1,6 @@
 // splinex verify: a result computed elsewhere judged exactly against splinex's exact reference
 // (crosscheck/verify.hpp).
+#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -110,6 +111,10 @@ Commands add_verify(CLI::App& app) {
              vo.precision = o->precision;
              vo.max_rounds = o->rounds;
              vo.factor = parse_number(o->factor, "factor");
+             // Progress on stderr once a run takes longer than two seconds (compositions of many tiles).
+             vo.progress = [start = std::chrono::steady_clock::now()](const std::string& s) {
+               if (std::chrono::steady_clock::now() - start > std::chrono::seconds(2)) std::cerr << "splinex verify: " << s << std::endl;
+             };
              if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "give e.g. --factor 2");
              Json cand = read_json_file(o->candidate, ctx.read_limits);
              if (o->read_as == "double") cand = candidate_numbers_as_doubles(cand);

@@ -31,6 +31,8 @@ struct VerifyOptions {
   Rational factor{2};         // stop refining when upper <= factor * lower
   int max_rounds = 24;        // refinement rounds of the function-level bound
   std::size_t budget = 64;    // refinement stops before (budget x (first coefficients + 64)) coefficients
+  /// Called per part of a composition ("tile 3 of 21"), for progress on stderr; may be empty.
+  std::function<void(const std::string&)> progress;
 };
 
 struct FunctionError {
@@ -57,7 +59,7 @@ struct VerifyReport {
   // T(S(r)) - `values` holds the errors; a sampled claim, "checked at N points", not a bound.
   std::size_t points_checked = 0;
   std::size_t points_unclaimed = 0;    // no candidate part claims the point (or a tile leaves S's domain)
-  std::size_t points_misassigned = 0;  // claimed by a part of another cell of T than the true one
+  std::size_t points_misassigned = 0;  // claimed by a part whose cell of T does not hold S(r) (closed box)
   std::size_t points_failed = 0;       // a homogeneous part's weight is 0 there
   bool area_compared = false;          // tiles against the exact tiling:
   Rational area_moved{0};              // sum over regions of |candidate tiles' area - exact area|

@@ -59,6 +59,14 @@ int run_report(const ReportOptions& opt) {
   namespace fs = std::filesystem;
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
+  // The peers' folder is checked before minutes of work, not after.
+  if (!opt.peers_dir.empty()) {
+    if (!fs::is_directory(opt.peers_dir))
+      throw UsageError("peers", opt.peers_dir + " is not a folder", "give the folder scripts/run.sh peers wrote (results/peers)");
+    if (!fs::exists(fs::path(opt.peers_dir) / "scipy.md") && !fs::exists(fs::path(opt.peers_dir) / "octave.md") &&
+        !fs::exists(fs::path(opt.peers_dir) / "occt.md"))
+      throw UsageError("peers", opt.peers_dir + " holds no scipy.md, octave.md or occt.md", "run scripts/run.sh peers first");
+  }
   fs::create_directories(opt.out_dir);
   // A manifest marked incomplete first: an interrupted run (Ctrl-C) leaves it so, and its files
   // cannot pass for a finished report. Writing it also probes that the folder is writable before

@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "compose/compose.hpp"
 #include "crosscheck/verify.hpp"
 #include "fixtures/random_spline.hpp"
 #include "spline/kernel.hpp"
@@ -56,6 +57,8 @@ Json to_json_numbers(const py::handle& v, const std::string& field) {
     for (auto x : v) out.push_back(to_json_numbers(x, field + "[" + std::to_string(i++) + "]"));
     return out;
   }
+  if (py::isinstance<py::bool_>(v)) return Json(v.cast<bool>());  // flags of result documents ("homogeneous")
+  if (v.is_none()) return Json(nullptr);
   return Json(number_text(v, field));
 }
 
@@ -265,4 +268,26 @@ PYBIND11_MODULE(splinex, m) {
       "Judge a candidate result exactly: operation is insert-knots (knots=...), elevate (by=...), extract-bezier, "
       "split (at=...), reparametrize (interval=(lo, hi)), reverse or eval (candidate {\"at\": [...], \"values\": [...]}); "
       "dir=... selects the direction. Floats are taken as the doubles they are.");
+  m.def(
+      "verify_compose",
+      [](const py::dict& T, const py::dict& S, const py::object& candidate, const std::string& method, bool expand, int precision,
+         const py::object& factor) {
+        VerifyOptions vo;
+        vo.precision = precision;
+        vo.factor = to_rational(factor, "factor");
+        if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "pass e.g. factor=2");
+        const auto outer = to_spline(T, "outer"), inner = to_spline(S, "inner");
+        if (method == "trimmed") return to_py(verify_trimmed_composition(outer, inner, to_json_numbers(candidate, "candidate"), vo));
+        if (method == "tensor") return to_py(verify_tensor_composition(outer, inner, to_json_numbers(candidate, "candidate"), vo));
+        if (method != "symbolic" && method != "interpolation")
+          throw UsageError("method", method + " is not a composition method", "pass symbolic, interpolation, trimmed or tensor");
+        CompositionOptions co;
+        co.expand = expand;
+        return to_py(verify_splines("compose", {compose(outer, inner, co)}, {to_spline(candidate, "candidate")}, vo));
+      },
+      py::arg("outer"), py::arg("inner"), py::arg("candidate"), py::arg("method") = "symbolic", py::arg("expand") = false,
+      py::arg("precision") = 53, py::arg("factor") = 2,
+      "Judge a composition T(S) exactly: method symbolic or interpolation (candidate: one spline), trimmed (Algorithm 1: "
+      "the document of splinex compose --method trimmed, e.g. json.load of it) or tensor (Algorithm 2's tiles). "
+      "Floats are taken as the doubles they are.");
 }

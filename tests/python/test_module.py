@@ -2,9 +2,15 @@
 """The Python module splinex (pybind11): exact operations with Fractions, and verify judging a
 candidate computed here in plain Python floats. Run by ctest (python.module) with PYTHONPATH set
 to the build's python/ folder; plain asserts, no pytest needed."""
+import json
+import subprocess
+import sys
 from fractions import Fraction
+from pathlib import Path
 
 import splinex
+
+DATA = Path(__file__).resolve().parents[1] / "data"
 
 S = {"degrees": [3], "knots": [[0, 0, 0, 0, "1/3", 0.5, 1, 1, 1, 1]],
      "points": [[0, 0], [1, 2], ["22/7", "1e-3"], [3, 0.784], [4, 1], [5, "-1/2"]]}
@@ -79,6 +85,21 @@ def main():
         pass
     else:
         raise AssertionError("a candidate of another dimension was accepted")
+    # Compositions: Algorithm 1's trimmed patches from splinex compose in double (argv[1]: the
+    # splinex command), read by json as Python floats, judged exactly.
+    if len(sys.argv) > 1:
+        T = json.loads((DATA / "outer_bilinear.json").read_text())
+        Sin = json.loads((DATA / "inner_surface.json").read_text())
+        out = subprocess.run([sys.argv[1], "compose", "--method", "trimmed", "--arith", "double", "--outer",
+                              str(DATA / "outer_bilinear.json"), "--inner", str(DATA / "inner_surface.json")],
+                             check=True, capture_output=True, text=True).stdout
+        cand = json.loads(out)
+        rep = splinex.verify_compose(T, Sin, cand, method="trimmed")
+        assert rep.structure != "different" and rep.certified and rep.bits_lost < 4, rep.report
+        assert rep.report["sampled"]["points"] == 17 * 17 and rep.report["sampled"]["misassigned"] == 0, rep.report
+        cand["pieces"][0]["patch"]["points"][0][0] += 2.0 ** -30
+        rep = splinex.verify_compose(T, Sin, cand, method="trimmed")
+        assert rep.bits_lost > 15 and rep.function_upper <= 2.0 ** -30, rep.report
     print("python module: all checks passed")
 
 
