@@ -1,8 +1,9 @@
 // occt_peer: OpenCASCADE's B-spline operations as a candidate program for `splinex verify`
 // (issue 16, part 3). One JSON object per line on stdin:
 //   {"op": "insert" | "elevate" | "eval", "degree": p, "knots": [flat knot vector], "points": [[x, y, ...]],
-//    "u": knot to insert (insert), "xs": [parameters] (eval)}
-// and one per line on stdout: {"degree": p, "knots": [...], "points": [[...]]} (insert, elevate),
+//    "weights": [...] (optional: a rational curve), "u": knot to insert (insert), "xs": [parameters] (eval)}
+// and one per line on stdout: {"degree": p, "knots": [...], "points": [[...]], "weights" when rational}
+// (insert, elevate),
 // {"values": [[...]]} (eval) or {"failure": "what OCCT said"}. Numbers are doubles printed with 17
 // significant digits (they read back to the same double).
 //
@@ -66,7 +67,14 @@ Json run_chunk(const Json& in, int c0, int q) {
     knots.SetValue(static_cast<int>(i) + 1, kv[i]);
     mults.SetValue(static_cast<int>(i) + 1, km[i]);
   }
-  Handle(Geom_BSplineCurve) c = new Geom_BSplineCurve(poles, knots, mults, p);
+  Handle(Geom_BSplineCurve) c;
+  if (in.contains("weights")) {
+    TColStd_Array1OfReal weights(1, n);
+    for (int i = 0; i < n; ++i) weights.SetValue(i + 1, num(in["weights"][i]));
+    c = new Geom_BSplineCurve(poles, weights, knots, mults, p);
+  } else {
+    c = new Geom_BSplineCurve(poles, knots, mults, p);
+  }
   auto coords = [q](const gp_Pnt& x) {
     Json r = Json::array();
     const double c3[3] = {x.X(), x.Y(), x.Z()};
@@ -93,6 +101,11 @@ Json run_chunk(const Json& in, int c0, int q) {
   for (int i = 1; i <= c->NbPoles(); ++i) Pts.push_back(coords(c->Pole(i)));
   out["knots"] = K;
   out["points"] = Pts;
+  if (in.contains("weights")) {  // also when OCCT found the weights all equal and dropped them (Weight(i) is 1 then)
+    Json W = Json::array();
+    for (int i = 1; i <= c->NbPoles(); ++i) W.push_back(g17(c->Weight(i)));
+    out["weights"] = W;
+  }
   return out;
 }
 

@@ -8,7 +8,21 @@ def rounded(S):
     out = dict(S)
     out["knots"] = [[Fraction(float(u)) for u in U] for U in S["knots"]]
     out["points"] = [[Fraction(float(x)) for x in p] for p in S["points"]]
+    if "weights" in S:
+        out["weights"] = [Fraction(float(w)) for w in S["weights"]]
     return out
+
+
+def homogeneous_input(S):
+    """For a peer that takes homogeneous coefficients (w x, w y, ..., w) as doubles: those doubles
+    (w x rounded) and the exact input they are (points h / w), which the peer is judged against."""
+    if "weights" not in S:
+        return S, None
+    W = [Fraction(w) for w in S["weights"]]
+    H = [[float(Fraction(x) * w) for x in p] + [float(w)] for p, w in zip(S["points"], W)]
+    exact = dict(S)
+    exact["points"] = [[Fraction(h) / w for h in row[:-1]] for row, w in zip(H, W)]
+    return exact, H
 
 
 def domain(S):
@@ -79,7 +93,11 @@ def write_results(out, name, title, intro, rows, ops, cases, label):
           "| cases | operation | judged | bits lost, median | bits lost, max | cases above 10 bits | structure differs | failures |",
           "|---|---|---|---|---|---|---|---|"]
     by_degree, by_gap = {}, {}
-    for suite in ("ordinary", "structured"):
+    suites = []
+    for r in rows:
+        if r["op"] != "input" and r["suite"] not in suites:
+            suites.append(r["suite"])
+    for suite in sorted(suites, key=lambda x: SUITES.index(x)):
         for op in ops:
             ok = [r for r in rows if r["suite"] == suite and r["op"] == op and "bits_lost" in r]
             fails = [r for r in rows if r["suite"] == suite and r["op"] == op and "failure" in r]
@@ -103,7 +121,8 @@ def write_results(out, name, title, intro, rows, ops, cases, label):
     if not judged and not failed:
         md.append("- none")
     not_double = sum(r["op"] == "input" for r in rows)
-    md += ["", f"{not_double} of {cases} inputs are not representable in double and were not handed over.", "",
+    md += ["", f"{not_double} inputs were not handed over (not representable in double: knots closer than double "
+               "tells apart; or more coordinates than the peer's curves have).", "",
            f"![bits lost vs degree]({name}_bits_vs_degree.svg) ![bits lost vs knot spacing]({name}_bits_vs_spacing.svg)", ""]
     (out / f"{name}.md").write_text("\n".join(md))
     (out / f"{name}_bits_vs_degree.svg").write_text(svg(by_degree, f"{label}, ordinary curves: worst bits lost by degree"))
@@ -123,9 +142,31 @@ def ordinary_curve(rng, p):
     return {"degrees": [p], "knots": [U], "points": P}
 
 
+SUITES = ["ordinary", "structured", "rational", "adversarial"]
+
+
+def adversarial_curves():
+    """The report's adversarial inputs as curves: knots 1/10 and 1/10 + 2^-50, degree 15, 1000 knots
+    clustered within 10^-6, knots 2^-30 apart at degree 7, 200 knots at degree 1."""
+    def clamped(p, interior, n_pts_seed):
+        U = [Fraction(0)] * (p + 1) + sorted(interior) + [Fraction(1)] * (p + 1)
+        n = len(U) - p - 1
+        P = [[Fraction((i * 37 + n_pts_seed) % 101 - 50, 64), Fraction((i * i * 13 + 7) % 97 - 48, 32)] for i in range(n)]
+        return {"degrees": [p], "knots": [U], "points": P}
+    tenth = Fraction(1, 10)
+    return [
+        (clamped(3, [tenth, tenth + Fraction(1, 2**50), Fraction(1, 2)], 1), ["knots 1/10 and 1/10 + 2^-50"]),
+        (clamped(15, [Fraction(k, 21) for k in range(1, 21)], 2), ["degree 15"]),
+        (clamped(3, [Fraction(1, 2) + Fraction(k, 10**9) for k in range(1000)], 3), ["1000 knots within 1e-6"]),
+        (clamped(7, [Fraction(1, 3) + Fraction(k, 2**30) for k in range(8)] + [Fraction(2, 3)], 4), ["knots 2^-30 apart"]),
+        (clamped(1, [Fraction(k, 201) for k in range(1, 201)], 5), ["degree 1, 200 knots"]),
+    ]
+
+
 def cases(count, seed):
     """(suite, spline, structures) for the judges: the structured generator's curves (polynomial),
-    then as many ordinary curves of degree 1..7."""
+    as many ordinary curves of degree 1..7, as many rational structured curves, then the
+    adversarial curves (the later suites are appended so that the earlier cases' draws stay)."""
     import random
     import splinex
     out = []
@@ -136,6 +177,16 @@ def cases(count, seed):
     for s in range(count):
         p = 1 + s % 7
         out.append(("ordinary", ordinary_curve(rng, p), ["degree %d, simple dyadic knots" % p]))
+    found = 0
+    for s in range(20 * count):  # the generator gives weights to some of its cases
+        if found == count:
+            break
+        S, tags = splinex.structured_case(100000 + s, max_dim=1, rational=True)
+        if "weights" in S:
+            out.append(("rational", S, tags))
+            found += 1
+    for S, tags in adversarial_curves():
+        out.append(("adversarial", S, tags))
     return out
 
 

@@ -41,6 +41,8 @@ def main():
     for seed, suite, S, tags, u, xs in inputs:
         base = {"degree": S["degrees"][0], "knots": [f"{float(k):.17g}" for k in S["knots"][0]],
                 "points": [[f"{float(x):.17g}" for x in pt] for pt in S["points"]]}
+        if "weights" in S:
+            base["weights"] = [f"{float(w):.17g}" for w in S["weights"]]
         for op in ops:
             lines.append(json.dumps(dict(base, op=op, u=f"{u:.17g}", xs=[f"{x:.17g}" for x in xs])))
     run = subprocess.run([str(peer)], input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=3600)
@@ -68,6 +70,8 @@ def main():
                 else:
                     cand = {"degrees": [a["degree"]], "knots": [[float(v) for v in a["knots"]]],
                             "points": [[float(v) for v in r] for r in a["points"]]}
+                    if "weights" in a:
+                        cand["weights"] = [float(w) for w in a["weights"]]
                     rep = (splinex.verify("insert-knots", S, cand, knots=[u]) if op == "insert"
                            else splinex.verify("elevate", S, cand, by=1))
                 verify_into(row, rep)
@@ -79,8 +83,9 @@ def main():
     (out / "occt.json").write_text(json.dumps({"occt": version, "cases": cases, "rows": rows}, indent=1) + "\n")
     md = write_results(out, "occt", f"{version} judged exactly by splinex (Geom_BSplineCurve)",
                        f"{cases} curves of splinex's structured generator (C^-1 knots, unclamped ends, degree 0, single "
-                       f"spans, knots 2^-60 apart, shifted domains) and {cases} ordinary clamped curves of degree 1..7, "
-                       "rounded to double; `InsertKnot` (one knot, default tolerance), `IncreaseDegree` (degree + 1) and "
+                       f"spans, knots 2^-60 apart, shifted domains), {cases} ordinary clamped curves of degree 1..7, {cases} "
+                       "rational structured curves (poles and weights) and the report's adversarial curves, rounded to "
+                       "double; `InsertKnot` (one knot, default tolerance), `IncreaseDegree` (degree + 1) and "
                        "`D0` (9 points), each judged by `splinex.verify` against the exact result on the same input. "
                        "Bits lost: the worst of the coefficient (or value) error and the certified function-level bound, "
                        "relative to the largest reference coefficient (or value), of 53.",
