@@ -1,6 +1,7 @@
 // libFuzzer target over the document readers and every command's core (issue 13).
 //
-// Input: byte 0 chooses the operation, byte 1 is its small parameter (a direction, an amount, a
+// Input: byte 0 chooses the reader (spline, trimmed domain, hybrid patch, verify candidate) and the
+// operation, byte 1 is its small parameter (a direction, an amount, a
 // fraction of the domain), the rest is a JSON document. Typed splinex::Error is the expected
 // answer to bad input and is swallowed; anything else (another exception, a crash, a leak, an
 // ASan/UBSan report, a timeout) is a finding. Exact results are also checked against an
@@ -22,6 +23,7 @@
 #include "float/rounding.hpp"
 #include "hybrid/hybrid.hpp"
 #include "compose/trimmed_compose.hpp"
+#include "crosscheck/verify.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/loops.hpp"
@@ -107,6 +109,44 @@ void run_spline(std::uint8_t op, std::uint8_t arg, const sx::BSpline<sx::Rationa
   }
 }
 
+// verify (issue 16) with the document as the candidate. Oracles: a certified bound is never below
+// its witness; the candidate judged against its own knot insertion or degree elevation is the same
+// function, so its function-level error is exactly 0 (whatever its structure); Algorithm 1's and
+// 2's readers take any document as a candidate of a fixed T(S) and answer with a report or a typed
+// error.
+void run_verify(std::uint8_t arg, const sx::Json& doc, const sx::Limits& L) {
+  sx::VerifyOptions vo;
+  vo.max_rounds = 4;
+  auto check = [](const sx::VerifyReport& rep) {
+    if (rep.function.certified && rep.function.upper < rep.function.lower) finding("verify: certified bound below its witness");
+    (void)rep.to_json();
+  };
+  switch (arg % 4) {
+    case 0:
+    case 1: {
+      const auto C = sx::spline_from_json(arg & 4 ? sx::candidate_numbers_as_doubles(doc) : doc, L);
+      sx::Operation op = sx::Operation::parse_kind(arg % 4 == 0 ? "insert-knots" : "elevate");
+      op.dir = (arg / 8) % C.dim();
+      if (arg % 4 == 0) op.knots = {inside(C, op.dir, static_cast<std::uint8_t>(arg * 5))};
+      const auto rep = sx::verify(op, C, {C}, vo, L);
+      check(rep);
+      if (rep.function.upper != 0) finding("verify: a spline differs from its own refinement or elevation");
+      break;
+    }
+    default: {
+      // T: a biquadratic surface with interior knots; S: a curved surface crossing them.
+      static const auto T = sx::spline_from_json(
+          sx::Json::parse(R"({"type": "bspline", "degrees": [2, 1], "knots": [[0, 0, 0, "1/2", 1, 1, 1], [0, 0, 1, 1]],
+                               "points": [[0,0,0],[1,0,1],[2,0,0],[3,0,1],[0,1,1],[1,1,3],[2,1,-1],[3,1,2]]})"));
+      static const auto S = sx::spline_from_json(
+          sx::Json::parse(R"({"type": "bspline", "degrees": [2, 1], "knots": [[0, 0, 0, 1, 1, 1], [0, 0, 1, 1]],
+                               "points": [["1/10", "1/10"], ["9/10", "1/5"], ["1/5", "3/20"], ["3/20", "9/10"], ["4/5", "7/10"], ["3/10", "19/20"]]})"));
+      check(arg % 4 == 2 ? sx::verify_trimmed_composition(T, S, doc, vo, L) : sx::verify_tensor_composition(T, S, doc, vo, L));
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -124,8 +164,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     std::istringstream in(text);
     const sx::Json doc = sx::read_json(in, "fuzz", R);
-    switch (op % 3) {
-      case 0: run_spline(op / 3, arg, sx::spline_from_json(doc, L), L); break;
+    switch (op % 4) {
+      case 0: run_spline(op / 4, arg, sx::spline_from_json(doc, L), L); break;
       case 1: {
         const auto D = sx::trimmed_domain_from_json(doc);
         if (op & 8) {
@@ -142,6 +182,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)sx::hybrid_evaluate(P, x);
         break;
       }
+      case 3: run_verify(arg, doc, L); break;
     }
   } catch (const sx::Error&) {
     // the typed answer to bad input

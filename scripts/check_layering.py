@@ -12,6 +12,7 @@ DIRECT = {
     "float": ["exact"],
     "compose": ["float"],
     "untrim": ["compose"],
+    "vrep": ["compose"],
     "hybrid": ["float"],
     "io": ["untrim", "hybrid"],
     "fixtures": ["io"],

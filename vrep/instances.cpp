@@ -1,0 +1,27 @@
+// The V-rep templates instantiated for the exact and float arithmetics.
+#include "float/mpfr.hpp"
+#include "vrep/regularity_impl.hpp"
+#include "vrep/trivariate_impl.hpp"
+
+namespace splinex {
+
+const char* to_string(Regularity r) {
+  return r == Regularity::regular ? "regular" : r == Regularity::singular ? "singular" : "undecided";
+}
+
+#define SPLINEX_INSTANTIATE_VREP(T)                                                                                 \
+  template BSpline<T> extrude(const BSpline<T>&, const std::vector<T>&, const Limits&);                              \
+  template BSpline<T> ruled(const BSpline<T>&, const BSpline<T>&, const Limits&);                                    \
+  template BSpline<T> revolve(const BSpline<T>&, int, int, const Limits&);                                           \
+  template BSpline<T> rational_circle(int);                                                                          \
+  template BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>&, const Limits&);                   \
+  template BSpline<T> sweep(const std::vector<BSpline<T>>&, const std::vector<T>&, int, const Limits&);              \
+  template BSpline<T> face(const BSpline<T>&, int, int);                                                             \
+  template RegularityReport<T> certify_regularity(const BSpline<T>&, int, const Limits&);                            \
+  template BSpline<T> jacobian_determinant(const BSpline<T>&, const Limits&);
+
+SPLINEX_INSTANTIATE_VREP(Rational)
+SPLINEX_INSTANTIATE_VREP(double)
+SPLINEX_INSTANTIATE_VREP(Mpfr)
+
+}  // namespace splinex

@@ -1,0 +1,51 @@
+// Certified regularity of a trivariate (papers/002 Section 3.2.3, Figures 1 b, 8): the sign of the
+// Jacobian determinant decided from exact Bernstein coefficients.
+//
+// Per Bezier piece, in the piece's local coordinates (which changes det J by a positive factor):
+//  - polynomial T = (X, Y, Z): det J = det[T_u, T_v, T_w], a tensor Bernstein polynomial of degree
+//    (3p-1, 3q-1, 3r-1);
+//  - rational, homogeneous P = (W, X, Y, Z): det J = det[P, P_u, P_v, P_w] / W^4 (rows W, X, Y, Z),
+//    numerator of degree (4p-1, 4q-1, 4r-1), W > 0.
+// Products are exact Bernstein products; only the first three point coordinates are geometry.
+// Decision: every box's corner coefficients are exact values of det J there (a corner value 0 is a
+// singular point; corner values of both signs, in one piece or across pieces, a sign change:
+// singular, with both points); a box whose coefficients all have the sign found is certified; the
+// rest is subdivided at midpoints (de Casteljau, exact in exact arithmetic) up to `max_levels`,
+// after which the verdict is "undecided". In float arithmetic the same test runs in floats (what
+// a float kernel would decide); the report compares it with the exact verdict.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "spline/bspline.hpp"
+#include "spline/limits.hpp"
+
+namespace splinex {
+
+enum class Regularity { regular, singular, undecided };
+
+const char* to_string(Regularity r);
+
+template <class T>
+struct RegularityReport {
+  Regularity verdict = Regularity::undecided;
+  int sign = 0;              // regular: +1 (det J > 0 everywhere) or -1
+  std::vector<T> point;      // singular: where det J = 0, or where its sign is the opposite of `other`'s
+  std::vector<T> other;      // sign change: a parameter of the other sign (empty when det J = 0 at `point`)
+  T value{0}, other_value{0};  // det J's numerator at point and other (local scaling, sign exact)
+  int levels = 0;            // subdivision levels used
+  std::size_t boxes = 0;     // boxes examined
+  std::string reason;
+};
+
+/// The verdict on the whole domain (every coordinate beyond the third is an attribute).
+template <class T>
+RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels = 6, const Limits& limits = {});
+
+/// det J as an exact B-spline of degree (3p-1, 3q-1, 3r-1) (polynomial V) or its numerator
+/// det J * W^4 of degree (4p-1, 4q-1, 4r-1) (rational V), C^-1 at V's breakpoints (knots of full
+/// multiplicity), in V's parameters.
+template <class T>
+BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits = {});
+
+}  // namespace splinex

@@ -1,0 +1,301 @@
+// Certified regularity (vrep/regularity.hpp): the templates, instantiated in vrep/instances.cpp.
+#pragma once
+#include <deque>
+
+#include "compose/compose_impl.hpp"  // detail::Bern, bern_product
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "vrep/regularity.hpp"
+
+namespace splinex {
+
+namespace vrep_detail {
+
+using detail::Bern;
+
+/// Homogeneous coordinate c of a Bezier trivariate piece: c = 0 the weight W (1 if polynomial),
+/// c = 1..3 the geometry w x, w y, w z.
+template <class T>
+Bern<T> homogeneous(const BSpline<T>& piece, int c) {
+  Bern<T> b;
+  b.deg = piece.degrees;
+  const std::size_t n = piece.size();
+  b.c.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const T w = piece.is_rational() ? piece.weights[i] : T(1);
+    b.c[i] = c == 0 ? w : T(w * piece.points[i * piece.q + (c - 1)]);
+  }
+  return b;
+}
+
+/// d/dt_l of a tensor Bernstein polynomial on [0, 1]^3 (degree deg_l >= 1).
+template <class T>
+Bern<T> derivative(const Bern<T>& b, int l) {
+  Bern<T> out;
+  out.deg = b.deg;
+  out.deg[l] -= 1;
+  out.c.resize(detail::tensor_size(out.deg));
+  std::vector<int> idx(3);
+  std::size_t stride = 1;
+  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
+  const T p(b.deg[l]);
+  for (std::size_t i = 0; i < out.c.size(); ++i) {
+    detail::unflatten(i, out.deg, idx);
+    std::size_t src = 0, s = 1;
+    for (int k = 0; k < 3; ++k) {
+      src += idx[k] * s;
+      s *= b.deg[k] + 1;
+    }
+    out.c[i] = p * (b.c[src + stride] - b.c[src]);
+  }
+  return out;
+}
+
+template <class T>
+Bern<T> sub(Bern<T> a, const Bern<T>& b) {
+  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] -= b.c[i];
+  return a;
+}
+template <class T>
+Bern<T> add(Bern<T> a, const Bern<T>& b) {
+  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] += b.c[i];
+  return a;
+}
+template <class T>
+Bern<T> mul(const Bern<T>& a, const Bern<T>& b) {
+  return detail::bern_product(a, b);
+}
+
+/// det of the 2x2 [[a, b], [c, d]].
+template <class T>
+Bern<T> det2(const Bern<T>& a, const Bern<T>& b, const Bern<T>& c, const Bern<T>& d) {
+  return sub(mul(a, d), mul(b, c));
+}
+
+/// det J's numerator of a Bezier piece in local coordinates.
+template <class T>
+Bern<T> jacobian_numerator(const BSpline<T>& piece) {
+  const bool rational = piece.is_rational();
+  // M[r][c]: row r = homogeneous coordinate (W, X, Y, Z) or (X, Y, Z); column c = (P,) P_u, P_v, P_w.
+  if (!rational) {
+    Bern<T> M[3][3];
+    for (int r = 0; r < 3; ++r) {
+      const Bern<T> x = homogeneous(piece, r + 1);
+      for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
+    }
+    Bern<T> det = mul(M[0][0], det2(M[1][1], M[1][2], M[2][1], M[2][2]));
+    det = sub(det, mul(M[0][1], det2(M[1][0], M[1][2], M[2][0], M[2][2])));
+    return add(det, mul(M[0][2], det2(M[1][0], M[1][1], M[2][0], M[2][1])));
+  }
+  Bern<T> M[4][4];
+  for (int r = 0; r < 4; ++r) {
+    M[r][0] = homogeneous(piece, r);
+    for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
+  }
+  // Laplace expansion along columns (0, 1): sum over row pairs r1 < r2 of
+  // (-1)^(r1 + r2 + 1) minor(r1, r2; 0, 1) minor(complement; 2, 3).
+  Bern<T> det;
+  bool first = true;
+  for (int r1 = 0; r1 < 4; ++r1)
+    for (int r2 = r1 + 1; r2 < 4; ++r2) {
+      int s1 = -1, s2 = -1;
+      for (int r = 0; r < 4; ++r)
+        if (r != r1 && r != r2) (s1 < 0 ? s1 : s2) = r;
+      Bern<T> term = mul(det2(M[r1][0], M[r1][1], M[r2][0], M[r2][1]), det2(M[s1][2], M[s1][3], M[s2][2], M[s2][3]));
+      if ((r1 + r2 + 1) % 2 != 0)
+        for (auto& x : term.c) x = -x;
+      det = first ? term : add(det, term);
+      first = false;
+    }
+  return det;
+}
+
+/// The two halves of b at t_l = 1/2 (de Casteljau along every line of direction l).
+template <class T>
+std::pair<Bern<T>, Bern<T>> split_half(const Bern<T>& b, int l) {
+  Bern<T> L = b, R = b;
+  const int p = b.deg[l];
+  std::size_t stride = 1;
+  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
+  const std::size_t lines = b.c.size() / (p + 1);
+  std::vector<T> w(p + 1);
+  const T half = T(1) / T(2);
+  std::vector<int> idx(3);
+  auto reduced = b.deg;
+  reduced[l] = 0;
+  for (std::size_t line = 0; line < lines; ++line) {
+    detail::unflatten(line, reduced, idx);
+    std::size_t base = 0, s = 1;
+    for (int k = 0; k < 3; ++k) {
+      base += idx[k] * s;
+      s *= b.deg[k] + 1;
+    }
+    for (int i = 0; i <= p; ++i) w[i] = b.c[base + i * stride];
+    for (int r = 0; r <= p; ++r) {
+      L.c[base + r * stride] = w[0];
+      R.c[base + (p - r) * stride] = w[p - r];
+      for (int i = 0; i < p - r; ++i) w[i] = (w[i] + w[i + 1]) * half;
+    }
+  }
+  return {std::move(L), std::move(R)};
+}
+
+template <class T>
+int sign_of(const T& x) {
+  return T(0) < x ? 1 : x < T(0) ? -1 : 0;
+}
+
+}  // namespace vrep_detail
+
+template <class T>
+BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits) {
+  validate(V, limits);
+  if (V.dim() != 3 || V.q < 3)
+    throw ValidationError("degrees", "det J needs a trivariate with points in R^3", "give a spline with three directions and q >= 3");
+  for (int d = 0; d < 3; ++d)
+    if (V.degrees[d] == 0) throw ValidationError("degrees", "has degree 0 in a direction: det J is 0", "elevate it first");
+  const BezierForm<T> F = bezier_form(V, limits);
+  const int extra = V.is_rational() ? 4 : 3;
+  BSpline<T> J;
+  J.q = 1;
+  for (int d = 0; d < 3; ++d) J.degrees.push_back(extra * V.degrees[d] - 1);
+  for (int d = 0; d < 3; ++d) {
+    std::vector<T> U;
+    for (const auto& b : F.breaks[d]) U.insert(U.end(), J.degrees[d] + 1, b);
+    J.knots.push_back(U);
+  }
+  std::size_t seg[3], cnt[3];
+  for (int d = 0; d < 3; ++d) {
+    seg[d] = F.breaks[d].size() - 1;
+    cnt[d] = seg[d] * (J.degrees[d] + 1);
+  }
+  J.points.assign(cnt[0] * cnt[1] * cnt[2], T(0));
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    const auto N = vrep_detail::jacobian_numerator(pc.spline);
+    T scale(1);
+    for (int d = 0; d < 3; ++d) scale = scale * (pc.box[d].second - pc.box[d].first);
+    const std::size_t k0 = k % seg[0], k1 = (k / seg[0]) % seg[1], k2 = k / (seg[0] * seg[1]);
+    std::vector<int> idx(3);
+    for (std::size_t i = 0; i < N.c.size(); ++i) {
+      detail::unflatten(i, N.deg, idx);
+      const std::size_t g0 = k0 * (J.degrees[0] + 1) + idx[0], g1 = k1 * (J.degrees[1] + 1) + idx[1],
+                        g2 = k2 * (J.degrees[2] + 1) + idx[2];
+      J.points[g0 + cnt[0] * (g1 + cnt[1] * g2)] = N.c[i] / scale;
+    }
+  }
+  return J;
+}
+
+template <class T>
+RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, const Limits& limits) {
+  using vrep_detail::Bern;
+  validate(V, limits);
+  if (V.dim() != 3 || V.q < 3)
+    throw ValidationError("degrees", "regularity needs a trivariate with points in R^3", "give a spline with three directions and q >= 3");
+  if (max_levels < 0 || max_levels > 30) throw ValidationError("levels", "must be 0..30", "give the subdivision depth");
+  RegularityReport<T> rep;
+  for (int d = 0; d < 3; ++d)
+    if (V.degrees[d] == 0) {
+      rep.verdict = Regularity::singular;
+      rep.point = {V.domain_lo(0), V.domain_lo(1), V.domain_lo(2)};
+      rep.reason = "degree 0 in direction " + std::to_string(d) + ": det J = 0 everywhere";
+      return rep;
+    }
+  struct Box {
+    Bern<T> N;
+    T lo[3], hi[3];
+    int level;
+  };
+  const BezierForm<T> F = bezier_form(V, limits);
+  std::deque<Box> todo;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    Box b{vrep_detail::jacobian_numerator(pc.spline), {}, {}, 0};
+    for (int d = 0; d < 3; ++d) {
+      b.lo[d] = pc.box[d].first;
+      b.hi[d] = pc.box[d].second;
+    }
+    todo.push_back(std::move(b));
+  }
+  int global = 0;
+  std::vector<T> global_point;
+  T global_value(0);
+  bool undecided = false;
+  std::vector<T> undecided_at;
+  while (!todo.empty()) {
+    Box b = std::move(todo.front());
+    todo.pop_front();
+    ++rep.boxes;
+    rep.levels = std::max(rep.levels, b.level);
+    // The corners: exact values of the (local) numerator.
+    std::vector<int> idx(3);
+    int lo_sign = 2, hi_sign = -2;
+    for (std::size_t i = 0; i < b.N.c.size(); ++i) {
+      const int s = vrep_detail::sign_of(b.N.c[i]);
+      lo_sign = std::min(lo_sign, s);
+      hi_sign = std::max(hi_sign, s);
+      detail::unflatten(i, b.N.deg, idx);
+      bool corner = true;
+      for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == b.N.deg[d]);
+      if (!corner) continue;
+      std::vector<T> x(3);
+      for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
+      if (s == 0) {
+        rep.verdict = Regularity::singular;
+        rep.point = x;
+        rep.value = b.N.c[i];
+        rep.reason = "det J = 0 at a corner of a Bezier box";
+        return rep;
+      }
+      if (global == 0) {
+        global = s;
+        global_point = x;
+        global_value = b.N.c[i];
+      } else if (s != global) {
+        rep.verdict = Regularity::singular;
+        rep.point = x;
+        rep.value = b.N.c[i];
+        rep.other = global_point;
+        rep.other_value = global_value;
+        rep.reason = "det J changes sign";
+        return rep;
+      }
+    }
+    if (lo_sign == hi_sign && lo_sign == global) continue;  // certified on this box
+    if (b.level >= max_levels) {
+      if (!undecided) undecided_at = {(b.lo[0] + b.hi[0]) / T(2), (b.lo[1] + b.hi[1]) / T(2), (b.lo[2] + b.hi[2]) / T(2)};
+      undecided = true;
+      continue;
+    }
+    // Subdivide at the midpoints of all three directions: 8 children.
+    std::vector<Box> parts{std::move(b)};
+    for (int d = 0; d < 3; ++d) {
+      std::vector<Box> next;
+      for (auto& p : parts) {
+        auto [L, R] = vrep_detail::split_half(p.N, d);
+        const T mid = (p.lo[d] + p.hi[d]) / T(2);
+        Box l{std::move(L), {p.lo[0], p.lo[1], p.lo[2]}, {p.hi[0], p.hi[1], p.hi[2]}, p.level + 1};
+        Box r{std::move(R), {p.lo[0], p.lo[1], p.lo[2]}, {p.hi[0], p.hi[1], p.hi[2]}, p.level + 1};
+        l.hi[d] = mid;
+        r.lo[d] = mid;
+        next.push_back(std::move(l));
+        next.push_back(std::move(r));
+      }
+      parts = std::move(next);
+    }
+    for (auto& p : parts) todo.push_back(std::move(p));
+  }
+  if (undecided) {
+    rep.verdict = Regularity::undecided;
+    rep.point = undecided_at;
+    rep.reason = "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels";
+    return rep;
+  }
+  rep.verdict = Regularity::regular;
+  rep.sign = global;
+  rep.reason = global > 0 ? "det J > 0: every Bernstein coefficient positive" : "det J < 0: every Bernstein coefficient negative";
+  return rep;
+}
+
+}  // namespace splinex
