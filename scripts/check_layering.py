@@ -18,7 +18,7 @@ DIRECT = {
     "fixtures": ["io"],
     "crosscheck": ["io"],
     "proofs": ["fixtures"],
-    "experiments": ["proofs", "crosscheck"],
+    "experiments": ["proofs", "crosscheck", "vrep"],
     "apps": ["experiments"],
     "python": ["crosscheck", "fixtures"],
 }
