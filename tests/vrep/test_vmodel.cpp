@@ -1,0 +1,135 @@
+// The V-model (issue 17): gluing, invariants, counts and queries of the primitives, regularity of
+// every cell, and what a float gluing tolerance does.
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "spline/kernel.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/regularity.hpp"
+#include "vrep/trivariate.hpp"
+#include "vrep/vmodel.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+struct Counts {
+  std::size_t points, curves, surfaces, cells, internal;
+  long euler;
+};
+
+template <class T>
+void check_model(const VModel<T>& M, const Counts& c) {
+  const auto chk = check_invariants(M);
+  INFO((chk.failures.empty() ? std::string("") : chk.failures.front()));
+  CHECK(chk.ok());
+  CHECK(M.points.size() == c.points);
+  CHECK(M.curves.size() == c.curves);
+  CHECK(M.surfaces.size() == c.surfaces);
+  CHECK(M.cells.size() == c.cells);
+  CHECK(M.internal_surfaces() == c.internal);
+  CHECK(chk.euler == c.euler);
+  CHECK(M.half_surfaces.size() == 6 * c.cells);
+}
+
+/// Every cell regular, all with the same sign.
+void check_regular(const std::vector<BSpline<R>>& cells) {
+  int sign = 0;
+  for (const auto& V : cells) {
+    const auto rep = certify_regularity(V);
+    REQUIRE(rep.verdict == Regularity::regular);
+    if (sign == 0) sign = rep.sign;
+    CHECK(rep.sign == sign);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("vmodel: one trivariate is 1 cell, 6 half-V-surfaces, 12 V-curves, 8 V-points (Section 3.2.1)") {
+  const auto B = box_cells<R>({0, 0, 0}, {1, 2, 3});
+  const auto M = glue(B);
+  check_model(M, {8, 12, 6, 1, 0, 1});
+  CHECK(M.boundary_surfaces() == 6);
+  // Two boxes sharing a face: 12 points, 20 curves, 11 surfaces (1 internal), 2 cells.
+  auto two = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  two.push_back(box_cells<R>({1, 0, 0}, {2, 1, 1})[0]);
+  const auto M2 = glue(two);
+  check_model(M2, {12, 20, 11, 2, 1, 1});
+  CHECK(M2.shared(0, 1) == "surface");
+  CHECK(M2.neighbours_of_cell(0) == std::vector<std::size_t>{1});
+  // Boxes meeting along an edge only, and at a point only.
+  auto edge = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  edge.push_back(box_cells<R>({1, 1, 0}, {2, 2, 1})[0]);
+  CHECK(glue(edge).shared(0, 1) == "curve");
+  auto corner = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  corner.push_back(box_cells<R>({1, 1, 1}, {2, 2, 2})[0]);
+  CHECK(glue(corner).shared(0, 1) == "point");
+  auto apart = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  apart.push_back(box_cells<R>({3, 3, 3}, {4, 4, 4})[0]);
+  CHECK(glue(apart).shared(0, 1) == "none");
+}
+
+TEST_CASE("vmodel: the cylinder, cone and torus of five cells glue exactly, every cell regular") {
+  // Counts (how they are counted): the disk has 8 points (4 square corners, 4 circle points), 12
+  // edges (4 square sides, 4 spokes, 4 arcs) and 5 faces. Cylinder and cone: two disks, 8 vertical
+  // edges, 12 vertical faces: 16 points, 32 curves, 22 surfaces,
+  // 5 cells, Euler 16 - 32 + 22 - 5 = 1 (a ball). Internal: 4 square sides and 4 spokes. Torus: one disk (0 = 360 degrees), 8 circles,
+  // 12 revolved edges: 8 points, 20 curves, 17 surfaces (internal: the 4 square sides and 4
+  // spokes revolved, and each cell's face at 0 degrees glued to its own face at 360), 5 cells,
+  // Euler 8 - 20 + 17 - 5 = 0 (a solid torus).
+  const auto cyl = cylinder_cells<R>(R(2), R(3));
+  const auto M = glue(cyl);
+  check_model(M, {16, 32, 22, 5, 8, 1});
+  check_regular(cyl);
+  CHECK(M.neighbours_of_cell(0).size() == 4);  // the square touches the four sectors
+  CHECK(M.shared(1, 3) == "none");             // opposite sectors
+  CHECK(M.shared(1, 2) == "surface");          // neighbouring sectors share a spoke face
+  // The vertical edges at the square's corners belong to three cells (the square and two sectors);
+  // no other V-curve does.
+  std::size_t three = 0;
+  for (std::size_t c = 0; c < M.curves.size(); ++c) three += M.cells_of_curve(c).size() == 3;
+  CHECK(three == 4);
+  const auto cone = cone_cells<R>(R(2), R(1), R(3));
+  check_model(glue(cone), {16, 32, 22, 5, 8, 1});
+  check_regular(cone);
+  const auto tor = torus_cells<R>(R(3), R(1));
+  const auto T = glue(tor);
+  check_model(T, {8, 20, 17, 5, 13, 0});
+  check_regular(tor);
+}
+
+TEST_CASE("vmodel: Figure 8's single-trivariate cylinder and sphere are singular") {
+  CHECK(certify_regularity(singular_cylinder<R>(R(1), R(2))).verdict == Regularity::singular);
+  CHECK(certify_regularity(singular_sphere<R>(R(1))).verdict == Regularity::singular);
+}
+
+TEST_CASE("vmodel: gluing refuses a non-manifold face, and the invariants catch overlapping twins") {
+  auto three = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  three.push_back(three[0]);
+  const auto M = glue(three);  // two copies: every face glued to its copy, oriented the same way
+  const auto chk = check_invariants(M);
+  CHECK_FALSE(chk.ok());
+  three.push_back(three[0]);
+  CHECK_THROWS_AS(glue(three), ValidationError);
+}
+
+TEST_CASE("vmodel: a float gluing tolerance glues faces that differ and misses none here") {
+  const auto cyl = cylinder_cells<R>(R(2), R(3));
+  // Perturb the shared face of the square and sector 1 by delta in the sector (exactly).
+  const R delta = R(1) / R(1L << 40);
+  auto moved = cyl;
+  // Sector 1's control point (u = 1, v = 1, w = 0), a corner of its face on the square's side,
+  // moved along z by 2^-40.
+  BSpline<R>& S = moved[1];
+  S.points[(2 + 3 * 1 + 6 * 0) * 3 + 2] += delta;
+  const auto exact = glue(moved);
+  CHECK(exact.internal_surfaces() < glue(cyl).internal_surfaces());  // exactly: no longer the same face
+  std::vector<BSpline<double>> dbl;
+  for (const auto& V : moved) dbl.push_back(convert<double>(V, [](const R& x) { return to_double(x); }));
+  CHECK(glue(dbl, 1e-9).internal_surfaces() == glue(cyl).internal_surfaces());  // eps says equal: a false glue
+  CHECK(glue(dbl, 1e-15).internal_surfaces() == exact.internal_surfaces());
+  std::vector<BSpline<double>> clean;
+  for (const auto& V : cyl) clean.push_back(convert<double>(V, [](const R& x) { return to_double(x); }));
+  check_model(glue(clean, 1e-12), {16, 32, 22, 5, 8, 1});  // rounding the exact primitive misses no glue here
+}
