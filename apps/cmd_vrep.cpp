@@ -1,5 +1,6 @@
-// splinex vrep: volumetric models of papers/002 - the trivariate constructors and certified
-// regularity (vrep/). The V-model itself (cells, gluing, primitives, export) is not built yet.
+// splinex vrep: volumetric models of papers/002 (vrep/): trivariate constructors, primitives,
+// gluing into a V-model, its topology and invariants, certified regularity per cell.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -7,6 +8,8 @@
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
+#include "io/vmodel_io.hpp"
+#include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
 #include "vrep/trivariate.hpp"
 
@@ -122,6 +125,40 @@ Json report_to_json(const RegularityReport<F>& r) {
   return j;
 }
 
+struct PrimitiveOptions {
+  std::string name, arith = "exact", radius = "1", radius2 = "1/2", height = "2", major = "3", lo = "0,0,0", hi = "1,1,1";
+};
+
+template <class F>
+std::vector<BSpline<F>> primitive_cells(const PrimitiveOptions& o) {
+  auto num = [](const std::string& text, const std::string& field) { return round_checked<F>(parse_number(text, field), field); };
+  auto list = [](const std::string& text, const std::string& field) {
+    std::vector<F> v;
+    for (const auto& x : parse_number_list(text, field)) v.push_back(round_checked<F>(x, field));
+    return v;
+  };
+  if (o.name == "cylinder") return cylinder_cells(num(o.radius, "radius"), num(o.height, "height"));
+  if (o.name == "cone") return cone_cells(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"));
+  if (o.name == "torus") return torus_cells(num(o.major, "major"), num(o.radius, "radius"));
+  if (o.name == "box") return box_cells(list(o.lo, "lo"), list(o.hi, "hi"));
+  if (o.name == "singular-cylinder") return {singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))};
+  return {singular_sphere(num(o.radius, "radius"))};
+}
+
+/// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
+/// regularity verdict.
+template <class F>
+Json info_of(const VModel<F>& M, int levels, const Limits& limits) {
+  Json doc = vmodel_to_json(M);
+  Json cells = Json::array();
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto rep = certify_regularity(M.trivariates[M.cells[c].trivariates.front()], levels, limits);
+    cells.push_back({{"name", M.cells[c].name}, {"neighbours", M.neighbours_of_cell(c)}, {"regularity", report_to_json(rep)}});
+  }
+  const Json& t = doc["topology"];
+  return Json{{"counts", t["counts"]}, {"euler_characteristic", t["euler_characteristic"]}, {"invariants", t["invariants"]}, {"cells", cells}};
+}
+
 }  // namespace
 
 Commands add_vrep(CLI::App& app) {
@@ -156,8 +193,74 @@ Commands add_vrep(CLI::App& app) {
   add_arith_option(cert, co->arith, "exact (GMP) decides exactly; double or mpfr:BITS run the same test in floats");
   cert->add_option("file", co->file, "the trivariate document")->required();
   cert->add_option("--levels", co->levels, "subdivision levels before \"undecided\"")->check(CLI::Range(0, 12))->capture_default_str();
+  auto po = std::make_shared<PrimitiveOptions>();
+  auto* prim = v->add_subcommand("primitive", "a glued primitive V-model (Figure 9) or a singular single trivariate (Figure 8)");
+  prim->add_option("name", po->name, "cylinder, cone, torus (five cells each), box, singular-cylinder, singular-sphere")
+      ->required()
+      ->check(CLI::IsMember({"cylinder", "cone", "torus", "box", "singular-cylinder", "singular-sphere"}));
+  add_arith_option(prim, po->arith, "exact (GMP), double or mpfr:BITS");
+  prim->add_option("--radius", po->radius, "radius (torus: the tube's)")->capture_default_str();
+  prim->add_option("--radius2", po->radius2, "cone: the top radius")->capture_default_str();
+  prim->add_option("--height", po->height, "cylinder, cone: the height")->capture_default_str();
+  prim->add_option("--major", po->major, "torus: the distance of the tube's centre from the axis")->capture_default_str();
+  prim->add_option("--lo", po->lo, "box: the low corner x,y,z")->capture_default_str();
+  prim->add_option("--hi", po->hi, "box: the high corner x,y,z")->capture_default_str();
+
+  struct GlueOptions {
+    std::vector<std::string> files;
+    std::string eps;
+    int levels = 6;
+  };
+  auto go = std::make_shared<GlueOptions>();
+  auto* glue_cmd = v->add_subcommand("glue", "glue trivariates and V-models into one V-model (exact; --eps: in double, IRIT's test)");
+  glue_cmd->add_option("files", go->files, "trivariate or V-model documents")->required();
+  glue_cmd->add_option("--eps", go->eps, "glue in double with control points equal within eps (default: exact)");
+  auto io = std::make_shared<GlueOptions>();
+  auto* info = v->add_subcommand("info", "counts, Euler characteristic, invariants, neighbours and regularity per cell");
+  info->add_option("files", io->files, "a V-model document (or trivariates, glued exactly)")->required();
+  info->add_option("--levels", io->levels, "subdivision levels of the regularity test")->check(CLI::Range(0, 12))->capture_default_str();
+
+  auto read_cells = [](const std::vector<std::string>& files, const Context& ctx) {
+    VModelCells all;
+    for (std::size_t f = 0; f < files.size(); ++f) {
+      auto c = vmodel_cells_from_json(read_json_file(files[f], ctx.read_limits), ctx.limits, files.size() == 1 ? "vmodel" : files[f]);
+      all.trivariates.insert(all.trivariates.end(), c.trivariates.begin(), c.trivariates.end());
+      all.names.insert(all.names.end(), c.names.begin(), c.names.end());
+    }
+    return all;
+  };
   return {{c, [o](const Context& ctx) {
              std::cout << construct(*o, ctx).dump() << "\n";
+             return 0;
+           }},
+          {prim, [po](const Context& ctx) {
+             const auto spec = ArithSpec::parse(po->arith);
+             const Json j = with_arith_except_flint(spec, "vrep primitive", [&](auto tag) {
+               using F = typename decltype(tag)::type;
+               const auto cells = primitive_cells<F>(*po);
+               std::vector<std::string> names;
+               for (std::size_t k = 0; k < cells.size(); ++k) names.push_back(po->name + " " + std::to_string(k));
+               return vmodel_to_json(glue(cells, F(0), names, ctx.limits));
+             });
+             std::cout << j.dump() << "\n";
+             return 0;
+           }},
+          {glue_cmd, [go, read_cells](const Context& ctx) {
+             const auto all = read_cells(go->files, ctx);
+             if (go->eps.empty()) {
+               std::cout << vmodel_to_json(glue(all.trivariates, Rational(0), all.names, ctx.limits)).dump() << "\n";
+               return 0;
+             }
+             const double eps = to_double(parse_number(go->eps, "eps"));
+             if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
+             std::vector<BSpline<double>> d;
+             for (std::size_t k = 0; k < all.trivariates.size(); ++k) d.push_back(round_spline<double>(all.trivariates[k], all.names[k]));
+             std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
+             return 0;
+           }},
+          {info, [io, read_cells](const Context& ctx) {
+             const auto all = read_cells(io->files, ctx);
+             std::cout << info_of(glue(all.trivariates, Rational(0), all.names, ctx.limits), io->levels, ctx.limits).dump(2) << "\n";
              return 0;
            }},
           {cert, [co](const Context& ctx) {

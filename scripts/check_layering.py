@@ -14,7 +14,7 @@ DIRECT = {
     "untrim": ["compose"],
     "vrep": ["compose"],
     "hybrid": ["float"],
-    "io": ["untrim", "hybrid"],
+    "io": ["untrim", "hybrid", "vrep"],
     "fixtures": ["io"],
     "crosscheck": ["io"],
     "proofs": ["fixtures"],
