@@ -9,6 +9,8 @@
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
 #include "io/vmodel_io.hpp"
+#include "io/vtk_io.hpp"
+#include <fstream>
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
 #include "vrep/trivariate.hpp"
@@ -220,6 +222,15 @@ Commands add_vrep(CLI::App& app) {
   info->add_option("files", io->files, "a V-model document (or trivariates, glued exactly)")->required();
   info->add_option("--levels", io->levels, "subdivision levels of the regularity test")->check(CLI::Range(0, 12))->capture_default_str();
 
+  struct ExportOptions {
+    std::vector<std::string> files;
+    std::string vtk;
+  };
+  auto eo = std::make_shared<ExportOptions>();
+  auto* exp = v->add_subcommand("export", "the V-model for ParaView: Bezier hexahedra (VTK cell type 79, rational weights)");
+  exp->add_option("files", eo->files, "a V-model document (or trivariates, glued exactly)")->required();
+  exp->add_option("--vtk", eo->vtk, "the .vtu file to write")->required();
+
   auto read_cells = [](const std::vector<std::string>& files, const Context& ctx) {
     VModelCells all;
     for (std::size_t f = 0; f < files.size(); ++f) {
@@ -256,6 +267,16 @@ Commands add_vrep(CLI::App& app) {
              std::vector<BSpline<double>> d;
              for (std::size_t k = 0; k < all.trivariates.size(); ++k) d.push_back(round_spline<double>(all.trivariates[k], all.names[k]));
              std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
+             return 0;
+           }},
+          {exp, [eo, read_cells](const Context& ctx) {
+             const auto all = read_cells(eo->files, ctx);
+             const std::string text = vmodel_to_vtu(glue(all.trivariates, Rational(0), all.names, ctx.limits));
+             std::ofstream out(eo->vtk);
+             if (!out) throw UsageError("vtk", "cannot write " + eo->vtk, "give a writable file path");
+             out << text;
+             if (!out) throw UsageError("vtk", "writing " + eo->vtk + " failed", "check the disk space and the path");
+             std::cerr << "splinex vrep export: wrote " << eo->vtk << "\n";
              return 0;
            }},
           {info, [io, read_cells](const Context& ctx) {

@@ -19,7 +19,7 @@ extra_packages=()
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3
-          python3-dev pybind11-dev)
+          python3-dev pybind11-dev python3-vtk9)
 missing=()
 for p in "${packages[@]}" "${extra_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
