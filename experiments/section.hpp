@@ -52,6 +52,8 @@ void curved_untrim_section(ReportContext& ctx);
 void elevation_accuracy_section(ReportContext& ctx);
 /// The hybrid patch (papers/003); part hybrid.
 void hybrid_section(ReportContext& ctx);
+/// V-rep: the gluing tolerance and float regularity, measured exactly; part vrep.
+void vrep_section(ReportContext& ctx);
 /// The peers' results judged by verify, from ReportOptions::peers_dir; part peers.
 void peers_section(ReportContext& ctx);
 /// The exact proofs of `splinex prove`; part proofs.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Ratio table of one bench_kernel run (Google Benchmark JSON), as markdown and JSON.
 
-    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json] [--compose COMPOSE.json] [--hybrid HYBRID.json]
+    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json] [--compose COMPOSE.json] [--hybrid HYBRID.json] [--vrep VREP.json]
 
 Every ratio is taken between timings of the same run (CPU time per iteration): each arithmetic
 against double for the same operation, degree p and size n, and the geometric mean per operation.
@@ -52,11 +52,14 @@ def fmt(x):
     return "-" if x is None else f"{x:.3g}"
 
 
-def targets(t, compose, hybrid):
+def targets(t, compose, hybrid, vrep=None):
     """Issue 15's targets against this run: each one's measured value, the bound, met or how far."""
     rows = []
 
     def add(what, value, bound, better="<="):
+        if bound is None:  # a measurement without a target of issue 15
+            rows.append((what, "-" if value is None else f"{value:.3g}", "no target", "measured"))
+            return
         if value is None:
             rows.append((what, "-", f"{better} {bound:g}", "not measured in this run"))
             return
@@ -94,13 +97,19 @@ def targets(t, compose, hybrid):
             if len(parts) == 4 and parts[2] == "exact":
                 d = hybrid.get(f"{parts[0]}/{parts[1]}/double/{parts[3]}")
                 add(f"hybrid patch {parts[1]}, {parts[3][1:]} sides: exact / double per point", v / d if d else None, 50)
+    if vrep:
+        for k, v in sorted(vrep.items()):
+            parts = k.split("/")
+            if len(parts) == 4 and parts[2] == "exact":
+                d = vrep.get(f"{parts[0]}/{parts[1]}/double/{parts[3]}")
+                add(f"V-rep {parts[3]} of five cells, {parts[1]}: exact / double", v / d if d else None, None)
     return rows
 
 
 def main():
     args = sys.argv[1:]
     extra = {}
-    for flag in ("--compose", "--hybrid"):
+    for flag in ("--compose", "--hybrid", "--vrep"):
         if flag in args:
             i = args.index(flag)
             extra[flag] = load_runs(args[i + 1])
@@ -218,7 +227,7 @@ def main():
                 c = mem.get((r["op"], a, r["p"], r["n"]))
                 if c:
                     r[f"{a}_memory"] = c
-    target_rows = targets(t, extra.get("--compose"), extra.get("--hybrid"))
+    target_rows = targets(t, extra.get("--compose"), extra.get("--hybrid"), extra.get("--vrep"))
     target_md = ["## Issue 15's targets in this run", "",
                  "| target | measured | bound | verdict |", "|---|---|---|---|"] + \
                 [f"| {w} | {v} | {b} | {m} |" for w, v, b, m in target_rows]
