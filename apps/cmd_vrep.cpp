@@ -10,6 +10,7 @@
 #include "float/rounding.hpp"
 #include "io/vmodel_io.hpp"
 #include "io/vtk_io.hpp"
+#include "experiments/vrep_figures.hpp"
 #include <fstream>
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
@@ -224,12 +225,17 @@ Commands add_vrep(CLI::App& app) {
 
   struct ExportOptions {
     std::vector<std::string> files;
-    std::string vtk;
+    std::string vtk, svg;
+    double explode = 0.35;
+    bool singular = false;
   };
   auto eo = std::make_shared<ExportOptions>();
   auto* exp = v->add_subcommand("export", "the V-model for ParaView: Bezier hexahedra (VTK cell type 79, rational weights)");
   exp->add_option("files", eo->files, "a V-model document (or trivariates, glued exactly)")->required();
-  exp->add_option("--vtk", eo->vtk, "the .vtu file to write")->required();
+  exp->add_option("--vtk", eo->vtk, "the .vtu file to write (Bezier hexahedra for ParaView)");
+  exp->add_option("--svg", eo->svg, "an SVG figure: the cells exploded, flat-shaded");
+  exp->add_option("--explode", eo->explode, "--svg: how far cells move apart (0: not at all)")->check(CLI::Range(0.0, 5.0))->capture_default_str();
+  exp->add_flag("--mark-singular", eo->singular, "--svg: mark sampled boundary points where det J = 0 exactly");
 
   auto read_cells = [](const std::vector<std::string>& files, const Context& ctx) {
     VModelCells all;
@@ -270,13 +276,18 @@ Commands add_vrep(CLI::App& app) {
              return 0;
            }},
           {exp, [eo, read_cells](const Context& ctx) {
+             if (eo->vtk.empty() && eo->svg.empty()) throw UsageError("vtk", "vrep export needs --vtk or --svg", "give --vtk FILE.vtu or --svg FILE.svg");
              const auto all = read_cells(eo->files, ctx);
-             const std::string text = vmodel_to_vtu(glue(all.trivariates, Rational(0), all.names, ctx.limits));
-             std::ofstream out(eo->vtk);
-             if (!out) throw UsageError("vtk", "cannot write " + eo->vtk, "give a writable file path");
-             out << text;
-             if (!out) throw UsageError("vtk", "writing " + eo->vtk + " failed", "check the disk space and the path");
-             std::cerr << "splinex vrep export: wrote " << eo->vtk << "\n";
+             const auto M = glue(all.trivariates, Rational(0), all.names, ctx.limits);
+             auto write = [](const std::string& path, const std::string& field, const std::string& text) {
+               std::ofstream out(path);
+               if (!out) throw UsageError(field, "cannot write " + path, "give a writable file path");
+               out << text;
+               if (!out) throw UsageError(field, "writing " + path + " failed", "check the disk space and the path");
+               std::cerr << "splinex vrep export: wrote " << path << "\n";
+             };
+             if (!eo->vtk.empty()) write(eo->vtk, "vtk", vmodel_to_vtu(M));
+             if (!eo->svg.empty()) write(eo->svg, "svg", vmodel_svg(M, eo->explode, "V-model: " + std::to_string(M.cells.size()) + " cells", eo->singular));
              return 0;
            }},
           {info, [io, read_cells](const Context& ctx) {

@@ -17,6 +17,7 @@
 
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
+#include "experiments/vrep_figures.hpp"
 #include "float/rounding.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
@@ -59,7 +60,7 @@ std::string sci(double x) {
 }  // namespace
 
 void vrep_section(ReportContext& ctx) {
-  ctx.progress("V-rep: gluing tolerance and float regularity");
+  ctx.progress("V-rep: figures, gluing tolerance and float regularity");
   struct Prim {
     const char* name;
     std::vector<BSpline<Rational>> cells;
@@ -72,6 +73,8 @@ void vrep_section(ReportContext& ctx) {
   std::ostringstream csv, md;
   csv << "primitive,delta,eps,internal_exact,internal_double,false_glues,missed_glues\n";
   md << "\n## V-rep: what a gluing tolerance does to the topology (issue 17)\n\n"
+     << "![cylinder](vrep_cylinder.svg) ![cone](vrep_cone.svg) ![torus](vrep_torus.svg)\n\n"
+        "![singular cylinder](vrep_singular_cylinder.svg) ![singular sphere](vrep_singular_sphere.svg)\n\n"
      << "Each primitive of five cells is glued exactly (cylinder, cone: 8 internal V-surfaces, Euler characteristic 1; "
         "torus: 13 internal, Euler characteristic 0). Then one corner control point of the second half of every internal "
         "V-surface is moved by delta along z, exactly; the perturbed cells are glued exactly (the truth) and, rounded to "
@@ -114,6 +117,14 @@ void vrep_section(ReportContext& ctx) {
     }
   }
   write_file_atomically(ctx.options.out_dir + "/vrep_gluing.csv", csv.str());
+  // Figures: the primitives exploded (Figure 9) and Figure 8's singular trivariates with det J = 0 marked.
+  for (const auto& p : prims)
+    write_file_atomically(ctx.options.out_dir + "/vrep_" + p.name + ".svg",
+                          vmodel_svg(glue(p.cells), 0.35, std::string("The ") + p.name + " of five regular cells, exploded", false));
+  write_file_atomically(ctx.options.out_dir + "/vrep_singular_cylinder.svg",
+                        vmodel_svg(glue(std::vector<BSpline<Rational>>{singular_cylinder<Rational>(Rational(1), Rational(2))}), 0, "Figure 8 a: one trivariate, singular on its axis", true));
+  write_file_atomically(ctx.options.out_dir + "/vrep_singular_sphere.svg",
+                        vmodel_svg(glue(std::vector<BSpline<Rational>>{singular_sphere<Rational>(Rational(1))}), 0, "Figure 8 b: one trivariate, singular on its axis", true));
   std::vector<PlotSeries> plot;
   for (auto& [e, s] : series) plot.push_back(s);
   write_file_atomically(ctx.options.out_dir + "/vrep_gluing.svg",
