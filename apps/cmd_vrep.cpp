@@ -237,14 +237,28 @@ Commands add_vrep(CLI::App& app) {
   exp->add_option("--explode", eo->explode, "--svg: how far cells move apart (0: not at all)")->check(CLI::Range(0.0, 5.0))->capture_default_str();
   exp->add_flag("--mark-singular", eo->singular, "--svg: mark sampled boundary points where det J = 0 exactly");
 
+  struct EvalOptions {
+    std::string file, at;
+    std::size_t cell = 0;
+  };
+  auto vo = std::make_shared<EvalOptions>();
+  auto* ev = v->add_subcommand("eval", "geometry and attributes of a cell at a parameter point, exactly");
+  ev->add_option("file", vo->file, "a V-model document")->required();
+  ev->add_option("--cell", vo->cell, "the cell (0-based)")->capture_default_str();
+  ev->add_option("--at", vo->at, "the parameter point u,v,w")->required();
+
   auto read_cells = [](const std::vector<std::string>& files, const Context& ctx) {
     VModelCells all;
-    for (std::size_t f = 0; f < files.size(); ++f) {
-      auto c = vmodel_cells_from_json(read_json_file(files[f], ctx.read_limits), ctx.limits, files.size() == 1 ? "vmodel" : files[f]);
-      all.trivariates.insert(all.trivariates.end(), c.trivariates.begin(), c.trivariates.end());
-      all.names.insert(all.names.end(), c.names.begin(), c.names.end());
-    }
+    for (std::size_t f = 0; f < files.size(); ++f)
+      append_cells(all, vmodel_cells_from_json(read_json_file(files[f], ctx.read_limits), ctx.limits, files.size() == 1 ? "vmodel" : files[f]));
     return all;
+  };
+  // The exact V-model of documents: glued, with their attributes.
+  auto exact_model = [read_cells](const std::vector<std::string>& files, const Context& ctx) {
+    const auto all = read_cells(files, ctx);
+    auto M = glue(all.trivariates, Rational(0), all.names, ctx.limits);
+    apply_attributes(M, all, ctx.limits);
+    return M;
   };
   return {{c, [o](const Context& ctx) {
              std::cout << construct(*o, ctx).dump() << "\n";
@@ -262,12 +276,12 @@ Commands add_vrep(CLI::App& app) {
              std::cout << j.dump() << "\n";
              return 0;
            }},
-          {glue_cmd, [go, read_cells](const Context& ctx) {
-             const auto all = read_cells(go->files, ctx);
+          {glue_cmd, [go, read_cells, exact_model](const Context& ctx) {
              if (go->eps.empty()) {
-               std::cout << vmodel_to_json(glue(all.trivariates, Rational(0), all.names, ctx.limits)).dump() << "\n";
+               std::cout << vmodel_to_json(exact_model(go->files, ctx)).dump() << "\n";
                return 0;
              }
+             const auto all = read_cells(go->files, ctx);
              const double eps = to_double(parse_number(go->eps, "eps"));
              if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
              std::vector<BSpline<double>> d;
@@ -275,10 +289,9 @@ Commands add_vrep(CLI::App& app) {
              std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
              return 0;
            }},
-          {exp, [eo, read_cells](const Context& ctx) {
+          {exp, [eo, exact_model](const Context& ctx) {
              if (eo->vtk.empty() && eo->svg.empty()) throw UsageError("vtk", "vrep export needs --vtk or --svg", "give --vtk FILE.vtu or --svg FILE.svg");
-             const auto all = read_cells(eo->files, ctx);
-             const auto M = glue(all.trivariates, Rational(0), all.names, ctx.limits);
+             const auto M = exact_model(eo->files, ctx);
              auto write = [](const std::string& path, const std::string& field, const std::string& text) {
                std::ofstream out(path);
                if (!out) throw UsageError(field, "cannot write " + path, "give a writable file path");
@@ -290,9 +303,27 @@ Commands add_vrep(CLI::App& app) {
              if (!eo->svg.empty()) write(eo->svg, "svg", vmodel_svg(M, eo->explode, "V-model: " + std::to_string(M.cells.size()) + " cells", eo->singular));
              return 0;
            }},
-          {info, [io, read_cells](const Context& ctx) {
-             const auto all = read_cells(io->files, ctx);
-             std::cout << info_of(glue(all.trivariates, Rational(0), all.names, ctx.limits), io->levels, ctx.limits).dump(2) << "\n";
+          {info, [io, exact_model](const Context& ctx) {
+             std::cout << info_of(exact_model(io->files, ctx), io->levels, ctx.limits).dump(2) << "\n";
+             return 0;
+           }},
+          {ev, [vo, exact_model](const Context& ctx) {
+             const auto M = exact_model({vo->file}, ctx);
+             const auto x = parse_number_list(vo->at, "at");
+             if (x.size() != 3) throw UsageError("at", "needs three parameters", "give --at u,v,w");
+             const auto r = evaluate_cell(M, vo->cell, x);
+             auto list = [](const std::vector<Rational>& v) {
+               Json a = Json::array();
+               for (const auto& y : v) a.push_back(to_fraction_string(y));
+               return a;
+             };
+             Json out{{"cell", vo->cell}, {"point", list(r.point)}, {"coordinates", list(r.coordinates)}};
+             Json f = Json::object(), c = Json::object();
+             for (const auto& [n, v] : r.fields) f[n] = list(v);
+             for (const auto& [n, v] : r.constants) c[n] = list(v);
+             out["fields"] = f;
+             out["constants"] = c;
+             std::cout << out.dump() << "\n";
              return 0;
            }},
           {cert, [co](const Context& ctx) {

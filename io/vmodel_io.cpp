@@ -1,5 +1,7 @@
 #include "io/vmodel_io.hpp"
 
+#include <algorithm>
+
 #include "float/mpfr.hpp"
 
 namespace splinex {
@@ -13,8 +15,10 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
     return out;
   }
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "type" && it.key() != "cells" && it.key() != "topology")
-      throw ValidationError(where + "." + it.key(), "is not a field of a V-model document", "remove it (fields: type, cells, topology)");
+    if (it.key() != "type" && it.key() != "cells" && it.key() != "topology" && it.key() != "surface_attributes" &&
+        it.key() != "curve_attributes" && it.key() != "point_attributes")
+      throw ValidationError(where + "." + it.key(), "is not a field of a V-model document",
+                            "remove it (fields: type, cells, surface_attributes, curve_attributes, point_attributes, topology)");
   if (!doc.contains("cells") || !doc["cells"].is_array() || doc["cells"].empty())
     throw ValidationError(where + ".cells", "is missing or empty", "give a list of cells {\"name\": ..., \"trivariate\": {...}}");
   for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
@@ -23,18 +27,157 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
     if (!c.is_object() || !c.contains("trivariate"))
       throw ValidationError(w, "has no \"trivariate\"", "give {\"name\": ..., \"trivariate\": {spline document}}");
     for (auto it = c.begin(); it != c.end(); ++it)
-      if (it.key() != "name" && it.key() != "trivariate")
-        throw ValidationError(w + "." + it.key(), "is not a field of a cell", "remove it (fields: name, trivariate)");
+      if (it.key() != "name" && it.key() != "trivariate" && it.key() != "attributes")
+        throw ValidationError(w + "." + it.key(), "is not a field of a cell", "remove it (fields: name, trivariate, attributes)");
     out.trivariates.push_back(spline_from_json(c["trivariate"], limits, w + ".trivariate"));
     out.names.push_back(c.contains("name") && c["name"].is_string() ? c["name"].get<std::string>() : "cell " + std::to_string(i));
   }
+  out.attribute_docs.push_back({doc, 0});
   return out;
+}
+
+void append_cells(VModelCells& into, VModelCells more) {
+  const std::size_t shift = into.trivariates.size();
+  for (auto& [d, first] : more.attribute_docs) into.attribute_docs.push_back({std::move(d), first + shift});
+  into.trivariates.insert(into.trivariates.end(), more.trivariates.begin(), more.trivariates.end());
+  into.names.insert(into.names.end(), more.names.begin(), more.names.end());
+}
+
+namespace {
+
+std::vector<Rational> numbers(const Json& j, const std::string& where) {
+  if (!j.is_array()) throw ValidationError(where, "is not a list of numbers", "give a constant attribute as [numbers]");
+  std::vector<Rational> v;
+  for (std::size_t i = 0; i < j.size(); ++i) v.push_back(json_number(j[i], where + "[" + std::to_string(i) + "]"));
+  return v;
+}
+
+std::map<std::string, std::vector<Rational>> constants(const Json& j, const std::string& where) {
+  if (!j.is_object()) throw ValidationError(where, "is not an object", "give {\"NAME\": [numbers], ...}");
+  std::map<std::string, std::vector<Rational>> out;
+  for (auto it = j.begin(); it != j.end(); ++it) out[it.key()] = numbers(it.value(), where + "." + it.key());
+  return out;
+}
+
+int side_value(const Json& j, const std::string& where) {
+  const int s = json_int(j, where, 0, 2);
+  if (s > 1) throw ValidationError(where, "must be 0 or 1", "give the side: 0 (start) or 1 (end)");
+  return s;
+}
+
+std::size_t cell_index(const Json& e, std::size_t first, const VModel<Rational>& M, const std::string& where) {
+  if (!e.is_object() || !e.contains("cell")) throw ValidationError(where + ".cell", "is missing", "give the index of the cell");
+  const std::size_t c = first + static_cast<std::size_t>(json_int(e["cell"], where + ".cell", 0, 1 << 30));
+  if (c >= M.cells.size()) throw ValidationError(where + ".cell", "is not a cell of the document", "give a cell index of this document");
+  return c;
+}
+
+}  // namespace
+
+void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits) {
+  for (const auto& [doc, first] : cells.attribute_docs) {
+    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "vmodel") continue;
+    for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
+      const Json& c = doc["cells"][i];
+      if (!c.contains("attributes")) continue;
+      const std::string w = "vmodel.cells[" + std::to_string(i) + "].attributes";
+      if (!c["attributes"].is_object()) throw ValidationError(w, "is not an object", "give {\"NAME\": [numbers] | {spline}}");
+      for (auto it = c["attributes"].begin(); it != c["attributes"].end(); ++it) {
+        if (it.value().is_object()) attach_field(M, first + i, it.key(), spline_from_json(it.value(), limits, w + "." + it.key()), limits);
+        else M.cells[first + i].attributes.constants[it.key()] = numbers(it.value(), w + "." + it.key());
+      }
+    }
+    auto list = [&](const char* key) -> const Json& {
+      static const Json empty = Json::array();
+      if (!doc.contains(key)) return empty;
+      if (!doc[key].is_array()) throw ValidationError(std::string("vmodel.") + key, "is not a list", "give a list of entries");
+      return doc[key];
+    };
+    const Json& sa = list("surface_attributes");
+    for (std::size_t k = 0; k < sa.size(); ++k) {
+      const std::string w = "vmodel.surface_attributes[" + std::to_string(k) + "]";
+      const std::size_t c = cell_index(sa[k], first, M, w);
+      if (!sa[k].contains("face") || !sa[k]["face"].is_array() || sa[k]["face"].size() != 2)
+        throw ValidationError(w + ".face", "is not [direction, side]", "give the face as [0..2, 0|1]");
+      const std::size_t s = surface_of_face(M, c, json_int(sa[k]["face"][0], w + ".face[0]", 0, 2), side_value(sa[k]["face"][1], w + ".face[1]"));
+      for (auto& [n, v] : constants(sa[k].value("attributes", Json::object()), w + ".attributes")) M.surfaces[s].attributes.constants[n] = v;
+    }
+    const Json& ca = list("curve_attributes");
+    for (std::size_t k = 0; k < ca.size(); ++k) {
+      const std::string w = "vmodel.curve_attributes[" + std::to_string(k) + "]";
+      const std::size_t c = cell_index(ca[k], first, M, w);
+      if (!ca[k].contains("sides") || !ca[k]["sides"].is_array() || ca[k]["sides"].size() != 3 || !ca[k].contains("along"))
+        throw ValidationError(w, "needs \"along\" and \"sides\": [s0, s1, s2]", "give the edge's direction and the sides of the others");
+      std::array<int, 3> sides{};
+      for (int d = 0; d < 3; ++d) sides[d] = side_value(ca[k]["sides"][d], w + ".sides");
+      const std::size_t e = curve_of_edge(M, c, json_int(ca[k]["along"], w + ".along", 0, 2), sides);
+      for (auto& [n, v] : constants(ca[k].value("attributes", Json::object()), w + ".attributes")) M.curves[e].attributes.constants[n] = v;
+    }
+    const Json& pa = list("point_attributes");
+    for (std::size_t k = 0; k < pa.size(); ++k) {
+      const std::string w = "vmodel.point_attributes[" + std::to_string(k) + "]";
+      const std::size_t c = cell_index(pa[k], first, M, w);
+      if (!pa[k].contains("corner") || !pa[k]["corner"].is_array() || pa[k]["corner"].size() != 3)
+        throw ValidationError(w + ".corner", "is not [s0, s1, s2]", "give the corner's sides");
+      int idx = 0;
+      for (int d = 0; d < 3; ++d) idx += side_value(pa[k]["corner"][d], w + ".corner") << d;
+      for (auto& [n, v] : constants(pa[k].value("attributes", Json::object()), w + ".attributes"))
+        M.points[M.cells[c].corners[idx]].attributes.constants[n] = v;
+    }
+  }
 }
 
 template <class T>
 Json vmodel_to_json(const VModel<T>& M) {
+  auto consts = [](const std::map<std::string, std::vector<T>>& m) {
+    Json o = Json::object();
+    for (const auto& [n, v] : m) {
+      Json a = Json::array();
+      for (const auto& x : v) a.push_back(ArithTraits<T>::to_json(x));
+      o[n] = a;
+    }
+    return o;
+  };
   Json cells = Json::array();
-  for (const auto& c : M.cells) cells.push_back({{"name", c.name}, {"trivariate", spline_to_json(M.trivariates[c.trivariates.front()])}});
+  for (const auto& c : M.cells) {
+    Json j{{"name", c.name}, {"trivariate", spline_to_json(M.trivariates[c.trivariates.front()])}};
+    if (!c.attributes.empty()) {
+      Json a = consts(c.attributes.constants);
+      for (const auto& [n, F] : c.attributes.fields) a[n] = spline_to_json(F);
+      j["attributes"] = a;
+    }
+    cells.push_back(j);
+  }
+  // Entity attributes, addressed by the first cell whose face, edge or corner is the entity.
+  Json sattr = Json::array(), cattr = Json::array(), pattr = Json::array();
+  for (std::size_t s = 0; s < M.surfaces.size(); ++s)
+    if (!M.surfaces[s].attributes.empty()) {
+      const auto& h = M.half_surfaces[M.surfaces[s].halves.front()];
+      sattr.push_back({{"cell", h.cell}, {"face", {h.dir, h.side}}, {"attributes", consts(M.surfaces[s].attributes.constants)}});
+    }
+  for (std::size_t e = 0; e < M.curves.size(); ++e)
+    if (!M.curves[e].attributes.empty())
+      for (std::size_t c = 0; c < M.cells.size(); ++c) {
+        const auto& E = M.cells[c].edges;
+        const auto it = std::find(E.begin(), E.end(), e);
+        if (it == E.end()) continue;
+        const int k = static_cast<int>(it - E.begin()), along = k / 4, lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
+        std::array<int, 3> sides{};
+        sides[lo] = k & 1;
+        sides[hi] = (k >> 1) & 1;
+        cattr.push_back({{"cell", c}, {"along", along}, {"sides", sides}, {"attributes", consts(M.curves[e].attributes.constants)}});
+        break;
+      }
+  for (std::size_t p = 0; p < M.points.size(); ++p)
+    if (!M.points[p].attributes.empty())
+      for (std::size_t c = 0; c < M.cells.size(); ++c) {
+        const auto& P = M.cells[c].corners;
+        const auto it = std::find(P.begin(), P.end(), p);
+        if (it == P.end()) continue;
+        const int k = static_cast<int>(it - P.begin());
+        pattr.push_back({{"cell", c}, {"corner", {k & 1, (k >> 1) & 1, (k >> 2) & 1}}, {"attributes", consts(M.points[p].attributes.constants)}});
+        break;
+      }
   Json points = Json::array(), curves = Json::array(), surfaces = Json::array(), halves = Json::array();
   for (const auto& p : M.points) {
     Json at = Json::array();
@@ -49,7 +192,7 @@ Json vmodel_to_json(const VModel<T>& M) {
     halves.push_back(j);
   }
   const auto chk = check_invariants(M);
-  return Json{{"type", "vmodel"},
+  Json out{{"type", "vmodel"},
               {"cells", cells},
               {"topology",
                {{"counts",
@@ -65,6 +208,10 @@ Json vmodel_to_json(const VModel<T>& M) {
                 {"curves", curves},
                 {"surfaces", surfaces},
                 {"half_surfaces", halves}}}};
+  if (!sattr.empty()) out["surface_attributes"] = sattr;
+  if (!cattr.empty()) out["curve_attributes"] = cattr;
+  if (!pattr.empty()) out["point_attributes"] = pattr;
+  return out;
 }
 
 template Json vmodel_to_json(const VModel<Rational>&);

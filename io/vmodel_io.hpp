@@ -1,7 +1,14 @@
 // The V-model document (JSON), read exactly.
 //   {"type": "vmodel",
-//    "cells": [{"name": "...", "trivariate": {spline document with three directions, q >= 3}}, ...],
+//    "cells": [{"name": "...", "trivariate": {spline document with three directions, q >= 3},
+//               "attributes": {"NAME": [numbers] (a constant) | {spline document} (a field: an
+//                              attribute trivariate on the cell's domain)}}, ...],
+//    "surface_attributes": [{"cell": i, "face": [direction, side], "attributes": {"NAME": [numbers]}}],
+//    "curve_attributes":   [{"cell": i, "along": d, "sides": [s0, s1, s2], "attributes": {...}}],
+//    "point_attributes":   [{"cell": i, "corner": [s0, s1, s2], "attributes": {...}}],
 //    "topology": {...}}                     written for the reader's information; ignored on input
+// Entity attributes are addressed by a cell's face, edge or corner and land on the V-surface,
+// V-curve or V-point that is there after gluing.
 // Reading glues the cells' trivariates exactly (vrep/vmodel.hpp), so the topology is always the one
 // of the geometry; a "topology" given in the input is not trusted. Unknown fields are refused.
 #pragma once
@@ -18,8 +25,15 @@ namespace splinex {
 struct VModelCells {
   std::vector<BSpline<Rational>> trivariates;
   std::vector<std::string> names;
+  std::vector<std::pair<Json, std::size_t>> attribute_docs;  // (document, index of its first cell)
 };
 VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "vmodel");
+/// Appends the cells of another document (cell indices of its attributes shifted).
+void append_cells(VModelCells& into, VModelCells more);
+
+/// The attributes of the documents attached to the glued model (ValidationError naming the field
+/// for a bad address or value).
+void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits = {});
 
 /// The document: cells with their trivariates, and the topology (counts, Euler characteristic,
 /// V-points, V-curves with ends and V-surfaces, half-V-surfaces with cell, face, twin and loop).

@@ -24,6 +24,10 @@ const char* to_string(Regularity r) {
   template struct VModel<T>;                                                                                         \
   template VModel<T> glue(const std::vector<BSpline<T>>&, const T&, const std::vector<std::string>&, const Limits&);   \
   template VModelCheck check_invariants(const VModel<T>&, const Limits&);                                            \
+  template std::size_t surface_of_face(const VModel<T>&, std::size_t, int, int);                                     \
+  template std::size_t curve_of_edge(const VModel<T>&, std::size_t, int, const std::array<int, 3>&);                 \
+  template void attach_field(VModel<T>&, std::size_t, const std::string&, BSpline<T>, const Limits&);                \
+  template CellValue<T> evaluate_cell(const VModel<T>&, std::size_t, const std::vector<T>&);                        \
   template BSpline<T> edge_curve(const BSpline<T>&, int, const std::array<int, 3>&);                                 \
   template bool same_curve(const BSpline<T>&, const BSpline<T>&, const T&, bool, const Limits&);                     \
   template bool same_surface(const BSpline<T>&, const BSpline<T>&, const T&, const Limits&);                         \

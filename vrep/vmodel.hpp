@@ -22,6 +22,7 @@
 // #V-points - #V-curves + #V-surfaces - #V-cells reported (1 for a ball, 0 for a solid torus).
 #pragma once
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,12 +32,26 @@
 
 namespace splinex {
 
+/// Attributes (papers/002 Section 3.1.2) attached to a V-model entity: named constant values (a
+/// boundary condition, a material number) and, for cells, attribute trivariates ("fields") on the
+/// cell's parameter domain. Attribute coordinates of the geometry (point coordinates beyond the
+/// third) are a third kind, carried by the trivariate itself.
+template <class T>
+struct Attributes {
+  std::map<std::string, std::vector<T>> constants;
+  std::map<std::string, BSpline<T>> fields;
+  bool empty() const { return constants.empty() && fields.empty(); }
+};
+
 template <class T>
 struct VModel {
   struct Cell {
     std::vector<std::size_t> trivariates;      // the trivariates that contain the cell (first: its geometry)
     std::vector<std::size_t> half_surfaces;    // its boundary (six faces for a whole trivariate)
     std::string name;
+    std::array<std::size_t, 12> edges{};       // V-curve of edge (along d, sides of the others): 4 d + 2 s_high + s_low
+    std::array<std::size_t, 8> corners{};      // V-point of corner (s0, s1, s2): s0 + 2 s1 + 4 s2
+    Attributes<T> attributes;
   };
   struct HalfSurface {
     std::size_t cell = 0;
@@ -48,15 +63,18 @@ struct VModel {
   };
   struct Surface {
     std::vector<std::size_t> halves;           // 1 (boundary) or 2 (internal)
+    Attributes<T> attributes;
   };
   struct Curve {
     BSpline<T> curve;                          // the geometry (an edge of a trivariate)
     std::array<std::size_t, 2> ends{};         // V-points at its start and end
     std::vector<std::size_t> surfaces;         // V-surfaces that share it
+    Attributes<T> attributes;
   };
   struct Point {
     std::vector<T> at;
     std::vector<std::size_t> curves;
+    Attributes<T> attributes;
   };
   std::vector<BSpline<T>> trivariates;
   std::vector<Cell> cells;
@@ -85,6 +103,29 @@ struct VModel {
 template <class T>
 VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps = T(0), const std::vector<std::string>& names = {},
                const Limits& limits = {});
+
+/// The V-surface of face (dir, side) of a cell; the V-curve of edge `along` at sides[d] of the other
+/// directions; the V-point of a corner (sides of all three).
+template <class T>
+std::size_t surface_of_face(const VModel<T>& M, std::size_t cell, int dir, int side);
+template <class T>
+std::size_t curve_of_edge(const VModel<T>& M, std::size_t cell, int along, const std::array<int, 3>& sides);
+
+/// Attaches an attribute trivariate to a cell: a trivariate (any point size) whose domain is the
+/// cell's trivariate's (ValidationError otherwise).
+template <class T>
+void attach_field(VModel<T>& M, std::size_t cell, const std::string& name, BSpline<T> field, const Limits& limits = {});
+
+/// Geometry and attributes of a cell at a parameter point, exactly in exact arithmetic: the
+/// point (first three coordinates), the attribute coordinates (the rest), every field's value and
+/// the cell's constants.
+template <class T>
+struct CellValue {
+  std::vector<T> point, coordinates;
+  std::map<std::string, std::vector<T>> fields, constants;
+};
+template <class T>
+CellValue<T> evaluate_cell(const VModel<T>& M, std::size_t cell, const std::vector<T>& x);
 
 /// The result of the invariant checks (empty `failures`: every invariant holds).
 struct VModelCheck {

@@ -158,6 +158,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       return point_id(vrep_detail::geometry_of(V, x));
     };
     // Edges -> V-curves: edge (along, sides of the other two).
+    for (int k = 0; k < 8; ++k) cell.corners[k] = corner(k & 1, (k >> 1) & 1, (k >> 2) & 1);
     auto edge_id = [&](int along, std::array<int, 3> sides) {
       std::array<int, 3> a = sides, b = sides;
       a[along] = 0;
@@ -174,6 +175,14 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       if (p1 != p0) model.points[p1].curves.push_back(model.curves.size() - 1);
       return model.curves.size() - 1;
     };
+    for (int along = 0; along < 3; ++along)
+      for (int k = 0; k < 4; ++k) {
+        std::array<int, 3> sides{};
+        const int lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
+        sides[lo] = k & 1;
+        sides[hi] = (k >> 1) & 1;
+        cell.edges[4 * along + k] = edge_id(along, sides);
+      }
     for (int d = 0; d < 3; ++d)
       for (int s = 0; s < 2; ++s) {
         typename M::HalfSurface h;
@@ -219,6 +228,50 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
     model.cells.push_back(std::move(cell));
   }
   return model;
+}
+
+template <class T>
+std::size_t surface_of_face(const VModel<T>& M, std::size_t cell, int dir, int side) {
+  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0.." + std::to_string(M.cells.size() - 1));
+  if (dir < 0 || dir > 2 || side < 0 || side > 1) throw ValidationError("face", "is not a face", "give [direction 0..2, side 0|1]");
+  for (std::size_t h : M.cells[cell].half_surfaces)
+    if (M.half_surfaces[h].dir == dir && M.half_surfaces[h].side == side) return M.half_surfaces[h].surface;
+  throw ValidationError("face", "the cell has no such face", "give a face of the cell");
+}
+
+template <class T>
+std::size_t curve_of_edge(const VModel<T>& M, std::size_t cell, int along, const std::array<int, 3>& sides) {
+  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0.." + std::to_string(M.cells.size() - 1));
+  if (along < 0 || along > 2) throw ValidationError("edge", "direction must be 0..2", "give the direction the edge runs along");
+  const int lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
+  if ((sides[lo] | sides[hi]) & ~1) throw ValidationError("edge", "sides must be 0 or 1", "give the sides of the other two directions");
+  return M.cells[cell].edges[4 * along + sides[lo] + 2 * sides[hi]];
+}
+
+template <class T>
+void attach_field(VModel<T>& M, std::size_t cell, const std::string& name, BSpline<T> field, const Limits& limits) {
+  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0.." + std::to_string(M.cells.size() - 1));
+  validate(field, limits);
+  const auto& V = M.trivariates[M.cells[cell].trivariates.front()];
+  if (field.dim() != 3) throw ValidationError("attributes." + name, "is not a trivariate", "give an attribute trivariate on the cell's domain");
+  for (int d = 0; d < 3; ++d)
+    if (!(field.domain_lo(d) == V.domain_lo(d)) || !(field.domain_hi(d) == V.domain_hi(d)))
+      throw ValidationError("attributes." + name + ".knots[" + std::to_string(d) + "]", "spans another domain than the cell's trivariate",
+                            "give the field on the cell's parameter domain (it shares the cell's parameters)");
+  M.cells[cell].attributes.fields[name] = std::move(field);
+}
+
+template <class T>
+CellValue<T> evaluate_cell(const VModel<T>& M, std::size_t cell, const std::vector<T>& x) {
+  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0.." + std::to_string(M.cells.size() - 1));
+  const auto& c = M.cells[cell];
+  CellValue<T> out;
+  const auto v = evaluate(M.trivariates[c.trivariates.front()], x);
+  out.point.assign(v.begin(), v.begin() + 3);
+  out.coordinates.assign(v.begin() + 3, v.end());
+  for (const auto& [name, F] : c.attributes.fields) out.fields[name] = evaluate(F, x);
+  out.constants = c.attributes.constants;
+  return out;
 }
 
 template <class T>

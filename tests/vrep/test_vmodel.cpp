@@ -133,3 +133,30 @@ TEST_CASE("vmodel: a float gluing tolerance glues faces that differ and misses n
   for (const auto& V : cyl) clean.push_back(convert<double>(V, [](const R& x) { return to_double(x); }));
   check_model(glue(clean, 1e-12), {16, 32, 22, 5, 8, 1});  // rounding the exact primitive misses no glue here
 }
+
+TEST_CASE("vmodel attributes: fields on the cell's domain, constants on entities, evaluated exactly") {
+  auto two = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  two.push_back(box_cells<R>({1, 0, 0}, {2, 1, 1})[0]);
+  auto M = glue(two);
+  // The shared face: cell 0's u = 1 face is cell 1's u = 0 face, one V-surface.
+  CHECK(surface_of_face(M, 0, 0, 1) == surface_of_face(M, 1, 0, 0));
+  CHECK(surface_of_face(M, 0, 0, 0) != surface_of_face(M, 1, 0, 1));
+  // The edge along w at u = 1, v = 0 of cell 0 is the edge at u = 0, v = 0 of cell 1.
+  CHECK(curve_of_edge(M, 0, 2, {1, 0, 0}) == curve_of_edge(M, 1, 2, {0, 0, 0}));
+  CHECK(M.cells[0].corners[1] == M.cells[1].corners[0]);  // corner (1, 0, 0) of cell 0 is (0, 0, 0) of cell 1
+  // A field: the distance-like polynomial u^2 + v w on the cell's domain.
+  const auto F = spline_from<R>({2, 1, 1}, {{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}}, 1, [](const std::vector<std::size_t>& i) {
+    const R u = i[0] == 0 ? R(0) : i[0] == 1 ? R(0) : R(1);  // Bernstein coefficients of u^2: 0, 0, 1
+    return std::vector<R>{u + R(static_cast<long>(i[1] * i[2]))};
+  });
+  attach_field(M, 0, "f", F);
+  M.cells[0].attributes.constants["material"] = {R(7)};
+  const auto v = evaluate_cell(M, 0, {R(1, 3), R(1, 2), R(3, 4)});
+  CHECK(v.point == std::vector<R>{R(1, 3), R(1, 2), R(3, 4)});
+  CHECK(v.fields.at("f") == std::vector<R>{R(1, 9) + R(3, 8)});
+  CHECK(v.constants.at("material") == std::vector<R>{R(7)});
+  auto G = F;
+  G.knots[0] = {0, 0, 0, 2, 2, 2};
+  CHECK_THROWS_AS(attach_field(M, 0, "g", G), ValidationError);
+  CHECK_THROWS_AS(evaluate_cell(M, 5, {R(0), R(0), R(0)}), ValidationError);
+}
