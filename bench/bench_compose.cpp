@@ -4,6 +4,8 @@
 // surface, exact (GMP) and double; prints exact/double and the bit sizes of the exact tiles'
 // coefficients (numerator + denominator bits), against the input's.
 #include <benchmark/benchmark.h>
+
+#include "bench/ratio_reporter.hpp"
 #include <gmp.h>
 
 #include <iomanip>
@@ -93,14 +95,6 @@ void untrim_star(benchmark::State& st, const TeapotSurface& surf) {
   st.counters["control_points"] = static_cast<double>(cps);
 }
 
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, double> ns;
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs) ns[r.run_name.function_name] = r.GetAdjustedRealTime();  // without "/iterations:1"
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
 
 }  // namespace
 

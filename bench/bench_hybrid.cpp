@@ -3,6 +3,8 @@
 // domains, p = 2, Example 2.1's knots); prints exact/double per n.
 #include <benchmark/benchmark.h>
 
+#include "bench/ratio_reporter.hpp"
+
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -50,14 +52,6 @@ void eval(benchmark::State& st, int n, bool derivatives) {
   st.SetItemsProcessed(static_cast<long>(st.iterations() * X.size()));
 }
 
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, double> ns;
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs) ns[r.run_name.function_name] = r.GetAdjustedRealTime();
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
 
 }  // namespace
 

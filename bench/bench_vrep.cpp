@@ -2,6 +2,8 @@
 // cone, torus), exact (GMP rationals) and double, in one run; prints exact/double per step.
 #include <benchmark/benchmark.h>
 
+#include "bench/ratio_reporter.hpp"
+
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -34,14 +36,6 @@ void step(benchmark::State& st, const std::string& name, const std::string& what
   }
 }
 
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, double> ns;
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs) ns[r.run_name.function_name] = r.GetAdjustedRealTime();
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
 
 }  // namespace
 

@@ -172,6 +172,19 @@ std::vector<std::vector<Rational>> domain_grid(const BSpline<Rational>& S) {
   return pts;
 }
 
+/// An empty report for a composition: the scale of the function errors is the largest
+/// coefficient of the exact patches.
+VerifyReport composition_report(const std::string& operation, const TrimmedComposition<Rational>& ref, std::size_t results,
+                                const VerifyOptions& options) {
+  VerifyReport rep;
+  rep.operation = operation;
+  rep.precision = options.precision;
+  rep.results = results;
+  for (const auto& p : ref.patches)
+    for (const auto& x : p.patch.net.points) rep.reference_scale = std::max(rep.reference_scale, Rational(abs(x)));
+  return rep;
+}
+
 void add_value_error(VerifyReport& rep, const std::vector<Rational>& exact, const std::vector<Rational>& cand) {
   for (std::size_t c = 0; c < exact.size(); ++c) rep.values.add(exact[c], cand[c]);
 }
@@ -219,12 +232,7 @@ VerifyReport verify_trimmed_composition(const BSpline<Rational>& T, const BSplin
     cand.push_back(std::move(p));
   }
 
-  VerifyReport rep;
-  rep.operation = "compose --method trimmed";
-  rep.precision = options.precision;
-  rep.results = cand.size();
-  for (const auto& p : ref.patches)
-    for (const auto& x : p.patch.net.points) rep.reference_scale = std::max(rep.reference_scale, Rational(abs(x)));
+  VerifyReport rep = composition_report("compose --method trimmed", ref, cand.size(), options);
   int verdict = 0;
   if (cand.size() != ref.patches.size()) {
     verdict = 2;
@@ -359,12 +367,7 @@ VerifyReport verify_tensor_composition(const BSpline<Rational>& T, const BSpline
   const Json& tiles = field(candidate, "tiles", "candidate", "give the output of splinex compose --method tensor");
   if (!tiles.is_array()) throw ValidationError("candidate.tiles", "is not an array", "give a list of tiles");
 
-  VerifyReport rep;
-  rep.operation = "compose --method tensor";
-  rep.precision = options.precision;
-  rep.results = tiles.size();
-  for (const auto& p : ref.patches)
-    for (const auto& x : p.patch.net.points) rep.reference_scale = std::max(rep.reference_scale, Rational(abs(x)));
+  VerifyReport rep = composition_report("compose --method tensor", ref, tiles.size(), options);
   int verdict = 0;
   if (exact_tiles && exact_tiles->tiles.size() != tiles.size()) {
     verdict = 2;

@@ -43,11 +43,10 @@ std::string g17(double x) {
   return buf;
 }
 
+/// x as the double nearest to it (exact for double; through the exact rational otherwise).
 template <class T>
 double dbl(const T& x) {
-  if constexpr (std::is_same_v<T, double>) return x;
-  else if constexpr (std::is_same_v<T, Mpfr>) return mpfr_get_d(x.get(), MPFR_RNDN);
-  else return to_double(x);
+  return to_double(ArithTraits<T>::to_rational(x));
 }
 
 }  // namespace

@@ -75,6 +75,17 @@ def judged_row(seed, suite, op, S, tags):
             "min_gap_log2": round(min_gap_log2(S), 3)}
 
 
+def verify_result(S, op, u, xs, result):
+    """splinex.verify of a peer's result for op on S: result is a spline dict (insert: knot u;
+    elevate: by one) or, for eval, the values at xs."""
+    import splinex
+    if op == "eval":
+        return splinex.verify("eval", S, {"at": [[x] for x in xs], "values": result})
+    if op == "insert":
+        return splinex.verify("insert-knots", S, result, knots=[u])
+    return splinex.verify("elevate", S, result, by=1)
+
+
 def verify_into(row, rep):
     row.update({"structure": rep.structure, "bits_lost": rep.bits_lost, "certified": rep.certified,
                 "function_upper": float(rep.function_upper)})

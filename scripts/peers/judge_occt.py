@@ -19,7 +19,7 @@ from pathlib import Path
 import splinex
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import double_inputs, judged_row, verify_into, write_results  # noqa: E402
+from common import double_inputs, judged_row, verify_into, verify_result, write_results  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -65,15 +65,13 @@ def main():
                     raise RuntimeError("OCCT: " + a["failure"][:100])
                 # The peer printed doubles: read them as the doubles they are (a str would be exact).
                 if op == "eval":
-                    vals = [[float(v) for v in r] for r in a["values"]]
-                    rep = splinex.verify("eval", S, {"at": [[x] for x in xs], "values": vals})
+                    result = [[float(v) for v in r] for r in a["values"]]
                 else:
-                    cand = {"degrees": [a["degree"]], "knots": [[float(v) for v in a["knots"]]],
-                            "points": [[float(v) for v in r] for r in a["points"]]}
+                    result = {"degrees": [a["degree"]], "knots": [[float(v) for v in a["knots"]]],
+                              "points": [[float(v) for v in r] for r in a["points"]]}
                     if "weights" in a:
-                        cand["weights"] = [float(w) for w in a["weights"]]
-                    rep = (splinex.verify("insert-knots", S, cand, knots=[u]) if op == "insert"
-                           else splinex.verify("elevate", S, cand, by=1))
+                        result["weights"] = [float(w) for w in a["weights"]]
+                rep = verify_result(S, op, u, xs, result)
                 verify_into(row, rep)
             except Exception as e:
                 row["failure"] = f"{type(e).__name__}: {str(e)[:120]}"

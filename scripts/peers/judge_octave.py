@@ -20,7 +20,7 @@ from pathlib import Path
 import splinex
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import double_inputs, homogeneous_input, judged_row, verify_into, write_results  # noqa: E402  (the same input handling and figure)
+from common import double_inputs, homogeneous_input, judged_row, verify_into, verify_result, write_results  # noqa: E402  (the same input handling and figure)
 
 
 def mat(rows):
@@ -114,18 +114,16 @@ def main():
                     raise RuntimeError("Octave: " + r[1][:100])
                 knots, coef = r
                 if op == "eval":
-                    vals = [list(v) for v in zip(*coef)]
-                    rep = splinex.verify("eval", S, {"at": [[x] for x in xs], "values": vals})
+                    result = [list(v) for v in zip(*coef)]
                 elif "weights" in S:  # homogeneous rows (w x, w y, w z, w): the rational they represent, exactly
                     q = len(S["points"][0])
                     cols = list(zip(*coef))
-                    cand = {"degrees": [p + (op == "elevate")], "knots": [knots],
-                            "points": [[Fraction(h[c]) / Fraction(h[3]) for c in range(q)] for h in cols],
-                            "weights": [h[3] for h in cols]}
+                    result = {"degrees": [p + (op == "elevate")], "knots": [knots],
+                              "points": [[Fraction(h[c]) / Fraction(h[3]) for c in range(q)] for h in cols],
+                              "weights": [h[3] for h in cols]}
                 else:
-                    cand = {"degrees": [p + (op == "elevate")], "knots": [knots], "points": [list(v) for v in zip(*coef)]}
-                    rep = (splinex.verify("insert-knots", S, cand, knots=[u]) if op == "insert"
-                           else splinex.verify("elevate", S, cand, by=1))
+                    result = {"degrees": [p + (op == "elevate")], "knots": [knots], "points": [list(v) for v in zip(*coef)]}
+                rep = verify_result(S, op, u, xs, result)
                 verify_into(row, rep)
             except Exception as e:
                 row["failure"] = f"{type(e).__name__}: {str(e)[:120]}"

@@ -29,7 +29,7 @@ import numpy as np
 from scipy.interpolate import BSpline, insert
 
 import splinex
-from common import double_inputs, judged_row, verify_into, write_results
+from common import double_inputs, judged_row, verify_into, verify_result, write_results
 
 
 def scipy_insert(S, u):
@@ -68,14 +68,12 @@ def main():
             row = judged_row(seed, suite, op, S, tags)
             try:
                 if op == "insert":
-                    cand = scipy_insert(S, u)
-                    rep = splinex.verify("insert-knots", S, cand, knots=[u])
+                    result = scipy_insert(S, u)
                 else:
-                    vals = scipy_eval(S, xs)
-                    if any(not math.isfinite(v) for r in vals for v in r):
+                    result = scipy_eval(S, xs)
+                    if any(not math.isfinite(v) for r in result for v in r):
                         raise ArithmeticError("SciPy returned NaN/inf")
-                    rep = splinex.verify("eval", S, {"at": [[x] for x in xs], "values": vals})
-                verify_into(row, rep)
+                verify_into(row, verify_result(S, op, u, xs, result))
             except Exception as e:  # SciPy refused or crashed on a legal input: a finding
                 row["failure"] = f"{type(e).__name__}: {str(e)[:100]}"
             rows.append(row)
