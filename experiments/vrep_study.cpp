@@ -50,12 +50,6 @@ void move_face_corner(BSpline<Rational>& V, int dir, int side, const Rational& d
   V.points[k * V.q + 2] += delta;
 }
 
-std::string sci(double x) {
-  std::ostringstream o;
-  o.precision(2);
-  o << std::scientific << x;
-  return o.str();
-}
 
 }  // namespace
 

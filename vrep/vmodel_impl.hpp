@@ -143,7 +143,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       for (int c = 0; c < 3; ++c) same = same && vrep_detail::close(model.points[p].at[c], x[c], eps);
       if (same) return p;
     }
-    model.points.push_back({x, {}});
+    model.points.push_back({x, {}, {}});
     return model.points.size() - 1;
   };
   for (std::size_t t = 0; t < model.trivariates.size(); ++t) {
@@ -170,7 +170,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
         const bool same_ends = (e.ends[0] == p0 && e.ends[1] == p1) || (e.ends[0] == p1 && e.ends[1] == p0);
         if (same_ends && same_curve(e.curve, geom, eps, true, limits)) return c;
       }
-      model.curves.push_back({geom, {p0, p1}, {}});
+      model.curves.push_back({geom, {p0, p1}, {}, {}});
       model.points[p0].curves.push_back(model.curves.size() - 1);
       if (p1 != p0) model.points[p1].curves.push_back(model.curves.size() - 1);
       return model.curves.size() - 1;
@@ -219,7 +219,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
           model.surfaces[h.surface].halves.push_back(hid);
         } else {
           h.surface = model.surfaces.size();
-          model.surfaces.push_back({{hid}});
+          model.surfaces.push_back({{hid}, {}});
           for (std::size_t c : std::set<std::size_t>(h.loop.begin(), h.loop.end())) model.curves[c].surfaces.push_back(h.surface);
         }
         cell.half_surfaces.push_back(hid);
