@@ -31,6 +31,8 @@ void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
     c->add_option("--at", o.at, "split parameter")->required();
   } else if (kind == "reparametrize") {
     c->add_option("--interval", o.interval, "new domain \"lo,hi\" of the direction")->required();
+  } else if (kind == "derivative") {
+    c->add_option("--by", o.by, "the order of the derivative")->check(CLI::Range(1, 1000))->capture_default_str();
   }
 }
 
@@ -64,6 +66,7 @@ Operation make_op(const std::string& kind, const OpOptions& o) {
                                                 : ElevationMethod::automatic;
       break;
     case Operation::Kind::split: op.at = parse_number(o.at, "at"); break;
+    case Operation::Kind::derivative: op.by = o.by; break;
     case Operation::Kind::reparametrize: {
       const auto v = parse_number_list(o.interval, "interval");
       if (v.size() != 2) throw UsageError("interval", "needs two numbers", "write --interval \"lo,hi\"");
@@ -78,7 +81,7 @@ Operation make_op(const std::string& kind, const OpOptions& o) {
 
 Commands add_operations(CLI::App& app) {
   Commands out;
-  for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse"}) {
+  for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative"}) {
     struct Options {
       std::string arith = "exact", file;
       OpOptions op;

@@ -71,11 +71,12 @@ Commands add_verify(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("verify", "judge a result computed elsewhere exactly against the exact reference");
   c->add_option("operation", o->operation,
-                "insert-knots, refine (insert-knots by A5.4), elevate, extract-bezier, split, reparametrize, reverse, eval, "
+                "insert-knots, refine (insert-knots by A5.4), elevate, extract-bezier, split, reparametrize, reverse, derivative "
+                "(the derivative spline, --by its order), eval, "
                 "compose (--method symbolic|interpolation: T(S) as one spline; trimmed: Algorithm 1's patches; "
                 "tensor: Algorithm 2's tiles) or hybrid-eval (the hybrid patch's values)")
       ->required()
-      ->check(CLI::IsMember({"insert-knots", "refine", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "eval",
+      ->check(CLI::IsMember({"insert-knots", "refine", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative", "eval",
                              "compose", "hybrid-eval"}));
   c->add_option("--patch", o->patch, "hybrid-eval: the hybrid patch document");
   c->add_option("--input", o->input, "the input spline document (every operation but compose)");
@@ -103,7 +104,7 @@ Commands add_verify(CLI::App& app) {
                 "insert-knots: a54|boehm; elevate: auto|a59|blossom (the same exact result); compose: the method the candidate "
                 "ran: symbolic|interpolation (one spline), trimmed (Algorithm 1, {\"pieces\": ...}) or tensor (Algorithm 2, "
                 "{\"tiles\": ...})");
-  c->add_option("--by", o->op.by, "elevate: amount");
+  c->add_option("--by", o->op.by, "elevate: amount; derivative: order");
   c->add_option("--at", o->op.at, "split: parameter");
   c->add_option("--interval", o->op.interval, "reparametrize: \"lo,hi\"");
   return {{c, [o](const Context& ctx) {

@@ -20,6 +20,7 @@ std::string Operation::name() const {
     case Kind::split: return "split";
     case Kind::reparametrize: return "reparametrize";
     case Kind::reverse: return "reverse";
+    case Kind::derivative: return "derivative";
     case Kind::identity: break;
   }
   return "identity";
@@ -33,10 +34,11 @@ Operation Operation::parse_kind(const std::string& name) {
   else if (name == "split") op.kind = Kind::split;
   else if (name == "reparametrize") op.kind = Kind::reparametrize;
   else if (name == "reverse") op.kind = Kind::reverse;
+  else if (name == "derivative") op.kind = Kind::derivative;
   else if (name == "identity") op.kind = Kind::identity;
   else
     throw UsageError("operation", "unknown operation \"" + name + "\"",
-                     "use insert-knots, elevate, extract-bezier, split, reparametrize, reverse or identity");
+                     "use insert-knots, elevate, extract-bezier, split, reparametrize, reverse, derivative or identity");
   return op;
 }
 

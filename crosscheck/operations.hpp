@@ -11,12 +11,12 @@
 namespace splinex {
 
 struct Operation {
-  enum class Kind { insert_knots, elevate, extract_bezier, split, reparametrize, reverse, identity };
+  enum class Kind { insert_knots, elevate, extract_bezier, split, reparametrize, reverse, derivative, identity };
   Kind kind = Kind::identity;
   int dir = 0;
   std::vector<Rational> knots;  // insert_knots
   bool boehm = false;           // insert_knots: A5.1 knot by knot instead of A5.4
-  int by = 1;                   // elevate
+  int by = 1;                   // elevate: the amount; derivative: the order
   /// A5.9 unless asked otherwise: the crosscheck suite measures what each method loses (the CLI's
   /// default, `auto`, is ElevationMethod::automatic).
   ElevationMethod method = ElevationMethod::bezier_pieces;

@@ -1,6 +1,7 @@
 #pragma once
 #include "crosscheck/operations.hpp"
 #include "float/rounding.hpp"
+#include "spline/hodograph.hpp"
 
 namespace splinex {
 
@@ -26,6 +27,12 @@ std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, 
     }
     case Operation::Kind::reparametrize: return {reparametrize(S, op.dir, round_checked<T>(op.lo, "interval[0]"), round_checked<T>(op.hi, "interval[1]"))};
     case Operation::Kind::reverse: return {reverse(S, op.dir)};
+    case Operation::Kind::derivative: {  // the derivative as a spline (hodograph), `by` times
+      if (op.by < 1) throw UsageError("by", "the order of the derivative must be at least 1", "give --by 1, 2, ...");
+      BSpline<T> D = S;
+      for (int k = 0; k < op.by; ++k) D = hodograph(D, op.dir);
+      return {D};
+    }
     case Operation::Kind::identity: break;
   }
   return {S};

@@ -122,6 +122,7 @@ Operation make_operation(const std::string& name, const py::kwargs& kw) {
       op.knots = to_rationals(kw["knots"], "knots");
       break;
     case Operation::Kind::elevate: op.by = kw.contains("by") ? kw["by"].cast<int>() : 1; break;
+    case Operation::Kind::derivative: op.by = kw.contains("order") ? kw["order"].cast<int>() : 1; break;
     case Operation::Kind::split:
       if (!kw.contains("at")) throw UsageError("at", "split needs a parameter", "pass at=...");
       op.at = to_rational(kw["at"], "at");
@@ -266,7 +267,7 @@ PYBIND11_MODULE(splinex, m) {
       },
       py::arg("operation"), py::arg("spline"), py::arg("candidate"), py::arg("precision") = 53, py::arg("factor") = 2,
       "Judge a candidate result exactly: operation is insert-knots (knots=...), elevate (by=...), extract-bezier, "
-      "split (at=...), reparametrize (interval=(lo, hi)), reverse or eval (candidate {\"at\": [...], \"values\": [...]}); "
+      "split (at=...), reparametrize (interval=(lo, hi)), reverse, derivative (order=...) or eval (candidate {\"at\": [...], \"values\": [...]}); "
       "dir=... selects the direction. Floats are taken as the doubles they are.");
   m.def(
       "verify_compose",

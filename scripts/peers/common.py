@@ -77,12 +77,14 @@ def judged_row(seed, suite, op, S, tags):
 
 def verify_result(S, op, u, xs, result):
     """splinex.verify of a peer's result for op on S: result is a spline dict (insert: knot u;
-    elevate: by one) or, for eval, the values at xs."""
+    elevate: by one; derivative: the first derivative as a spline) or, for eval, the values at xs."""
     import splinex
     if op == "eval":
         return splinex.verify("eval", S, {"at": [[x] for x in xs], "values": result})
     if op == "insert":
         return splinex.verify("insert-knots", S, result, knots=[u])
+    if op == "derivative":
+        return splinex.verify("derivative", S, result, order=1)
     return splinex.verify("elevate", S, result, by=1)
 
 

@@ -6,8 +6,9 @@
 On splinex's structured generator (curves: degree 0..7, C^-1 knots, single spans, unclamped ends,
 knots 2^-60 apart, shifted domains; polynomial, since scipy.interpolate.BSpline has no weights),
 each case rounded to double (the input SciPy gets, so SciPy is judged on its own arithmetic):
-  - insert: scipy.interpolate.insert of one knot inside the domain, per coordinate;
-  - eval:   scipy.interpolate.BSpline(t, c, k)(x) at 9 points of the domain.
+  - insert:     scipy.interpolate.insert of one knot inside the domain, per coordinate;
+  - derivative: BSpline(t, c, k).derivative() (splder), against the exact hodograph;
+  - eval:       scipy.interpolate.BSpline(t, c, k)(x) at 9 points of the domain.
 Every result goes to splinex.verify against the exact result on the same (rounded) input. Writes
 scipy.md (the table: bits lost median / max, structure mismatches, failures), scipy.json (every
 case), scipy_bits_vs_degree.svg and scipy_bits_vs_spacing.svg. Debian's python3-scipy lives in /usr/lib/python3/dist-packages;
@@ -45,6 +46,19 @@ def scipy_insert(S, u):
     return {"degrees": [p], "knots": [[float(x) for x in t_new]], "points": pts}
 
 
+def scipy_derivative(S):
+    """BSpline.derivative(): the first derivative as a B-spline (scipy.interpolate.splder)."""
+    p = S["degrees"][0]
+    t = np.array([float(x) for x in S["knots"][0]])
+    P = np.array([[float(x) for x in pt] for pt in S["points"]])
+    d = BSpline(t, P, p).derivative()
+    n = len(d.t) - d.k - 1
+    pts = [[float(v) for v in row] for row in np.asarray(d.c)[:n]]
+    if any(not math.isfinite(v) for r in pts for v in r):
+        raise ArithmeticError("SciPy's derivative has NaN/inf coefficients")
+    return {"degrees": [int(d.k)], "knots": [[float(x) for x in d.t]], "points": pts}
+
+
 def scipy_eval(S, xs):
     p = S["degrees"][0]
     t = np.array([float(x) for x in S["knots"][0]])
@@ -64,11 +78,13 @@ def main():
     for seed, suite, S, tags, u, xs in inputs:
         if "weights" in S:
             continue  # scipy.interpolate.BSpline has no weights: the rational suite is not SciPy's
-        for op in ("insert", "eval"):
+        for op in ("insert", "derivative", "eval"):
             row = judged_row(seed, suite, op, S, tags)
             try:
                 if op == "insert":
                     result = scipy_insert(S, u)
+                elif op == "derivative":
+                    result = scipy_derivative(S)
                 else:
                     result = scipy_eval(S, xs)
                     if any(not math.isfinite(v) for r in result for v in r):
@@ -84,10 +100,11 @@ def main():
                        "simple dyadic knots) and the report's adversarial curves (knots 1/10 and 1/10 + 2^-50, degree 15, "
                        "1000 knots within 1e-6, knots 2^-30 apart, 200 knots), rounded to double (no rational curves: "
                        "BSpline has no weights); one knot inserted (`scipy.interpolate.insert`, per "
-                       "coordinate) and values at 9 points (`BSpline.__call__`), each judged by `splinex.verify` against "
+                       "coordinate), the first derivative as a spline (`BSpline.derivative`, splder) and values at 9 points "
+                       "(`BSpline.__call__`), each judged by `splinex.verify` against "
                        "the exact result on the same input. Bits lost: the worst of the coefficient (or value) error and "
                        "the certified function-level bound, relative to the largest reference coefficient (or value), of 53.",
-                       rows, ("insert", "eval"), cases, f"SciPy {scipy.__version__}")
+                       rows, ("insert", "derivative", "eval"), cases, f"SciPy {scipy.__version__}")
     print("\n".join(md[:10]))
     return 0
 
