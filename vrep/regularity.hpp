@@ -11,7 +11,8 @@
 // singular point; corner values of both signs, in one piece or across pieces, a sign change:
 // singular, with both points); a box whose coefficients all have the sign found is certified; the
 // rest is subdivided at midpoints (de Casteljau, exact in exact arithmetic) up to `max_levels`,
-// after which the verdict is "undecided". In float arithmetic the same test runs in floats (what
+// after which the verdict is "undecided" (also when the boxes alive would exceed the control-point
+// limit in coefficients; the sizes of det J are checked against the limits before any work). In float arithmetic the same test runs in floats (what
 // a float kernel would decide); the report compares it with the exact verdict.
 #pragma once
 #include <string>

@@ -5,6 +5,7 @@
 #include "compose/compose_impl.hpp"  // detail::Bern, bern_product
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
+#include "spline/knots.hpp"
 #include "vrep/regularity.hpp"
 
 namespace splinex {
@@ -145,6 +146,22 @@ int sign_of(const T& x) {
   return T(0) < x ? 1 : x < T(0) ? -1 : 0;
 }
 
+/// det J's numerator degrees, checked against the limits before any work: the degree limit per
+/// direction and, for all pieces together, the control-point limit. Returns the coefficients of
+/// one piece's numerator.
+template <class T>
+std::size_t check_jacobian_size(const BSpline<T>& V, const Limits& limits) {
+  const int extra = V.is_rational() ? 4 : 3;
+  std::size_t per_piece = 1, pieces = 1;
+  for (int d = 0; d < 3; ++d) {
+    limits.check_degree(static_cast<long>(extra) * V.degrees[d] - 1, "degrees");
+    per_piece *= static_cast<std::size_t>(extra * V.degrees[d]);
+    pieces *= breakpoints(V.knots[d], V.degrees[d], V.count(d)).size() - 1;
+  }
+  limits.check_count(per_piece * pieces, "det J");
+  return per_piece;
+}
+
 }  // namespace vrep_detail
 
 template <class T>
@@ -154,6 +171,7 @@ BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits) {
     throw ValidationError("degrees", "det J needs a trivariate with points in R^3", "give a spline with three directions and q >= 3");
   for (int d = 0; d < 3; ++d)
     if (V.degrees[d] == 0) throw ValidationError("degrees", "has degree 0 in a direction: det J is 0", "elevate it first");
+  vrep_detail::check_jacobian_size(V, limits);
   const BezierForm<T> F = bezier_form(V, limits);
   const int extra = V.is_rational() ? 4 : 3;
   BSpline<T> J;
@@ -207,6 +225,10 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
     T lo[3], hi[3];
     int level;
   };
+  // Memory: the boxes alive at once hold at most the control-point limit of coefficients.
+  const std::size_t per_piece = vrep_detail::check_jacobian_size(V, limits);
+  const std::size_t box_budget = std::max<std::size_t>(64, limits.max_control_points / per_piece);
+  bool budget_hit = false;
   const BezierForm<T> F = bezier_form(V, limits);
   std::deque<Box> todo;
   for (std::size_t k = 0; k < F.size(); ++k) {
@@ -263,9 +285,10 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
       }
     }
     if (lo_sign == hi_sign && lo_sign == global) continue;  // certified on this box
-    if (b.level >= max_levels) {
+    if (b.level >= max_levels || todo.size() + 8 > box_budget) {
       if (!undecided) undecided_at = {(b.lo[0] + b.hi[0]) / T(2), (b.lo[1] + b.hi[1]) / T(2), (b.lo[2] + b.hi[2]) / T(2)};
       undecided = true;
+      budget_hit = budget_hit || b.level < max_levels;
       continue;
     }
     // Subdivide at the midpoints of all three directions: 8 children.
@@ -289,7 +312,9 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
   if (undecided) {
     rep.verdict = Regularity::undecided;
     rep.point = undecided_at;
-    rep.reason = "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels";
+    rep.reason = budget_hit ? "Bernstein coefficients of both signs when the boxes reached the memory budget (" +
+                                  std::to_string(box_budget) + " boxes; raise --max-control-points)"
+                            : "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels";
     return rep;
   }
   rep.verdict = Regularity::regular;

@@ -390,3 +390,28 @@ TEST_CASE("vrep in double: the constructors and the regularity test run in float
   CHECK(re.verdict == Regularity::singular);
   CHECK(rd.verdict == re.verdict);  // here double agrees; where it does not is measured in the report
 }
+
+TEST_CASE("vrep regularity: sizes checked before the work, the box budget bounds memory, undecided is honest") {
+  // z = (w - 1/3)^3: det J = 3 (w - 1/3)^2 vanishes on the plane w = 1/3, which no dyadic
+  // subdivision hits: the honest verdict is "undecided", never "regular".
+  const auto V = spline_from<R>({1, 1, 3}, {{0, 0, 1, 1}, {0, 0, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}}, 3, [](const std::vector<std::size_t>& i) {
+    // Bernstein coefficients of (w - 1/3)^3 on [0, 1]: (-1/27, 2/27, -1/27 ... ) from the blossom.
+    const R a = R(-1, 3), b = R(2, 3);  // w - 1/3 at w = 0 and w = 1
+    const R c[4] = {a * a * a, a * a * b, a * b * b, b * b * b};
+    return std::vector<R>{R(static_cast<long>(i[0])), R(static_cast<long>(i[1])), c[i[2]]};
+  });
+  CHECK(evaluate(V, {R(0), R(0), R(1, 3)})[2] == 0);
+  const auto rep = certify_regularity(V, 4);
+  CHECK(rep.verdict == Regularity::undecided);
+  Limits small;
+  small.max_control_points = 2000;
+  const auto capped = certify_regularity(V, 12, small);
+  CHECK(capped.verdict == Regularity::undecided);
+  CHECK(capped.reason.find("memory budget") != std::string::npos);
+  CHECK(capped.boxes < 2000);
+  // det J of a cube split into 3 x 3 x 3 pieces needs 27 x 6^3 coefficients: refused before the work.
+  Limits tiny;
+  tiny.max_control_points = 500;
+  CHECK_THROWS_AS(certify_regularity(identity_cube(2, {0, 0, 0, q("1/3"), q("2/3"), 1, 1, 1}), 6, tiny), SizeLimitError);
+  CHECK_THROWS_AS(jacobian_determinant(identity_cube(2, {0, 0, 0, q("1/3"), q("2/3"), 1, 1, 1}), tiny), SizeLimitError);
+}
