@@ -153,6 +153,7 @@ BSpline<T> extrude(const BSpline<T>& S, const std::vector<T>& V, const Limits& l
   if (V.size() != static_cast<std::size_t>(S.q))
     throw ValidationError("vector", "has " + std::to_string(V.size()) + " coordinates, the surface's points " + std::to_string(S.q),
                           "give the extrusion vector with one entry per point coordinate (0 for attributes)");
+  limits.check_count(2 * S.size(), "trivariate");
   BSpline<T> R;
   R.degrees = {S.degrees[0], S.degrees[1], 1};
   R.knots = {S.knots[0], S.knots[1], {T(0), T(0), T(1), T(1)}};
@@ -179,6 +180,7 @@ BSpline<T> ruled(const BSpline<T>& S1, const BSpline<T>& S2, const Limits& limit
                           "give two surfaces with the same point size");
   const bool rational = S1.is_rational() || S2.is_rational();
   auto [A, B] = make_compatible(rational ? vrep_detail::as_rational(S1) : S1, rational ? vrep_detail::as_rational(S2) : S2, limits);
+  limits.check_count(2 * A.size(), "trivariate");
   BSpline<T> R;
   R.degrees = {A.degrees[0], A.degrees[1], 1};
   R.knots = {A.knots[0], A.knots[1], {T(0), T(0), T(1), T(1)}};
@@ -221,6 +223,7 @@ BSpline<T> revolve(const BSpline<T>& S, int axis, int quarters, const Limits& li
   vrep_detail::require_surface(S, "surface");
   if (axis < 0 || axis > 2) throw ValidationError("axis", "must be 0, 1 or 2 (x, y, z)", "give a coordinate axis");
   const BSpline<T> C = rational_circle<T>(quarters);
+  limits.check_count(S.size() * C.size(), "trivariate");
   // The plane rotated: (a, b) -> (a cx - b cy, a cy + b cx); about z: (x, y); about x: (y, z); about y: (z, x).
   const int ia = (axis + 1) % 3, ib = (axis + 2) % 3;
   BSpline<T> R;
@@ -291,6 +294,7 @@ BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>& faces, co
   }
   const int q = F[0][0].q;
   const std::size_t nu = F[2][0].count(0), nv = F[2][0].count(1), nw = F[0][0].count(1);
+  limits.check_count(nu * nv * nw, "trivariate");
   // Control point accessors of the faces: F0(a)(j, k), F1(b)(i, k), F2(c)(i, j).
   auto f0 = [&](int a, std::size_t j, std::size_t k) { return &F[0][a].points[(j + nv * k) * q]; };
   auto f1 = [&](int b, std::size_t i, std::size_t k) { return &F[1][b].points[(i + nu * k) * q]; };
@@ -375,6 +379,7 @@ BSpline<T> sweep(const std::vector<BSpline<T>>& surfaces, const std::vector<T>& 
   BSpline<T> common = S[0];
   for (std::size_t k = 1; k < m1; ++k) common = make_compatible(common, S[k], limits).first;
   for (auto& s : S) s = make_compatible(common, s, limits).second;
+  limits.check_count(S[0].size() * m1, "trivariate");
   // Knots by averaging (NURBS Book eq. 9.8).
   const std::size_t m = m1 - 1;
   std::vector<T> W(static_cast<std::size_t>(d) + 1, at.front());
