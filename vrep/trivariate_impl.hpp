@@ -35,6 +35,25 @@ BSpline<T> as_rational(BSpline<T> S) {
   return S;
 }
 
+/// The trivariate of degree 1 in w whose layers w = 0 and w = 1 are the surfaces A and B (same
+/// degrees, knots and form: one function space), checked against the limits before it is built.
+template <class T>
+BSpline<T> two_layers(const BSpline<T>& A, const BSpline<T>& B, const Limits& limits) {
+  limits.check_count(2 * A.size(), "trivariate");
+  BSpline<T> R;
+  R.degrees = {A.degrees[0], A.degrees[1], 1};
+  R.knots = {A.knots[0], A.knots[1], {T(0), T(0), T(1), T(1)}};
+  R.q = A.q;
+  R.points = A.points;
+  R.points.insert(R.points.end(), B.points.begin(), B.points.end());
+  if (A.is_rational()) {
+    R.weights = A.weights;
+    R.weights.insert(R.weights.end(), B.weights.begin(), B.weights.end());
+  }
+  validate(R, limits);
+  return R;
+}
+
 /// Greville abscissae of direction d mapped affinely to [0, 1] (the coefficients of the linear
 /// function that is 0 at the domain's start and 1 at its end; degree >= 1).
 template <class T>
@@ -153,21 +172,10 @@ BSpline<T> extrude(const BSpline<T>& S, const std::vector<T>& V, const Limits& l
   if (V.size() != static_cast<std::size_t>(S.q))
     throw ValidationError("vector", "has " + std::to_string(V.size()) + " coordinates, the surface's points " + std::to_string(S.q),
                           "give the extrusion vector with one entry per point coordinate (0 for attributes)");
-  limits.check_count(2 * S.size(), "trivariate");
-  BSpline<T> R;
-  R.degrees = {S.degrees[0], S.degrees[1], 1};
-  R.knots = {S.knots[0], S.knots[1], {T(0), T(0), T(1), T(1)}};
-  R.q = S.q;
-  R.points = S.points;
-  const std::size_t n = S.size();
-  for (std::size_t i = 0; i < n; ++i)
-    for (int c = 0; c < S.q; ++c) R.points.push_back(S.points[i * S.q + c] + V[c]);
-  if (S.is_rational()) {
-    R.weights = S.weights;
-    R.weights.insert(R.weights.end(), S.weights.begin(), S.weights.end());
-  }
-  validate(R, limits);
-  return R;
+  BSpline<T> top = S;
+  for (std::size_t i = 0; i < S.size(); ++i)
+    for (int c = 0; c < S.q; ++c) top.points[i * S.q + c] += V[c];
+  return vrep_detail::two_layers(S, top, limits);
 }
 
 template <class T>
@@ -180,19 +188,7 @@ BSpline<T> ruled(const BSpline<T>& S1, const BSpline<T>& S2, const Limits& limit
                           "give two surfaces with the same point size");
   const bool rational = S1.is_rational() || S2.is_rational();
   auto [A, B] = make_compatible(rational ? vrep_detail::as_rational(S1) : S1, rational ? vrep_detail::as_rational(S2) : S2, limits);
-  limits.check_count(2 * A.size(), "trivariate");
-  BSpline<T> R;
-  R.degrees = {A.degrees[0], A.degrees[1], 1};
-  R.knots = {A.knots[0], A.knots[1], {T(0), T(0), T(1), T(1)}};
-  R.q = A.q;
-  R.points = A.points;
-  R.points.insert(R.points.end(), B.points.begin(), B.points.end());
-  if (rational) {
-    R.weights = A.weights;
-    R.weights.insert(R.weights.end(), B.weights.begin(), B.weights.end());
-  }
-  validate(R, limits);
-  return R;
+  return vrep_detail::two_layers(A, B, limits);
 }
 
 template <class T>
