@@ -130,6 +130,7 @@ Json report_to_json(const RegularityReport<F>& r) {
 
 struct PrimitiveOptions {
   std::string name, arith = "exact", radius = "1", radius2 = "1/2", height = "2", major = "3", lo = "0,0,0", hi = "1,1,1";
+  int degree = 3, pieces = 4;
 };
 
 template <class F>
@@ -144,6 +145,7 @@ std::vector<BSpline<F>> primitive_cells(const PrimitiveOptions& o) {
   if (o.name == "cone") return cone_cells(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"));
   if (o.name == "torus") return torus_cells(num(o.major, "major"), num(o.radius, "radius"));
   if (o.name == "box") return box_cells(list(o.lo, "lo"), list(o.hi, "hi"));
+  if (o.name == "sphere") return sphere_cells(num(o.radius, "radius"), o.degree, o.pieces);
   if (o.name == "singular-cylinder") return {singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))};
   return {singular_sphere(num(o.radius, "radius"))};
 }
@@ -198,14 +200,17 @@ Commands add_vrep(CLI::App& app) {
   cert->add_option("--levels", co->levels, "subdivision levels before \"undecided\"")->check(CLI::Range(0, 12))->capture_default_str();
   auto po = std::make_shared<PrimitiveOptions>();
   auto* prim = v->add_subcommand("primitive", "a glued primitive V-model (Figure 9) or a singular single trivariate (Figure 8)");
-  prim->add_option("name", po->name, "cylinder, cone, torus (five cells each), box, singular-cylinder, singular-sphere")
+  prim->add_option("name", po->name, "cylinder, cone, torus (five cells each), sphere (seven), box, singular-cylinder, singular-sphere")
       ->required()
-      ->check(CLI::IsMember({"cylinder", "cone", "torus", "box", "singular-cylinder", "singular-sphere"}));
+      ->check(CLI::IsMember({"cylinder", "cone", "torus", "sphere", "box", "singular-cylinder", "singular-sphere"}));
   add_arith_option(prim, po->arith, "exact (GMP), double or mpfr:BITS");
   prim->add_option("--radius", po->radius, "radius (torus: the tube's)")->capture_default_str();
   prim->add_option("--radius2", po->radius2, "cone: the top radius")->capture_default_str();
   prim->add_option("--height", po->height, "cylinder, cone: the height")->capture_default_str();
   prim->add_option("--major", po->major, "torus: the distance of the tube's centre from the axis")->capture_default_str();
+  prim->add_option("--degree", po->degree, "sphere: the patches' degree (radius approximate, direction exact; docs/vrep.md)")
+      ->capture_default_str();
+  prim->add_option("--pieces", po->pieces, "sphere: the patches' polynomial pieces per direction")->capture_default_str();
   prim->add_option("--lo", po->lo, "box: the low corner x,y,z")->capture_default_str();
   prim->add_option("--hi", po->hi, "box: the high corner x,y,z")->capture_default_str();
 

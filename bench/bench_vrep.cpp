@@ -1,5 +1,5 @@
-// V-rep (issue 17): constructing, gluing and certifying the primitives of five cells (cylinder,
-// cone, torus), exact (GMP rationals) and double, in one run; prints exact/double per step.
+// V-rep (issue 17): constructing, gluing and certifying the primitives (cylinder, cone, torus of
+// five cells, the sphere of seven), exact (GMP rationals) and double, in one run; prints exact/double per step.
 #include <benchmark/benchmark.h>
 
 #include "bench/ratio_reporter.hpp"
@@ -21,7 +21,8 @@ template <class T>
 std::vector<BSpline<T>> build(const std::string& name) {
   if (name == "cylinder") return cylinder_cells<T>(T(2), T(3));
   if (name == "cone") return cone_cells<T>(T(2), T(1), T(3));
-  return torus_cells<T>(T(3), T(1));
+  if (name == "torus") return torus_cells<T>(T(3), T(1));
+  return sphere_cells<T>(T(2));
 }
 
 template <class T>
@@ -40,7 +41,7 @@ void step(benchmark::State& st, const std::string& name, const std::string& what
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> prims{"cylinder", "cone", "torus"}, steps{"construct", "glue", "certify"};
+  const std::vector<std::string> prims{"cylinder", "cone", "torus", "sphere"}, steps{"construct", "glue", "certify"};
   for (const auto& p : prims)
     for (const auto& s : steps) {
       benchmark::RegisterBenchmark(("vrep/" + s + "/double/" + p).c_str(), [p, s](benchmark::State& st) { step<double>(st, p, s); })
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   RatioReporter rep;
   benchmark::RunSpecifiedBenchmarks(&rep);
-  std::cout << "\nV-rep primitives of five cells: exact(GMP)/double\nprimitive   construct   glue   certify\n";
+  std::cout << "\nV-rep primitives: exact(GMP)/double\nprimitive   construct   glue   certify\n";
   for (const auto& p : prims) {
     std::cout << std::left << std::setw(12) << p << std::right;
     for (const auto& s : steps) {

@@ -11,6 +11,7 @@
 // the exact verdict on the exact input, the exact verdict on the input rounded to double, and the
 // double test's verdict on it.
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -21,6 +22,7 @@
 #include "float/rounding.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
+#include "vrep/trivariate.hpp"
 #include "vrep/vmodel.hpp"
 
 namespace splinex {
@@ -61,16 +63,17 @@ void vrep_section(ReportContext& ctx) {
   };
   const std::vector<Prim> prims{{"cylinder", cylinder_cells<Rational>(Rational(2), Rational(3))},
                                 {"cone", cone_cells<Rational>(Rational(2), Rational(1), Rational(3))},
-                                {"torus", torus_cells<Rational>(Rational(3), Rational(1))}};
+                                {"torus", torus_cells<Rational>(Rational(3), Rational(1))},
+                                {"sphere", sphere_cells<Rational>(Rational(2))}};
   const std::vector<double> epss{1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
   const std::vector<int> delta_exp{-10, -20, -30, -40, -50, 0};  // 0: delta = 0
   std::ostringstream csv, md;
   csv << "primitive,delta,eps,internal_exact,internal_double,false_glues,missed_glues\n";
   md << "\n## V-rep: what a gluing tolerance does to the topology (issue 17)\n\n"
-     << "![cylinder](vrep_cylinder.svg) ![cone](vrep_cone.svg) ![torus](vrep_torus.svg)\n\n"
+     << "![cylinder](vrep_cylinder.svg) ![cone](vrep_cone.svg) ![torus](vrep_torus.svg) ![sphere](vrep_sphere.svg)\n\n"
         "![singular cylinder](vrep_singular_cylinder.svg) ![singular sphere](vrep_singular_sphere.svg)\n\n"
-     << "Each primitive of five cells is glued exactly (cylinder, cone: 8 internal V-surfaces, Euler characteristic 1; "
-        "torus: 13 internal, Euler characteristic 0). Then one corner control point of the second half of every internal "
+     << "Each primitive is glued exactly (cylinder, cone: five cells, 8 internal V-surfaces, Euler characteristic 1; "
+        "torus: five cells, 13 internal, Euler characteristic 0; sphere: seven cells, 18 internal, Euler characteristic 1). Then one corner control point of the second half of every internal "
         "V-surface is moved by delta along z, exactly; the perturbed cells are glued exactly (the truth) and, rounded to "
         "double, with the float test at eps (every control point within eps after a common function space, as IRIT "
         "does). False glues: twin pairs the float test makes that exact gluing does not; missed: the other way. Every "
@@ -114,7 +117,8 @@ void vrep_section(ReportContext& ctx) {
   // Figures: the primitives exploded (Figure 9) and Figure 8's singular trivariates with det J = 0 marked.
   for (const auto& p : prims)
     write_file_atomically(ctx.options.out_dir + "/vrep_" + p.name + ".svg",
-                          vmodel_svg(glue(p.cells), 0.35, std::string("The ") + p.name + " of five regular cells, exploded", false));
+                          vmodel_svg(glue(p.cells), 0.35,
+                                     std::string("The ") + p.name + " of " + std::to_string(p.cells.size()) + " regular cells, exploded", false));
   write_file_atomically(ctx.options.out_dir + "/vrep_singular_cylinder.svg",
                         vmodel_svg(glue(std::vector<BSpline<Rational>>{singular_cylinder<Rational>(Rational(1), Rational(2))}), 0, "Figure 8 a: one trivariate, singular on its axis", true));
   write_file_atomically(ctx.options.out_dir + "/vrep_singular_sphere.svg",
@@ -130,6 +134,31 @@ void vrep_section(ReportContext& ctx) {
         "soon as eps exceeds delta: the float test cannot tell a perturbation below eps from rounding. Rounding itself "
         "misses no glue of these primitives down to eps = 1e-15 (their shared faces are computed the same way in both "
         "cells, so they round alike).\n\n![false glues](vrep_gluing.svg)\n\n";
+
+  // The sphere's radius: certified deviation against degree and pieces.
+  md << "### The sphere of seven cells: how far its patches are from the sphere\n\n"
+     << "No cube-sphere patch has rational coefficients (its corners are (+-1, +-1, +-1)/sqrt 3), so the patches are "
+        "exact in direction and approximate in radius: (r s, r t, r, P(s, t)) with P the tensor spline interpolating "
+        "sqrt(1 + s^2 + t^2) (vrep/primitives.hpp). `bound` is certified (Bernstein coefficients, exact): "
+        "| |x|^2 / r^2 - 1 | <= bound on the whole patch; `witness` is the largest exact value of it at 17 x 17 "
+        "parameters, so the truth lies between them. The default is degree 3 with 4 pieces.\n\n"
+        "| degree | pieces | bound | witness |\n|---|---|---|---|\n";
+  std::ostringstream scsv;
+  scsv << "degree,pieces,bound,witness\n";
+  auto fmt_sci = [](double v) {
+    std::ostringstream o;
+    o << std::setprecision(3) << std::scientific << v;
+    return o.str();
+  };
+  for (int p : {2, 3, 4, 5})
+    for (int n : {1, 2, 4, 8}) {
+      const auto cells = sphere_cells<Rational>(Rational(1), p, n);
+      const auto d = sphere_deviation(face(cells[1], 2, 1), {Rational(0), Rational(0), Rational(0)}, Rational(1));
+      md << "| " << p << " | " << n << " | " << fmt_sci(to_double(d.bound)) << " | " << fmt_sci(to_double(d.witness)) << " |\n";
+      scsv << p << "," << n << "," << to_double(d.bound) << "," << to_double(d.witness) << "\n";
+    }
+  write_file_atomically(ctx.options.out_dir + "/vrep_sphere_radius.csv", scsv.str());
+  md << "\n";
 
   // Regularity in double near the singular threshold s = 1/3.
   md << "### Certified regularity in double near a singular configuration\n\n"

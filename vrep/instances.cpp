@@ -1,11 +1,66 @@
 // The V-rep templates instantiated for the exact and float arithmetics.
 #include "float/mpfr.hpp"
+#include "spline/bezier.hpp"
+#include "spline/evaluate.hpp"
 #include "vrep/primitives_impl.hpp"
 #include "vrep/regularity_impl.hpp"
 #include "vrep/vmodel_impl.hpp"
 #include "vrep/trivariate_impl.hpp"
 
 namespace splinex {
+
+SphereDeviation sphere_deviation(const BSpline<Rational>& S, const std::vector<Rational>& centre, const Rational& r, int samples) {
+  using detail::Bern;
+  validate(S);
+  if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a surface S(u, v)");
+  if (centre.size() != 3) throw ValidationError("centre", "needs three coordinates", "give x,y,z");
+  if (!(Rational(0) < r)) throw ValidationError("radius", "must be positive", "give a positive radius");
+  if (samples < 2) throw ValidationError("samples", "needs at least 2 per direction", "give samples >= 2");
+  SphereDeviation out;
+  bool first = true;
+  const Rational r2 = r * r;
+  for (const auto& piece : extract_bezier(S)) {
+    const auto& B = piece.spline;
+    // Homogeneous W and W (x_a - c_a); E = sum_a (W (x_a - c_a))^2 - r^2 W^2 = W^2 (|x - c|^2 - r^2).
+    Bern<Rational> w{B.degrees, {}}, e;
+    for (std::size_t i = 0; i < B.size(); ++i) w.c.push_back(B.is_rational() ? B.weights[i] : Rational(1));
+    const auto w2 = detail::bern_product(w, w);
+    e = w2;
+    for (auto& x : e.c) x *= -r2;
+    for (int a = 0; a < 3; ++a) {
+      Bern<Rational> x{B.degrees, {}};
+      for (std::size_t i = 0; i < B.size(); ++i) x.c.push_back(w.c[i] * (B.points[i * B.q + a] - centre[a]));
+      const auto x2 = detail::bern_product(x, x);
+      for (std::size_t i = 0; i < e.c.size(); ++i) e.c[i] += x2.c[i];
+    }
+    Rational emax(0), wmin = w2.c.front();
+    for (const auto& x : e.c) emax = std::max(emax, abs(x));
+    for (const auto& x : w2.c) wmin = std::min(wmin, x);
+    if (!(Rational(0) < wmin))
+      throw ValidationError("surface.weights", "has a Bezier piece whose W^2 is not bounded away from 0 by its coefficients",
+                            "give positive weights");
+    const Rational b = emax / (r2 * wmin);
+    if (first || out.bound < b) out.bound = b;
+    first = false;
+  }
+  for (int j = 0; j < samples; ++j)
+    for (int i = 0; i < samples; ++i) {
+      std::vector<Rational> x(2);
+      for (int d = 0; d < 2; ++d) {
+        const Rational f = Rational(d == 0 ? i : j) / Rational(samples - 1);
+        x[d] = S.domain_lo(d) + f * (S.domain_hi(d) - S.domain_lo(d));
+      }
+      const auto p = evaluate(S, x);
+      Rational d2(0);
+      for (int a = 0; a < 3; ++a) d2 += (p[a] - centre[a]) * (p[a] - centre[a]);
+      const Rational dev = abs(d2 / r2 - Rational(1));
+      if (out.at.empty() || out.witness < dev) {
+        out.witness = dev;
+        out.at = x;
+      }
+    }
+  return out;
+}
 
 const char* to_string(Regularity r) {
   return r == Regularity::regular ? "regular" : r == Regularity::singular ? "singular" : "undecided";
@@ -36,6 +91,7 @@ const char* to_string(Regularity r) {
   template std::vector<BSpline<T>> cone_cells(const T&, const T&, const T&);                                         \
   template std::vector<BSpline<T>> torus_cells(const T&, const T&);                                                  \
   template std::vector<BSpline<T>> box_cells(const std::vector<T>&, const std::vector<T>&);                          \
+  template std::vector<BSpline<T>> sphere_cells(const T&, int, int);                                                \
   template BSpline<T> singular_cylinder(const T&, const T&);                                                         \
   template BSpline<T> singular_sphere(const T&);
 

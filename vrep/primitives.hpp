@@ -16,14 +16,26 @@
 //    (volumes of revolution, exact rational circles); each cell is glued to itself at 0 = 360
 //    degrees;
 //  - box: one trilinear trivariate.
-// The sphere of seven cells (a cube and six ruled cells to sphere patches) is not built: the
-// cube-sphere patches need irrational weights (sqrt 2, sqrt 3, sqrt 6) and no exact rational
-// replacement that glues is implemented yet (docs/vrep.md).
+//  - sphere: the sphere of seven cells of Figure 9, an inner cube [-r/2, r/2]^3 and six ruled
+//    cells from its faces to the six patches of the cube sphere (the central projection of a
+//    cube's faces). The exact cube-sphere patch has no representation with rational coefficients
+//    at all: its corners are r (+-1, +-1, +-1)/sqrt 3, irrational points, and a rational patch's
+//    corner is its corner control point. What is built instead keeps everything but the radius
+//    exact: patch +z is the homogeneous (r s, r t, r, P(s, t)), s, t in [-1, 1], so every point
+//    lies exactly on the ray through (s, t, 1) (the edges lie exactly in the planes x = +-z,
+//    y = +-z) and only its distance from the centre, r sqrt(1 + s^2 + t^2) / P, is approximate.
+//    P is the tensor spline of degree p with n uniform pieces per direction interpolating
+//    sqrt(1 + s^2 + t^2) at the Greville points (values rounded down to 2^-64 by exact integer
+//    square roots, the system solved exactly), symmetric in s <-> t and even in each, so the
+//    six patches (the +z one under the rotations of the cube) share their edges exactly and the
+//    seven cells glue exactly. sphere_deviation bounds | |x - c|^2 / r^2 - 1 | over a patch from
+//    exact Bernstein coefficients (docs/vrep.md has the numbers).
 // Figure 8: singular_cylinder (a rectangle revolved about z: det J = 0 on the axis) and
 // singular_sphere (a half disk revolved about z).
 #pragma once
 #include <vector>
 
+#include "exact/rational.hpp"
 #include "spline/bspline.hpp"
 
 namespace splinex {
@@ -44,6 +56,21 @@ std::vector<BSpline<T>> torus_cells(const T& R, const T& r);
 
 template <class T>
 std::vector<BSpline<T>> box_cells(const std::vector<T>& lo, const std::vector<T>& hi);
+
+/// The seven cells of the sphere of radius r about the origin: the cube first, then the ruled
+/// cells over the faces +z, -z, +x, -x, +y, -y (patch degree `degree`, `pieces` per direction).
+template <class T>
+std::vector<BSpline<T>> sphere_cells(const T& r, int degree = 3, int pieces = 4);
+
+/// How far a surface is from the sphere |x - centre| = r: `bound` >= | |S(u, v) - centre|^2 / r^2
+/// - 1 | everywhere (certified: Bernstein coefficients of the numerator over the least Bernstein
+/// coefficient of W^2, exact per piece), `witness` the largest value of that quantity at a grid
+/// of `samples` x `samples` parameters (exact values, so bound >= witness), `at` where.
+struct SphereDeviation {
+  Rational bound, witness;
+  std::vector<Rational> at;
+};
+SphereDeviation sphere_deviation(const BSpline<Rational>& S, const std::vector<Rational>& centre, const Rational& r, int samples = 17);
 
 template <class T>
 BSpline<T> singular_cylinder(const T& r, const T& h);

@@ -160,3 +160,45 @@ TEST_CASE("vmodel attributes: fields on the cell's domain, constants on entities
   CHECK_THROWS_AS(attach_field(M, 0, "g", G), ValidationError);
   CHECK_THROWS_AS(evaluate_cell(M, 5, {R(0), R(0), R(0)}), ValidationError);
 }
+
+TEST_CASE("vmodel: the sphere of seven cells glues exactly, every cell regular, radius certified") {
+  // Counts: the cube's 8 corners and the 8 patch corners; 12 cube edges, 12 patch edges and 8
+  // spokes; 6 cube faces, 12 faces between neighbouring ruled cells, 6 patches; 7 cells.
+  // Euler 16 - 32 + 24 - 7 = 1 (a ball); internal: the 6 cube faces and the 12 side faces.
+  const R r(3);
+  const auto cells = sphere_cells<R>(r);
+  REQUIRE(cells.size() == 7);
+  const auto M = glue(cells);
+  check_model(M, {16, 32, 24, 7, 18, 1});
+  check_regular(cells);
+  CHECK(M.neighbours_of_cell(0).size() == 6);
+  CHECK(M.shared(1, 2) == "none");     // +z and -z
+  CHECK(M.shared(1, 3) == "surface");  // +z and +x
+  // Every patch point lies exactly on the ray of the cube's face point: on patch +z (cell 1,
+  // w = 1), x / z = 2u - 1 and y / z = 2v - 1 (checked at 25 points, exact values).
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      const R u(i, 4), v(j, 4);
+      const auto p = evaluate(cells[1], {u, v, R(1)});
+      CHECK(p[0] / p[2] == R(2) * u - R(1));
+      CHECK(p[1] / p[2] == R(2) * v - R(1));
+    }
+  // The radius is approximate (no rational cube-sphere patch exists: its corners are irrational),
+  // and its error is certified: bound >= every exact value, and small.
+  for (int f = 1; f <= 6; ++f) {
+    const auto dev = sphere_deviation(face(cells[f], 2, 1), {R(0), R(0), R(0)}, r);
+    CHECK(dev.witness <= dev.bound);
+    CHECK(R(0) < dev.witness);
+    CHECK(dev.bound < R(1, 300));  // 2.5e-3 at degree 3, 4 pieces (docs/vrep.md)
+  }
+  // More pieces, smaller error; every face the same (the rotations are exact).
+  const auto d4 = sphere_deviation(face(cells[1], 2, 1), {R(0), R(0), R(0)}, r);
+  const auto d8 = sphere_deviation(face(sphere_cells<R>(r, 3, 8)[3], 2, 1), {R(0), R(0), R(0)}, r);
+  CHECK(d8.bound < d4.bound);
+  CHECK(sphere_deviation(face(cells[4], 2, 1), {R(0), R(0), R(0)}, r).bound == d4.bound);
+  // Double: the same construction rounded glues to the same model.
+  check_model(glue(sphere_cells<double>(3.0), 1e-12), {16, 32, 24, 7, 18, 1});
+  CHECK_THROWS_AS(sphere_cells<R>(r, 1, 4), ValidationError);
+  CHECK_THROWS_AS(sphere_cells<R>(r, 3, 0), ValidationError);
+  CHECK_THROWS_AS(sphere_cells<R>(R(0)), ValidationError);
+}

@@ -22,7 +22,7 @@ def main():
     cli, out = sys.argv[1], Path(sys.argv[2])
     out.mkdir(parents=True, exist_ok=True)
     checked = 0
-    for name in ("torus", "cylinder", "cone", "singular-sphere"):
+    for name in ("torus", "cylinder", "cone", "sphere", "singular-sphere"):
         doc = json.loads(subprocess.run([cli, "vrep", "primitive", name], check=True, capture_output=True, text=True).stdout)
         vtu = out / f"{name}.vtu"
         subprocess.run([cli, "vrep", "export", "-", "--vtk", str(vtu)], input=json.dumps(doc), check=True, capture_output=True, text=True)
