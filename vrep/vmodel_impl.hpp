@@ -1,6 +1,7 @@
 // The V-model (vrep/vmodel.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "spline/bezier.hpp"
@@ -137,11 +138,26 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       throw ValidationError(field, "is not a trivariate with points in R^3", "give B-spline trivariates (q >= 3)");
     model.trivariates.push_back(clamp_all(V0, limits));
   }
+  // Indexes, so that gluing H faces costs O(H log H) comparisons of keys instead of O(H^2)
+  // surface comparisons: exact points by location (eps = 0; with a tolerance the points are
+  // scanned, as closeness is not transitive), V-curves by their two end V-points, half-V-surfaces
+  // by the sorted V-curves of their loop (already glued, so exact keys in either mode).
+  const bool exact_points = eps == T(0);
+  std::map<std::array<T, 3>, std::size_t> point_index;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> curve_index;
+  std::map<std::array<std::size_t, 4>, std::vector<std::size_t>> loop_index;
   auto point_id = [&](const std::vector<T>& x) {
-    for (std::size_t p = 0; p < model.points.size(); ++p) {
-      bool same = true;
-      for (int c = 0; c < 3; ++c) same = same && vrep_detail::close(model.points[p].at[c], x[c], eps);
-      if (same) return p;
+    if (exact_points) {
+      const std::array<T, 3> key{x[0], x[1], x[2]};
+      const auto it = point_index.find(key);
+      if (it != point_index.end()) return it->second;
+      point_index.emplace(key, model.points.size());
+    } else {
+      for (std::size_t p = 0; p < model.points.size(); ++p) {
+        bool same = true;
+        for (int c = 0; c < 3; ++c) same = same && vrep_detail::close(model.points[p].at[c], x[c], eps);
+        if (same) return p;
+      }
     }
     model.points.push_back({x, {}, {}});
     return model.points.size() - 1;
@@ -165,11 +181,10 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       b[along] = 1;
       const std::size_t p0 = corner(a[0], a[1], a[2]), p1 = corner(b[0], b[1], b[2]);
       const BSpline<T> geom = edge_curve(V, along, sides);
-      for (std::size_t c = 0; c < model.curves.size(); ++c) {
-        const auto& e = model.curves[c];
-        const bool same_ends = (e.ends[0] == p0 && e.ends[1] == p1) || (e.ends[0] == p1 && e.ends[1] == p0);
-        if (same_ends && same_curve(e.curve, geom, eps, true, limits)) return c;
-      }
+      auto& candidates = curve_index[{std::min(p0, p1), std::max(p0, p1)}];
+      for (std::size_t c : candidates)
+        if (same_curve(model.curves[c].curve, geom, eps, true, limits)) return c;
+      candidates.push_back(model.curves.size());
       model.curves.push_back({geom, {p0, p1}, {}, {}});
       model.points[p0].curves.push_back(model.curves.size() - 1);
       if (p1 != p0) model.points[p1].curves.push_back(model.curves.size() - 1);
@@ -201,10 +216,11 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
         }
         const BSpline<T> F = face(V, d, s);
         // A twin: an unpaired half-V-surface with the same edges and the same surface.
-        std::multiset<std::size_t> mine(h.loop.begin(), h.loop.end());
-        for (std::size_t o = 0; o < model.half_surfaces.size(); ++o) {
+        std::array<std::size_t, 4> key{h.loop[0], h.loop[1], h.loop[2], h.loop[3]};
+        std::sort(key.begin(), key.end());
+        auto& same_loop = loop_index[key];
+        for (std::size_t o : same_loop) {
           const auto& other = model.half_surfaces[o];
-          if (std::multiset<std::size_t>(other.loop.begin(), other.loop.end()) != mine) continue;
           if (!same_surface(face(model.trivariates[other.trivariate], other.dir, other.side), F, eps, limits)) continue;
           if (other.twin)
             throw ValidationError("trivariates[" + std::to_string(t) + "].face(" + std::to_string(d) + "," + std::to_string(s) + ")", "matches a V-surface that already has two half-V-surfaces (a non-manifold model)",
@@ -214,6 +230,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
           break;
         }
         const std::size_t hid = model.half_surfaces.size();
+        same_loop.push_back(hid);
         if (h.twin) {
           model.half_surfaces[*h.twin].twin = hid;
           model.surfaces[h.surface].halves.push_back(hid);

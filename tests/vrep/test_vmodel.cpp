@@ -202,3 +202,18 @@ TEST_CASE("vmodel: the sphere of seven cells glues exactly, every cell regular, 
   CHECK_THROWS_AS(sphere_cells<R>(r, 3, 0), ValidationError);
   CHECK_THROWS_AS(sphere_cells<R>(R(0)), ValidationError);
 }
+
+TEST_CASE("vmodel: gluing a 6 x 6 x 6 grid of boxes (indexed gluing), counts and Euler characteristic") {
+  // n^3 boxes: (n+1)^3 V-points, 3 n (n+1)^2 V-curves, 3 n^2 (n+1) V-surfaces (3 n^2 (n-1)
+  // internal), n^3 cells: Euler 1.
+  const int n = 6;
+  std::vector<BSpline<R>> boxes;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) boxes.push_back(box_cells<R>({R(i), R(j), R(k)}, {R(i + 1), R(j + 1), R(k + 1)})[0]);
+  const std::size_t N = n, N1 = n + 1;
+  check_model(glue(boxes), {N1 * N1 * N1, 3 * N * N1 * N1, 3 * N * N * N1, N * N * N, 3 * N * N * (N - 1), 1});
+  std::vector<BSpline<double>> dbl;
+  for (const auto& V : boxes) dbl.push_back(convert<double>(V, [](const R& x) { return to_double(x); }));
+  check_model(glue(dbl, 1e-9), {N1 * N1 * N1, 3 * N * N1 * N1, 3 * N * N * N1, N * N * N, 3 * N * N * (N - 1), 1});
+}
