@@ -2,6 +2,7 @@
 #include "float/mpfr.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
+#include "vrep/boolean_impl.hpp"
 #include "vrep/primitives_impl.hpp"
 #include "vrep/regularity_impl.hpp"
 #include "vrep/vmodel_impl.hpp"
@@ -62,6 +63,24 @@ SphereDeviation sphere_deviation(const BSpline<Rational>& S, const std::vector<R
   return out;
 }
 
+const char* to_string(BooleanOp op) {
+  return op == BooleanOp::intersect ? "intersect" : op == BooleanOp::subtract ? "subtract" : "union";
+}
+
+BooleanOp parse_boolean_op(const std::string& name) {
+  if (name == "intersect") return BooleanOp::intersect;
+  if (name == "subtract") return BooleanOp::subtract;
+  if (name == "union") return BooleanOp::unite;
+  throw ValidationError("operation", "is \"" + name + "\"", "give intersect, subtract or union");
+}
+
+Blend parse_blend(const std::string& name) {
+  if (name == "sum-clipped") return Blend::sum_clipped;
+  if (name == "sum") return Blend::sum;
+  if (name == "first") return Blend::first;
+  throw ValidationError("blend", "is \"" + name + "\"", "give sum-clipped, sum or first");
+}
+
 const char* to_string(Regularity r) {
   return r == Regularity::regular ? "regular" : r == Regularity::singular ? "singular" : "undecided";
 }
@@ -93,7 +112,12 @@ const char* to_string(Regularity r) {
   template std::vector<BSpline<T>> box_cells(const std::vector<T>&, const std::vector<T>&);                          \
   template std::vector<BSpline<T>> sphere_cells(const T&, int, int);                                                \
   template BSpline<T> singular_cylinder(const T&, const T&);                                                         \
-  template BSpline<T> singular_sphere(const T&);
+  template BSpline<T> singular_sphere(const T&);                                                                      \
+  template std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>&, const T&);                      \
+  template VModel<T> boolean_op(const VModel<T>&, const VModel<T>&, BooleanOp, const T&, Blend, const Limits&,        \
+                                BooleanStats<T>*);                                                                   \
+  template T cell_volume(const VModel<T>&, std::size_t, const Limits&);                                              \
+  template std::vector<std::size_t> cells_containing(const VModel<T>&, const std::vector<T>&, const T&);
 
 SPLINEX_INSTANTIATE_VREP(Rational)
 SPLINEX_INSTANTIATE_VREP(double)

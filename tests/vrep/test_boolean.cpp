@@ -1,0 +1,203 @@
+// Booleans on V-models (issue 18, first part): exact cuts by parameter planes, Figure 3's counts,
+// exact volumes and the union identity, coplanar and near contact decided exactly.
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "spline/kernel.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/vmodel.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+VModel<R> box(std::vector<R> lo, std::vector<R> hi) { return glue(box_cells<R>(lo, hi)); }
+
+R volume(const VModel<R>& M) {
+  R v(0);
+  for (std::size_t c = 0; c < M.cells.size(); ++c) v += cell_volume(M, c);
+  return v;
+}
+
+std::size_t point_at(const VModel<R>& M, const std::vector<R>& x) {
+  for (std::size_t p = 0; p < M.points.size(); ++p)
+    if (M.points[p].at == x) return p;
+  FAIL("no V-point at the location");
+  return 0;
+}
+
+std::size_t curve_between(const VModel<R>& M, std::size_t p, std::size_t q) {
+  for (std::size_t c = 0; c < M.curves.size(); ++c) {
+    const auto& e = M.curves[c].ends;
+    if ((e[0] == p && e[1] == q) || (e[0] == q && e[1] == p)) return c;
+  }
+  FAIL("no V-curve between the points");
+  return 0;
+}
+
+void check_ok(const VModel<R>& M, long euler) {
+  const auto chk = check_invariants(M);
+  INFO((chk.failures.empty() ? std::string() : chk.failures.front()));
+  CHECK(chk.ok());
+  CHECK(chk.euler == euler);
+}
+
+}  // namespace
+
+TEST_CASE("vrep boolean: Figure 3, the union of two boxes, with the paper's counts") {
+  // O1 = [0,2]x[0,1]x[0,1], O2 = [1,2]x[0,2]x[0,1]: faces partly coplanar (y = 0, z = 0, z = 1, x = 2).
+  const auto O1 = box({0, 0, 0}, {2, 1, 1}), O2 = box({1, 0, 0}, {2, 2, 1});
+  BooleanStats<R> st;
+  const auto M = boolean_op(O1, O2, BooleanOp::unite, R(0), Blend::sum_clipped, {}, &st);
+  CHECK(M.cells.size() == 3);
+  CHECK(M.half_surfaces.size() == 18);
+  CHECK(M.internal_surfaces() == 2);
+  CHECK(M.boundary_surfaces() == 14);
+  CHECK(M.points.size() == 16);
+  CHECK(M.curves.size() == 28);
+  check_ok(M, 1);
+  // Category B holds both trivariates: its piece, O1's and O2's.
+  std::size_t both = 0;
+  for (const auto& c : M.cells)
+    if (c.name == "A0*B0") {
+      ++both;
+      CHECK(c.trivariates.size() == 3);
+    } else
+      CHECK(c.trivariates.size() == 2);
+  CHECK(both == 1);
+  // V-curve 1 (x = 1, y = 1, along z): four V-surfaces, six half-V-surfaces; its V-points each
+  // start or end five V-curves.
+  const std::size_t p = point_at(M, {1, 1, 0}), q = point_at(M, {1, 1, 1});
+  const std::size_t c1 = curve_between(M, p, q);
+  CHECK(M.curves[c1].surfaces.size() == 4);
+  std::size_t halves = 0;
+  for (std::size_t s : M.curves[c1].surfaces) halves += M.surfaces[s].halves.size();
+  CHECK(halves == 6);
+  CHECK(M.points[p].curves.size() == 5);
+  CHECK(M.points[q].curves.size() == 5);
+  // V-curve 2 (an outer edge, x = 0, y = 0, along z): two V-surfaces; its V-points three V-curves.
+  const std::size_t r = point_at(M, {0, 0, 0}), s = point_at(M, {0, 0, 1});
+  const std::size_t c2 = curve_between(M, r, s);
+  CHECK(M.curves[c2].surfaces.size() == 2);
+  CHECK(M.points[r].curves.size() == 3);
+  CHECK(M.points[s].curves.size() == 3);
+  CHECK(st.cuts == 2);  // x = 1 in O1, y = 1 in O2
+  CHECK(volume(M) == R(3));
+}
+
+TEST_CASE("vrep boolean: exact volumes, the union identity, and the three operations") {
+  const auto A = box({0, 0, 0}, {R(7, 3), 1, R(5, 7)});
+  const auto B = box({R(1, 3), R(1, 2), -1}, {3, 2, R(1, 2)});
+  const R vA = volume(A), vB = volume(B);
+  CHECK(vA == R(7, 3) * R(5, 7));
+  CHECK(vB == (R(3) - R(1, 3)) * R(3, 2) * R(3, 2));
+  const auto I = boolean_op(A, B, BooleanOp::intersect);
+  const auto U = boolean_op(A, B, BooleanOp::unite);
+  const auto S = boolean_op(A, B, BooleanOp::subtract);
+  const auto S2 = boolean_op(B, A, BooleanOp::subtract);
+  const R vI = (R(7, 3) - R(1, 3)) * R(1, 2) * R(1, 2);
+  CHECK(volume(I) == vI);
+  CHECK(volume(U) == vA + vB - vI);
+  CHECK(volume(S) == vA - vI);
+  CHECK(volume(S2) == vB - vI);
+  CHECK(volume(U) == volume(S) + volume(S2) + volume(I));
+  check_ok(I, 1);
+  check_ok(U, 1);
+  check_ok(S, 1);
+  check_ok(S2, 1);
+  // Membership: a point in the intersection lies in a cell holding both trivariates.
+  const auto in = cells_containing(U, {R(1), R(3, 4), R(1, 4)});
+  REQUIRE(in.size() == 1);
+  CHECK(U.cells[in[0]].trivariates.size() == 3);
+  CHECK(cells_containing(U, {R(10), R(0), R(0)}).empty());
+}
+
+TEST_CASE("vrep boolean: a hole through a slab is a solid torus (Euler 0), the same tiling exactly") {
+  const auto slab = box({0, 0, 0}, {3, 3, 1}), post = box({1, 1, -1}, {2, 2, 2});
+  const auto ring = boolean_op(slab, post, BooleanOp::subtract);
+  CHECK(ring.cells.size() == 8);
+  check_ok(ring, 0);
+  CHECK(volume(ring) == R(8));
+  // The union of the slab and the post: the post sticks out on both sides.
+  const auto U = boolean_op(slab, post, BooleanOp::unite);
+  check_ok(U, 1);
+  CHECK(volume(U) == R(9) + R(1) + R(1));
+}
+
+TEST_CASE("vrep boolean: contact decided exactly, coplanar and 2^-40 apart") {
+  const auto A = box({0, 0, 0}, {1, 1, 1});
+  const auto touching = box({1, 0, 0}, {2, 1, 1});
+  const auto U = boolean_op(A, touching, BooleanOp::unite);
+  CHECK(U.cells.size() == 2);
+  CHECK(U.internal_surfaces() == 1);  // glued at the shared face
+  CHECK_THROWS_AS(boolean_op(A, touching, BooleanOp::intersect), DomainError);  // touching only: empty
+  const R gap = R(1) / R(Integer(1) << 40);
+  const auto apart = box({1 + gap, 0, 0}, {2, 1, 1});
+  const auto U2 = boolean_op(A, apart, BooleanOp::unite);
+  CHECK(U2.cells.size() == 2);
+  CHECK(U2.internal_surfaces() == 0);  // exactly: not touching
+  CHECK(check_invariants(U2).euler == 2);  // two balls
+  // In double with an IRIT-style tolerance above the gap, the gap closes: a false glue.
+  auto dbl = [](const VModel<R>& M) {
+    std::vector<BSpline<double>> v;
+    for (const auto& t : M.trivariates) v.push_back(convert<double>(t, [](const R& x) { return to_double(x); }));
+    return glue(v);
+  };
+  const auto D = boolean_op(dbl(A), dbl(apart), BooleanOp::unite, 1e-9);
+  CHECK(D.internal_surfaces() == 1);
+  CHECK(boolean_op(dbl(A), dbl(apart), BooleanOp::unite, 1e-15).internal_surfaces() == 0);
+}
+
+TEST_CASE("vrep boolean: attributes by category and the summing blend of Figure 5") {
+  auto A = box({0, 0, 0}, {2, 1, 1});
+  auto B = box({1, 0, 0}, {3, 1, 1});
+  A.cells[0].attributes.constants["colour"] = {R(1), R(0), R(3, 4)};
+  B.cells[0].attributes.constants["colour"] = {R(0), R(1), R(1, 2)};
+  const auto U = boolean_op(A, B, BooleanOp::unite);
+  REQUIRE(U.cells.size() == 3);
+  for (const auto& c : U.cells) {
+    const auto& col = c.attributes.constants.at("colour");
+    if (c.name == "A0") CHECK(col == std::vector<R>{1, 0, R(3, 4)});
+    else if (c.name == "B0") CHECK(col == std::vector<R>{0, 1, R(1, 2)});
+    else CHECK(col == std::vector<R>{1, 1, 1});  // 3/4 + 1/2 clipped to 1
+  }
+  const auto S = boolean_op(A, B, BooleanOp::unite, R(0), Blend::sum);
+  for (const auto& c : S.cells)
+    if (c.name == "A0*B0") CHECK(c.attributes.constants.at("colour") == std::vector<R>{1, 1, R(5, 4)});
+}
+
+TEST_CASE("vrep boolean: what is not built says so") {
+  const auto cyl = glue(cylinder_cells<R>(R(1), R(2)));
+  const auto B = box({0, 0, 0}, {1, 1, 1});
+  CHECK_THROWS_AS(boolean_op(B, cyl, BooleanOp::unite), DomainError);  // curved cells
+  // A box rotated about z by a Pythagorean angle cuts the axis-aligned box along planes that are
+  // not parameter planes of it.
+  auto rot = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  for (std::size_t i = 0; i < rot.size(); ++i) {
+    const R x = rot.points[i * 3], y = rot.points[i * 3 + 1];
+    rot.points[i * 3] = R(4, 5) * x - R(3, 5) * y + R(1, 2);
+    rot.points[i * 3 + 1] = R(3, 5) * x + R(4, 5) * y;
+  }
+  CHECK_THROWS_AS(boolean_op(B, glue(std::vector<BSpline<R>>{rot}), BooleanOp::unite), DomainError);
+  CHECK_THROWS_AS(cell_volume(cyl, 1), DomainError);  // rational: no enclosure yet
+}
+
+TEST_CASE("vrep boolean: a cut that would leave a T-junction is carried into the neighbour") {
+  // A: two boxes side by side in x; b overlaps only the first, and its plane z = 1/2 splits the
+  // first's face x = 1. The second box takes the cut too, so every face is glued to a whole face.
+  auto cells = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  cells.push_back(box_cells<R>({1, 0, 0}, {2, 1, 1})[0]);
+  const auto A = glue(cells);
+  const auto b = box({R(1, 2), 0, 0}, {1, 1, R(1, 2)});
+  BooleanStats<R> st;
+  const auto U = boolean_op(A, b, BooleanOp::unite, R(0), Blend::sum_clipped, {}, &st);
+  CHECK(st.rounds == 2);
+  check_ok(U, 1);
+  CHECK(U.cells.size() == 6);  // 4 pieces of the first box, 2 of the second
+  CHECK(volume(U) == R(2));
+  const auto S = boolean_op(A, b, BooleanOp::subtract);
+  check_ok(S, 1);
+  CHECK(volume(S) == R(2) - R(1, 4));
+}

@@ -1,0 +1,443 @@
+// Booleans on V-models (vrep/boolean.hpp): the templates, instantiated in vrep/instances.cpp.
+#pragma once
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/integrate.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/regularity.hpp"
+#include "vrep/trivariate.hpp"
+
+namespace splinex {
+
+namespace vrep_detail {
+
+template <class T>
+T mag(const T& x) {
+  return x < T(0) ? T(-x) : x;
+}
+
+template <class T>
+T plane_at(const HalfSpace<T>& H, const T* x) {
+  return H.n[0] * x[0] + H.n[1] * x[1] + H.n[2] * x[2] + H.d;
+}
+
+/// The tolerance of a plane's values: eps times |n|_1 (a point moved by eps per coordinate moves
+/// the value by at most that); 0 in exact mode.
+template <class T>
+T plane_tol(const HalfSpace<T>& H, const T& eps) {
+  return eps == T(0) ? T(0) : eps * (mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]));
+}
+
+template <class T>
+std::vector<T> centre_of(const BSpline<T>& V) {
+  std::vector<T> x;
+  for (int d = 0; d < V.dim(); ++d) x.push_back((V.domain_lo(d) + V.domain_hi(d)) / T(2));
+  return x;
+}
+
+/// How a half-space meets a trivariate (see vrep/boolean.hpp).
+template <class T>
+struct PlaneOnCell {
+  enum Kind { inside, outside, split, curved } kind = inside;
+  int dir = 0;
+  T at{0};
+};
+
+template <class T>
+PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps) {
+  const std::size_t n = V.size();
+  T wmax(1);
+  std::vector<T> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const T w = V.is_rational() ? V.weights[i] : T(1);
+    if (wmax < w) wmax = w;
+    c[i] = w * plane_at(H, &V.points[i * V.q]);
+  }
+  const T tol = plane_tol(H, eps) * wmax;
+  bool all_in = true, all_out = true;
+  for (const auto& x : c) {
+    all_in = all_in && !(x < -tol);
+    all_out = all_out && !(tol < x);
+  }
+  PlaneOnCell<T> r;
+  if (all_in && all_out)
+    throw DomainError("trivariate", "lies in a plane of another cell (det J = 0)", "give regular cells (vrep certify)");
+  if (all_in) return r;
+  if (all_out) {
+    r.kind = PlaneOnCell<T>::outside;
+    return r;
+  }
+  const std::size_t cnt[3] = {V.count(0), V.count(1), V.count(2)};
+  auto flat = [&](std::size_t i0, std::size_t i1, std::size_t i2) { return i0 + cnt[0] * (i1 + cnt[1] * i2); };
+  for (int d = 0; d < 3; ++d) {
+    // Depends on direction d only?
+    bool only_d = true;
+    for (std::size_t i2 = 0; i2 < cnt[2] && only_d; ++i2)
+      for (std::size_t i1 = 0; i1 < cnt[1] && only_d; ++i1)
+        for (std::size_t i0 = 0; i0 < cnt[0] && only_d; ++i0) {
+          std::size_t ref[3] = {0, 0, 0}, idx[3] = {i0, i1, i2};
+          ref[d] = idx[d];
+          only_d = !(tol < mag(T(c[flat(i0, i1, i2)] - c[flat(ref[0], ref[1], ref[2])])));
+        }
+    if (!only_d) continue;
+    // Linear in the parameter: c_k = alpha + beta g_k on the Greville abscissae.
+    const int p = V.degrees[d];
+    const auto& U = V.knots[d];
+    std::vector<T> g(cnt[d]), ck(cnt[d]);
+    for (std::size_t k = 0; k < cnt[d]; ++k) {
+      T s(0);
+      for (int j = 1; j <= p; ++j) s += U[k + j];
+      g[k] = p == 0 ? U[k] : T(s / T(p));
+      std::size_t idx[3] = {0, 0, 0};
+      idx[d] = k;
+      ck[k] = c[flat(idx[0], idx[1], idx[2])];
+    }
+    if (p == 0 || !(g.front() < g.back())) break;
+    const T beta = (ck.back() - ck.front()) / (g.back() - g.front()), alpha = ck.front() - beta * g.front();
+    bool linear = true;
+    for (std::size_t k = 0; k < cnt[d] && linear; ++k) linear = !(tol < mag(T(alpha + beta * g[k] - ck[k])));
+    if (!linear || beta == T(0)) break;
+    r.kind = PlaneOnCell<T>::split;
+    r.dir = d;
+    r.at = -alpha / beta;
+    return r;
+  }
+  r.kind = PlaneOnCell<T>::curved;
+  return r;
+}
+
+template <class T>
+std::string num_text(const T& x) {
+  return ArithTraits<T>::to_string(x);
+}
+
+/// A piece of a cell cut by the planes of the other model's cells: its trivariate and the cell of
+/// the other model it lies in, if any.
+template <class T>
+struct Piece {
+  BSpline<T> V;
+  std::optional<std::size_t> in;
+};
+
+/// The planes of every cell of a model (nothing for a cell that is not convex with planar faces).
+template <class T>
+std::vector<std::optional<std::vector<HalfSpace<T>>>> model_planes(const VModel<T>& M, const T& eps) {
+  std::vector<std::optional<std::vector<HalfSpace<T>>>> out;
+  for (const auto& c : M.cells) out.push_back(convex_planes(M.trivariates[c.trivariates.front()], eps));
+  return out;
+}
+
+template <class T>
+std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, const VModel<T>& other, const std::string& oname,
+                                const std::vector<std::optional<std::vector<HalfSpace<T>>>>& planes,
+                                const std::vector<HalfSpace<T>>& forced, const T& eps, const Limits& limits, std::size_t& cut_count,
+                                std::vector<HalfSpace<T>>& splitting) {
+  std::vector<std::size_t> overlapping;
+  std::vector<T> cuts[3];
+  splitting.clear();
+  for (const auto& H : forced) {
+    const auto h = plane_on(V, H, eps);
+    if (h.kind == PlaneOnCell<T>::curved)
+      throw DomainError(vname, "needs a cut by a plane of a neighbour's tiling that is not a parameter plane of its trivariate: curved trimming is not built yet (issue 18)",
+                        "align the models' parameter directions with the cutting planes");
+    if (h.kind == PlaneOnCell<T>::split) {
+      cuts[h.dir].push_back(h.at);
+      splitting.push_back(H);
+    }
+  }
+  for (std::size_t b = 0; b < other.cells.size(); ++b) {
+    if (!planes[b])
+      throw DomainError(oname + ".cells[" + std::to_string(b) + "]",
+                        "is not a convex cell with planar faces: Booleans with curved cells are not built yet (issue 18)",
+                        "use boxes or hexahedra with planar faces for now");
+    bool outside = false;
+    std::vector<PlaneOnCell<T>> how;
+    for (const auto& H : *planes[b]) {
+      how.push_back(plane_on(V, H, eps));
+      outside = outside || how.back().kind == PlaneOnCell<T>::outside;
+    }
+    if (outside) continue;
+    overlapping.push_back(b);
+    for (const auto& h : how) {
+      if (h.kind == PlaneOnCell<T>::curved)
+        throw DomainError(vname, "is cut by a face plane of " + oname + ".cells[" + std::to_string(b) +
+                                     "] along a surface that is not a parameter plane of its trivariate: curved trimming is not built yet (issue 18)",
+                          "align the models' parameter directions with the cutting planes, or wait for curved trimming");
+    }
+    for (std::size_t k = 0; k < how.size(); ++k)
+      if (how[k].kind == PlaneOnCell<T>::split) {
+        cuts[how[k].dir].push_back(how[k].at);
+        splitting.push_back((*planes[b])[k]);
+      }
+  }
+  // The grid: cuts strictly inside the domain, sorted, those within eps of each other merged.
+  for (int d = 0; d < 3; ++d) {
+    std::sort(cuts[d].begin(), cuts[d].end());
+    std::vector<T> kept;
+    const T lo = V.domain_lo(d), hi = V.domain_hi(d);
+    for (const auto& x : cuts[d]) {
+      if (!(lo + eps < x) || !(x + eps < hi)) continue;
+      if (!kept.empty() && !(kept.back() + eps < x)) continue;
+      kept.push_back(x);
+    }
+    cuts[d] = kept;
+    cut_count += kept.size();
+  }
+  limits.check_count((cuts[0].size() + 1) * (cuts[1].size() + 1) * (cuts[2].size() + 1) * V.size(), "pieces");
+  std::vector<BSpline<T>> slabs{V};
+  for (int d = 0; d < 3; ++d) {
+    std::vector<BSpline<T>> next;
+    for (auto S : slabs) {
+      for (const auto& x : cuts[d]) {
+        auto [left, right] = split_at(S, d, x, limits);
+        next.push_back(std::move(left));
+        S = std::move(right);
+      }
+      next.push_back(std::move(S));
+    }
+    slabs = std::move(next);
+  }
+  std::vector<Piece<T>> out;
+  for (auto& S : slabs) {
+    Piece<T> p{std::move(S), std::nullopt};
+    const auto x = evaluate(p.V, centre_of(p.V));
+    for (std::size_t b : overlapping) {
+      bool inside = true;
+      for (const auto& H : *planes[b]) inside = inside && plane_tol(H, eps) < plane_at(H, x.data());
+      if (!inside) continue;
+      if (p.in)
+        throw DomainError(oname, "has cells " + std::to_string(*p.in) + " and " + std::to_string(b) + " that overlap",
+                          "give a V-model whose cells meet only at their boundaries");
+      p.in = b;
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+template <class T>
+void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend) {
+  for (const auto& [name, v] : from.constants) {
+    auto it = into.constants.find(name);
+    if (it == into.constants.end()) {
+      into.constants[name] = v;
+      continue;
+    }
+    if (blend == Blend::first) continue;
+    auto& w = it->second;
+    if (w.size() != v.size())
+      throw ValidationError("attributes." + name, "has values of different lengths in the two models", "give the same number of values");
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      w[i] += v[i];
+      if (blend == Blend::sum_clipped && T(1) < w[i]) w[i] = T(1);
+    }
+  }
+}
+
+}  // namespace vrep_detail
+
+template <class T>
+std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps) {
+  using namespace vrep_detail;
+  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
+  const auto c = evaluate(V, centre_of(V));
+  std::vector<HalfSpace<T>> out;
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) {
+      const BSpline<T> F = face(V, d, s);
+      const std::size_t n = F.size();
+      auto pt = [&](std::size_t i) { return &F.points[i * F.q]; };
+      const T* p0 = pt(0);
+      HalfSpace<T> H{{T(0), T(0), T(0)}, T(0)};
+      bool found = false;
+      for (std::size_t i = 1; i < n && !found; ++i)
+        for (std::size_t j = i + 1; j < n && !found; ++j) {
+          const T a[3] = {pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
+          const T b[3] = {pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
+          H.n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+          const T size = mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]);
+          const T amax = std::max({mag(a[0]), mag(a[1]), mag(a[2])}), bmax = std::max({mag(b[0]), mag(b[1]), mag(b[2])});
+          found = eps * (amax + bmax) < size && !(size == T(0));
+        }
+      if (!found) return std::nullopt;
+      H.d = -(H.n[0] * p0[0] + H.n[1] * p0[1] + H.n[2] * p0[2]);
+      const T tol = plane_tol(H, eps);
+      for (std::size_t i = 0; i < n; ++i)
+        if (tol < mag(plane_at(H, pt(i)))) return std::nullopt;
+      const T at_centre = plane_at(H, c.data());
+      if (!(tol < mag(at_centre))) return std::nullopt;
+      if (at_centre < T(0)) {
+        for (auto& x : H.n) x = -x;
+        H.d = -H.d;
+      }
+      out.push_back(H);
+    }
+  for (const auto& H : out) {
+    const T tol = plane_tol(H, eps);
+    for (std::size_t i = 0; i < V.size(); ++i)
+      if (plane_at(H, &V.points[i * V.q]) < -tol) return std::nullopt;
+  }
+  return out;
+}
+
+template <class T>
+VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const T& eps, Blend blend, const Limits& limits,
+                     BooleanStats<T>* stats) {
+  using namespace vrep_detail;
+  if (eps < T(0)) throw ValidationError("eps", "must not be negative", "give eps >= 0");
+  const auto planesA = model_planes(A, eps), planesB = model_planes(B, eps);
+  struct Source {
+    std::optional<std::size_t> a, b;
+  };
+  // Cuts forced on a source cell by a neighbour's tiling (a T-junction found in an earlier round):
+  // the planes that split the cell on the other side of the junction. They only grow, and there
+  // are finitely many planes, so the rounds end.
+  std::vector<std::vector<HalfSpace<T>>> forced[2] = {std::vector<std::vector<HalfSpace<T>>>(A.cells.size()),
+                                                      std::vector<std::vector<HalfSpace<T>>>(B.cells.size())};
+  for (int round = 0;; ++round) {
+    std::vector<BSpline<T>> cells;
+    std::vector<std::string> names;
+    std::vector<Source> sources;
+    std::vector<std::pair<int, std::size_t>> origin;  // (model, cell) whose tiling made the piece
+    std::vector<std::vector<HalfSpace<T>>> splitting[2] = {std::vector<std::vector<HalfSpace<T>>>(A.cells.size()),
+                                                           std::vector<std::vector<HalfSpace<T>>>(B.cells.size())};
+    std::size_t cut_count = 0;
+    for (std::size_t a = 0; a < A.cells.size(); ++a) {
+      const auto& V = A.trivariates[A.cells[a].trivariates.front()];
+      for (auto& p : pieces_of(V, "A.cells[" + std::to_string(a) + "]", B, "B", planesB, forced[0][a], eps, limits, cut_count,
+                               splitting[0][a])) {
+        const bool keep = p.in ? op != BooleanOp::subtract : op != BooleanOp::intersect;
+        if (!keep) continue;
+        names.push_back("A" + std::to_string(a) + (p.in ? "*B" + std::to_string(*p.in) : std::string()));
+        sources.push_back({a, p.in});
+        origin.push_back({0, a});
+        cells.push_back(std::move(p.V));
+      }
+    }
+    if (op == BooleanOp::unite)
+      for (std::size_t b = 0; b < B.cells.size(); ++b) {
+        const auto& V = B.trivariates[B.cells[b].trivariates.front()];
+        for (auto& p : pieces_of(V, "B.cells[" + std::to_string(b) + "]", A, "A", planesA, forced[1][b], eps, limits, cut_count,
+                                 splitting[1][b])) {
+          if (p.in) continue;  // the intersection came from A's side
+          names.push_back("B" + std::to_string(b));
+          sources.push_back({std::nullopt, b});
+          origin.push_back({1, b});
+          cells.push_back(std::move(p.V));
+        }
+      }
+    if (cells.empty())
+      throw DomainError("result", "is empty (the models do not overlap where the operation keeps anything)", "check the operands and the operation");
+    VModel<T> M = glue(cells, eps, names, limits);
+    // No T-junctions: a boundary face's centre may not lie in the closure of another piece. Where
+    // one does, both source cells take each other's splitting planes and the round is repeated.
+    std::vector<std::vector<HalfSpace<T>>> piece_planes;
+    for (const auto& V : cells) {
+      auto P = convex_planes(V, eps);
+      if (!P) throw std::logic_error("boolean_op: a piece of a convex planar cell is not convex and planar");
+      piece_planes.push_back(*P);
+    }
+    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
+    std::string first_junction;
+    for (const auto& h : M.half_surfaces) {
+      if (h.twin) continue;
+      const auto& V = M.trivariates[h.trivariate];
+      auto x = centre_of(V);
+      x[h.dir] = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
+      const auto c = evaluate(V, x);
+      for (std::size_t q = 0; q < cells.size(); ++q) {
+        if (q == h.cell) continue;
+        bool in = true;
+        for (const auto& H : piece_planes[q]) in = in && !(plane_at(H, c.data()) < -plane_tol(H, eps));
+        if (!in) continue;
+        junctions.insert({origin[h.cell], origin[q]});
+        if (first_junction.empty())
+          first_junction = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell] +
+                           " lies on piece " + names[q] + " without being glued to it";
+      }
+    }
+    if (!junctions.empty()) {
+      bool grew = false;
+      auto give = [&](std::pair<int, std::size_t> from, std::pair<int, std::size_t> to) {
+        auto& f = forced[to.first][to.second];
+        for (const auto& H : splitting[from.first][from.second]) {
+          bool have = false;
+          for (const auto& G : f) have = have || (G.n == H.n && G.d == H.d);
+          if (!have) {
+            f.push_back(H);
+            grew = true;
+          }
+        }
+      };
+      for (const auto& [x, y] : junctions) {
+        give(x, y);
+        give(y, x);
+      }
+      if (grew && round < 16) continue;
+      throw DomainError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
+                        "this configuration needs trimmed cells that are not built yet; please report it");
+    }
+    if (stats) {
+      stats->pieces = cells.size();
+      stats->cuts = cut_count;
+      stats->rounds = static_cast<std::size_t>(round) + 1;
+    }
+    // The source trivariates, each once, and the attributes by category.
+    std::map<std::pair<int, std::size_t>, std::size_t> added;
+    auto source_index = [&](int model, std::size_t t) {
+      const auto key = std::make_pair(model, t);
+      const auto it = added.find(key);
+      if (it != added.end()) return it->second;
+      M.trivariates.push_back(model == 0 ? A.trivariates[t] : B.trivariates[t]);
+      added[key] = M.trivariates.size() - 1;
+      return M.trivariates.size() - 1;
+    };
+    for (std::size_t k = 0; k < M.cells.size(); ++k) {
+      auto& cell = M.cells[k];
+      if (sources[k].a) {
+        for (std::size_t t : A.cells[*sources[k].a].trivariates) cell.trivariates.push_back(source_index(0, t));
+        merge_constants(cell.attributes, A.cells[*sources[k].a].attributes, blend);
+      }
+      if (sources[k].b) {
+        for (std::size_t t : B.cells[*sources[k].b].trivariates) cell.trivariates.push_back(source_index(1, t));
+        merge_constants(cell.attributes, B.cells[*sources[k].b].attributes, blend);
+      }
+    }
+    return M;
+  }
+}
+
+template <class T>
+T cell_volume(const VModel<T>& M, std::size_t cell, const Limits& limits) {
+  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0 <= cell < the number of cells");
+  const auto& V = M.trivariates[M.cells[cell].trivariates.front()];
+  if (V.is_rational())
+    throw DomainError("cells[" + std::to_string(cell) + "]", "is rational: its volume is not a rational number in general and the certified enclosure is not built yet",
+                      "use polynomial cells for exact volumes");
+  const T v = integrate(jacobian_determinant(V, limits))[0];
+  return v < T(0) ? T(-v) : v;
+}
+
+template <class T>
+std::vector<std::size_t> cells_containing(const VModel<T>& M, const std::vector<T>& x, const T& eps) {
+  using namespace vrep_detail;
+  if (x.size() != 3) throw ValidationError("at", "needs three coordinates", "give x,y,z");
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto P = convex_planes(M.trivariates[M.cells[c].trivariates.front()], eps);
+    if (!P)
+      throw DomainError("cells[" + std::to_string(c) + "]", "is not a convex cell with planar faces: point classification in curved cells is not built yet",
+                        "classify in models of boxes or planar hexahedra for now");
+    bool in = true;
+    for (const auto& H : *P) in = in && !(plane_at(H, x.data()) < -plane_tol(H, eps));
+    if (in) out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace splinex
