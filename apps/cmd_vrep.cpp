@@ -12,6 +12,7 @@
 #include "io/vtk_io.hpp"
 #include "experiments/vrep_figures.hpp"
 #include <fstream>
+#include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
 #include "vrep/trivariate.hpp"
@@ -252,6 +253,26 @@ Commands add_vrep(CLI::App& app) {
   ev->add_option("--cell", vo->cell, "the cell (0-based)")->capture_default_str();
   ev->add_option("--at", vo->at, "the parameter point u,v,w")->required();
 
+  struct BooleanOptions {
+    std::string op, a, b, eps, blend = "sum-clipped", at;
+  };
+  auto bo = std::make_shared<BooleanOptions>();
+  auto* boo = v->add_subcommand("boolean", "V-model Booleans (papers/002 Algorithms 1-3): cells cut exactly along parameter planes");
+  boo->add_option("operation", bo->op, "intersect, subtract or union")->required()->check(CLI::IsMember({"intersect", "subtract", "union"}));
+  boo->add_option("first", bo->a, "the V-model A (or a trivariate)")->required();
+  boo->add_option("second", bo->b, "the V-model B (or a trivariate)")->required();
+  boo->add_option("--eps", bo->eps, "run in double with IRIT-style tolerance eps (default: exact)");
+  boo->add_option("--blend", bo->blend, "constants of cells in both models: sum-clipped (Figure 5), sum or first")
+      ->check(CLI::IsMember({"sum-clipped", "sum", "first"}))
+      ->capture_default_str();
+  auto volo = std::make_shared<BooleanOptions>();
+  auto* vol = v->add_subcommand("volume", "the volume of every cell and of the model, exactly (polynomial cells)");
+  vol->add_option("file", volo->a, "a V-model document")->required();
+  auto clo = std::make_shared<BooleanOptions>();
+  auto* cls = v->add_subcommand("classify", "which cells contain a point (exact; cells with planar faces)");
+  cls->add_option("file", clo->a, "a V-model document")->required();
+  cls->add_option("--at", clo->at, "the point x,y,z")->required();
+
   auto read_cells = [](const std::vector<std::string>& files, const Context& ctx) {
     VModelCells all;
     for (std::size_t f = 0; f < files.size(); ++f)
@@ -306,6 +327,49 @@ Commands add_vrep(CLI::App& app) {
              };
              if (!eo->vtk.empty()) write(eo->vtk, "vtk", vmodel_to_vtu(M));
              if (!eo->svg.empty()) write(eo->svg, "svg", vmodel_svg(M, eo->explode, "V-model: " + std::to_string(M.cells.size()) + " cells", eo->singular));
+             return 0;
+           }},
+          {boo, [bo, exact_model](const Context& ctx) {
+             const auto A = exact_model({bo->a}, ctx), B = exact_model({bo->b}, ctx);
+             const BooleanOp op = parse_boolean_op(bo->op);
+             const Blend blend = parse_blend(bo->blend);
+             if (bo->eps.empty()) {
+               std::cout << vmodel_to_json(boolean_op(A, B, op, Rational(0), blend, ctx.limits)).dump() << "\n";
+               return 0;
+             }
+             const double eps = to_double(parse_number(bo->eps, "eps"));
+             if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
+             auto in_double = [&](const VModel<Rational>& M, const std::string& field) {
+               std::vector<BSpline<double>> d;
+               std::vector<std::string> names;
+               for (std::size_t c = 0; c < M.cells.size(); ++c) {
+                 d.push_back(round_spline<double>(M.trivariates[M.cells[c].trivariates.front()], field + ".cells[" + std::to_string(c) + "]"));
+                 names.push_back(M.cells[c].name);
+               }
+               return glue(d, eps, names, ctx.limits);
+             };
+             std::cout << vmodel_to_json(boolean_op(in_double(A, "first"), in_double(B, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
+             return 0;
+           }},
+          {vol, [volo, exact_model](const Context& ctx) {
+             const auto M = exact_model({volo->a}, ctx);
+             Json cells = Json::array();
+             Rational total(0);
+             for (std::size_t c = 0; c < M.cells.size(); ++c) {
+               const Rational v = cell_volume(M, c, ctx.limits);
+               total += v;
+               cells.push_back({{"cell", c}, {"name", M.cells[c].name}, {"volume", to_fraction_string(v)}});
+             }
+             std::cout << Json{{"cells", cells}, {"volume", to_fraction_string(total)}}.dump() << "\n";
+             return 0;
+           }},
+          {cls, [clo, exact_model](const Context& ctx) {
+             const auto M = exact_model({clo->a}, ctx);
+             const auto x = parse_number_list(clo->at, "at");
+             if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
+             Json cells = Json::array();
+             for (std::size_t c : cells_containing(M, x)) cells.push_back({{"cell", c}, {"name", M.cells[c].name}});
+             std::cout << Json{{"inside", !cells.empty()}, {"cells", cells}}.dump() << "\n";
              return 0;
            }},
           {info, [io, exact_model](const Context& ctx) {

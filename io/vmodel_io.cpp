@@ -1,6 +1,7 @@
 #include "io/vmodel_io.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "float/mpfr.hpp"
 
@@ -12,13 +13,21 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
   if (!doc.contains("type") || doc["type"] != "vmodel") {
     out.trivariates.push_back(spline_from_json(doc, limits, where));
     out.names.push_back(where);
+    out.inherits.emplace_back();
     return out;
   }
   for (auto it = doc.begin(); it != doc.end(); ++it)
     if (it.key() != "type" && it.key() != "cells" && it.key() != "topology" && it.key() != "surface_attributes" &&
-        it.key() != "curve_attributes" && it.key() != "point_attributes")
+        it.key() != "curve_attributes" && it.key() != "point_attributes" && it.key() != "inherited_trivariates")
       throw ValidationError(where + "." + it.key(), "is not a field of a V-model document",
-                            "remove it (fields: type, cells, surface_attributes, curve_attributes, point_attributes, topology)");
+                            "remove it (fields: type, cells, inherited_trivariates, surface_attributes, curve_attributes, point_attributes, "
+                            "topology)");
+  if (doc.contains("inherited_trivariates")) {
+    const Json& inh = doc["inherited_trivariates"];
+    if (!inh.is_array()) throw ValidationError(where + ".inherited_trivariates", "is not a list", "give a list of trivariate documents");
+    for (std::size_t k = 0; k < inh.size(); ++k)
+      out.inherited.push_back(spline_from_json(inh[k], limits, where + ".inherited_trivariates[" + std::to_string(k) + "]"));
+  }
   if (!doc.contains("cells") || !doc["cells"].is_array() || doc["cells"].empty())
     throw ValidationError(where + ".cells", "is missing or empty", "give a list of cells {\"name\": ..., \"trivariate\": {...}}");
   for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
@@ -27,9 +36,18 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
     if (!c.is_object() || !c.contains("trivariate"))
       throw ValidationError(w, "has no \"trivariate\"", "give {\"name\": ..., \"trivariate\": {spline document}}");
     for (auto it = c.begin(); it != c.end(); ++it)
-      if (it.key() != "name" && it.key() != "trivariate" && it.key() != "attributes")
-        throw ValidationError(w + "." + it.key(), "is not a field of a cell", "remove it (fields: name, trivariate, attributes)");
+      if (it.key() != "name" && it.key() != "trivariate" && it.key() != "attributes" && it.key() != "inherited")
+        throw ValidationError(w + "." + it.key(), "is not a field of a cell", "remove it (fields: name, trivariate, inherited, attributes)");
     out.trivariates.push_back(spline_from_json(c["trivariate"], limits, w + ".trivariate"));
+    std::vector<std::size_t> inh;
+    if (c.contains("inherited")) {
+      if (!c["inherited"].is_array()) throw ValidationError(w + ".inherited", "is not a list", "give indices into inherited_trivariates");
+      for (std::size_t k = 0; k < c["inherited"].size(); ++k) {
+        const int i = json_int(c["inherited"][k], w + ".inherited[" + std::to_string(k) + "]", 0, static_cast<int>(out.inherited.size()) - 1);
+        inh.push_back(static_cast<std::size_t>(i));
+      }
+    }
+    out.inherits.push_back(inh);
     out.names.push_back(c.contains("name") && c["name"].is_string() ? c["name"].get<std::string>() : "cell " + std::to_string(i));
   }
   out.attribute_docs.push_back({doc, 0});
@@ -37,7 +55,11 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
 }
 
 void append_cells(VModelCells& into, VModelCells more) {
-  const std::size_t shift = into.trivariates.size();
+  const std::size_t shift = into.trivariates.size(), ishift = into.inherited.size();
+  for (auto& list : more.inherits)
+    for (auto& i : list) i += ishift;
+  into.inherits.insert(into.inherits.end(), more.inherits.begin(), more.inherits.end());
+  into.inherited.insert(into.inherited.end(), more.inherited.begin(), more.inherited.end());
   for (auto& [d, first] : more.attribute_docs) into.attribute_docs.push_back({std::move(d), first + shift});
   into.trivariates.insert(into.trivariates.end(), more.trivariates.begin(), more.trivariates.end());
   into.names.insert(into.names.end(), more.names.begin(), more.names.end());
@@ -75,6 +97,11 @@ std::size_t cell_index(const Json& e, std::size_t first, const VModel<Rational>&
 }  // namespace
 
 void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits) {
+  // Inherited trivariates (the sources of a Boolean's cells) after the cells' own.
+  const std::size_t base = M.trivariates.size();
+  M.trivariates.insert(M.trivariates.end(), cells.inherited.begin(), cells.inherited.end());
+  for (std::size_t c = 0; c < cells.inherits.size() && c < M.cells.size(); ++c)
+    for (std::size_t i : cells.inherits[c]) M.cells[c].trivariates.push_back(base + i);
   for (const auto& [doc, first] : cells.attribute_docs) {
     if (!doc.is_object() || !doc.contains("type") || doc["type"] != "vmodel") continue;
     for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
@@ -138,9 +165,22 @@ Json vmodel_to_json(const VModel<T>& M) {
     }
     return o;
   };
-  Json cells = Json::array();
+  Json cells = Json::array(), inherited = Json::array();
+  std::map<std::size_t, std::size_t> inherited_index;  // model trivariate -> position in "inherited_trivariates"
   for (const auto& c : M.cells) {
     Json j{{"name", c.name}, {"trivariate", spline_to_json(M.trivariates[c.trivariates.front()])}};
+    if (c.trivariates.size() > 1) {
+      Json list = Json::array();
+      for (std::size_t k = 1; k < c.trivariates.size(); ++k) {
+        auto it = inherited_index.find(c.trivariates[k]);
+        if (it == inherited_index.end()) {
+          it = inherited_index.emplace(c.trivariates[k], inherited.size()).first;
+          inherited.push_back(spline_to_json(M.trivariates[c.trivariates[k]]));
+        }
+        list.push_back(it->second);
+      }
+      j["inherited"] = list;
+    }
     if (!c.attributes.empty()) {
       Json a = consts(c.attributes.constants);
       for (const auto& [n, F] : c.attributes.fields) a[n] = spline_to_json(F);
@@ -208,6 +248,7 @@ Json vmodel_to_json(const VModel<T>& M) {
                 {"curves", curves},
                 {"surfaces", surfaces},
                 {"half_surfaces", halves}}}};
+  if (!inherited.empty()) out["inherited_trivariates"] = inherited;
   if (!sattr.empty()) out["surface_attributes"] = sattr;
   if (!cattr.empty()) out["curve_attributes"] = cattr;
   if (!pattr.empty()) out["point_attributes"] = pattr;

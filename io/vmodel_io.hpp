@@ -1,8 +1,11 @@
 // The V-model document (JSON), read exactly.
 //   {"type": "vmodel",
 //    "cells": [{"name": "...", "trivariate": {spline document with three directions, q >= 3},
+//               "inherited": [indices into inherited_trivariates] (the trivariates that contain the
+//                            cell besides its own: the sources of a Boolean's cell, Section 4),
 //               "attributes": {"NAME": [numbers] (a constant) | {spline document} (a field: an
 //                              attribute trivariate on the cell's domain)}}, ...],
+//    "inherited_trivariates": [{spline document}, ...],
 //    "surface_attributes": [{"cell": i, "face": [direction, side], "attributes": {"NAME": [numbers]}}],
 //    "curve_attributes":   [{"cell": i, "along": d, "sides": [s0, s1, s2], "attributes": {...}}],
 //    "point_attributes":   [{"cell": i, "corner": [s0, s1, s2], "attributes": {...}}],
@@ -26,13 +29,15 @@ struct VModelCells {
   std::vector<BSpline<Rational>> trivariates;
   std::vector<std::string> names;
   std::vector<std::pair<Json, std::size_t>> attribute_docs;  // (document, index of its first cell)
+  std::vector<BSpline<Rational>> inherited;                  // inherited trivariates of all documents
+  std::vector<std::vector<std::size_t>> inherits;            // per cell: indices into `inherited`
 };
 VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "vmodel");
 /// Appends the cells of another document (cell indices of its attributes shifted).
 void append_cells(VModelCells& into, VModelCells more);
 
 /// The attributes of the documents attached to the glued model (ValidationError naming the field
-/// for a bad address or value).
+/// for a bad address or value), and the cells' inherited trivariates appended to its trivariates.
 void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits = {});
 
 /// The document: cells with their trivariates, and the topology (counts, Euler characteristic,
