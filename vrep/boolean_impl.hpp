@@ -295,7 +295,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     std::optional<std::size_t> a, b;
   };
   // Cuts forced on a source cell by a neighbour's tiling (a T-junction found in an earlier round):
-  // the planes that split the cell on the other side of the junction. They only grow, and there
+  // the planes that split the cell on the other side of the junction, and its face planes. They only grow, and there
   // are finitely many planes, so the rounds end.
   std::vector<std::vector<HalfSpace<T>>> forced[2] = {std::vector<std::vector<HalfSpace<T>>>(A.cells.size()),
                                                       std::vector<std::vector<HalfSpace<T>>>(B.cells.size())};
@@ -334,38 +334,91 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     if (cells.empty())
       throw DomainError("result", "is empty (the models do not overlap where the operation keeps anything)", "check the operands and the operation");
     VModel<T> M = glue(cells, eps, names, limits);
-    // No T-junctions: a boundary face's centre may not lie in the closure of another piece. Where
-    // one does, both source cells take each other's splitting planes and the round is repeated.
+    // No T-junctions: two boundary faces of different pieces may not overlap in one plane (with
+    // opposite sides). Where they do (a cut that splits one face and not the other, or two cells
+    // touching on faces that overlap in part), both source cells take each other's planes and the
+    // round is repeated.
     std::vector<std::vector<HalfSpace<T>>> piece_planes;
     for (const auto& V : cells) {
       auto P = convex_planes(V, eps);
       if (!P) throw std::logic_error("boolean_op: a piece of a convex planar cell is not convex and planar");
       piece_planes.push_back(*P);
     }
-    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
-    std::string first_junction;
+    struct BoundaryFace {
+      std::size_t cell;
+      HalfSpace<T> H;  // the inner side of the piece's face plane
+      std::vector<std::vector<T>> corners;
+      std::string text;
+    };
+    std::vector<BoundaryFace> faces;
     for (const auto& h : M.half_surfaces) {
       if (h.twin) continue;
       const auto& V = M.trivariates[h.trivariate];
-      auto x = centre_of(V);
-      x[h.dir] = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
-      const auto c = evaluate(V, x);
-      for (std::size_t q = 0; q < cells.size(); ++q) {
-        if (q == h.cell) continue;
-        bool in = true;
-        for (const auto& H : piece_planes[q]) in = in && !(plane_at(H, c.data()) < -plane_tol(H, eps));
-        if (!in) continue;
-        junctions.insert({origin[h.cell], origin[q]});
-        if (first_junction.empty())
-          first_junction = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell] +
-                           " lies on piece " + names[q] + " without being glued to it";
+      BoundaryFace f{h.cell, piece_planes[h.cell][2 * h.dir + h.side], {}, {}};
+      const int a = h.dir == 0 ? 1 : 0, b = h.dir == 2 ? 1 : 2;
+      for (int k = 0; k < 4; ++k) {  // (0, 0), (1, 0), (1, 1), (0, 1): a convex quadrilateral in order
+        std::vector<T> x(3);
+        x[h.dir] = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
+        x[a] = (k == 1 || k == 2) ? V.domain_hi(a) : V.domain_lo(a);
+        x[b] = k >= 2 ? V.domain_hi(b) : V.domain_lo(b);
+        auto p = evaluate(V, x);
+        p.resize(3);
+        f.corners.push_back(p);
       }
+      f.text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell];
+      faces.push_back(std::move(f));
     }
+    auto overlap = [&](const BoundaryFace& f, const BoundaryFace& g) {
+      if (!(f.H.n[0] * g.H.n[0] + f.H.n[1] * g.H.n[1] + f.H.n[2] * g.H.n[2] < T(0))) return false;
+      const T tol = plane_tol(g.H, eps);
+      for (const auto& c : f.corners)
+        if (tol < mag(plane_at(g.H, c.data()))) return false;
+      // Positive-area overlap of two convex quadrilaterals in the plane (projected along the
+      // normal's largest coordinate): no edge of either separates them.
+      int drop = 0;
+      for (int d = 1; d < 3; ++d)
+        if (mag(f.H.n[drop]) < mag(f.H.n[d])) drop = d;
+      const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+      auto separates = [&](const std::vector<std::vector<T>>& P, const std::vector<std::vector<T>>& Q) {
+        T cu(0), cv(0);
+        for (const auto& p : P) {
+          cu += p[u];
+          cv += p[v];
+        }
+        cu /= T(4);
+        cv /= T(4);
+        for (int k = 0; k < 4; ++k) {
+          const auto &A = P[k], &B = P[(k + 1) % 4];
+          const T eu = B[u] - A[u], ev = B[v] - A[v];
+          auto side = [&](const T& x, const T& y) { return eu * (y - A[v]) - ev * (x - A[u]); };
+          const T inner = side(cu, cv);
+          const T etol = eps * (mag(eu) + mag(ev));
+          bool all_out = true;
+          for (const auto& q : Q) all_out = all_out && !(etol < (inner < T(0) ? T(-side(q[u], q[v])) : side(q[u], q[v])));
+          if (all_out) return true;
+        }
+        return false;
+      };
+      return !separates(f.corners, g.corners) && !separates(g.corners, f.corners);
+    };
+    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
+    std::string first_junction;
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::size_t j = i + 1; j < faces.size(); ++j) {
+        if (faces[i].cell == faces[j].cell || !overlap(faces[i], faces[j])) continue;
+        junctions.insert({origin[faces[i].cell], origin[faces[j].cell]});
+        if (first_junction.empty()) first_junction = faces[i].text + " overlaps " + faces[j].text + " without being glued to it";
+      }
     if (!junctions.empty()) {
       bool grew = false;
+      // The planes of a source cell's tiling: its splitting planes and its own face planes (two
+      // cells touching on faces that overlap only in part are cut to the common part).
       auto give = [&](std::pair<int, std::size_t> from, std::pair<int, std::size_t> to) {
         auto& f = forced[to.first][to.second];
-        for (const auto& H : splitting[from.first][from.second]) {
+        std::vector<HalfSpace<T>> planes = splitting[from.first][from.second];
+        const auto& own = (from.first == 0 ? planesA : planesB)[from.second];
+        if (own) planes.insert(planes.end(), own->begin(), own->end());
+        for (const auto& H : planes) {
           bool have = false;
           for (const auto& G : f) have = have || (G.n == H.n && G.d == H.d);
           if (!have) {

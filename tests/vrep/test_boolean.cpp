@@ -5,6 +5,7 @@
 #include "exact/rational.hpp"
 #include "spline/kernel.hpp"
 #include "vrep/boolean.hpp"
+#include "vrep/nef_check.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/vmodel.hpp"
 
@@ -200,4 +201,84 @@ TEST_CASE("vrep boolean: a cut that would leave a T-junction is carried into the
   const auto S = boolean_op(A, b, BooleanOp::subtract);
   check_ok(S, 1);
   CHECK(volume(S) == R(2) - R(1, 4));
+}
+
+TEST_CASE("vrep boolean: CGAL's exact Nef polyhedra agree (volumes and boundary counts)") {
+  // Figure 3's union: an L-shape of 12 vertices, 18 edges, 8 facets.
+  const auto O1 = box({0, 0, 0}, {2, 1, 1}), O2 = box({1, 0, 0}, {2, 2, 1});
+  const auto U = boolean_op(O1, O2, BooleanOp::unite);
+  const auto n = nef_boolean(O1, O2, BooleanOp::unite), v = boundary_counts(U);
+  CHECK(n.volume == R(3));
+  CHECK(v.volume == n.volume);
+  CHECK(n.vertices == 12);
+  CHECK(n.edges == 18);
+  CHECK(n.facets == 8);
+  CHECK(v.vertices == n.vertices);
+  CHECK(v.edges == n.edges);
+  CHECK(v.facets == n.facets);
+  // Random boxes with coordinates in {0, 1/2, ..., 3} (coplanar and touching faces are common):
+  // every operation, volumes exactly, counts where both boundaries are manifold.
+  std::uint64_t state = 0x9e3779b97f4a7c15ULL;
+  auto next = [&](int m) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<int>(state % static_cast<std::uint64_t>(m));
+  };
+  auto random_box = [&]() {
+    std::vector<R> lo, hi;
+    for (int d = 0; d < 3; ++d) {
+      const int a = next(6), b = a + 1 + next(6 - a);
+      lo.push_back(R(a, 2));
+      hi.push_back(R(b, 2));
+    }
+    return box(lo, hi);
+  };
+  int compared = 0, counted = 0, empty = 0;
+  for (int k = 0; k < 100; ++k) {
+    auto A = random_box();
+    const auto B = random_box();
+    if (k % 4 == 3) {  // a model of several cells: the union of two boxes
+      try {
+        A = boolean_op(A, random_box(), BooleanOp::unite);
+      } catch (const DomainError&) {
+        continue;
+      }
+    }
+    for (BooleanOp op : {BooleanOp::intersect, BooleanOp::subtract, BooleanOp::unite}) {
+      const auto n = nef_boolean(A, B, op);
+      VModel<R> M;
+      try {
+        M = boolean_op(A, B, op);
+      } catch (const DomainError& e) {
+        INFO(e.what());
+        CHECK(n.volume == R(0));  // only an empty result is refused
+        ++empty;
+        continue;
+      }
+      const auto v = boundary_counts(M);
+      std::string desc;
+      for (const VModel<R>* X : {static_cast<const VModel<R>*>(&A), &B})
+        for (const auto& c : X->cells) {
+          const auto& V = X->trivariates[c.trivariates.front()];
+          desc += "[";
+          for (std::size_t i : std::vector<std::size_t>{0, V.size() - 1})
+            for (int d = 0; d < 3; ++d) desc += to_fraction_string(V.points[i * 3 + d]) + (d < 2 ? "," : i == 0 ? " .. " : "");
+          desc += "] ";
+        }
+      INFO("case " << k << " op " << to_string(op) << ": " << desc << " cells " << M.cells.size());
+      CHECK(v.volume == n.volume);
+      CHECK(check_invariants(M).ok());
+      ++compared;
+      if (n.manifold && v.manifold) {
+        CHECK(v.vertices == n.vertices);
+        CHECK(v.edges == n.edges);
+        CHECK(v.facets == n.facets);
+        ++counted;
+      }
+    }
+  }
+  CHECK(compared > 150);
+  CHECK(counted > 100);
+  WARN("Nef comparisons: " << compared << " volumes, " << counted << " boundary counts, " << empty << " empty results");
 }
