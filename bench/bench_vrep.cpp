@@ -9,6 +9,7 @@
 #include <map>
 
 #include "float/mpfr.hpp"
+#include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
 #include "vrep/vmodel.hpp"
@@ -38,9 +39,41 @@ void step(benchmark::State& st, const std::string& name, const std::string& what
 }
 
 
+/// Booleans (issue 18): Figure 3's union of two boxes, and a 3 x 3 x 3 grid of boxes minus an
+/// inner box (a cavity: 27 cells cut, T-junctions resolved).
+template <class T>
+std::pair<VModel<T>, VModel<T>> boolean_operands(const std::string& name) {
+  auto box = [](int a0, int a1, int a2, int b0, int b1, int b2, int den) {
+    return glue(box_cells<T>({T(a0) / T(den), T(a1) / T(den), T(a2) / T(den)}, {T(b0) / T(den), T(b1) / T(den), T(b2) / T(den)}));
+  };
+  if (name == "figure3") return {box(0, 0, 0, 2, 1, 1, 1), box(1, 0, 0, 2, 2, 1, 1)};
+  std::vector<BSpline<T>> cells;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) cells.push_back(box_cells<T>({T(i), T(j), T(k)}, {T(i + 1), T(j + 1), T(k + 1)})[0]);
+  return {glue(cells, std::is_same_v<T, double> ? T(1e-12) : T(0)), box(1, 1, 1, 5, 5, 5, 2)};
+}
+
+template <class T>
+void boolean_step(benchmark::State& st, const std::string& name) {
+  const auto [A, B] = boolean_operands<T>(name);
+  const T eps = std::is_same_v<T, double> ? T(1e-12) : T(0);
+  const BooleanOp op = name == "figure3" ? BooleanOp::unite : BooleanOp::subtract;
+  std::size_t cells = 0;
+  for (auto _ : st) cells = boolean_op(A, B, op, eps).cells.size();
+  st.counters["cells"] = static_cast<double>(cells);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::vector<std::string> booleans{"figure3", "grid-cavity"};
+  for (const auto& b : booleans) {
+    benchmark::RegisterBenchmark(("vrep/boolean/double/" + b).c_str(), [b](benchmark::State& st) { boolean_step<double>(st, b); })
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("vrep/boolean/exact/" + b).c_str(), [b](benchmark::State& st) { boolean_step<Rational>(st, b); })
+        ->Unit(benchmark::kMillisecond);
+  }
   const std::vector<std::string> prims{"cylinder", "cone", "torus", "sphere"}, steps{"construct", "glue", "certify"};
   for (const auto& p : prims)
     for (const auto& s : steps) {
@@ -60,6 +93,12 @@ int main(int argc, char** argv) {
       std::cout << std::fixed << std::setprecision(1) << std::setw(9) << (d > 0 ? e / d : 0.0) << "  ";
     }
     std::cout << "\n";
+  }
+  std::cout << "\nV-rep Booleans (Table 1 for what is built): ms double, ms exact, exact/double\n";
+  for (const auto& b : booleans) {
+    const double d = rep.ns["vrep/boolean/double/" + b], e = rep.ns["vrep/boolean/exact/" + b];
+    std::cout << std::left << std::setw(12) << b << std::right << std::fixed << std::setprecision(2) << std::setw(10) << d
+              << std::setw(10) << e << std::setprecision(1) << std::setw(8) << (d > 0 ? e / d : 0.0) << "\n";
   }
   benchmark::Shutdown();
   return 0;

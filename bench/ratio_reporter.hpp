@@ -1,5 +1,6 @@
 // The console reporter the benchmarks print their ratio tables from: real time per benchmark
-// function name (without "/iterations:N"), as Google Benchmark reports it.
+// function name (without "/iterations:N"), as Google Benchmark reports it (in the benchmark's
+// time unit: the ratios are what the tables print).
 #pragma once
 #include <benchmark/benchmark.h>
 

@@ -54,6 +54,9 @@ void elevation_accuracy_section(ReportContext& ctx);
 void hybrid_section(ReportContext& ctx);
 /// V-rep: the gluing tolerance and float regularity, measured exactly; part vrep.
 void vrep_section(ReportContext& ctx);
+// V-rep Booleans (issue 18): Figure 3's counts against CGAL's Nef polyhedra, Figure 5's colour
+// blend, the price of a tolerance in Booleans of nearly touching boxes.
+void vrep_boolean_section(ReportContext& ctx);
 /// The peers' results judged by verify, from ReportOptions::peers_dir; part peers.
 void peers_section(ReportContext& ctx);
 /// The exact proofs of `splinex prove`; part proofs.

@@ -23,7 +23,15 @@ std::string vmodel_svg(const VModel<Rational>& M, double explode, const std::str
     const auto& V = M.trivariates[M.cells[c].trivariates.front()];
     std::array<double, 3> off{};
     for (int k = 0; k < 3; ++k) off[k] = explode * (centre[c][k] - all[k]);
-    add_trivariate_boundary(tris, V, palette_rgb(c), samples, off);
+    // A cell's "colour" attribute (three values in [0, 1], Figure 5) if it has one.
+    std::array<int, 3> rgb = palette_rgb(c);
+    const auto col = M.cells[c].attributes.constants.find("colour");
+    if (col != M.cells[c].attributes.constants.end() && col->second.size() == 3)
+      for (int k = 0; k < 3; ++k) {
+        const double x = to_double(col->second[k]);
+        rgb[k] = static_cast<int>(255.0 * (x < 0 ? 0 : x > 1 ? 1 : x) + 0.5);
+      }
+    add_trivariate_boundary(tris, V, rgb, samples, off);
     if (!mark_singular) continue;
     const auto J = jacobian_determinant(V);
     for (int d = 0; d < 3; ++d)

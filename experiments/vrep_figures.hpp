@@ -1,5 +1,6 @@
 // Figures of V-models (issue 17): an exploded view of the cells (each cell's six faces, shifted
-// away from the model's centre by `explode` times its centroid's offset, one colour per cell),
+// away from the model's centre by `explode` times its centroid's offset, one colour per cell: its
+// "colour" attribute (three values in [0, 1]) or the palette's),
 // optionally with the points where det J = 0 exactly marked in red (sampled on each cell's
 // boundary faces, exact evaluation of det J's numerator).
 #pragma once

@@ -282,3 +282,24 @@ TEST_CASE("vrep boolean: CGAL's exact Nef polyhedra agree (volumes and boundary 
   CHECK(counted > 100);
   WARN("Nef comparisons: " << compared << " volumes, " << counted << " boundary counts, " << empty << " empty results");
 }
+
+TEST_CASE("vrep boolean: a grid of boxes with a box inside: union, and a cavity (Euler 2)") {
+  std::vector<BSpline<R>> cells;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) cells.push_back(box_cells<R>({R(i), R(j), R(k)}, {R(i + 1), R(j + 1), R(k + 1)})[0]);
+  const auto grid = glue(cells);
+  const auto inner = box({R(1, 2), R(1, 2), R(1, 2)}, {R(5, 2), R(5, 2), R(5, 2)});
+  const auto U = boolean_op(grid, inner, BooleanOp::unite);
+  check_ok(U, 1);
+  CHECK(volume(U) == R(27));
+  const auto S = boolean_op(grid, inner, BooleanOp::subtract);
+  check_ok(S, 2);  // a solid with a cavity: a thick sphere, Euler characteristic 2
+  CHECK(volume(S) == R(27) - R(8));
+  const auto n = nef_boolean(grid, inner, BooleanOp::subtract);
+  CHECK(n.volume == volume(S));
+  const auto I = boolean_op(grid, inner, BooleanOp::intersect);
+  check_ok(I, 1);
+  CHECK(volume(I) == R(8));
+  CHECK(I.cells.size() == 27);  // each grid box contributes its corner cube of the inner box
+}
