@@ -255,6 +255,7 @@ Commands add_vrep(CLI::App& app) {
 
   struct BooleanOptions {
     std::string op, a, b, eps, blend = "sum-clipped", at;
+    std::size_t boxes = 256;
   };
   auto bo = std::make_shared<BooleanOptions>();
   auto* boo = v->add_subcommand("boolean", "V-model Booleans (papers/002 Algorithms 1-3): cells cut exactly along parameter planes");
@@ -266,8 +267,11 @@ Commands add_vrep(CLI::App& app) {
       ->check(CLI::IsMember({"sum-clipped", "sum", "first"}))
       ->capture_default_str();
   auto volo = std::make_shared<BooleanOptions>();
-  auto* vol = v->add_subcommand("volume", "the volume of every cell and of the model, exactly (polynomial cells)");
+  auto* vol = v->add_subcommand("volume", "every cell's volume and the model's: exact (polynomial cells) or a certified enclosure (rational)");
   vol->add_option("file", volo->a, "a V-model document")->required();
+  vol->add_option("--boxes", volo->boxes, "rational cells: the subdivision budget per cell (the enclosure's gap shrinks as 1/boxes)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
   auto clo = std::make_shared<BooleanOptions>();
   auto* cls = v->add_subcommand("classify", "which cells contain a point (exact; cells with planar faces)");
   cls->add_option("file", clo->a, "a V-model document")->required();
@@ -354,13 +358,28 @@ Commands add_vrep(CLI::App& app) {
           {vol, [volo, exact_model](const Context& ctx) {
              const auto M = exact_model({volo->a}, ctx);
              Json cells = Json::array();
-             Rational total(0);
+             Rational lo(0), hi(0);
              for (std::size_t c = 0; c < M.cells.size(); ++c) {
-               const Rational v = cell_volume(M, c, ctx.limits);
-               total += v;
-               cells.push_back({{"cell", c}, {"name", M.cells[c].name}, {"volume", to_fraction_string(v)}});
+               const auto e = volume_enclosure(M.trivariates[M.cells[c].trivariates.front()], volo->boxes, ctx.limits);
+               lo += e.lower;
+               hi += e.upper;
+               Json j{{"cell", c}, {"name", M.cells[c].name}};
+               if (e.lower == e.upper) j["volume"] = to_fraction_string(e.lower);
+               else {
+                 j["lower"] = to_fraction_string(e.lower);
+                 j["upper"] = to_fraction_string(e.upper);
+                 j["boxes"] = e.boxes;
+               }
+               cells.push_back(j);
              }
-             std::cout << Json{{"cells", cells}, {"volume", to_fraction_string(total)}}.dump() << "\n";
+             Json out{{"cells", cells}};
+             if (lo == hi) out["volume"] = to_fraction_string(lo);
+             else {
+               out["lower"] = to_fraction_string(lo);
+               out["upper"] = to_fraction_string(hi);
+               out["approximately"] = {to_double(lo), to_double(hi)};
+             }
+             std::cout << out.dump() << "\n";
              return 0;
            }},
           {cls, [clo, exact_model](const Context& ctx) {

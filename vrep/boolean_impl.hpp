@@ -2,6 +2,7 @@
 #pragma once
 #include <algorithm>
 #include <map>
+#include <queue>
 #include <set>
 
 #include "spline/bezier.hpp"
@@ -9,7 +10,7 @@
 #include "spline/evaluate.hpp"
 #include "spline/integrate.hpp"
 #include "vrep/boolean.hpp"
-#include "vrep/regularity.hpp"
+#include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
 #include "vrep/trivariate.hpp"
 
 namespace splinex {
@@ -474,6 +475,139 @@ T cell_volume(const VModel<T>& M, std::size_t cell, const Limits& limits) {
                       "use polynomial cells for exact volumes");
   const T v = integrate(jacobian_determinant(V, limits))[0];
   return v < T(0) ? T(-v) : v;
+}
+
+template <class T>
+VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, const Limits& limits) {
+  using vrep_detail::Bern;
+  validate(V, limits);
+  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
+  if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
+  vrep_detail::check_jacobian_size(V, limits);
+  // Per Bezier piece, in local coordinates s in [0, 1]^3 (the volume is the integral of the local
+  // det J over the unit cube): det J = N / W^4, N and W in Bernstein form.
+  struct Box {
+    Bern<T> N, W;
+    T vol, lo, hi;  // the box's share of the unit cube and the bounds of its integral
+  };
+  auto bounds = [](Box& b) {
+    T nmin = b.N.c.front(), nmax = nmin, wmin = b.W.c.front(), wmax = wmin;
+    for (const auto& x : b.N.c) {
+      if (x < nmin) nmin = x;
+      if (nmax < x) nmax = x;
+    }
+    for (const auto& x : b.W.c) {
+      if (x < wmin) wmin = x;
+      if (wmax < x) wmax = x;
+    }
+    if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
+    const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
+    if (!(nmin < T(0)) || !(T(0) < nmax)) {
+      // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
+      // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
+      // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
+      // Bernstein coefficients), and the gap shrinks with the square of the box.
+      const T sg = nmax < T(0) || (nmax == T(0) && nmin < T(0)) ? T(-1) : T(1);
+      T si(0), sj(0);
+      for (const auto& x : b.N.c) si += x;
+      const Bern<T> NW = vrep_detail::mul(b.N, b.W);
+      for (const auto& x : NW.c) sj += x;
+      const T I = sg * b.vol * si / T(static_cast<long>(b.N.c.size()));
+      const T J = sg * b.vol * sj / T(static_cast<long>(NW.c.size()));
+      if (I == T(0)) {
+        b.lo = b.hi = T(0);
+        return;
+      }
+      const T m = J / I, m2 = m * m;
+      const T lower = I / (m2 * m2);
+      const T fa = T(1) / w4min, fb = T(1) / w4max;
+      const T upper = wmax == wmin ? T(I * fa) : T(fa * I + (fb - fa) / (wmax - wmin) * (J - wmin * I));
+      b.lo = sg < T(0) ? T(-upper) : lower;
+      b.hi = sg < T(0) ? T(-lower) : upper;
+      return;
+    }
+    b.lo = b.vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
+    b.hi = b.vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
+  };
+  // The direction in which a Bernstein polynomial's coefficients vary most along its lines.
+  auto variation = [](const Bern<T>& b, int l) {
+    std::size_t stride = 1;
+    for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
+    T v(0);
+    for (std::size_t i = 0; i < b.c.size(); ++i) {
+      if ((i / stride) % (b.deg[l] + 1) == static_cast<std::size_t>(b.deg[l])) continue;
+      const T d = b.c[i + stride] - b.c[i];
+      const T a = d < T(0) ? T(-d) : d;
+      if (v < a) v = a;
+    }
+    return v;
+  };
+  auto wider = [](const Box& a, const Box& b) { return (a.hi - a.lo) < (b.hi - b.lo); };
+  std::priority_queue<Box, std::vector<Box>, decltype(wider)> queue(wider);
+  VolumeEnclosure<T> out;
+  const auto pieces = extract_bezier(V, limits);
+  for (const auto& pc : pieces) {
+    Box b{vrep_detail::jacobian_numerator(pc.spline), vrep_detail::homogeneous(pc.spline, 0), T(1), T(0), T(0)};
+    if (!V.is_rational()) {
+      // Polynomial: the integral of N over the unit cube is the mean of its coefficients, exactly.
+      T sum(0);
+      for (const auto& x : b.N.c) sum += x;
+      out.lower += sum / T(static_cast<long>(b.N.c.size()));
+      continue;
+    }
+    bounds(b);
+    queue.push(std::move(b));
+  }
+  if (!V.is_rational()) {
+    out.upper = out.lower;
+    if (out.lower < T(0)) out.lower = out.upper = -out.lower;
+    out.boxes = pieces.size();
+    return out;
+  }
+  while (queue.size() < max_boxes) {
+    Box b = queue.top();
+    if (b.hi == b.lo) break;
+    queue.pop();
+    // Halve it across the direction where W varies most (N's if W is constant there).
+    int dir = 0;
+    T best(-1);
+    for (int l = 0; l < 3; ++l) {
+      const T v = b.W.deg[l] > 0 ? variation(b.W, l) : T(0);
+      if (best < v) {
+        best = v;
+        dir = l;
+      }
+    }
+    if (best == T(0)) {
+      best = T(-1);
+      for (int l = 0; l < 3; ++l) {
+        const T v = b.N.deg[l] > 0 ? variation(b.N, l) : T(0);
+        if (best < v) {
+          best = v;
+          dir = l;
+        }
+      }
+    }
+    auto [N0, N1] = vrep_detail::split_half(b.N, dir);
+    auto [W0, W1] = vrep_detail::split_half(b.W, dir);
+    Box c0{std::move(N0), std::move(W0), b.vol / T(2), T(0), T(0)}, c1{std::move(N1), std::move(W1), b.vol / T(2), T(0), T(0)};
+    bounds(c0);
+    bounds(c1);
+    queue.push(std::move(c0));
+    queue.push(std::move(c1));
+  }
+  out.boxes = queue.size();
+  while (!queue.empty()) {
+    out.lower += queue.top().lo;
+    out.upper += queue.top().hi;
+    queue.pop();
+  }
+  if (out.upper < T(0)) {  // negatively oriented: the volume is the integral's magnitude
+    const T l = -out.upper;
+    out.upper = -out.lower;
+    out.lower = l;
+  }
+  return out;
 }
 
 template <class T>

@@ -117,6 +117,7 @@ const char* to_string(Regularity r) {
   template VModel<T> boolean_op(const VModel<T>&, const VModel<T>&, BooleanOp, const T&, Blend, const Limits&,        \
                                 BooleanStats<T>*);                                                                   \
   template T cell_volume(const VModel<T>&, std::size_t, const Limits&);                                              \
+  template VolumeEnclosure<T> volume_enclosure(const BSpline<T>&, std::size_t, const Limits&);                                              \
   template std::vector<std::size_t> cells_containing(const VModel<T>&, const std::vector<T>&, const T&);
 
 SPLINEX_INSTANTIATE_VREP(Rational)
