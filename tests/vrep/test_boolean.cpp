@@ -6,6 +6,7 @@
 #include "spline/kernel.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/nef_check.hpp"
+#include "vrep/blend.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/vmodel.hpp"
 
@@ -332,4 +333,53 @@ TEST_CASE("vrep volume enclosures of rational cells: the cylinder contains pi r^
   const auto e = volume_enclosure(B.trivariates[0]);
   CHECK(e.lower == e.upper);
   CHECK(e.lower == cell_volume(B, 0));
+}
+
+TEST_CASE("vrep distance blend (Eq. 2): certified enclosures, exact at the interfaces, singular at r") {
+  // V1 = [0,2]^2 x [0,1]; V2 = a square turned 45 degrees (diamond (1,0), (2,1), (1,2), (0,1))
+  // extruded over z in [-1, 2]: a parallelepiped with planar faces, inside V1's square.
+  const auto V1 = box({0, 0, 0}, {2, 2, 1});
+  auto P = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const R u = P.points[i * 3], v = P.points[i * 3 + 1], w = P.points[i * 3 + 2];
+    P.points[i * 3] = 1 + u - v;
+    P.points[i * 3 + 1] = u + v;
+    P.points[i * 3 + 2] = -1 + 3 * w;
+  }
+  const auto V2 = glue(std::vector<BSpline<R>>{P});
+  const DistanceBlend blend(V1, V2);
+  const std::vector<R> red{1}, blue{0};
+  // The centre: d1 = 1/2 (V1's top and bottom inside V2), d2 = 1/sqrt 2 (the diamond's sides):
+  // A = (1/2) / (1/2 + 1/sqrt 2) = sqrt 2 - 1, irrational; the enclosure holds it.
+  const auto c = blend.at({1, 1, R(1, 2)}, red, blue);
+  REQUIRE(c.value.size() == 1);
+  CHECK(c.d1_squared == R(1, 4));
+  CHECK(c.d2_squared == R(1, 2));
+  const auto& e = c.value[0];
+  CHECK(e.lo < e.hi);
+  CHECK((e.lo + 1) * (e.lo + 1) <= 2);
+  CHECK(2 <= (e.hi + 1) * (e.hi + 1));
+  CHECK(e.hi - e.lo < R(1) / R(Integer(1) << 100));
+  // k = 2: (1/4) / (1/4 + 1/2) = 1/3 exactly inside the enclosure.
+  const auto c2 = blend.at({1, 1, R(1, 2)}, red, blue, 2);
+  CHECK(c2.value[0].lo <= R(1, 3));
+  CHECK(R(1, 3) <= c2.value[0].hi);
+  // On the diamond's side inside V1 (x + y = 1, z = 1/2): d2 = 0, A = A1 exactly; V1 alone there
+  // gives A1 too: C^0 across that interface (and within 2^-j of it the value is within a bound).
+  const auto on = blend.at({R(1, 2), R(1, 2), R(1, 2)}, red, blue);
+  REQUIRE(on.value.size() == 1);
+  CHECK(on.value[0].exact());
+  CHECK(on.value[0].lo == 1);
+  const auto out = blend.at({R(1, 4), R(1, 4), R(1, 2)}, red, blue);  // V1 only
+  CHECK(out.value[0].lo == 1);
+  for (int j = 4; j <= 40; j += 4) {
+    const R t = R(1) / R(Integer(1) << j);
+    const auto near = blend.at({R(1, 2) + t, R(1, 2) + t, R(1, 2)}, red, blue);  // 2^-j sqrt 2 inside
+    CHECK(1 - near.value[0].lo <= 6 * t);  // A1 - A <= d2 / (d1 + d2) <= sqrt 2 t / (1/2 - ...) < 6 t
+  }
+  // The point r of Figure 6: on V1's top face inside V2 and on the diamond's side: both zero.
+  const auto r = blend.at({R(1, 2), R(1, 2), R(1)}, red, blue);
+  CHECK(r.singular);
+  CHECK(r.value.empty());
+  CHECK_THROWS_AS(blend.at({R(5), R(5), R(5)}, red, blue), ValidationError);
 }
