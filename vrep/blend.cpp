@@ -36,17 +36,8 @@ std::vector<std::vector<P3>> boundary_faces(const VModel<Rational>& M) {
   std::vector<std::vector<P3>> out;
   for (const auto& h : M.half_surfaces) {
     if (h.twin) continue;
-    const auto& V = M.trivariates[h.trivariate];
-    const int a = h.dir == 0 ? 1 : 0, b = h.dir == 2 ? 1 : 2;
     std::vector<P3> q;
-    for (int k = 0; k < 4; ++k) {
-      std::vector<Rational> x(3);
-      x[h.dir] = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
-      x[a] = (k == 1 || k == 2) ? V.domain_hi(a) : V.domain_lo(a);
-      x[b] = k >= 2 ? V.domain_hi(b) : V.domain_lo(b);
-      const auto p = evaluate(V, x);
-      q.push_back({p[0], p[1], p[2]});
-    }
+    for (const auto& p : face_corners(M.trivariates[h.trivariate], h.dir, h.side)) q.push_back({p[0], p[1], p[2]});
     out.push_back(q);
   }
   return out;
@@ -131,23 +122,12 @@ P3 point(const std::vector<Rational>& p) {
   return {p[0], p[1], p[2]};
 }
 
-Rational left(mpfi_t x) {
+/// An end of an MPFI interval (left or right) as the exact rational it is.
+Rational end_of(mpfi_t x, bool right) {
   mpfr_t e;
   mpfr_init2(e, mpfi_get_prec(x));
-  mpfi_get_left(e, x);
-  mpq_t q;
-  mpq_init(q);
-  mpfr_get_q(q, e);
-  Rational r(q);
-  mpq_clear(q);
-  mpfr_clear(e);
-  return r;
-}
-
-Rational right(mpfi_t x) {
-  mpfr_t e;
-  mpfr_init2(e, mpfi_get_prec(x));
-  mpfi_get_right(e, x);
+  if (right) mpfi_get_right(e, x);
+  else mpfi_get_left(e, x);
   mpq_t q;
   mpq_init(q);
   mpfr_get_q(q, e);
@@ -218,7 +198,7 @@ BlendValue DistanceBlend::at(const std::vector<Rational>& p, const std::vector<R
     mpfi_mul_q(t, w2, A2[c].backend().data());
     mpfi_add(num, num, t);
     mpfi_div(t, num, s);
-    out.value.push_back({left(t), right(t)});
+    out.value.push_back({end_of(t, false), end_of(t, true)});
   }
   for (auto* x : {&d1, &d2, &w1, &w2, &s, &num, &t}) mpfi_clear(*x);
   return out;

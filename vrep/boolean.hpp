@@ -64,6 +64,11 @@ struct HalfSpace {
 template <class T>
 std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps = T(0));
 
+/// The four corners of face (dir, side) of a trivariate, in the order (0, 0), (1, 0), (1, 1),
+/// (0, 1) of the face's two directions (a convex quadrilateral for a convex planar cell).
+template <class T>
+std::vector<std::vector<T>> face_corners(const BSpline<T>& V, int dir, int side);
+
 template <class T>
 struct BooleanStats {
   std::size_t pieces = 0;   // pieces cut before gluing

@@ -287,6 +287,22 @@ std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, cons
 }
 
 template <class T>
+std::vector<std::vector<T>> face_corners(const BSpline<T>& V, int dir, int side) {
+  const int a = dir == 0 ? 1 : 0, b = dir == 2 ? 1 : 2;
+  std::vector<std::vector<T>> out;
+  for (int k = 0; k < 4; ++k) {
+    std::vector<T> x(3);
+    x[dir] = side ? V.domain_hi(dir) : V.domain_lo(dir);
+    x[a] = (k == 1 || k == 2) ? V.domain_hi(a) : V.domain_lo(a);
+    x[b] = k >= 2 ? V.domain_hi(b) : V.domain_lo(b);
+    auto p = evaluate(V, x);
+    p.resize(3);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+template <class T>
 VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const T& eps, Blend blend, const Limits& limits,
                      BooleanStats<T>* stats) {
   using namespace vrep_detail;
@@ -354,18 +370,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     std::vector<BoundaryFace> faces;
     for (const auto& h : M.half_surfaces) {
       if (h.twin) continue;
-      const auto& V = M.trivariates[h.trivariate];
-      BoundaryFace f{h.cell, piece_planes[h.cell][2 * h.dir + h.side], {}, {}};
-      const int a = h.dir == 0 ? 1 : 0, b = h.dir == 2 ? 1 : 2;
-      for (int k = 0; k < 4; ++k) {  // (0, 0), (1, 0), (1, 1), (0, 1): a convex quadrilateral in order
-        std::vector<T> x(3);
-        x[h.dir] = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
-        x[a] = (k == 1 || k == 2) ? V.domain_hi(a) : V.domain_lo(a);
-        x[b] = k >= 2 ? V.domain_hi(b) : V.domain_lo(b);
-        auto p = evaluate(V, x);
-        p.resize(3);
-        f.corners.push_back(p);
-      }
+      BoundaryFace f{h.cell, piece_planes[h.cell][2 * h.dir + h.side], face_corners(M.trivariates[h.trivariate], h.dir, h.side), {}};
       f.text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell];
       faces.push_back(std::move(f));
     }

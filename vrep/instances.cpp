@@ -114,6 +114,7 @@ const char* to_string(Regularity r) {
   template BSpline<T> singular_cylinder(const T&, const T&);                                                         \
   template BSpline<T> singular_sphere(const T&);                                                                      \
   template std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>&, const T&);                      \
+  template std::vector<std::vector<T>> face_corners(const BSpline<T>&, int, int);                      \
   template VModel<T> boolean_op(const VModel<T>&, const VModel<T>&, BooleanOp, const T&, Blend, const Limits&,        \
                                 BooleanStats<T>*);                                                                   \
   template T cell_volume(const VModel<T>&, std::size_t, const Limits&);                                              \
