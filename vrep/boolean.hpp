@@ -4,16 +4,17 @@
 // What is built: models whose cells are convex and bounded by planar faces (boxes, and any
 // hexahedral trivariate whose six faces are planar: its control points of a face on one plane, all
 // its control points on the inner side of every face plane). Such a cell has an exact implicit
-// form, six half-spaces n.x + d >= 0 (vrep/boolean.hpp: convex_planes). Composing a half-space
-// with another cell's trivariate T is linear in T's homogeneous control points, so its sign on T
-// is decided by the exact numbers c_i = w_i (n.P_i + d) (convex hull: all >= 0 inside, all <= 0
-// outside, touching included, so coplanar contact is decided exactly). When the signs are mixed
-// and the numbers depend on one parameter only and linearly (c_k = alpha + beta g_k on the
-// Greville abscissae g_k of that direction) the plane cuts T exactly at the parameter
+// form, six half-spaces n.x + d >= 0 (vrep/boolean.hpp: convex_planes). A half-space on another
+// cell's trivariate T is a convex combination of its values c_i = n.P_i + d at T's control points
+// (positive weights), so all c_i >= 0 is inside, all <= 0 outside, touching included: coplanar
+// contact is decided exactly. When the signs are mixed, the c_i depend on one parameter only and
+// linearly (c_k = alpha + beta g_k on the Greville abscissae g_k of that direction) and the weights
+// do not vary along it, n.T + d is that linear function and the plane cuts T exactly at the parameter
 // t = -alpha/beta, a rational number, and T is split there (knot insertion, exact): untrimming by
 // a cuboid tiling of the parameter domain (papers/002 Section 7). A cut that is not such a
 // parameter plane (a curved trimming surface in T's parameters) is not built yet: DomainError
-// naming both cells.
+// naming both cells. Only the cells that cut need the implicit form: in intersect and subtract A's
+// cells may be curved (a cylinder's sectors cut by a slab along w).
 //
 // The algorithms (Section 4): a cell a of A is split by the planes of every cell b of B that
 // overlaps it (no plane of b has a wholly outside); each piece of the grid is inside exactly one b
@@ -63,6 +64,11 @@ struct HalfSpace {
 /// planar (within eps) or a control point lies outside a face plane (the cell is not convex).
 template <class T>
 std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps = T(0));
+
+/// The plane of face (dir, side) of a trivariate oriented to the trivariate's side (its centre), if
+/// every control point of the face lies on it (within eps).
+template <class T>
+std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int dir, int side, const T& eps = T(0));
 
 /// The four corners of face (dir, side) of a trivariate, in the order (0, 0), (1, 0), (1, 1),
 /// (0, 1) of the face's two directions (a convex quadrilateral for a convex planar cell).

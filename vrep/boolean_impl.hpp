@@ -51,15 +51,12 @@ struct PlaneOnCell {
 
 template <class T>
 PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps) {
+  // The plane's values at the Euclidean control points: L(T(u)) is their convex combination with
+  // the positive weights w_i N_i / W, so their signs decide inside and outside.
   const std::size_t n = V.size();
-  T wmax(1);
   std::vector<T> c(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const T w = V.is_rational() ? V.weights[i] : T(1);
-    if (wmax < w) wmax = w;
-    c[i] = w * plane_at(H, &V.points[i * V.q]);
-  }
-  const T tol = plane_tol(H, eps) * wmax;
+  for (std::size_t i = 0; i < n; ++i) c[i] = plane_at(H, &V.points[i * V.q]);
+  const T tol = plane_tol(H, eps);
   bool all_in = true, all_out = true;
   for (const auto& x : c) {
     all_in = all_in && !(x < -tol);
@@ -85,6 +82,15 @@ PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps
           ref[d] = idx[d];
           only_d = !(tol < mag(T(c[flat(i0, i1, i2)] - c[flat(ref[0], ref[1], ref[2])])));
         }
+    // The weights may not vary along d (then L(T) = sum_k N_k(u_d) c_k: the weights cancel).
+    if (only_d && V.is_rational())
+      for (std::size_t i2 = 0; i2 < cnt[2] && only_d; ++i2)
+        for (std::size_t i1 = 0; i1 < cnt[1] && only_d; ++i1)
+          for (std::size_t i0 = 0; i0 < cnt[0] && only_d; ++i0) {
+            std::size_t ref[3] = {i0, i1, i2};
+            ref[d] = 0;
+            only_d = V.weights[flat(i0, i1, i2)] == V.weights[flat(ref[0], ref[1], ref[2])];
+          }
     if (!only_d) continue;
     // Linear in the parameter: c_k = alpha + beta g_k on the Greville abscissae.
     const int p = V.degrees[d];
@@ -243,40 +249,48 @@ void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend
 }  // namespace vrep_detail
 
 template <class T>
-std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps) {
+std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int d, int s, const T& eps) {
   using namespace vrep_detail;
   if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
   const auto c = evaluate(V, centre_of(V));
+  const BSpline<T> F = face(V, d, s);
+  const std::size_t n = F.size();
+  auto pt = [&](std::size_t i) { return &F.points[i * F.q]; };
+  const T* p0 = pt(0);
+  HalfSpace<T> H{{T(0), T(0), T(0)}, T(0)};
+  bool found = false;
+  for (std::size_t i = 1; i < n && !found; ++i)
+    for (std::size_t j = i + 1; j < n && !found; ++j) {
+      const T a[3] = {pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
+      const T b[3] = {pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
+      H.n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const T size = mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]);
+      const T amax = std::max({mag(a[0]), mag(a[1]), mag(a[2])}), bmax = std::max({mag(b[0]), mag(b[1]), mag(b[2])});
+      found = eps * (amax + bmax) < size && !(size == T(0));
+    }
+  if (!found) return std::nullopt;
+  H.d = -(H.n[0] * p0[0] + H.n[1] * p0[1] + H.n[2] * p0[2]);
+  const T tol = plane_tol(H, eps);
+  for (std::size_t i = 0; i < n; ++i)
+    if (tol < mag(plane_at(H, pt(i)))) return std::nullopt;
+  const T at_centre = plane_at(H, c.data());
+  if (!(tol < mag(at_centre))) return std::nullopt;
+  if (at_centre < T(0)) {
+    for (auto& x : H.n) x = -x;
+    H.d = -H.d;
+  }
+  return H;
+}
+
+template <class T>
+std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps) {
+  using namespace vrep_detail;
   std::vector<HalfSpace<T>> out;
   for (int d = 0; d < 3; ++d)
     for (int s = 0; s < 2; ++s) {
-      const BSpline<T> F = face(V, d, s);
-      const std::size_t n = F.size();
-      auto pt = [&](std::size_t i) { return &F.points[i * F.q]; };
-      const T* p0 = pt(0);
-      HalfSpace<T> H{{T(0), T(0), T(0)}, T(0)};
-      bool found = false;
-      for (std::size_t i = 1; i < n && !found; ++i)
-        for (std::size_t j = i + 1; j < n && !found; ++j) {
-          const T a[3] = {pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
-          const T b[3] = {pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
-          H.n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-          const T size = mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]);
-          const T amax = std::max({mag(a[0]), mag(a[1]), mag(a[2])}), bmax = std::max({mag(b[0]), mag(b[1]), mag(b[2])});
-          found = eps * (amax + bmax) < size && !(size == T(0));
-        }
-      if (!found) return std::nullopt;
-      H.d = -(H.n[0] * p0[0] + H.n[1] * p0[1] + H.n[2] * p0[2]);
-      const T tol = plane_tol(H, eps);
-      for (std::size_t i = 0; i < n; ++i)
-        if (tol < mag(plane_at(H, pt(i)))) return std::nullopt;
-      const T at_centre = plane_at(H, c.data());
-      if (!(tol < mag(at_centre))) return std::nullopt;
-      if (at_centre < T(0)) {
-        for (auto& x : H.n) x = -x;
-        H.d = -H.d;
-      }
-      out.push_back(H);
+      const auto H = face_plane(V, d, s, eps);
+      if (!H) return std::nullopt;
+      out.push_back(*H);
     }
   for (const auto& H : out) {
     const T tol = plane_tol(H, eps);
@@ -355,12 +369,6 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     // opposite sides). Where they do (a cut that splits one face and not the other, or two cells
     // touching on faces that overlap in part), both source cells take each other's planes and the
     // round is repeated.
-    std::vector<std::vector<HalfSpace<T>>> piece_planes;
-    for (const auto& V : cells) {
-      auto P = convex_planes(V, eps);
-      if (!P) throw std::logic_error("boolean_op: a piece of a convex planar cell is not convex and planar");
-      piece_planes.push_back(*P);
-    }
     struct BoundaryFace {
       std::size_t cell;
       HalfSpace<T> H;  // the inner side of the piece's face plane
@@ -368,11 +376,31 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       std::string text;
     };
     std::vector<BoundaryFace> faces;
+    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
+    std::string first_junction;
     for (const auto& h : M.half_surfaces) {
       if (h.twin) continue;
-      BoundaryFace f{h.cell, piece_planes[h.cell][2 * h.dir + h.side], face_corners(M.trivariates[h.trivariate], h.dir, h.side), {}};
-      f.text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell];
-      faces.push_back(std::move(f));
+      const auto& V = M.trivariates[h.trivariate];
+      const std::string text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell];
+      const auto H = face_plane(V, h.dir, h.side, eps);
+      if (H) {
+        faces.push_back({h.cell, *H, face_corners(V, h.dir, h.side), text});
+        continue;
+      }
+      // A curved face (of a curved cell of A; B's cells are planar): a part of its source cell's
+      // face, since cuts are planar. If that face was internal in A, the neighbour's pieces must
+      // have the same part: a face left unglued here is a junction between the two source cells.
+      const auto [model, src] = origin[h.cell];
+      const VModel<T>& S = model == 0 ? A : B;
+      const auto& SV = S.trivariates[S.cells[src].trivariates.front()];
+      const T end = h.side ? SV.domain_hi(h.dir) : SV.domain_lo(h.dir);
+      const T here = h.side ? V.domain_hi(h.dir) : V.domain_lo(h.dir);
+      if (!(end == here)) continue;
+      for (const auto& sh : S.half_surfaces)
+        if (sh.cell == src && sh.dir == h.dir && sh.side == h.side && sh.twin) {
+          junctions.insert({origin[h.cell], {model, S.half_surfaces[*sh.twin].cell}});
+          if (first_junction.empty()) first_junction = text + " lies on a face that was glued in the input and is not glued in the result";
+        }
     }
     auto overlap = [&](const BoundaryFace& f, const BoundaryFace& g) {
       if (!(f.H.n[0] * g.H.n[0] + f.H.n[1] * g.H.n[1] + f.H.n[2] * g.H.n[2] < T(0))) return false;
@@ -407,8 +435,6 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       };
       return !separates(f.corners, g.corners) && !separates(g.corners, f.corners);
     };
-    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
-    std::string first_junction;
     for (std::size_t i = 0; i < faces.size(); ++i)
       for (std::size_t j = i + 1; j < faces.size(); ++j) {
         if (faces[i].cell == faces[j].cell || !overlap(faces[i], faces[j])) continue;

@@ -114,7 +114,8 @@ const char* to_string(Regularity r) {
   template BSpline<T> singular_cylinder(const T&, const T&);                                                         \
   template BSpline<T> singular_sphere(const T&);                                                                      \
   template std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>&, const T&);                      \
-  template std::vector<std::vector<T>> face_corners(const BSpline<T>&, int, int);                      \
+  template std::vector<std::vector<T>> face_corners(const BSpline<T>&, int, int);                                    \
+  template std::optional<HalfSpace<T>> face_plane(const BSpline<T>&, int, int, const T&);                      \
   template VModel<T> boolean_op(const VModel<T>&, const VModel<T>&, BooleanOp, const T&, Blend, const Limits&,        \
                                 BooleanStats<T>*);                                                                   \
   template T cell_volume(const VModel<T>&, std::size_t, const Limits&);                                              \

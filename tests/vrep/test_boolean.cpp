@@ -383,3 +383,26 @@ TEST_CASE("vrep distance blend (Eq. 2): certified enclosures, exact at the inter
   CHECK(r.value.empty());
   CHECK_THROWS_AS(blend.at({R(5), R(5), R(5)}, red, blue), ValidationError);
 }
+
+TEST_CASE("vrep boolean: a curved model cut by a slab along parameter planes (the cylinder's cells)") {
+  const R pi_lo(R(314159265358979LL, 100000000000000LL)), pi_hi(R(314159265358980LL, 100000000000000LL));
+  const auto cyl = glue(cylinder_cells<R>(R(1), R(2)));
+  const auto slab = box({-5, -5, R(1, 2)}, {5, 5, 1});
+  const auto I = boolean_op(cyl, slab, BooleanOp::intersect);
+  check_ok(I, 1);
+  CHECK(I.cells.size() == 5);
+  R lo(0), hi(0);
+  for (const auto& c : I.cells) {
+    const auto e = volume_enclosure(I.trivariates[c.trivariates.front()], 32);
+    lo += e.lower;
+    hi += e.upper;
+  }
+  CHECK(lo <= pi_hi / 2);
+  CHECK(pi_lo / 2 <= hi);
+  const auto S = boolean_op(cyl, slab, BooleanOp::subtract);
+  CHECK(S.cells.size() == 10);
+  check_ok(S, 2);  // two disks apart
+  CHECK(S.internal_surfaces() == 16);
+  CHECK_THROWS_AS(boolean_op(cyl, slab, BooleanOp::unite), DomainError);  // B's pieces need A's planes
+  CHECK_THROWS_AS(boolean_op(cyl, box({0, -5, 0}, {5, 5, 1}), BooleanOp::intersect), DomainError);  // x = 0: curved
+}
