@@ -114,7 +114,7 @@ void vrep_boolean_section(ReportContext& ctx) {
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << n * px + 2 * margin << "\" height=\"" << n * px + 2 * margin + 30
         << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << margin << "\" y=\"20\" font-family=\"sans-serif\" "
-           "font-size=\"13\">Eq. 2 on the slice z = 5: V1 = [0,2]^2 red, V2 = [1,3]^2 blue; black: r (d1 = d2 = 0)</text>\n";
+           "font-size=\"12\">Eq. 2, slice z = 5: V1 red, V2 blue, r circled</text>\n";
     std::size_t singular = 0, points = 0;
     Rational widest(0);
     for (int i = 0; i < n; ++i)
