@@ -405,4 +405,10 @@ TEST_CASE("vrep boolean: a curved model cut by a slab along parameter planes (th
   CHECK(S.internal_surfaces() == 16);
   CHECK_THROWS_AS(boolean_op(cyl, slab, BooleanOp::unite), DomainError);  // B's pieces need A's planes
   CHECK_THROWS_AS(boolean_op(cyl, box({0, -5, 0}, {5, 5, 1}), BooleanOp::intersect), DomainError);  // x = 0: curved
+  // A plane touching the cylinder (x = 1 at (1, 0, z)): tangential contact with a curved cell is not
+  // decided by control points (the arc's middle control point lies beyond the plane): refused.
+  CHECK_THROWS_AS(boolean_op(cyl, box({1, -5, -5}, {5, 5, 5}), BooleanOp::subtract), DomainError);
+  // A plane beyond it (x = 2): nothing cut, the cylinder is kept whole.
+  const auto apart = boolean_op(cyl, box({2, -5, -5}, {5, 5, 5}), BooleanOp::subtract);
+  CHECK(apart.cells.size() == 5);
 }
