@@ -321,6 +321,14 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
                      BooleanStats<T>* stats) {
   using namespace vrep_detail;
   if (eps < T(0)) throw ValidationError("eps", "must not be negative", "give eps >= 0");
+  // Only valid V-models in, only valid V-models out: a degenerate or inconsistent input is a
+  // typed error here, not an invalid result later.
+  for (const auto* X : {&A, &B}) {
+    const auto chk = check_invariants(*X, limits);
+    if (!chk.ok())
+      throw DomainError(X == &A ? "A" : "B", "is not a valid V-model: " + chk.failures.front(),
+                        "give regular cells glued face to face (vrep info shows the invariants)");
+  }
   const auto planesA = model_planes(A, eps), planesB = model_planes(B, eps);
   struct Source {
     std::optional<std::size_t> a, b;
@@ -467,6 +475,10 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       throw DomainError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
                         "this configuration needs trimmed cells that are not built yet; please report it");
     }
+    const auto result_check = check_invariants(M, limits);
+    if (!result_check.ok())
+      throw DomainError("result", "fails the V-model invariants: " + result_check.failures.front(),
+                        "check that the inputs' cells are regular (vrep certify); please report it if they are");
     if (stats) {
       stats->pieces = cells.size();
       stats->cuts = cut_count;

@@ -412,3 +412,57 @@ TEST_CASE("vrep boolean: a curved model cut by a slab along parameter planes (th
   const auto apart = boolean_op(cyl, box({2, -5, -5}, {5, 5, 5}), BooleanOp::subtract);
   CHECK(apart.cells.size() == 5);
 }
+
+TEST_CASE("vrep boolean: hostile inputs give a typed error or a valid model") {
+  const auto unit = box({0, 0, 0}, {1, 1, 1});
+  auto from = [](BSpline<R> V) { return glue(std::vector<BSpline<R>>{std::move(V)}); };
+  auto attempt = [&](const VModel<R>& A, const VModel<R>& B) {
+    for (BooleanOp op : {BooleanOp::intersect, BooleanOp::subtract, BooleanOp::unite}) {
+      try {
+        const auto M = boolean_op(A, B, op);
+        CHECK(check_invariants(M).ok());
+      } catch (const Error&) {
+        // the typed answer
+      }
+    }
+  };
+  // A mirrored box (negative det J): the planes are oriented by the cell's centre, not its sign.
+  auto mirrored = box_cells<R>({R(1, 2), 0, 0}, {2, 1, 1})[0];
+  for (std::size_t i = 0; i < mirrored.size(); ++i) mirrored.points[i * 3] = R(5, 2) - mirrored.points[i * 3];
+  const auto M1 = boolean_op(unit, from(mirrored), BooleanOp::unite);
+  CHECK(check_invariants(M1).ok());
+  CHECK(volume(M1) == R(2));
+  // A flat box (zero thickness): no planes, and as A it lies in a plane of B's cell.
+  auto flat = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  for (std::size_t i = 0; i < flat.size(); ++i) flat.points[i * 3 + 2] = R(1, 2);
+  CHECK_THROWS_AS(boolean_op(unit, from(flat), BooleanOp::unite), DomainError);
+  attempt(from(flat), unit);
+  // B with overlapping cells.
+  auto two = box_cells<R>({0, 0, 0}, {1, 1, 1});
+  two.push_back(box_cells<R>({R(1, 2), 0, 0}, {R(3, 2), 1, 1})[0]);
+  CHECK_THROWS_AS(boolean_op(box({R(1, 4), 0, 0}, {R(5, 4), 1, 1}), glue(two), BooleanOp::intersect), DomainError);
+  // A non-convex hexahedron with planar faces is not possible; one with a face bent is not planar.
+  auto bent = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  bent.points[7 * 3 + 2] = R(3, 2);  // corner (1,1,1) pulled up: the top face is no longer planar
+  CHECK_FALSE(convex_planes(bent).has_value());
+  CHECK_THROWS_AS(boolean_op(unit, from(bent), BooleanOp::unite), DomainError);
+  attempt(from(bent), box({R(1, 4), R(1, 4), R(1, 4)}, {R(3, 4), R(3, 4), R(3, 4)}));
+  // A box in a refined cubic space (knots 1/3, 2/3): the planes still cut along parameter planes.
+  auto fine = elevate_degree(box_cells<R>({0, 0, 0}, {3, 1, 1})[0], 0, 2);
+  fine = refine_knots(fine, 0, {R(1, 3), R(2, 3)});
+  const auto F = from(fine);
+  CHECK(volume(boolean_op(F, box({1, 0, 0}, {R(5, 2), 2, 2}), BooleanOp::subtract)) == R(3, 2));
+  // A box whose x is not linear in u (middle control points moved along x): the plane x = 1 meets
+  // it at an irrational parameter in general: refused, not approximated.
+  auto skew = elevate_degree(box_cells<R>({0, 0, 0}, {2, 1, 1})[0], 0, 1);
+  for (std::size_t i = 0; i < skew.size(); ++i)
+    if (i % 3 == 1) skew.points[i * 3] = R(3, 2);
+  CHECK_THROWS_AS(boolean_op(from(skew), box({1, 0, 0}, {3, 1, 1}), BooleanOp::subtract), DomainError);
+  // Coordinates far apart in scale: exact all the same.
+  const R big = R(Integer(1) << 60), tiny = R(1) / R(Integer(1) << 60);
+  const auto A = box({0, 0, 0}, {big, 1, 1}), B = box({big - tiny, 0, 0}, {big + 1, 1, 1});
+  const auto U = boolean_op(A, B, BooleanOp::unite);
+  CHECK(volume(U) == big + 1);
+  CHECK(U.cells.size() == 3);
+  attempt(A, B);
+}
