@@ -1,6 +1,7 @@
 #include "io/vmodel_io.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <map>
 
 #include "float/mpfr.hpp"
@@ -120,37 +121,37 @@ void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limit
       if (!doc[key].is_array()) throw ValidationError(std::string("vmodel.") + key, "is not a list", "give a list of entries");
       return doc[key];
     };
-    const Json& sa = list("surface_attributes");
-    for (std::size_t k = 0; k < sa.size(); ++k) {
-      const std::string w = "vmodel.surface_attributes[" + std::to_string(k) + "]";
-      const std::size_t c = cell_index(sa[k], first, M, w);
-      if (!sa[k].contains("face") || !sa[k]["face"].is_array() || sa[k]["face"].size() != 2)
+    // Each entity entry: its cell, its address in the cell (resolved to the entity's attributes),
+    // its constants.
+    auto each = [&](const char* key, auto&& target) {
+      const Json& entries = list(key);
+      for (std::size_t k = 0; k < entries.size(); ++k) {
+        const Json& e = entries[k];
+        const std::string w = std::string("vmodel.") + key + "[" + std::to_string(k) + "]";
+        Attributes<Rational>& a = target(e, w, cell_index(e, first, M, w));
+        for (auto& [n, v] : constants(e.value("attributes", Json::object()), w + ".attributes")) a.constants[n] = v;
+      }
+    };
+    each("surface_attributes", [&](const Json& e, const std::string& w, std::size_t c) -> Attributes<Rational>& {
+      if (!e.contains("face") || !e["face"].is_array() || e["face"].size() != 2)
         throw ValidationError(w + ".face", "is not [direction, side]", "give the face as [0..2, 0|1]");
-      const std::size_t s = surface_of_face(M, c, json_int(sa[k]["face"][0], w + ".face[0]", 0, 2), side_value(sa[k]["face"][1], w + ".face[1]"));
-      for (auto& [n, v] : constants(sa[k].value("attributes", Json::object()), w + ".attributes")) M.surfaces[s].attributes.constants[n] = v;
-    }
-    const Json& ca = list("curve_attributes");
-    for (std::size_t k = 0; k < ca.size(); ++k) {
-      const std::string w = "vmodel.curve_attributes[" + std::to_string(k) + "]";
-      const std::size_t c = cell_index(ca[k], first, M, w);
-      if (!ca[k].contains("sides") || !ca[k]["sides"].is_array() || ca[k]["sides"].size() != 3 || !ca[k].contains("along"))
+      return M.surfaces[surface_of_face(M, c, json_int(e["face"][0], w + ".face[0]", 0, 2), side_value(e["face"][1], w + ".face[1]"))]
+          .attributes;
+    });
+    each("curve_attributes", [&](const Json& e, const std::string& w, std::size_t c) -> Attributes<Rational>& {
+      if (!e.contains("sides") || !e["sides"].is_array() || e["sides"].size() != 3 || !e.contains("along"))
         throw ValidationError(w, "needs \"along\" and \"sides\": [s0, s1, s2]", "give the edge's direction and the sides of the others");
       std::array<int, 3> sides{};
-      for (int d = 0; d < 3; ++d) sides[d] = side_value(ca[k]["sides"][d], w + ".sides");
-      const std::size_t e = curve_of_edge(M, c, json_int(ca[k]["along"], w + ".along", 0, 2), sides);
-      for (auto& [n, v] : constants(ca[k].value("attributes", Json::object()), w + ".attributes")) M.curves[e].attributes.constants[n] = v;
-    }
-    const Json& pa = list("point_attributes");
-    for (std::size_t k = 0; k < pa.size(); ++k) {
-      const std::string w = "vmodel.point_attributes[" + std::to_string(k) + "]";
-      const std::size_t c = cell_index(pa[k], first, M, w);
-      if (!pa[k].contains("corner") || !pa[k]["corner"].is_array() || pa[k]["corner"].size() != 3)
+      for (int d = 0; d < 3; ++d) sides[d] = side_value(e["sides"][d], w + ".sides");
+      return M.curves[curve_of_edge(M, c, json_int(e["along"], w + ".along", 0, 2), sides)].attributes;
+    });
+    each("point_attributes", [&](const Json& e, const std::string& w, std::size_t c) -> Attributes<Rational>& {
+      if (!e.contains("corner") || !e["corner"].is_array() || e["corner"].size() != 3)
         throw ValidationError(w + ".corner", "is not [s0, s1, s2]", "give the corner's sides");
       int idx = 0;
-      for (int d = 0; d < 3; ++d) idx += side_value(pa[k]["corner"][d], w + ".corner") << d;
-      for (auto& [n, v] : constants(pa[k].value("attributes", Json::object()), w + ".attributes"))
-        M.points[M.cells[c].corners[idx]].attributes.constants[n] = v;
-    }
+      for (int d = 0; d < 3; ++d) idx += side_value(e["corner"][d], w + ".corner") << d;
+      return M.points[M.cells[c].corners[idx]].attributes;
+    });
   }
 }
 
@@ -195,28 +196,29 @@ Json vmodel_to_json(const VModel<T>& M) {
       const auto& h = M.half_surfaces[M.surfaces[s].halves.front()];
       sattr.push_back({{"cell", h.cell}, {"face", {h.dir, h.side}}, {"attributes", consts(M.surfaces[s].attributes.constants)}});
     }
+  // The first cell whose edge (corner) is the entity, and which of its edges (corners) it is.
+  auto first_in = [&](auto member, std::size_t id) -> std::optional<std::pair<std::size_t, int>> {
+    for (std::size_t c = 0; c < M.cells.size(); ++c) {
+      const auto& ids = M.cells[c].*member;
+      const auto it = std::find(ids.begin(), ids.end(), id);
+      if (it != ids.end()) return std::make_pair(c, static_cast<int>(it - ids.begin()));
+    }
+    return std::nullopt;
+  };
   for (std::size_t e = 0; e < M.curves.size(); ++e)
     if (!M.curves[e].attributes.empty())
-      for (std::size_t c = 0; c < M.cells.size(); ++c) {
-        const auto& E = M.cells[c].edges;
-        const auto it = std::find(E.begin(), E.end(), e);
-        if (it == E.end()) continue;
-        const int k = static_cast<int>(it - E.begin()), along = k / 4, lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
+      if (const auto at = first_in(&VModel<T>::Cell::edges, e)) {
+        const int k = at->second, along = k / 4, lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
         std::array<int, 3> sides{};
         sides[lo] = k & 1;
         sides[hi] = (k >> 1) & 1;
-        cattr.push_back({{"cell", c}, {"along", along}, {"sides", sides}, {"attributes", consts(M.curves[e].attributes.constants)}});
-        break;
+        cattr.push_back({{"cell", at->first}, {"along", along}, {"sides", sides}, {"attributes", consts(M.curves[e].attributes.constants)}});
       }
   for (std::size_t p = 0; p < M.points.size(); ++p)
     if (!M.points[p].attributes.empty())
-      for (std::size_t c = 0; c < M.cells.size(); ++c) {
-        const auto& P = M.cells[c].corners;
-        const auto it = std::find(P.begin(), P.end(), p);
-        if (it == P.end()) continue;
-        const int k = static_cast<int>(it - P.begin());
-        pattr.push_back({{"cell", c}, {"corner", {k & 1, (k >> 1) & 1, (k >> 2) & 1}}, {"attributes", consts(M.points[p].attributes.constants)}});
-        break;
+      if (const auto at = first_in(&VModel<T>::Cell::corners, p)) {
+        const int k = at->second;
+        pattr.push_back({{"cell", at->first}, {"corner", {k & 1, (k >> 1) & 1, (k >> 2) & 1}}, {"attributes", consts(M.points[p].attributes.constants)}});
       }
   Json points = Json::array(), curves = Json::array(), surfaces = Json::array(), halves = Json::array();
   for (const auto& p : M.points) {

@@ -5,7 +5,6 @@
 
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean.hpp"
 
 namespace splinex {
 
@@ -139,22 +138,22 @@ Rational end_of(mpfi_t x, bool right) {
 
 }  // namespace
 
-DistanceBlend::DistanceBlend(const VModel<Rational>& V1, const VModel<Rational>& V2) : V1_(V1), V2_(V2) {
-  const auto c1 = cell_planes(V1, "first"), c2 = cell_planes(V2, "second");
+DistanceBlend::DistanceBlend(const VModel<Rational>& V1, const VModel<Rational>& V2)
+    : cells1_(cell_planes(V1, "first")), cells2_(cell_planes(V2, "second")) {
   for (const auto& f : boundary_faces(V1))
-    for (const auto& planes : c2) {
+    for (const auto& planes : cells2_) {
       auto P = clip(f, planes);
       if (!P.empty()) boundary1_.push_back(std::move(P));
     }
   for (const auto& f : boundary_faces(V2))
-    for (const auto& planes : c1) {
+    for (const auto& planes : cells1_) {
       auto P = clip(f, planes);
       if (!P.empty()) boundary2_.push_back(std::move(P));
     }
 }
 
-bool DistanceBlend::in_first(const std::vector<Rational>& p) const { return inside(cell_planes(V1_, "first"), point(p)); }
-bool DistanceBlend::in_second(const std::vector<Rational>& p) const { return inside(cell_planes(V2_, "second"), point(p)); }
+bool DistanceBlend::in_first(const std::vector<Rational>& p) const { return inside(cells1_, point(p)); }
+bool DistanceBlend::in_second(const std::vector<Rational>& p) const { return inside(cells2_, point(p)); }
 Rational DistanceBlend::d1_squared(const std::vector<Rational>& p) const { return d2_to(boundary1_, point(p)); }
 Rational DistanceBlend::d2_squared(const std::vector<Rational>& p) const { return d2_to(boundary2_, point(p)); }
 

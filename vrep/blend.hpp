@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "exact/rational.hpp"
+#include "vrep/boolean.hpp"
 #include "vrep/vmodel.hpp"
 
 namespace splinex {
@@ -53,8 +54,9 @@ class DistanceBlend {
 
  private:
   using Polygon3 = std::vector<std::array<Rational, 3>>;
-  std::vector<Polygon3> boundary1_, boundary2_;  // dV1 n V2, dV2 n V1
-  VModel<Rational> V1_, V2_;
+  std::vector<Polygon3> boundary1_, boundary2_;             // dV1 n V2, dV2 n V1
+  std::vector<std::vector<HalfSpace<Rational>>> cells1_, cells2_;  // the cells' half-spaces
+
 };
 
 }  // namespace splinex

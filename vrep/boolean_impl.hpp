@@ -11,16 +11,12 @@
 #include "spline/integrate.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
-#include "vrep/trivariate.hpp"
+#include "vrep/trivariate_impl.hpp"  // vrep_detail::greville
+#include "vrep/vmodel_impl.hpp"      // vrep_detail::magnitude, centre_of
 
 namespace splinex {
 
 namespace vrep_detail {
-
-template <class T>
-T mag(const T& x) {
-  return x < T(0) ? T(-x) : x;
-}
 
 template <class T>
 T plane_at(const HalfSpace<T>& H, const T* x) {
@@ -31,14 +27,7 @@ T plane_at(const HalfSpace<T>& H, const T* x) {
 /// the value by at most that); 0 in exact mode.
 template <class T>
 T plane_tol(const HalfSpace<T>& H, const T& eps) {
-  return eps == T(0) ? T(0) : eps * (mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]));
-}
-
-template <class T>
-std::vector<T> centre_of(const BSpline<T>& V) {
-  std::vector<T> x;
-  for (int d = 0; d < V.dim(); ++d) x.push_back((V.domain_lo(d) + V.domain_hi(d)) / T(2));
-  return x;
+  return eps == T(0) ? T(0) : eps * (magnitude(H.n[0]) + magnitude(H.n[1]) + magnitude(H.n[2]));
 }
 
 /// How a half-space meets a trivariate (see vrep/boolean.hpp).
@@ -80,7 +69,7 @@ PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps
         for (std::size_t i0 = 0; i0 < cnt[0] && only_d; ++i0) {
           std::size_t ref[3] = {0, 0, 0}, idx[3] = {i0, i1, i2};
           ref[d] = idx[d];
-          only_d = !(tol < mag(T(c[flat(i0, i1, i2)] - c[flat(ref[0], ref[1], ref[2])])));
+          only_d = !(tol < magnitude(T(c[flat(i0, i1, i2)] - c[flat(ref[0], ref[1], ref[2])])));
         }
     // The weights may not vary along d (then L(T) = sum_k N_k(u_d) c_k: the weights cancel).
     if (only_d && V.is_rational())
@@ -94,20 +83,18 @@ PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps
     if (!only_d) continue;
     // Linear in the parameter: c_k = alpha + beta g_k on the Greville abscissae.
     const int p = V.degrees[d];
-    const auto& U = V.knots[d];
-    std::vector<T> g(cnt[d]), ck(cnt[d]);
+    if (p == 0) break;
+    const std::vector<T> g = greville(V.knots[d], p, cnt[d]);
+    std::vector<T> ck(cnt[d]);
     for (std::size_t k = 0; k < cnt[d]; ++k) {
-      T s(0);
-      for (int j = 1; j <= p; ++j) s += U[k + j];
-      g[k] = p == 0 ? U[k] : T(s / T(p));
       std::size_t idx[3] = {0, 0, 0};
       idx[d] = k;
       ck[k] = c[flat(idx[0], idx[1], idx[2])];
     }
-    if (p == 0 || !(g.front() < g.back())) break;
+    if (!(g.front() < g.back())) break;
     const T beta = (ck.back() - ck.front()) / (g.back() - g.front()), alpha = ck.front() - beta * g.front();
     bool linear = true;
-    for (std::size_t k = 0; k < cnt[d] && linear; ++k) linear = !(tol < mag(T(alpha + beta * g[k] - ck[k])));
+    for (std::size_t k = 0; k < cnt[d] && linear; ++k) linear = !(tol < magnitude(T(alpha + beta * g[k] - ck[k])));
     if (!linear || beta == T(0)) break;
     r.kind = PlaneOnCell<T>::split;
     r.dir = d;
@@ -116,11 +103,6 @@ PlaneOnCell<T> plane_on(const BSpline<T>& V, const HalfSpace<T>& H, const T& eps
   }
   r.kind = PlaneOnCell<T>::curved;
   return r;
-}
-
-template <class T>
-std::string num_text(const T& x) {
-  return ArithTraits<T>::to_string(x);
 }
 
 /// A piece of a cell cut by the planes of the other model's cells: its trivariate and the cell of
@@ -248,11 +230,11 @@ void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend
 
 }  // namespace vrep_detail
 
+namespace vrep_detail {
+
+/// face_plane with the trivariate's centre point c given (convex_planes asks for six faces).
 template <class T>
-std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int d, int s, const T& eps) {
-  using namespace vrep_detail;
-  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
-  const auto c = evaluate(V, centre_of(V));
+std::optional<HalfSpace<T>> face_plane_towards(const BSpline<T>& V, int d, int s, const T& eps, const std::vector<T>& c) {
   const BSpline<T> F = face(V, d, s);
   const std::size_t n = F.size();
   auto pt = [&](std::size_t i) { return &F.points[i * F.q]; };
@@ -264,17 +246,17 @@ std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int d, int s, const 
       const T a[3] = {pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
       const T b[3] = {pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
       H.n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-      const T size = mag(H.n[0]) + mag(H.n[1]) + mag(H.n[2]);
-      const T amax = std::max({mag(a[0]), mag(a[1]), mag(a[2])}), bmax = std::max({mag(b[0]), mag(b[1]), mag(b[2])});
+      const T size = magnitude(H.n[0]) + magnitude(H.n[1]) + magnitude(H.n[2]);
+      const T amax = std::max({magnitude(a[0]), magnitude(a[1]), magnitude(a[2])}), bmax = std::max({magnitude(b[0]), magnitude(b[1]), magnitude(b[2])});
       found = eps * (amax + bmax) < size && !(size == T(0));
     }
   if (!found) return std::nullopt;
   H.d = -(H.n[0] * p0[0] + H.n[1] * p0[1] + H.n[2] * p0[2]);
   const T tol = plane_tol(H, eps);
   for (std::size_t i = 0; i < n; ++i)
-    if (tol < mag(plane_at(H, pt(i)))) return std::nullopt;
+    if (tol < magnitude(plane_at(H, pt(i)))) return std::nullopt;
   const T at_centre = plane_at(H, c.data());
-  if (!(tol < mag(at_centre))) return std::nullopt;
+  if (!(tol < magnitude(at_centre))) return std::nullopt;
   if (at_centre < T(0)) {
     for (auto& x : H.n) x = -x;
     H.d = -H.d;
@@ -282,13 +264,23 @@ std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int d, int s, const 
   return H;
 }
 
+}  // namespace vrep_detail
+
+template <class T>
+std::optional<HalfSpace<T>> face_plane(const BSpline<T>& V, int d, int s, const T& eps) {
+  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
+  return vrep_detail::face_plane_towards(V, d, s, eps, evaluate(V, vrep_detail::centre_of(V)));
+}
+
 template <class T>
 std::optional<std::vector<HalfSpace<T>>> convex_planes(const BSpline<T>& V, const T& eps) {
   using namespace vrep_detail;
+  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
+  const auto c = evaluate(V, centre_of(V));
   std::vector<HalfSpace<T>> out;
   for (int d = 0; d < 3; ++d)
     for (int s = 0; s < 2; ++s) {
-      const auto H = face_plane(V, d, s, eps);
+      const auto H = face_plane_towards(V, d, s, eps, c);
       if (!H) return std::nullopt;
       out.push_back(*H);
     }
@@ -414,12 +406,12 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       if (!(f.H.n[0] * g.H.n[0] + f.H.n[1] * g.H.n[1] + f.H.n[2] * g.H.n[2] < T(0))) return false;
       const T tol = plane_tol(g.H, eps);
       for (const auto& c : f.corners)
-        if (tol < mag(plane_at(g.H, c.data()))) return false;
+        if (tol < magnitude(plane_at(g.H, c.data()))) return false;
       // Positive-area overlap of two convex quadrilaterals in the plane (projected along the
       // normal's largest coordinate): no edge of either separates them.
       int drop = 0;
       for (int d = 1; d < 3; ++d)
-        if (mag(f.H.n[drop]) < mag(f.H.n[d])) drop = d;
+        if (magnitude(f.H.n[drop]) < magnitude(f.H.n[d])) drop = d;
       const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
       auto separates = [&](const std::vector<std::vector<T>>& P, const std::vector<std::vector<T>>& Q) {
         T cu(0), cv(0);
@@ -434,7 +426,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
           const T eu = B[u] - A[u], ev = B[v] - A[v];
           auto side = [&](const T& x, const T& y) { return eu * (y - A[v]) - ev * (x - A[u]); };
           const T inner = side(cu, cv);
-          const T etol = eps * (mag(eu) + mag(ev));
+          const T etol = eps * (magnitude(eu) + magnitude(ev));
           bool all_out = true;
           for (const auto& q : Q) all_out = all_out && !(etol < (inner < T(0) ? T(-side(q[u], q[v])) : side(q[u], q[v])));
           if (all_out) return true;

@@ -97,10 +97,9 @@ PolyhedronCounts boundary_counts(const VModel<Rational>& M) {
   for (std::size_t s = 0; s < M.surfaces.size(); ++s) {
     if (M.surfaces[s].halves.size() != 1) continue;
     const auto& h = M.half_surfaces[M.surfaces[s].halves[0]];
-    const auto P = convex_planes(M.trivariates[h.trivariate]);
-    if (!P) throw DomainError("cells[" + std::to_string(h.cell) + "]", "is not convex with planar faces", "give boxes or planar hexahedra");
-    const auto& H = (*P)[2 * h.dir + h.side];
-    std::array<Rational, 4> e{H.n[0], H.n[1], H.n[2], H.d};
+    const auto H = face_plane(M.trivariates[h.trivariate], h.dir, h.side);
+    if (!H) throw DomainError("cells[" + std::to_string(h.cell) + "]", "has a boundary face that is not planar", "give boxes or planar hexahedra");
+    std::array<Rational, 4> e{H->n[0], H->n[1], H->n[2], H->d};
     Rational lead(0);
     for (const auto& x : e)
       if (lead == 0 && x != 0) lead = abs(x);

@@ -54,13 +54,8 @@ inline CubeSphereWeights cube_sphere_weights(int degree, int pieces) {
   for (int k = 1; k < pieces; ++k) W.knots.push_back(Rational(k) / Rational(pieces));
   W.knots.insert(W.knots.end(), static_cast<std::size_t>(degree) + 1, Rational(1));
   const std::size_t n = W.knots.size() - degree - 1;
-  std::vector<Rational> xi(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    Rational g(0);
-    for (int k = 1; k <= degree; ++k) g += W.knots[i + k];
-    xi[i] = g / Rational(degree);
-    W.s.push_back(Rational(2) * xi[i] - Rational(1));
-  }
+  const std::vector<Rational> xi = greville(W.knots, degree, n);
+  for (const auto& x : xi) W.s.push_back(Rational(2) * x - Rational(1));
   std::vector<std::vector<Rational>> A(n, std::vector<Rational>(n, Rational(0)));
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t span = find_span(W.knots, degree, n, xi[k]);

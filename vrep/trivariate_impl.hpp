@@ -54,19 +54,27 @@ BSpline<T> two_layers(const BSpline<T>& A, const BSpline<T>& B, const Limits& li
   return R;
 }
 
+/// The Greville abscissae (U[i+1] + ... + U[i+p]) / p of n basis functions of degree p >= 1:
+/// the coefficients of the identity, so a spline is linear in its parameter exactly when its
+/// coefficients are an affine function of them.
+template <class T>
+std::vector<T> greville(const std::vector<T>& U, int p, std::size_t n) {
+  std::vector<T> g(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    T s(0);
+    for (int k = 1; k <= p; ++k) s += U[i + k];
+    g[i] = s / T(p);
+  }
+  return g;
+}
+
 /// Greville abscissae of direction d mapped affinely to [0, 1] (the coefficients of the linear
 /// function that is 0 at the domain's start and 1 at its end; degree >= 1).
 template <class T>
 std::vector<T> unit_greville(const BSpline<T>& S, int d) {
-  const int p = S.degrees[d];
-  const auto& U = S.knots[d];
   const T lo = S.domain_lo(d), hi = S.domain_hi(d);
-  std::vector<T> g(S.count(d));
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    T s(0);
-    for (int k = 1; k <= p; ++k) s += U[i + k];
-    g[i] = (s / T(p) - lo) / (hi - lo);
-  }
+  auto g = greville(S.knots[d], S.degrees[d], S.count(d));
+  for (auto& x : g) x = (x - lo) / (hi - lo);
   return g;
 }
 

@@ -22,6 +22,14 @@ T magnitude(const T& x) {
   return x < T(0) ? T(-x) : x;
 }
 
+/// The centre of a spline's parameter domain.
+template <class T>
+std::vector<T> centre_of(const BSpline<T>& V) {
+  std::vector<T> x;
+  for (int d = 0; d < V.dim(); ++d) x.push_back((V.domain_lo(d) + V.domain_hi(d)) / T(2));
+  return x;
+}
+
 template <class T>
 bool close(const T& a, const T& b, const T& eps) {
   return eps == T(0) ? a == b : !(eps < magnitude(T(a - b)));
@@ -309,8 +317,7 @@ VModelCheck check_invariants(const VModel<T>& M, const Limits& limits) {
       // on opposite sides of the tangent plane.
       auto outward = [&](const typename VModel<T>::HalfSurface& x, std::vector<T>& at, std::vector<T>& out, std::vector<T>& normal) {
         const auto& V = M.trivariates[x.trivariate];
-        std::vector<T> p(3);
-        for (int d = 0; d < 3; ++d) p[d] = (V.domain_lo(d) + V.domain_hi(d)) / T(2);
+        std::vector<T> p = vrep_detail::centre_of(V);
         p[x.dir] = x.side ? V.domain_hi(x.dir) : V.domain_lo(x.dir);
         at = vrep_detail::geometry_of(V, p);
         std::vector<int> ord(3, 0);
