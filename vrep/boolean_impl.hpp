@@ -515,10 +515,8 @@ T cell_volume(const VModel<T>& M, std::size_t cell, const Limits& limits) {
 template <class T>
 VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, const Limits& limits) {
   using vrep_detail::Bern;
-  validate(V, limits);
-  if (V.dim() != 3 || V.q < 3) throw ValidationError("trivariate", "is not a trivariate in R^3", "give a trivariate with q >= 3");
+  vrep_detail::require_jacobian_input(V, limits);
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
-  vrep_detail::check_jacobian_size(V, limits);
   // Per Bezier piece, in local coordinates s in [0, 1]^3 (the volume is the integral of the local
   // det J over the unit cube): det J = N / W^4, N and W in Bernstein form.
   struct Box {

@@ -162,16 +162,23 @@ std::size_t check_jacobian_size(const BSpline<T>& V, const Limits& limits) {
   return per_piece;
 }
 
-}  // namespace vrep_detail
-
+/// What det J needs, checked before any work: a valid trivariate in R^3 of degree >= 1 in every
+/// direction (degree 0: det J is 0, refused), its sizes within the limits.
 template <class T>
-BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits) {
+void require_jacobian_input(const BSpline<T>& V, const Limits& limits) {
   validate(V, limits);
   if (V.dim() != 3 || V.q < 3)
     throw ValidationError("degrees", "det J needs a trivariate with points in R^3", "give a spline with three directions and q >= 3");
   for (int d = 0; d < 3; ++d)
     if (V.degrees[d] == 0) throw ValidationError("degrees", "has degree 0 in a direction: det J is 0", "elevate it first");
-  vrep_detail::check_jacobian_size(V, limits);
+  check_jacobian_size(V, limits);
+}
+
+}  // namespace vrep_detail
+
+template <class T>
+BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits) {
+  vrep_detail::require_jacobian_input(V, limits);
   const BezierForm<T> F = bezier_form(V, limits);
   const int extra = V.is_rational() ? 4 : 3;
   BSpline<T> J;

@@ -333,6 +333,14 @@ TEST_CASE("vrep volume enclosures of rational cells: the cylinder contains pi r^
   const auto e = volume_enclosure(B.trivariates[0]);
   CHECK(e.lower == e.upper);
   CHECK(e.lower == cell_volume(B, 0));
+  // Degree 0 in a direction: det J is 0, refused as jacobian_determinant refuses it (it divided
+  // by zero before).
+  auto flat = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  flat.degrees[0] = 0;
+  flat.knots[0] = {0, 1};
+  flat.points.resize(flat.points.size() / 2);
+  for (std::size_t i = 0; i < flat.size(); ++i) flat.points[i * 3] = R(0);
+  CHECK_THROWS_AS(volume_enclosure(flat), ValidationError);
 }
 
 TEST_CASE("vrep distance blend (Eq. 2): certified enclosures, exact at the interfaces, singular at r") {
