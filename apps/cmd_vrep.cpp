@@ -8,6 +8,7 @@
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
+#include "io/trimmed_io.hpp"
 #include "io/vmodel_io.hpp"
 #include "io/vtk_io.hpp"
 #include "experiments/vrep_figures.hpp"
@@ -15,6 +16,7 @@
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
+#include "vrep/trimmed.hpp"
 #include "vrep/trivariate.hpp"
 
 namespace splinex::app {
@@ -130,9 +132,27 @@ Json report_to_json(const RegularityReport<F>& r) {
 }
 
 struct PrimitiveOptions {
-  std::string name, arith = "exact", radius = "1", radius2 = "1/2", height = "2", major = "3", lo = "0,0,0", hi = "1,1,1";
+  std::string name, arith = "exact", radius = "1", radius2 = "1/2", height = "2", major = "3", lo = "0,0,0", hi = "1,1,1", axis = "z",
+              at = "0,0,0";
   int degree = 3, pieces = 4;
 };
+
+/// The primitive's exact region (vrep/trimmed.hpp) in the standard placement, where it has one: the
+/// sphere of seven cells is approximate, the singular trivariates are not offered for Booleans.
+template <class F>
+std::optional<Region<F>> primitive_region(const PrimitiveOptions& o) {
+  auto num = [](const std::string& text, const std::string& field) { return round_checked<F>(parse_number(text, field), field); };
+  auto list = [](const std::string& text, const std::string& field) {
+    std::vector<F> v;
+    for (const auto& x : parse_number_list(text, field)) v.push_back(round_checked<F>(x, field));
+    return v;
+  };
+  if (o.name == "cylinder") return cylinder_region(num(o.radius, "radius"), num(o.height, "height"));
+  if (o.name == "cone") return cone_region(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"));
+  if (o.name == "torus") return torus_region(num(o.major, "major"), num(o.radius, "radius"));
+  if (o.name == "box") return box_region(list(o.lo, "lo"), list(o.hi, "hi"));
+  return std::nullopt;
+}
 
 template <class F>
 std::vector<BSpline<F>> primitive_cells(const PrimitiveOptions& o) {
@@ -214,6 +234,10 @@ Commands add_vrep(CLI::App& app) {
   prim->add_option("--pieces", po->pieces, "sphere: the patches' polynomial pieces per direction")->capture_default_str();
   prim->add_option("--lo", po->lo, "box: the low corner x,y,z")->capture_default_str();
   prim->add_option("--hi", po->hi, "box: the high corner x,y,z")->capture_default_str();
+  prim->add_option("--axis", po->axis, "the primitive's axis (z: as built; x, y: the coordinates permuted cyclically)")
+      ->check(CLI::IsMember({"x", "y", "z"}))
+      ->capture_default_str();
+  prim->add_option("--at", po->at, "a translation x,y,z applied after --axis")->capture_default_str();
 
   struct GlueOptions {
     std::vector<std::string> files;
@@ -254,17 +278,25 @@ Commands add_vrep(CLI::App& app) {
   ev->add_option("--at", vo->at, "the parameter point u,v,w")->required();
 
   struct BooleanOptions {
-    std::string op, a, b, eps, blend = "sum-clipped", at;
+    std::string op, a, b, eps, blend = "sum-clipped", at, trim = "auto";
     std::size_t boxes = 256;
   };
   auto bo = std::make_shared<BooleanOptions>();
-  auto* boo = v->add_subcommand("boolean", "V-model Booleans (papers/002 Algorithms 1-3): cells cut exactly along parameter planes");
+  bo->boxes = 4096;
+  auto* boo = v->add_subcommand("boolean", "V-model Booleans (papers/002 Algorithms 1-3): cells cut exactly along parameter planes, or trimmed on exact regions");
   boo->add_option("operation", bo->op, "intersect, subtract or union")->required()->check(CLI::IsMember({"intersect", "subtract", "union"}));
   boo->add_option("first", bo->a, "the V-model A (or a trivariate)")->required();
   boo->add_option("second", bo->b, "the V-model B (or a trivariate)")->required();
   boo->add_option("--eps", bo->eps, "run in double with IRIT-style tolerance eps (default: exact)");
   boo->add_option("--blend", bo->blend, "constants of cells in both models: sum-clipped (Figure 5), sum or first")
       ->check(CLI::IsMember({"sum-clipped", "sum", "first"}))
+      ->capture_default_str();
+  boo->add_option("--trim", bo->trim, "auto: planar cuts where they suffice, else trimmed cells on the models' exact regions; "
+                                      "always: trimmed cells; never: planar cuts only")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  boo->add_option("--boxes", bo->boxes, "trimmed cells: the subdivision budget per cell before a contact counts as tangential")
+      ->check(CLI::Range(8, 1 << 20))
       ->capture_default_str();
   auto volo = std::make_shared<BooleanOptions>();
   auto* vol = v->add_subcommand("volume", "every cell's volume and the model's: exact (polynomial cells) or a certified enclosure (rational)");
@@ -273,7 +305,7 @@ Commands add_vrep(CLI::App& app) {
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   auto clo = std::make_shared<BooleanOptions>();
-  auto* cls = v->add_subcommand("classify", "which cells contain a point (exact; cells with planar faces)");
+  auto* cls = v->add_subcommand("classify", "which cells contain a point (exact: planar cells; otherwise the model's exact region)");
   cls->add_option("file", clo->a, "a V-model document")->required();
   cls->add_option("--at", clo->at, "the point x,y,z")->required();
 
@@ -283,12 +315,41 @@ Commands add_vrep(CLI::App& app) {
       append_cells(all, vmodel_cells_from_json(read_json_file(files[f], ctx.read_limits), ctx.limits, files.size() == 1 ? "vmodel" : files[f]));
     return all;
   };
-  // The exact V-model of documents: glued, with their attributes.
-  auto exact_model = [read_cells](const std::vector<std::string>& files, const Context& ctx) {
-    const auto all = read_cells(files, ctx);
+  // The exact V-model of documents: glued, with their attributes; an "implicit" region is checked
+  // against the cells (vrep/trimmed.hpp: check_region) and refused when it does not describe them.
+  auto model_of = [](const VModelCells& all, const Context& ctx) {
     auto M = glue(all.trivariates, Rational(0), all.names, ctx.limits);
     apply_attributes(M, all, ctx.limits);
-    return M;
+    if (all.region) {
+      const auto fails = check_region(M, *all.region, TrimOptions{}, ctx.limits);
+      if (!fails.empty())
+        throw ValidationError("vmodel.implicit", "does not describe the cells: " + fails.front() + (fails.size() > 1 ? " (and " + std::to_string(fails.size() - 1) + " more)" : ""),
+                              "remove \"implicit\" or give the model's exact region");
+    }
+    return std::make_pair(std::move(M), all.region);
+  };
+  auto model_and_region = [read_cells, model_of](const std::vector<std::string>& files, const Context& ctx) {
+    return model_of(read_cells(files, ctx), ctx);
+  };
+  auto exact_model = [model_and_region](const std::vector<std::string>& files, const Context& ctx) { return model_and_region(files, ctx).first; };
+  // A Boolean operand: a trimmed V-model document as it is, a V-model with its region ("implicit",
+  // or the half-spaces of convex planar cells), or the V-model alone (no region: planar cuts only).
+  struct Operand {
+    std::optional<VModel<Rational>> model;
+    std::optional<TrimmedModel<Rational>> trimmed;
+  };
+  auto operand = [model_of](const std::string& file, const Context& ctx) {
+    Operand o;
+    const Json doc = read_json_file(file, ctx.read_limits);
+    if (doc.is_object() && doc.contains("type") && doc["type"] == "trimmed_vmodel") {
+      o.trimmed = trimmed_from_json(doc, ctx.limits, file);
+      return o;
+    }
+    auto [M, region] = model_of(vmodel_cells_from_json(doc, ctx.limits, "vmodel"), ctx);
+    if (!region) region = planar_region(M);
+    if (region) o.trimmed = as_trimmed(M, *region);
+    o.model = std::move(M);
+    return o;
   };
   return {{c, [o](const Context& ctx) {
              std::cout << construct(*o, ctx).dump() << "\n";
@@ -298,10 +359,17 @@ Commands add_vrep(CLI::App& app) {
              const auto spec = ArithSpec::parse(po->arith);
              const Json j = with_arith_except_flint(spec, "vrep primitive", [&](auto tag) {
                using F = typename decltype(tag)::type;
-               const auto cells = primitive_cells<F>(*po);
+               const int axis = po->axis == "x" ? 0 : po->axis == "y" ? 1 : 2;
+               std::vector<F> at;
+               for (const auto& x : parse_number_list(po->at, "at")) at.push_back(round_checked<F>(x, "at"));
+               if (at.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
+               auto cells = primitive_cells<F>(*po);
+               for (auto& V : cells) V = place_trivariate(V, axis, at);
                std::vector<std::string> names;
                for (std::size_t k = 0; k < cells.size(); ++k) names.push_back(po->name + " " + std::to_string(k));
-               return vmodel_to_json(glue(cells, F(0), names, ctx.limits));
+               Json doc = vmodel_to_json(glue(cells, F(0), names, ctx.limits));
+               if (const auto R = primitive_region<F>(*po)) doc["implicit"] = region_to_json(place_region(*R, axis, at));
+               return doc;
              });
              std::cout << j.dump() << "\n";
              return 0;
@@ -319,9 +387,10 @@ Commands add_vrep(CLI::App& app) {
              std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
              return 0;
            }},
-          {exp, [eo, exact_model](const Context& ctx) {
+          {exp, [eo, exact_model, operand](const Context& ctx) {
              if (eo->vtk.empty() && eo->svg.empty()) throw UsageError("vtk", "vrep export needs --vtk or --svg", "give --vtk FILE.vtu or --svg FILE.svg");
-             const auto M = exact_model(eo->files, ctx);
+             std::optional<Operand> O;
+             if (eo->files.size() == 1) O = operand(eo->files.front(), ctx);
              auto write = [](const std::string& path, const std::string& field, const std::string& text) {
                std::ofstream out(path);
                if (!out) throw UsageError(field, "cannot write " + path, "give a writable file path");
@@ -329,18 +398,47 @@ Commands add_vrep(CLI::App& app) {
                if (!out) throw UsageError(field, "writing " + path + " failed", "check the disk space and the path");
                std::cerr << "splinex vrep export: wrote " << path << "\n";
              };
+             if (O && !O->model) {  // a trimmed V-model: its cells sampled on parameter voxels (a figure)
+               const auto& T = *O->trimmed;
+               if (!eo->vtk.empty()) write(eo->vtk, "vtk", trimmed_vtu(T));
+               if (!eo->svg.empty()) write(eo->svg, "svg", trimmed_svg(T, eo->explode, "trimmed V-model: " + std::to_string(T.cells.size()) + " cells"));
+               return 0;
+             }
+             const auto M = O ? *O->model : exact_model(eo->files, ctx);
              if (!eo->vtk.empty()) write(eo->vtk, "vtk", vmodel_to_vtu(M));
              if (!eo->svg.empty()) write(eo->svg, "svg", vmodel_svg(M, eo->explode, "V-model: " + std::to_string(M.cells.size()) + " cells", eo->singular));
              return 0;
            }},
-          {boo, [bo, exact_model](const Context& ctx) {
-             const auto A = exact_model({bo->a}, ctx), B = exact_model({bo->b}, ctx);
+          {boo, [bo, operand](const Context& ctx) {
+             const auto A = operand(bo->a, ctx), B = operand(bo->b, ctx);
              const BooleanOp op = parse_boolean_op(bo->op);
              const Blend blend = parse_blend(bo->blend);
-             if (bo->eps.empty()) {
-               std::cout << vmodel_to_json(boolean_op(A, B, op, Rational(0), blend, ctx.limits)).dump() << "\n";
+             TrimOptions topt;
+             topt.max_boxes = bo->boxes;
+             // Trimmed cells (curved cuts): exact only.
+             auto trimmed = [&]() {
+               if (!A.trimmed || !B.trimmed)
+                 throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
+                                   "build it with vrep primitive (it writes \"implicit\") or give one");
+               std::cout << trimmed_to_json(trimmed_boolean(*A.trimmed, *B.trimmed, op, blend, topt, Rational(0), ctx.limits)).dump() << "\n";
                return 0;
+             };
+             const bool planar_possible = A.model && B.model && bo->trim != "always";
+             if (bo->eps.empty()) {
+               if (!planar_possible) {
+                 if (bo->trim == "never") throw DomainError("trim", "is never, but an operand is a trimmed V-model", "give --trim auto");
+                 return trimmed();
+               }
+               try {
+                 std::cout << vmodel_to_json(boolean_op(*A.model, *B.model, op, Rational(0), blend, ctx.limits)).dump() << "\n";
+                 return 0;
+               } catch (const NotPlanarError&) {
+                 // A cut that is not a parameter plane: trimmed cells, where both regions are known.
+                 if (bo->trim == "never" || !A.trimmed || !B.trimmed) throw;
+               }
+               return trimmed();
              }
+             if (!A.model || !B.model) throw DomainError("eps", "Booleans in double are built for V-models, not trimmed V-models", "run exactly (no --eps)");
              const double eps = to_double(parse_number(bo->eps, "eps"));
              if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
              auto in_double = [&](const VModel<Rational>& M, const std::string& field) {
@@ -352,18 +450,17 @@ Commands add_vrep(CLI::App& app) {
                }
                return glue(d, eps, names, ctx.limits);
              };
-             std::cout << vmodel_to_json(boolean_op(in_double(A, "first"), in_double(B, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
+             std::cout << vmodel_to_json(boolean_op(in_double(*A.model, "first"), in_double(*B.model, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
              return 0;
            }},
-          {vol, [volo, exact_model](const Context& ctx) {
-             const auto M = exact_model({volo->a}, ctx);
+          {vol, [volo, operand](const Context& ctx) {
+             const auto O = operand(volo->a, ctx);
              Json cells = Json::array();
              Rational lo(0), hi(0);
-             for (std::size_t c = 0; c < M.cells.size(); ++c) {
-               const auto e = volume_enclosure(M.trivariates[M.cells[c].trivariates.front()], volo->boxes, ctx.limits);
+             auto add = [&](std::size_t c, const std::string& name, const VolumeEnclosure<Rational>& e) {
                lo += e.lower;
                hi += e.upper;
-               Json j{{"cell", c}, {"name", M.cells[c].name}};
+               Json j{{"cell", c}, {"name", name}};
                if (e.lower == e.upper) j["volume"] = to_fraction_string(e.lower);
                else {
                  j["lower"] = to_fraction_string(e.lower);
@@ -371,7 +468,15 @@ Commands add_vrep(CLI::App& app) {
                  j["boxes"] = e.boxes;
                }
                cells.push_back(j);
-             }
+             };
+             if (O.model)
+               for (std::size_t c = 0; c < O.model->cells.size(); ++c)
+                 add(c, O.model->cells[c].name, volume_enclosure(O.model->trivariates[O.model->cells[c].trivariates.front()], volo->boxes, ctx.limits));
+             else
+               for (std::size_t c = 0; c < O.trimmed->cells.size(); ++c) {
+                 const auto& x = O.trimmed->cells[c];
+                 add(c, x.name, trimmed_volume(O.trimmed->trivariates[x.trivariate], x.trim, volo->boxes, ctx.limits));
+               }
              Json out{{"cells", cells}};
              if (lo == hi) out["volume"] = to_fraction_string(lo);
              else {
@@ -382,13 +487,27 @@ Commands add_vrep(CLI::App& app) {
              std::cout << out.dump() << "\n";
              return 0;
            }},
-          {cls, [clo, exact_model](const Context& ctx) {
-             const auto M = exact_model({clo->a}, ctx);
+          {cls, [clo, operand](const Context& ctx) {
+             const auto O = operand(clo->a, ctx);
              const auto x = parse_number_list(clo->at, "at");
              if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
-             Json cells = Json::array();
-             for (std::size_t c : cells_containing(M, x)) cells.push_back({{"cell", c}, {"name", M.cells[c].name}});
-             std::cout << Json{{"inside", !cells.empty()}, {"cells", cells}}.dump() << "\n";
+             // Cells with planar faces: which cells contain x. Otherwise the model's exact region.
+             std::optional<std::vector<std::size_t>> in_cells;
+             if (O.model && planar_region(*O.model)) in_cells = cells_containing(*O.model, x);
+             if (in_cells) {
+               Json cells = Json::array();
+               for (std::size_t c : *in_cells) cells.push_back({{"cell", c}, {"name", O.model->cells[c].name}});
+               std::cout << Json{{"inside", !cells.empty()}, {"cells", cells}}.dump() << "\n";
+               return 0;
+             }
+             if (!O.trimmed)
+               throw DomainError("file", "has curved cells and no exact region (\"implicit\"): point classification needs one",
+                                 "build the model with vrep primitive or vrep boolean, which write it");
+             const Truth t = classify_point(O.trimmed->region, x);
+             Json out{{"truth", t == Truth::in ? "inside" : t == Truth::out ? "outside" : "on a surface"}};
+             if (t != Truth::mixed) out["inside"] = t == Truth::in;
+             else out["note"] = "x lies on the zero set of a polynomial that decides it: the boundary, or inside where two pieces touch";
+             std::cout << out.dump() << "\n";
              return 0;
            }},
           {info, [io, exact_model](const Context& ctx) {

@@ -14,3 +14,19 @@ namespace splinex {
 std::string vmodel_svg(const VModel<Rational>& M, double explode, const std::string& title, bool mark_singular, int samples = 12);
 
 }  // namespace splinex
+
+#include "vrep/trimmed.hpp"
+
+namespace splinex {
+
+/// Trimmed cells for the eye (figures only, doubles): each cell's parameter box sampled on an
+/// n x n x n grid of voxels, a voxel kept when the cell's trim holds at its centre (the region
+/// evaluated in double at T's double value), its faces towards dropped voxels or the domain's
+/// boundary drawn (stair-stepped at the trimming surfaces: the resolution is named in the note).
+/// Colours by category (A purple, both cyan, B green, as in Figure 4) or the palette for inputs.
+std::string trimmed_svg(const TrimmedModel<Rational>& M, double explode, const std::string& title, int n = 12);
+/// The kept voxels as VTK hexahedra (an unstructured grid, .vtu) with cell data "cell" and
+/// "category" (0 input, 1 A, 2 both, 3 B) for ParaView.
+std::string trimmed_vtu(const TrimmedModel<Rational>& M, int n = 12);
+
+}  // namespace splinex

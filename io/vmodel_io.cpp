@@ -5,6 +5,7 @@
 #include <map>
 
 #include "float/mpfr.hpp"
+#include "io/trimmed_io.hpp"
 
 namespace splinex {
 
@@ -19,10 +20,11 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
   }
   for (auto it = doc.begin(); it != doc.end(); ++it)
     if (it.key() != "type" && it.key() != "cells" && it.key() != "topology" && it.key() != "surface_attributes" &&
-        it.key() != "curve_attributes" && it.key() != "point_attributes" && it.key() != "inherited_trivariates")
+        it.key() != "curve_attributes" && it.key() != "point_attributes" && it.key() != "inherited_trivariates" && it.key() != "implicit")
       throw ValidationError(where + "." + it.key(), "is not a field of a V-model document",
                             "remove it (fields: type, cells, inherited_trivariates, surface_attributes, curve_attributes, point_attributes, "
-                            "topology)");
+                            "implicit, topology)");
+  if (doc.contains("implicit")) out.region = region_from_json(doc["implicit"], where + ".implicit");
   if (doc.contains("inherited_trivariates")) {
     const Json& inh = doc["inherited_trivariates"];
     if (!inh.is_array()) throw ValidationError(where + ".inherited_trivariates", "is not a list", "give a list of trivariate documents");
@@ -56,6 +58,10 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
 }
 
 void append_cells(VModelCells& into, VModelCells more) {
+  // The union of the documents' regions, known only when every document has one.
+  if (into.trivariates.empty()) into.region = std::move(more.region);
+  else if (into.region && more.region) into.region = region_or<Rational>({*into.region, *more.region});
+  else into.region.reset();
   const std::size_t shift = into.trivariates.size(), ishift = into.inherited.size();
   for (auto& list : more.inherits)
     for (auto& i : list) i += ishift;

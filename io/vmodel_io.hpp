@@ -9,6 +9,7 @@
 //    "surface_attributes": [{"cell": i, "face": [direction, side], "attributes": {"NAME": [numbers]}}],
 //    "curve_attributes":   [{"cell": i, "along": d, "sides": [s0, s1, s2], "attributes": {...}}],
 //    "point_attributes":   [{"cell": i, "corner": [s0, s1, s2], "attributes": {...}}],
+//    "implicit": region (io/trimmed_io.hpp; optional: the model's exact point set, checked by readers),
 //    "topology": {...}}                     written for the reader's information; ignored on input
 // Entity attributes are addressed by a cell's face, edge or corner and land on the V-surface,
 // V-curve or V-point that is there after gluing.
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "io/json_io.hpp"
+#include "vrep/trimmed.hpp"
 #include "vrep/vmodel.hpp"
 
 namespace splinex {
@@ -31,6 +33,7 @@ struct VModelCells {
   std::vector<std::pair<Json, std::size_t>> attribute_docs;  // (document, index of its first cell)
   std::vector<BSpline<Rational>> inherited;                  // inherited trivariates of all documents
   std::vector<std::vector<std::size_t>> inherits;            // per cell: indices into `inherited`
+  std::optional<Region<Rational>> region;                     // "implicit": the point set (unchecked here)
 };
 VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "vmodel");
 /// Appends the cells of another document (cell indices of its attributes shifted).

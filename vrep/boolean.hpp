@@ -41,12 +41,19 @@
 #include <vector>
 
 #include "spline/bspline.hpp"
+#include "spline/errors.hpp"
 #include "spline/limits.hpp"
 #include "vrep/vmodel.hpp"
 
 namespace splinex {
 
 enum class BooleanOp { intersect, subtract, unite };
+
+/// The planar path cannot do it (a cut that is not a parameter plane, a cell without the half-space
+/// form, a T-junction the tiling does not resolve): vrep/trimmed.hpp can, on exact regions.
+class NotPlanarError : public DomainError {
+  using DomainError::DomainError;
+};
 enum class Blend { sum_clipped, sum, first };
 
 const char* to_string(BooleanOp op);

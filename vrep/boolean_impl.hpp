@@ -132,8 +132,8 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
   for (const auto& H : forced) {
     const auto h = plane_on(V, H, eps);
     if (h.kind == PlaneOnCell<T>::curved)
-      throw DomainError(vname, "needs a cut by a plane of a neighbour's tiling that is not a parameter plane of its trivariate: curved trimming is not built yet (issue 18)",
-                        "align the models' parameter directions with the cutting planes");
+      throw NotPlanarError(vname, "needs a cut by a plane of a neighbour's tiling that is not a parameter plane of its trivariate",
+                           "cut it as a trimmed cell on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
     if (h.kind == PlaneOnCell<T>::split) {
       cuts[h.dir].push_back(h.at);
       splitting.push_back(H);
@@ -141,9 +141,8 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
   }
   for (std::size_t b = 0; b < other.cells.size(); ++b) {
     if (!planes[b])
-      throw DomainError(oname + ".cells[" + std::to_string(b) + "]",
-                        "is not a convex cell with planar faces: Booleans with curved cells are not built yet (issue 18)",
-                        "use boxes or hexahedra with planar faces for now");
+      throw NotPlanarError(oname + ".cells[" + std::to_string(b) + "]", "is not a convex cell with planar faces: the planar path cannot cut with it",
+                           "cut as trimmed cells on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
     bool outside = false;
     std::vector<PlaneOnCell<T>> how;
     for (const auto& H : *planes[b]) {
@@ -154,9 +153,9 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
     overlapping.push_back(b);
     for (const auto& h : how) {
       if (h.kind == PlaneOnCell<T>::curved)
-        throw DomainError(vname, "is cut by a face plane of " + oname + ".cells[" + std::to_string(b) +
-                                     "] along a surface that is not a parameter plane of its trivariate: curved trimming is not built yet (issue 18)",
-                          "align the models' parameter directions with the cutting planes, or wait for curved trimming");
+        throw NotPlanarError(vname, "is cut by a face plane of " + oname + ".cells[" + std::to_string(b) +
+                                        "] along a surface that is not a parameter plane of its trivariate",
+                             "cut it as a trimmed cell on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
     }
     for (std::size_t k = 0; k < how.size(); ++k)
       if (how[k].kind == PlaneOnCell<T>::split) {
@@ -207,6 +206,49 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
     out.push_back(std::move(p));
   }
   return out;
+}
+
+/// Bounds lo <= integral <= hi of det J = N / W^4 over a box that is the share `vol` of its
+/// piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure.
+template <class T>
+void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi) {
+  T nmin = N.c.front(), nmax = nmin, wmin = W.c.front(), wmax = wmin;
+  for (const auto& x : N.c) {
+    if (x < nmin) nmin = x;
+    if (nmax < x) nmax = x;
+  }
+  for (const auto& x : W.c) {
+    if (x < wmin) wmin = x;
+    if (wmax < x) wmax = x;
+  }
+  if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
+  const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
+  if (!(nmin < T(0)) || !(T(0) < nmax)) {
+    // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
+    // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
+    // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
+    // Bernstein coefficients), and the gap shrinks with the square of the box.
+    const T sg = nmax < T(0) || (nmax == T(0) && nmin < T(0)) ? T(-1) : T(1);
+    T si(0), sj(0);
+    for (const auto& x : N.c) si += x;
+    const Bern<T> NW = vrep_detail::mul(N, W);
+    for (const auto& x : NW.c) sj += x;
+    const T I = sg * vol * si / T(static_cast<long>(N.c.size()));
+    const T J = sg * vol * sj / T(static_cast<long>(NW.c.size()));
+    if (I == T(0)) {
+      lo = hi = T(0);
+      return;
+    }
+    const T m = J / I, m2 = m * m;
+    const T lower = I / (m2 * m2);
+    const T fa = T(1) / w4min, fb = T(1) / w4max;
+    const T upper = wmax == wmin ? T(I * fa) : T(fa * I + (fb - fa) / (wmax - wmin) * (J - wmin * I));
+    lo = sg < T(0) ? T(-upper) : lower;
+    hi = sg < T(0) ? T(-lower) : upper;
+    return;
+  }
+  lo = vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
+  hi = vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
 }
 
 template <class T>
@@ -464,8 +506,8 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
         give(y, x);
       }
       if (grew && round < 16) continue;
-      throw DomainError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
-                        "this configuration needs trimmed cells that are not built yet; please report it");
+      throw NotPlanarError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
+                           "cut as trimmed cells on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
     }
     const auto result_check = check_invariants(M, limits);
     if (!result_check.ok())
@@ -523,45 +565,7 @@ VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, 
     Bern<T> N, W;
     T vol, lo, hi;  // the box's share of the unit cube and the bounds of its integral
   };
-  auto bounds = [](Box& b) {
-    T nmin = b.N.c.front(), nmax = nmin, wmin = b.W.c.front(), wmax = wmin;
-    for (const auto& x : b.N.c) {
-      if (x < nmin) nmin = x;
-      if (nmax < x) nmax = x;
-    }
-    for (const auto& x : b.W.c) {
-      if (x < wmin) wmin = x;
-      if (wmax < x) wmax = x;
-    }
-    if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
-    const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
-    if (!(nmin < T(0)) || !(T(0) < nmax)) {
-      // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
-      // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
-      // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
-      // Bernstein coefficients), and the gap shrinks with the square of the box.
-      const T sg = nmax < T(0) || (nmax == T(0) && nmin < T(0)) ? T(-1) : T(1);
-      T si(0), sj(0);
-      for (const auto& x : b.N.c) si += x;
-      const Bern<T> NW = vrep_detail::mul(b.N, b.W);
-      for (const auto& x : NW.c) sj += x;
-      const T I = sg * b.vol * si / T(static_cast<long>(b.N.c.size()));
-      const T J = sg * b.vol * sj / T(static_cast<long>(NW.c.size()));
-      if (I == T(0)) {
-        b.lo = b.hi = T(0);
-        return;
-      }
-      const T m = J / I, m2 = m * m;
-      const T lower = I / (m2 * m2);
-      const T fa = T(1) / w4min, fb = T(1) / w4max;
-      const T upper = wmax == wmin ? T(I * fa) : T(fa * I + (fb - fa) / (wmax - wmin) * (J - wmin * I));
-      b.lo = sg < T(0) ? T(-upper) : lower;
-      b.hi = sg < T(0) ? T(-lower) : upper;
-      return;
-    }
-    b.lo = b.vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
-    b.hi = b.vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
-  };
+  auto bounds = [](Box& b) { vrep_detail::box_integral_bounds(b.N, b.W, b.vol, b.lo, b.hi); };
   // The direction in which a Bernstein polynomial's coefficients vary most along its lines.
   auto variation = [](const Bern<T>& b, int l) {
     std::size_t stride = 1;

@@ -7,6 +7,7 @@
 #include "vrep/regularity_impl.hpp"
 #include "vrep/vmodel_impl.hpp"
 #include "vrep/trivariate_impl.hpp"
+#include "vrep/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -81,6 +82,19 @@ Blend parse_blend(const std::string& name) {
   throw ValidationError("blend", "is \"" + name + "\"", "give sum-clipped, sum or first");
 }
 
+Region<double> region_to_double(const Region<Rational>& R) {
+  Region<double> out;
+  out.kind = static_cast<Region<double>::Kind>(R.kind);
+  out.label = R.label;
+  for (const auto& [e, c] : R.g.terms) out.g.terms[e] = to_double(c);
+  for (const auto& p : R.parts) out.parts.push_back(region_to_double(p));
+  return out;
+}
+
+const char* to_string(Truth t) {
+  return t == Truth::in ? "in" : t == Truth::out ? "out" : "mixed";
+}
+
 const char* to_string(Regularity r) {
   return r == Regularity::regular ? "regular" : r == Regularity::singular ? "singular" : "undecided";
 }
@@ -121,6 +135,34 @@ const char* to_string(Regularity r) {
   template T cell_volume(const VModel<T>&, std::size_t, const Limits&);                                              \
   template VolumeEnclosure<T> volume_enclosure(const BSpline<T>&, std::size_t, const Limits&);                                              \
   template std::vector<std::size_t> cells_containing(const VModel<T>&, const std::vector<T>&, const T&);
+
+// Trimmed cells.
+#define SPLINEX_INSTANTIATE_TRIMMED(T)                                                                              \
+  template int Poly3<T>::degree() const;                                                                             \
+  template Region<T> region_leaf(Poly3<T>, std::string);                                                             \
+  template Region<T> region_and(std::vector<Region<T>>);                                                             \
+  template Region<T> region_or(std::vector<Region<T>>);                                                              \
+  template Region<T> region_not(Region<T>);                                                                          \
+  template Region<T> box_region(const std::vector<T>&, const std::vector<T>&);                                       \
+  template Region<T> cylinder_region(const T&, const T&);                                                            \
+  template Region<T> cone_region(const T&, const T&, const T&);                                                      \
+  template Region<T> torus_region(const T&, const T&);                                                               \
+  template std::optional<Region<T>> planar_region(const VModel<T>&, const T&);                                       \
+  template Region<T> place_region(const Region<T>&, int, const std::vector<T>&);                                     \
+  template BSpline<T> place_trivariate(const BSpline<T>&, int, const std::vector<T>&);                               \
+  template T poly_at(const Poly3<T>&, const T*);                                                                     \
+  template Truth classify_point(const Region<T>&, const std::vector<T>&, const T&);                                  \
+  template TrimmedModel<T> as_trimmed(const VModel<T>&, Region<T>);                                                  \
+  template const char* to_string<T>(typename CellClass<T>::Kind);                                                    \
+  template CellClass<T> classify_cell(const BSpline<T>&, const Region<T>&, const TrimOptions&, const T&, const Limits&); \
+  template TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>&, const TrimmedModel<T>&, BooleanOp, Blend, const TrimOptions&, \
+                                           const T&, const Limits&);                                                 \
+  template VolumeEnclosure<T> trimmed_volume(const BSpline<T>&, const Region<T>&, std::size_t, const Limits&);       \
+  template std::vector<std::string> check_region(const VModel<T>&, const Region<T>&, const TrimOptions&, const Limits&);
+
+SPLINEX_INSTANTIATE_TRIMMED(Rational)
+SPLINEX_INSTANTIATE_TRIMMED(double)
+SPLINEX_INSTANTIATE_TRIMMED(Mpfr)
 
 SPLINEX_INSTANTIATE_VREP(Rational)
 SPLINEX_INSTANTIATE_VREP(double)

@@ -1,0 +1,191 @@
+// Trimmed V-cells on exact implicit regions (issue 18): the primitives' regions checked against
+// their cells, exact point classification, cells cut along quadrics and a quartic, certified
+// volumes against closed forms, tangential contact refused, and the trimmed path agreeing exactly
+// with the planar one where both apply.
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/trimmed.hpp"
+#include "vrep/vmodel.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+// pi lies strictly between these (pi = 3.14159265358979...).
+const R pi_lo = R(314159265) / R(100000000), pi_hi = R(314159266) / R(100000000);
+
+TrimmedModel<R> box(std::vector<R> lo, std::vector<R> hi) { return as_trimmed(glue(box_cells<R>(lo, hi)), box_region<R>(lo, hi)); }
+
+TrimmedModel<R> cylinder(const R& r, const R& h, int axis, std::vector<R> at) {
+  auto cells = cylinder_cells<R>(r, h);
+  for (auto& V : cells) V = place_trivariate(V, axis, at);
+  return as_trimmed(glue(cells), place_region(cylinder_region<R>(r, h), axis, at));
+}
+
+VolumeEnclosure<R> volume(const TrimmedModel<R>& M, std::size_t boxes = 4096) {
+  VolumeEnclosure<R> v;
+  for (const auto& c : M.cells) {
+    const auto e = trimmed_volume(M.trivariates[c.trivariate], c.trim, boxes);
+    v.lower += e.lower;
+    v.upper += e.upper;
+  }
+  return v;
+}
+
+std::size_t count(const TrimmedModel<R>& M, const std::string& category) {
+  std::size_t n = 0;
+  for (const auto& c : M.cells) n += c.category == category;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("vrep trimmed: the primitives' exact regions describe their cells, wrong ones are caught") {
+  CHECK(check_region(glue(cylinder_cells<R>(R(1), R(2))), cylinder_region<R>(R(1), R(2))).empty());
+  CHECK(check_region(glue(cone_cells<R>(R(1), R(1, 2), R(2))), cone_region<R>(R(1), R(1, 2), R(2))).empty());
+  CHECK(check_region(glue(torus_cells<R>(R(3), R(1))), torus_region<R>(R(3), R(1))).empty());
+  CHECK(check_region(glue(box_cells<R>({0, 0, 0}, {1, 2, 3})), box_region<R>({0, 0, 0}, {1, 2, 3})).empty());
+  // A larger radius contains the cells, but their side faces lie on no surface of it.
+  const auto wide = check_region(glue(cylinder_cells<R>(R(1), R(2))), cylinder_region<R>(R(11, 10), R(2)));
+  CHECK(wide.size() == 4);
+  // A smaller one cuts the sectors.
+  const auto narrow = check_region(glue(cylinder_cells<R>(R(1), R(2))), cylinder_region<R>(R(9, 10), R(2)));
+  CHECK(narrow.size() >= 4);
+  // The cone's region is not the cylinder's.
+  CHECK(!check_region(glue(cone_cells<R>(R(1), R(1, 2), R(2))), cylinder_region<R>(R(1), R(2))).empty());
+}
+
+TEST_CASE("vrep trimmed: exact point classification, on the surface included") {
+  const auto C = place_region(cylinder_region<R>(R(1), R(2)), 0, {R(-1), R(0), R(1)});  // along x from x = -1 to 1
+  CHECK(classify_point(C, {R(0), R(0), R(1)}) == Truth::in);
+  CHECK(classify_point(C, {R(0), R(3, 5), R(1) + R(4, 5)}) == Truth::mixed);  // on the side: (3/5)^2 + (4/5)^2 = 1
+  CHECK(classify_point(C, {R(0), R(3, 5), R(1) + R(4, 5) + R(1, 1000000)}) == Truth::out);
+  CHECK(classify_point(C, {R(0), R(3, 5), R(1) + R(4, 5) - R(1, 1000000)}) == Truth::in);
+  CHECK(classify_point(C, {R(-1), R(0), R(1)}) == Truth::mixed);  // on the end disk
+  CHECK(classify_point(C, {R(3, 2), R(0), R(1)}) == Truth::out);
+  const auto T = torus_region<R>(R(3), R(1));
+  CHECK(classify_point(T, {R(3), R(0), R(0)}) == Truth::in);
+  CHECK(classify_point(T, {R(0), R(0), R(0)}) == Truth::out);
+  CHECK(classify_point(T, {R(4), R(0), R(0)}) == Truth::mixed);
+  CHECK(classify_point(region_not(T), {R(0), R(0), R(0)}) == Truth::in);
+}
+
+TEST_CASE("vrep trimmed: a cylinder halved by a box, volume pi r^2 h / 2 enclosed") {
+  // x >= 0 is oblique to the disk's inner square (corners at (4/5, 3/5)/2 rotated): no parameter plane.
+  const auto C = cylinder(R(1), R(2), 2, {R(0), R(0), R(0)});
+  const auto B = box({R(0), R(-2), R(-1)}, {R(2), R(2), R(3)});
+  const auto M = trimmed_boolean(C, B, BooleanOp::intersect);
+  CHECK(M.cells.size() == 4);  // the square and three of the four sectors meet x > 0
+  std::size_t cut = 0;
+  for (const auto& c : M.cells) cut += c.status == Truth::mixed;
+  CHECK(cut == 3);  // the sector from -53 to 37 degrees lies in x > 0 whole; the square and two sectors are cut
+  const auto v = volume(M, 1024);
+  INFO(to_double(v.lower) << " " << to_double(v.upper));
+  CHECK(v.lower < pi_lo);
+  CHECK(pi_hi < v.upper);
+  CHECK(v.upper - v.lower < R(1, 2));  // 3.036 .. 3.349 (the gap shrinks as boxes^(-1/2))
+  // Subtraction gives the other half: both enclose pi, and together they enclose 2 pi.
+  const auto S = trimmed_boolean(C, B, BooleanOp::subtract);
+  const auto w = volume(S, 256);
+  CHECK(w.lower < pi_lo);
+  CHECK(pi_hi < w.upper);
+}
+
+TEST_CASE("vrep trimmed: on boxes the trimmed path gives the planar path's volumes exactly") {
+  const auto A = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto B = box({R(1), R(1, 2), R(0)}, {R(3), R(3, 2), R(2)});
+  const auto Am = glue(box_cells<R>({0, 0, 0}, {2, 2, 2})), Bm = glue(box_cells<R>({R(1), R(1, 2), R(0)}, {R(3), R(3, 2), R(2)}));
+  for (auto op : {BooleanOp::intersect, BooleanOp::subtract, BooleanOp::unite}) {
+    const auto T = trimmed_boolean(A, B, op);
+    const auto P = boolean_op(Am, Bm, op);
+    R planar(0);
+    for (std::size_t c = 0; c < P.cells.size(); ++c) planar += cell_volume(P, c);
+    const auto v = volume(T, 1 << 14);
+    INFO(to_string(op));
+    // Dyadic cuts: subdivision meets them exactly, no box stays mixed.
+    CHECK(v.lower == v.upper);
+    CHECK(v.lower == planar);
+  }
+  const auto U = trimmed_boolean(A, B, BooleanOp::unite);
+  CHECK(count(U, "both") == 1);
+  CHECK(count(U, "A") == 1);
+  CHECK(count(U, "B") == 1);
+}
+
+TEST_CASE("vrep trimmed: tangential contact is refused, never guessed") {
+  const auto C = cylinder(R(1), R(2), 2, {R(0), R(0), R(0)});
+  // The box's face x = 1 touches the cylinder along the line (1, 0, z).
+  const auto B = box({R(1), R(-2), R(-1)}, {R(2), R(2), R(3)});
+  TrimOptions o;
+  o.max_boxes = 512;
+  CHECK_THROWS_AS(trimmed_boolean(C, B, BooleanOp::unite, Blend::sum_clipped, o), DomainError);
+  // Moved through by 1/1000 it is an ordinary cut, decided.
+  const auto B2 = box({R(999, 1000), R(-2), R(-1)}, {R(2), R(2), R(3)});
+  const auto M = trimmed_boolean(C, B2, BooleanOp::intersect);
+  CHECK(M.cells.size() == 1);
+  // And 1/1000 away nothing is left of the intersection.
+  const auto B3 = box({R(1001, 1000), R(-2), R(-1)}, {R(2), R(2), R(3)});
+  CHECK_THROWS_AS(trimmed_boolean(C, B3, BooleanOp::intersect, Blend::sum_clipped, o), DomainError);  // empty result
+  CHECK(trimmed_boolean(C, B3, BooleanOp::subtract, Blend::sum_clipped, o).cells.size() == 5);
+}
+
+TEST_CASE("vrep trimmed: Figure 4, cone union cylinder, cells in the three categories") {
+  auto cone = cone_cells<R>(R(1), R(1, 2), R(2));
+  const auto O1 = as_trimmed(glue(cone), cone_region<R>(R(1), R(1, 2), R(2)));
+  const auto O2 = cylinder(R(1, 3), R(3), 0, {R(-3, 2), R(0), R(1)});  // along x through the cone at height 1
+  const auto M = trimmed_boolean(O1, O2, BooleanOp::unite);
+  CHECK(count(M, "A") >= 1);
+  CHECK(count(M, "both") >= 1);
+  CHECK(count(M, "B") >= 1);
+  for (const auto& c : M.cells)
+    if (c.category == "both") CHECK(c.inherited.size() >= 1);  // it holds trivariates of both models
+  // The union's region classifies exactly.
+  CHECK(classify_point(M.region, {R(0), R(0), R(1, 2)}) == Truth::in);     // in the cone only
+  CHECK(classify_point(M.region, {R(-7, 5), R(0), R(1)}) == Truth::in);    // in the cylinder only
+  CHECK(classify_point(M.region, {R(0), R(0), R(5, 2)}) == Truth::out);
+  // vol(A u B) = vol A + vol B - vol(A n B), each side an enclosure: the intervals must meet.
+  const auto I = trimmed_boolean(O1, O2, BooleanOp::intersect);
+  const auto vu = volume(M, 256), va = volume(O1, 64), vb = volume(O2, 64), vi = volume(I, 256);
+  CHECK(!(vu.upper < va.lower + vb.lower - vi.upper));
+  CHECK(!(va.upper + vb.upper - vi.lower < vu.lower));
+  // The cone frustum's volume pi h (r0^2 + r0 r1 + r1^2) / 3 = 7 pi / 6 lies in its enclosure.
+  CHECK(va.lower < pi_lo * R(7, 6));
+  CHECK(pi_hi * R(7, 6) < va.upper);
+}
+
+TEST_CASE("vrep trimmed: Figure 15's kind of solid, one union and two subtractions, 7 cells") {
+  const auto base = box({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)});
+  const auto post = cylinder(R(1), R(3), 2, {R(0), R(0), R(0)});
+  const auto U = trimmed_boolean(base, post, BooleanOp::unite);
+  CHECK(U.cells.size() == 7);  // the base inside the post, the base outside it, the post's five cells above the base
+  const auto H1 = trimmed_boolean(U, cylinder(R(1, 4), R(3), 2, {R(3, 2), R(3, 2), R(-1)}), BooleanOp::subtract);
+  const auto H2 = trimmed_boolean(H1, cylinder(R(1, 4), R(3), 2, {R(-3, 2), R(-3, 2), R(-1)}), BooleanOp::subtract);
+  CHECK(H2.cells.size() == 7);
+  // Volume 16 + 3 pi - pi (the post's part in the base) - 2 pi / 16 (the holes) = 16 + 15 pi / 8.
+  const auto v = volume(H2, 256);
+  INFO(to_double(v.lower) << " " << to_double(v.upper));
+  CHECK(v.lower < R(16) + pi_lo * R(15, 8));
+  CHECK(R(16) + pi_hi * R(15, 8) < v.upper);
+  CHECK(classify_point(H2.region, {R(3, 2), R(3, 2), R(1, 2)}) == Truth::out);  // in a hole
+  CHECK(classify_point(H2.region, {R(1), R(3, 2), R(1, 2)}) == Truth::in);
+  CHECK(classify_point(H2.region, {R(0), R(0), R(5, 2)}) == Truth::in);  // in the post
+}
+
+TEST_CASE("vrep trimmed: a torus cut by a slab along its quartic, and hostile regions") {
+  const auto T = as_trimmed(glue(torus_cells<R>(R(3), R(1))), torus_region<R>(R(3), R(1)));
+  const auto slab = box({R(-5), R(-5), R(-1, 3)}, {R(5), R(5), R(1, 3)});
+  const auto M = trimmed_boolean(T, slab, BooleanOp::intersect);
+  CHECK(!M.cells.empty());
+  const auto v = volume(M, 256);
+  CHECK(v.lower < v.upper);
+  CHECK(R(0) < v.lower);
+  // The zero polynomial is refused as a leaf.
+  CHECK_THROWS_AS(region_leaf(Poly3<R>{}), ValidationError);
+  Poly3<R> big;
+  big.terms[{9, 0, 0}] = R(1);
+  CHECK_THROWS_AS(classify_cell(glue(box_cells<R>({0, 0, 0}, {1, 1, 1})).trivariates[0], region_leaf(big)), SizeLimitError);
+}

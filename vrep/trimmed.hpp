@@ -1,0 +1,167 @@
+// Trimmed V-cells on exact implicit regions (issue 18, What to build 1): Booleans of V-models whose
+// cells are cut by curved surfaces.
+//
+// Many primitives have an exact implicit form: boxes (six planes), cylinders and cone frustums (a
+// quadric and two planes), tori (one quartic). A `Region` is a formula over polynomial
+// inequalities g(x, y, z) >= 0 (leaves) with and / or / not, read as a regularized set (closure of
+// its interior; measure-zero differences do not count). Composed with a cell's trivariate
+// T = (X, Y, Z) / W, a leaf becomes the tensor Bernstein polynomial G = W^k g(X/W, Y/W, Z/W) (k the
+// total degree of g; the homogenized composition, exact: products of the homogeneous coordinates),
+// whose sign is the sign of g o T (weights positive). Its Bernstein coefficients decide a box of
+// T's parameter domain exactly: all >= 0 "in" (the box lies in the leaf's closed set), all <= 0
+// "out" (it meets the leaf's interior nowhere), otherwise "mixed"; the formula combines these by
+// Kleene's three-valued logic, which is sound for regularized sets. Boxes are halved (exact de
+// Casteljau) until every box is decided or the budget is spent; the corner coefficients of a box
+// are exact values of G, so a corner where every leaf is strictly decided is an exact witness point.
+//
+// A trimmed V-cell is a trivariate T restricted to the parameters where its `trim` region holds
+// (T(u) in trim). classify_cell decides it: `whole` (every box in), `empty` (every box out), `cut`
+// (an in-box or strict inside witness and an out-box or strict outside witness: certified), or
+// `undecided` (mixed boxes left at the budget without both witnesses: tangential or near-tangential
+// contact, which subdivision cannot decide - the caller gets a typed error).
+//
+// trimmed_boolean runs Algorithms 1-3 on such cells: intersect keeps each cell a of A restricted to
+// region(B), subtract to not region(B), union is the intersection, A - B and B - A (B's cells
+// restricted to not region(A)); empty cells are dropped, undecided ones are a DomainError naming
+// the cell. A cell in both models holds, after its own trivariate, the trivariates of the other
+// model's cells whose control-point bounding box meets its own (a superset of the cells it meets: the pairwise cells a & b of the paper would need the inverse of
+// b's trivariate, which has no implicit form for a curved cell). The result's region is the Boolean
+// of the input regions, so results feed further Booleans (Figure 15: one union, two subtractions).
+//
+// What is not built: the V-surfaces, V-curves and V-points of trimmed cells (the level sets' own
+// topology); the result carries cells, their trims and regions, and the certified statements above.
+//
+// The volume of a trimmed cell is a certified enclosure: in-boxes contribute the enclosure of their
+// integral of |det J| (exact for polynomial cells), mixed boxes [0, their upper bound], out-boxes 0.
+#pragma once
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "spline/bspline.hpp"
+#include "spline/limits.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/vmodel.hpp"
+
+namespace splinex {
+
+/// A polynomial in x, y, z: exponents -> coefficient (zero coefficients are not stored).
+template <class T>
+struct Poly3 {
+  std::map<std::array<int, 3>, T> terms;
+  int degree() const;
+};
+
+template <class T>
+struct Region {
+  enum Kind { leaf, all_of, any_of, complement };
+  Kind kind = leaf;
+  Poly3<T> g;                 // leaf: g >= 0
+  std::vector<Region> parts;  // all_of / any_of: the operands; complement: one
+  std::string label;          // where it came from ("box", "cylinder: side", ...), for messages
+};
+
+/// Three-valued truth of a region on a point or a box: out < mixed (or "on the surface") < in.
+enum class Truth { out = 0, mixed = 1, in = 2 };
+const char* to_string(Truth t);
+
+template <class T>
+Region<T> region_leaf(Poly3<T> g, std::string label = {});
+template <class T>
+Region<T> region_and(std::vector<Region<T>> parts);
+template <class T>
+Region<T> region_or(std::vector<Region<T>> parts);
+template <class T>
+Region<T> region_not(Region<T> r);
+
+/// The exact regions of the primitives of vrep/primitives.hpp (in their standard placement).
+template <class T>
+Region<T> box_region(const std::vector<T>& lo, const std::vector<T>& hi);
+template <class T>
+Region<T> cylinder_region(const T& r, const T& h);
+template <class T>
+Region<T> cone_region(const T& r0, const T& r1, const T& h);
+template <class T>
+Region<T> torus_region(const T& R, const T& r);
+
+/// The convex planar cells' half-spaces as a region (any_of over cells of all_of over faces), if
+/// every cell has them (vrep/boolean.hpp: convex_planes).
+template <class T>
+std::optional<Region<T>> planar_region(const VModel<T>& M, const T& eps = T(0));
+
+/// Placement: x -> P x + offset with P the cyclic permutation taking the z axis to `axis` (0, 1, 2:
+/// x, y, z; 2 is the identity), exact; applied to a region and to trivariates alike.
+template <class T>
+Region<T> place_region(const Region<T>& R, int axis, const std::vector<T>& offset);
+template <class T>
+BSpline<T> place_trivariate(const BSpline<T>& V, int axis, const std::vector<T>& offset);
+
+template <class T>
+T poly_at(const Poly3<T>& g, const T* x);
+
+/// The region at a point, exactly: in (every deciding leaf strictly), out, or mixed (x lies on the
+/// zero set of a leaf that decides it: boundary, or interior where two pieces touch).
+template <class T>
+Truth classify_point(const Region<T>& R, const std::vector<T>& x, const T& eps = T(0));
+
+/// The region with its coefficients rounded to double (figures, the float Boolean).
+Region<double> region_to_double(const Region<Rational>& R);
+
+/// A cell of a trimmed V-model: its trivariate (index into `trivariates`) restricted to `trim`.
+template <class T>
+struct TrimmedModel {
+  struct Cell {
+    std::size_t trivariate = 0;
+    Region<T> trim;                      // an all_of with no parts: untrimmed
+    std::string name;
+    std::string category;                // "A", "both", "B" after a Boolean ("" for an input)
+    std::vector<std::size_t> inherited;  // further trivariates that contain it (indices into `trivariates`)
+    Truth status = Truth::in;            // in: whole trivariate; mixed: cut (certified)
+    std::map<std::string, std::vector<T>> constants;
+  };
+  std::vector<BSpline<T>> trivariates;
+  std::vector<Cell> cells;
+  Region<T> region;                      // the model's point set
+};
+
+/// A V-model as untrimmed cells with the given region (its constants carried along).
+template <class T>
+TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region);
+
+struct TrimOptions {
+  std::size_t max_boxes = 4096;  // per cell: the subdivision budget of the classification
+};
+
+/// The decision on one trimmed cell, with exact witness parameters where they were found.
+template <class T>
+struct CellClass {
+  enum Kind { whole, empty, cut, undecided } kind = whole;
+  std::size_t boxes = 0, mixed = 0;   // boxes at the end, of them mixed
+  std::vector<T> inside, outside;     // witness parameters (u, v, w) strictly inside / outside
+};
+template <class T>
+const char* to_string(typename CellClass<T>::Kind k);
+
+template <class T>
+CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const TrimOptions& options = {}, const T& eps = T(0),
+                           const Limits& limits = {});
+
+template <class T>
+TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>& B, BooleanOp op, Blend blend = Blend::sum_clipped,
+                                const TrimOptions& options = {}, const T& eps = T(0), const Limits& limits = {});
+
+/// Certified volume enclosure of a trimmed cell (see above).
+template <class T>
+VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {});
+
+/// That the model lies in its region: every cell's trivariate classifies `whole` against it (the
+/// cells of a primitive against the primitive's region), and every boundary face lies on the
+/// zero set of a leaf of the region (the face's coefficients of that leaf's G are all zero).
+/// Returns the failures (empty: both hold).
+template <class T>
+std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, const TrimOptions& options = {}, const Limits& limits = {});
+
+}  // namespace splinex

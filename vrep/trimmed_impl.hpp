@@ -1,0 +1,661 @@
+// Trimmed V-cells on exact implicit regions (vrep/trimmed.hpp): the templates, instantiated in
+// vrep/instances.cpp.
+#pragma once
+#include <algorithm>
+#include <deque>
+
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "vrep/boolean_impl.hpp"
+#include "vrep/trimmed.hpp"
+
+namespace splinex {
+
+template <class T>
+int Poly3<T>::degree() const {
+  int k = -1;
+  for (const auto& [e, c] : terms) k = std::max(k, e[0] + e[1] + e[2]);
+  return k;
+}
+
+template <class T>
+Region<T> region_leaf(Poly3<T> g, std::string label) {
+  for (auto it = g.terms.begin(); it != g.terms.end();)
+    it = it->second == T(0) ? g.terms.erase(it) : std::next(it);
+  if (g.terms.empty()) throw ValidationError("region" + (label.empty() ? std::string() : " (" + label + ")"), "has the zero polynomial as a leaf",
+                                             "give a non-zero polynomial g (the leaf is g >= 0)");
+  for (const auto& [e, c] : g.terms)
+    if (e[0] < 0 || e[1] < 0 || e[2] < 0) throw ValidationError("region", "has a negative exponent", "give exponents >= 0");
+  Region<T> r;
+  r.kind = Region<T>::leaf;
+  r.g = std::move(g);
+  r.label = std::move(label);
+  return r;
+}
+template <class T>
+Region<T> region_and(std::vector<Region<T>> parts) {
+  Region<T> r;
+  r.kind = Region<T>::all_of;
+  r.parts = std::move(parts);
+  return r;
+}
+template <class T>
+Region<T> region_or(std::vector<Region<T>> parts) {
+  Region<T> r;
+  r.kind = Region<T>::any_of;
+  r.parts = std::move(parts);
+  return r;
+}
+template <class T>
+Region<T> region_not(Region<T> x) {
+  if (x.kind == Region<T>::complement) return std::move(x.parts.front());
+  Region<T> r;
+  r.kind = Region<T>::complement;
+  r.parts.push_back(std::move(x));
+  return r;
+}
+
+namespace vrep_detail {
+
+template <class T>
+Poly3<T> poly_add(Poly3<T> a, const Poly3<T>& b, const T& s = T(1)) {
+  for (const auto& [e, c] : b.terms) {
+    T& x = a.terms[e];
+    x += s * c;
+  }
+  for (auto it = a.terms.begin(); it != a.terms.end();)
+    it = it->second == T(0) ? a.terms.erase(it) : std::next(it);
+  return a;
+}
+template <class T>
+Poly3<T> poly_mul(const Poly3<T>& a, const Poly3<T>& b) {
+  Poly3<T> r;
+  for (const auto& [e, c] : a.terms)
+    for (const auto& [f, d] : b.terms) r.terms[{e[0] + f[0], e[1] + f[1], e[2] + f[2]}] += c * d;
+  for (auto it = r.terms.begin(); it != r.terms.end();)
+    it = it->second == T(0) ? r.terms.erase(it) : std::next(it);
+  return r;
+}
+/// c0 + c1 x + c2 y + c3 z.
+template <class T>
+Poly3<T> poly_linear(const T& c0, const T& c1, const T& c2, const T& c3) {
+  Poly3<T> p;
+  if (c0 != T(0)) p.terms[{0, 0, 0}] = c0;
+  if (c1 != T(0)) p.terms[{1, 0, 0}] = c1;
+  if (c2 != T(0)) p.terms[{0, 1, 0}] = c2;
+  if (c3 != T(0)) p.terms[{0, 0, 1}] = c3;
+  return p;
+}
+template <class T>
+Poly3<T> poly_pow(const Poly3<T>& p, int k) {
+  Poly3<T> r = poly_linear(T(1), T(0), T(0), T(0));
+  for (int i = 0; i < k; ++i) r = poly_mul(r, p);
+  return r;
+}
+
+/// The leaves of a region in depth-first order.
+template <class T>
+void collect_leaves(const Region<T>& R, std::vector<const Poly3<T>*>& out) {
+  if (R.kind == Region<T>::leaf) {
+    out.push_back(&R.g);
+    return;
+  }
+  for (const auto& p : R.parts) collect_leaves(p, out);
+}
+
+/// Kleene's three-valued combination of the leaves' truths (consumed in collect_leaves' order).
+template <class T>
+Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k) {
+  switch (R.kind) {
+    case Region<T>::leaf: return leaf[k++];
+    case Region<T>::complement: {
+      const Truth t = combine(R.parts.front(), leaf, k);
+      return t == Truth::in ? Truth::out : t == Truth::out ? Truth::in : Truth::mixed;
+    }
+    case Region<T>::all_of: {
+      Truth t = Truth::in;
+      for (const auto& p : R.parts) t = std::min(t, combine(p, leaf, k));
+      return t;
+    }
+    case Region<T>::any_of: {
+      Truth t = Truth::out;
+      for (const auto& p : R.parts) t = std::max(t, combine(p, leaf, k));
+      return t;
+    }
+  }
+  return Truth::mixed;
+}
+
+template <class T>
+Truth value_truth(const T& v, const T& eps) {
+  return eps < v ? Truth::in : v < -eps ? Truth::out : Truth::mixed;
+}
+
+/// The truth of G >= 0 on a box from its Bernstein coefficients (within eps in float).
+template <class T>
+Truth coefficient_truth(const Bern<T>& G, const T& eps) {
+  bool nonneg = true, nonpos = true;
+  for (const auto& x : G.c) {
+    nonneg = nonneg && !(x < -eps);
+    nonpos = nonpos && !(eps < x);
+  }
+  if (nonpos) return Truth::out;  // also when G = 0 within eps: no interior there
+  return nonneg ? Truth::in : Truth::mixed;
+}
+
+/// W^k g(X / W, Y / W, Z / W) on a Bezier piece (k the degree of g), exact.
+template <class T>
+Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
+  const int k = g.degree();
+  std::array<std::vector<Bern<T>>, 4> pw;  // powers 0..k of W, X, Y, Z
+  for (int c = 0; c < 4; ++c) {
+    const Bern<T> h = homogeneous(piece, c);
+    Bern<T> one{h.deg, std::vector<T>(h.c.size(), T(1))};
+    // the constant 1 in degree 0
+    one.deg = {0, 0, 0};
+    one.c = {T(1)};
+    pw[c].push_back(one);
+    for (int i = 1; i <= k; ++i) pw[c].push_back(mul(pw[c].back(), h));
+  }
+  std::vector<int> deg(3);
+  for (int d = 0; d < 3; ++d) deg[d] = k * piece.degrees[d];
+  Bern<T> G{deg, std::vector<T>(detail::tensor_size(deg), T(0))};
+  for (const auto& [e, c] : g.terms) {
+    Bern<T> t = mul(mul(pw[1][e[0]], pw[2][e[1]]), mul(pw[3][e[2]], pw[0][k - e[0] - e[1] - e[2]]));
+    for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * t.c[i];
+  }
+  return G;
+}
+
+/// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
+template <class T>
+const T& corner(const Bern<T>& b, int s0, int s1, int s2) {
+  const std::size_t n0 = b.deg[0] + 1, n1 = b.deg[1] + 1;
+  return b.c[(s0 ? b.deg[0] : 0) + n0 * ((s1 ? b.deg[1] : 0) + n1 * (s2 ? b.deg[2] : 0))];
+}
+
+/// Subdivision of one trivariate against a region: classification and, optionally, the volume.
+template <class T>
+struct TrimRun {
+  CellClass<T> cls;
+  VolumeEnclosure<T> volume;
+};
+
+template <class T>
+TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits) {
+  require_jacobian_input(V, limits);
+  if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
+  if (V.is_rational())
+    for (const auto& w : V.weights)
+      if (!(T(0) < w)) throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator",
+                                         "give positive weights");
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(trim, leaves);
+  // Limits before the work: each composed leaf has prod (k p_d + 1) coefficients per Bezier piece,
+  // all leaves together (and the pieces) are bounded like one spline's control points.
+  std::size_t per_piece = 0;
+  for (const auto* g : leaves) {
+    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d) {
+      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
+      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
+    }
+    per_piece += n;
+  }
+  limits.check_count(per_piece, "region composed with the trivariate");
+  std::size_t pieces = 1;
+  for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
+  checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");
+  checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
+  struct Box {
+    std::vector<Bern<T>> G;
+    Bern<T> N, W;
+    std::array<T, 3> lo, hi;  // in the trivariate's parameters
+    T vol;                    // share of its piece's unit cube
+    Truth truth = Truth::mixed;
+  };
+  TrimRun<T> out;
+  auto& cls = out.cls;
+  bool has_in = false, has_out = false;
+  auto evaluate = [&](Box& b) {
+    std::vector<Truth> lt;
+    for (const auto& G : b.G) lt.push_back(coefficient_truth(G, eps));
+    std::size_t k = 0;
+    b.truth = combine(trim, lt, k);
+    if (b.truth == Truth::in) has_in = true;
+    if (b.truth == Truth::out) has_out = true;
+    if (b.truth != Truth::mixed) return;
+    // Exact witnesses at the corners (the corner coefficients are G's values there).
+    for (int s = 0; s < 8; ++s) {
+      if (!cls.inside.empty() && !cls.outside.empty()) return;
+      std::vector<Truth> pt;
+      for (const auto& G : b.G) pt.push_back(value_truth(corner(G, s & 1, (s >> 1) & 1, s >> 2), eps));
+      std::size_t j = 0;
+      const Truth t = combine(trim, pt, j);
+      if (t == Truth::mixed) continue;
+      auto& w = t == Truth::in ? cls.inside : cls.outside;
+      if (!w.empty()) continue;
+      w = {s & 1 ? b.hi[0] : b.lo[0], (s >> 1) & 1 ? b.hi[1] : b.lo[1], s >> 2 ? b.hi[2] : b.lo[2]};
+    }
+  };
+  std::deque<Box> todo;
+  std::vector<Box> done;
+  const BezierForm<T> F = bezier_form(V, limits);
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    Box b;
+    for (const auto* g : leaves) b.G.push_back(compose_leaf(*g, pc.spline));
+    if (want_volume) {
+      b.N = jacobian_numerator(pc.spline);
+      b.W = homogeneous(pc.spline, 0);
+    }
+    for (int d = 0; d < 3; ++d) {
+      b.lo[d] = pc.box[d].first;
+      b.hi[d] = pc.box[d].second;
+    }
+    b.vol = T(1);
+    evaluate(b);
+    (b.truth == Truth::mixed ? todo.push_back(std::move(b)) : done.push_back(std::move(b)));
+  }
+  // Breadth first: halve mixed boxes across their widest parameter side until none is left or
+  // the budget is spent.
+  // (Classification only: stop as soon as both sides are certified.)
+  while (!todo.empty() && todo.size() + done.size() < max_boxes &&
+         (want_volume || !((has_in || !cls.inside.empty()) && (has_out || !cls.outside.empty())))) {
+    Box b = std::move(todo.front());
+    todo.pop_front();
+    int dir = 0;
+    for (int d = 1; d < 3; ++d)
+      if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
+    Box c[2];
+    for (auto& x : c) {
+      x.lo = b.lo;
+      x.hi = b.hi;
+      x.vol = b.vol / T(2);
+      x.G.resize(b.G.size());
+    }
+    for (std::size_t l = 0; l < b.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
+    if (want_volume) {
+      std::tie(c[0].N, c[1].N) = split_half(b.N, dir);
+      std::tie(c[0].W, c[1].W) = split_half(b.W, dir);
+    }
+    const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
+    c[0].hi[dir] = mid;
+    c[1].lo[dir] = mid;
+    for (auto& x : c) {
+      evaluate(x);
+      (x.truth == Truth::mixed ? todo.push_back(std::move(x)) : done.push_back(std::move(x)));
+    }
+  }
+  cls.boxes = todo.size() + done.size();
+  cls.mixed = todo.size();
+  const bool some_in = has_in || !cls.inside.empty(), some_out = has_out || !cls.outside.empty();
+  using K = typename CellClass<T>::Kind;
+  if (todo.empty()) cls.kind = has_in && has_out ? K::cut : has_in ? K::whole : K::empty;
+  else cls.kind = some_in && some_out ? K::cut : K::undecided;
+  if (want_volume) {
+    auto& v = out.volume;
+    for (const auto& b : done) {
+      if (b.truth != Truth::in) continue;
+      T lo, hi;
+      box_integral_bounds(b.N, b.W, b.vol, lo, hi);
+      v.lower += lo;
+      v.upper += hi;
+    }
+    // A mixed box holds between none and all of its volume: [min(0, lo), max(0, hi)] with the plain
+    // bounds vol min N / max W^4 .. vol max N / min W^4 (no product: these boxes are many and small).
+    for (const auto& b : todo) {
+      T nmin = b.N.c.front(), nmax = nmin, wmin = b.W.c.front(), wmax = wmin;
+      for (const auto& x : b.N.c) {
+        if (x < nmin) nmin = x;
+        if (nmax < x) nmax = x;
+      }
+      for (const auto& x : b.W.c) {
+        if (x < wmin) wmin = x;
+        if (wmax < x) wmax = x;
+      }
+      const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
+      const T lo = b.vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
+      const T hi = b.vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
+      v.lower += std::min(T(0), lo);
+      v.upper += std::max(T(0), hi);
+    }
+    if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {  // negatively oriented
+      const T l = -v.upper;
+      v.upper = -v.lower;
+      v.lower = l;
+    }
+    v.boxes = cls.boxes;
+  }
+  return out;
+}
+
+template <class T>
+bool trivially_true(const Region<T>& R) {
+  return R.kind == Region<T>::all_of && R.parts.empty();
+}
+
+/// trim and extra, flattened into one all_of.
+template <class T>
+Region<T> conjoin(const Region<T>& trim, Region<T> extra) {
+  if (trivially_true(trim)) return extra;
+  std::vector<Region<T>> parts;
+  if (trim.kind == Region<T>::all_of) parts = trim.parts;
+  else parts.push_back(trim);
+  parts.push_back(std::move(extra));
+  return region_and(std::move(parts));
+}
+
+template <class T>
+std::array<T, 6> control_bounds(const BSpline<T>& V) {
+  std::array<T, 6> b;
+  for (int a = 0; a < 3; ++a) b[a] = b[a + 3] = V.points[a];
+  for (std::size_t i = 0; i < V.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const T& x = V.points[i * V.q + a];
+      if (x < b[a]) b[a] = x;
+      if (b[a + 3] < x) b[a + 3] = x;
+    }
+  return b;
+}
+
+}  // namespace vrep_detail
+
+template <class T>
+const char* to_string(typename CellClass<T>::Kind k) {
+  using K = typename CellClass<T>::Kind;
+  return k == K::whole ? "whole" : k == K::empty ? "empty" : k == K::cut ? "cut" : "undecided";
+}
+
+template <class T>
+T poly_at(const Poly3<T>& g, const T* x) {
+  T s(0);
+  for (const auto& [e, c] : g.terms) {
+    T t = c;
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < e[a]; ++i) t *= x[a];
+    s += t;
+  }
+  return s;
+}
+
+template <class T>
+Truth classify_point(const Region<T>& R, const std::vector<T>& x, const T& eps) {
+  if (x.size() != 3) throw ValidationError("at", "needs three coordinates", "give x,y,z");
+  std::vector<const Poly3<T>*> leaves;
+  vrep_detail::collect_leaves(R, leaves);
+  std::vector<Truth> t;
+  for (const auto* g : leaves) t.push_back(vrep_detail::value_truth(poly_at(*g, x.data()), eps));
+  std::size_t k = 0;
+  return vrep_detail::combine(R, t, k);
+}
+
+template <class T>
+Region<T> box_region(const std::vector<T>& lo, const std::vector<T>& hi) {
+  using vrep_detail::poly_linear;
+  if (lo.size() != 3 || hi.size() != 3) throw ValidationError("box", "needs three coordinates per corner", "give lo and hi as x,y,z");
+  std::vector<Region<T>> parts;
+  const char* axis[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    if (!(lo[a] < hi[a])) throw ValidationError("box", "has lo >= hi", "give lo < hi in every coordinate");
+    T e[3] = {T(0), T(0), T(0)};
+    e[a] = T(1);
+    parts.push_back(region_leaf(poly_linear(T(-lo[a]), e[0], e[1], e[2]), std::string("box: ") + axis[a] + " >= lo"));
+    parts.push_back(region_leaf(poly_linear(hi[a], T(-e[0]), T(-e[1]), T(-e[2])), std::string("box: ") + axis[a] + " <= hi"));
+  }
+  return region_and(std::move(parts));
+}
+
+template <class T>
+Region<T> cylinder_region(const T& r, const T& h) {
+  return cone_region(r, r, h);
+}
+
+template <class T>
+Region<T> cone_region(const T& r0, const T& r1, const T& h) {
+  using namespace vrep_detail;
+  if (!(T(0) < r0) || !(T(0) < r1) || !(T(0) < h)) throw ValidationError("cone", "needs positive radii and height", "give r0, r1, h > 0");
+  // (r0 h + (r1 - r0) z)^2 - h^2 (x^2 + y^2) >= 0 and 0 <= z <= h (the radius is positive on [0, h]).
+  const Poly3<T> rz = poly_linear(T(r0 * h), T(0), T(0), T(r1 - r0));
+  Poly3<T> g = poly_mul(rz, rz);
+  Poly3<T> xy;
+  xy.terms[{2, 0, 0}] = h * h;
+  xy.terms[{0, 2, 0}] = h * h;
+  g = poly_add(g, xy, T(-1));
+  const std::string what = r0 == r1 ? "cylinder" : "cone";
+  return region_and<T>({region_leaf(g, what + ": side"), region_leaf(poly_linear(T(0), T(0), T(0), T(1)), what + ": z >= 0"),
+                        region_leaf(poly_linear(h, T(0), T(0), T(-1)), what + ": z <= h")});
+}
+
+template <class T>
+Region<T> torus_region(const T& R, const T& r) {
+  using namespace vrep_detail;
+  if (!(T(0) < r) || !(r < R)) throw ValidationError("torus", "needs 0 < r < R", "give a tube radius below the major radius");
+  // 4 R^2 (x^2 + y^2) - (x^2 + y^2 + z^2 + R^2 - r^2)^2 >= 0.
+  Poly3<T> s;
+  s.terms[{2, 0, 0}] = T(1);
+  s.terms[{0, 2, 0}] = T(1);
+  s.terms[{0, 0, 2}] = T(1);
+  s.terms[{0, 0, 0}] = R * R - r * r;
+  Poly3<T> xy;
+  xy.terms[{2, 0, 0}] = T(4) * R * R;
+  xy.terms[{0, 2, 0}] = T(4) * R * R;
+  return region_and<T>({region_leaf(poly_add(xy, poly_mul(s, s), T(-1)), "torus")});
+}
+
+template <class T>
+std::optional<Region<T>> planar_region(const VModel<T>& M, const T& eps) {
+  using vrep_detail::poly_linear;
+  std::vector<Region<T>> cells;
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto P = convex_planes(M.trivariates[M.cells[c].trivariates.front()], eps);
+    if (!P) return std::nullopt;
+    std::vector<Region<T>> faces;
+    for (const auto& H : *P) faces.push_back(region_leaf(poly_linear(H.d, H.n[0], H.n[1], H.n[2]), M.cells[c].name + ": face"));
+    cells.push_back(region_and(std::move(faces)));
+  }
+  return cells.size() == 1 ? cells.front() : region_or(std::move(cells));
+}
+
+template <class T>
+Region<T> place_region(const Region<T>& R, int axis, const std::vector<T>& offset) {
+  using namespace vrep_detail;
+  if (axis < 0 || axis > 2) throw ValidationError("axis", "must be x, y or z", "give --axis x, y or z");
+  if (offset.size() != 3) throw ValidationError("at", "needs three coordinates", "give x,y,z");
+  Region<T> out = R;
+  if (R.kind != Region<T>::leaf) {
+    for (auto& p : out.parts) p = place_region(p, axis, offset);
+    return out;
+  }
+  // new = P old + t with (P old)_j = old_{(j + s) % 3}, s = (2 - axis) mod 3 (s = 0: identity);
+  // old_i = (new - t)_{(i - s) mod 3}.
+  const int s = (5 - axis) % 3;  // new_axis = old_z
+  std::array<Poly3<T>, 3> old;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i - s + 3) % 3;
+    T e[3] = {T(0), T(0), T(0)};
+    e[j] = T(1);
+    old[i] = poly_linear(T(-offset[j]), e[0], e[1], e[2]);
+  }
+  Poly3<T> g;
+  for (const auto& [e, c] : R.g.terms) {
+    Poly3<T> t = poly_mul(poly_mul(poly_pow(old[0], e[0]), poly_pow(old[1], e[1])), poly_pow(old[2], e[2]));
+    g = poly_add(g, t, c);
+  }
+  out.g = std::move(g);
+  return out;
+}
+
+template <class T>
+BSpline<T> place_trivariate(const BSpline<T>& V, int axis, const std::vector<T>& offset) {
+  if (axis < 0 || axis > 2) throw ValidationError("axis", "must be x, y or z", "give --axis x, y or z");
+  if (offset.size() != 3) throw ValidationError("at", "needs three coordinates", "give x,y,z");
+  if (V.q < 3) throw ValidationError("trivariate", "has points with fewer than three coordinates", "give points in R^3");
+  const int s = (5 - axis) % 3;  // new_axis = old_z
+  BSpline<T> out = V;
+  for (std::size_t i = 0; i < V.size(); ++i)
+    for (int j = 0; j < 3; ++j) out.points[i * V.q + j] = V.points[i * V.q + (j + s) % 3] + offset[j];
+  return out;
+}
+
+template <class T>
+TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region) {
+  TrimmedModel<T> out;
+  out.trivariates = M.trivariates;
+  out.region = std::move(region);
+  for (const auto& c : M.cells) {
+    typename TrimmedModel<T>::Cell x;
+    x.trivariate = c.trivariates.front();
+    x.trim = region_and<T>({});
+    x.name = c.name;
+    x.inherited.assign(c.trivariates.begin() + 1, c.trivariates.end());
+    x.constants = c.attributes.constants;
+    out.cells.push_back(std::move(x));
+  }
+  return out;
+}
+
+template <class T>
+CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const TrimOptions& options, const T& eps, const Limits& limits) {
+  return vrep_detail::run_trim(V, trim, options.max_boxes, false, eps, limits).cls;
+}
+
+template <class T>
+VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
+  if (vrep_detail::trivially_true(trim)) return volume_enclosure(V, max_boxes, limits);
+  return vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits).volume;
+}
+
+template <class T>
+TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>& B, BooleanOp op, Blend blend, const TrimOptions& options,
+                                const T& eps, const Limits& limits) {
+  using namespace vrep_detail;
+  TrimmedModel<T> out;
+  std::vector<std::size_t> tb;  // B's trivariates in out
+  out.trivariates = A.trivariates;
+  for (const auto& V : B.trivariates) {
+    tb.push_back(out.trivariates.size());
+    out.trivariates.push_back(V);
+  }
+  std::vector<std::array<T, 6>> boundsA, boundsB;
+  for (const auto& c : A.cells) boundsA.push_back(control_bounds(A.trivariates[c.trivariate]));
+  for (const auto& c : B.cells) boundsB.push_back(control_bounds(B.trivariates[c.trivariate]));
+  auto meets = [](const std::array<T, 6>& a, const std::array<T, 6>& b) {
+    for (int k = 0; k < 3; ++k)
+      if (a[k + 3] < b[k] || b[k + 3] < a[k]) return false;
+    return true;
+  };
+  // One side's cells restricted to `with` (the other model's region or its complement).
+  auto pass = [&](const TrimmedModel<T>& M, bool from_a, const Region<T>& with, const std::string& category) {
+    for (std::size_t c = 0; c < M.cells.size(); ++c) {
+      const auto& cell = M.cells[c];
+      const auto& V = M.trivariates[cell.trivariate];
+      const std::string who = std::string(from_a ? "first" : "second") + ".cells[" + std::to_string(c) + "] (" + cell.name + ")";
+      // The new condition alone first: a cell wholly inside it needs no new trim.
+      using K = typename CellClass<T>::Kind;
+      const auto alone = classify_cell(V, with, options, eps, limits);
+      auto refuse = [&](const CellClass<T>& k) {
+        throw DomainError(who, "meets the other model's boundary tangentially or nearly so: " + std::to_string(k.mixed) + " of " +
+                                   std::to_string(k.boxes) + " subdivision boxes stay undecided and no exact witness of both sides was found",
+                          "the paper excludes tangential contact; move the models apart or through each other, or raise --boxes");
+      };
+      if (alone.kind == K::undecided) refuse(alone);
+      if (alone.kind == K::empty) continue;
+      Region<T> trim = alone.kind == K::whole ? cell.trim : conjoin(cell.trim, with);
+      auto cls = alone;
+      if (!trivially_true(trim)) cls = classify_cell(V, trim, options, eps, limits);
+      if (cls.kind == K::undecided) refuse(cls);
+      if (cls.kind == K::empty) continue;
+      typename TrimmedModel<T>::Cell x;
+      x.trivariate = from_a ? cell.trivariate : tb[cell.trivariate];
+      x.trim = std::move(trim);
+      x.status = cls.kind == K::whole ? Truth::in : Truth::mixed;
+      x.category = category;
+      for (std::size_t t : cell.inherited) x.inherited.push_back(from_a ? t : tb[t]);
+      x.constants = cell.constants;
+      x.name = (from_a ? "A" : "B") + std::to_string(c);
+      if (category == "both") {
+        const auto& mine = from_a ? boundsA[c] : boundsB[c];
+        const auto& other = from_a ? B : A;
+        const auto& ob = from_a ? boundsB : boundsA;
+        for (std::size_t o = 0; o < other.cells.size(); ++o) {
+          if (!meets(mine, ob[o])) continue;
+          x.inherited.push_back(from_a ? tb[other.cells[o].trivariate] : other.cells[o].trivariate);
+          Attributes<T> into, from;
+          into.constants = std::move(x.constants);
+          from.constants = other.cells[o].constants;
+          merge_constants(into, from, blend);
+          x.constants = std::move(into.constants);
+          x.name += "*" + std::string(from_a ? "B" : "A") + std::to_string(o);
+        }
+      }
+      out.cells.push_back(std::move(x));
+    }
+  };
+  if (op == BooleanOp::intersect || op == BooleanOp::unite) pass(A, true, B.region, "both");
+  if (op == BooleanOp::subtract || op == BooleanOp::unite) pass(A, true, region_not(B.region), "A");
+  if (op == BooleanOp::unite) pass(B, false, region_not(A.region), "B");
+  out.region = op == BooleanOp::intersect ? region_and<T>({A.region, B.region})
+               : op == BooleanOp::subtract ? region_and<T>({A.region, region_not(B.region)})
+                                           : region_or<T>({A.region, B.region});
+  if (out.cells.empty())
+    throw DomainError(std::string(to_string(op)), "gives an empty model (no cell has a part of positive volume)", "check the operands' placement");
+  // Keep only the trivariates the cells use.
+  std::vector<std::size_t> map(out.trivariates.size(), SIZE_MAX);
+  std::vector<BSpline<T>> used;
+  auto use = [&](std::size_t t) {
+    if (map[t] == SIZE_MAX) {
+      map[t] = used.size();
+      used.push_back(out.trivariates[t]);
+    }
+    return map[t];
+  };
+  for (auto& c : out.cells) {
+    c.trivariate = use(c.trivariate);
+    for (auto& t : c.inherited) t = use(t);
+  }
+  out.trivariates = std::move(used);
+  return out;
+}
+
+template <class T>
+std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, const TrimOptions& options, const Limits& limits) {
+  using namespace vrep_detail;
+  std::vector<std::string> fails;
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(R, leaves);
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto cls = classify_cell(M.trivariates[M.cells[c].trivariates.front()], R, options, T(0), limits);
+    if (cls.kind != CellClass<T>::whole)
+      fails.push_back("cells[" + std::to_string(c) + "] (" + M.cells[c].name + ") is " + to_string<T>(cls.kind) + " against the region, not whole");
+  }
+  for (std::size_t h = 0; h < M.half_surfaces.size(); ++h) {
+    const auto& hs = M.half_surfaces[h];
+    if (hs.twin) continue;
+    const BSpline<T> S = face(M.trivariates[hs.trivariate], hs.dir, hs.side);
+    bool on = false;
+    for (const auto* g : leaves) {
+      bool zero = true;
+      for (const auto& pc : extract_bezier(S, limits)) {
+        // The face as a degenerate trivariate: g o S vanishes iff every coefficient of W^k g(X/W, ...) does.
+        BSpline<T> P = pc.spline;
+        P.degrees.push_back(0);
+        P.knots.push_back({T(0), T(1)});
+        const Bern<T> G = compose_leaf(*g, P);
+        for (const auto& x : G.c) zero = zero && x == T(0);
+        if (!zero) break;
+      }
+      if (zero) {
+        on = true;
+        break;
+      }
+    }
+    if (!on)
+      fails.push_back("boundary face (" + std::to_string(hs.dir) + ", " + std::to_string(hs.side) + ") of cells[" + std::to_string(hs.cell) +
+                      "] lies on no surface g = 0 of the region");
+  }
+  return fails;
+}
+
+}  // namespace splinex
