@@ -189,3 +189,60 @@ TEST_CASE("vrep trimmed: a torus cut by a slab along its quartic, and hostile re
   big.terms[{9, 0, 0}] = R(1);
   CHECK_THROWS_AS(classify_cell(glue(box_cells<R>({0, 0, 0}, {1, 1, 1})).trivariates[0], region_leaf(big)), SizeLimitError);
 }
+
+#include "io/trimmed_io.hpp"
+
+TEST_CASE("vrep trimmed: regions and trimmed documents read exactly, hostile ones refused") {
+  // Round trip: the cone's region, written and read, classifies the same points the same way.
+  const auto C = place_region(cone_region<R>(R(1), R(1, 2), R(2)), 1, {R(1, 3), R(0), R(-7, 10)});
+  const auto back = region_from_json(Json::parse(region_to_json(C).dump()));
+  for (const auto& x : std::vector<std::vector<R>>{{R(1, 3), R(1), R(-7, 10)}, {R(0), R(0), R(0)}, {R(1, 3), R(1, 2), R(1, 10)}})
+    CHECK(classify_point(back, x) == classify_point(C, x));
+  // Decimal text is exact.
+  const auto half = region_from_json(Json::parse(R"({"leaf": [["0.1", 0, 0, 0], ["-1", 1, 0, 0]]})"));
+  CHECK(classify_point(half, {R(1, 10), R(0), R(0)}) == Truth::mixed);
+  // Nesting beyond 64 levels, too many leaves, degree above 8, bad terms, unknown fields.
+  std::string deep = R"({"leaf": [[1, 0, 0, 0]]})";
+  for (int i = 0; i < 70; ++i) deep = R"({"not": )" + deep + "}";
+  CHECK_THROWS_AS(region_from_json(Json::parse(deep)), SizeLimitError);
+  Json many = Json::object();
+  many["all"] = Json::array();
+  for (int i = 0; i < 5000; ++i) many["all"].push_back(Json::parse(R"({"leaf": [[1, 0, 0, 0]]})"));
+  CHECK_THROWS_AS(region_from_json(many), SizeLimitError);
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"({"leaf": [[1, 5, 4, 0]]})")), SizeLimitError);
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"({"leaf": [[1, -1, 0, 0]]})")), ValidationError);
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"({"leaf": [[0, 1, 0, 0]]})")), ValidationError);  // the zero polynomial
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"({"leaf": [[1, 0, 0, 0]], "colour": 1})")), ValidationError);
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"({"all": 3})")), ValidationError);
+  CHECK_THROWS_AS(region_from_json(Json::parse(R"([])")), ValidationError);
+  // A trimmed document: written and read back, the same volume enclosure.
+  const auto Cy = cylinder(R(1), R(2), 2, {R(0), R(0), R(0)});
+  const auto M = trimmed_boolean(Cy, box({R(0), R(-2), R(-1)}, {R(2), R(2), R(3)}), BooleanOp::intersect);
+  const auto N = trimmed_from_json(Json::parse(trimmed_to_json(M).dump()));
+  REQUIRE(N.cells.size() == M.cells.size());
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto a = trimmed_volume(M.trivariates[M.cells[c].trivariate], M.cells[c].trim, 64);
+    const auto b = trimmed_volume(N.trivariates[N.cells[c].trivariate], N.cells[c].trim, 64);
+    CHECK(a.lower == b.lower);
+    CHECK(a.upper == b.upper);
+  }
+  // Hostile trimmed documents: a cell that is a curve, an inherited index out of range, a
+  // negative weight.
+  Json doc = trimmed_to_json(M);
+  Json bad = doc;
+  bad["cells"][0]["trivariate"] = Json::parse(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 1, 1]], "points": [[0, 0, 0], [1, 0, 0]]})");
+  const auto curve = trimmed_from_json(bad);
+  CHECK_THROWS_AS(trimmed_volume(curve.trivariates[0], curve.cells[0].trim, 64), ValidationError);
+  bad = doc;
+  bad["cells"][0]["inherited"] = Json::array({7});
+  CHECK_THROWS_AS(trimmed_from_json(bad), ValidationError);
+  auto V = M.trivariates[M.cells[0].trivariate];
+  if (V.is_rational()) {
+    V.weights[0] = R(-1);
+    CHECK_THROWS_AS(classify_cell(V, M.cells[0].trim), Error);
+  }
+  // A trivariate too large for the composed leaves is refused before the work.
+  Limits small;
+  small.max_control_points = 1000;
+  CHECK_THROWS_AS(classify_cell(M.trivariates[M.cells[0].trivariate], M.cells[0].trim, TrimOptions{}, R(0), small), SizeLimitError);
+}
