@@ -134,7 +134,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     c.double_s = seconds_since(t0);
     cases.push_back(std::move(c));
   }
-  md << "| model | V-cells (only A / both / only B; whole / cut) | trivariates (degrees, control points) | volume (certified, 512 boxes per cell) | "
+  md << "| model | V-cells (only A / both / only B after the last union; whole / cut) | trivariates (degrees, control points) | volume (certified, 512 boxes per cell) | "
         "Boolean time exact / double (s) | V-cells in double (eps 1e-12) |\n|---|---|---|---|---|---|\n";
   for (const auto& c : cases) {
     std::map<std::string, std::size_t> cat;
@@ -152,7 +152,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       hi += e.upper;
     }
     std::ostringstream sz;
-    for (const auto& [k, n] : sizes) sz << n << " x " << k << "; ";
+    for (const auto& [k, n] : sizes) sz << (sz.tellp() > 0 ? "; " : "") << n << " x " << k;
     md << "| " << c.name << " | " << c.model.cells.size() << " (" << cat["A"] << " / " << cat["both"] << " / " << cat["B"] << "; " << whole
        << " / " << c.model.cells.size() - whole << ") | " << sz.str() << " | [" << std::setprecision(6) << to_double(lo) << ", " << to_double(hi)
        << "] | " << std::setprecision(3) << c.exact_s << " / " << c.double_s << " | "

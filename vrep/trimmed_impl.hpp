@@ -571,10 +571,11 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
       x.trivariate = from_a ? cell.trivariate : tb[cell.trivariate];
       x.trim = std::move(trim);
       x.status = cls.kind == K::whole ? Truth::in : Truth::mixed;
-      x.category = category;
+      // A subtraction only trims A's cells: they keep the category an earlier Boolean gave them.
+      x.category = op == BooleanOp::subtract && !cell.category.empty() ? cell.category : category;
       for (std::size_t t : cell.inherited) x.inherited.push_back(from_a ? t : tb[t]);
       x.constants = cell.constants;
-      x.name = (from_a ? "A" : "B") + std::to_string(c);
+      x.name = cell.name.empty() ? (from_a ? "A" : "B") + std::to_string(c) : cell.name;
       if (category == "both") {
         const auto& mine = from_a ? boundsA[c] : boundsB[c];
         const auto& other = from_a ? B : A;
@@ -587,7 +588,7 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
           from.constants = other.cells[o].constants;
           merge_constants(into, from, blend);
           x.constants = std::move(into.constants);
-          x.name += "*" + std::string(from_a ? "B" : "A") + std::to_string(o);
+          x.name += "*" + (other.cells[o].name.empty() ? std::string(from_a ? "B" : "A") + std::to_string(o) : other.cells[o].name);
         }
       }
       out.cells.push_back(std::move(x));
