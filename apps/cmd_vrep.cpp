@@ -137,38 +137,31 @@ struct PrimitiveOptions {
   int degree = 3, pieces = 4;
 };
 
-/// The primitive's exact region (vrep/trimmed.hpp) in the standard placement, where it has one: the
-/// sphere of seven cells is approximate, the singular trivariates are not offered for Booleans.
+/// A primitive's cells and its exact region (vrep/trimmed.hpp) where it has one: the sphere of
+/// seven cells is approximate, the singular trivariates are not offered for Booleans.
 template <class F>
-std::optional<Region<F>> primitive_region(const PrimitiveOptions& o) {
-  auto num = [](const std::string& text, const std::string& field) { return round_checked<F>(parse_number(text, field), field); };
-  auto list = [](const std::string& text, const std::string& field) {
-    std::vector<F> v;
-    for (const auto& x : parse_number_list(text, field)) v.push_back(round_checked<F>(x, field));
-    return v;
-  };
-  if (o.name == "cylinder") return cylinder_region(num(o.radius, "radius"), num(o.height, "height"));
-  if (o.name == "cone") return cone_region(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"));
-  if (o.name == "torus") return torus_region(num(o.major, "major"), num(o.radius, "radius"));
-  if (o.name == "box") return box_region(list(o.lo, "lo"), list(o.hi, "hi"));
-  return std::nullopt;
-}
+struct Primitive {
+  std::vector<BSpline<F>> cells;
+  std::optional<Region<F>> region;
+};
 
 template <class F>
-std::vector<BSpline<F>> primitive_cells(const PrimitiveOptions& o) {
+Primitive<F> primitive_cells(const PrimitiveOptions& o) {
   auto num = [](const std::string& text, const std::string& field) { return round_checked<F>(parse_number(text, field), field); };
   auto list = [](const std::string& text, const std::string& field) {
     std::vector<F> v;
     for (const auto& x : parse_number_list(text, field)) v.push_back(round_checked<F>(x, field));
     return v;
   };
-  if (o.name == "cylinder") return cylinder_cells(num(o.radius, "radius"), num(o.height, "height"));
-  if (o.name == "cone") return cone_cells(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"));
-  if (o.name == "torus") return torus_cells(num(o.major, "major"), num(o.radius, "radius"));
-  if (o.name == "box") return box_cells(list(o.lo, "lo"), list(o.hi, "hi"));
-  if (o.name == "sphere") return sphere_cells(num(o.radius, "radius"), o.degree, o.pieces);
-  if (o.name == "singular-cylinder") return {singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))};
-  return {singular_sphere(num(o.radius, "radius"))};
+  if (o.name == "cylinder") return {cylinder_cells(num(o.radius, "radius"), num(o.height, "height")), cylinder_region(num(o.radius, "radius"), num(o.height, "height"))};
+  if (o.name == "cone")
+    return {cone_cells(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height")),
+            cone_region(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"))};
+  if (o.name == "torus") return {torus_cells(num(o.major, "major"), num(o.radius, "radius")), torus_region(num(o.major, "major"), num(o.radius, "radius"))};
+  if (o.name == "box") return {box_cells(list(o.lo, "lo"), list(o.hi, "hi")), box_region(list(o.lo, "lo"), list(o.hi, "hi"))};
+  if (o.name == "sphere") return {sphere_cells(num(o.radius, "radius"), o.degree, o.pieces), std::nullopt};
+  if (o.name == "singular-cylinder") return {{singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))}, std::nullopt};
+  return {{singular_sphere(num(o.radius, "radius"))}, std::nullopt};
 }
 
 /// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
@@ -363,12 +356,12 @@ Commands add_vrep(CLI::App& app) {
                std::vector<F> at;
                for (const auto& x : parse_number_list(po->at, "at")) at.push_back(round_checked<F>(x, "at"));
                if (at.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
-               auto cells = primitive_cells<F>(*po);
+               auto [cells, region] = primitive_cells<F>(*po);
                for (auto& V : cells) V = place_trivariate(V, axis, at);
                std::vector<std::string> names;
                for (std::size_t k = 0; k < cells.size(); ++k) names.push_back(po->name + " " + std::to_string(k));
                Json doc = vmodel_to_json(glue(cells, F(0), names, ctx.limits));
-               if (const auto R = primitive_region<F>(*po)) doc["implicit"] = region_to_json(place_region(*R, axis, at));
+               if (region) doc["implicit"] = region_to_json(place_region(*region, axis, at));
                return doc;
              });
              std::cout << j.dump() << "\n";

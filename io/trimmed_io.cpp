@@ -1,5 +1,7 @@
 #include "io/trimmed_io.hpp"
 
+#include "io/vmodel_io.hpp"
+
 #include "float/mpfr.hpp"
 
 namespace splinex {
@@ -38,17 +40,6 @@ Region<Rational> region_at(const Json& j, const std::string& where, int depth, s
   Region<Rational> r = std::string(key) == "all" ? region_and(std::move(parts)) : region_or(std::move(parts));
   r.label = label;
   return r;
-}
-
-template <class T>
-Json constants_json(const std::map<std::string, std::vector<T>>& m) {
-  Json o = Json::object();
-  for (const auto& [n, v] : m) {
-    Json a = Json::array();
-    for (const auto& x : v) a.push_back(ArithTraits<T>::to_json(x));
-    o[n] = a;
-  }
-  return o;
 }
 
 }  // namespace
@@ -162,7 +153,7 @@ Json trimmed_to_json(const TrimmedModel<T>& M) {
       }
       j["inherited"] = list;
     }
-    if (!c.constants.empty()) j["constants"] = constants_json(c.constants);
+    if (!c.constants.empty()) j["constants"] = constants_to_json(c.constants);
     cells.push_back(j);
   }
   Json out{{"type", "trimmed_vmodel"},

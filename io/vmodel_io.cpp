@@ -166,15 +166,7 @@ void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limit
 
 template <class T>
 Json vmodel_to_json(const VModel<T>& M) {
-  auto consts = [](const std::map<std::string, std::vector<T>>& m) {
-    Json o = Json::object();
-    for (const auto& [n, v] : m) {
-      Json a = Json::array();
-      for (const auto& x : v) a.push_back(ArithTraits<T>::to_json(x));
-      o[n] = a;
-    }
-    return o;
-  };
+  auto consts = [](const std::map<std::string, std::vector<T>>& m) { return constants_to_json(m); };
   Json cells = Json::array(), inherited = Json::array();
   std::map<std::size_t, std::size_t> inherited_index;  // model trivariate -> position in "inherited_trivariates"
   for (const auto& c : M.cells) {

@@ -43,6 +43,18 @@ void append_cells(VModelCells& into, VModelCells more);
 /// for a bad address or value), and the cells' inherited trivariates appended to its trivariates.
 void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits = {});
 
+/// Named constant attributes as {"NAME": [numbers]}.
+template <class T>
+Json constants_to_json(const std::map<std::string, std::vector<T>>& m) {
+  Json o = Json::object();
+  for (const auto& [n, v] : m) {
+    Json a = Json::array();
+    for (const auto& x : v) a.push_back(ArithTraits<T>::to_json(x));
+    o[n] = a;
+  }
+  return o;
+}
+
 /// The document: cells with their trivariates, and the topology (counts, Euler characteristic,
 /// V-points, V-curves with ends and V-surfaces, half-V-surfaces with cell, face, twin and loop).
 template <class T>

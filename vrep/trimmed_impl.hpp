@@ -32,19 +32,22 @@ Region<T> region_leaf(Poly3<T> g, std::string label) {
   r.label = std::move(label);
   return r;
 }
+namespace vrep_detail {
 template <class T>
-Region<T> region_and(std::vector<Region<T>> parts) {
+Region<T> region_of(typename Region<T>::Kind kind, std::vector<Region<T>> parts) {
   Region<T> r;
-  r.kind = Region<T>::all_of;
+  r.kind = kind;
   r.parts = std::move(parts);
   return r;
 }
+}  // namespace vrep_detail
+template <class T>
+Region<T> region_and(std::vector<Region<T>> parts) {
+  return vrep_detail::region_of(Region<T>::all_of, std::move(parts));
+}
 template <class T>
 Region<T> region_or(std::vector<Region<T>> parts) {
-  Region<T> r;
-  r.kind = Region<T>::any_of;
-  r.parts = std::move(parts);
-  return r;
+  return vrep_detail::region_of(Region<T>::any_of, std::move(parts));
 }
 template <class T>
 Region<T> region_not(Region<T> x) {
