@@ -280,7 +280,7 @@ Commands add_vrep(CLI::App& app) {
   boo->add_option("operation", bo->op, "intersect, subtract or union")->required()->check(CLI::IsMember({"intersect", "subtract", "union"}));
   boo->add_option("first", bo->a, "the V-model A (or a trivariate)")->required();
   boo->add_option("second", bo->b, "the V-model B (or a trivariate)")->required();
-  boo->add_option("--eps", bo->eps, "run in double with IRIT-style tolerance eps (default: exact)");
+  boo->add_option("--eps", bo->eps, "run in double with IRIT-style tolerance eps (default: exact); trimmed cells too");
   boo->add_option("--blend", bo->blend, "constants of cells in both models: sum-clipped (Figure 5), sum or first")
       ->check(CLI::IsMember({"sum-clipped", "sum", "first"}))
       ->capture_default_str();
@@ -408,7 +408,7 @@ Commands add_vrep(CLI::App& app) {
              const Blend blend = parse_blend(bo->blend);
              TrimOptions topt;
              topt.max_boxes = bo->boxes;
-             // Trimmed cells (curved cuts): exact only.
+             // Trimmed cells (curved cuts), exactly.
              auto trimmed = [&]() {
                if (!A.trimmed || !B.trimmed)
                  throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
@@ -431,9 +431,21 @@ Commands add_vrep(CLI::App& app) {
                }
                return trimmed();
              }
-             if (!A.model || !B.model) throw DomainError("eps", "Booleans in double are built for V-models, not trimmed V-models", "run exactly (no --eps)");
              const double eps = to_double(parse_number(bo->eps, "eps"));
              if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
+             // Trimmed cells in double: the models and regions rounded, coefficients within eps count as 0.
+             auto trimmed_in_double = [&]() {
+               if (!A.trimmed || !B.trimmed)
+                 throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
+                                   "build it with vrep primitive (it writes \"implicit\") or give one");
+               std::cout << trimmed_to_json(trimmed_boolean(trimmed_to_double(*A.trimmed), trimmed_to_double(*B.trimmed), op, blend, topt, eps, ctx.limits)).dump()
+                         << "\n";
+               return 0;
+             };
+             if (!planar_possible) {
+               if (bo->trim == "never") throw DomainError("trim", "is never, but an operand is a trimmed V-model", "give --trim auto");
+               return trimmed_in_double();
+             }
              auto in_double = [&](const VModel<Rational>& M, const std::string& field) {
                std::vector<BSpline<double>> d;
                std::vector<std::string> names;
@@ -443,8 +455,13 @@ Commands add_vrep(CLI::App& app) {
                }
                return glue(d, eps, names, ctx.limits);
              };
-             std::cout << vmodel_to_json(boolean_op(in_double(*A.model, "first"), in_double(*B.model, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
-             return 0;
+             try {
+               std::cout << vmodel_to_json(boolean_op(in_double(*A.model, "first"), in_double(*B.model, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
+               return 0;
+             } catch (const NotPlanarError&) {
+               if (bo->trim == "never" || !A.trimmed || !B.trimmed) throw;
+             }
+             return trimmed_in_double();
            }},
           {vol, [volo, operand](const Context& ctx) {
              const auto O = operand(volo->a, ctx);

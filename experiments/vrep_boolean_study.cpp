@@ -55,23 +55,6 @@ TrimmedModel<Rational> exact_primitive(std::vector<BSpline<Rational>> cells, con
   return as_trimmed(glue(cells), place_region(region, axis, at));
 }
 
-/// A trimmed model rounded to double (trivariates and regions), for the same Boolean in floats.
-TrimmedModel<double> trimmed_double(const TrimmedModel<Rational>& M) {
-  TrimmedModel<double> out;
-  for (const auto& V : M.trivariates) out.trivariates.push_back(round_spline<double>(V));
-  out.region = region_to_double(M.region);
-  for (const auto& c : M.cells) {
-    typename TrimmedModel<double>::Cell x;
-    x.trivariate = c.trivariate;
-    x.trim = region_to_double(c.trim);
-    x.name = c.name;
-    x.category = c.category;
-    x.inherited = c.inherited;
-    out.cells.push_back(std::move(x));
-  }
-  return out;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -105,7 +88,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     c.exact_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     try {
-      c.double_cells = trimmed_boolean(trimmed_double(cone), trimmed_double(cyl), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
+      c.double_cells = trimmed_boolean(trimmed_to_double(cone), trimmed_to_double(cyl), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
     } catch (const Error& e) {
       c.double_note = e.what();
     }
@@ -124,9 +107,9 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     c.exact_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     try {
-      const auto d = trimmed_boolean(trimmed_boolean(trimmed_boolean(trimmed_double(base), trimmed_double(post), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12),
-                                                     trimmed_double(hole1), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12),
-                                     trimmed_double(hole2), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12);
+      const auto d = trimmed_boolean(trimmed_boolean(trimmed_boolean(trimmed_to_double(base), trimmed_to_double(post), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12),
+                                                     trimmed_to_double(hole1), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12),
+                                     trimmed_to_double(hole2), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12);
       c.double_cells = d.cells.size();
     } catch (const Error& e) {
       c.double_note = e.what();
@@ -191,10 +174,10 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
                                          box_region<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}), 2, {R(0), R(0), R(0)});
         const std::string ex = verdict([&] { return trimmed_boolean(cyl, box, BooleanOp::intersect); });
         const std::string d12 = verdict([&] {
-          return trimmed_boolean(trimmed_double(cyl), trimmed_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-12);
+          return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-12);
         });
         const std::string d6 = verdict([&] {
-          return trimmed_boolean(trimmed_double(cyl), trimmed_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
+          return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
         });
         md << "| " << (sign == 0 ? std::string("0") : std::string(sign < 0 ? "-" : "") + "2^-" + std::to_string(k)) << " | " << ex << " | " << d12
            << " | " << d6 << " |\n";

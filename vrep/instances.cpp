@@ -1,5 +1,6 @@
 // The V-rep templates instantiated for the exact and float arithmetics.
 #include "float/mpfr.hpp"
+#include "float/rounding.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean_impl.hpp"
@@ -88,6 +89,26 @@ Region<double> region_to_double(const Region<Rational>& R) {
   out.label = R.label;
   for (const auto& [e, c] : R.g.terms) out.g.terms[e] = to_double(c);
   for (const auto& p : R.parts) out.parts.push_back(region_to_double(p));
+  return out;
+}
+
+TrimmedModel<double> trimmed_to_double(const TrimmedModel<Rational>& M) {
+  TrimmedModel<double> out;
+  for (std::size_t t = 0; t < M.trivariates.size(); ++t)
+    out.trivariates.push_back(round_spline<double>(M.trivariates[t], "trivariates[" + std::to_string(t) + "]"));
+  out.region = region_to_double(M.region);
+  for (const auto& c : M.cells) {
+    TrimmedModel<double>::Cell x;
+    x.trivariate = c.trivariate;
+    x.trim = region_to_double(c.trim);
+    x.name = c.name;
+    x.category = c.category;
+    x.inherited = c.inherited;
+    x.status = c.status;
+    for (const auto& [n, v] : c.constants)
+      for (const auto& y : v) x.constants[n].push_back(to_double(y));
+    out.cells.push_back(std::move(x));
+  }
   return out;
 }
 

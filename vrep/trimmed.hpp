@@ -127,6 +127,9 @@ struct TrimmedModel {
   Region<T> region;                      // the model's point set
 };
 
+/// A trimmed model rounded to double (trivariates, regions, constants) for the same Boolean in floats.
+TrimmedModel<double> trimmed_to_double(const TrimmedModel<Rational>& M);
+
 /// A V-model as untrimmed cells with the given region (its constants carried along).
 template <class T>
 TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region);
