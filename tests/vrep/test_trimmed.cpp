@@ -246,3 +246,25 @@ TEST_CASE("vrep trimmed: regions and trimmed documents read exactly, hostile one
   small.max_control_points = 1000;
   CHECK_THROWS_AS(classify_cell(M.trivariates[M.cells[0].trivariate], M.cells[0].trim, TrimOptions{}, R(0), small), SizeLimitError);
 }
+
+TEST_CASE("vrep trimmed: near tangency, exact certifies or refuses where double with a tolerance answers wrongly") {
+  const auto C = cylinder(R(1), R(2), 2, {R(0), R(0), R(0)});
+  auto slab = [](const R& g) { return box({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}); };
+  // A sliver of width 2^-20 exists: certified cut, exactly.
+  const auto M = trimmed_boolean(C, slab(-R(1) / R(1 << 20)), BooleanOp::intersect);
+  REQUIRE(M.cells.size() == 1);
+  CHECK(M.cells[0].status == Truth::mixed);
+  // Width 2^-30: beyond the default budget, refused exactly; in double at eps 1e-6 it is called
+  // empty, which is wrong (the sliver has positive volume).
+  const auto thin = slab(-R(1) / R(1LL << 30));
+  CHECK_THROWS_AS(trimmed_boolean(C, thin, BooleanOp::intersect), DomainError);
+  try {
+    (void)trimmed_boolean(trimmed_to_double(C), trimmed_to_double(thin), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
+    FAIL("double at eps 1e-6 was expected to call the sliver empty");
+  } catch (const DomainError& e) {
+    CHECK(std::string(e.what()).find("empty") != std::string::npos);
+  }
+  // And the sliver is there: an exact point in both models.
+  const R x = R(1) - R(1) / R(1LL << 31);
+  CHECK(classify_point(region_and<R>({C.region, thin.region}), {x, R(0), R(1)}) == Truth::in);
+}
