@@ -11,6 +11,10 @@
 //               "inherited": [indices into inherited_trivariates], "constants": {"NAME": [numbers]}}],
 //    "inherited_trivariates": [{spline document}, ...]}
 // Nesting is limited to 64 levels and a region to 4096 leaves of degree <= 8 (SizeLimitError).
+// A trimmed document's "region" and "trim"s are taken as written (vrep boolean writes them
+// consistently; a status given is recomputed, not trusted). Unlike a V-model's "implicit", they are
+// not checked against the cells: a hand-edited region that does not match the cells makes later
+// Booleans and point classification wrong, so edit trimmed documents through vrep boolean only.
 #pragma once
 #include <string>
 
