@@ -273,6 +273,7 @@ Commands add_vrep(CLI::App& app) {
   struct BooleanOptions {
     std::string op, a, b, eps, blend = "sum-clipped", at, trim = "auto";
     std::size_t boxes = 256;
+    bool centroid = false;
   };
   auto bo = std::make_shared<BooleanOptions>();
   bo->boxes = 4096;
@@ -294,6 +295,7 @@ Commands add_vrep(CLI::App& app) {
   auto volo = std::make_shared<BooleanOptions>();
   auto* vol = v->add_subcommand("volume", "every cell's volume and the model's: exact (polynomial cells) or a certified enclosure (rational)");
   vol->add_option("file", volo->a, "a V-model document")->required();
+  vol->add_flag("--centroid", volo->centroid, "also the model's centroid: exact (polynomial cells, no curved cut) or a certified enclosure per coordinate");
   vol->add_option("--boxes", volo->boxes, "rational cells: the subdivision budget per cell (the enclosure's gap shrinks as 1/boxes)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
@@ -493,6 +495,34 @@ Commands add_vrep(CLI::App& app) {
                out["lower"] = to_fraction_string(lo);
                out["upper"] = to_fraction_string(hi);
                out["approximately"] = {to_double(lo), to_double(hi)};
+             }
+             if (volo->centroid) {
+               // The model's centroid: per coordinate the enclosure of sum of moments over the
+               // enclosure of sum of volumes (one subdivision per coordinate gives both).
+               Json c = Json::array(), approx = Json::array();
+               for (int a = 0; a < 3; ++a) {
+                 Rational ml(0), mh(0), vl(0), vh(0);
+                 auto add_moment = [&](const BSpline<Rational>& V, const Region<Rational>& trim) {
+                   const auto e = trimmed_moment(V, trim, a, volo->boxes, ctx.limits);
+                   ml += e.moment.lower;
+                   mh += e.moment.upper;
+                   vl += e.volume.lower;
+                   vh += e.volume.upper;
+                 };
+                 if (O.model)
+                   for (const auto& cell : O.model->cells) add_moment(O.model->trivariates[cell.trivariates.front()], region_and<Rational>({}));
+                 else
+                   for (const auto& x : O.trimmed->cells) add_moment(O.trimmed->trivariates[x.trivariate], x.trim);
+                 if (!(Rational(0) < vl))
+                   throw DomainError("centroid", "needs a volume enclosure away from 0", "raise --boxes");
+                 // m / v over m in [ml, mh], v in [vl, vh], v > 0.
+                 const Rational lo_c = std::min(ml / vl, ml / vh), hi_c = std::max(mh / vl, mh / vh);
+                 if (lo_c == hi_c) c.push_back(to_fraction_string(lo_c));
+                 else c.push_back({to_fraction_string(lo_c), to_fraction_string(hi_c)});
+                 approx.push_back({to_double(lo_c), to_double(hi_c)});
+               }
+               out["centroid"] = c;
+               out["centroid_approximately"] = approx;
              }
              std::cout << out.dump() << "\n";
              return 0;

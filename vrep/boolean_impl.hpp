@@ -211,7 +211,7 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
 /// Bounds lo <= integral <= hi of det J = N / W^4 over a box that is the share `vol` of its
 /// piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure.
 template <class T>
-void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi) {
+void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi, int power = 4) {
   T nmin = N.c.front(), nmax = nmin, wmin = W.c.front(), wmax = wmin;
   for (const auto& x : N.c) {
     if (x < nmin) nmin = x;
@@ -222,7 +222,12 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
     if (wmax < x) wmax = x;
   }
   if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
-  const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
+  // (f(W) = W^-power; power 4 for det J, 5 for a coordinate's moment X_c N / W^5.)
+  T w4min(1), w4max(1);
+  for (int k = 0; k < power; ++k) {
+    w4min *= wmin;
+    w4max *= wmax;
+  }
   if (!(nmin < T(0)) || !(T(0) < nmax)) {
     // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
     // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
@@ -239,8 +244,10 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
       lo = hi = T(0);
       return;
     }
-    const T m = J / I, m2 = m * m;
-    const T lower = I / (m2 * m2);
+    const T m = J / I;
+    T mp(1);
+    for (int k = 0; k < power; ++k) mp *= m;
+    const T lower = I / mp;
     const T fa = T(1) / w4min, fb = T(1) / w4max;
     const T upper = wmax == wmin ? T(I * fa) : T(fa * I + (fb - fa) / (wmax - wmin) * (J - wmin * I));
     lo = sg < T(0) ? T(-upper) : lower;

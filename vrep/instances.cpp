@@ -179,6 +179,7 @@ const char* to_string(Regularity r) {
   template TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>&, const TrimmedModel<T>&, BooleanOp, Blend, const TrimOptions&, \
                                            const T&, const Limits&);                                                 \
   template VolumeEnclosure<T> trimmed_volume(const BSpline<T>&, const Region<T>&, std::size_t, const Limits&);       \
+  template MomentEnclosure<T> trimmed_moment(const BSpline<T>&, const Region<T>&, int, std::size_t, const Limits&);  \
   template std::vector<std::string> check_region(const VModel<T>&, const Region<T>&, const TrimOptions&, const Limits&);
 
 SPLINEX_INSTANTIATE_TRIMMED(Rational)

@@ -160,6 +160,19 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
 template <class T>
 VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {});
 
+/// The volume and the integral of point coordinate `coordinate` (0..2: x, y, z, the centroid's
+/// numerator; 3..q-1: an attribute coordinate carried by the trivariate) over a trimmed cell, both
+/// certified enclosures from the same subdivision: polynomial cells' in-boxes exactly, other boxes
+/// between Q / W^5's extreme coefficient ratios (Q = X_c N), mixed boxes between none and all; the
+/// budget left after classification splits the boxes whose moment bounds are widest.
+template <class T>
+struct MomentEnclosure {
+  VolumeEnclosure<T> volume, moment;
+};
+template <class T>
+MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes = 4096,
+                                  const Limits& limits = {});
+
 /// That the model lies in its region: every cell's trivariate classifies `whole` against it (the
 /// cells of a primitive against the primitive's region), and every boundary face lies on the
 /// zero set of a leaf of the region (the face's coefficients of that leaf's G are all zero).

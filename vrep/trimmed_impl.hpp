@@ -3,6 +3,7 @@
 #pragma once
 #include <algorithm>
 #include <deque>
+#include <queue>
 
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
@@ -181,11 +182,12 @@ const T& corner(const Bern<T>& b, int s0, int s1, int s2) {
 template <class T>
 struct TrimRun {
   CellClass<T> cls;
-  VolumeEnclosure<T> volume;
+  VolumeEnclosure<T> volume, moment;  // moment: of the point coordinate `coordinate` (if >= 0)
 };
 
 template <class T>
-TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits) {
+TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits,
+                    int coordinate = -1) {
   require_jacobian_input(V, limits);
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
   if (V.is_rational())
@@ -211,9 +213,10 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
   for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
   checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");
   checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
+  if (coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
   struct Box {
     std::vector<Bern<T>> G;
-    Bern<T> N, W;
+    Bern<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
     std::array<T, 3> lo, hi;  // in the trivariate's parameters
     T vol;                    // share of its piece's unit cube
     Truth truth = Truth::mixed;
@@ -244,6 +247,24 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
   };
   std::deque<Box> todo;
   std::vector<Box> done;
+  // Halves of a box across direction dir (exact de Casteljau on everything it carries).
+  auto split_box = [&](const Box& b, int dir, Box* c) {
+    for (int h = 0; h < 2; ++h) {
+      c[h].lo = b.lo;
+      c[h].hi = b.hi;
+      c[h].vol = b.vol / T(2);
+      c[h].G.resize(b.G.size());
+    }
+    for (std::size_t l = 0; l < b.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
+    if (want_volume) {
+      std::tie(c[0].N, c[1].N) = split_half(b.N, dir);
+      std::tie(c[0].W, c[1].W) = split_half(b.W, dir);
+      if (coordinate >= 0) std::tie(c[0].Q, c[1].Q) = split_half(b.Q, dir);
+    }
+    const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
+    c[0].hi[dir] = mid;
+    c[1].lo[dir] = mid;
+  };
   const BezierForm<T> F = bezier_form(V, limits);
   for (std::size_t k = 0; k < F.size(); ++k) {
     const auto pc = F.piece(k);
@@ -252,6 +273,7 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     if (want_volume) {
       b.N = jacobian_numerator(pc.spline);
       b.W = homogeneous(pc.spline, 0);
+      if (coordinate >= 0) b.Q = mul(homogeneous(pc.spline, coordinate + 1), b.N);
     }
     for (int d = 0; d < 3; ++d) {
       b.lo[d] = pc.box[d].first;
@@ -272,23 +294,104 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     for (int d = 1; d < 3; ++d)
       if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
     Box c[2];
-    for (auto& x : c) {
-      x.lo = b.lo;
-      x.hi = b.hi;
-      x.vol = b.vol / T(2);
-      x.G.resize(b.G.size());
-    }
-    for (std::size_t l = 0; l < b.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
-    if (want_volume) {
-      std::tie(c[0].N, c[1].N) = split_half(b.N, dir);
-      std::tie(c[0].W, c[1].W) = split_half(b.W, dir);
-    }
-    const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
-    c[0].hi[dir] = mid;
-    c[1].lo[dir] = mid;
+    split_box(b, dir, c);
     for (auto& x : c) {
       evaluate(x);
       (x.truth == Truth::mixed ? todo.push_back(std::move(x)) : done.push_back(std::move(x)));
+    }
+  }
+  // The moment's bounds on a box: exact for a polynomial cell's in-box (the mean of Q's
+  // coefficients), else the bounds of Q / W^5 (Jensen / chord where Q has one sign, the extreme
+  // coefficients' ratios otherwise); a mixed box holds between none and all of it.
+  auto moment_bounds = [&](const Box& b, T& lo, T& hi) {
+    if (!V.is_rational() && b.truth == Truth::in) {
+      T sum(0);
+      for (const auto& x : b.Q.c) sum += x;
+      lo = hi = b.vol * sum / T(static_cast<long>(b.Q.c.size()));
+      return;
+    }
+    // Jensen / chord of W^-5 with the weight |Q| where Q has one sign (box_integral_bounds), the
+    // plain ratio of extreme coefficients otherwise.
+    box_integral_bounds(b.Q, b.W, b.vol, lo, hi, 5);
+    if (b.truth == Truth::mixed) {
+      lo = std::min(T(0), lo);
+      hi = std::max(T(0), hi);
+    }
+  };
+  if (want_volume && coordinate >= 0) {
+    // The rest of the budget: split the boxes (in or mixed) whose moment bounds are widest.
+    struct Wide {
+      T gap;
+      std::size_t at;
+      bool operator<(const Wide& o) const { return gap < o.gap; }
+    };
+    std::vector<Box> all;
+    for (auto& b : done)
+      if (b.truth != Truth::out) all.push_back(std::move(b));
+    for (auto& b : todo) all.push_back(std::move(b));
+    done.clear();
+    todo.clear();
+    std::priority_queue<Wide> wide;
+    auto push = [&](std::size_t i) {
+      if (all[i].truth == Truth::out) return;  // holds nothing: never split again
+      T lo, hi;
+      moment_bounds(all[i], lo, hi);
+      wide.push({hi - lo, i});
+    };
+    for (std::size_t i = 0; i < all.size(); ++i) push(i);
+    while (!wide.empty() && all.size() < max_boxes && T(0) < wide.top().gap) {
+      const std::size_t i = wide.top().at;
+      wide.pop();
+      Box b = std::move(all[i]);
+      // Across the direction where Q / W varies most along the coefficient lines (the moment's
+      // bounds are widest there), measured by Q's and W's largest neighbour differences.
+      auto variation = [](const Bern<T>& p, int l) {
+        std::size_t stride = 1;
+        for (int k = 0; k < l; ++k) stride *= p.deg[k] + 1;
+        T v(0);
+        for (std::size_t j = 0; j < p.c.size(); ++j) {
+          if ((j / stride) % (p.deg[l] + 1) == static_cast<std::size_t>(p.deg[l])) continue;
+          const T d = p.c[j + stride] - p.c[j];
+          if (v < (d < T(0) ? T(-d) : d)) v = d < T(0) ? T(-d) : d;
+        }
+        return v;
+      };
+      int dir = 0;
+      T best(-1);
+      for (int d = 0; d < 3; ++d) {
+        T v = b.Q.deg[d] > 0 ? variation(b.Q, d) : T(0);
+        if (b.W.deg[d] > 0) v += variation(b.W, d);
+        if (best < v) {
+          best = v;
+          dir = d;
+        }
+      }
+      Box c[2];
+      split_box(b, dir, c);
+      for (int h = 0; h < 2; ++h) {
+        if (b.truth == Truth::in) c[h].truth = Truth::in;  // in stays in
+        else evaluate(c[h]);
+      }
+      all[i] = std::move(c[0]);
+      push(i);
+      if (c[1].truth != Truth::out) {
+        all.push_back(std::move(c[1]));
+        push(all.size() - 1);
+      }
+    }
+    for (auto& b : all) (b.truth == Truth::mixed ? todo.push_back(std::move(b)) : done.push_back(std::move(b)));
+    for (const auto& b : done) {
+      if (b.truth != Truth::in) continue;
+      T lo, hi;
+      moment_bounds(b, lo, hi);
+      out.moment.lower += lo;
+      out.moment.upper += hi;
+    }
+    for (const auto& b : todo) {
+      T lo, hi;
+      moment_bounds(b, lo, hi);
+      out.moment.lower += lo;
+      out.moment.upper += hi;
     }
   }
   cls.boxes = todo.size() + done.size();
@@ -324,11 +427,15 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
       v.lower += std::min(T(0), lo);
       v.upper += std::max(T(0), hi);
     }
-    if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {  // negatively oriented
+    if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {  // negatively oriented: det J < 0
       const T l = -v.upper;
       v.upper = -v.lower;
       v.lower = l;
+      const T m = -out.moment.upper;
+      out.moment.upper = -out.moment.lower;
+      out.moment.lower = m;
     }
+    out.moment.boxes = cls.boxes;
     v.boxes = cls.boxes;
   }
   return out;
@@ -528,6 +635,13 @@ template <class T>
 VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
   if (vrep_detail::trivially_true(trim)) return volume_enclosure(V, max_boxes, limits);
   return vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits).volume;
+}
+
+template <class T>
+MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes, const Limits& limits) {
+  if (coordinate < 0) throw ValidationError("coordinate", "is negative", "give 0 <= coordinate < q");
+  const auto r = vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits, coordinate);
+  return {r.volume, r.moment};
 }
 
 template <class T>
