@@ -410,11 +410,14 @@ Commands add_vrep(CLI::App& app) {
              const Blend blend = parse_blend(bo->blend);
              TrimOptions topt;
              topt.max_boxes = bo->boxes;
-             // Trimmed cells (curved cuts), exactly.
-             auto trimmed = [&]() {
+             auto need_regions = [&]() {
                if (!A.trimmed || !B.trimmed)
                  throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
                                    "build it with vrep primitive (it writes \"implicit\") or give one");
+             };
+             // Trimmed cells (curved cuts), exactly.
+             auto trimmed = [&]() {
+               need_regions();
                std::cout << trimmed_to_json(trimmed_boolean(*A.trimmed, *B.trimmed, op, blend, topt, Rational(0), ctx.limits)).dump() << "\n";
                return 0;
              };
@@ -437,9 +440,7 @@ Commands add_vrep(CLI::App& app) {
              if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
              // Trimmed cells in double: the models and regions rounded, coefficients within eps count as 0.
              auto trimmed_in_double = [&]() {
-               if (!A.trimmed || !B.trimmed)
-                 throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
-                                   "build it with vrep primitive (it writes \"implicit\") or give one");
+               need_regions();
                std::cout << trimmed_to_json(trimmed_boolean(trimmed_to_double(*A.trimmed), trimmed_to_double(*B.trimmed), op, blend, topt, eps, ctx.limits)).dump()
                          << "\n";
                return 0;

@@ -208,10 +208,11 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
   return out;
 }
 
-/// Bounds lo <= integral <= hi of det J = N / W^4 over a box that is the share `vol` of its
-/// piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure.
+/// Bounds lo <= integral <= hi of N / W^power (det J: power 4) over a box that is the share `vol`
+/// of its piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure. `plain`:
+/// the extreme coefficients' ratios only, without the Jensen / chord bounds' product N W.
 template <class T>
-void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi, int power = 4) {
+void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi, int power = 4, bool plain = false) {
   T nmin = N.c.front(), nmax = nmin, wmin = W.c.front(), wmax = wmin;
   for (const auto& x : N.c) {
     if (x < nmin) nmin = x;
@@ -223,12 +224,12 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
   }
   if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
   // (f(W) = W^-power; power 4 for det J, 5 for a coordinate's moment X_c N / W^5.)
-  T w4min(1), w4max(1);
+  T w4min(1), w4max(1);  // W^power at the ends
   for (int k = 0; k < power; ++k) {
     w4min *= wmin;
     w4max *= wmax;
   }
-  if (!(nmin < T(0)) || !(T(0) < nmax)) {
+  if (!plain && (!(nmin < T(0)) || !(T(0) < nmax))) {
     // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
     // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
     // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
@@ -256,6 +257,22 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
   }
   lo = vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
   hi = vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
+}
+
+/// The largest difference of neighbouring coefficients along direction l: where a Bernstein
+/// polynomial varies most (the direction to halve a box across).
+template <class T>
+T coefficient_variation(const Bern<T>& b, int l) {
+  std::size_t stride = 1;
+  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
+  T v(0);
+  for (std::size_t i = 0; i < b.c.size(); ++i) {
+    if ((i / stride) % (b.deg[l] + 1) == static_cast<std::size_t>(b.deg[l])) continue;
+    const T d = b.c[i + stride] - b.c[i];
+    const T a = d < T(0) ? T(-d) : d;
+    if (v < a) v = a;
+  }
+  return v;
 }
 
 template <class T>
@@ -573,19 +590,7 @@ VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, 
     T vol, lo, hi;  // the box's share of the unit cube and the bounds of its integral
   };
   auto bounds = [](Box& b) { vrep_detail::box_integral_bounds(b.N, b.W, b.vol, b.lo, b.hi); };
-  // The direction in which a Bernstein polynomial's coefficients vary most along its lines.
-  auto variation = [](const Bern<T>& b, int l) {
-    std::size_t stride = 1;
-    for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
-    T v(0);
-    for (std::size_t i = 0; i < b.c.size(); ++i) {
-      if ((i / stride) % (b.deg[l] + 1) == static_cast<std::size_t>(b.deg[l])) continue;
-      const T d = b.c[i + stride] - b.c[i];
-      const T a = d < T(0) ? T(-d) : d;
-      if (v < a) v = a;
-    }
-    return v;
-  };
+  const auto variation = [](const Bern<T>& b, int l) { return vrep_detail::coefficient_variation(b, l); };
   auto wider = [](const Box& a, const Box& b) { return (a.hi - a.lo) < (b.hi - b.lo); };
   std::priority_queue<Box, std::vector<Box>, decltype(wider)> queue(wider);
   VolumeEnclosure<T> out;

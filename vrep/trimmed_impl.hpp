@@ -343,24 +343,12 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
       const std::size_t i = wide.top().at;
       wide.pop();
       Box b = std::move(all[i]);
-      // Across the direction where Q / W varies most along the coefficient lines (the moment's
-      // bounds are widest there), measured by Q's and W's largest neighbour differences.
-      auto variation = [](const Bern<T>& p, int l) {
-        std::size_t stride = 1;
-        for (int k = 0; k < l; ++k) stride *= p.deg[k] + 1;
-        T v(0);
-        for (std::size_t j = 0; j < p.c.size(); ++j) {
-          if ((j / stride) % (p.deg[l] + 1) == static_cast<std::size_t>(p.deg[l])) continue;
-          const T d = p.c[j + stride] - p.c[j];
-          if (v < (d < T(0) ? T(-d) : d)) v = d < T(0) ? T(-d) : d;
-        }
-        return v;
-      };
+      // Across the direction where Q and W vary most (the moment's bounds are widest there).
       int dir = 0;
       T best(-1);
       for (int d = 0; d < 3; ++d) {
-        T v = b.Q.deg[d] > 0 ? variation(b.Q, d) : T(0);
-        if (b.W.deg[d] > 0) v += variation(b.W, d);
+        T v = b.Q.deg[d] > 0 ? coefficient_variation(b.Q, d) : T(0);
+        if (b.W.deg[d] > 0) v += coefficient_variation(b.W, d);
         if (best < v) {
           best = v;
           dir = d;
@@ -412,18 +400,8 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     // A mixed box holds between none and all of its volume: [min(0, lo), max(0, hi)] with the plain
     // bounds vol min N / max W^4 .. vol max N / min W^4 (no product: these boxes are many and small).
     for (const auto& b : todo) {
-      T nmin = b.N.c.front(), nmax = nmin, wmin = b.W.c.front(), wmax = wmin;
-      for (const auto& x : b.N.c) {
-        if (x < nmin) nmin = x;
-        if (nmax < x) nmax = x;
-      }
-      for (const auto& x : b.W.c) {
-        if (x < wmin) wmin = x;
-        if (wmax < x) wmax = x;
-      }
-      const T w4min = wmin * wmin * wmin * wmin, w4max = wmax * wmax * wmax * wmax;
-      const T lo = b.vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
-      const T hi = b.vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
+      T lo, hi;
+      box_integral_bounds(b.N, b.W, b.vol, lo, hi, 4, true);
       v.lower += std::min(T(0), lo);
       v.upper += std::max(T(0), hi);
     }
