@@ -87,7 +87,7 @@ Region<double> region_to_double(const Region<Rational>& R) {
   Region<double> out;
   out.kind = static_cast<Region<double>::Kind>(R.kind);
   out.label = R.label;
-  for (const auto& [e, c] : R.g.terms) out.g.terms[e] = to_double(c);
+  for (const auto& [e, c] : R.g.terms) out.g.terms[e] = round_checked<double>(c, "region" + (R.label.empty() ? std::string() : " (" + R.label + ")"));
   for (const auto& p : R.parts) out.parts.push_back(region_to_double(p));
   return out;
 }
@@ -106,7 +106,7 @@ TrimmedModel<double> trimmed_to_double(const TrimmedModel<Rational>& M) {
     x.inherited = c.inherited;
     x.status = c.status;
     for (const auto& [n, v] : c.constants)
-      for (const auto& y : v) x.constants[n].push_back(to_double(y));
+      for (const auto& y : v) x.constants[n].push_back(round_checked<double>(y, "constants." + n));
     out.cells.push_back(std::move(x));
   }
   return out;

@@ -299,3 +299,12 @@ TEST_CASE("vrep trimmed: centroids, exact for polynomial cells, certified for cu
   CHECK(R(4, 3) < hi);
   CHECK_THROWS_AS(trimmed_moment(C.trivariates[0], C.cells[0].trim, 3, 64), ValidationError);  // no coordinate 3
 }
+
+TEST_CASE("vrep trimmed: a region beyond double's range is refused when rounded, not turned into infinity") {
+  Poly3<R> g;
+  g.terms[{1, 0, 0}] = R(1);
+  R big(1);
+  for (int i = 0; i < 1100; ++i) big *= R(2);  // 2^1100 > DBL_MAX
+  g.terms[{0, 0, 0}] = -big;
+  CHECK_THROWS_AS(region_to_double(region_leaf(g)), Error);
+}
