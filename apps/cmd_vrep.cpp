@@ -274,6 +274,8 @@ Commands add_vrep(CLI::App& app) {
     std::string op, a, b, eps, blend = "sum-clipped", at, trim = "auto";
     std::size_t boxes = 256;
     bool centroid = false;
+    std::string field;
+    int component = 0;
   };
   auto bo = std::make_shared<BooleanOptions>();
   bo->boxes = 4096;
@@ -299,6 +301,8 @@ Commands add_vrep(CLI::App& app) {
   vol->add_option("--boxes", volo->boxes, "rational cells: the subdivision budget per cell (the enclosure's gap shrinks as 1/boxes)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  vol->add_option("--field", volo->field, "also the integral of this attribute field over every cell that has it (F det J over the trimmed domain)");
+  vol->add_option("--component", volo->component, "the field's component to integrate (0-based)")->check(CLI::Range(0, 1 << 20))->capture_default_str();
   auto clo = std::make_shared<BooleanOptions>();
   auto* cls = v->add_subcommand("classify", "which cells contain a point (exact: planar cells; otherwise the model's exact region)");
   cls->add_option("file", clo->a, "a V-model document")->required();
@@ -456,7 +460,15 @@ Commands add_vrep(CLI::App& app) {
                  d.push_back(round_spline<double>(M.trivariates[M.cells[c].trivariates.front()], field + ".cells[" + std::to_string(c) + "]"));
                  names.push_back(M.cells[c].name);
                }
-               return glue(d, eps, names, ctx.limits);
+               auto G = glue(d, eps, names, ctx.limits);
+               // The attributes rounded as well (a value beyond double's range is a typed error).
+               for (std::size_t c = 0; c < M.cells.size(); ++c) {
+                 const std::string w = field + ".cells[" + std::to_string(c) + "].attributes.";
+                 for (const auto& [n, v] : M.cells[c].attributes.constants)
+                   for (const auto& y : v) G.cells[c].attributes.constants[n].push_back(round_checked<double>(y, w + n));
+                 for (const auto& [n, F] : M.cells[c].attributes.fields) G.cells[c].attributes.fields.emplace(n, round_spline<double>(F, w + n));
+               }
+               return G;
              };
              try {
                std::cout << vmodel_to_json(boolean_op(in_double(*A.model, "first"), in_double(*B.model, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
@@ -496,6 +508,54 @@ Commands add_vrep(CLI::App& app) {
                out["lower"] = to_fraction_string(lo);
                out["upper"] = to_fraction_string(hi);
                out["approximately"] = {to_double(lo), to_double(hi)};
+             }
+             if (!volo->field.empty()) {
+               // Per cell that has the field: its integral (exact or a certified enclosure); the
+               // model's sum when every cell has it.
+               Json fc = Json::array();
+               std::vector<std::string> missing;
+               Rational il(0), ih(0);
+               auto add_field = [&](std::size_t c, const std::string& name, const BSpline<Rational>& V, const Region<Rational>& trim,
+                                    const std::map<std::string, BSpline<Rational>>& fields) {
+                 const auto it = fields.find(volo->field);
+                 if (it == fields.end()) {
+                   missing.push_back(name);
+                   return;
+                 }
+                 const auto e = trimmed_field_integral(V, trim, it->second, volo->component, volo->boxes, ctx.limits);
+                 il += e.moment.lower;
+                 ih += e.moment.upper;
+                 Json j{{"cell", c}, {"name", name}};
+                 if (e.moment.lower == e.moment.upper) j["integral"] = to_fraction_string(e.moment.lower);
+                 else {
+                   j["lower"] = to_fraction_string(e.moment.lower);
+                   j["upper"] = to_fraction_string(e.moment.upper);
+                   j["approximately"] = {to_double(e.moment.lower), to_double(e.moment.upper)};
+                 }
+                 fc.push_back(j);
+               };
+               if (O.model)
+                 for (std::size_t c = 0; c < O.model->cells.size(); ++c) {
+                   const auto& cell = O.model->cells[c];
+                   add_field(c, cell.name, O.model->trivariates[cell.trivariates.front()], region_and<Rational>({}), cell.attributes.fields);
+                 }
+               else
+                 for (std::size_t c = 0; c < O.trimmed->cells.size(); ++c) {
+                   const auto& x = O.trimmed->cells[c];
+                   add_field(c, x.name, O.trimmed->trivariates[x.trivariate], x.trim, x.fields);
+                 }
+               if (fc.empty())
+                 throw ValidationError("field", "\"" + volo->field + "\" is on no cell of the model", "give the name of an attribute field of its cells");
+               Json f{{"name", volo->field}, {"component", volo->component}, {"cells", fc}};
+               if (missing.empty()) {
+                 if (il == ih) f["integral"] = to_fraction_string(il);
+                 else {
+                   f["lower"] = to_fraction_string(il);
+                   f["upper"] = to_fraction_string(ih);
+                   f["approximately"] = {to_double(il), to_double(ih)};
+                 }
+               } else f["cells_without"] = missing;
+               out["field"] = f;
              }
              if (volo->centroid) {
                // The model's centroid: per coordinate the enclosure of sum of moments over the

@@ -97,9 +97,9 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
     if (!c.is_object() || !c.contains("trivariate")) throw ValidationError(w, "has no \"trivariate\"", "give {\"trivariate\": {...}, \"trim\": region}");
     for (auto it = c.begin(); it != c.end(); ++it)
       if (it.key() != "name" && it.key() != "category" && it.key() != "status" && it.key() != "trivariate" && it.key() != "trim" &&
-          it.key() != "inherited" && it.key() != "constants")
+          it.key() != "inherited" && it.key() != "constants" && it.key() != "fields" && it.key() != "fields_not_carried")
         throw ValidationError(w + "." + it.key(), "is not a field of a trimmed cell",
-                              "remove it (fields: name, category, status, trivariate, trim, inherited, constants)");
+                              "remove it (fields: name, category, status, trivariate, trim, inherited, constants, fields, fields_not_carried)");
     typename TrimmedModel<Rational>::Cell x;
     x.trivariate = M.trivariates.size();
     M.trivariates.push_back(spline_from_json(c["trivariate"], limits, w + ".trivariate"));
@@ -122,6 +122,23 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
         std::vector<Rational> v;
         for (std::size_t e = 0; e < it.value().size(); ++e) v.push_back(json_number(it.value()[e], w + ".constants." + it.key()));
         x.constants[it.key()] = v;
+      }
+    }
+    if (c.contains("fields")) {
+      const Json& f = c["fields"];
+      if (!f.is_object()) throw ValidationError(w + ".fields", "is not an object", "give {\"NAME\": {trivariate on the cell's domain}}");
+      for (auto it = f.begin(); it != f.end(); ++it) {
+        auto F = spline_from_json(it.value(), limits, w + ".fields." + it.key());
+        require_field_on(M.trivariates[x.trivariate], F, w + ".fields." + it.key(), limits);
+        x.fields.emplace(it.key(), std::move(F));
+      }
+    }
+    if (c.contains("fields_not_carried")) {
+      const Json& f = c["fields_not_carried"];
+      if (!f.is_array()) throw ValidationError(w + ".fields_not_carried", "is not a list", "give a list of field names");
+      for (const auto& e : f) {
+        if (!e.is_string()) throw ValidationError(w + ".fields_not_carried", "has an entry that is not a name", "give a list of field names");
+        x.not_carried.push_back(e.get<std::string>());
       }
     }
     M.cells.push_back(std::move(x));
@@ -154,6 +171,12 @@ Json trimmed_to_json(const TrimmedModel<T>& M) {
       j["inherited"] = list;
     }
     if (!c.constants.empty()) j["constants"] = constants_to_json(c.constants);
+    if (!c.fields.empty()) {
+      Json f = Json::object();
+      for (const auto& [n, F] : c.fields) f[n] = spline_to_json(F);
+      j["fields"] = f;
+    }
+    if (!c.not_carried.empty()) j["fields_not_carried"] = c.not_carried;
     cells.push_back(j);
   }
   Json out{{"type", "trimmed_vmodel"},

@@ -42,8 +42,9 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
     if (!c.is_object() || !c.contains("trivariate"))
       throw ValidationError(w, "has no \"trivariate\"", "give {\"name\": ..., \"trivariate\": {spline document}}");
     for (auto it = c.begin(); it != c.end(); ++it)
-      if (it.key() != "name" && it.key() != "trivariate" && it.key() != "attributes" && it.key() != "inherited")
-        throw ValidationError(w + "." + it.key(), "is not a field of a cell", "remove it (fields: name, trivariate, inherited, attributes)");
+      if (it.key() != "name" && it.key() != "trivariate" && it.key() != "attributes" && it.key() != "inherited" && it.key() != "fields_not_carried")
+        throw ValidationError(w + "." + it.key(), "is not a field of a cell",
+                              "remove it (fields: name, trivariate, inherited, attributes, fields_not_carried)");
     out.trivariates.push_back(spline_from_json(c["trivariate"], limits, w + ".trivariate"));
     std::vector<std::size_t> inh;
     if (c.contains("inherited")) {
@@ -116,6 +117,14 @@ void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limit
     if (!doc.is_object() || !doc.contains("type") || doc["type"] != "vmodel") continue;
     for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
       const Json& c = doc["cells"][i];
+      if (c.contains("fields_not_carried")) {
+        const std::string wn = "vmodel.cells[" + std::to_string(i) + "].fields_not_carried";
+        if (!c["fields_not_carried"].is_array()) throw ValidationError(wn, "is not a list", "give a list of field names");
+        for (const auto& n : c["fields_not_carried"]) {
+          if (!n.is_string()) throw ValidationError(wn, "has an entry that is not a name", "give a list of field names");
+          M.cells[first + i].attributes.not_carried.push_back(n.get<std::string>());
+        }
+      }
       if (!c.contains("attributes")) continue;
       const std::string w = "vmodel.cells[" + std::to_string(i) + "].attributes";
       if (!c["attributes"].is_object()) throw ValidationError(w, "is not an object", "give {\"NAME\": [numbers] | {spline}}");
@@ -186,7 +195,8 @@ Json vmodel_to_json(const VModel<T>& M) {
     if (!c.attributes.empty()) {
       Json a = consts(c.attributes.constants);
       for (const auto& [n, F] : c.attributes.fields) a[n] = spline_to_json(F);
-      j["attributes"] = a;
+      if (!a.empty()) j["attributes"] = a;
+      if (!c.attributes.not_carried.empty()) j["fields_not_carried"] = c.attributes.not_carried;
     }
     cells.push_back(j);
   }

@@ -2,13 +2,17 @@
 #pragma once
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <queue>
 #include <set>
 
+#include "compose/affine.hpp"
+#include "compose/compose.hpp"
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/integrate.hpp"
+#include "spline/knots.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
 #include "vrep/trivariate_impl.hpp"  // vrep_detail::greville
@@ -294,6 +298,97 @@ void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend
   }
 }
 
+/// F restricted to the box [lo, hi] of its domain (exact splits, the parametrization kept).
+template <class T>
+BSpline<T> restrict_to_box(BSpline<T> F, const std::array<T, 3>& lo, const std::array<T, 3>& hi, const Limits& limits) {
+  for (int d = 0; d < 3; ++d) {
+    if (F.domain_lo(d) < lo[d]) F = split_at(F, d, lo[d], limits).second;
+    if (hi[d] < F.domain_hi(d)) F = split_at(F, d, hi[d], limits).first;
+  }
+  return F;
+}
+
+/// The inverse of an affine cell: for a polynomial trivariate with one Bezier piece whose three
+/// coordinates are affine in the parameters, x = alpha + B s, the map x -> B^-1 (x - alpha).
+template <class T>
+struct AffineInverse {
+  std::array<T, 3> alpha;
+  std::array<std::array<T, 3>, 3> inv;  // B^-1
+};
+template <class T>
+std::optional<AffineInverse<T>> affine_inverse(const BSpline<T>& V) {
+  if (V.is_rational() || V.dim() != 3 || V.q < 3) return std::nullopt;
+  for (int d = 0; d < 3; ++d)
+    if (breakpoints(V.knots[d], V.degrees[d], V.count(d)).size() != 2 || !is_clamped(V.knots[d], V.degrees[d], V.count(d))) return std::nullopt;
+  std::array<std::array<T, 3>, 3> B;
+  AffineInverse<T> r;
+  for (int c = 0; c < 3; ++c) {
+    const auto f = affine_form(V, c);
+    if (!f) return std::nullopt;
+    r.alpha[c] = f->alpha;
+    for (int l = 0; l < 3; ++l) B[c][l] = f->beta[l];
+  }
+  const T det = B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1]) - B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0]) +
+                B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0]);
+  if (det == T(0)) return std::nullopt;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      // inv[i][j] = cofactor(j, i) / det
+      const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+      r.inv[i][j] = (B[r0][c0] * B[r1][c1] - B[r0][c1] * B[r1][c0]) / det;
+    }
+  return r;
+}
+
+/// The field F of an affine cell b pulled back onto the parameters of a piece P lying in b:
+/// F o (T_b^-1 o P), exact (T_b^-1 o P has P's weights and the control points B^-1 (P_i - alpha);
+/// the composition of papers/000). Nothing when a Bezier piece of the map crosses a knot line of F
+/// (that would need the trimmed composition, Algorithm 1).
+template <class T>
+std::optional<BSpline<T>> pull_back_field(const BSpline<T>& F, const AffineInverse<T>& Ainv, const BSpline<T>& P, const Limits& limits) {
+  BSpline<T> phi = P;
+  phi.q = 3;
+  phi.points.assign(3 * P.size(), T(0));
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    T x[3];
+    for (int c = 0; c < 3; ++c) x[c] = P.points[i * P.q + c] - Ainv.alpha[c];
+    for (int r = 0; r < 3; ++r) phi.points[i * 3 + r] = Ainv.inv[r][0] * x[0] + Ainv.inv[r][1] * x[1] + Ainv.inv[r][2] * x[2];
+  }
+  try {
+    return compose(F, phi, CompositionOptions{}, limits);
+  } catch (const SizeLimitError&) {
+    throw;
+  } catch (const DomainError&) {
+    return std::nullopt;
+  }
+}
+
+/// Fields of a source cell onto a cell: `into` holds the cell's own (restricted) fields; `from`
+/// are the other model's, already on the cell's parameters. Same names are blended like the
+/// constants: first keeps the cell's own, sum adds them (one spline: make_compatible), and the
+/// clipped sum is not a spline (ValidationError naming the field).
+template <class T>
+void merge_fields(std::map<std::string, BSpline<T>>& into, std::map<std::string, BSpline<T>> from, Blend blend, const Limits& limits) {
+  for (auto& [name, F] : from) {
+    auto it = into.find(name);
+    if (it == into.end()) {
+      into.emplace(name, std::move(F));
+      continue;
+    }
+    if (blend == Blend::first) continue;
+    if (blend == Blend::sum_clipped)
+      throw ValidationError("attributes." + name, "is a field in both models: its clipped sum min(1, F1 + F2) is not a spline",
+                            "give --blend sum (the fields added) or --blend first (the first model's)");
+    if (it->second.q != F.q)
+      throw ValidationError("attributes." + name, "has fields of different lengths in the two models", "give fields with the same number of components");
+    auto [a, b] = make_compatible(it->second, F, limits);
+    if (a.is_rational() || b.is_rational())
+      throw DomainError("attributes." + name, "is a rational field in both models: their sum is not built", "give polynomial fields or --blend first");
+    for (std::size_t i = 0; i < a.points.size(); ++i) a.points[i] += b.points[i];
+    it->second = std::move(a);
+  }
+}
+
 }  // namespace vrep_detail
 
 namespace vrep_detail {
@@ -554,6 +649,18 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     };
     for (std::size_t k = 0; k < M.cells.size(); ++k) {
       auto& cell = M.cells[k];
+      const BSpline<T> piece = M.trivariates[cell.trivariates.front()];
+      std::array<T, 3> lo, hi;
+      for (int d = 0; d < 3; ++d) {
+        lo[d] = piece.domain_lo(d);
+        hi[d] = piece.domain_hi(d);
+      }
+      // Fields: the piece's own model's restricted to the piece (the same parameters), the other
+      // model's pulled back where its cell is affine (else named in not_carried).
+      const int own = origin[k].first;
+      const VModel<T>& O = own == 0 ? A : B;
+      for (const auto& [name, F] : O.cells[origin[k].second].attributes.fields)
+        cell.attributes.fields.emplace(name, restrict_to_box(F, lo, hi, limits));
       if (sources[k].a) {
         for (std::size_t t : A.cells[*sources[k].a].trivariates) cell.trivariates.push_back(source_index(0, t));
         merge_constants(cell.attributes, A.cells[*sources[k].a].attributes, blend);
@@ -561,6 +668,21 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       if (sources[k].b) {
         for (std::size_t t : B.cells[*sources[k].b].trivariates) cell.trivariates.push_back(source_index(1, t));
         merge_constants(cell.attributes, B.cells[*sources[k].b].attributes, blend);
+      }
+      if (sources[k].a && sources[k].b) {
+        const VModel<T>& X = own == 0 ? B : A;
+        const std::size_t xc = own == 0 ? *sources[k].b : *sources[k].a;
+        const auto& fields = X.cells[xc].attributes.fields;
+        if (fields.empty()) continue;
+        const auto inv = affine_inverse(X.trivariates[X.cells[xc].trivariates.front()]);
+        std::map<std::string, BSpline<T>> pulled;
+        for (const auto& [name, F] : fields) {
+          std::optional<BSpline<T>> G;
+          if (inv) G = pull_back_field(F, *inv, piece, limits);
+          if (G) pulled.emplace(name, std::move(*G));
+          else cell.attributes.not_carried.push_back(name);
+        }
+        merge_fields(cell.attributes.fields, std::move(pulled), blend, limits);
       }
     }
     return M;

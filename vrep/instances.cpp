@@ -107,6 +107,8 @@ TrimmedModel<double> trimmed_to_double(const TrimmedModel<Rational>& M) {
     x.status = c.status;
     for (const auto& [n, v] : c.constants)
       for (const auto& y : v) x.constants[n].push_back(round_checked<double>(y, "constants." + n));
+    for (const auto& [n, F] : c.fields) x.fields.emplace(n, round_spline<double>(F, "fields." + n));
+    x.not_carried = c.not_carried;
     out.cells.push_back(std::move(x));
   }
   return out;
@@ -136,6 +138,7 @@ const char* to_string(Regularity r) {
   template std::size_t surface_of_face(const VModel<T>&, std::size_t, int, int);                                     \
   template std::size_t curve_of_edge(const VModel<T>&, std::size_t, int, const std::array<int, 3>&);                 \
   template void attach_field(VModel<T>&, std::size_t, const std::string&, BSpline<T>, const Limits&);                \
+  template void require_field_on(const BSpline<T>&, const BSpline<T>&, const std::string&, const Limits&); \
   template CellValue<T> evaluate_cell(const VModel<T>&, std::size_t, const std::vector<T>&);                        \
   template BSpline<T> edge_curve(const BSpline<T>&, int, const std::array<int, 3>&);                                 \
   template bool same_curve(const BSpline<T>&, const BSpline<T>&, const T&, bool, const Limits&);                     \
@@ -180,6 +183,7 @@ const char* to_string(Regularity r) {
                                            const T&, const Limits&);                                                 \
   template VolumeEnclosure<T> trimmed_volume(const BSpline<T>&, const Region<T>&, std::size_t, const Limits&);       \
   template MomentEnclosure<T> trimmed_moment(const BSpline<T>&, const Region<T>&, int, std::size_t, const Limits&);  \
+  template MomentEnclosure<T> trimmed_field_integral(const BSpline<T>&, const Region<T>&, const BSpline<T>&, int, std::size_t, const Limits&); \
   template std::vector<std::string> check_region(const VModel<T>&, const Region<T>&, const TrimOptions&, const Limits&);
 
 SPLINEX_INSTANTIATE_TRIMMED(Rational)

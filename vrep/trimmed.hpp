@@ -121,6 +121,8 @@ struct TrimmedModel {
     std::vector<std::size_t> inherited;  // further trivariates that contain it (indices into `trivariates`)
     Truth status = Truth::in;            // in: whole trivariate; mixed: cut (certified)
     std::map<std::string, std::vector<T>> constants;
+    std::map<std::string, BSpline<T>> fields;  // attribute trivariates on its trivariate's parameters
+    std::vector<std::string> not_carried;       // fields of the other model's cells it meets, not taken over
   };
   std::vector<BSpline<T>> trivariates;
   std::vector<Cell> cells;
@@ -172,6 +174,15 @@ struct MomentEnclosure {
 template <class T>
 MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes = 4096,
                                   const Limits& limits = {});
+
+/// The volume and the integral of a field's component over a trimmed cell (the integrand F det J
+/// over the trimmed parameter region; papers/002 Section 3.1.2's attribute fields), certified as
+/// trimmed_moment is: F and the trivariate are refined to common breakpoints, Q = F N over W^4;
+/// exact for a polynomial cell and field where the cell is decided whole. The field must be a
+/// polynomial trivariate on the cell's parameter domain (rational: DomainError).
+template <class T>
+MomentEnclosure<T> trimmed_field_integral(const BSpline<T>& V, const Region<T>& trim, const BSpline<T>& field, int component = 0,
+                                          std::size_t max_boxes = 4096, const Limits& limits = {});
 
 /// That the model lies in its region: every cell's trivariate classifies `whole` against it (the
 /// cells of a primitive against the primitive's region), and every boundary face lies on the

@@ -3,10 +3,14 @@
 #pragma once
 #include <algorithm>
 #include <deque>
+#include <iterator>
+#include <optional>
 #include <queue>
 
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
+#include "spline/insert.hpp"
+#include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
 #include "vrep/trimmed.hpp"
 
@@ -185,10 +189,47 @@ struct TrimRun {
   VolumeEnclosure<T> volume, moment;  // moment: of the point coordinate `coordinate` (if >= 0)
 };
 
+/// V and a field on its domain refined to the same breakpoints (each missing breakpoint inserted
+/// once; bezier_form raises the multiplicities), so that their Bezier pieces correspond one to one.
 template <class T>
-TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits,
-                    int coordinate = -1) {
-  require_jacobian_input(V, limits);
+std::pair<BSpline<T>, BSpline<T>> common_breakpoints(const BSpline<T>& V, const BSpline<T>& F, const Limits& limits) {
+  BSpline<T> a = V, b = F;
+  for (int d = 0; d < 3; ++d) {
+    const auto ba = breakpoints(V.knots[d], V.degrees[d], V.count(d)), bb = breakpoints(F.knots[d], F.degrees[d], F.count(d));
+    std::vector<T> to_a, to_b;
+    std::set_difference(bb.begin(), bb.end(), ba.begin(), ba.end(), std::back_inserter(to_a));
+    std::set_difference(ba.begin(), ba.end(), bb.begin(), bb.end(), std::back_inserter(to_b));
+    if (!to_a.empty()) a = refine_knots(a, d, to_a, limits);
+    if (!to_b.empty()) b = refine_knots(b, d, to_b, limits);
+  }
+  return {std::move(a), std::move(b)};
+}
+
+/// The checks of an integrand field against its cell's trivariate (`name` for messages).
+template <class T>
+void require_field(const BSpline<T>& V, const BSpline<T>& F, int component, const std::string& name, const Limits& limits) {
+  require_field_on(V, F, name, limits);
+  if (component < 0 || component >= F.q)
+    throw ValidationError(name + ".component", "is not a component of the field (it has " + std::to_string(F.q) + ")",
+                          "give 0 <= component < " + std::to_string(F.q));
+  if (F.is_rational())
+    throw DomainError(name, "is rational: the integrand F N / (w W^4) has a second denominator and its enclosure is not built",
+                      "give a polynomial field");
+}
+
+template <class T>
+TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits,
+                    int coordinate = -1, const BSpline<T>* field = nullptr) {
+  require_jacobian_input(V0, limits);
+  // With a field the integrand is its component `coordinate` times det J = N / W^4 (power 4);
+  // without one, the point coordinate X_c / W times det J (power 5).
+  std::optional<std::pair<BSpline<T>, BSpline<T>>> refined;
+  if (field) {
+    require_field(V0, *field, coordinate, "field", limits);
+    refined = common_breakpoints(V0, *field, limits);
+  }
+  const BSpline<T>& V = refined ? refined->first : V0;
+  const int power = field ? 4 : 5;
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
   if (V.is_rational())
     for (const auto& w : V.weights)
@@ -213,7 +254,7 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
   for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
   checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");
   checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
-  if (coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
+  if (!field && coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
   struct Box {
     std::vector<Bern<T>> G;
     Bern<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
@@ -266,6 +307,8 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     c[1].lo[dir] = mid;
   };
   const BezierForm<T> F = bezier_form(V, limits);
+  std::optional<BezierForm<T>> FF;
+  if (field && want_volume) FF = bezier_form(refined->second, limits);
   for (std::size_t k = 0; k < F.size(); ++k) {
     const auto pc = F.piece(k);
     Box b;
@@ -273,7 +316,8 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     if (want_volume) {
       b.N = jacobian_numerator(pc.spline);
       b.W = homogeneous(pc.spline, 0);
-      if (coordinate >= 0) b.Q = mul(homogeneous(pc.spline, coordinate + 1), b.N);
+      if (FF) b.Q = mul(homogeneous(FF->piece(k).spline, coordinate + 1), b.N);
+      else if (coordinate >= 0) b.Q = mul(homogeneous(pc.spline, coordinate + 1), b.N);
     }
     for (int d = 0; d < 3; ++d) {
       b.lo[d] = pc.box[d].first;
@@ -301,7 +345,7 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
     }
   }
   // The moment's bounds on a box: exact for a polynomial cell's in-box (the mean of Q's
-  // coefficients), else the bounds of Q / W^5 (Jensen / chord where Q has one sign, the extreme
+  // coefficients), else the bounds of Q / W^power (Jensen / chord where Q has one sign, the extreme
   // coefficients' ratios otherwise); a mixed box holds between none and all of it.
   auto moment_bounds = [&](const Box& b, T& lo, T& hi) {
     if (!V.is_rational() && b.truth == Truth::in) {
@@ -310,9 +354,9 @@ TrimRun<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_
       lo = hi = b.vol * sum / T(static_cast<long>(b.Q.c.size()));
       return;
     }
-    // Jensen / chord of W^-5 with the weight |Q| where Q has one sign (box_integral_bounds), the
+    // Jensen / chord of W^-power with the weight |Q| where Q has one sign (box_integral_bounds), the
     // plain ratio of extreme coefficients otherwise.
-    box_integral_bounds(b.Q, b.W, b.vol, lo, hi, 5);
+    box_integral_bounds(b.Q, b.W, b.vol, lo, hi, power);
     if (b.truth == Truth::mixed) {
       lo = std::min(T(0), lo);
       hi = std::max(T(0), hi);
@@ -599,6 +643,8 @@ TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region) {
     x.name = c.name;
     x.inherited.assign(c.trivariates.begin() + 1, c.trivariates.end());
     x.constants = c.attributes.constants;
+    x.fields = c.attributes.fields;
+    x.not_carried = c.attributes.not_carried;
     out.cells.push_back(std::move(x));
   }
   return out;
@@ -619,6 +665,13 @@ template <class T>
 MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes, const Limits& limits) {
   if (coordinate < 0) throw ValidationError("coordinate", "is negative", "give 0 <= coordinate < q");
   const auto r = vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits, coordinate);
+  return {r.volume, r.moment};
+}
+
+template <class T>
+MomentEnclosure<T> trimmed_field_integral(const BSpline<T>& V, const Region<T>& trim, const BSpline<T>& field, int component,
+                                          std::size_t max_boxes, const Limits& limits) {
+  const auto r = vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits, component, &field);
   return {r.volume, r.moment};
 }
 
@@ -670,6 +723,9 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
       x.category = op == BooleanOp::subtract && !cell.category.empty() ? cell.category : category;
       for (std::size_t t : cell.inherited) x.inherited.push_back(from_a ? t : tb[t]);
       x.constants = cell.constants;
+      // Trimming keeps the trivariate and its parameters: the cell's fields stay as they are.
+      x.fields = cell.fields;
+      x.not_carried = cell.not_carried;
       x.name = cell.name.empty() ? (from_a ? "A" : "B") + std::to_string(c) : cell.name;
       if (category == "both") {
         const auto& mine = from_a ? boundsA[c] : boundsB[c];
@@ -683,6 +739,10 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
           from.constants = other.cells[o].constants;
           merge_constants(into, from, blend);
           x.constants = std::move(into.constants);
+          // The other cell's fields live on its trivariate's parameters; on this cell they would
+          // need that trivariate's inverse (only the part inside it is known by the region).
+          for (const auto& [n, F] : other.cells[o].fields)
+            if (std::find(x.not_carried.begin(), x.not_carried.end(), n) == x.not_carried.end()) x.not_carried.push_back(n);
           x.name += "*" + (other.cells[o].name.empty() ? std::string(from_a ? "B" : "A") + std::to_string(o) : other.cells[o].name);
         }
       }

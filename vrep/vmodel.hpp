@@ -40,7 +40,10 @@ template <class T>
 struct Attributes {
   std::map<std::string, std::vector<T>> constants;
   std::map<std::string, BSpline<T>> fields;
-  bool empty() const { return constants.empty() && fields.empty(); }
+  /// After a Boolean: the other model's fields a cell in both models could not take over exactly
+  /// (its source cell is not affine, or the pull-back crosses a knot line of the field).
+  std::vector<std::string> not_carried;
+  bool empty() const { return constants.empty() && fields.empty() && not_carried.empty(); }
 };
 
 template <class T>
@@ -115,6 +118,9 @@ std::size_t curve_of_edge(const VModel<T>& M, std::size_t cell, int along, const
 /// cell's trivariate's (ValidationError otherwise).
 template <class T>
 void attach_field(VModel<T>& M, std::size_t cell, const std::string& name, BSpline<T> field, const Limits& limits = {});
+/// That F is a valid trivariate on V's parameter domain (ValidationError naming `where` otherwise).
+template <class T>
+void require_field_on(const BSpline<T>& V, const BSpline<T>& F, const std::string& where, const Limits& limits = {});
 
 /// Geometry and attributes of a cell at a parameter point, exactly in exact arithmetic: the
 /// point (first three coordinates), the attribute coordinates (the rest), every field's value and

@@ -276,14 +276,18 @@ std::size_t curve_of_edge(const VModel<T>& M, std::size_t cell, int along, const
 template <class T>
 void attach_field(VModel<T>& M, std::size_t cell, const std::string& name, BSpline<T> field, const Limits& limits) {
   if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0.." + std::to_string(M.cells.size() - 1));
-  validate(field, limits);
-  const auto& V = M.trivariates[M.cells[cell].trivariates.front()];
-  if (field.dim() != 3) throw ValidationError("attributes." + name, "is not a trivariate", "give an attribute trivariate on the cell's domain");
-  for (int d = 0; d < 3; ++d)
-    if (!(field.domain_lo(d) == V.domain_lo(d)) || !(field.domain_hi(d) == V.domain_hi(d)))
-      throw ValidationError("attributes." + name + ".knots[" + std::to_string(d) + "]", "spans another domain than the cell's trivariate",
-                            "give the field on the cell's parameter domain (it shares the cell's parameters)");
+  require_field_on(M.trivariates[M.cells[cell].trivariates.front()], field, "attributes." + name, limits);
   M.cells[cell].attributes.fields[name] = std::move(field);
+}
+
+template <class T>
+void require_field_on(const BSpline<T>& V, const BSpline<T>& F, const std::string& where, const Limits& limits) {
+  validate(F, limits);
+  if (F.dim() != 3) throw ValidationError(where, "is not a trivariate", "give an attribute trivariate on the cell's domain");
+  for (int d = 0; d < 3; ++d)
+    if (!(F.domain_lo(d) == V.domain_lo(d)) || !(F.domain_hi(d) == V.domain_hi(d)))
+      throw ValidationError(where + ".knots[" + std::to_string(d) + "]", "spans another domain than the cell's trivariate",
+                            "give the field on the cell's parameter domain (it shares the cell's parameters)");
 }
 
 template <class T>

@@ -474,3 +474,83 @@ TEST_CASE("vrep boolean: hostile inputs give a typed error or a valid model") {
   CHECK(U.cells.size() == 3);
   attempt(A, B);
 }
+
+namespace {
+
+// g(x) = a.x + d as a field on a polynomial trivariate: control values g(P_i), exact by affine
+// invariance, so the field equals g at every point of the cell (the oracle below).
+BSpline<R> affine_field(const BSpline<R>& V, const std::array<R, 3>& a, const R& d) {
+  BSpline<R> F = V;
+  F.q = 1;
+  F.points.clear();
+  for (std::size_t i = 0; i < V.size(); ++i) F.points.push_back(a[0] * V.points[i * V.q] + a[1] * V.points[i * V.q + 1] + a[2] * V.points[i * V.q + 2] + d);
+  return F;
+}
+
+// Every cell's field `name` against the function of position `expect(category, x)` at the
+// parameter corners and centre of the cell.
+template <class F>
+void check_field(const VModel<R>& M, const std::string& name, F&& expect) {
+  for (std::size_t c = 0; c < M.cells.size(); ++c) {
+    const auto& V = M.trivariates[M.cells[c].trivariates.front()];
+    REQUIRE(M.cells[c].attributes.fields.count(name) == 1);
+    const auto& G = M.cells[c].attributes.fields.at(name);
+    for (int s = 0; s < 9; ++s) {
+      std::vector<R> u(3);
+      for (int d = 0; d < 3; ++d) u[d] = s == 8 ? (V.domain_lo(d) + V.domain_hi(d)) / 2 : ((s >> d) & 1 ? V.domain_hi(d) : V.domain_lo(d));
+      const auto x = evaluate(V, u);
+      INFO(M.cells[c].name << " at " << s);
+      CHECK(evaluate(G, u)[0] == expect(M.cells[c].name, x));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("vrep boolean: attribute fields through Booleans, restricted and pulled back exactly") {
+  auto A = box({0, 0, 0}, {2, 1, 1});
+  auto B = box({1, 0, 0}, {3, 2, 1});
+  attach_field(A, 0, "f", affine_field(A.trivariates[0], {R(1), R(0), R(0)}, R(0)));       // f = x on A
+  attach_field(B, 0, "f", affine_field(B.trivariates[0], {R(2), R(1), R(0)}, R(1)));       // f = 2x + y + 1 on B
+  attach_field(B, 0, "g", affine_field(B.trivariates[0], {R(0), R(0), R(1)}, R(-1, 3)));  // g = z - 1/3 on B
+  const auto fa = [](const std::vector<R>& x) { return x[0]; };
+  const auto fb = [](const std::vector<R>& x) { return 2 * x[0] + x[1] + 1; };
+  auto is_both = [](const std::string& n) { return n.find('*') != std::string::npos; };
+  // Union, summed: A only x, B only 2x + y + 1, both 3x + y + 1; g only where B is.
+  const auto U = boolean_op(A, B, BooleanOp::unite, R(0), Blend::sum);
+  check_field(U, "f", [&](const std::string& n, const std::vector<R>& x) {
+    return is_both(n) ? fa(x) + fb(x) : n[0] == 'A' ? fa(x) : fb(x);
+  });
+  for (const auto& c : U.cells) {
+    CHECK(c.attributes.not_carried.empty());
+    CHECK(c.attributes.fields.count("g") == (c.name[0] == 'B' || is_both(c.name) ? 1u : 0u));
+  }
+  // First: the first model's field where both are.
+  const auto F = boolean_op(A, B, BooleanOp::intersect, R(0), Blend::first);
+  check_field(F, "f", [&](const std::string&, const std::vector<R>& x) { return fa(x); });
+  check_field(F, "g", [&](const std::string&, const std::vector<R>& x) { return x[2] - R(1, 3); });
+  // The clipped sum of two fields is no spline: refused, naming the field.
+  CHECK_THROWS_AS(boolean_op(A, B, BooleanOp::unite, R(0), Blend::sum_clipped), ValidationError);
+  // Subtraction keeps A's field restricted to the pieces.
+  const auto S = boolean_op(A, B, BooleanOp::subtract);
+  check_field(S, "f", [&](const std::string&, const std::vector<R>& x) { return fa(x); });
+  // B with a parametrization that is not affine (degree 2 along z with an uneven middle layer, z
+  // = 0, 1/3, 1): its field cannot be pulled back as a spline, and the cells in both say so. (In
+  // the intersection only A's cells are cut; a union would need B's pieces glued to A's on faces
+  // parametrized differently, which gluing refuses.)
+  auto Bn = B;
+  {
+    auto V = elevate_degree(B.trivariates[0], 2, 1);
+    for (std::size_t i = 0; i < V.size(); ++i)
+      if (i / 4 == 1) V.points[i * V.q + 2] = R(1, 3);
+    Bn = glue(std::vector<BSpline<R>>{V});
+    attach_field(Bn, 0, "f", affine_field(V, {R(2), R(1), R(0)}, R(1)));
+  }
+  const auto N = boolean_op(A, Bn, BooleanOp::intersect, R(0), Blend::sum);
+  REQUIRE(!N.cells.empty());
+  check_field(N, "f", [&](const std::string&, const std::vector<R>& x) { return fa(x); });  // its own (A's)
+  for (const auto& c : N.cells) {
+    REQUIRE(c.attributes.not_carried.size() == 1);
+    CHECK(c.attributes.not_carried[0] == "f");
+  }
+}
