@@ -12,6 +12,8 @@
 #include "io/vmodel_io.hpp"
 #include "io/vtk_io.hpp"
 #include "experiments/vrep_figures.hpp"
+#include "experiments/svg_plot.hpp"
+#include "experiments/vrep_ssi.hpp"
 #include <fstream>
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
@@ -350,7 +352,64 @@ Commands add_vrep(CLI::App& app) {
     o.model = std::move(M);
     return o;
   };
-  return {{c, [o](const Context& ctx) {
+  struct SsiCli {
+    std::string a, b, step = "1/16", tolerance = "1e-12", svg, obj;
+    int grid = 48;
+    bool judge = false;
+  };
+  auto so = std::make_shared<SsiCli>();
+  auto* ssi = v->add_subcommand("ssi", "surface-surface intersection in double (seeds + marching), every point judged exactly with --judge");
+  ssi->add_option("first", so->a, "a surface document, or teapot:body|handle|spout|lid")->required();
+  ssi->add_option("second", so->b, "a surface document, or teapot:body|handle|spout|lid")->required();
+  ssi->add_option("--step", so->step, "the marching chord in model units")->capture_default_str();
+  ssi->add_option("--tolerance", so->tolerance, "Newton stops at |S1 - S2| <= tolerance")->capture_default_str();
+  ssi->add_option("--grid", so->grid, "seed cells per direction of each surface")->check(CLI::Range(1, 128))->capture_default_str();
+  ssi->add_flag("--judge", so->judge, "judge every point and segment midpoint exactly: gap |S1 - S2| and a Krawczyk certificate of the true intersection nearby");
+  ssi->add_option("--svg", so->svg, "write the branches in both parameter planes to this SVG file");
+  ssi->add_option("--obj", so->obj, "write the branches as 3D polylines to this OBJ file");
+  return {{ssi, [so](const Context& ctx) {
+             auto surface = [&](const std::string& what, const std::string& field) {
+               if (what.rfind("teapot:", 0) == 0) return teapot_surface(what.substr(7));
+               return read_spline(what, field, ctx);
+             };
+             const auto S1 = surface(so->a, "first"), S2 = surface(so->b, "second");
+             SsiOptions opt;
+             opt.step = to_double(parse_number(so->step, "step"));
+             opt.tolerance = to_double(parse_number(so->tolerance, "tolerance"));
+             opt.grid = so->grid;
+             auto progress = [](const std::string& line) { std::cerr << "[vrep ssi] " << line << "\n"; };
+             const auto st = ssi_study(S1, S2, opt, so->judge, progress);
+             Json branches = Json::array();
+             for (const auto& b : st.result.branches) {
+               Json pts = Json::array();
+               for (const auto& x : b.points) pts.push_back({x[0], x[1], x[2], x[3]});
+               branches.push_back({{"closed", b.closed}, {"ends_meet", b.ends_meet}, {"tangential_stop", b.tangential_stop}, {"points", pts}});
+             }
+             Json out{{"branches", branches},
+                      {"candidates", st.result.candidates},
+                      {"seeds", st.result.seeds},
+                      {"newton_failures", st.result.newton_failures},
+                      {"seconds", st.seconds_float},
+                      {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
+             if (so->judge)
+               out["judged"] = {{"vertices", st.vertices},
+                                {"vertices_certified", st.vertices_certified},
+                                {"midpoints", st.midpoints},
+                                {"midpoints_certified", st.midpoints_certified},
+                                {"max_vertex_gap_at_most", st.max_vertex_gap},
+                                {"max_vertex_distance_at_most", st.max_vertex_distance},
+                                {"max_midpoint_gap_at_most", st.max_mid_gap},
+                                {"max_midpoint_distance_at_most", st.max_mid_distance},
+                                {"uncertified", st.uncertified},
+                                {"seconds", st.seconds_judge},
+                                {"meaning", "gap: |S1(u,v) - S2(s,t)| exactly (rounded up); distance: certified bound of |S1(u,v) - q| for the "
+                                            "unique true intersection point q Krawczyk proves in a box about the point (certified points only)"}};
+             if (!so->svg.empty()) write_file_atomically(so->svg, ssi_svg(S1, S2, st.result, so->a, so->b, "vrep ssi: " + so->a + " and " + so->b));
+             if (!so->obj.empty()) write_file_atomically(so->obj, ssi_obj(S1, st.result));
+             std::cout << out.dump() << "\n";
+             return 0;
+           }},
+          {c, [o](const Context& ctx) {
              std::cout << construct(*o, ctx).dump() << "\n";
              return 0;
            }},

@@ -1,0 +1,220 @@
+#include "experiments/vrep_ssi.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+#include "experiments/section.hpp"
+#include "experiments/svg_plot.hpp"
+#include "fixtures/teapot.hpp"
+#include "float/rounding.hpp"
+#include "io/bpt.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex {
+
+namespace {
+
+/// An upper bound in double of sqrt(x) for an exact x >= 0 (rounded up by a relative 2^-50).
+double sqrt_up(const Rational& x) {
+  if (x == 0) return 0;
+  return std::sqrt(to_double(x)) * (1 + std::ldexp(1.0, -50)) + std::numeric_limits<double>::denorm_min();
+}
+
+}  // namespace
+
+SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiOptions& options, bool judge,
+                   void (*progress)(const std::string&)) {
+  using clock = std::chrono::steady_clock;
+  SsiStudy st;
+  const auto d1 = round_spline<double>(S1, "first"), d2 = round_spline<double>(S2, "second");
+  auto t0 = clock::now();
+  st.result = intersect_surfaces(d1, d2, options);
+  st.seconds_float = std::chrono::duration<double>(clock::now() - t0).count();
+  if (!judge) return st;
+  t0 = clock::now();
+  std::map<std::string, std::size_t> why;
+  auto take = [&](const SsiJudgement& j, bool mid) {
+    const double gap = sqrt_up(j.gap2);
+    (mid ? st.midpoints : st.vertices) += 1;
+    (mid ? st.max_mid_gap : st.max_vertex_gap) = std::max(mid ? st.max_mid_gap : st.max_vertex_gap, gap);
+    if (!j.certified) {
+      why[j.why_not] += 1;
+      return;
+    }
+    (mid ? st.midpoints_certified : st.vertices_certified) += 1;
+    double& d = mid ? st.max_mid_distance : st.max_vertex_distance;
+    d = std::max(d, sqrt_up(j.distance2_bound));
+  };
+  for (std::size_t b = 0; b < st.result.branches.size(); ++b) {
+    const auto& P = st.result.branches[b].points;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      const SsiParams& a = P[i > 0 ? i - 1 : i];
+      const SsiParams& c = P[i + 1 < P.size() ? i + 1 : i];
+      SsiParams dir;
+      for (int k = 0; k < 4; ++k) dir[k] = c[k] - a[k];
+      take(judge_point(S1, S2, P[i], dir), false);
+      if (i + 1 < P.size()) {
+        SsiParams m, e;
+        for (int k = 0; k < 4; ++k) {
+          m[k] = (P[i][k] + P[i + 1][k]) / 2;
+          e[k] = P[i + 1][k] - P[i][k];
+        }
+        take(judge_point(S1, S2, m, e), true);
+      }
+    }
+    if (progress) progress("branch " + std::to_string(b + 1) + "/" + std::to_string(st.result.branches.size()) + " judged");
+  }
+  for (const auto& [w, n] : why) st.uncertified.push_back(std::to_string(n) + " x " + w);
+  st.seconds_judge = std::chrono::duration<double>(clock::now() - t0).count();
+  return st;
+}
+
+std::string ssi_svg(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiResult& r, const std::string& name1,
+                    const std::string& name2, const std::string& title) {
+  const int W = 360, H = 360, M = 40;
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * W + 3 * M << "\" height=\"" << H + 2 * M + 20 << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << M << "\" y=\"20\" font-size=\"14\">" << title << "</text>\n";
+  for (int side = 0; side < 2; ++side) {
+    const auto& S = side == 0 ? S1 : S2;
+    const double u0 = to_double(S.domain_lo(0)), u1 = to_double(S.domain_hi(0)), v0 = to_double(S.domain_lo(1)), v1 = to_double(S.domain_hi(1));
+    const int ox = M + side * (W + M), oy = M + 10;
+    s << "<rect x=\"" << ox << "\" y=\"" << oy << "\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#f7f7f7\" stroke=\"black\"/>\n";
+    s << "<text x=\"" << ox << "\" y=\"" << oy + H + 16 << "\">" << (side == 0 ? name1 : name2) << ": (" << (side == 0 ? "u, v" : "s, t")
+      << ") in [" << u0 << ", " << u1 << "] x [" << v0 << ", " << v1 << "]</text>\n";
+    for (std::size_t b = 0; b < r.branches.size(); ++b) {
+      s << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kPalette[b % kPaletteSize] << "\" points=\"";
+      for (const auto& x : r.branches[b].points) {
+        const double px = ox + (x[2 * side] - u0) / (u1 - u0) * W, py = oy + H - (x[2 * side + 1] - v0) / (v1 - v0) * H;
+        s << std::setprecision(6) << px << "," << py << " ";
+      }
+      s << "\"/>\n";
+    }
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string ssi_obj(const BSpline<Rational>& S1, const SsiResult& r) {
+  const auto d1 = round_spline<double>(S1, "first");
+  std::ostringstream s;
+  s << "# splinex vrep ssi: the intersection branches as polylines\n" << std::setprecision(17);
+  std::size_t base = 1;
+  for (const auto& br : r.branches) {
+    for (const auto& x : br.points) {
+      const auto p = evaluate(d1, {x[0], x[1]});
+      s << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+    }
+    s << "l";
+    for (std::size_t i = 0; i < br.points.size(); ++i) s << " " << base + i;
+    if (br.closed) s << " " << base;
+    s << "\n";
+    base += br.points.size();
+  }
+  return s.str();
+}
+
+BSpline<Rational> teapot_surface(const std::string& name) {
+  for (const auto& t : teapot_surfaces(read_bpt(data_path("teapot.bpt"))))
+    if (t.name == name) return t.surface;
+  throw ValidationError("teapot", "has no surface \"" + name + "\"", "give body, handle, spout or lid");
+}
+
+}  // namespace splinex
+
+namespace splinex {
+
+void vrep_ssi_section(ReportContext& ctx) {
+  std::ostringstream md, csv;
+  md << "## Freeform boundaries: the teapot's handle and spout meet its body (float SSI, judged exactly)\n\n"
+        "Boundaries without an implicit form (papers/002 Figures 10 and 14: the teapot's handle and body) are intersected the way a CAD "
+        "kernel does it, in double (`vrep/ssi.hpp`: seeds from a 48 x 48 grid of cells per surface whose bounding boxes overlap, Newton, "
+        "then marching with a chord `step` and a Newton corrector to `tolerance`, on the exact data rounded to double). Every computed "
+        "point and every midpoint of the polylines' segments (the trimming curves between the points, in both parameter planes) is then "
+        "judged against the exact surfaces: the gap |S1(u,v) - S2(s,t)| exactly, and a **certificate**: Krawczyk's test in exact "
+        "rational interval arithmetic proves a unique true intersection point in a box about the point, and the convex hull of the "
+        "restricted surface bounds the distance from the computed point to it. Points whose box leaves a domain (the ends of the "
+        "branches, on the boundary) stay uncertified and are counted. Gaps and distances are upper bounds rounded up. `splinex vrep ssi "
+        "teapot:handle teapot:body --judge` reproduces a row.\n\n";
+  md << "| surfaces | step | branches (loops in space) | vertices certified | max vertex gap | max vertex distance | midpoints certified | max midpoint gap | max midpoint distance | double s | judge s |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  csv << "surfaces,step,tolerance,branches,closed,vertices,vertices_certified,max_vertex_gap,max_vertex_distance,midpoints,midpoints_certified,"
+         "max_midpoint_gap,max_midpoint_distance,seconds_double,seconds_judge\n";
+  const auto body = teapot_surface("body");
+  std::vector<PlotSeries> series;
+  bool ok = true;
+  auto row = [&](const std::string& name, const BSpline<Rational>& S1, double step, double tol, bool table) {
+    SsiOptions o;
+    o.step = step;
+    o.tolerance = tol;
+    const auto st = ssi_study(S1, body, o, true);
+    std::size_t closed = 0;
+    for (const auto& b : st.result.branches) closed += b.closed || b.ends_meet;
+    std::ostringstream r;
+    r << std::setprecision(3);
+    if (table)
+      md << "| " << name << " | 1/" << std::lround(1 / step) << " | " << st.result.branches.size() << " (" << closed << ") | "
+         << st.vertices_certified << "/" << st.vertices << " | " << st.max_vertex_gap << " | " << st.max_vertex_distance << " | "
+         << st.midpoints_certified << "/" << st.midpoints << " | " << st.max_mid_gap << " | " << st.max_mid_distance << " | "
+         << std::setprecision(3) << st.seconds_float << " | " << st.seconds_judge << " |\n";
+    csv << name << "," << step << "," << tol << "," << st.result.branches.size() << "," << closed << "," << st.vertices << "," << st.vertices_certified << ","
+        << st.max_vertex_gap << "," << st.max_vertex_distance << "," << st.midpoints << "," << st.midpoints_certified << "," << st.max_mid_gap << ","
+        << st.max_mid_distance << "," << st.seconds_float << "," << st.seconds_judge << "\n";
+    // Every inner point certified is what this section claims for the finer steps.
+    ok = ok && st.vertices_certified + 2 * st.result.branches.size() >= st.vertices;
+    return st;
+  };
+  const double steps[] = {1.0 / 4, 1.0 / 8, 1.0 / 16, 1.0 / 32, 1.0 / 64, 1.0 / 128};
+  for (const std::string name : {"handle", "spout"}) {
+    const auto S = teapot_surface(name);
+    PlotSeries mid{name + ": certified midpoint distance", {}, kPalette[name == "handle" ? 0 : 1]};
+    PlotSeries gap{name + ": midpoint gap", {}, kPalette[name == "handle" ? 0 : 1], true};
+    for (double h : steps) {
+      ctx.progress("vrep ssi: " + name + " and body, step 1/" + std::to_string(std::lround(1 / h)));
+      const auto st = row(name, S, h, 1e-12, true);
+      // The slope over the steps that trace whole loops (1/16 and finer).
+      if (st.max_mid_distance > 0 && h <= 1.0 / 16) mid.points.push_back({h, st.max_mid_distance});
+      gap.points.push_back({h, st.max_mid_gap});
+      if (name == "handle" && h == 1.0 / 16) {
+        write_file_atomically(ctx.options.out_dir + "/vrep_ssi_handle_body.svg",
+                              ssi_svg(S, body, st.result, "handle", "body", "Teapot handle and body: the intersection branches in both parameter planes (step 1/16)"));
+        write_file_atomically(ctx.options.out_dir + "/vrep_ssi_handle_body.obj", ssi_obj(S, st.result));
+      }
+    }
+    series.push_back(mid);
+    series.push_back(gap);
+  }
+  md << "\nSlopes of the largest certified midpoint distance against the step (log-log, steps 1/16 to 1/128): ";
+  for (std::size_t k = 0; k < series.size(); k += 2) md << (k ? ", " : "") << series[k].label << " " << std::setprecision(3) << loglog_slope(series[k].points);
+  md << " (a chord's deviation from a smooth curve falls as step^2).\n\n";
+  md << "The tolerance of Newton (handle and body, step 1/16): the gaps at the vertices follow it only down to where Newton's "
+        "quadratic convergence overshoots it; the midpoints do not care (the chord dominates).\n\n"
+        "| tolerance | max vertex gap | max vertex distance | max midpoint distance |\n|---|---|---|---|\n";
+  const auto handle = teapot_surface("handle");
+  for (double tol : {1e-2, 1e-4, 1e-8, 1e-12}) {
+    std::ostringstream t;
+    t << tol;
+    ctx.progress("vrep ssi: tolerance " + t.str());
+    const auto st = row("handle", handle, 1.0 / 16, tol, false);
+    md << "| " << tol << " | " << st.max_vertex_gap << " | " << st.max_vertex_distance << " | " << st.max_mid_distance << " |\n";
+  }
+  write_file_atomically(ctx.options.out_dir + "/vrep_ssi.csv", csv.str());
+  write_file_atomically(ctx.options.out_dir + "/vrep_ssi_steps.svg",
+                        svg_line_plot({"Trimming curves of the teapot from a float SSI: exact distance from the true intersection", "marching step",
+                                       "largest bound / gap at segment midpoints", true, true, "dashed: the exact gap |S1 - S2|; solid: the certified distance bound"},
+                                      series));
+  md << "\n![branches](vrep_ssi_handle_body.svg)\n\n![steps](vrep_ssi_steps.svg)\n\n"
+        "Data: `vrep_ssi.csv`; the branches as polylines for ParaView: `vrep_ssi_handle_body.obj`. Coarse steps break the loops into "
+        "several branches (the marching jumps or stalls; counted above), fine steps give two loops per pair; a loop runs from one side of the handle's (spout's) seam u = 0 to the other, u = 2, so it is open in those parameters and closed in space. What this does not "
+        "certify: that no further intersection loop exists (the seeds are sampled), and the ends of the branches (their boxes leave the "
+        "domain). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) are not built: "
+        "classifying a point against a freeform trivariate needs its inverse, which no implicit form gives.\n\n";
+  ctx.markdown["vrep-ssi"] = md.str();
+  ctx.ok = ctx.ok && ok;
+}
+
+}  // namespace splinex

@@ -1,0 +1,500 @@
+#include "vrep/ssi.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/hodograph.hpp"
+
+namespace splinex {
+
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+void require_surface(const BSpline<double>& S, const std::string& name) {
+  validate(S);
+  if (S.dim() != 2 || S.q < 3) throw ValidationError(name, "is not a surface in R^3", "give a spline surface S(u, v) with points x,y,z");
+}
+
+/// A surface's value and first partial derivatives at (u, v), in double.
+struct Jet {
+  V3 p, du, dv;
+};
+Jet jet(const BSpline<double>& S, double u, double v) {
+  const std::vector<double> x{u, v};
+  const auto p = evaluate(S, x), a = derivative(S, x, {1, 0}), b = derivative(S, x, {0, 1});
+  return {V3(p[0], p[1], p[2]), V3(a[0], a[1], a[2]), V3(b[0], b[1], b[2])};
+}
+
+struct Domain {
+  double lo[4], hi[4];
+  bool inside(const SsiParams& x) const {
+    for (int i = 0; i < 4; ++i)
+      if (!(lo[i] <= x[i] && x[i] <= hi[i])) return false;
+    return true;
+  }
+  void clamp(SsiParams& x) const {
+    for (int i = 0; i < 4; ++i) x[i] = std::min(hi[i], std::max(lo[i], x[i]));
+  }
+};
+
+class Tracer {
+ public:
+  Tracer(const BSpline<double>& S1, const BSpline<double>& S2, const SsiOptions& o) : S1_(S1), S2_(S2), o_(o) {
+    for (int d = 0; d < 2; ++d) {
+      dom_.lo[d] = S1.domain_lo(d);
+      dom_.hi[d] = S1.domain_hi(d);
+      dom_.lo[d + 2] = S2.domain_lo(d);
+      dom_.hi[d + 2] = S2.domain_hi(d);
+    }
+  }
+  const Domain& domain() const { return dom_; }
+
+  /// Newton on S1 - S2 = 0 with the minimum-norm step (3 equations, 4 unknowns), kept in the domain.
+  bool settle(SsiParams& x) const {
+    for (int it = 0; it < 30; ++it) {
+      const Jet a = jet(S1_, x[0], x[1]), b = jet(S2_, x[2], x[3]);
+      const V3 F = a.p - b.p;
+      if (F.norm() <= o_.tolerance) return true;
+      Eigen::Matrix<double, 3, 4> J;
+      J << a.du, a.dv, -b.du, -b.dv;
+      const Eigen::Vector4d d = J.completeOrthogonalDecomposition().solve(-F);
+      if (!d.allFinite()) return false;
+      for (int i = 0; i < 4; ++i) x[i] += d[i];
+      dom_.clamp(x);
+    }
+    const V3 F = jet(S1_, x[0], x[1]).p - jet(S2_, x[2], x[3]).p;
+    return F.norm() <= o_.tolerance;
+  }
+
+  /// The unit tangent n1 x n2 at x (zero when the normals are parallel).
+  V3 tangent(const SsiParams& x) const {
+    const Jet a = jet(S1_, x[0], x[1]), b = jet(S2_, x[2], x[3]);
+    const V3 n1 = a.du.cross(a.dv), n2 = b.du.cross(b.dv);
+    const V3 t = n1.cross(n2);
+    if (!(t.norm() > 1e-10 * n1.norm() * n2.norm())) return V3::Zero();
+    return t.normalized();
+  }
+
+  /// One marching step of chord h along T from x: predictor in both parameter planes, corrector on
+  /// (S1 - S2, T.(S1 - S1(x)) - h).
+  bool step(const SsiParams& x, const V3& T, double h, SsiParams& out) const {
+    const Jet a = jet(S1_, x[0], x[1]), b = jet(S2_, x[2], x[3]);
+    Eigen::Matrix<double, 3, 2> A, B;
+    A << a.du, a.dv;
+    B << b.du, b.dv;
+    const Eigen::Vector2d da = A.colPivHouseholderQr().solve(h * T), db = B.colPivHouseholderQr().solve(h * T);
+    out = {x[0] + da[0], x[1] + da[1], x[2] + db[0], x[3] + db[1]};
+    const V3 c = a.p;
+    for (int it = 0; it < 30; ++it) {
+      // Outside the domain the spline is not evaluated: the caller puts the point on the boundary.
+      SsiParams y = out;
+      dom_.clamp(y);
+      if (y != out) return true;
+      const Jet p = jet(S1_, out[0], out[1]), q = jet(S2_, out[2], out[3]);
+      Eigen::Vector4d G;
+      G << p.p - q.p, T.dot(p.p - c) - h;
+      if ((p.p - q.p).norm() <= o_.tolerance && std::abs(G[3]) <= 1e-6 * h) return true;
+      Eigen::Matrix4d J;
+      J.block<3, 1>(0, 0) = p.du;
+      J.block<3, 1>(0, 1) = p.dv;
+      J.block<3, 1>(0, 2) = -q.du;
+      J.block<3, 1>(0, 3) = -q.dv;
+      J(3, 0) = T.dot(p.du);
+      J(3, 1) = T.dot(p.dv);
+      J(3, 2) = 0;
+      J(3, 3) = 0;
+      const Eigen::Vector4d d = J.fullPivLu().solve(-G);
+      if (!d.allFinite()) return false;
+      for (int i = 0; i < 4; ++i) out[i] += d[i];
+    }
+    return false;
+  }
+
+  /// From inside x towards outside y: the point where the segment leaves the domain, with that
+  /// parameter on the boundary and the other three settled by Newton (3 x 3).
+  bool to_boundary(const SsiParams& x, const SsiParams& y, SsiParams& out) const {
+    double lambda = 1;
+    int which = -1;
+    double value = 0;
+    for (int i = 0; i < 4; ++i) {
+      for (double bound : {dom_.lo[i], dom_.hi[i]}) {
+        const double d = y[i] - x[i];
+        if (d == 0) continue;
+        const double l = (bound - x[i]) / d;
+        if (l >= 0 && l < lambda && ((bound == dom_.lo[i]) ? y[i] < bound : y[i] > bound)) {
+          lambda = l;
+          which = i;
+          value = bound;
+        }
+      }
+    }
+    if (which < 0) return false;
+    for (int i = 0; i < 4; ++i) out[i] = x[i] + lambda * (y[i] - x[i]);
+    out[which] = value;
+    for (int it = 0; it < 30; ++it) {
+      dom_.clamp(out);
+      out[which] = value;
+      const Jet a = jet(S1_, out[0], out[1]), b = jet(S2_, out[2], out[3]);
+      const V3 F = a.p - b.p;
+      if (F.norm() <= o_.tolerance) return true;
+      Eigen::Matrix<double, 3, 4> J4;
+      J4 << a.du, a.dv, -b.du, -b.dv;
+      Eigen::Matrix3d J;
+      for (int c = 0, k = 0; c < 4; ++c)
+        if (c != which) J.col(k++) = J4.col(c);
+      const V3 d = J.fullPivLu().solve(-F);
+      if (!d.allFinite()) return false;
+      for (int c = 0, k = 0; c < 4; ++c)
+        if (c != which) out[c] += d[k++];
+    }
+    return false;
+  }
+
+  V3 point(const SsiParams& x) const { return jet(S1_, x[0], x[1]).p; }
+
+  /// Marches from the seed in one direction (sign) and appends the points (the seed excluded).
+  void march(const SsiParams& seed, double sign, std::vector<SsiParams>& pts, bool& closed, bool& tangential, std::size_t& budget) const {
+    SsiParams x = seed;
+    V3 prev = sign * tangent(seed);
+    const V3 start = point(seed);
+    double far = 0;
+    while (budget > 0) {
+      V3 T = tangent(x);
+      if (T.isZero()) {
+        tangential = true;
+        return;
+      }
+      if (T.dot(prev) < 0) T = -T;
+      double h = o_.step;
+      SsiParams y;
+      bool ok = false;
+      while (h >= o_.step / 64) {
+        if (step(x, T, h, y)) {
+          ok = true;
+          break;
+        }
+        h /= 2;
+      }
+      if (!ok) return;
+      if (!dom_.inside(y)) {
+        SsiParams b;
+        if (to_boundary(x, y, b)) {
+          pts.push_back(b);
+          --budget;
+        }
+        return;
+      }
+      const V3 p = point(y);
+      far = std::max(far, (p - start).norm());
+      if (far > 2 * o_.step && (p - start).norm() < 0.6 * o_.step) {
+        closed = true;
+        return;
+      }
+      pts.push_back(y);
+      --budget;
+      prev = T;
+      x = y;
+    }
+  }
+
+ private:
+  const BSpline<double>& S1_;
+  const BSpline<double>& S2_;
+  const SsiOptions& o_;
+  Domain dom_;
+};
+
+struct Cell {
+  double lo[3], hi[3];
+  double u, v;  // centre parameters
+};
+
+std::vector<Cell> cells_of(const BSpline<double>& S, int n) {
+  const double u0 = S.domain_lo(0), u1 = S.domain_hi(0), v0 = S.domain_lo(1), v1 = S.domain_hi(1);
+  std::vector<V3> grid((n + 1) * (n + 1));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const auto p = evaluate(S, {u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n});
+      grid[j * (n + 1) + i] = V3(p[0], p[1], p[2]);
+    }
+  std::vector<Cell> out;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Cell c;
+      const V3* q[4] = {&grid[j * (n + 1) + i], &grid[j * (n + 1) + i + 1], &grid[(j + 1) * (n + 1) + i], &grid[(j + 1) * (n + 1) + i + 1]};
+      double edge = 0;
+      for (int a = 0; a < 3; ++a) {
+        c.lo[a] = c.hi[a] = (*q[0])[a];
+        for (auto* p : q) {
+          c.lo[a] = std::min(c.lo[a], (*p)[a]);
+          c.hi[a] = std::max(c.hi[a], (*p)[a]);
+        }
+        edge = std::max(edge, c.hi[a] - c.lo[a]);
+      }
+      // The cell bulges between its corners: a margin of half its largest extent.
+      for (int a = 0; a < 3; ++a) {
+        c.lo[a] -= edge / 2;
+        c.hi[a] += edge / 2;
+      }
+      c.u = u0 + (u1 - u0) * (i + 0.5) / n;
+      c.v = v0 + (v1 - v0) * (j + 0.5) / n;
+      out.push_back(c);
+    }
+  return out;
+}
+
+}  // namespace
+
+SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S2, const SsiOptions& o) {
+  require_surface(S1, "first");
+  require_surface(S2, "second");
+  if (!(o.step > 0) || !std::isfinite(o.step)) throw ValidationError("step", "must be positive and finite", "give a marching step > 0");
+  if (!(o.tolerance > 0) || !std::isfinite(o.tolerance)) throw ValidationError("tolerance", "must be positive and finite", "give a Newton tolerance > 0");
+  if (o.grid < 1 || o.grid > 128) throw ValidationError("grid", "must be 1..128 (the seed search compares grid^4 cell pairs)", "give a seed grid of 1..128 cells per direction");
+  {
+    // Limits before the work: a branch of the first surface's size takes about diag / step points.
+    double lo[3], hi[3];
+    for (int c = 0; c < 3; ++c) lo[c] = hi[c] = S1.points[c];
+    for (std::size_t i = 0; i < S1.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], S1.points[i * S1.q + c]);
+        hi[c] = std::max(hi[c], S1.points[i * S1.q + c]);
+      }
+    const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    if (!std::isfinite(diag)) throw ValidationError("first", "has control points too large for double arithmetic", "scale the model down");
+    if (o.step * 1e5 < diag)
+      throw ValidationError("step", "is below 10^-5 of the first surface's size (" + std::to_string(diag) + "): too many points per branch",
+                            "give a larger marching step");
+  }
+  Tracer tr(S1, S2, o);
+  SsiResult out;
+  const auto c1 = cells_of(S1, o.grid), c2 = cells_of(S2, o.grid);
+  std::size_t budget = o.max_points;
+  std::vector<V3> traced;  // every point of the branches so far (seeds near them are skipped)
+  for (const auto& a : c1)
+    for (const auto& b : c2) {
+      bool meet = true;
+      for (int k = 0; k < 3 && meet; ++k) meet = !(a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]);
+      if (!meet) continue;
+      ++out.candidates;
+      SsiParams x{a.u, a.v, b.u, b.v};
+      if (!tr.settle(x)) {
+        ++out.newton_failures;
+        continue;
+      }
+      const V3 p = tr.point(x);
+      bool known = false;
+      for (const auto& q : traced)
+        if ((p - q).norm() < 0.75 * o.step) {
+          known = true;
+          break;
+        }
+      if (known) continue;
+      ++out.seeds;
+      SsiBranch br;
+      std::vector<SsiParams> fwd, bwd;
+      bool closed = false, tangential = false;
+      tr.march(x, 1, fwd, closed, tangential, budget);
+      if (!closed) tr.march(x, -1, bwd, closed, tangential, budget);
+      br.points.assign(bwd.rbegin(), bwd.rend());
+      br.points.push_back(x);
+      br.points.insert(br.points.end(), fwd.begin(), fwd.end());
+      br.closed = closed;
+      br.tangential_stop = tangential;
+      br.ends_meet = !closed && br.points.size() >= 3 && (tr.point(br.points.front()) - tr.point(br.points.back())).norm() <= o.step / 4;
+      for (const auto& y : br.points) traced.push_back(tr.point(y));
+      // Points between the stored ones count as traced too (the chord's midpoints).
+      for (std::size_t i = 0; i + 1 < br.points.size(); ++i) traced.push_back((tr.point(br.points[i]) + tr.point(br.points[i + 1])) / 2);
+      out.branches.push_back(std::move(br));
+      if (budget == 0) return out;
+    }
+  return out;
+}
+
+namespace {
+
+/// S restricted to [lo_d, hi_d] in both directions (exact splits; the box inside the domain).
+BSpline<Rational> restrict_box(BSpline<Rational> S, const Rational lo[2], const Rational hi[2], const Limits& limits) {
+  for (int d = 0; d < 2; ++d) {
+    if (S.domain_lo(d) < lo[d]) S = split_at(S, d, lo[d], limits).second;
+    if (hi[d] < S.domain_hi(d)) S = split_at(S, d, hi[d], limits).first;
+  }
+  return S;
+}
+
+/// Per coordinate the range of the control points (the convex hull property).
+void ranges(const BSpline<Rational>& S, Rational lo[3], Rational hi[3]) {
+  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = S.points[c];
+  for (std::size_t i = 0; i < S.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const Rational& x = S.points[i * S.q + c];
+      if (x < lo[c]) lo[c] = x;
+      if (hi[c] < x) hi[c] = x;
+    }
+}
+
+Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
+
+}  // namespace
+
+SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiParams& xd, const SsiParams& dir,
+                         const Limits& limits) {
+  for (const auto* S : {&S1, &S2}) {
+    validate(*S, limits);
+    if (S->dim() != 2 || S->q < 3) throw ValidationError(S == &S1 ? "first" : "second", "is not a surface in R^3", "give a spline surface with points x,y,z");
+  }
+  SsiJudgement out;
+  std::array<Rational, 4> x;
+  for (int i = 0; i < 4; ++i) x[i] = exact_from_double(xd[i], "point");
+  for (int d = 0; d < 2; ++d)
+    if (x[d] < S1.domain_lo(d) || S1.domain_hi(d) < x[d] || x[d + 2] < S2.domain_lo(d) || S2.domain_hi(d) < x[d + 2])
+      throw ValidationError("point", "lies outside the surfaces' domains", "give parameters inside both domains");
+  const auto p1 = evaluate(S1, {x[0], x[1]}), p2 = evaluate(S2, {x[2], x[3]});
+  Rational F[4];
+  for (int c = 0; c < 3; ++c) {
+    F[c] = p1[c] - p2[c];
+    out.gap2 += F[c] * F[c];
+  }
+  F[3] = 0;
+  if (S1.is_rational() || S2.is_rational()) {
+    out.why_not = "rational surfaces: the derivative ranges are not built";
+    return out;
+  }
+  for (int d = 0; d < 2; ++d)
+    if (S1.degrees[d] == 0 || S2.degrees[d] == 0) {
+      out.why_not = "a surface of degree 0 in a direction has no tangent plane";
+      return out;
+    }
+  // F'(x~) in double and its inverse Y, taken exactly.
+  std::array<double, 4> a{};
+  double an = 0;
+  for (int i = 0; i < 4; ++i) an = std::max(an, std::abs(dir[i]));
+  if (!(an > 0) || !std::isfinite(an)) {
+    out.why_not = "no direction along the curve";
+    return out;
+  }
+  for (int i = 0; i < 4; ++i) a[i] = dir[i] / an;
+  Eigen::Matrix4d Jd;
+  {
+    const std::vector<Rational> u1{x[0], x[1]}, u2{x[2], x[3]};
+    const auto d1u = derivative(S1, u1, {1, 0}), d1v = derivative(S1, u1, {0, 1}), d2s = derivative(S2, u2, {1, 0}), d2t = derivative(S2, u2, {0, 1});
+    for (int c = 0; c < 3; ++c) {
+      Jd(c, 0) = to_double(d1u[c]);
+      Jd(c, 1) = to_double(d1v[c]);
+      Jd(c, 2) = -to_double(d2s[c]);
+      Jd(c, 3) = -to_double(d2t[c]);
+    }
+    for (int j = 0; j < 4; ++j) Jd(3, j) = a[j];
+  }
+  Eigen::FullPivLU<Eigen::Matrix4d> lu(Jd);
+  if (!lu.isInvertible()) {
+    out.why_not = "F' is singular at the point (tangential intersection?)";
+    return out;
+  }
+  const Eigen::Matrix4d Yd = lu.inverse();
+  Rational Y[4][4], A[4];
+  for (int i = 0; i < 4; ++i) {
+    A[i] = exact_from_double(a[i], "direction");
+    for (int j = 0; j < 4; ++j) Y[i][j] = exact_from_double(Yd(i, j), "Y");
+  }
+  Rational YF[4];
+  double yf_max = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < 4; ++k) YF[i] += Y[i][k] * F[k];
+    yf_max = std::max(yf_max, std::abs(to_double(YF[i])));
+  }
+  // Radii from 4 |Y F| up, by factors of 4.
+  int e = -44;
+  if (yf_max > 0) e = std::max(e, static_cast<int>(std::ceil(std::log2(4 * yf_max))));
+  if (e > -2) out.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
+  for (int attempt = 0; attempt < 4; ++attempt, e += 2) {
+    if (e > -2) break;
+    const Rational r = exact_from_double(std::ldexp(1.0, e), "radius");
+    Rational lo1[2], hi1[2], lo2[2], hi2[2];
+    bool in = true;
+    for (int d = 0; d < 2; ++d) {
+      lo1[d] = x[d] - r;
+      hi1[d] = x[d] + r;
+      lo2[d] = x[d + 2] - r;
+      hi2[d] = x[d + 2] + r;
+      in = in && !(lo1[d] < S1.domain_lo(d)) && !(S1.domain_hi(d) < hi1[d]) && !(lo2[d] < S2.domain_lo(d)) && !(S2.domain_hi(d) < hi2[d]);
+    }
+    if (!in) {
+      out.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point at the boundary)";
+      break;
+    }
+    const auto R1 = restrict_box(S1, lo1, hi1, limits), R2 = restrict_box(S2, lo2, hi2, limits);
+    // Interval Jacobian over the box: rows 0-2 the hodographs' coefficient ranges, row 3 the direction.
+    Rational Jlo[4][4], Jhi[4][4];
+    {
+      BSpline<Rational> H[4] = {hodograph(R1, 0), hodograph(R1, 1), hodograph(R2, 0), hodograph(R2, 1)};
+      for (int j = 0; j < 4; ++j) {
+        Rational lo[3], hi[3];
+        ranges(H[j], lo, hi);
+        for (int c = 0; c < 3; ++c) {
+          if (j < 2) {
+            Jlo[c][j] = lo[c];
+            Jhi[c][j] = hi[c];
+          } else {
+            Jlo[c][j] = -hi[c];
+            Jhi[c][j] = -lo[c];
+          }
+        }
+      }
+      for (int j = 0; j < 4; ++j) Jlo[3][j] = Jhi[3][j] = A[j];
+    }
+    bool ok = true;
+    Rational rho[4];  // K(X) about x~: the root lies within |YF_i| + r sum_i of x~_i
+    for (int i = 0; i < 4 && ok; ++i) {
+      Rational sum(0);
+      for (int j = 0; j < 4; ++j) {
+        Rational slo(0), shi(0);  // the range of sum_k Y_ik J_kj
+        for (int k = 0; k < 4; ++k) {
+          const Rational p = Y[i][k] * Jlo[k][j], q = Y[i][k] * Jhi[k][j];
+          slo += std::min(p, q);
+          shi += std::max(p, q);
+        }
+        const Rational delta(i == j ? 1 : 0);
+        sum += std::max(rabs(delta - slo), rabs(delta - shi));
+      }
+      // K_i lies in x~_i - YF_i + [-r sum, r sum]; inside (x~_i - r, x~_i + r) when |YF_i| + r sum < r.
+      rho[i] = rabs(YF[i]) + r * sum;
+      ok = rho[i] < r;
+    }
+    if (!ok) {
+      out.why_not = "Krawczyk's test fails up to radius 2^" + std::to_string(e);
+      continue;
+    }
+    out.certified = true;
+    out.radius = r;
+    out.why_not.clear();
+    // The true point S1(u*, v*) with (u*, v*) in K(X): the hull of S1 on that smaller box (the
+    // box itself where it is a point).
+    Rational klo[2], khi[2];
+    for (int d = 0; d < 2; ++d) {
+      klo[d] = x[d] - rho[d];
+      khi[d] = x[d] + rho[d];
+    }
+    BSpline<Rational> RK = R1;
+    if (rho[0] > 0 && rho[1] > 0) RK = restrict_box(R1, klo, khi, limits);
+    Rational bound(0);
+    for (int c = 0; c < 3; ++c) {
+      Rational m(0);
+      if (rho[0] > 0 && rho[1] > 0)
+        for (std::size_t i = 0; i < RK.size(); ++i) m = std::max(m, rabs(RK.points[i * RK.q + c] - p1[c]));
+      else
+        for (std::size_t i = 0; i < R1.size(); ++i) m = std::max(m, rabs(R1.points[i * R1.q + c] - p1[c]));
+      bound += m * m;
+    }
+    out.distance2_bound = bound;
+    return out;
+  }
+  return out;
+}
+
+}  // namespace splinex
