@@ -137,8 +137,9 @@ void vrep_ssi_section(ReportContext& ctx) {
         "point and every midpoint of the polylines' segments (the trimming curves between the points, in both parameter planes) is then "
         "judged against the exact surfaces: the gap |S1(u,v) - S2(s,t)| exactly, and a **certificate**: Krawczyk's test in exact "
         "rational interval arithmetic proves a unique true intersection point in a box about the point, and the convex hull of the "
-        "restricted surface bounds the distance from the computed point to it. Points whose box leaves a domain (the ends of the "
-        "branches, on the boundary) stay uncertified and are counted. Gaps and distances are upper bounds rounded up. `splinex vrep ssi "
+        "restricted surface bounds the distance from the computed point to it. A point on a domain boundary (where a branch ends) is "
+        "certified with that parameter fixed (Krawczyk on the other three); points near a boundary whose box would leave the domain "
+        "stay uncertified and are counted. Gaps and distances are upper bounds rounded up. `splinex vrep ssi "
         "teapot:handle teapot:body --judge` reproduces a row.\n\n";
   md << "| surfaces | step | branches (loops in space) | vertices certified | max vertex gap | max vertex distance | midpoints certified | max midpoint gap | max midpoint distance | double s | judge s |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -210,8 +211,7 @@ void vrep_ssi_section(ReportContext& ctx) {
   md << "\n![branches](vrep_ssi_handle_body.svg)\n\n![steps](vrep_ssi_steps.svg)\n\n"
         "Data: `vrep_ssi.csv`; the branches as polylines for ParaView: `vrep_ssi_handle_body.obj`. Coarse steps break the loops into "
         "several branches (the marching jumps or stalls; counted above), fine steps give two loops per pair; a loop runs from one side of the handle's (spout's) seam u = 0 to the other, u = 2, so it is open in those parameters and closed in space. What this does not "
-        "certify: that no further intersection loop exists (the seeds are sampled), and the ends of the branches (their boxes leave the "
-        "domain). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) are not built: "
+        "certify: that no further intersection loop exists (the seeds are sampled). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) are not built: "
         "classifying a point against a freeform trivariate needs its inverse, which no implicit form gives.\n\n";
   ctx.markdown["vrep-ssi"] = md.str();
   ctx.ok = ctx.ok && ok;

@@ -349,11 +349,16 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
     if (S->dim() != 2 || S->q < 3) throw ValidationError(S == &S1 ? "first" : "second", "is not a surface in R^3", "give a spline surface with points x,y,z");
   }
   SsiJudgement out;
-  std::array<Rational, 4> x;
+  std::array<Rational, 4> x, dlo, dhi;  // the point and the domains of (u, v, s, t)
   for (int i = 0; i < 4; ++i) x[i] = exact_from_double(xd[i], "point");
-  for (int d = 0; d < 2; ++d)
-    if (x[d] < S1.domain_lo(d) || S1.domain_hi(d) < x[d] || x[d + 2] < S2.domain_lo(d) || S2.domain_hi(d) < x[d + 2])
-      throw ValidationError("point", "lies outside the surfaces' domains", "give parameters inside both domains");
+  for (int d = 0; d < 2; ++d) {
+    dlo[d] = S1.domain_lo(d);
+    dhi[d] = S1.domain_hi(d);
+    dlo[d + 2] = S2.domain_lo(d);
+    dhi[d + 2] = S2.domain_hi(d);
+  }
+  for (int i = 0; i < 4; ++i)
+    if (x[i] < dlo[i] || dhi[i] < x[i]) throw ValidationError("point", "lies outside the surfaces' domains", "give parameters inside both domains");
   const auto p1 = evaluate(S1, {x[0], x[1]}), p2 = evaluate(S2, {x[2], x[3]});
   Rational F[4];
   for (int c = 0; c < 3; ++c) {
@@ -370,42 +375,57 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
       out.why_not = "a surface of degree 0 in a direction has no tangent plane";
       return out;
     }
-  // F'(x~) in double and its inverse Y, taken exactly.
+  // A point on a domain boundary (where a branch ends): that parameter is fixed there and the
+  // three equations S1 - S2 = 0 are solved for the other three; inside, the fourth equation
+  // a.(x - x~) = 0 fixes the point along the curve.
+  int fixed = -1;
+  for (int i = 0; i < 4 && fixed < 0; ++i)
+    if (x[i] == dlo[i] || x[i] == dhi[i]) fixed = i;
+  std::vector<int> vars;
+  for (int i = 0; i < 4; ++i)
+    if (i != fixed) vars.push_back(i);
+  const int n = static_cast<int>(vars.size());  // unknowns and equations
   std::array<double, 4> a{};
-  double an = 0;
-  for (int i = 0; i < 4; ++i) an = std::max(an, std::abs(dir[i]));
-  if (!(an > 0) || !std::isfinite(an)) {
-    out.why_not = "no direction along the curve";
-    return out;
+  if (fixed < 0) {
+    double an = 0;
+    for (int i = 0; i < 4; ++i) an = std::max(an, std::abs(dir[i]));
+    if (!(an > 0) || !std::isfinite(an)) {
+      out.why_not = "no direction along the curve";
+      return out;
+    }
+    for (int i = 0; i < 4; ++i) a[i] = dir[i] / an;
   }
-  for (int i = 0; i < 4; ++i) a[i] = dir[i] / an;
-  Eigen::Matrix4d Jd;
+  // F'(x~) in double (the columns of the unknowns) and its inverse Y, taken exactly.
+  Eigen::Matrix4d J4;
   {
     const std::vector<Rational> u1{x[0], x[1]}, u2{x[2], x[3]};
     const auto d1u = derivative(S1, u1, {1, 0}), d1v = derivative(S1, u1, {0, 1}), d2s = derivative(S2, u2, {1, 0}), d2t = derivative(S2, u2, {0, 1});
     for (int c = 0; c < 3; ++c) {
-      Jd(c, 0) = to_double(d1u[c]);
-      Jd(c, 1) = to_double(d1v[c]);
-      Jd(c, 2) = -to_double(d2s[c]);
-      Jd(c, 3) = -to_double(d2t[c]);
+      J4(c, 0) = to_double(d1u[c]);
+      J4(c, 1) = to_double(d1v[c]);
+      J4(c, 2) = -to_double(d2s[c]);
+      J4(c, 3) = -to_double(d2t[c]);
     }
-    for (int j = 0; j < 4; ++j) Jd(3, j) = a[j];
+    for (int j = 0; j < 4; ++j) J4(3, j) = a[j];
   }
-  Eigen::FullPivLU<Eigen::Matrix4d> lu(Jd);
+  Eigen::MatrixXd Jd(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) Jd(i, j) = J4(i, vars[j]);
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(Jd);
   if (!lu.isInvertible()) {
     out.why_not = "F' is singular at the point (tangential intersection?)";
     return out;
   }
-  const Eigen::Matrix4d Yd = lu.inverse();
-  Rational Y[4][4], A[4];
-  for (int i = 0; i < 4; ++i) {
-    A[i] = exact_from_double(a[i], "direction");
-    for (int j = 0; j < 4; ++j) Y[i][j] = exact_from_double(Yd(i, j), "Y");
-  }
-  Rational YF[4];
+  const Eigen::MatrixXd Yd = lu.inverse();
+  std::vector<std::vector<Rational>> Y(n, std::vector<Rational>(n));
+  Rational A[4];
+  for (int i = 0; i < 4; ++i) A[i] = exact_from_double(a[i], "direction");
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) Y[i][j] = exact_from_double(Yd(i, j), "Y");
+  std::vector<Rational> YF(n);
   double yf_max = 0;
-  for (int i = 0; i < 4; ++i) {
-    for (int k = 0; k < 4; ++k) YF[i] += Y[i][k] * F[k];
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < n; ++k) YF[i] += Y[i][k] * F[k];
     yf_max = std::max(yf_max, std::abs(to_double(YF[i])));
   }
   // Radii from 4 |Y F| up, by factors of 4.
@@ -415,47 +435,47 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
   for (int attempt = 0; attempt < 4; ++attempt, e += 2) {
     if (e > -2) break;
     const Rational r = exact_from_double(std::ldexp(1.0, e), "radius");
-    Rational lo1[2], hi1[2], lo2[2], hi2[2];
+    // The box: x~ +- r in the unknowns; the fixed parameter's side of width r inside the domain
+    // (a superset of the line it is fixed on: the ranges stay valid).
+    std::array<Rational, 4> lo, hi;
     bool in = true;
-    for (int d = 0; d < 2; ++d) {
-      lo1[d] = x[d] - r;
-      hi1[d] = x[d] + r;
-      lo2[d] = x[d + 2] - r;
-      hi2[d] = x[d + 2] + r;
-      in = in && !(lo1[d] < S1.domain_lo(d)) && !(S1.domain_hi(d) < hi1[d]) && !(lo2[d] < S2.domain_lo(d)) && !(S2.domain_hi(d) < hi2[d]);
+    for (int i = 0; i < 4; ++i) {
+      if (i == fixed) {
+        lo[i] = x[i] == dlo[i] ? x[i] : Rational(x[i] - r);
+        hi[i] = x[i] == dlo[i] ? Rational(x[i] + r) : x[i];
+      } else {
+        lo[i] = x[i] - r;
+        hi[i] = x[i] + r;
+      }
+      in = in && !(lo[i] < dlo[i]) && !(dhi[i] < hi[i]);
     }
     if (!in) {
-      out.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point at the boundary)";
+      out.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point near the boundary)";
       break;
     }
-    const auto R1 = restrict_box(S1, lo1, hi1, limits), R2 = restrict_box(S2, lo2, hi2, limits);
+    const auto R1 = restrict_box(S1, &lo[0], &hi[0], limits), R2 = restrict_box(S2, &lo[2], &hi[2], limits);
     // Interval Jacobian over the box: rows 0-2 the hodographs' coefficient ranges, row 3 the direction.
     Rational Jlo[4][4], Jhi[4][4];
     {
-      BSpline<Rational> H[4] = {hodograph(R1, 0), hodograph(R1, 1), hodograph(R2, 0), hodograph(R2, 1)};
+      const BSpline<Rational> H[4] = {hodograph(R1, 0), hodograph(R1, 1), hodograph(R2, 0), hodograph(R2, 1)};
       for (int j = 0; j < 4; ++j) {
-        Rational lo[3], hi[3];
-        ranges(H[j], lo, hi);
+        Rational hl[3], hh[3];
+        ranges(H[j], hl, hh);
         for (int c = 0; c < 3; ++c) {
-          if (j < 2) {
-            Jlo[c][j] = lo[c];
-            Jhi[c][j] = hi[c];
-          } else {
-            Jlo[c][j] = -hi[c];
-            Jhi[c][j] = -lo[c];
-          }
+          Jlo[c][j] = j < 2 ? hl[c] : Rational(-hh[c]);
+          Jhi[c][j] = j < 2 ? hh[c] : Rational(-hl[c]);
         }
       }
       for (int j = 0; j < 4; ++j) Jlo[3][j] = Jhi[3][j] = A[j];
     }
     bool ok = true;
-    Rational rho[4];  // K(X) about x~: the root lies within |YF_i| + r sum_i of x~_i
-    for (int i = 0; i < 4 && ok; ++i) {
+    Rational rho[4];  // K(X) about x~: the root lies within |YF_i| + r sum_i of x~ in unknown i
+    for (int i = 0; i < n && ok; ++i) {
       Rational sum(0);
-      for (int j = 0; j < 4; ++j) {
-        Rational slo(0), shi(0);  // the range of sum_k Y_ik J_kj
-        for (int k = 0; k < 4; ++k) {
-          const Rational p = Y[i][k] * Jlo[k][j], q = Y[i][k] * Jhi[k][j];
+      for (int j = 0; j < n; ++j) {
+        Rational slo(0), shi(0);  // the range of sum_k Y_ik J_k,vars[j]
+        for (int k = 0; k < n; ++k) {
+          const Rational p = Y[i][k] * Jlo[k][vars[j]], q = Y[i][k] * Jhi[k][vars[j]];
           slo += std::min(p, q);
           shi += std::max(p, q);
         }
@@ -463,8 +483,8 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
         sum += std::max(rabs(delta - slo), rabs(delta - shi));
       }
       // K_i lies in x~_i - YF_i + [-r sum, r sum]; inside (x~_i - r, x~_i + r) when |YF_i| + r sum < r.
-      rho[i] = rabs(YF[i]) + r * sum;
-      ok = rho[i] < r;
+      rho[vars[i]] = rabs(YF[i]) + r * sum;
+      ok = rho[vars[i]] < r;
     }
     if (!ok) {
       out.why_not = "Krawczyk's test fails up to radius 2^" + std::to_string(e);
@@ -473,22 +493,25 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
     out.certified = true;
     out.radius = r;
     out.why_not.clear();
-    // The true point S1(u*, v*) with (u*, v*) in K(X): the hull of S1 on that smaller box (the
-    // box itself where it is a point).
+    // The true point S1(u*, v*): (u*, v*) in K(X) (the fixed parameter at its value); the hull of
+    // S1 on that smaller box bounds its distance from S1(u~, v~).
     Rational klo[2], khi[2];
+    bool point_box = false;
     for (int d = 0; d < 2; ++d) {
-      klo[d] = x[d] - rho[d];
-      khi[d] = x[d] + rho[d];
+      if (d == fixed) {
+        klo[d] = lo[d];
+        khi[d] = hi[d];
+      } else {
+        klo[d] = x[d] - rho[d];
+        khi[d] = x[d] + rho[d];
+        point_box = point_box || rho[d] == 0;
+      }
     }
-    BSpline<Rational> RK = R1;
-    if (rho[0] > 0 && rho[1] > 0) RK = restrict_box(R1, klo, khi, limits);
+    const BSpline<Rational> RK = point_box ? R1 : restrict_box(R1, klo, khi, limits);
     Rational bound(0);
     for (int c = 0; c < 3; ++c) {
       Rational m(0);
-      if (rho[0] > 0 && rho[1] > 0)
-        for (std::size_t i = 0; i < RK.size(); ++i) m = std::max(m, rabs(RK.points[i * RK.q + c] - p1[c]));
-      else
-        for (std::size_t i = 0; i < R1.size(); ++i) m = std::max(m, rabs(R1.points[i * R1.q + c] - p1[c]));
+      for (std::size_t i = 0; i < RK.size(); ++i) m = std::max(m, rabs(RK.points[i * RK.q + c] - p1[c]));
       bound += m * m;
     }
     out.distance2_bound = bound;

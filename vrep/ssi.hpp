@@ -25,8 +25,10 @@
 // zero also lies in K(X), so the true point S1(u*, v*) lies in the convex hull of S1's control
 // points on K(X)'s (u, v) box (restricted exactly once more), which bounds its
 // distance from the computed point S1(u, v): a certified upper bound of how far the computed
-// trimming point is from the true intersection curve. Boxes that leave a domain, and points where
-// the test fails for every tried r (near tangency, a wrong branch), are reported uncertified.
+// trimming point is from the true intersection curve. A point on a domain boundary (a branch's
+// end) is judged with that parameter fixed: Krawczyk on S1 - S2 = 0 in the other three. Boxes
+// that leave a domain, and points where the test fails for every tried r (near tangency, a wrong
+// branch), are reported uncertified.
 #pragma once
 #include <array>
 #include <string>

@@ -73,6 +73,28 @@ TEST_CASE("vrep ssi: a plane and a paraboloid meet in a circle, every point cert
   }
 }
 
+TEST_CASE("vrep ssi: a branch that ends on the boundary, its end points certified on the boundary line") {
+  // The plane over [0, 1] x [-1, 1] holds half of the circle: one open branch from (0, -1/2) to (0, 1/2).
+  const auto P = make_spline<R>({1, 1}, {{R(0), R(0), R(1), R(1)}, {R(-1), R(-1), R(1), R(1)}}, 3,
+                                {R(0), R(-1), R(0), R(1), R(-1), R(0), R(0), R(1), R(0), R(1), R(1), R(0)});
+  const auto Q = paraboloid(R(1, 4));
+  SsiOptions o;
+  o.grid = 16;
+  const auto r = intersect_surfaces(round_spline<double>(P), round_spline<double>(Q), o);
+  REQUIRE(r.branches.size() == 1);
+  const auto& pts = r.branches[0].points;
+  CHECK_FALSE(r.branches[0].closed);
+  REQUIRE(pts.size() > 10);
+  for (const auto* e : {&pts.front(), &pts.back()}) {
+    CHECK((*e)[0] == 0.0);  // on the boundary u = 0, exactly
+    CHECK(std::abs(std::abs((*e)[1]) - 0.5) < 1e-11);
+    const auto j = judge_point(P, Q, *e, {0, 1, 0, 1});
+    INFO(j.why_not);
+    CHECK(j.certified);
+    CHECK(j.distance2_bound < R(1, 1000000000));
+  }
+}
+
 TEST_CASE("vrep ssi: no intersection, no certificate where there is nothing to certify, hostile input") {
   SsiOptions o;
   o.grid = 8;
@@ -89,7 +111,7 @@ TEST_CASE("vrep ssi: no intersection, no certificate where there is nothing to c
   CHECK_FALSE(t.certified);
   CHECK(t.gap2 == 0);
   CHECK_FALSE(t.why_not.empty());
-  // A point on the boundary is not certified (its box would leave the domain), and says so.
+  // A point on the boundary far from the curve is not certified either.
   const auto b = judge_point(P, Q, {-1, 0, -1, 0}, {0, 1, 0, 1});
   CHECK_FALSE(b.certified);
   // Not surfaces, outside the domains, bad options.
