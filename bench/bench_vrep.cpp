@@ -11,7 +11,11 @@
 #include "float/mpfr.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
+#include "experiments/vrep_ssi.hpp"
+#include "float/rounding.hpp"
 #include "vrep/regularity.hpp"
+#include "vrep/ssi.hpp"
+#include "vrep/trimmed.hpp"
 #include "vrep/vmodel.hpp"
 
 using namespace splinex;
@@ -64,9 +68,56 @@ void boolean_step(benchmark::State& st, const std::string& name) {
   st.counters["cells"] = static_cast<double>(cells);
 }
 
+/// Trimmed Booleans: Figure 4, the cone r 1 to 1/2 (h 2) united with a cylinder r 1/3 along x at
+/// z = 1; exact, and in double with eps 1e-12 on the rounded models.
+TrimmedModel<Rational> placed(std::vector<BSpline<Rational>> cells, const Region<Rational>& region, int axis, std::vector<Rational> at) {
+  for (auto& V : cells) V = place_trivariate(V, axis, at);
+  return as_trimmed(glue(cells), place_region(region, axis, at));
+}
+void trimmed_step(benchmark::State& st, bool exact) {
+  using R = Rational;
+  const auto cone = placed(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  std::size_t cells = 0;
+  if (exact)
+    for (auto _ : st) cells = trimmed_boolean(cone, cyl, BooleanOp::unite).cells.size();
+  else {
+    const auto a = trimmed_to_double(cone), b = trimmed_to_double(cyl);
+    for (auto _ : st) cells = trimmed_boolean(a, b, BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
+  }
+  st.counters["cells"] = static_cast<double>(cells);
+}
+
+/// The teapot's handle against its body (step 1/16): the float SSI, and the exact judgement of its
+/// points (Krawczyk certificates).
+void ssi_step(benchmark::State& st, bool judge) {
+  const auto H = teapot_surface("handle"), B = teapot_surface("body");
+  const auto h = round_spline<double>(H), b = round_spline<double>(B);
+  const auto r = intersect_surfaces(h, b);
+  std::size_t n = 0;
+  for (auto _ : st) {
+    if (!judge) {
+      n = intersect_surfaces(h, b).branches.size();
+      continue;
+    }
+    n = 0;
+    for (const auto& br : r.branches)
+      for (std::size_t i = 0; i + 1 < br.points.size(); ++i) {
+        SsiParams d;
+        for (int k = 0; k < 4; ++k) d[k] = br.points[i + 1][k] - br.points[i][k];
+        n += judge_point(H, B, br.points[i], d).certified;
+      }
+  }
+  st.counters[judge ? "certified" : "branches"] = static_cast<double>(n);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  benchmark::RegisterBenchmark("vrep/trimmed/double/figure4", [](benchmark::State& st) { trimmed_step(st, false); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/trimmed/exact/figure4", [](benchmark::State& st) { trimmed_step(st, true); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/ssi/judge/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, true); })->Unit(benchmark::kMillisecond);
   const std::vector<std::string> booleans{"figure3", "grid-cavity"};
   for (const auto& b : booleans) {
     benchmark::RegisterBenchmark(("vrep/boolean/double/" + b).c_str(), [b](benchmark::State& st) { boolean_step<double>(st, b); })
@@ -99,6 +150,14 @@ int main(int argc, char** argv) {
     const double d = rep.ns["vrep/boolean/double/" + b], e = rep.ns["vrep/boolean/exact/" + b];
     std::cout << std::left << std::setw(12) << b << std::right << std::fixed << std::setprecision(2) << std::setw(10) << d
               << std::setw(10) << e << std::setprecision(1) << std::setw(8) << (d > 0 ? e / d : 0.0) << "\n";
+  }
+  {
+    const double d = rep.ns["vrep/trimmed/double/figure4"], e = rep.ns["vrep/trimmed/exact/figure4"];
+    std::cout << std::left << std::setw(12) << "figure4" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << d
+              << std::setw(10) << e << std::setprecision(1) << std::setw(8) << (d > 0 ? e / d : 0.0) << "  (trimmed cells)\n";
+    const double f = rep.ns["vrep/ssi/double/teapot-handle-body"], j = rep.ns["vrep/ssi/judge/teapot-handle-body"];
+    std::cout << "\nTeapot handle and body: float SSI " << std::setprecision(2) << f << " ms, its exact judgement " << j
+              << " ms (judge/SSI " << std::setprecision(1) << (f > 0 ? j / f : 0.0) << ")\n";
   }
   benchmark::Shutdown();
   return 0;
