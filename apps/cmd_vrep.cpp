@@ -389,6 +389,7 @@ Commands add_vrep(CLI::App& app) {
                       {"candidates", st.result.candidates},
                       {"seeds", st.result.seeds},
                       {"newton_failures", st.result.newton_failures},
+                      {"starts_skipped", st.result.skipped},
                       {"seconds", st.seconds_float},
                       {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
              if (so->judge)

@@ -35,6 +35,12 @@ SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, con
   st.result = intersect_surfaces(d1, d2, options);
   st.seconds_float = std::chrono::duration<double>(clock::now() - t0).count();
   if (!judge) return st;
+  // The limit before the exact work: every vertex and midpoint costs exact restrictions and
+  // hodographs (about a millisecond each for bicubic patches).
+  std::size_t n = 0;
+  for (const auto& b : st.result.branches) n += 2 * b.points.size();
+  if (n > 10000)
+    throw ValidationError("judge", "would judge " + std::to_string(n) + " points exactly (at most 10000)", "give a larger --step");
   t0 = clock::now();
   std::map<std::string, std::size_t> why;
   auto take = [&](const SsiJudgement& j, bool mid) {

@@ -56,10 +56,14 @@ class Tracer {
 
   /// Newton on S1 - S2 = 0 with the minimum-norm step (3 equations, 4 unknowns), kept in the domain.
   bool settle(SsiParams& x) const {
+    double first = -1;
     for (int it = 0; it < 30; ++it) {
       const Jet a = jet(S1_, x[0], x[1]), b = jet(S2_, x[2], x[3]);
       const V3 F = a.p - b.p;
       if (F.norm() <= o_.tolerance) return true;
+      // Newton that has not halved the residual in 8 steps is not converging to a simple zero.
+      if (it == 0) first = F.norm();
+      if (it == 8 && !(F.norm() < first / 2)) return false;
       Eigen::Matrix<double, 3, 4> J;
       J << a.du, a.dv, -b.du, -b.dv;
       const Eigen::Vector4d d = J.completeOrthogonalDecomposition().solve(-F);
@@ -282,6 +286,10 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
       for (int k = 0; k < 3 && meet; ++k) meet = !(a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]);
       if (!meet) continue;
       ++out.candidates;
+      if (out.seeds + out.newton_failures + out.known >= o.max_starts) {
+        ++out.skipped;
+        continue;
+      }
       SsiParams x{a.u, a.v, b.u, b.v};
       if (!tr.settle(x)) {
         ++out.newton_failures;
@@ -294,7 +302,10 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
           known = true;
           break;
         }
-      if (known) continue;
+      if (known) {
+        ++out.known;
+        continue;
+      }
       ++out.seeds;
       SsiBranch br;
       std::vector<SsiParams> fwd, bwd;

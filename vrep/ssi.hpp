@@ -45,6 +45,7 @@ struct SsiOptions {
   double tolerance = 1e-12;      // Newton stops at |S1 - S2| <= tolerance
   int grid = 48;                 // seed cells per direction of each surface (1..128)
   std::size_t max_points = 200000;
+  std::size_t max_starts = 50000;  // Newton starts from overlapping cell pairs (the rest are skipped and counted)
 };
 
 using SsiParams = std::array<double, 4>;  // (u, v) on S1, (s, t) on S2
@@ -60,7 +61,9 @@ struct SsiResult {
   std::vector<SsiBranch> branches;
   std::size_t candidates = 0;       // overlapping cell pairs
   std::size_t seeds = 0;            // converged seeds not on a branch already
+  std::size_t known = 0;            // converged starts on a traced branch
   std::size_t newton_failures = 0;  // candidate starts that did not converge inside the domains
+  std::size_t skipped = 0;          // candidates beyond max_starts, not tried
 };
 
 /// Both surfaces: dim 2, points in R^3 (ValidationError otherwise).
