@@ -390,6 +390,7 @@ Commands add_vrep(CLI::App& app) {
                       {"seeds", st.result.seeds},
                       {"newton_failures", st.result.newton_failures},
                       {"starts_skipped", st.result.skipped},
+                      {"loops_in_space", loops_in_space(S1, st.result, opt.step / 4)},
                       {"seconds", st.seconds_float},
                       {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
              if (so->judge)

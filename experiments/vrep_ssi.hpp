@@ -27,6 +27,10 @@ struct SsiStudy {
 SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiOptions& options, bool judge,
                    void (*progress)(const std::string&) = nullptr);
 
+/// The loops in space: chains of branches whose end points (on S1, in double) meet within `tol`
+/// all around, closed branches included.
+std::size_t loops_in_space(const BSpline<Rational>& S1, const SsiResult& r, double tol);
+
 /// The branches in the two parameter planes, side by side (SVG).
 std::string ssi_svg(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiResult& r, const std::string& name1,
                     const std::string& name2, const std::string& title);
