@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <sstream>
 #include <string>
 
@@ -14,5 +15,17 @@ inline BSpline<Rational> spline(const std::string& text, const Limits& limits = 
   return spline_from_json(doc(text), limits);
 }
 inline Rational q(const char* s) { return parse_number(s, "test"); }
+
+/// The field g(x) = a.x + d on a polynomial trivariate V: by affine invariance its control values
+/// are g at V's control points, exactly, so it equals g at every point of the cell (an oracle
+/// independent of the code that carries or integrates fields).
+inline BSpline<Rational> affine_field(const BSpline<Rational>& V, const std::array<Rational, 3>& a, const Rational& d) {
+  BSpline<Rational> F = V;
+  F.q = 1;
+  F.points.clear();
+  for (std::size_t i = 0; i < V.size(); ++i)
+    F.points.push_back(a[0] * V.points[i * V.q] + a[1] * V.points[i * V.q + 1] + a[2] * V.points[i * V.q + 2] + d);
+  return F;
+}
 
 }  // namespace splinex::test

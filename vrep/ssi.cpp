@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
@@ -279,7 +281,29 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
   SsiResult out;
   const auto c1 = cells_of(S1, o.grid), c2 = cells_of(S2, o.grid);
   std::size_t budget = o.max_points;
-  std::vector<V3> traced;  // every point of the branches so far (seeds near them are skipped)
+  // Every point of the branches so far, hashed on a grid of cell `step` (a start within 0.75 step
+  // of one is on a traced branch: only the 27 cells about it are searched).
+  std::unordered_map<std::uint64_t, std::vector<V3>> traced;
+  auto key = [&](long i, long j, long k) {
+    return (static_cast<std::uint64_t>(i) * 73856093u) ^ (static_cast<std::uint64_t>(j) * 19349663u) ^ (static_cast<std::uint64_t>(k) * 83492791u);
+  };
+  auto cell_of = [&](const V3& p, int a) {  // clamped before the conversion (far points share buckets)
+    const double c = std::floor(p[a] / o.step);
+    return std::isfinite(c) ? static_cast<long>(std::clamp(c, -1e15, 1e15)) : 0L;
+  };
+  auto add_traced = [&](const V3& p) { traced[key(cell_of(p, 0), cell_of(p, 1), cell_of(p, 2))].push_back(p); };
+  auto near_traced = [&](const V3& p) {
+    const long i = cell_of(p, 0), j = cell_of(p, 1), k = cell_of(p, 2);
+    for (long a = i - 1; a <= i + 1; ++a)
+      for (long b = j - 1; b <= j + 1; ++b)
+        for (long c = k - 1; c <= k + 1; ++c) {
+          const auto it = traced.find(key(a, b, c));
+          if (it == traced.end()) continue;
+          for (const auto& q : it->second)
+            if ((p - q).norm() < 0.75 * o.step) return true;
+        }
+    return false;
+  };
   for (const auto& a : c1)
     for (const auto& b : c2) {
       bool meet = true;
@@ -295,14 +319,7 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
         ++out.newton_failures;
         continue;
       }
-      const V3 p = tr.point(x);
-      bool known = false;
-      for (const auto& q : traced)
-        if ((p - q).norm() < 0.75 * o.step) {
-          known = true;
-          break;
-        }
-      if (known) {
+      if (near_traced(tr.point(x))) {
         ++out.known;
         continue;
       }
@@ -318,9 +335,9 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
       br.closed = closed;
       br.tangential_stop = tangential;
       br.ends_meet = !closed && br.points.size() >= 3 && (tr.point(br.points.front()) - tr.point(br.points.back())).norm() <= o.step / 4;
-      for (const auto& y : br.points) traced.push_back(tr.point(y));
+      for (const auto& y : br.points) add_traced(tr.point(y));
       // Points between the stored ones count as traced too (the chord's midpoints).
-      for (std::size_t i = 0; i + 1 < br.points.size(); ++i) traced.push_back((tr.point(br.points[i]) + tr.point(br.points[i + 1])) / 2);
+      for (std::size_t i = 0; i + 1 < br.points.size(); ++i) add_traced((tr.point(br.points[i]) + tr.point(br.points[i + 1])) / 2);
       out.branches.push_back(std::move(br));
       if (budget == 0) return out;
     }
@@ -422,12 +439,20 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
   Eigen::MatrixXd Jd(n, n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) Jd(i, j) = J4(i, vars[j]);
+  if (!Jd.allFinite()) {
+    out.why_not = "F' is beyond double's range at the point";
+    return out;
+  }
   Eigen::FullPivLU<Eigen::MatrixXd> lu(Jd);
   if (!lu.isInvertible()) {
     out.why_not = "F' is singular at the point (tangential intersection?)";
     return out;
   }
   const Eigen::MatrixXd Yd = lu.inverse();
+  if (!Yd.allFinite()) {
+    out.why_not = "F' is beyond double's range at the point";
+    return out;
+  }
   std::vector<std::vector<Rational>> Y(n, std::vector<Rational>(n));
   Rational A[4];
   for (int i = 0; i < 4; ++i) A[i] = exact_from_double(a[i], "direction");
@@ -440,6 +465,10 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
     yf_max = std::max(yf_max, std::abs(to_double(YF[i])));
   }
   // Radii from 4 |Y F| up, by factors of 4.
+  if (!std::isfinite(yf_max) || yf_max > 1) {
+    out.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
+    return out;
+  }
   int e = -44;
   if (yf_max > 0) e = std::max(e, static_cast<int>(std::ceil(std::log2(4 * yf_max))));
   if (e > -2) out.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
+#include "tests/helpers.hpp"
 #include "spline/kernel.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/nef_check.hpp"
@@ -477,16 +478,6 @@ TEST_CASE("vrep boolean: hostile inputs give a typed error or a valid model") {
 
 namespace {
 
-// g(x) = a.x + d as a field on a polynomial trivariate: control values g(P_i), exact by affine
-// invariance, so the field equals g at every point of the cell (the oracle below).
-BSpline<R> affine_field(const BSpline<R>& V, const std::array<R, 3>& a, const R& d) {
-  BSpline<R> F = V;
-  F.q = 1;
-  F.points.clear();
-  for (std::size_t i = 0; i < V.size(); ++i) F.points.push_back(a[0] * V.points[i * V.q] + a[1] * V.points[i * V.q + 1] + a[2] * V.points[i * V.q + 2] + d);
-  return F;
-}
-
 // Every cell's field `name` against the function of position `expect(category, x)` at the
 // parameter corners and centre of the cell.
 template <class F>
@@ -510,9 +501,9 @@ void check_field(const VModel<R>& M, const std::string& name, F&& expect) {
 TEST_CASE("vrep boolean: attribute fields through Booleans, restricted and pulled back exactly") {
   auto A = box({0, 0, 0}, {2, 1, 1});
   auto B = box({1, 0, 0}, {3, 2, 1});
-  attach_field(A, 0, "f", affine_field(A.trivariates[0], {R(1), R(0), R(0)}, R(0)));       // f = x on A
-  attach_field(B, 0, "f", affine_field(B.trivariates[0], {R(2), R(1), R(0)}, R(1)));       // f = 2x + y + 1 on B
-  attach_field(B, 0, "g", affine_field(B.trivariates[0], {R(0), R(0), R(1)}, R(-1, 3)));  // g = z - 1/3 on B
+  attach_field(A, 0, "f", test::affine_field(A.trivariates[0], {R(1), R(0), R(0)}, R(0)));       // f = x on A
+  attach_field(B, 0, "f", test::affine_field(B.trivariates[0], {R(2), R(1), R(0)}, R(1)));       // f = 2x + y + 1 on B
+  attach_field(B, 0, "g", test::affine_field(B.trivariates[0], {R(0), R(0), R(1)}, R(-1, 3)));  // g = z - 1/3 on B
   const auto fa = [](const std::vector<R>& x) { return x[0]; };
   const auto fb = [](const std::vector<R>& x) { return 2 * x[0] + x[1] + 1; };
   auto is_both = [](const std::string& n) { return n.find('*') != std::string::npos; };
@@ -544,7 +535,7 @@ TEST_CASE("vrep boolean: attribute fields through Booleans, restricted and pulle
     for (std::size_t i = 0; i < V.size(); ++i)
       if (i / 4 == 1) V.points[i * V.q + 2] = R(1, 3);
     Bn = glue(std::vector<BSpline<R>>{V});
-    attach_field(Bn, 0, "f", affine_field(V, {R(2), R(1), R(0)}, R(1)));
+    attach_field(Bn, 0, "f", test::affine_field(V, {R(2), R(1), R(0)}, R(1)));
   }
   const auto N = boolean_op(A, Bn, BooleanOp::intersect, R(0), Blend::sum);
   REQUIRE(!N.cells.empty());

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "exact/rational.hpp"
+#include "tests/helpers.hpp"
 #include "spline/kernel.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
@@ -310,26 +311,13 @@ TEST_CASE("vrep trimmed: a region beyond double's range is refused when rounded,
   CHECK_THROWS_AS(region_to_double(region_leaf(g)), Error);
 }
 
-namespace {
-
-// The field g(x) = a.x + d on a polynomial trivariate V: by affine invariance its control values
-// are g at V's control points, exactly (an oracle independent of the integration).
-BSpline<R> affine_field(const BSpline<R>& V, const std::array<R, 3>& a, const R& d) {
-  BSpline<R> F = V;
-  F.q = 1;
-  F.points.clear();
-  for (std::size_t i = 0; i < V.size(); ++i) F.points.push_back(a[0] * V.points[i * V.q] + a[1] * V.points[i * V.q + 1] + a[2] * V.points[i * V.q + 2] + d);
-  return F;
-}
-
-}  // namespace
 
 TEST_CASE("vrep trimmed: integrals of attribute fields over (trimmed) cells, exact or certified") {
   const auto B = box({R(0), R(0), R(0)}, {R(2), R(1), R(1)});
   const auto& V = B.trivariates[0];
   const auto none = region_and<R>({});
   // f = x over [0,2]x[0,1]x[0,1]: 2, exactly; trimmed to x <= 1/2 (a dyadic parameter cut): 1/8.
-  const auto f = affine_field(V, {R(1), R(0), R(0)}, R(0));
+  const auto f = test::affine_field(V, {R(1), R(0), R(0)}, R(0));
   auto e = trimmed_field_integral(V, none, f, 0, 64);
   CHECK(e.moment.lower == R(2));
   CHECK(e.moment.upper == R(2));
@@ -375,8 +363,8 @@ TEST_CASE("vrep trimmed: integrals of attribute fields over (trimmed) cells, exa
 TEST_CASE("vrep trimmed: fields ride along the Booleans, the other model's named where not taken over") {
   auto A = box({R(0), R(0), R(0)}, {R(2), R(1), R(1)});
   auto B = box({R(1), R(0), R(0)}, {R(3), R(1), R(1)});
-  A.cells[0].fields["f"] = affine_field(A.trivariates[0], {R(1), R(0), R(0)}, R(0));
-  B.cells[0].fields["f"] = affine_field(B.trivariates[0], {R(2), R(1), R(0)}, R(1));
+  A.cells[0].fields["f"] = test::affine_field(A.trivariates[0], {R(1), R(0), R(0)}, R(0));
+  B.cells[0].fields["f"] = test::affine_field(B.trivariates[0], {R(2), R(1), R(0)}, R(1));
   const auto U = trimmed_boolean(A, B, BooleanOp::unite, Blend::sum);
   REQUIRE(U.cells.size() == 3);
   for (const auto& c : U.cells) {
