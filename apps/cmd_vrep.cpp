@@ -15,6 +15,7 @@
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_ssi.hpp"
 #include <fstream>
+#include "vrep/blend.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/regularity.hpp"
@@ -367,7 +368,56 @@ Commands add_vrep(CLI::App& app) {
   ssi->add_flag("--judge", so->judge, "judge every point and segment midpoint exactly: gap |S1 - S2| and a Krawczyk certificate of the true intersection nearby");
   ssi->add_option("--svg", so->svg, "write the branches in both parameter planes to this SVG file");
   ssi->add_option("--obj", so->obj, "write the branches as 3D polylines to this OBJ file");
-  return {{ssi, [so](const Context& ctx) {
+  struct BlendCli {
+    std::string a, b, at, attribute;
+    int k = 1, bits = 128;
+  };
+  auto blo = std::make_shared<BlendCli>();
+  auto* bl = v->add_subcommand("blend", "Eq. 2's distance blend of an attribute of two models at a point of their union (certified enclosure)");
+  bl->add_option("first", blo->a, "the V-model V1 (convex cells with planar faces)")->required();
+  bl->add_option("second", blo->b, "the V-model V2 (convex cells with planar faces)")->required();
+  bl->add_option("--at", blo->at, "the point x,y,z")->required();
+  bl->add_option("--attribute", blo->attribute, "a constant or a field (on affine cells) both models carry")->required();
+  bl->add_option("--k", blo->k, "the blend's order: d^k weights (1: Eq. 2)")->check(CLI::Range(1, 64))->capture_default_str();
+  bl->add_option("--bits", blo->bits, "the MPFI enclosure's precision")->check(CLI::Range(16, 100000))->capture_default_str();
+  return {{bl, [blo, exact_model](const Context& ctx) {
+             const auto V1 = exact_model({blo->a}, ctx), V2 = exact_model({blo->b}, ctx);
+             const auto x = parse_number_list(blo->at, "at");
+             if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
+             const DistanceBlend D(V1, V2);
+             const bool in1 = D.in_first(x), in2 = D.in_second(x);
+             std::vector<Rational> A1, A2;
+             Json out{{"in_first", in1}, {"in_second", in2}};
+             auto strings = [](const std::vector<Rational>& v) {
+               Json j = Json::array();
+               for (const auto& y : v) j.push_back(to_fraction_string(y));
+               return j;
+             };
+             if (in1) out["A1"] = strings(A1 = attribute_at(V1, x, blo->attribute));
+             if (in2) out["A2"] = strings(A2 = attribute_at(V2, x, blo->attribute));
+             if (!in1) A1 = A2;
+             if (!in2) A2 = A1;
+             const auto r = D.at(x, A1, A2, blo->k, blo->bits);
+             if (in1 && in2) {
+               out["d1_squared"] = to_fraction_string(r.d1_squared);
+               out["d2_squared"] = to_fraction_string(r.d2_squared);
+             }
+             out["singular"] = r.singular;
+             if (r.singular) out["note"] = "d1 = d2 = 0: the blend is undefined here (the point r of Figure 6)";
+             Json value = Json::array(), approx = Json::array();
+             for (const auto& e : r.value) {
+               if (e.exact()) value.push_back(to_fraction_string(e.lo));
+               else value.push_back({to_fraction_string(e.lo), to_fraction_string(e.hi)});
+               approx.push_back(to_double(e.lo));
+             }
+             if (!r.singular) {
+               out["value"] = value;
+               out["approximately"] = approx;
+             }
+             std::cout << out.dump() << "\n";
+             return 0;
+           }},
+          {ssi, [so](const Context& ctx) {
              auto surface = [&](const std::string& what, const std::string& field) {
                if (what.rfind("teapot:", 0) == 0) return teapot_surface(what.substr(7));
                return read_spline(what, field, ctx);

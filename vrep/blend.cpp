@@ -5,6 +5,7 @@
 
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
+#include "vrep/boolean_impl.hpp"  // vrep_detail::affine_inverse
 
 namespace splinex {
 
@@ -156,6 +157,30 @@ bool DistanceBlend::in_first(const std::vector<Rational>& p) const { return insi
 bool DistanceBlend::in_second(const std::vector<Rational>& p) const { return inside(cells2_, point(p)); }
 Rational DistanceBlend::d1_squared(const std::vector<Rational>& p) const { return d2_to(boundary1_, point(p)); }
 Rational DistanceBlend::d2_squared(const std::vector<Rational>& p) const { return d2_to(boundary2_, point(p)); }
+
+std::vector<Rational> attribute_at(const VModel<Rational>& M, const std::vector<Rational>& x, const std::string& name, std::size_t* cell) {
+  if (x.size() != 3) throw ValidationError("at", "needs three coordinates", "give x,y,z");
+  const auto cells = cells_containing(M, x);
+  if (cells.empty()) throw ValidationError("at", "lies in no cell of the model", "give a point of the model");
+  for (std::size_t c : cells) {
+    const auto& a = M.cells[c].attributes;
+    if (cell) *cell = c;
+    if (const auto it = a.constants.find(name); it != a.constants.end()) return it->second;
+    const auto f = a.fields.find(name);
+    if (f == a.fields.end()) continue;
+    const auto& V = M.trivariates[M.cells[c].trivariates.front()];
+    const auto inv = vrep_detail::affine_inverse(V);
+    if (!inv)
+      throw DomainError("attributes." + name, "is a field on cell " + std::to_string(c) + " (" + M.cells[c].name +
+                                                  "), which is not affine: its parameters at a point are not rational in general",
+                        "give the field on an affine cell (a box or parallelepiped) or a constant");
+    std::vector<Rational> s(3);
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < 3; ++j) s[r] += inv->inv[r][j] * (x[j] - inv->alpha[j]);
+    return evaluate(f->second, s);
+  }
+  throw ValidationError("attributes." + name, "is on none of the cells that hold the point", "give an attribute the model's cells carry");
+}
 
 BlendValue DistanceBlend::at(const std::vector<Rational>& p, const std::vector<Rational>& A1, const std::vector<Rational>& A2, int k,
                              int bits) const {

@@ -35,6 +35,13 @@ struct BlendValue {
   bool singular = false;
 };
 
+/// The attribute `name` of a model at a point x, exactly: from the first cell whose closure holds
+/// x (convex planar cells), its constant of that name, or its field evaluated at the cell's
+/// parameters of x where the cell is affine (x = alpha + B s, s = B^-1 (x - alpha), exact).
+/// ValidationError when no cell holds x or none has the attribute, DomainError for a field on a
+/// cell that is not affine (its inverse is not rational). `cell` receives the cell used.
+std::vector<Rational> attribute_at(const VModel<Rational>& M, const std::vector<Rational>& x, const std::string& name, std::size_t* cell = nullptr);
+
 class DistanceBlend {
  public:
   /// The clipped boundary polygons of both models (DomainError for a cell that is not convex with

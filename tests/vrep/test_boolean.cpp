@@ -545,3 +545,38 @@ TEST_CASE("vrep boolean: attribute fields through Booleans, restricted and pulle
     CHECK(c.attributes.not_carried[0] == "f");
   }
 }
+
+TEST_CASE("vrep distance blend: attributes at points, fields on affine cells evaluated exactly") {
+  auto A = box({0, 0, 0}, {2, 1, 1});
+  auto B = box({1, 0, 0}, {3, 1, 1});
+  attach_field(A, 0, "f", test::affine_field(A.trivariates[0], {R(1), R(-2), R(3)}, R(1, 7)));  // f = x - 2y + 3z + 1/7
+  B.cells[0].attributes.constants["f"] = {R(5)};
+  std::size_t cell = 99;
+  for (const auto& x : std::vector<std::vector<R>>{{R(1, 3), R(2, 5), R(5, 7)}, {R(2), R(1), R(0)}, {R(0), R(0), R(0)}}) {
+    CHECK(attribute_at(A, x, "f", &cell) == std::vector<R>{x[0] - 2 * x[1] + 3 * x[2] + R(1, 7)});
+    CHECK(cell == 0);
+  }
+  CHECK(attribute_at(B, {R(2), R(1, 2), R(1, 2)}, "f") == std::vector<R>{R(5)});
+  CHECK_THROWS_AS(attribute_at(A, {R(5), R(0), R(0)}, "f"), ValidationError);  // outside
+  CHECK_THROWS_AS(attribute_at(A, {R(1), R(0), R(0)}, "g"), ValidationError);  // no such attribute
+  // Eq. 2 is C^0 across the interfaces: on A's face x = 2 inside B the blend is B's value exactly,
+  // on B's face x = 1 inside A it is A's field there.
+  const DistanceBlend D(A, B);
+  for (const R& y : {R(1, 5), R(1, 2), R(4, 5)}) {
+    const std::vector<R> p{R(2), y, R(1, 2)}, q{R(1), y, R(1, 2)};
+    const auto a = D.at(p, attribute_at(A, p, "f"), attribute_at(B, p, "f"));
+    REQUIRE(a.value.size() == 1);
+    CHECK(a.value[0].lo == R(5));
+    CHECK(a.value[0].hi == R(5));
+    const auto b = D.at(q, attribute_at(A, q, "f"), attribute_at(B, q, "f"));
+    CHECK(b.value[0].lo == R(1) - 2 * y + R(3, 2) + R(1, 7));
+    CHECK(b.value[0].exact());
+  }
+  // A field on a cell that is not affine: its parameters at a point are not rational in general.
+  auto V = elevate_degree(A.trivariates[0], 2, 1);
+  for (std::size_t i = 0; i < V.size(); ++i)
+    if (i / 4 == 1) V.points[i * V.q + 2] = R(1, 3);
+  auto N = glue(std::vector<BSpline<R>>{V});
+  attach_field(N, 0, "f", test::affine_field(V, {R(1), R(0), R(0)}, R(0)));
+  CHECK_THROWS_AS(attribute_at(N, {R(1), R(1, 2), R(1, 2)}, "f"), DomainError);
+}
