@@ -443,6 +443,11 @@ Commands add_vrep(CLI::App& app) {
                       {"loops_in_space", loops_in_space(S1, st.result, opt.step / 4)},
                       {"seconds", st.seconds_float},
                       {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
+             std::size_t tangential = 0;
+             for (const auto& b : st.result.branches) tangential += b.tangential_stop;
+             if (tangential > 0)
+               out["warning"] = std::to_string(tangential) + " branches stopped where the normals are parallel: tangential contact or surfaces "
+                                "that coincide over a region, where the intersection is not a curve and this method does not apply";
              if (so->judge)
                out["judged"] = {{"vertices", st.vertices},
                                 {"vertices_certified", st.vertices_certified},
