@@ -95,12 +95,19 @@ class Tracer {
     B << b.du, b.dv;
     const Eigen::Vector2d da = A.colPivHouseholderQr().solve(h * T), db = B.colPivHouseholderQr().solve(h * T);
     out = {x[0] + da[0], x[1] + da[1], x[2] + db[0], x[3] + db[1]};
+    double reach = 0;  // the predictor's largest parameter move
+    for (int i = 0; i < 4; ++i) reach = std::max(reach, std::abs(out[i] - x[i]));
     const V3 c = a.p;
     for (int it = 0; it < 30; ++it) {
-      // Outside the domain the spline is not evaluated: the caller puts the point on the boundary.
+      // Outside the domain the spline is not evaluated: the caller puts the point on the boundary
+      // (a corrector that wandered far from the predictor has diverged instead: a failed step).
       SsiParams y = out;
       dom_.clamp(y);
-      if (y != out) return true;
+      if (y != out) {
+        double moved = 0;
+        for (int i = 0; i < 4; ++i) moved = std::max(moved, std::abs(out[i] - x[i]));
+        return it == 0 || moved <= 4 * reach;
+      }
       const Jet p = jet(S1_, out[0], out[1]), q = jet(S2_, out[2], out[3]);
       Eigen::Vector4d G;
       G << p.p - q.p, T.dot(p.p - c) - h;
@@ -168,7 +175,7 @@ class Tracer {
     SsiParams x = seed;
     V3 prev = sign * tangent(seed);
     const V3 start = point(seed);
-    double far = 0;
+    double travelled = 0;
     while (budget > 0) {
       V3 T = tangent(x);
       if (T.isZero()) {
@@ -195,11 +202,17 @@ class Tracer {
         }
         return;
       }
-      const V3 p = point(y);
-      far = std::max(far, (p - start).norm());
-      if (far > 2 * o_.step && (p - start).norm() < 0.6 * o_.step) {
-        closed = true;
-        return;
+      const V3 p = point(y), q = point(x);
+      travelled += (p - q).norm();
+      // Closed when the step passes the start again (its chord within 0.6 of the chord length of
+      // it) after more than three chords: small loops, a few steps round, close as well as large ones.
+      if (travelled > 3 * h) {
+        const V3 d = p - q;
+        const double t = d.squaredNorm() > 0 ? std::clamp((start - q).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+        if ((q + t * d - start).norm() < 0.6 * h) {
+          closed = true;
+          return;
+        }
       }
       pts.push_back(y);
       --budget;

@@ -44,7 +44,7 @@ struct SsiOptions {
   double step = 1.0 / 16;        // marching chord, model units
   double tolerance = 1e-12;      // Newton stops at |S1 - S2| <= tolerance
   int grid = 48;                 // seed cells per direction of each surface (1..128)
-  std::size_t max_points = 200000;
+  std::size_t max_points = 100000;
   std::size_t max_starts = 50000;  // Newton starts from overlapping cell pairs (the rest are skipped and counted)
 };
 

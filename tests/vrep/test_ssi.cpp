@@ -73,6 +73,23 @@ TEST_CASE("vrep ssi: a plane and a paraboloid meet in a circle, every point cert
   }
 }
 
+TEST_CASE("vrep ssi: loops only a few steps round close once, without running on") {
+  // Circles of radius 1/15, 1/20, 1/30 at step 1/16 (circumference 6.7, 5 and 3.4 steps): one
+  // closed branch each, every vertex on the circle (a runaway marching went round 200000 points).
+  const auto P = plane(R(0));
+  for (const R& r : {R(1, 15), R(1, 20), R(1, 30)}) {
+    SsiOptions o;
+    o.grid = 16;
+    const auto res = intersect_surfaces(round_spline<double>(P), round_spline<double>(paraboloid(r * r)), o);
+    INFO(to_double(r));
+    REQUIRE(res.branches.size() == 1);
+    CHECK(res.branches[0].closed);
+    CHECK(res.branches[0].points.size() >= 3);
+    CHECK(res.branches[0].points.size() <= 16);
+    for (const auto& x : res.branches[0].points) CHECK(std::abs(std::hypot(x[0], x[1]) - to_double(r)) < 1e-11);
+  }
+}
+
 TEST_CASE("vrep ssi: a branch that ends on the boundary, its end points certified on the boundary line") {
   // The plane over [0, 1] x [-1, 1] holds half of the circle: one open branch from (0, -1/2) to (0, 1/2).
   const auto P = make_spline<R>({1, 1}, {{R(0), R(0), R(1), R(1)}, {R(-1), R(-1), R(1), R(1)}}, 3,
