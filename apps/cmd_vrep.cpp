@@ -31,6 +31,18 @@ struct ConstructOptions {
   int quarters = 4, degree = 3;
 };
 
+/// A certified enclosure lo <= x <= hi into j: `exact_key` when lo == hi, else "lower" and "upper"
+/// (and, with `approx`, their doubles as "approximately").
+void put_enclosure(Json& j, const char* exact_key, const Rational& lo, const Rational& hi, bool approx) {
+  if (lo == hi) {
+    j[exact_key] = to_fraction_string(lo);
+    return;
+  }
+  j["lower"] = to_fraction_string(lo);
+  j["upper"] = to_fraction_string(hi);
+  if (approx) j["approximately"] = {to_double(lo), to_double(hi)};
+}
+
 BSpline<Rational> read_spline(const std::string& path, const std::string& field, const Context& ctx) {
   return spline_from_json(read_json_file(path, ctx.read_limits), ctx.limits, field);
 }
@@ -602,12 +614,8 @@ Commands add_vrep(CLI::App& app) {
                lo += e.lower;
                hi += e.upper;
                Json j{{"cell", c}, {"name", name}};
-               if (e.lower == e.upper) j["volume"] = to_fraction_string(e.lower);
-               else {
-                 j["lower"] = to_fraction_string(e.lower);
-                 j["upper"] = to_fraction_string(e.upper);
-                 j["boxes"] = e.boxes;
-               }
+               put_enclosure(j, "volume", e.lower, e.upper, false);
+               if (e.lower != e.upper) j["boxes"] = e.boxes;
                cells.push_back(j);
              };
              if (O.model)
@@ -619,12 +627,7 @@ Commands add_vrep(CLI::App& app) {
                  add(c, x.name, trimmed_volume(O.trimmed->trivariates[x.trivariate], x.trim, volo->boxes, ctx.limits));
                }
              Json out{{"cells", cells}};
-             if (lo == hi) out["volume"] = to_fraction_string(lo);
-             else {
-               out["lower"] = to_fraction_string(lo);
-               out["upper"] = to_fraction_string(hi);
-               out["approximately"] = {to_double(lo), to_double(hi)};
-             }
+             put_enclosure(out, "volume", lo, hi, true);
              if (!volo->field.empty()) {
                // Per cell that has the field: its integral (exact or a certified enclosure); the
                // model's sum when every cell has it.
@@ -642,12 +645,7 @@ Commands add_vrep(CLI::App& app) {
                  il += e.moment.lower;
                  ih += e.moment.upper;
                  Json j{{"cell", c}, {"name", name}};
-                 if (e.moment.lower == e.moment.upper) j["integral"] = to_fraction_string(e.moment.lower);
-                 else {
-                   j["lower"] = to_fraction_string(e.moment.lower);
-                   j["upper"] = to_fraction_string(e.moment.upper);
-                   j["approximately"] = {to_double(e.moment.lower), to_double(e.moment.upper)};
-                 }
+                 put_enclosure(j, "integral", e.moment.lower, e.moment.upper, true);
                  fc.push_back(j);
                };
                if (O.model)
@@ -663,14 +661,8 @@ Commands add_vrep(CLI::App& app) {
                if (fc.empty())
                  throw ValidationError("field", "\"" + volo->field + "\" is on no cell of the model", "give the name of an attribute field of its cells");
                Json f{{"name", volo->field}, {"component", volo->component}, {"cells", fc}};
-               if (missing.empty()) {
-                 if (il == ih) f["integral"] = to_fraction_string(il);
-                 else {
-                   f["lower"] = to_fraction_string(il);
-                   f["upper"] = to_fraction_string(ih);
-                   f["approximately"] = {to_double(il), to_double(ih)};
-                 }
-               } else f["cells_without"] = missing;
+               if (missing.empty()) put_enclosure(f, "integral", il, ih, true);
+               else f["cells_without"] = missing;
                out["field"] = f;
              }
              if (volo->centroid) {

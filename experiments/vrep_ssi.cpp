@@ -82,16 +82,18 @@ SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, con
   t0 = clock::now();
   std::map<std::string, std::size_t> why;
   auto take = [&](const SsiJudgement& j, bool mid) {
-    const double gap = sqrt_up(j.gap2);
-    (mid ? st.midpoints : st.vertices) += 1;
-    (mid ? st.max_mid_gap : st.max_vertex_gap) = std::max(mid ? st.max_mid_gap : st.max_vertex_gap, gap);
+    std::size_t& count = mid ? st.midpoints : st.vertices;
+    std::size_t& certified = mid ? st.midpoints_certified : st.vertices_certified;
+    double& gap = mid ? st.max_mid_gap : st.max_vertex_gap;
+    double& distance = mid ? st.max_mid_distance : st.max_vertex_distance;
+    ++count;
+    gap = std::max(gap, sqrt_up(j.gap2));
     if (!j.certified) {
       why[j.why_not] += 1;
       return;
     }
-    (mid ? st.midpoints_certified : st.vertices_certified) += 1;
-    double& d = mid ? st.max_mid_distance : st.max_vertex_distance;
-    d = std::max(d, sqrt_up(j.distance2_bound));
+    ++certified;
+    distance = std::max(distance, sqrt_up(j.distance2_bound));
   };
   for (std::size_t b = 0; b < st.result.branches.size(); ++b) {
     const auto& P = st.result.branches[b].points;

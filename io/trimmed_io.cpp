@@ -133,14 +133,7 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
         x.fields.emplace(it.key(), std::move(F));
       }
     }
-    if (c.contains("fields_not_carried")) {
-      const Json& f = c["fields_not_carried"];
-      if (!f.is_array()) throw ValidationError(w + ".fields_not_carried", "is not a list", "give a list of field names");
-      for (const auto& e : f) {
-        if (!e.is_string()) throw ValidationError(w + ".fields_not_carried", "has an entry that is not a name", "give a list of field names");
-        x.not_carried.push_back(e.get<std::string>());
-      }
-    }
+    if (c.contains("fields_not_carried")) x.not_carried = names_from_json(c["fields_not_carried"], w + ".fields_not_carried");
     M.cells.push_back(std::move(x));
   }
   M.trivariates.insert(M.trivariates.end(), inherited.begin(), inherited.end());

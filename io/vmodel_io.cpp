@@ -107,6 +107,16 @@ std::size_t cell_index(const Json& e, std::size_t first, const VModel<Rational>&
 
 }  // namespace
 
+std::vector<std::string> names_from_json(const Json& j, const std::string& where) {
+  if (!j.is_array()) throw ValidationError(where, "is not a list", "give a list of names");
+  std::vector<std::string> out;
+  for (const auto& n : j) {
+    if (!n.is_string()) throw ValidationError(where, "has an entry that is not a name", "give a list of names");
+    out.push_back(n.get<std::string>());
+  }
+  return out;
+}
+
 void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits) {
   // Inherited trivariates (the sources of a Boolean's cells) after the cells' own.
   const std::size_t base = M.trivariates.size();
@@ -117,14 +127,8 @@ void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limit
     if (!doc.is_object() || !doc.contains("type") || doc["type"] != "vmodel") continue;
     for (std::size_t i = 0; i < doc["cells"].size(); ++i) {
       const Json& c = doc["cells"][i];
-      if (c.contains("fields_not_carried")) {
-        const std::string wn = "vmodel.cells[" + std::to_string(i) + "].fields_not_carried";
-        if (!c["fields_not_carried"].is_array()) throw ValidationError(wn, "is not a list", "give a list of field names");
-        for (const auto& n : c["fields_not_carried"]) {
-          if (!n.is_string()) throw ValidationError(wn, "has an entry that is not a name", "give a list of field names");
-          M.cells[first + i].attributes.not_carried.push_back(n.get<std::string>());
-        }
-      }
+      if (c.contains("fields_not_carried"))
+        M.cells[first + i].attributes.not_carried = names_from_json(c["fields_not_carried"], "vmodel.cells[" + std::to_string(i) + "].fields_not_carried");
       if (!c.contains("attributes")) continue;
       const std::string w = "vmodel.cells[" + std::to_string(i) + "].attributes";
       if (!c["attributes"].is_object()) throw ValidationError(w, "is not an object", "give {\"NAME\": [numbers] | {spline}}");

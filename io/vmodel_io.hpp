@@ -43,6 +43,10 @@ void append_cells(VModelCells& into, VModelCells more);
 /// for a bad address or value), and the cells' inherited trivariates appended to its trivariates.
 void apply_attributes(VModel<Rational>& M, const VModelCells& cells, const Limits& limits = {});
 
+/// A list of names (e.g. a cell's `fields_not_carried`): ValidationError naming `where` for
+/// anything but an array of strings.
+std::vector<std::string> names_from_json(const Json& j, const std::string& where);
+
 /// Named constant attributes as {"NAME": [numbers]}.
 template <class T>
 Json constants_to_json(const std::map<std::string, std::vector<T>>& m) {

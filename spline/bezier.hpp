@@ -52,6 +52,17 @@ std::size_t bezier_pieces_size(const BSpline<T>& S, const Limits& limits = {});
 template <class T>
 std::pair<BSpline<T>, BSpline<T>> split_at(const BSpline<T>& S, int d, const T& x, const Limits& limits = {});
 
+/// S restricted to the box [lo_d, hi_d] (one pair per direction, inside the domain; a side equal
+/// to the domain's end is not split): exact splits, the parametrization kept.
+template <class T>
+BSpline<T> restrict_to_box(BSpline<T> S, const T* lo, const T* hi, const Limits& limits = {}) {
+  for (int d = 0; d < S.dim(); ++d) {
+    if (S.domain_lo(d) < lo[d]) S = split_at(S, d, lo[d], limits).second;
+    if (hi[d] < S.domain_hi(d)) S = split_at(S, d, hi[d], limits).first;
+  }
+  return S;
+}
+
 /// S reparametrized affinely in direction d so that its domain becomes [lo, hi] (lo < hi):
 /// R(phi(x)) = S(x) with phi mapping the old domain onto [lo, hi]. Control points are unchanged.
 template <class T>

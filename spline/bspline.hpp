@@ -7,6 +7,7 @@
 // Rational splines store Cartesian points plus weights; operations work on the homogeneous form
 // (w*P, w), NURBS Book ch. 4.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <iterator>
 #include <string>
@@ -53,6 +54,21 @@ struct Homogeneous {
   /// Cartesian coordinates per point.
   int q() const { return weighted ? net.q - 1 : net.q; }
 };
+
+/// The box of the control points' first three coordinates, {min x, min y, min z, max x, max y,
+/// max z}: it holds the spline (the convex hull property; Euclidean points, positive weights).
+template <class T>
+std::array<T, 6> control_bounds(const BSpline<T>& S) {
+  std::array<T, 6> b;
+  for (int a = 0; a < 3; ++a) b[a] = b[a + 3] = S.points[a];
+  for (std::size_t i = 0; i < S.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const T& x = S.points[i * S.q + a];
+      if (x < b[a]) b[a] = x;
+      if (b[a + 3] < x) b[a + 3] = x;
+    }
+  return b;
+}
 
 /// The same representation: degrees, knot vectors, homogeneous flag and every stored number equal
 /// (not the same function: use the proofs' identity checker for that).

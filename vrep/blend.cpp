@@ -174,10 +174,8 @@ std::vector<Rational> attribute_at(const VModel<Rational>& M, const std::vector<
       throw DomainError("attributes." + name, "is a field on cell " + std::to_string(c) + " (" + M.cells[c].name +
                                                   "), which is not affine: its parameters at a point are not rational in general",
                         "give the field on an affine cell (a box or parallelepiped) or a constant");
-    std::vector<Rational> s(3);
-    for (int r = 0; r < 3; ++r)
-      for (int j = 0; j < 3; ++j) s[r] += inv->inv[r][j] * (x[j] - inv->alpha[j]);
-    return evaluate(f->second, s);
+    const auto s = (*inv)(x.data());
+    return evaluate(f->second, std::vector<Rational>(s.begin(), s.end()));
   }
   throw ValidationError("attributes." + name, "is on none of the cells that hold the point", "give an attribute the model's cells carry");
 }

@@ -298,22 +298,19 @@ void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend
   }
 }
 
-/// F restricted to the box [lo, hi] of its domain (exact splits, the parametrization kept).
-template <class T>
-BSpline<T> restrict_to_box(BSpline<T> F, const std::array<T, 3>& lo, const std::array<T, 3>& hi, const Limits& limits) {
-  for (int d = 0; d < 3; ++d) {
-    if (F.domain_lo(d) < lo[d]) F = split_at(F, d, lo[d], limits).second;
-    if (hi[d] < F.domain_hi(d)) F = split_at(F, d, hi[d], limits).first;
-  }
-  return F;
-}
-
 /// The inverse of an affine cell: for a polynomial trivariate with one Bezier piece whose three
 /// coordinates are affine in the parameters, x = alpha + B s, the map x -> B^-1 (x - alpha).
 template <class T>
 struct AffineInverse {
   std::array<T, 3> alpha;
   std::array<std::array<T, 3>, 3> inv;  // B^-1
+  /// The parameters s = B^-1 (x - alpha) of the point x (three coordinates).
+  std::array<T, 3> operator()(const T* x) const {
+    const T d[3] = {x[0] - alpha[0], x[1] - alpha[1], x[2] - alpha[2]};
+    std::array<T, 3> s;
+    for (int r = 0; r < 3; ++r) s[r] = inv[r][0] * d[0] + inv[r][1] * d[1] + inv[r][2] * d[2];
+    return s;
+  }
 };
 template <class T>
 std::optional<AffineInverse<T>> affine_inverse(const BSpline<T>& V) {
@@ -350,9 +347,8 @@ std::optional<BSpline<T>> pull_back_field(const BSpline<T>& F, const AffineInver
   phi.q = 3;
   phi.points.assign(3 * P.size(), T(0));
   for (std::size_t i = 0; i < P.size(); ++i) {
-    T x[3];
-    for (int c = 0; c < 3; ++c) x[c] = P.points[i * P.q + c] - Ainv.alpha[c];
-    for (int r = 0; r < 3; ++r) phi.points[i * 3 + r] = Ainv.inv[r][0] * x[0] + Ainv.inv[r][1] * x[1] + Ainv.inv[r][2] * x[2];
+    const auto s = Ainv(&P.points[i * P.q]);
+    std::copy(s.begin(), s.end(), phi.points.begin() + 3 * i);
   }
   try {
     return compose(F, phi, CompositionOptions{}, limits);
@@ -649,18 +645,19 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
     };
     for (std::size_t k = 0; k < M.cells.size(); ++k) {
       auto& cell = M.cells[k];
-      const BSpline<T> piece = M.trivariates[cell.trivariates.front()];
+      // (By index: source_index below appends to M.trivariates.)
+      const std::size_t piece = cell.trivariates.front();
       std::array<T, 3> lo, hi;
       for (int d = 0; d < 3; ++d) {
-        lo[d] = piece.domain_lo(d);
-        hi[d] = piece.domain_hi(d);
+        lo[d] = M.trivariates[piece].domain_lo(d);
+        hi[d] = M.trivariates[piece].domain_hi(d);
       }
       // Fields: the piece's own model's restricted to the piece (the same parameters), the other
       // model's pulled back where its cell is affine (else named in not_carried).
       const int own = origin[k].first;
       const VModel<T>& O = own == 0 ? A : B;
       for (const auto& [name, F] : O.cells[origin[k].second].attributes.fields)
-        cell.attributes.fields.emplace(name, restrict_to_box(F, lo, hi, limits));
+        cell.attributes.fields.emplace(name, restrict_to_box(F, lo.data(), hi.data(), limits));
       if (sources[k].a) {
         for (std::size_t t : A.cells[*sources[k].a].trivariates) cell.trivariates.push_back(source_index(0, t));
         merge_constants(cell.attributes, A.cells[*sources[k].a].attributes, blend);
@@ -678,7 +675,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
         std::map<std::string, BSpline<T>> pulled;
         for (const auto& [name, F] : fields) {
           std::optional<BSpline<T>> G;
-          if (inv) G = pull_back_field(F, *inv, piece, limits);
+          if (inv) G = pull_back_field(F, *inv, M.trivariates[piece], limits);
           if (G) pulled.emplace(name, std::move(*G));
           else cell.attributes.not_carried.push_back(name);
         }

@@ -54,7 +54,6 @@ class Tracer {
       dom_.hi[d + 2] = S2.domain_hi(d);
     }
   }
-  const Domain& domain() const { return dom_; }
 
   /// Newton on S1 - S2 = 0 with the minimum-norm step (3 equations, 4 unknowns), kept in the domain.
   bool settle(SsiParams& x) const {
@@ -277,14 +276,8 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
   if (o.grid < 1 || o.grid > 128) throw ValidationError("grid", "must be 1..128 (the seed search compares grid^4 cell pairs)", "give a seed grid of 1..128 cells per direction");
   {
     // Limits before the work: a branch of the first surface's size takes about diag / step points.
-    double lo[3], hi[3];
-    for (int c = 0; c < 3; ++c) lo[c] = hi[c] = S1.points[c];
-    for (std::size_t i = 0; i < S1.size(); ++i)
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], S1.points[i * S1.q + c]);
-        hi[c] = std::max(hi[c], S1.points[i * S1.q + c]);
-      }
-    const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    const auto b = control_bounds(S1);
+    const double diag = std::hypot(b[3] - b[0], b[4] - b[1], b[5] - b[2]);
     if (!std::isfinite(diag)) throw ValidationError("first", "has control points too large for double arithmetic", "scale the model down");
     if (o.step * 1e5 < diag)
       throw ValidationError("step", "is below 10^-5 of the first surface's size (" + std::to_string(diag) + "): too many points per branch",
@@ -358,26 +351,6 @@ SsiResult intersect_surfaces(const BSpline<double>& S1, const BSpline<double>& S
 }
 
 namespace {
-
-/// S restricted to [lo_d, hi_d] in both directions (exact splits; the box inside the domain).
-BSpline<Rational> restrict_box(BSpline<Rational> S, const Rational lo[2], const Rational hi[2], const Limits& limits) {
-  for (int d = 0; d < 2; ++d) {
-    if (S.domain_lo(d) < lo[d]) S = split_at(S, d, lo[d], limits).second;
-    if (hi[d] < S.domain_hi(d)) S = split_at(S, d, hi[d], limits).first;
-  }
-  return S;
-}
-
-/// Per coordinate the range of the control points (the convex hull property).
-void ranges(const BSpline<Rational>& S, Rational lo[3], Rational hi[3]) {
-  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = S.points[c];
-  for (std::size_t i = 0; i < S.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const Rational& x = S.points[i * S.q + c];
-      if (x < lo[c]) lo[c] = x;
-      if (hi[c] < x) hi[c] = x;
-    }
-}
 
 Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 
@@ -506,17 +479,16 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
       out.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point near the boundary)";
       break;
     }
-    const auto R1 = restrict_box(S1, &lo[0], &hi[0], limits), R2 = restrict_box(S2, &lo[2], &hi[2], limits);
+    const auto R1 = restrict_to_box(S1, &lo[0], &hi[0], limits), R2 = restrict_to_box(S2, &lo[2], &hi[2], limits);
     // Interval Jacobian over the box: rows 0-2 the hodographs' coefficient ranges, row 3 the direction.
     Rational Jlo[4][4], Jhi[4][4];
     {
       const BSpline<Rational> H[4] = {hodograph(R1, 0), hodograph(R1, 1), hodograph(R2, 0), hodograph(R2, 1)};
       for (int j = 0; j < 4; ++j) {
-        Rational hl[3], hh[3];
-        ranges(H[j], hl, hh);
+        const auto b = control_bounds(H[j]);
         for (int c = 0; c < 3; ++c) {
-          Jlo[c][j] = j < 2 ? hl[c] : Rational(-hh[c]);
-          Jhi[c][j] = j < 2 ? hh[c] : Rational(-hl[c]);
+          Jlo[c][j] = j < 2 ? b[c] : Rational(-b[c + 3]);
+          Jhi[c][j] = j < 2 ? b[c + 3] : Rational(-b[c]);
         }
       }
       for (int j = 0; j < 4; ++j) Jlo[3][j] = Jhi[3][j] = A[j];
@@ -560,11 +532,11 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
         point_box = point_box || rho[d] == 0;
       }
     }
-    const BSpline<Rational> RK = point_box ? R1 : restrict_box(R1, klo, khi, limits);
+    const BSpline<Rational> RK = point_box ? R1 : restrict_to_box(R1, klo, khi, limits);
+    const auto box = control_bounds(RK);
     Rational bound(0);
     for (int c = 0; c < 3; ++c) {
-      Rational m(0);
-      for (std::size_t i = 0; i < RK.size(); ++i) m = std::max(m, rabs(RK.points[i * RK.q + c] - p1[c]));
+      const Rational m = std::max(rabs(box[c] - p1[c]), rabs(box[c + 3] - p1[c]));
       bound += m * m;
     }
     out.distance2_bound = bound;

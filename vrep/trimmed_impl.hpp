@@ -479,19 +479,6 @@ Region<T> conjoin(const Region<T>& trim, Region<T> extra) {
   return region_and(std::move(parts));
 }
 
-template <class T>
-std::array<T, 6> control_bounds(const BSpline<T>& V) {
-  std::array<T, 6> b;
-  for (int a = 0; a < 3; ++a) b[a] = b[a + 3] = V.points[a];
-  for (std::size_t i = 0; i < V.size(); ++i)
-    for (int a = 0; a < 3; ++a) {
-      const T& x = V.points[i * V.q + a];
-      if (x < b[a]) b[a] = x;
-      if (b[a + 3] < x) b[a + 3] = x;
-    }
-  return b;
-}
-
 }  // namespace vrep_detail
 
 template <class T>
