@@ -333,6 +333,16 @@ TEST_CASE("vrep trimmed: integrals of attribute fields over (trimmed) cells, exa
   e = trimmed_field_integral(V, none, g, 0, 64);
   CHECK(e.moment.lower == R(2, 3));
   CHECK(e.moment.upper == R(2, 3));
+  // Edge knots: a jump (multiplicity p + 1 at 1/2: 0 then 1) integrates to 2 * 1/2 = 1, and an
+  // unclamped field (knots -1, 0, 1, 2: u on [0, 1]) to 2 * 1/2 = 1, exactly.
+  const auto jump = make_spline<R>({1, 0, 0}, {{R(0), R(0), R(1, 2), R(1, 2), R(1), R(1)}, {R(0), R(1)}, {R(0), R(1)}}, 1, {R(0), R(0), R(1), R(1)});
+  e = trimmed_field_integral(V, none, jump, 0, 64);
+  CHECK(e.moment.lower == R(1));
+  CHECK(e.moment.upper == R(1));
+  const auto open = make_spline<R>({1, 0, 0}, {{R(-1), R(0), R(1), R(2)}, {R(0), R(1)}, {R(0), R(1)}}, 1, {R(0), R(1)});
+  e = trimmed_field_integral(V, none, open, 0, 64);
+  CHECK(e.moment.lower == R(1));
+  CHECK(e.moment.upper == R(1));
   // Curved cells (rational): the constant field 1 integrates to the volume, 2 pi over the cylinder.
   const auto C = cylinder(R(1), R(2), 2, {R(0), R(0), R(0)});
   R lo(0), hi(0);
