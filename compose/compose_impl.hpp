@@ -7,76 +7,10 @@
 #include "compose/compose.hpp"
 #include "spline/elevate_impl.hpp"
 #include "spline/evaluate_impl.hpp"
+#include "spline/tensor_bernstein.hpp"
 
 namespace splinex {
 namespace detail {
-
-/// A scalar tensor-product Bernstein polynomial: degrees per direction, coefficients with
-/// direction 0 fastest.
-template <class T>
-struct Bern {
-  std::vector<int> deg;
-  std::vector<T> c;
-};
-
-inline std::size_t tensor_size(const std::vector<int>& deg) {
-  std::size_t s = 1;
-  for (int d : deg) s *= static_cast<std::size_t>(d) + 1;
-  return s;
-}
-
-/// Multi-index of flat index i (direction 0 fastest).
-inline void unflatten(std::size_t i, const std::vector<int>& deg, std::vector<int>& idx) {
-  for (std::size_t l = 0; l < deg.size(); ++l) {
-    idx[l] = static_cast<int>(i % (deg[l] + 1));
-    i /= deg[l] + 1;
-  }
-}
-
-template <class T>
-Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
-  const std::size_t k = f.deg.size();
-  Bern<T> h;
-  h.deg.resize(k);
-  for (std::size_t l = 0; l < k; ++l) h.deg[l] = f.deg[l] + g.deg[l];
-  h.c.assign(tensor_size(h.deg), T(0));
-  /// Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
-  /// by binom(a+b, K).
-  auto scaled = [&](const Bern<T>& p) {
-    std::vector<T> s(p.c);
-    std::vector<int> idx(k);
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      unflatten(i, p.deg, idx);
-      T b(1);
-      for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(p.deg[l], idx[l]);
-      s[i] *= b;
-    }
-    return s;
-  };
-  const std::vector<T> fs = scaled(f), gs = scaled(g);
-  std::vector<int> fi(k), gi(k);
-  std::vector<std::size_t> hstride(k);
-  std::size_t st = 1;
-  for (std::size_t l = 0; l < k; ++l) { hstride[l] = st; st *= h.deg[l] + 1; }
-  for (std::size_t a = 0; a < fs.size(); ++a) {
-    if (fs[a] == T(0)) continue;
-    unflatten(a, f.deg, fi);
-    for (std::size_t b = 0; b < gs.size(); ++b) {
-      unflatten(b, g.deg, gi);
-      std::size_t K = 0;
-      for (std::size_t l = 0; l < k; ++l) K += (fi[l] + gi[l]) * hstride[l];
-      h.c[K] += fs[a] * gs[b];
-    }
-  }
-  std::vector<int> hi(k);
-  for (std::size_t i = 0; i < h.c.size(); ++i) {
-    unflatten(i, h.deg, hi);
-    T b(1);
-    for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(h.deg[l], hi[l]);
-    h.c[i] /= b;
-  }
-  return h;
-}
 
 /// The cell index c of breakpoints bp with bp[c] <= x < bp[c+1], the last cell closed.
 template <class T>

@@ -6,7 +6,8 @@
 #include <cstdlib>
 #include <numeric>
 
-#include "compose/compose_impl.hpp"  // detail::Bern, bern_product: Bernstein products
+#include "compose/compose_impl.hpp"
+#include "spline/tensor_bernstein.hpp"  // detail::Bern, bern_product, bern_coordinate
 #include "float/mpfr.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
@@ -153,20 +154,6 @@ bool refine_within_budget(const std::vector<BSpline<Rational>*>& nets, std::vect
   return true;
 }
 
-/// One homogeneous coordinate (c < q: w P_c, or P_c for a polynomial spline; c == q: the weight,
-/// 1 for a polynomial spline) of a Bezier piece as a tensor Bernstein polynomial.
-detail::Bern<Rational> homogeneous_coordinate(const BSpline<Rational>& piece, int c) {
-  detail::Bern<Rational> b;
-  b.deg = piece.degrees;
-  const std::size_t n = piece.size(), q = piece.q;
-  b.c.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Rational w = piece.is_rational() ? piece.weights[i] : Rational(1);
-    b.c[i] = c == piece.q ? w : Rational(w * piece.points[i * q + c]);
-  }
-  return b;
-}
-
 /// Rational candidate or reference: on every Bezier piece of the common refinement,
 /// C - R = (C_h R_w - R_h C_w) / (C_w R_w) per coordinate; the numerator's largest Bernstein
 /// coefficient over the denominator's smallest (positive: the weights are) bounds |C - R| there.
@@ -187,13 +174,13 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
     for (std::size_t k = 0; k < pieces; ++k) {
       const BezierPiece<Rational> pc = FC.piece(k), pr = FR.piece(k);
       boxes[k] = pc.box;
-      const auto cw = homogeneous_coordinate(pc.spline, q), rw = homogeneous_coordinate(pr.spline, q);
+      const auto cw = detail::bern_coordinate(pc.spline, q), rw = detail::bern_coordinate(pr.spline, q);
       const auto W = detail::bern_product(cw, rw);
       const Rational wmin = *std::min_element(W.c.begin(), W.c.end());
       Rational nmax(0);
       for (int c = 0; c < q; ++c) {
-        const auto a = detail::bern_product(homogeneous_coordinate(pc.spline, c), rw);
-        const auto b = detail::bern_product(homogeneous_coordinate(pr.spline, c), cw);
+        const auto a = detail::bern_product(detail::bern_coordinate(pc.spline, c), rw);
+        const auto b = detail::bern_product(detail::bern_coordinate(pr.spline, c), cw);
         for (std::size_t i = 0; i < a.c.size(); ++i) nmax = std::max(nmax, Rational(abs(Rational(a.c[i] - b.c[i]))));
       }
       bound[k] = nmax / wmin;

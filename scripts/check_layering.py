@@ -11,6 +11,7 @@ DIRECT = {
     "exact": ["spline"],
     "float": ["exact"],
     "compose": ["float"],
+    "solve": ["compose"],
     "untrim": ["compose"],
     "vrep": ["compose"],
     "hybrid": ["float"],
@@ -18,7 +19,7 @@ DIRECT = {
     "fixtures": ["io"],
     "crosscheck": ["io"],
     "proofs": ["fixtures"],
-    "experiments": ["proofs", "crosscheck", "vrep"],
+    "experiments": ["proofs", "crosscheck", "vrep", "solve"],
     "apps": ["experiments"],
     "python": ["crosscheck", "fixtures"],
 }

@@ -2,7 +2,8 @@
 #pragma once
 #include <deque>
 
-#include "compose/compose_impl.hpp"  // detail::Bern, bern_product
+#include "compose/compose_impl.hpp"
+#include "spline/tensor_bernstein.hpp"
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
@@ -18,49 +19,20 @@ using detail::Bern;
 /// c = 1..3 the geometry w x, w y, w z.
 template <class T>
 Bern<T> homogeneous(const BSpline<T>& piece, int c) {
-  Bern<T> b;
-  b.deg = piece.degrees;
-  const std::size_t n = piece.size();
-  b.c.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const T w = piece.is_rational() ? piece.weights[i] : T(1);
-    b.c[i] = c == 0 ? w : T(w * piece.points[i * piece.q + (c - 1)]);
-  }
-  return b;
+  return detail::bern_coordinate(piece, c == 0 ? piece.q : c - 1);
 }
 
-/// d/dt_l of a tensor Bernstein polynomial on [0, 1]^3 (degree deg_l >= 1).
 template <class T>
 Bern<T> derivative(const Bern<T>& b, int l) {
-  Bern<T> out;
-  out.deg = b.deg;
-  out.deg[l] -= 1;
-  out.c.resize(detail::tensor_size(out.deg));
-  std::vector<int> idx(3);
-  std::size_t stride = 1;
-  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
-  const T p(b.deg[l]);
-  for (std::size_t i = 0; i < out.c.size(); ++i) {
-    detail::unflatten(i, out.deg, idx);
-    std::size_t src = 0, s = 1;
-    for (int k = 0; k < 3; ++k) {
-      src += idx[k] * s;
-      s *= b.deg[k] + 1;
-    }
-    out.c[i] = p * (b.c[src + stride] - b.c[src]);
-  }
-  return out;
+  return detail::bern_derivative(b, l);
 }
-
 template <class T>
 Bern<T> sub(Bern<T> a, const Bern<T>& b) {
-  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] -= b.c[i];
-  return a;
+  return detail::bern_sub(std::move(a), b);
 }
 template <class T>
 Bern<T> add(Bern<T> a, const Bern<T>& b) {
-  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] += b.c[i];
-  return a;
+  return detail::bern_add(std::move(a), b);
 }
 template <class T>
 Bern<T> mul(const Bern<T>& a, const Bern<T>& b) {
@@ -111,34 +83,10 @@ Bern<T> jacobian_numerator(const BSpline<T>& piece) {
   return det;
 }
 
-/// The two halves of b at t_l = 1/2 (de Casteljau along every line of direction l).
+/// The two halves of b at t_l = 1/2.
 template <class T>
 std::pair<Bern<T>, Bern<T>> split_half(const Bern<T>& b, int l) {
-  Bern<T> L = b, R = b;
-  const int p = b.deg[l];
-  std::size_t stride = 1;
-  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
-  const std::size_t lines = b.c.size() / (p + 1);
-  std::vector<T> w(p + 1);
-  const T half = T(1) / T(2);
-  std::vector<int> idx(3);
-  auto reduced = b.deg;
-  reduced[l] = 0;
-  for (std::size_t line = 0; line < lines; ++line) {
-    detail::unflatten(line, reduced, idx);
-    std::size_t base = 0, s = 1;
-    for (int k = 0; k < 3; ++k) {
-      base += idx[k] * s;
-      s *= b.deg[k] + 1;
-    }
-    for (int i = 0; i <= p; ++i) w[i] = b.c[base + i * stride];
-    for (int r = 0; r <= p; ++r) {
-      L.c[base + r * stride] = w[0];
-      R.c[base + (p - r) * stride] = w[p - r];
-      for (int i = 0; i < p - r; ++i) w[i] = (w[i] + w[i + 1]) * half;
-    }
-  }
-  return {std::move(L), std::move(R)};
+  return detail::bern_split(b, l, T(1) / T(2));
 }
 
 template <class T>

@@ -1,0 +1,483 @@
+// The subdivision solver (solve/solver.hpp), instantiated for Rational (certified) and double.
+#include "solve/solver.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <type_traits>
+
+#include "float/arith_spec.hpp"
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+namespace {
+
+using detail::Bern;
+
+template <class T>
+double dbl(const T& x) {
+  if constexpr (std::is_same_v<T, double>)
+    return x;
+  else
+    return to_double(ArithTraits<T>::to_rational(x));
+}
+
+template <class T>
+T from_dbl(double x) {
+  if constexpr (std::is_same_v<T, double>)
+    return x;
+  else
+    return ArithTraits<T>::from_rational(exact_from_double(x, "solver"));
+}
+
+template <class T>
+T tabs(const T& x) {
+  return x < T(0) ? T(T(0) - x) : x;
+}
+
+template <class T>
+const T& tmin(const T& a, const T& b) {
+  return b < a ? b : a;
+}
+template <class T>
+const T& tmax(const T& a, const T& b) {
+  return a < b ? b : a;
+}
+
+/// Krawczyk's test on [0, 1]^n (the polynomials' own box).
+template <class T>
+struct KrawczykResult {
+  enum Outcome { unknown, excluded, unique } outcome = unknown;
+  std::vector<T> lo, hi;  // K(X) (meaningful unless unknown)
+  bool contraction = false;  // ||I - Y J(X)||_inf < 1
+};
+
+/// With the centre c (default: the box's centre); c - Y F(c) + (I - Y J(X)) (X - c).
+template <class T>
+KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, bool strict, std::vector<T> c = {}) {
+  const int n = static_cast<int>(f.size());
+  KrawczykResult<T> out;
+  if (c.empty()) c.assign(n, T(1) / T(2));
+  std::vector<T> F(n);
+  std::vector<std::vector<Bern<T>>> J(n, std::vector<Bern<T>>(n));
+  Eigen::MatrixXd Jc(n, n);
+  for (int i = 0; i < n; ++i) {
+    F[i] = detail::bern_value(f[i], c);
+    for (int j = 0; j < n; ++j) {
+      J[i][j] = detail::bern_derivative(f[i], j);
+      Jc(i, j) = dbl(detail::bern_value(J[i][j], c));
+    }
+  }
+  if (!Jc.allFinite()) return out;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(Jc);
+  if (!lu.isInvertible()) return out;
+  const Eigen::MatrixXd Yd = lu.inverse();
+  if (!Yd.allFinite()) return out;
+  std::vector<std::vector<T>> Y(n, std::vector<T>(n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) Y[i][j] = from_dbl<T>(Yd(i, j));
+  std::vector<std::vector<std::pair<T, T>>> R(n, std::vector<std::pair<T, T>>(n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) R[i][j] = detail::bern_range(J[i][j]);
+  out.lo.resize(n);
+  out.hi.resize(n);
+  bool inside_open = true, inside_closed = true, excluded = false;
+  out.contraction = true;
+  T reach(0);
+  for (int j = 0; j < n; ++j) reach = tmax(reach, tmax(c[j], T(T(1) - c[j])));
+  for (int i = 0; i < n; ++i) {
+    T yf(0), sum(0);
+    for (int k = 0; k < n; ++k) yf += Y[i][k] * F[k];
+    for (int j = 0; j < n; ++j) {
+      T slo(0), shi(0);  // the range of sum_k Y_ik J_kj over the box
+      for (int k = 0; k < n; ++k) {
+        const T p = Y[i][k] * R[k][j].first, q = Y[i][k] * R[k][j].second;
+        slo += tmin(p, q);
+        shi += tmax(p, q);
+      }
+      const T delta(i == j ? 1 : 0);
+      sum += tmax(tabs(T(delta - slo)), tabs(T(delta - shi)));
+    }
+    // (X - c) is within [-m, m]^n, m the larger distance of c from a side: the i-th row adds
+    // [-m sum, m sum].
+    const T mid = c[i] - yf, rad = sum * reach;
+    out.lo[i] = mid - rad;
+    out.hi[i] = mid + rad;
+    out.contraction = out.contraction && sum < T(1);
+    excluded = excluded || out.hi[i] < T(0) || T(1) < out.lo[i];
+    inside_open = inside_open && T(0) < out.lo[i] && out.hi[i] < T(1);
+    inside_closed = inside_closed && !(out.lo[i] < T(0)) && !(T(1) < out.hi[i]);
+  }
+  if (excluded)
+    out.outcome = KrawczykResult<T>::excluded;
+  else if (inside_open || (!strict && inside_closed && out.contraction))
+    out.outcome = KrawczykResult<T>::unique;
+  return out;
+}
+
+template <class T>
+struct Node {
+  std::vector<Bern<T>> f;
+  std::vector<T> lo, hi;  // global box
+  int depth = 0;
+};
+
+/// f restricted to the local box [a, b] (in f's own coordinates), with the global box updated.
+template <class T>
+Node<T> restrict_node(const Node<T>& N, const std::vector<T>& a, const std::vector<T>& b) {
+  Node<T> out = N;
+  const std::size_t n = N.lo.size();
+  for (std::size_t l = 0; l < n; ++l) {
+    for (auto& g : out.f) g = detail::bern_restrict(g, static_cast<int>(l), a[l], b[l]);
+    const T w = N.hi[l] - N.lo[l];
+    out.lo[l] = N.lo[l] + w * a[l];
+    out.hi[l] = N.lo[l] + w * b[l];
+  }
+  return out;
+}
+
+/// x rounded outward to a multiple of 2^-bits (exact arithmetic: keeps the numbers short).
+template <class T>
+T round_dyadic(const T& x, int bits, bool down) {
+  if constexpr (std::is_same_v<T, Rational>) {
+    using boost::multiprecision::mpz_int;
+    const mpz_int scale = mpz_int(1) << bits;
+    const mpz_int num = boost::multiprecision::numerator(x) * scale, den = boost::multiprecision::denominator(x);
+    mpz_int q = num / den;  // truncates toward zero
+    const Rational qr(q);
+    const Rational scaled = x * Rational(scale);
+    if (down && scaled < qr) q -= 1;
+    if (!down && qr < scaled) q += 1;
+    return Rational(q) / Rational(scale);
+  } else {
+    (void)bits;
+    (void)down;
+    return x;
+  }
+}
+
+/// Shrinks the box of a node holding exactly one root (certified) by X <- K(X) with X: every zero
+/// in X lies in K(X), so the root stays inside, and no further test is needed.
+template <class T>
+Node<T> refine(Node<T> N, std::vector<T> klo, std::vector<T> khi, const std::vector<T>& width0, int bits) {
+  const std::size_t n = N.lo.size();
+  for (int it = 0; it < 12; ++it) {
+    // Clip K to [0, 1] and round outward (dyadic, a little finer than the box).
+    bool small = true;
+    for (std::size_t l = 0; l < n; ++l) {
+      klo[l] = tmax(klo[l], T(0));
+      khi[l] = tmin(khi[l], T(1));
+      const double w = dbl(T(khi[l] - klo[l]));
+      const int e = w > 0 ? std::max(8, 8 - static_cast<int>(std::floor(std::log2(w)))) : 8;
+      klo[l] = tmax(round_dyadic(klo[l], e, true), T(0));
+      khi[l] = tmin(round_dyadic(khi[l], e, false), T(1));
+      if (!(klo[l] < khi[l])) return N;  // a box of width 0 (double's rounding): keep the last one
+    }
+    const bool progress = [&] {
+      for (std::size_t l = 0; l < n; ++l)
+        if (T(0) < klo[l] || khi[l] < T(1)) return true;
+      return false;
+    }();
+    if (!progress) break;
+    N = restrict_node(N, klo, khi);
+    for (std::size_t l = 0; l < n; ++l)
+      small = small && dbl(T(N.hi[l] - N.lo[l])) <= std::ldexp(dbl(width0[l]), -bits);
+    if (small) break;
+    const auto K = krawczyk(N.f, false);
+    if (K.outcome == KrawczykResult<T>::unknown) break;
+    klo = K.lo;
+    khi = K.hi;
+  }
+  return N;
+}
+
+/// Looks for an exact rational root in the node's box: the simplest rational numbers near
+/// Newton's estimate (in double) and in the box itself, checked by exact evaluation.
+template <class T>
+bool recognize(const Node<T>& N, std::vector<T>& point) {
+  if constexpr (!std::is_same_v<T, Rational>) {
+    (void)N;
+    (void)point;
+    return false;
+  } else {
+    const std::size_t n = N.lo.size();
+    auto check = [&](const std::vector<Rational>& x) {
+      std::vector<Rational> t(n);
+      for (std::size_t l = 0; l < n; ++l) {
+        if (x[l] < N.lo[l] || N.hi[l] < x[l]) return false;
+        const Rational w = N.hi[l] - N.lo[l];
+        t[l] = w == 0 ? Rational(0) : Rational((x[l] - N.lo[l]) / w);
+      }
+      for (const auto& g : N.f)
+        if (detail::bern_value(g, t) != 0) return false;
+      point = x;
+      return true;
+    };
+    // The simplest point of the box.
+    std::vector<Rational> x(n);
+    for (std::size_t l = 0; l < n; ++l) x[l] = simplest_rational_between(N.lo[l], N.hi[l]);
+    if (check(x)) return true;
+    // Newton in double on the local polynomials from the centre.
+    std::vector<Bern<double>> fd(N.f.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      fd[i].deg = N.f[i].deg;
+      for (const auto& v : N.f[i].c) fd[i].c.push_back(to_double(v));
+    }
+    std::vector<double> t(n, 0.5);
+    for (int it = 0; it < 60; ++it) {
+      Eigen::VectorXd F(n);
+      Eigen::MatrixXd J(n, n);
+      for (std::size_t i = 0; i < n; ++i) {
+        F(i) = detail::bern_value(fd[i], t);
+        for (std::size_t j = 0; j < n; ++j) J(i, j) = detail::bern_value(detail::bern_derivative(fd[i], static_cast<int>(j)), t);
+      }
+      if (!F.allFinite() || !J.allFinite()) return false;
+      if (F.norm() == 0) break;
+      const Eigen::VectorXd d = J.fullPivLu().solve(F);
+      if (!d.allFinite()) break;
+      for (std::size_t l = 0; l < n; ++l) t[l] = std::clamp(t[l] - d(l), -0.5, 1.5);
+      if (d.lpNorm<Eigen::Infinity>() < 1e-17) break;
+    }
+    for (std::size_t l = 0; l < n; ++l) {
+      if (!std::isfinite(t[l])) return false;
+      const Rational w = N.hi[l] - N.lo[l];
+      const Rational xl = N.lo[l] + w * exact_from_double(t[l], "newton");
+      const Rational tol = w * Rational(1, 1 << 30) + Rational(1, 1) / Rational(boost::multiprecision::mpz_int(1) << 200);
+      x[l] = simplest_rational_between(xl - tol, xl + tol);
+    }
+    return check(x);
+  }
+}
+
+template <class T>
+bool boxes_touch(const std::vector<T>& alo, const std::vector<T>& ahi, const std::vector<T>& blo, const std::vector<T>& bhi) {
+  for (std::size_t l = 0; l < alo.size(); ++l)
+    if (ahi[l] < blo[l] || bhi[l] < alo[l]) return false;
+  return true;
+}
+template <class T>
+bool box_inside(const std::vector<T>& alo, const std::vector<T>& ahi, const std::vector<T>& blo, const std::vector<T>& bhi) {
+  for (std::size_t l = 0; l < alo.size(); ++l)
+    if (alo[l] < blo[l] || bhi[l] < ahi[l]) return false;
+  return true;
+}
+
+template <class T>
+RootBox<T> root_of(const Node<T>& N, bool unique) {
+  RootBox<T> r;
+  r.lo = N.lo;
+  r.hi = N.hi;
+  r.unique = unique;
+  r.exact = recognize(N, r.point);
+  if (!r.exact) {
+    r.point.resize(N.lo.size());
+    for (std::size_t l = 0; l < N.lo.size(); ++l) r.point[l] = (N.lo[l] + N.hi[l]) / T(2);
+  }
+  return r;
+}
+
+}  // namespace
+
+Rational simplest_rational_between(const Rational& a, const Rational& b) {
+  if (b < a) return simplest_rational_between(b, a);
+  if (!(0 < a) && !(b < 0)) return Rational(0);
+  if (b < 0) return Rational(-simplest_rational_between(Rational(-b), Rational(-a)));
+  // 0 < a <= b: a continued-fraction step.
+  using boost::multiprecision::mpz_int;
+  const mpz_int fl = boost::multiprecision::numerator(a) / boost::multiprecision::denominator(a);  // floor (a > 0)
+  const Rational n(fl);
+  if (n == a) return a;
+  if (!(b < n + 1)) return Rational(n + 1);
+  return Rational(n + Rational(1) / simplest_rational_between(Rational(1) / (b - n), Rational(1) / (a - n)));
+}
+
+template <class T>
+bool SolveResult<T>::complete() const {
+  if (!undecided.empty() || budget_exhausted) return false;
+  for (const auto& r : roots)
+    if (!r.unique) return false;
+  return true;
+}
+
+template <class T>
+SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
+                            const SolveOptions& options) {
+  const std::size_t n = f.size();
+  if (n == 0) throw ValidationError("system", "has no equations", "give n equations in n unknowns");
+  if (lo.size() != n || hi.size() != n)
+    throw ValidationError("system", "has " + std::to_string(n) + " equations but a box of " + std::to_string(lo.size()) + " unknowns",
+                          "give as many equations as unknowns");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (f[i].deg.size() != n || f[i].c.size() != detail::tensor_size(f[i].deg))
+      throw ValidationError("system[" + std::to_string(i) + "]", "is not a polynomial in the n unknowns", "give Bernstein coefficients for every multi-index");
+    bool zero = true;
+    for (const auto& x : f[i].c) zero = zero && x == T(0);
+    if (zero)
+      throw ValidationError("system[" + std::to_string(i) + "]", "is identically zero: the system is degenerate (its zeros are not isolated)",
+                            "remove the equation or give a system whose solutions are points");
+  }
+  for (std::size_t l = 0; l < n; ++l)
+    if (!(lo[l] < hi[l])) throw ValidationError("box", "has an empty side", "give lo < hi in every unknown");
+  if (options.max_depth < 1 || options.max_depth > 200) throw UsageError("max-depth", "must be in [1, 200]", "use e.g. 30");
+  const std::vector<T> width0 = [&] {
+    std::vector<T> w(n);
+    for (std::size_t l = 0; l < n; ++l) w[l] = hi[l] - lo[l];
+    return w;
+  }();
+
+  SolveResult<T> out;
+  std::vector<Node<T>> stack{Node<T>{f, lo, hi, 0}}, leaves;
+  std::vector<Node<T>> certified;  // refined boxes with one root each
+  while (!stack.empty()) {
+    if (out.boxes >= options.max_boxes) {
+      out.budget_exhausted = true;
+      for (auto& N : stack) leaves.push_back(std::move(N));
+      break;
+    }
+    Node<T> N = std::move(stack.back());
+    stack.pop_back();
+    ++out.boxes;
+    bool discarded = false;
+    for (const auto& g : N.f)
+      if (detail::bern_sign(g) != 0) discarded = true;
+    if (discarded) {
+      ++out.discarded_by_sign;
+      continue;
+    }
+    const auto K = krawczyk(N.f, true);
+    if (K.outcome == KrawczykResult<T>::excluded) {
+      ++out.discarded_by_krawczyk;
+      continue;
+    }
+    if (K.outcome == KrawczykResult<T>::unique) {
+      certified.push_back(refine(N, K.lo, K.hi, width0, options.refine_bits));
+      continue;
+    }
+    if (N.depth >= options.max_depth) {
+      leaves.push_back(std::move(N));
+      continue;
+    }
+    // Halve in every direction: 2^n children.
+    std::vector<std::vector<Bern<T>>> parts{N.f};
+    std::vector<std::vector<T>> plo{N.lo}, phi{N.hi};
+    const T half = T(1) / T(2);
+    for (std::size_t l = 0; l < n; ++l) {
+      std::vector<std::vector<Bern<T>>> next;
+      std::vector<std::vector<T>> nlo, nhi;
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::vector<Bern<T>> a, b;
+        for (const auto& g : parts[k]) {
+          auto [L, R] = detail::bern_split(g, static_cast<int>(l), half);
+          a.push_back(std::move(L));
+          b.push_back(std::move(R));
+        }
+        const T mid = (plo[k][l] + phi[k][l]) * half;
+        next.push_back(std::move(a));
+        nlo.push_back(plo[k]);
+        nhi.push_back(phi[k]);
+        nhi.back()[l] = mid;
+        next.push_back(std::move(b));
+        nlo.push_back(plo[k]);
+        nhi.push_back(phi[k]);
+        nlo.back()[l] = mid;
+      }
+      parts = std::move(next);
+      plo = std::move(nlo);
+      phi = std::move(nhi);
+    }
+    for (std::size_t k = parts.size(); k-- > 0;) stack.push_back(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
+  }
+  for (const auto& N : certified) out.roots.push_back(root_of(N, true));
+
+  // Undecided leaves: clusters of touching boxes (a sweep along direction 0), then the closed test
+  // on each cluster's hull.
+  std::vector<std::size_t> order(leaves.size()), parent(leaves.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return leaves[a].lo[0] < leaves[b].lo[0]; });
+  const auto find = [&](std::size_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  for (std::size_t i = 0; i < order.size() && leaves.size() <= 20000; ++i)
+    for (std::size_t j = i + 1; j < order.size() && !(leaves[order[i]].hi[0] < leaves[order[j]].lo[0]); ++j)
+      if (boxes_touch(leaves[order[i]].lo, leaves[order[i]].hi, leaves[order[j]].lo, leaves[order[j]].hi))
+        parent[find(order[i])] = find(order[j]);
+  std::vector<std::vector<std::size_t>> clusters;
+  if (leaves.size() > 20000) {
+    // Too many to join pairwise: one undecided hull around all of them.
+    clusters.emplace_back(leaves.size());
+    std::iota(clusters[0].begin(), clusters[0].end(), 0);
+  } else {
+    std::vector<long> index(leaves.size(), -1);
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      const std::size_t r = find(i);
+      if (index[r] < 0) {
+        index[r] = static_cast<long>(clusters.size());
+        clusters.emplace_back();
+      }
+      clusters[index[r]].push_back(i);
+    }
+  }
+  const Node<T> root{f, lo, hi, 0};
+  for (const auto& members : clusters) {
+    std::vector<T> clo = leaves[members[0]].lo, chi = leaves[members[0]].hi;
+    for (std::size_t m : members)
+      for (std::size_t l = 0; l < n; ++l) {
+        clo[l] = tmin(clo[l], leaves[m].lo[l]);
+        chi[l] = tmax(chi[l], leaves[m].hi[l]);
+      }
+    std::vector<T> a(n), b(n);
+    for (std::size_t l = 0; l < n; ++l) {
+      a[l] = (clo[l] - lo[l]) / width0[l];
+      b[l] = (chi[l] - lo[l]) / width0[l];
+    }
+    const Node<T> H = restrict_node(root, a, b);
+    const auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, false);
+    if (K.outcome == KrawczykResult<T>::excluded) continue;
+    if (K.outcome == KrawczykResult<T>::unique) {
+      const Node<T> R = refine(H, K.lo, K.hi, width0, options.refine_bits);
+      // A certified root already found in the hull is this one; one that may straddle it is
+      // left undecided.
+      bool same = false, unclear = false;
+      for (const auto& r : out.roots) {
+        if (!boxes_touch(r.lo, r.hi, H.lo, H.hi)) continue;
+        if (box_inside(r.lo, r.hi, H.lo, H.hi))
+          same = true;
+        else
+          unclear = true;
+      }
+      if (same && !unclear) continue;
+      if (!unclear) {
+        out.roots.push_back(root_of(R, true));
+        continue;
+      }
+    }
+    RootBox<T> u = root_of(H, false);
+    if (u.exact) {
+      // Krawczyk about the exact root r (F(r) = 0): a contraction on the hull means r is its only
+      // root, and a simple one.
+      std::vector<T> c(n);
+      for (std::size_t l = 0; l < n; ++l) c[l] = (u.point[l] - H.lo[l]) / (H.hi[l] - H.lo[l]);
+      const auto Kr = krawczyk(H.f, false, c);
+      u.unique = Kr.contraction;
+    }
+    // An exact root that is not certified simple is a root of unknown multiplicity, and its hull
+    // stays undecided (it may hold more).
+    if (u.exact) out.roots.push_back(u);
+    if (!u.unique) out.undecided.push_back(std::move(u));
+  }
+  return out;
+}
+
+template struct SolveResult<Rational>;
+template struct SolveResult<double>;
+template SolveResult<Rational> solve_system(const std::vector<Bern<Rational>>&, const std::vector<Rational>&, const std::vector<Rational>&,
+                                            const SolveOptions&);
+template SolveResult<double> solve_system(const std::vector<Bern<double>>&, const std::vector<double>&, const std::vector<double>&,
+                                          const SolveOptions&);
+
+}  // namespace splinex

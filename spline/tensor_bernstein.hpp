@@ -1,0 +1,247 @@
+// Scalar tensor-product polynomials in Bernstein form on the unit box [0, 1]^n: the one home of
+// their products, derivatives, de Casteljau splits and values (used by composition, the V-rep's
+// regularity and trimming, verification and the subdivision solver).
+#pragma once
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "spline/bernstein.hpp"
+#include "spline/bspline.hpp"
+
+namespace splinex {
+namespace detail {
+
+/// A scalar tensor-product Bernstein polynomial on [0, 1]^n: degrees per direction, coefficients
+/// with direction 0 fastest.
+template <class T>
+struct Bern {
+  std::vector<int> deg;
+  std::vector<T> c;
+};
+
+inline std::size_t tensor_size(const std::vector<int>& deg) {
+  std::size_t s = 1;
+  for (int d : deg) s *= static_cast<std::size_t>(d) + 1;
+  return s;
+}
+
+/// Multi-index of flat index i (direction 0 fastest).
+inline void unflatten(std::size_t i, const std::vector<int>& deg, std::vector<int>& idx) {
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    idx[l] = static_cast<int>(i % (deg[l] + 1));
+    i /= deg[l] + 1;
+  }
+}
+
+/// The stride of direction l in a coefficient array of degrees deg.
+inline std::size_t tensor_stride(const std::vector<int>& deg, int l) {
+  std::size_t s = 1;
+  for (int k = 0; k < l; ++k) s *= static_cast<std::size_t>(deg[k]) + 1;
+  return s;
+}
+
+template <class T>
+Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
+  const std::size_t k = f.deg.size();
+  Bern<T> h;
+  h.deg.resize(k);
+  for (std::size_t l = 0; l < k; ++l) h.deg[l] = f.deg[l] + g.deg[l];
+  h.c.assign(tensor_size(h.deg), T(0));
+  /// Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
+  /// by binom(a+b, K).
+  auto scaled = [&](const Bern<T>& p) {
+    std::vector<T> s(p.c);
+    std::vector<int> idx(k);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      unflatten(i, p.deg, idx);
+      T b(1);
+      for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(p.deg[l], idx[l]);
+      s[i] *= b;
+    }
+    return s;
+  };
+  const std::vector<T> fs = scaled(f), gs = scaled(g);
+  std::vector<int> fi(k), gi(k);
+  std::vector<std::size_t> hstride(k);
+  std::size_t st = 1;
+  for (std::size_t l = 0; l < k; ++l) { hstride[l] = st; st *= h.deg[l] + 1; }
+  for (std::size_t a = 0; a < fs.size(); ++a) {
+    if (fs[a] == T(0)) continue;
+    unflatten(a, f.deg, fi);
+    for (std::size_t b = 0; b < gs.size(); ++b) {
+      unflatten(b, g.deg, gi);
+      std::size_t K = 0;
+      for (std::size_t l = 0; l < k; ++l) K += (fi[l] + gi[l]) * hstride[l];
+      h.c[K] += fs[a] * gs[b];
+    }
+  }
+  std::vector<int> hi(k);
+  for (std::size_t i = 0; i < h.c.size(); ++i) {
+    unflatten(i, h.deg, hi);
+    T b(1);
+    for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(h.deg[l], hi[l]);
+    h.c[i] /= b;
+  }
+  return h;
+}
+
+/// a + b and a - b (same degrees).
+template <class T>
+Bern<T> bern_add(Bern<T> a, const Bern<T>& b) {
+  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] += b.c[i];
+  return a;
+}
+template <class T>
+Bern<T> bern_sub(Bern<T> a, const Bern<T>& b) {
+  for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] -= b.c[i];
+  return a;
+}
+
+/// d/dt_l on [0, 1]^n: degree deg_l - 1, coefficients deg_l (c_{i+1} - c_i). Degree 0 gives the
+/// zero polynomial of degree 0.
+template <class T>
+Bern<T> bern_derivative(const Bern<T>& b, int l) {
+  Bern<T> out;
+  out.deg = b.deg;
+  if (b.deg[l] == 0) {
+    out.c.assign(b.c.size(), T(0));
+    return out;
+  }
+  out.deg[l] -= 1;
+  out.c.resize(tensor_size(out.deg));
+  const std::size_t n = b.deg.size(), stride = tensor_stride(b.deg, static_cast<int>(l));
+  std::vector<int> idx(n);
+  const T p(b.deg[l]);
+  for (std::size_t i = 0; i < out.c.size(); ++i) {
+    unflatten(i, out.deg, idx);
+    std::size_t src = 0;
+    for (std::size_t k = 0; k < n; ++k) src += idx[k] * tensor_stride(b.deg, static_cast<int>(k));
+    out.c[i] = p * (b.c[src + stride] - b.c[src]);
+  }
+  return out;
+}
+
+/// The two parts of b at t_l = t (0 < t < 1), each reparametrized onto [0, 1] in direction l (de
+/// Casteljau along every line of direction l).
+template <class T>
+std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
+  Bern<T> L = b, R = b;
+  const int p = b.deg[l];
+  const std::size_t n = b.deg.size(), stride = tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
+  std::vector<T> w(p + 1);
+  const T s = T(1) - t;
+  std::vector<int> idx(n);
+  auto reduced = b.deg;
+  reduced[l] = 0;
+  for (std::size_t line = 0; line < lines; ++line) {
+    unflatten(line, reduced, idx);
+    std::size_t base = 0;
+    for (std::size_t k = 0; k < n; ++k) base += idx[k] * tensor_stride(b.deg, static_cast<int>(k));
+    for (int i = 0; i <= p; ++i) w[i] = b.c[base + i * stride];
+    for (int r = 0; r <= p; ++r) {
+      L.c[base + r * stride] = w[0];
+      R.c[base + (p - r) * stride] = w[p - r];
+      for (int i = 0; i < p - r; ++i) w[i] = w[i] * s + w[i + 1] * t;
+    }
+  }
+  return {std::move(L), std::move(R)};
+}
+
+/// b restricted to [a, c] in direction l (0 <= a < c <= 1), reparametrized onto [0, 1].
+template <class T>
+Bern<T> bern_restrict(Bern<T> b, int l, const T& a, const T& c) {
+  if (T(0) < a) b = bern_split(b, l, a).second;
+  const T top = (c - a) / (T(1) - a);  // c in the coordinates of [a, 1]
+  if (top < T(1)) b = bern_split(b, l, top).first;
+  return b;
+}
+
+/// b with direction l fixed at its end (side 0: t_l = 0, side 1: t_l = 1): one direction fewer.
+template <class T>
+Bern<T> bern_face(const Bern<T>& b, int l, int side) {
+  Bern<T> out;
+  const std::size_t n = b.deg.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (static_cast<int>(k) != l) out.deg.push_back(b.deg[k]);
+  if (out.deg.empty()) out.deg.push_back(0);  // a constant
+  out.c.resize(tensor_size(out.deg));
+  std::vector<int> idx(n), odx(out.deg.size());
+  for (std::size_t i = 0; i < b.c.size(); ++i) {
+    unflatten(i, b.deg, idx);
+    if (idx[l] != (side ? b.deg[l] : 0)) continue;
+    std::size_t o = 0, s = 1;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (static_cast<int>(k) == l) continue;
+      o += idx[k] * s;
+      s *= b.deg[k] + 1;
+    }
+    out.c[o] = b.c[i];
+  }
+  return out;
+}
+
+/// The value at x in [0, 1]^n (de Casteljau, direction by direction).
+template <class T>
+T bern_value(const Bern<T>& b, const std::vector<T>& x) {
+  std::vector<T> cur = b.c;
+  std::vector<int> deg = b.deg;
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    // Reduce direction l (now the fastest of the remaining ones) to its value at x[l].
+    const int p = deg[l];
+    const std::size_t lines = cur.size() / (p + 1);
+    std::vector<T> next(lines);
+    const T s = T(1) - x[l];
+    std::vector<T> w(p + 1);
+    for (std::size_t line = 0; line < lines; ++line) {
+      for (int i = 0; i <= p; ++i) w[i] = cur[line * (p + 1) + i];
+      for (int r = p; r > 0; --r)
+        for (int i = 0; i < r; ++i) w[i] = w[i] * s + w[i + 1] * x[l];
+      next[line] = w[0];
+    }
+    cur = std::move(next);
+  }
+  return cur[0];
+}
+
+/// +1 when every coefficient is > 0, -1 when every one is < 0, else 0 (the convex hull property:
+/// a definite sign is a certificate that b has no zero on the box).
+template <class T>
+int bern_sign(const Bern<T>& b) {
+  bool pos = true, neg = true;
+  for (const T& x : b.c) {
+    pos = pos && T(0) < x;
+    neg = neg && x < T(0);
+  }
+  return pos ? 1 : neg ? -1 : 0;
+}
+
+/// The smallest and largest coefficient: a range of b's values on the box.
+template <class T>
+std::pair<T, T> bern_range(const Bern<T>& b) {
+  T lo = b.c[0], hi = b.c[0];
+  for (const T& x : b.c) {
+    if (x < lo) lo = x;
+    if (hi < x) hi = x;
+  }
+  return {lo, hi};
+}
+
+/// One homogeneous coordinate of a Bezier piece as a tensor Bernstein polynomial: c < q the
+/// coordinate times the weight (w P_c; P_c for a polynomial spline), c == q the weight (1 for a
+/// polynomial spline).
+template <class T>
+Bern<T> bern_coordinate(const BSpline<T>& piece, int c) {
+  Bern<T> b;
+  b.deg = piece.degrees;
+  const std::size_t n = piece.size(), q = static_cast<std::size_t>(piece.q);
+  b.c.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const T w = piece.is_rational() ? piece.weights[i] : T(1);
+    b.c[i] = c == piece.q ? w : T(w * piece.points[i * q + c]);
+  }
+  return b;
+}
+
+}  // namespace detail
+}  // namespace splinex

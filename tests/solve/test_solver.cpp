@@ -1,0 +1,190 @@
+// The subdivision solver (solve/solver.hpp): roots known in closed form (rational ones must come
+// out exact, irrational ones in certified boxes that contain them, checked by exact squares), roots
+// on the lines where boxes are split and on the box's sides, a double root, roots 2^-40 apart, a
+// degenerate system, and the solver in double beside the exact one.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "exact/rational.hpp"
+#include "solve/solver.hpp"
+
+using namespace splinex;
+using R = Rational;
+using detail::Bern;
+
+namespace {
+
+R binom(int n, int k) {
+  R r(1);
+  for (int i = 1; i <= k; ++i) r = r * R(n - k + i) / R(i);
+  return r;
+}
+
+/// The Bernstein form on [0, 1]^2 of degrees (n, m) of sum a[{k, l}] x^k y^l (for the tests: an
+/// independent conversion, b_ij = sum C(i,k)/C(n,k) C(j,l)/C(m,l) a_kl).
+Bern<R> from_power(int n, int m, const std::map<std::pair<int, int>, R>& a) {
+  Bern<R> b{{n, m}, std::vector<R>((n + 1) * (m + 1), R(0))};
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i)
+      for (const auto& [e, c] : a)
+        if (e.first <= i && e.second <= j)
+          b.c[i + (n + 1) * j] += binom(i, e.first) / binom(n, e.first) * binom(j, e.second) / binom(m, e.second) * c;
+  return b;
+}
+
+/// Univariate: coefficients of t^0, t^1, ...
+Bern<R> univariate(const std::vector<R>& a) {
+  const int n = static_cast<int>(a.size()) - 1;
+  Bern<R> b{{n}, std::vector<R>(n + 1, R(0))};
+  for (int i = 0; i <= n; ++i)
+    for (int k = 0; k <= i; ++k) b.c[i] += binom(i, k) / binom(n, k) * a[k];
+  return b;
+}
+
+/// Power coefficients of prod (t - r_i).
+std::vector<R> from_roots(const std::vector<R>& roots) {
+  std::vector<R> a{R(1)};
+  for (const auto& r : roots) {
+    std::vector<R> b(a.size() + 1, R(0));
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      b[k + 1] += a[k];
+      b[k] -= r * a[k];
+    }
+    a = b;
+  }
+  return a;
+}
+
+std::vector<R> mul(const std::vector<R>& a, const std::vector<R>& b) {
+  std::vector<R> c(a.size() + b.size() - 1, R(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+  return c;
+}
+
+const RootBox<R>* exact_root(const SolveResult<R>& s, const std::vector<R>& x) {
+  for (const auto& r : s.roots)
+    if (r.exact && r.point == x) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("solver: rational roots exact (one on the first split), an irrational one in a certified box", "[solve]") {
+  // (t - 1/2)(t - 1/3)(2 t^2 - 1): roots 1/2, 1/3, 1/sqrt(2) in [0, 1] (and -1/sqrt(2) outside).
+  const auto f = univariate(mul(from_roots({R(1, 2), R(1, 3)}), {R(-1), R(0), R(2)}));
+  const auto s = solve_system<R>({f}, {R(0)}, {R(1)});
+  REQUIRE(s.roots.size() == 3);
+  REQUIRE(s.complete());
+  REQUIRE(exact_root(s, {R(1, 2)}));
+  REQUIRE(exact_root(s, {R(1, 3)}));
+  CHECK(exact_root(s, {R(1, 2)})->unique);
+  int irrational = 0;
+  for (const auto& r : s.roots)
+    if (!r.exact) {
+      ++irrational;
+      CHECK(r.unique);
+      CHECK(r.lo[0] * r.lo[0] * 2 < 1);  // lo < 1/sqrt(2) < hi, exactly
+      CHECK(r.hi[0] * r.hi[0] * 2 > 1);
+      CHECK(r.hi[0] - r.lo[0] <= R(1) / R(boost::multiprecision::mpz_int(1) << 50));
+    }
+  CHECK(irrational == 1);
+}
+
+TEST_CASE("solver: roots on the box's sides, on a shifted box, and no roots", "[solve]") {
+  const auto ends = solve_system<R>({univariate(from_roots({R(0), R(1)}))}, {R(0)}, {R(1)});
+  REQUIRE(ends.roots.size() == 2);
+  CHECK(ends.complete());
+  CHECK(exact_root(ends, {R(0)}));
+  CHECK(exact_root(ends, {R(1)}));
+  // The same polynomial standing for [2, 6]: its roots are 2 and 6.
+  const auto shifted = solve_system<R>({univariate(from_roots({R(0), R(1)}))}, {R(2)}, {R(6)});
+  CHECK(exact_root(shifted, {R(2)}));
+  CHECK(exact_root(shifted, {R(6)}));
+  const auto none = solve_system<R>({univariate({R(1), R(0), R(1)})}, {R(0)}, {R(1)});
+  CHECK(none.roots.empty());
+  CHECK(none.complete());
+  CHECK(none.boxes == 1);
+}
+
+TEST_CASE("solver: a double root is exact but not certified unique, roots 2^-40 apart are separated", "[solve]") {
+  const auto dbl = solve_system<R>({univariate(from_roots({R(1, 3), R(1, 3), R(3, 4)}))}, {R(0)}, {R(1)});
+  const auto* r = exact_root(dbl, {R(1, 3)});
+  REQUIRE(r);
+  CHECK_FALSE(r->unique);
+  REQUIRE(exact_root(dbl, {R(3, 4)}));
+  CHECK(exact_root(dbl, {R(3, 4)})->unique);
+  CHECK_FALSE(dbl.complete());
+  const R e20 = R(1) / R(1 << 20), e40 = e20 * e20;
+  const auto close = solve_system<R>({univariate(from_roots({R(1, 2), R(1, 2) + e20, R(1, 2) - e40}))}, {R(0)}, {R(1)},
+                                     SolveOptions{50, 200000, 60, true});
+  REQUIRE(close.roots.size() == 3);
+  CHECK(close.complete());
+  for (const R& x : {R(1, 2), R(1, 2) + e20, R(1, 2) - e40}) CHECK(exact_root(close, {x}));
+}
+
+TEST_CASE("solver: a circle and a line, rational and irrational intersections", "[solve]") {
+  // x^2 + y^2 = 1/2 and x = y on [0, 1]^2: (1/2, 1/2), on the first split in both directions.
+  const auto line = from_power(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
+  const auto c1 = from_power(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 2)}});
+  const auto s1 = solve_system<R>({c1, line}, {R(0), R(0)}, {R(1), R(1)});
+  REQUIRE(s1.roots.size() == 1);
+  CHECK(s1.complete());
+  CHECK(exact_root(s1, {R(1, 2), R(1, 2)}));
+  // x^2 + y^2 = 1/4 and x = y: x = y = 1/(2 sqrt 2), i.e. x^2 = 1/8.
+  const auto c2 = from_power(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 4)}});
+  const auto s2 = solve_system<R>({c2, line}, {R(0), R(0)}, {R(1), R(1)});
+  REQUIRE(s2.roots.size() == 1);
+  const auto& r = s2.roots[0];
+  CHECK(r.unique);
+  CHECK_FALSE(r.exact);
+  for (int d = 0; d < 2; ++d) {
+    CHECK(r.lo[d] * r.lo[d] * 8 < 1);
+    CHECK(r.hi[d] * r.hi[d] * 8 > 1);
+  }
+  // The same circle and line standing for [-1, 1]^2 (x = 2s - 1): both intersection points.
+  // In s: (2s-1)^2 + (2t-1)^2 - 1/4 = 4s^2 - 4s + 4t^2 - 4t + 7/4, and 2s - 2t.
+  const auto c3 = from_power(2, 2, {{{2, 0}, R(4)}, {{1, 0}, R(-4)}, {{0, 2}, R(4)}, {{0, 1}, R(-4)}, {{0, 0}, R(7, 4)}});
+  const auto s3 = solve_system<R>({c3, line}, {R(-1), R(-1)}, {R(1), R(1)});
+  REQUIRE(s3.roots.size() == 2);
+  CHECK(s3.complete());
+  CHECK(s3.roots[0].lo[0] * s3.roots[1].lo[0] < 0);  // one on each side of 0
+}
+
+TEST_CASE("solver: degenerate and malformed systems are refused, a curve of solutions stays undecided", "[solve]") {
+  const auto line = from_power(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
+  const Bern<R> zero{{1, 1}, std::vector<R>(4, R(0))};
+  CHECK_THROWS_AS(solve_system<R>({line, zero}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
+  CHECK_THROWS_AS(solve_system<R>({line}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
+  CHECK_THROWS_AS(solve_system<R>({univariate({R(1), R(1)})}, {R(1)}, {R(1)}), ValidationError);
+  // x - y = 0 twice over: a whole segment of solutions. Nothing may be claimed unique.
+  const auto sq = detail::bern_product(line, line);
+  const auto s = solve_system<R>({line, sq}, {R(0), R(0)}, {R(1), R(1)}, SolveOptions{10, 3000, 60, true});
+  CHECK_FALSE(s.complete());
+  CHECK_FALSE(s.undecided.empty());
+  for (const auto& r : s.roots) CHECK_FALSE(r.unique);
+}
+
+TEST_CASE("solver: the same subdivision in double finds the simple roots near the exact ones", "[solve]") {
+  const auto f = univariate(mul(from_roots({R(1, 2), R(1, 3)}), {R(-1), R(0), R(2)}));
+  Bern<double> fd{f.deg, {}};
+  for (const auto& c : f.c) fd.c.push_back(to_double(c));
+  const auto s = solve_system<double>({fd}, {0.0}, {1.0});
+  REQUIRE(s.roots.size() == 3);
+  std::vector<double> xs;
+  for (const auto& r : s.roots) xs.push_back(0.5 * (r.lo[0] + r.hi[0]));
+  std::sort(xs.begin(), xs.end());
+  CHECK(std::abs(xs[0] - 1.0 / 3) < 1e-12);
+  CHECK(std::abs(xs[1] - 0.5) < 1e-12);
+  CHECK(std::abs(xs[2] - std::sqrt(0.5)) < 1e-12);
+}
+
+TEST_CASE("simplest rational between two numbers", "[solve]") {
+  CHECK(simplest_rational_between(R(3, 10), R(4, 10)) == R(1, 3));
+  CHECK(simplest_rational_between(R(-4, 10), R(-3, 10)) == R(-1, 3));
+  CHECK(simplest_rational_between(R(-1, 10), R(1, 10)) == R(0));
+  CHECK(simplest_rational_between(R(5, 2), R(7, 2)) == R(3));
+  CHECK(simplest_rational_between(R(7, 5), R(7, 5)) == R(7, 5));
+}
