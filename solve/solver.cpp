@@ -139,20 +139,11 @@ Node<T> restrict_node(const Node<T>& N, const std::vector<T>& a, const std::vect
   return out;
 }
 
-/// x rounded outward to a multiple of 2^-bits (exact arithmetic: keeps the numbers short).
 template <class T>
 T round_dyadic(const T& x, int bits, bool down) {
-  if constexpr (std::is_same_v<T, Rational>) {
-    using boost::multiprecision::mpz_int;
-    const mpz_int scale = mpz_int(1) << bits;
-    const mpz_int num = boost::multiprecision::numerator(x) * scale, den = boost::multiprecision::denominator(x);
-    mpz_int q = num / den;  // truncates toward zero
-    const Rational qr(q);
-    const Rational scaled = x * Rational(scale);
-    if (down && scaled < qr) q -= 1;
-    if (!down && qr < scaled) q += 1;
-    return Rational(q) / Rational(scale);
-  } else {
+  if constexpr (std::is_same_v<T, Rational>)
+    return round_to_dyadic(x, bits, down);
+  else {
     (void)bits;
     (void)down;
     return x;
@@ -280,6 +271,16 @@ RootBox<T> root_of(const Node<T>& N, bool unique) {
 }
 
 }  // namespace
+
+Rational round_to_dyadic(const Rational& x, int bits, bool down) {
+  using boost::multiprecision::mpz_int;
+  const Rational scale = bits >= 0 ? Rational(mpz_int(1) << bits) : Rational(1) / Rational(mpz_int(1) << -bits);
+  const Rational scaled = x * scale;
+  mpz_int q = boost::multiprecision::numerator(scaled) / boost::multiprecision::denominator(scaled);  // toward zero
+  if (down && scaled < Rational(q)) q -= 1;
+  if (!down && Rational(q) < scaled) q += 1;
+  return Rational(q) / scale;
+}
 
 Rational simplest_rational_between(const Rational& a, const Rational& b) {
   if (b < a) return simplest_rational_between(b, a);

@@ -72,6 +72,9 @@ template <class T>
 SolveResult<T> solve_system(const std::vector<detail::Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
                             const SolveOptions& options = {});
 
+/// x rounded down (or up) to a multiple of 2^-bits (bits may be negative).
+Rational round_to_dyadic(const Rational& x, int bits, bool down);
+
 /// The simplest rational number (smallest denominator, then numerator) in [a, b], a <= b.
 Rational simplest_rational_between(const Rational& a, const Rational& b);
 
