@@ -1,10 +1,12 @@
 // splinex project: the orthogonal projection of a point onto a surface (papers/002 Eq. 3), with
-// certificates (solve/projection.hpp); in double the same subdivision, uncertified.
+// certificates (solve/projection.hpp); splinex contact: the minimum distance of two surfaces
+// (Eq. 4, solve/contact.hpp). In double the same subdivision runs, uncertified.
 #include <iostream>
 #include <memory>
 
 #include "apps/command.hpp"
 #include "float/rounding.hpp"
+#include "solve/contact.hpp"
 #include "solve/projection.hpp"
 
 namespace splinex::app {
@@ -69,6 +71,58 @@ Json projection_json(const ProjectionResult<T>& r) {
   return out;
 }
 
+template <class T>
+Json contact_point_json(const ContactPoint<T>& p) {
+  Json j{{"where", p.where}, {"strata", p.strata}, {"distance2", range_json(p.d2_lo, p.d2_hi)}};
+  if (!p.p1.empty()) {
+    j["point1"] = point_to_json(p.p1);
+    j["point2"] = point_to_json(p.p2);
+  }
+  if (p.exact)
+    j["parameters"] = point_to_json(p.lo);
+  else
+    j["parameters"] = box_json(p.lo, p.hi);
+  j["certificate"] = !ArithTraits<T>::exact ? "none (double)"
+                     : p.where == "intersection" ? (p.exact ? "exact common point" : "Krawczyk: one common point of S1 - S2 = 0 (one parameter fixed) in the box")
+                     : p.where == "corner-corner" ? "corners of the strata"
+                     : p.merged ? "boxes of neighbouring strata overlap: one pair or two very close ones"
+                     : p.exact && p.unique ? "exact root, certified simple"
+                     : p.exact ? "exact root, multiplicity not decided"
+                     : p.unique ? "Krawczyk: exactly one simple root in the box"
+                                : "none: undecided";
+  return j;
+}
+
+template <class T>
+Json contact_json(const ContactResult<T>& r) {
+  Json out;
+  out["arithmetic"] = ArithTraits<T>::name();
+  out["intersecting"] = r.intersecting;
+  out["closest_certified"] = r.closest_certified;
+  out["distance2"] = range_json(r.distance2_lo, r.distance2_hi);
+  out["distance_approx"] = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi)));
+  Json closest = Json::array(), pts = Json::array(), und = Json::array();
+  for (std::size_t i : r.closest) closest.push_back(contact_point_json(r.points[i]));
+  for (const auto& p : r.points) pts.push_back(contact_point_json(p));
+  for (const auto& p : r.undecided) und.push_back(contact_point_json(p));
+  out["closest"] = closest;
+  out["stationary_pairs"] = pts;
+  out["undecided"] = und;
+  out["strata_pairs"] = Json{{"all", r.strata_pairs}, {"solved", r.pairs_solved}, {"skipped", r.pairs_skipped}};
+  out["boxes"] = r.boxes;
+  std::string verdict;
+  if (!ArithTraits<T>::exact)
+    verdict = "not certified: the subdivision ran in " + ArithTraits<T>::name();
+  else if (r.intersecting)
+    verdict = "certified: the surfaces intersect (a common point is certified), the minimum distance is 0";
+  else if (r.closest_certified)
+    verdict = "certified: the closest pair is the one in \"closest\", the minimum distance is enclosed in \"distance2\"";
+  else
+    verdict = "not certified: " + std::to_string(r.closest.size()) + " pairs (or undecided boxes) may be the closest; the minimum distance is enclosed";
+  out["verdict"] = verdict;
+  return out;
+}
+
 }  // namespace
 
 Commands add_project(CLI::App& app) {
@@ -99,6 +153,35 @@ Commands add_project(CLI::App& app) {
                out = projection_json(project_point(round_spline<double>(S), round_values<double>(P, "point"), so, ctx.limits));
              else
                out = projection_json(project_point(S, P, so, ctx.limits));
+             std::cout << out.dump() << "\n";
+             return 0;
+           }}};
+}
+
+Commands add_contact(CLI::App& app) {
+  struct Options {
+    std::string arith = "exact", first, second;
+    int max_depth = 30;
+    std::size_t max_boxes = 200000;
+  };
+  auto o = std::make_shared<Options>();
+  auto* c = app.add_subcommand("contact", "minimum distance of two surfaces (Eq. 4 and its boundary and knot-line cases), certified, or a certified common point");
+  add_arith_option(c, o->arith, "exact (certified) or double (the same subdivision in double, uncertified)")
+      ->check(CLI::IsMember({"exact", "double"}));
+  c->add_option("--max-depth", o->max_depth, "halvings per direction before a box is undecided")->check(CLI::Range(1, 200))->capture_default_str();
+  c->add_option("--max-boxes", o->max_boxes, "solver boxes per pair of strata before the rest is undecided")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
+      ->capture_default_str();
+  c->add_option("first", o->first, "first surface document")->required();
+  c->add_option("second", o->second, "second surface document")->required();
+  return {{c, [o](const Context& ctx) {
+             const auto S1 = spline_from_json(read_json_file(o->first, ctx.read_limits), ctx.limits, "first");
+             const auto S2 = spline_from_json(read_json_file(o->second, ctx.read_limits), ctx.limits, "second");
+             SolveOptions so;
+             so.max_depth = o->max_depth;
+             so.max_boxes = o->max_boxes;
+             const Json out = o->arith == "double" ? contact_json(surface_distance(round_spline<double>(S1), round_spline<double>(S2), so, ctx.limits))
+                                                   : contact_json(surface_distance(S1, S2, so, ctx.limits));
              std::cout << out.dump() << "\n";
              return 0;
            }}};

@@ -40,6 +40,7 @@ Commands add_hybrid(CLI::App& app);
 Commands add_verify(CLI::App& app);  // verify OPERATION --input --candidate
 Commands add_vrep(CLI::App& app);  // vrep construct, vrep certify
 Commands add_project(CLI::App& app);  // project --point (solve/projection.hpp)
+Commands add_contact(CLI::App& app);  // contact (solve/contact.hpp)
 
 /// The options of the single-spline operations, shared by their commands and crosscheck.
 struct OpOptions {

@@ -145,13 +145,7 @@ CriticalPoint<T> make_point(const Piece<T>& pc, std::vector<T> lo, std::vector<T
   const auto [wlo, whi] = detail::bern_range(W2);
   cp.d2_lo = dlo < T(0) ? T(0) : T(dlo / whi);
   cp.d2_hi = dhi / wlo;
-  if constexpr (std::is_same_v<T, Rational>) {
-    // Outward to 72 significant bits: shorter numbers, the same certificate.
-    const auto bits = [](const T& x) { return x == 0 ? 200 : 72 - static_cast<int>(std::floor(std::log2(std::abs(to_double(x))))); };
-    cp.d2_lo = round_to_dyadic(cp.d2_lo, bits(cp.d2_lo), true);
-    cp.d2_hi = round_to_dyadic(cp.d2_hi, bits(cp.d2_hi), false);
-    if (cp.d2_lo < 0) cp.d2_lo = 0;
-  }
+  round_enclosure(cp.d2_lo, cp.d2_hi);
   return cp;
 }
 

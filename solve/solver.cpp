@@ -57,8 +57,8 @@ struct KrawczykResult {
 
 /// With the centre c (default: the box's centre); c - Y F(c) + (I - Y J(X)) (X - c).
 template <class T>
-KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, bool strict, std::vector<T> c = {}) {
-  const int n = static_cast<int>(f.size());
+KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool strict, std::vector<T> c = {}) {
+  const int n = static_cast<int>(neq);
   KrawczykResult<T> out;
   if (c.empty()) c.assign(n, T(1) / T(2));
   std::vector<T> F(n);
@@ -120,7 +120,7 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, bool strict, std::vect
 
 template <class T>
 struct Node {
-  std::vector<Bern<T>> f;
+  std::vector<Bern<T>> f;  // the equations, then the caller's auxiliary polynomials
   std::vector<T> lo, hi;  // global box
   int depth = 0;
 };
@@ -177,7 +177,7 @@ Node<T> refine(Node<T> N, std::vector<T> klo, std::vector<T> khi, const std::vec
     for (std::size_t l = 0; l < n; ++l)
       small = small && dbl(T(N.hi[l] - N.lo[l])) <= std::ldexp(dbl(width0[l]), -bits);
     if (small) break;
-    const auto K = krawczyk(N.f, false);
+    const auto K = krawczyk(N.f, N.lo.size(), false);
     if (K.outcome == KrawczykResult<T>::unknown) break;
     klo = K.lo;
     khi = K.hi;
@@ -202,8 +202,8 @@ bool recognize(const Node<T>& N, std::vector<T>& point) {
         const Rational w = N.hi[l] - N.lo[l];
         t[l] = w == 0 ? Rational(0) : Rational((x[l] - N.lo[l]) / w);
       }
-      for (const auto& g : N.f)
-        if (detail::bern_value(g, t) != 0) return false;
+      for (std::size_t i = 0; i < n; ++i)
+        if (detail::bern_value(N.f[i], t) != 0) return false;
       point = x;
       return true;
     };
@@ -212,7 +212,7 @@ bool recognize(const Node<T>& N, std::vector<T>& point) {
     for (std::size_t l = 0; l < n; ++l) x[l] = simplest_rational_between(N.lo[l], N.hi[l]);
     if (check(x)) return true;
     // Newton in double on the local polynomials from the centre.
-    std::vector<Bern<double>> fd(N.f.size());
+    std::vector<Bern<double>> fd(n);
     for (std::size_t i = 0; i < n; ++i) {
       fd[i].deg = N.f[i].deg;
       for (const auto& v : N.f[i].c) fd[i].c.push_back(to_double(v));
@@ -282,6 +282,22 @@ Rational round_to_dyadic(const Rational& x, int bits, bool down) {
   return Rational(q) / scale;
 }
 
+template <class T>
+void round_enclosure(T& lo, T& hi) {
+  if constexpr (std::is_same_v<T, Rational>) {
+    const auto bits = [](const T& x) { return x == 0 ? 200 : 72 - static_cast<int>(std::floor(std::log2(std::abs(to_double(x))))); };
+    const bool nonnegative = !(lo < 0);
+    lo = round_to_dyadic(lo, bits(lo), true);
+    hi = round_to_dyadic(hi, bits(hi), false);
+    if (nonnegative && lo < 0) lo = 0;
+  } else {
+    (void)lo;
+    (void)hi;
+  }
+}
+template void round_enclosure(Rational&, Rational&);
+template void round_enclosure(double&, double&);
+
 Rational simplest_rational_between(const Rational& a, const Rational& b) {
   if (b < a) return simplest_rational_between(b, a);
   if (!(0 < a) && !(b < 0)) return Rational(0);
@@ -305,7 +321,7 @@ bool SolveResult<T>::complete() const {
 
 template <class T>
 SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
-                            const SolveOptions& options) {
+                            const SolveOptions& options, const Pruning<T>* pruning) {
   const std::size_t n = f.size();
   if (n == 0) throw ValidationError("system", "has no equations", "give n equations in n unknowns");
   if (lo.size() != n || hi.size() != n)
@@ -330,8 +346,16 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
   }();
 
   SolveResult<T> out;
-  std::vector<Node<T>> stack{Node<T>{f, lo, hi, 0}}, leaves;
+  std::vector<Bern<T>> all = f;  // the equations and the auxiliary polynomials, split together
+  if (pruning) {
+    for (const auto& g : pruning->aux)
+      if (g.deg.size() != n || g.c.size() != detail::tensor_size(g.deg))
+        throw ValidationError("pruning", "an auxiliary polynomial is not in the n unknowns", "give it on the system's box");
+    all.insert(all.end(), pruning->aux.begin(), pruning->aux.end());
+  }
+  std::vector<Node<T>> stack{Node<T>{all, lo, hi, 0}}, leaves;
   std::vector<Node<T>> certified;  // refined boxes with one root each
+  std::vector<RootBox<T>> known;   // exact roots certified unique in their boxes during the search
   while (!stack.empty()) {
     if (out.boxes >= options.max_boxes) {
       out.budget_exhausted = true;
@@ -342,20 +366,62 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     stack.pop_back();
     ++out.boxes;
     bool discarded = false;
-    for (const auto& g : N.f)
-      if (detail::bern_sign(g) != 0) discarded = true;
+    for (std::size_t i = 0; i < n; ++i)
+      if (detail::bern_sign(N.f[i]) != 0) discarded = true;
     if (discarded) {
       ++out.discarded_by_sign;
       continue;
     }
-    const auto K = krawczyk(N.f, true);
+    if (pruning && pruning->discard(N.f.data() + n, pruning->aux.size(), N.lo, N.hi)) {
+      ++out.discarded_by_caller;
+      continue;
+    }
+    // Inside the box of a known exact root, which is that box's only root: nothing more here.
+    bool in_known = false;
+    for (const auto& k : known) in_known = in_known || box_inside(N.lo, N.hi, k.lo, k.hi);
+    if (in_known) {
+      ++out.discarded_by_krawczyk;
+      continue;
+    }
+    const auto K = krawczyk(N.f, n, true);
     if (K.outcome == KrawczykResult<T>::excluded) {
       ++out.discarded_by_krawczyk;
       continue;
     }
     if (K.outcome == KrawczykResult<T>::unique) {
-      certified.push_back(refine(N, K.lo, K.hi, width0, options.refine_bits));
+      bool seen = false;  // its one root is a known exact root it contains
+      for (const auto& k : known) seen = seen || box_inside(k.point, k.point, N.lo, N.hi);
+      if (!seen) certified.push_back(refine(N, K.lo, K.hi, width0, options.refine_bits));
       continue;
+    }
+    // A root where boxes are split (on the line between them) keeps every box around it open down
+    // to the depth limit. Look for an exact rational root now and then: a contraction on the box
+    // around it (twice this box's width) makes it that box's only root, and the search then skips
+    // what lies inside.
+    if (N.depth >= 2 && N.depth % 2 == 0) {
+      std::vector<T> r;
+      bool fresh = recognize(N, r);
+      for (const auto& k : known) fresh = fresh && !box_inside(r, r, k.lo, k.hi);
+      if (fresh) {
+        std::vector<T> a(n), b(n), c(n);
+        for (std::size_t l = 0; l < n; ++l) {
+          const T w = N.hi[l] - N.lo[l];
+          const T x0 = tmax(T(r[l] - w), lo[l]), x1 = tmin(T(r[l] + w), hi[l]);
+          a[l] = (x0 - lo[l]) / width0[l];
+          b[l] = (x1 - lo[l]) / width0[l];
+          c[l] = (r[l] - x0) / (x1 - x0);
+        }
+        const Node<T> X = restrict_node(Node<T>{all, lo, hi, 0}, a, b);
+        if (krawczyk(X.f, n, false, c).contraction) {
+          RootBox<T> rb;
+          rb.lo = X.lo;
+          rb.hi = X.hi;
+          rb.unique = rb.exact = true;
+          rb.point = r;
+          known.push_back(rb);
+          out.roots.push_back(rb);
+        }
+      }
     }
     if (N.depth >= options.max_depth) {
       leaves.push_back(std::move(N));
@@ -391,7 +457,12 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     }
     for (std::size_t k = parts.size(); k-- > 0;) stack.push_back(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
   }
-  for (const auto& N : certified) out.roots.push_back(root_of(N, true));
+  for (const auto& N : certified) {
+    // Found before a known exact root whose box holds it: the same root.
+    bool seen = false;
+    for (const auto& k : known) seen = seen || (box_inside(k.point, k.point, N.lo, N.hi) || box_inside(N.lo, N.hi, k.lo, k.hi));
+    if (!seen) out.roots.push_back(root_of(N, true));
+  }
 
   // Undecided leaves: clusters of touching boxes (a sweep along direction 0), then the closed test
   // on each cluster's hull.
@@ -423,7 +494,7 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       clusters[index[r]].push_back(i);
     }
   }
-  const Node<T> root{f, lo, hi, 0};
+  const Node<T> root{all, lo, hi, 0};
   for (const auto& members : clusters) {
     std::vector<T> clo = leaves[members[0]].lo, chi = leaves[members[0]].hi;
     for (std::size_t m : members)
@@ -437,7 +508,7 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       b[l] = (chi[l] - lo[l]) / width0[l];
     }
     const Node<T> H = restrict_node(root, a, b);
-    const auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, false);
+    const auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
     if (K.outcome == KrawczykResult<T>::excluded) continue;
     if (K.outcome == KrawczykResult<T>::unique) {
       const Node<T> R = refine(H, K.lo, K.hi, width0, options.refine_bits);
@@ -445,6 +516,10 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       // left undecided.
       bool same = false, unclear = false;
       for (const auto& r : out.roots) {
+        if (r.exact) {  // a known exact root: the hull's one root if the hull holds it
+          same = same || box_inside(r.point, r.point, H.lo, H.hi);
+          continue;
+        }
         if (!boxes_touch(r.lo, r.hi, H.lo, H.hi)) continue;
         if (box_inside(r.lo, r.hi, H.lo, H.hi))
           same = true;
@@ -463,12 +538,14 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       // root, and a simple one.
       std::vector<T> c(n);
       for (std::size_t l = 0; l < n; ++l) c[l] = (u.point[l] - H.lo[l]) / (H.hi[l] - H.lo[l]);
-      const auto Kr = krawczyk(H.f, false, c);
+      const auto Kr = krawczyk(H.f, n, false, c);
       u.unique = Kr.contraction;
     }
     // An exact root that is not certified simple is a root of unknown multiplicity, and its hull
-    // stays undecided (it may hold more).
-    if (u.exact) out.roots.push_back(u);
+    // stays undecided (it may hold more). One found before is not listed twice.
+    bool listed = false;
+    for (const auto& r : out.roots) listed = listed || (u.exact && r.exact && r.point == u.point);
+    if (u.exact && !listed) out.roots.push_back(u);
     if (!u.unique) out.undecided.push_back(std::move(u));
   }
   return out;
@@ -477,8 +554,8 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
 template struct SolveResult<Rational>;
 template struct SolveResult<double>;
 template SolveResult<Rational> solve_system(const std::vector<Bern<Rational>>&, const std::vector<Rational>&, const std::vector<Rational>&,
-                                            const SolveOptions&);
+                                            const SolveOptions&, const Pruning<Rational>*);
 template SolveResult<double> solve_system(const std::vector<Bern<double>>&, const std::vector<double>&, const std::vector<double>&,
-                                          const SolveOptions&);
+                                          const SolveOptions&, const Pruning<double>*);
 
 }  // namespace splinex

@@ -30,6 +30,7 @@
 // certified and the fields say what the test answered in double.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,11 +59,21 @@ struct SolveResult {
   std::vector<RootBox<T>> roots;      // unique, or exact (then possibly multiple, and its box is also undecided)
   std::vector<RootBox<T>> undecided;  // cluster hulls that may hold roots (multiple, tangential, or beyond the limits)
   std::size_t boxes = 0;              // boxes examined
-  std::size_t discarded_by_sign = 0, discarded_by_krawczyk = 0;
+  std::size_t discarded_by_sign = 0, discarded_by_krawczyk = 0, discarded_by_caller = 0;
   bool budget_exhausted = false;  // max_boxes reached: the rest of the queue is in `undecided`
   /// Every root is in `roots`, each certified unique: no undecided box and no exact root of
   /// unknown multiplicity (in a float arithmetic: the same, uncertified).
   bool complete() const;
+};
+
+/// A caller's test that a box cannot matter (branch and bound: a distance known to be larger than
+/// one already found). `aux` are polynomials in the same unknowns, split with the system; per box
+/// `discard` sees them restricted to it (Bernstein form on that box) with the box, and may update
+/// the caller's bound. Boxes it discards are not searched: the result is complete only outside them.
+template <class T>
+struct Pruning {
+  std::vector<detail::Bern<T>> aux;
+  std::function<bool(const detail::Bern<T>* aux, std::size_t count, const std::vector<T>& lo, const std::vector<T>& hi)> discard;
 };
 
 /// The roots of f on the box [lo, hi] (f[i] in Bernstein form on [0, 1]^n standing for it).
@@ -70,10 +81,15 @@ struct SolveResult {
 /// box side is empty.
 template <class T>
 SolveResult<T> solve_system(const std::vector<detail::Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
-                            const SolveOptions& options = {});
+                            const SolveOptions& options = {}, const Pruning<T>* pruning = nullptr);
 
 /// x rounded down (or up) to a multiple of 2^-bits (bits may be negative).
 Rational round_to_dyadic(const Rational& x, int bits, bool down);
+
+/// An enclosure [lo, hi] widened outward to 72 significant bits (Rational: shorter numbers, the
+/// same certificate; a float arithmetic: unchanged). lo stays >= 0 when it was.
+template <class T>
+void round_enclosure(T& lo, T& hi);
 
 /// The simplest rational number (smallest denominator, then numerator) in [a, b], a <= b.
 Rational simplest_rational_between(const Rational& a, const Rational& b);

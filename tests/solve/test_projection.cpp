@@ -4,48 +4,15 @@
 // sampling; refusals.
 #include <catch2/catch.hpp>
 
-#include <map>
-
 #include "exact/rational.hpp"
 #include "solve/projection.hpp"
 #include "spline/kernel.hpp"
+#include "tests/helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
 
 namespace {
-
-R binom(int n, int k) {
-  R r(1);
-  for (int i = 1; i <= k; ++i) r = r * R(n - k + i) / R(i);
-  return r;
-}
-
-/// Bernstein coefficients of degree (2, 2) on [0, 1]^2 of sum a[{k, l}] u^k v^l.
-std::vector<R> bern22(const std::map<std::pair<int, int>, R>& a) {
-  std::vector<R> b(9, R(0));
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 2; ++i)
-      for (const auto& [e, c] : a)
-        if (e.first <= i && e.second <= j) b[i + 3 * j] += binom(i, e.first) / binom(2, e.first) * binom(j, e.second) / binom(2, e.second) * c;
-  return b;
-}
-
-/// The unit sphere by inverse stereographic projection, (2u, 2v, u^2 + v^2 - 1) / (1 + u^2 + v^2)
-/// on [0, 1]^2: exactly on the sphere.
-BSpline<R> sphere_patch() {
-  const auto W = bern22({{{0, 0}, R(1)}, {{2, 0}, R(1)}, {{0, 2}, R(1)}});
-  const auto X = bern22({{{1, 0}, R(2)}}), Y = bern22({{{0, 1}, R(2)}});
-  const auto Z = bern22({{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1)}});
-  std::vector<R> pts;
-  for (int i = 0; i < 9; ++i) {
-    pts.push_back(X[i] / W[i]);
-    pts.push_back(Y[i] / W[i]);
-    pts.push_back(Z[i] / W[i]);
-  }
-  const std::vector<R> k{R(0), R(0), R(0), R(1), R(1), R(1)};
-  return make_spline<R>({2, 2}, {k, k}, 3, pts, W);
-}
 
 BSpline<R> plane() {  // z = 0 over [-1, 1]^2
   return make_spline<R>({1, 1}, {{R(-1), R(-1), R(1), R(1)}, {R(-1), R(-1), R(1), R(1)}}, 3,
@@ -77,7 +44,7 @@ TEST_CASE("projection: a point over a plane, closest point exact and certified",
 }
 
 TEST_CASE("projection: the exact sphere, a rational and an irrational closest point", "[solve]") {
-  const auto S = sphere_patch();
+  const auto S = test::stereographic_sphere();
   // (2, 2, -1) = 3 (2/3, 2/3, -1/3), the sphere point at (u, v) = (1/2, 1/2): distance 2.
   const auto a = project_point<R>(S, {R(2), R(2), R(-1)});
   REQUIRE(a.closest.size() == 1);

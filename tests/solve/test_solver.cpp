@@ -188,3 +188,48 @@ TEST_CASE("simplest rational between two numbers", "[solve]") {
   CHECK(simplest_rational_between(R(5, 2), R(7, 2)) == R(3));
   CHECK(simplest_rational_between(R(7, 5), R(7, 5)) == R(7, 5));
 }
+
+TEST_CASE("solver: random rational roots, many on split lines, found exactly once each", "[solve]") {
+  // 40 univariate cases: 1-4 distinct roots k/8 or k/6 in [0, 1] (0, 1/2, 1/4, ... lie where boxes
+  // are split), some doubled. 20 bivariate cases: (x - a)(x - b) = 0, (y - c)(y - d) = 0 on
+  // [0, 1]^2, a grid of four roots.
+  std::uint32_t seed = 12345;
+  auto next = [&](int m) {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<int>((seed >> 8) % static_cast<std::uint32_t>(m));
+  };
+  auto root = [&] { return next(2) ? R(next(9), 8) : R(next(7), 6); };
+  for (int c = 0; c < 40; ++c) {
+    std::vector<R> distinct;
+    const int k = 1 + next(4);
+    while (static_cast<int>(distinct.size()) < k) {
+      const R r = root();
+      if (std::find(distinct.begin(), distinct.end(), r) == distinct.end()) distinct.push_back(r);
+    }
+    std::vector<R> all = distinct;
+    const bool doubled = next(3) == 0;
+    if (doubled) all.push_back(distinct[0]);
+    const auto s = solve_system<R>({univariate(from_roots(all))}, {R(0)}, {R(1)});
+    INFO("case " << c);
+    CHECK(s.roots.size() == distinct.size());
+    for (std::size_t i = 0; i < distinct.size(); ++i) {
+      const auto* r = exact_root(s, {distinct[i]});
+      REQUIRE(r);
+      CHECK(r->unique == !(doubled && i == 0));
+    }
+    CHECK(s.complete() == !doubled);
+  }
+  for (int c = 0; c < 20; ++c) {
+    R a = root(), b = root(), cc = root(), d = root();
+    while (b == a) b = root();
+    while (d == cc) d = root();
+    const auto fx = from_power(2, 0, {{{2, 0}, R(1)}, {{1, 0}, -(a + b)}, {{0, 0}, a * b}});
+    const auto fy = from_power(0, 2, {{{0, 2}, R(1)}, {{0, 1}, -(cc + d)}, {{0, 0}, cc * d}});
+    const auto s = solve_system<R>({fx, fy}, {R(0), R(0)}, {R(1), R(1)});
+    INFO("grid case " << c);
+    CHECK(s.complete());
+    REQUIRE(s.roots.size() == 4);
+    for (const R& x : {a, b})
+      for (const R& y : {cc, d}) CHECK(exact_root(s, {x, y}));
+  }
+}

@@ -1,0 +1,387 @@
+// The minimum distance of two surfaces (solve/contact.hpp), for Rational and double.
+#include "solve/contact.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <numeric>
+#include <type_traits>
+
+#include "float/arith_spec.hpp"
+#include "solve/strata.hpp"
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+namespace {
+
+using namespace solve_detail;
+
+template <class T>
+void require_surface(const BSpline<T>& S, const std::string& name, const Limits& limits) {
+  validate(S, limits);
+  if (S.dim() != 2 || S.q < 3)
+    throw ValidationError(name, "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  for (int d = 0; d < 2; ++d) {
+    if (S.degrees[d] == 0)
+      throw ValidationError(name + ".degrees[" + std::to_string(d) + "]", "is 0: the surface has no tangent plane, the distance equations are degenerate",
+                            "elevate the surface to degree >= 1");
+    limits.check_degree(static_cast<long>(S.is_rational() ? 3 : 2) * S.degrees[d] * 2, name + ".degrees[" + std::to_string(d) + "]");
+  }
+}
+
+template <class T>
+std::vector<T> concat(const std::vector<T>& a, const std::vector<T>& b) {
+  std::vector<T> c = a;
+  c.insert(c.end(), b.begin(), b.end());
+  return c;
+}
+
+/// The (u, v, r, t) of a system point x.
+template <class T>
+std::vector<T> params4(const Stratum<T>& A, const Stratum<T>& B, const std::vector<T>& x) {
+  return concat(surface_parameters(A, x, 0), surface_parameters(B, x, static_cast<std::size_t>(A.k)));
+}
+
+template <class T>
+std::string text(const T& x) {
+  return ArithTraits<T>::to_string(x);
+}
+
+/// Tries to prove that the strata meet near the box [a, b] of their system: S1 - S2 = 0 (D = 0)
+/// with one unknown fixed at the box's centre when there are four, solved on the box widened
+/// four times (inside the system's box). Returns the (u, v, r, t) box of a certified common point.
+template <class T>
+bool certify_common_point(const Stratum<T>& A, const Stratum<T>& B, const PairSystem<T>& sys, const std::vector<T>& a,
+                          const std::vector<T>& b, std::vector<T>& lo4, std::vector<T>& hi4) {
+  const std::size_t n = sys.n;
+  if (n < 3) return false;
+  std::vector<T> la(n), lb(n);
+  for (std::size_t l = 0; l < n; ++l) {
+    const T w = sys.hi[l] - sys.lo[l], c = (a[l] + b[l]) / T(2), r = (b[l] - a[l]) * T(2) + w / T(1 << 20);
+    T x0 = c - r, x1 = c + r;
+    if (x0 < sys.lo[l]) x0 = sys.lo[l];
+    if (sys.hi[l] < x1) x1 = sys.hi[l];
+    la[l] = (x0 - sys.lo[l]) / w;
+    lb[l] = (x1 - sys.lo[l]) / w;
+  }
+  for (std::size_t fixed = 0; fixed < (n == 4 ? n : 1); ++fixed) {
+    std::vector<detail::Bern<T>> eq(3);
+    std::vector<T> lo, hi;
+    for (int c = 0; c < 3; ++c) {
+      eq[c] = sys.D[c];
+      for (std::size_t l = 0; l < n; ++l) eq[c] = detail::bern_restrict(eq[c], static_cast<int>(l), la[l], lb[l]);
+    }
+    T fixed_value(0);
+    if (n == 4) {
+      // Fix unknown `fixed` at the centre of the widened box (local 1/2).
+      for (auto& g : eq) g = detail::bern_face(detail::bern_split(g, static_cast<int>(fixed), T(1) / T(2)).second, static_cast<int>(fixed), 0);
+      const T w = sys.hi[fixed] - sys.lo[fixed];
+      fixed_value = sys.lo[fixed] + w * (la[fixed] + lb[fixed]) / T(2);
+    }
+    for (std::size_t l = 0; l < n; ++l) {
+      if (n == 4 && l == fixed) continue;
+      const T w = sys.hi[l] - sys.lo[l];
+      lo.push_back(sys.lo[l] + w * la[l]);
+      hi.push_back(sys.lo[l] + w * lb[l]);
+    }
+    bool zero = false;
+    for (const auto& g : eq) {
+      bool z = true;
+      for (const auto& x : g.c) z = z && x == T(0);
+      zero = zero || z;
+    }
+    if (zero) continue;
+    SolveOptions so;
+    so.max_depth = 24;
+    so.max_boxes = 4000;
+    const auto r = solve_system(eq, lo, hi, so);
+    for (const auto& root : r.roots) {
+      if (!root.unique && !root.exact) continue;
+      std::vector<T> xl = root.exact ? root.point : root.lo, xh = root.exact ? root.point : root.hi;
+      if (n == 4) {
+        xl.insert(xl.begin() + static_cast<long>(fixed), fixed_value);
+        xh.insert(xh.begin() + static_cast<long>(fixed), fixed_value);
+      }
+      lo4 = params4(A, B, xl);
+      hi4 = params4(A, B, xh);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+template <class T>
+ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits) {
+  require_surface(S1, "first", limits);
+  require_surface(S2, "second", limits);
+  const auto A = surface_strata(S1, limits), B = surface_strata(S2, limits);
+  ContactResult<T> out;
+  out.strata_pairs = A.size() * B.size();
+  // The model's size, for the threshold below which an intersection is sought.
+  T size2(0);
+  {
+    std::array<T, 6> box = A[0].hull;
+    for (const auto* L : {&A, &B})
+      for (const auto& s : *L)
+        for (int c = 0; c < 3; ++c) {
+          if (s.hull[c] < box[c]) box[c] = s.hull[c];
+          if (box[c + 3] < s.hull[c + 3]) box[c + 3] = s.hull[c + 3];
+        }
+    for (int c = 0; c < 3; ++c) {
+      const T e = box[c + 3] - box[c];
+      if (size2 < e * e) size2 = e * e;
+    }
+    if (size2 == T(0)) size2 = T(1);
+  }
+  const T tau = size2 / T(4294967296.0);  // 2^-32 of the squared size
+
+  // U: the corners' closest pair, exactly.
+  struct Job {
+    std::size_t a, b;
+    T lower;
+  };
+  std::vector<Job> jobs;
+  T U(-1);
+  struct Found {
+    ContactPoint<T> p;
+    long a = -1, b = -1;  // the strata it came from (-1: corner-corner)
+  };
+  std::vector<Found> found;
+  std::vector<ContactPoint<T>> undecided;
+  for (std::size_t i = 0; i < A.size(); ++i)
+    for (std::size_t j = 0; j < B.size(); ++j) {
+      if (A[i].k + B[j].k == 0) {
+        T d2(0);
+        for (int c = 0; c < 3; ++c) d2 += (A[i].hull[c] - B[j].hull[c]) * (A[i].hull[c] - B[j].hull[c]);
+        if (U < T(0) || d2 < U) U = d2;
+        ContactPoint<T> p;
+        p.where = "corner-corner";
+        p.strata = A[i].label + " / " + B[j].label;
+        p.lo = p.hi = concat(std::vector<T>{A[i].lo[0], A[i].lo[1]}, std::vector<T>{B[j].lo[0], B[j].lo[1]});
+        p.exact = p.unique = true;
+        p.d2_lo = p.d2_hi = d2;
+        p.p1 = {A[i].hull[0], A[i].hull[1], A[i].hull[2]};
+        p.p2 = {B[j].hull[0], B[j].hull[1], B[j].hull[2]};
+        found.push_back({std::move(p), -1, -1});
+      } else {
+        jobs.push_back({i, j, hull_distance2(A[i], B[j])});
+      }
+    }
+  std::stable_sort(jobs.begin(), jobs.end(), [](const Job& x, const Job& y) { return x.lower < y.lower; });
+
+  for (const auto& job : jobs) {
+    if (out.intersecting) break;
+    if (U < job.lower || (!(tau < U) && A[job.a].k + B[job.b].k < 3)) {
+      ++out.pairs_skipped;  // farther than the minimum, or too few unknowns to certify a common point
+      continue;
+    }
+    const Stratum<T>& a = A[job.a];
+    const Stratum<T>& b = B[job.b];
+    const PairSystem<T> sys = pair_system(a, b);
+    bool degenerate = false;
+    for (const auto& g : sys.equations) {
+      bool z = true;
+      for (const auto& x : g.c) z = z && x == T(0);
+      degenerate = degenerate || z;
+    }
+    const std::string where = a.where + "-" + b.where, label = a.label + " / " + b.label;
+    if (degenerate) {
+      ContactPoint<T> u;
+      u.where = where;
+      u.strata = label + ": an equation vanishes identically";
+      u.lo = params4(a, b, sys.lo);
+      u.hi = params4(a, b, sys.hi);
+      std::tie(u.d2_lo, u.d2_hi) = distance2_range(sys, sys.lo, sys.hi);
+      round_enclosure(u.d2_lo, u.d2_hi);
+      u.p1 = stratum_point(a, sys.lo, 0);
+      u.p2 = stratum_point(b, sys.lo, static_cast<std::size_t>(a.k));
+      if (u.d2_hi < U) U = u.d2_hi;
+      undecided.push_back(std::move(u));
+      continue;
+    }
+    // Branch and bound: boxes whose distance is surely above U are not searched; every box lowers U.
+    std::vector<T> near_lo, near_hi;
+    Pruning<T> pr;
+    pr.aux = {sys.W, sys.D[0], sys.D[1], sys.D[2]};
+    pr.discard = [&](const detail::Bern<T>* aux, std::size_t, const std::vector<T>& lo, const std::vector<T>& hi) {
+      auto [low, high] = distance2_bounds(aux + 1, aux[0]);
+      // The box's corners are points of the strata: their exact distances bound the minimum
+      // (much tighter than the bound for any point of the box).
+      const std::size_t nv = aux[0].deg.size();
+      const auto corner = [&](const detail::Bern<T>& g, std::size_t m) {
+        std::size_t i = 0;
+        for (std::size_t l = 0; l < nv; ++l)
+          if (m >> l & 1) i += g.deg[l] * detail::tensor_stride(g.deg, static_cast<int>(l));
+        return g.c[i];
+      };
+      for (std::size_t m = 0; m < (std::size_t(1) << nv); ++m) {
+        T d2(0);
+        for (int c = 1; c <= 3; ++c) {
+          const T x = corner(aux[c], m);
+          d2 += x * x;
+        }
+        const T w = corner(aux[0], m);
+        d2 = d2 / (w * w);
+        if (d2 < high) high = d2;
+      }
+      if (high < U) U = high;
+      // Within tau of each other the surfaces probably meet along a curve, where Eq. 4 has no
+      // isolated solutions and the search would not end: the first such box is kept for the
+      // common-point certificate below, and this pair's search stops.
+      if (!(tau < high) && near_lo.empty()) {
+        near_lo = lo;
+        near_hi = hi;
+      }
+      return U < low || !near_lo.empty();
+    };
+    const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, &pr);
+    ++out.pairs_solved;
+    if (std::getenv("SPLINEX_DEBUG")) std::fprintf(stderr, "%s: %zu boxes, %zu roots, %zu undecided, sign %zu kraw %zu caller %zu\n", label.c_str(), r.boxes, r.roots.size(), r.undecided.size(), r.discarded_by_sign, r.discarded_by_krawczyk, r.discarded_by_caller);
+    out.boxes += r.boxes;
+    const auto add = [&](const RootBox<T>& root, bool as_root) {
+      ContactPoint<T> p;
+      p.where = where;
+      p.strata = label;
+      p.exact = as_root && root.exact;
+      p.unique = as_root && root.unique;
+      const std::vector<T>& xl = p.exact ? root.point : root.lo;
+      const std::vector<T>& xh = p.exact ? root.point : root.hi;
+      p.lo = params4(a, b, xl);
+      p.hi = params4(a, b, xh);
+      if (p.exact) {
+        p.d2_lo = p.d2_hi = distance2_at(sys, root.point);
+      } else {
+        std::tie(p.d2_lo, p.d2_hi) = distance2_range(sys, xl, xh);
+        round_enclosure(p.d2_lo, p.d2_hi);
+      }
+      std::vector<T> at = xl;
+      for (std::size_t l = 0; l < xl.size(); ++l) at[l] = (xl[l] + xh[l]) / T(2);
+      p.p1 = stratum_point(a, at, 0);
+      p.p2 = stratum_point(b, at, static_cast<std::size_t>(a.k));
+      if (as_root && p.d2_hi < U) U = p.d2_hi;
+      if (as_root)
+        found.push_back({std::move(p), static_cast<long>(job.a), static_cast<long>(job.b)});
+      else
+        undecided.push_back(std::move(p));
+    };
+    for (const auto& root : r.roots) add(root, true);
+    for (const auto& box : r.undecided) add(box, false);
+    if (!near_lo.empty()) {
+      std::vector<T> lo4, hi4;
+      if (certify_common_point(a, b, sys, near_lo, near_hi, lo4, hi4)) {
+        out.intersecting = true;
+        out.common_lo = lo4;
+        out.common_hi = hi4;
+      }
+    }
+  }
+
+  // Merge: exact pairs by equality, boxes that overlap into one entry.
+  // A box that holds one root of its strata's system is an exact pair of another stratum when that
+  // pair solves the same system (and gives the same points: not across a jump).
+  const auto same_root = [&](const Found& f, const ContactPoint<T>& k) {
+    if (f.a < 0 || !f.p.unique) return false;
+    const Stratum<T>& a = A[f.a];
+    const Stratum<T>& b = B[f.b];
+    std::vector<T> x(static_cast<std::size_t>(a.k + b.k));
+    for (int s = 0; s < 2; ++s) {
+      const Stratum<T>& st = s == 0 ? a : b;
+      const std::size_t off = s == 0 ? 0 : static_cast<std::size_t>(a.k);
+      for (int d = 0; d < 2; ++d) {
+        const T& v = k.lo[2 * s + d];
+        if (v < st.lo[d] || st.hi[d] < v) return false;
+        if (st.var[d] < 0) {
+          if (!(v == st.lo[d])) return false;
+        } else {
+          x[off + st.var[d]] = v;
+        }
+      }
+    }
+    const PairSystem<T> sys = pair_system(a, b);
+    std::vector<T> t(sys.n);
+    for (std::size_t l = 0; l < sys.n; ++l) t[l] = (x[l] - sys.lo[l]) / (sys.hi[l] - sys.lo[l]);
+    for (const auto& g : sys.equations)
+      if (!(detail::bern_value(g, t) == T(0))) return false;
+    return stratum_point(a, x, 0) == k.p1 && stratum_point(b, x, static_cast<std::size_t>(a.k)) == k.p2;
+  };
+  std::vector<ContactPoint<T>> kept;
+  std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.p.exact && !y.p.exact; });
+  for (auto& f : found) {
+    auto& p = f.p;
+    bool dup = false;
+    for (auto& k : kept) {
+      bool touch = true;
+      for (std::size_t l = 0; l < 4; ++l) touch = touch && !(p.hi[l] < k.lo[l]) && !(k.hi[l] < p.lo[l]);
+      if (!touch) continue;
+      if (p.exact && k.exact) {
+        dup = p.lo == k.lo && p.p1 == k.p1 && p.p2 == k.p2;
+      } else if (!p.exact && k.exact) {
+        dup = same_root(f, k);
+      } else {
+        for (std::size_t l = 0; l < 4; ++l) {
+          if (p.lo[l] < k.lo[l]) k.lo[l] = p.lo[l];
+          if (k.hi[l] < p.hi[l]) k.hi[l] = p.hi[l];
+        }
+        if (p.d2_lo < k.d2_lo) k.d2_lo = p.d2_lo;
+        if (k.d2_hi < p.d2_hi) k.d2_hi = p.d2_hi;
+        k.merged = true;
+        k.unique = false;
+        dup = true;
+      }
+      if (dup) break;
+    }
+    if (!dup) kept.push_back(std::move(p));
+  }
+  // Only what can matter to the minimum.
+  for (auto& p : kept)
+    if (!(U < p.d2_lo)) out.points.push_back(std::move(p));
+  for (auto& u : undecided)
+    if (!(U < u.d2_lo)) out.undecided.push_back(std::move(u));
+  std::stable_sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.d2_lo < y.d2_lo; });
+
+  for (const auto& p : out.points)
+    if (!out.intersecting && p.exact && p.d2_hi == T(0)) {  // an exact common point
+      out.intersecting = true;
+      out.common_lo = p.lo;
+      out.common_hi = p.hi;
+    }
+  if (out.intersecting) {
+    out.distance2_lo = out.distance2_hi = T(0);
+    ContactPoint<T> c;
+    c.where = "intersection";
+    c.strata = "a common point of the surfaces (S1 - S2 = 0 certified)";
+    c.lo = out.common_lo;
+    c.hi = out.common_hi;
+    c.exact = out.common_lo == out.common_hi;
+    c.unique = true;
+    c.d2_lo = c.d2_hi = T(0);
+    out.points.insert(out.points.begin(), c);
+    out.closest = {0};
+    out.closest_certified = ArithTraits<T>::exact;
+    return out;
+  }
+  out.distance2_hi = U;
+  out.distance2_lo = U;
+  for (const auto& p : out.points)
+    if (p.d2_lo < out.distance2_lo) out.distance2_lo = p.d2_lo;
+  bool undecided_below = false;
+  for (const auto& u : out.undecided) {
+    if (u.d2_lo < out.distance2_lo) out.distance2_lo = u.d2_lo;
+    undecided_below = true;  // every kept undecided box has d2_lo <= U
+  }
+  for (std::size_t i = 0; i < out.points.size(); ++i)
+    if (!(out.distance2_hi < out.points[i].d2_lo)) out.closest.push_back(i);
+  bool within_tau = !(tau < U);
+  out.closest_certified = ArithTraits<T>::exact && out.closest.size() == 1 && !undecided_below && !within_tau &&
+                          (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact);
+  return out;
+}
+
+template ContactResult<Rational> surface_distance(const BSpline<Rational>&, const BSpline<Rational>&, const SolveOptions&, const Limits&);
+template ContactResult<double> surface_distance(const BSpline<double>&, const BSpline<double>&, const SolveOptions&, const Limits&);
+
+}  // namespace splinex

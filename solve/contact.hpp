@@ -1,0 +1,66 @@
+// The minimum distance between two surfaces and their contact (papers/002 Section 5.3, Eq. 4;
+// issue 19, What to build 4), by the subdivision solver of solve/solver.hpp.
+//
+// The squared distance |S1(u, v) - S2(r, t)|^2 takes its minimum at a stationary point of one of
+// the pairs of strata of the two parameter domains (the paper's three cases):
+//   interior-interior: Eq. 4, four equations (S1 - S2).S1_u = (S1 - S2).S1_v = (S1 - S2).S2_r =
+//     (S1 - S2).S2_t = 0 in (u, v, r, t) on every pair of Bezier pieces;
+//   edge-interior, interior-edge, edge-edge: the same with the edge's parameter fixed (boundary
+//     curves, and knot lines where a surface is not C^1: the paper's C^1 discontinuities);
+//   corner-anything: the corner as a point (point projection), corner-corner by evaluation.
+// For rational surfaces X / W the difference is (X1 W2 - X2 W1) / (W1 W2) and each tangent's
+// numerator X_u W - X W_u: the equations are polynomial in the pieces' local parameters.
+//
+// Branch and bound: the smallest squared distance found so far, U, starts at the closest pair of
+// corners and falls to the upper bound max(|X1 W2 - X2 W1|^2) / min((W1 W2)^2) of every box
+// examined (every box holds real pairs of points). A pair of strata whose control-point boxes are
+// farther apart than sqrt(U), and a box whose lower bound exceeds U, cannot hold the minimum and
+// are skipped. The minimum is then enclosed between the smallest lower bound of what is left
+// (certified roots and undecided boxes) and U.
+//
+// Surfaces that intersect have a curve of zero distance, where Eq. 4 has no isolated solutions.
+// When U falls below 2^-32 of the squared model size, a common point is sought: S1 - S2 = 0 with
+// one parameter fixed (three equations in three unknowns) by the same solver; a certified root
+// proves the intersection (distance exactly 0). The penetration depth of intersecting surfaces
+// (the largest distance among the other stationary points) is not computed.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "solve/solver.hpp"
+#include "spline/bspline.hpp"
+#include "spline/limits.hpp"
+
+namespace splinex {
+
+template <class T>
+struct ContactPoint {
+  std::string where;      // "interior-interior", "edge-interior", ..., "corner-corner"
+  std::string strata;     // the two strata in words
+  std::vector<T> lo, hi;  // (u, v, r, t) box; lo == hi when exact
+  bool exact = false;     // lo is the stationary pair (a rational root, or corners)
+  bool unique = false;    // exactly one simple root of the strata's equations in the box (Krawczyk)
+  bool merged = false;    // boxes of neighbouring strata that overlap: one pair, or two very close ones
+  T d2_lo, d2_hi;         // |S1 - S2|^2 over the box
+  std::vector<T> p1, p2;  // the points (at lo when exact, else at the box's centre)
+};
+
+template <class T>
+struct ContactResult {
+  std::vector<ContactPoint<T>> points;     // stationary pairs that can matter to the minimum, by d2_lo
+  std::vector<ContactPoint<T>> undecided;  // boxes left open
+  std::vector<std::size_t> closest;        // pairs whose distance can be the smallest
+  bool closest_certified = false;          // one such pair and no undecided box below it
+  T distance2_lo, distance2_hi;            // the minimum squared distance, enclosed
+  bool intersecting = false;               // a common point is certified: the minimum is exactly 0
+  std::vector<T> common_lo, common_hi;     // its (u, v, r, t) box
+  std::size_t strata_pairs = 0, pairs_solved = 0, pairs_skipped = 0, boxes = 0;
+};
+
+/// The minimum distance of the surfaces S1 and S2 (dim 2, points in R^q, q >= 3: the first three
+/// coordinates; degree >= 1 in both directions).
+template <class T>
+ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options = {},
+                                  const Limits& limits = {});
+
+}  // namespace splinex
