@@ -2,8 +2,6 @@
 #include "solve/contact.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <numeric>
 #include <type_traits>
@@ -38,9 +36,9 @@ std::vector<T> concat(const std::vector<T>& a, const std::vector<T>& b) {
   return c;
 }
 
-/// The (u, v, r, t) of a system point x.
+/// The parameters (A's, then B's: (u, v, r, t) for two surfaces) of a system point x.
 template <class T>
-std::vector<T> params4(const Stratum<T>& A, const Stratum<T>& B, const std::vector<T>& x) {
+std::vector<T> params(const Stratum<T>& A, const Stratum<T>& B, const std::vector<T>& x) {
   return concat(surface_parameters(A, x, 0), surface_parameters(B, x, static_cast<std::size_t>(A.k)));
 }
 
@@ -76,7 +74,7 @@ bool certify_common_point(const Stratum<T>& A, const Stratum<T>& B, const PairSy
     T fixed_value(0);
     if (n == 4) {
       // Fix unknown `fixed` at the centre of the widened box (local 1/2).
-      for (auto& g : eq) g = detail::bern_face(detail::bern_split(g, static_cast<int>(fixed), T(1) / T(2)).second, static_cast<int>(fixed), 0);
+      for (auto& g : eq) g = detail::bern_fix(g, static_cast<int>(fixed), T(1) / T(2));
       const T w = sys.hi[fixed] - sys.lo[fixed];
       fixed_value = sys.lo[fixed] + w * (la[fixed] + lb[fixed]) / T(2);
     }
@@ -104,8 +102,8 @@ bool certify_common_point(const Stratum<T>& A, const Stratum<T>& B, const PairSy
         xl.insert(xl.begin() + static_cast<long>(fixed), fixed_value);
         xh.insert(xh.begin() + static_cast<long>(fixed), fixed_value);
       }
-      lo4 = params4(A, B, xl);
-      hi4 = params4(A, B, xh);
+      lo4 = params(A, B, xl);
+      hi4 = params(A, B, xh);
       return true;
     }
   }
@@ -114,11 +112,11 @@ bool certify_common_point(const Stratum<T>& A, const Stratum<T>& B, const PairSy
 
 }  // namespace
 
+namespace solve_detail {
+
 template <class T>
-ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits) {
-  require_surface(S1, "first", limits);
-  require_surface(S2, "second", limits);
-  const auto A = surface_strata(S1, limits), B = surface_strata(S2, limits);
+ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::vector<Stratum<T>>& B, const SolveOptions& options,
+                                  bool minimum) {
   ContactResult<T> out;
   out.strata_pairs = A.size() * B.size();
   // The model's size, for the threshold below which an intersection is sought.
@@ -154,18 +152,18 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
   std::vector<ContactPoint<T>> undecided;
   for (std::size_t i = 0; i < A.size(); ++i)
     for (std::size_t j = 0; j < B.size(); ++j) {
-      if (A[i].k + B[j].k == 0) {
-        T d2(0);
-        for (int c = 0; c < 3; ++c) d2 += (A[i].hull[c] - B[j].hull[c]) * (A[i].hull[c] - B[j].hull[c]);
-        if (U < T(0) || d2 < U) U = d2;
+      if (A[i].k + B[j].k == 0) {  // two points (corners, or a corner and the point)
         ContactPoint<T> p;
-        p.where = "corner-corner";
+        p.where = A[i].where + "-" + B[j].where;
         p.strata = A[i].label + " / " + B[j].label;
-        p.lo = p.hi = concat(std::vector<T>{A[i].lo[0], A[i].lo[1]}, std::vector<T>{B[j].lo[0], B[j].lo[1]});
+        p.lo = p.hi = params(A[i], B[j], {});
         p.exact = p.unique = true;
+        p.p1 = stratum_point(A[i], {}, 0);
+        p.p2 = stratum_point(B[j], {}, 0);
+        T d2(0);
+        for (int c = 0; c < 3; ++c) d2 += (p.p1[c] - p.p2[c]) * (p.p1[c] - p.p2[c]);
         p.d2_lo = p.d2_hi = d2;
-        p.p1 = {A[i].hull[0], A[i].hull[1], A[i].hull[2]};
-        p.p2 = {B[j].hull[0], B[j].hull[1], B[j].hull[2]};
+        if (U < T(0) || d2 < U) U = d2;
         found.push_back({std::move(p), -1, -1});
       } else {
         jobs.push_back({i, j, hull_distance2(A[i], B[j])});
@@ -175,7 +173,7 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
 
   for (const auto& job : jobs) {
     if (out.intersecting) break;
-    if (U < job.lower || (!(tau < U) && A[job.a].k + B[job.b].k < 3)) {
+    if (minimum && (U < job.lower || (!(tau < U) && A[job.a].k + B[job.b].k < 3))) {
       ++out.pairs_skipped;  // farther than the minimum, or too few unknowns to certify a common point
       continue;
     }
@@ -193,13 +191,13 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
       ContactPoint<T> u;
       u.where = where;
       u.strata = label + ": an equation vanishes identically";
-      u.lo = params4(a, b, sys.lo);
-      u.hi = params4(a, b, sys.hi);
+      u.lo = params(a, b, sys.lo);
+      u.hi = params(a, b, sys.hi);
       std::tie(u.d2_lo, u.d2_hi) = distance2_range(sys, sys.lo, sys.hi);
       round_enclosure(u.d2_lo, u.d2_hi);
       u.p1 = stratum_point(a, sys.lo, 0);
       u.p2 = stratum_point(b, sys.lo, static_cast<std::size_t>(a.k));
-      if (u.d2_hi < U) U = u.d2_hi;
+      if (U < T(0) || u.d2_hi < U) U = u.d2_hi;
       undecided.push_back(std::move(u));
       continue;
     }
@@ -238,9 +236,8 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
       }
       return U < low || !near_lo.empty();
     };
-    const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, &pr);
+    const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, minimum ? &pr : nullptr);
     ++out.pairs_solved;
-    if (std::getenv("SPLINEX_DEBUG")) std::fprintf(stderr, "%s: %zu boxes, %zu roots, %zu undecided, sign %zu kraw %zu caller %zu\n", label.c_str(), r.boxes, r.roots.size(), r.undecided.size(), r.discarded_by_sign, r.discarded_by_krawczyk, r.discarded_by_caller);
     out.boxes += r.boxes;
     const auto add = [&](const RootBox<T>& root, bool as_root) {
       ContactPoint<T> p;
@@ -250,8 +247,8 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
       p.unique = as_root && root.unique;
       const std::vector<T>& xl = p.exact ? root.point : root.lo;
       const std::vector<T>& xh = p.exact ? root.point : root.hi;
-      p.lo = params4(a, b, xl);
-      p.hi = params4(a, b, xh);
+      p.lo = params(a, b, xl);
+      p.hi = params(a, b, xh);
       if (p.exact) {
         p.d2_lo = p.d2_hi = distance2_at(sys, root.point);
       } else {
@@ -262,7 +259,7 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
       for (std::size_t l = 0; l < xl.size(); ++l) at[l] = (xl[l] + xh[l]) / T(2);
       p.p1 = stratum_point(a, at, 0);
       p.p2 = stratum_point(b, at, static_cast<std::size_t>(a.k));
-      if (as_root && p.d2_hi < U) U = p.d2_hi;
+      if (as_root && (U < T(0) || p.d2_hi < U)) U = p.d2_hi;
       if (as_root)
         found.push_back({std::move(p), static_cast<long>(job.a), static_cast<long>(job.b)});
       else
@@ -291,8 +288,8 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
     for (int s = 0; s < 2; ++s) {
       const Stratum<T>& st = s == 0 ? a : b;
       const std::size_t off = s == 0 ? 0 : static_cast<std::size_t>(a.k);
-      for (int d = 0; d < 2; ++d) {
-        const T& v = k.lo[2 * s + d];
+      for (int d = 0; d < st.dims; ++d) {
+        const T& v = k.lo[(s == 0 ? 0 : a.dims) + d];
         if (v < st.lo[d] || st.hi[d] < v) return false;
         if (st.var[d] < 0) {
           if (!(v == st.lo[d])) return false;
@@ -315,14 +312,14 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
     bool dup = false;
     for (auto& k : kept) {
       bool touch = true;
-      for (std::size_t l = 0; l < 4; ++l) touch = touch && !(p.hi[l] < k.lo[l]) && !(k.hi[l] < p.lo[l]);
+      for (std::size_t l = 0; l < p.lo.size(); ++l) touch = touch && !(p.hi[l] < k.lo[l]) && !(k.hi[l] < p.lo[l]);
       if (!touch) continue;
       if (p.exact && k.exact) {
         dup = p.lo == k.lo && p.p1 == k.p1 && p.p2 == k.p2;
       } else if (!p.exact && k.exact) {
         dup = same_root(f, k);
       } else {
-        for (std::size_t l = 0; l < 4; ++l) {
+        for (std::size_t l = 0; l < p.lo.size(); ++l) {
           if (p.lo[l] < k.lo[l]) k.lo[l] = p.lo[l];
           if (k.hi[l] < p.hi[l]) k.hi[l] = p.hi[l];
         }
@@ -336,11 +333,11 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
     }
     if (!dup) kept.push_back(std::move(p));
   }
-  // Only what can matter to the minimum.
+  // Only what can matter to the minimum (everything when all stationary pairs are asked for).
   for (auto& p : kept)
-    if (!(U < p.d2_lo)) out.points.push_back(std::move(p));
+    if (!minimum || !(U < p.d2_lo)) out.points.push_back(std::move(p));
   for (auto& u : undecided)
-    if (!(U < u.d2_lo)) out.undecided.push_back(std::move(u));
+    if (!minimum || !(U < u.d2_lo)) out.undecided.push_back(std::move(u));
   std::stable_sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.d2_lo < y.d2_lo; });
 
   for (const auto& p : out.points)
@@ -371,14 +368,28 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
   bool undecided_below = false;
   for (const auto& u : out.undecided) {
     if (u.d2_lo < out.distance2_lo) out.distance2_lo = u.d2_lo;
-    undecided_below = true;  // every kept undecided box has d2_lo <= U
+    undecided_below = undecided_below || !(U < u.d2_lo);
   }
   for (std::size_t i = 0; i < out.points.size(); ++i)
     if (!(out.distance2_hi < out.points[i].d2_lo)) out.closest.push_back(i);
-  bool within_tau = !(tau < U);
+  const bool within_tau = minimum && !(tau < U);
   out.closest_certified = ArithTraits<T>::exact && out.closest.size() == 1 && !undecided_below && !within_tau &&
                           (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact);
   return out;
+}
+
+template ContactResult<Rational> stationary_pairs(const std::vector<Stratum<Rational>>&, const std::vector<Stratum<Rational>>&, const SolveOptions&,
+                                                  bool);
+template ContactResult<double> stationary_pairs(const std::vector<Stratum<double>>&, const std::vector<Stratum<double>>&, const SolveOptions&,
+                                                bool);
+
+}  // namespace solve_detail
+
+template <class T>
+ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits) {
+  require_surface(S1, "first", limits);
+  require_surface(S2, "second", limits);
+  return solve_detail::stationary_pairs(surface_strata(S1, limits), surface_strata(S2, limits), options, true);
 }
 
 template ContactResult<Rational> surface_distance(const BSpline<Rational>&, const BSpline<Rational>&, const SolveOptions&, const Limits&);

@@ -81,6 +81,7 @@ Stratum<T> point_stratum(const std::vector<T>& P) {
   Stratum<T> s;
   for (int c = 0; c < 3; ++c) s.X[c] = constant<T>(0, P[c]);
   s.W = constant<T>(0, T(1));
+  s.dims = 0;
   s.where = "point";
   s.label = "the point";
   for (int c = 0; c < 3; ++c) s.hull[c] = s.hull[c + 3] = P[c];
@@ -176,7 +177,7 @@ PairSystem<T> pair_system(const Stratum<T>& A, const Stratum<T>& B) {
   sys.WW = detail::bern_product(sys.W, sys.W);
   for (const auto* s : {&A, &B})
     for (int v = 0; v < s->k; ++v)
-      for (int d = 0; d < 2; ++d)
+      for (int d = 0; d < s->dims; ++d)
         if (s->var[d] == v) {
           sys.lo.push_back(s->lo[d]);
           sys.hi.push_back(s->hi[d]);
@@ -198,15 +199,15 @@ T hull_distance2(const Stratum<T>& A, const Stratum<T>& B) {
 
 template <class T>
 std::vector<T> surface_parameters(const Stratum<T>& A, const std::vector<T>& x, std::size_t offset) {
-  std::vector<T> uv(2);
-  for (int d = 0; d < 2; ++d) uv[d] = A.var[d] < 0 ? A.lo[d] : x[offset + A.var[d]];
+  std::vector<T> uv(static_cast<std::size_t>(A.dims));
+  for (int d = 0; d < A.dims; ++d) uv[d] = A.var[d] < 0 ? A.lo[d] : x[offset + A.var[d]];
   return uv;
 }
 
 template <class T>
 std::vector<T> stratum_point(const Stratum<T>& A, const std::vector<T>& x, std::size_t offset) {
   std::vector<T> t(A.k);
-  for (int d = 0; d < 2; ++d)
+  for (int d = 0; d < A.dims; ++d)
     if (A.var[d] >= 0) t[A.var[d]] = (x[offset + A.var[d]] - A.lo[d]) / (A.hi[d] - A.lo[d]);
   const T w = detail::bern_value(A.W, t);
   std::vector<T> p(3);
@@ -251,10 +252,7 @@ std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& 
   }
   for (std::size_t l = sys.n; l-- > 0;) {  // sides of width 0, last first (bern_face drops the direction)
     if (!zero[l]) continue;
-    const auto face = [&](const Bern<T>& g) {
-      if (T(0) < fixed[l] && fixed[l] < T(1)) return detail::bern_face(detail::bern_split(g, static_cast<int>(l), fixed[l]).second, static_cast<int>(l), 0);
-      return detail::bern_face(g, static_cast<int>(l), fixed[l] == T(0) ? 0 : 1);
-    };
+    const auto face = [&](const Bern<T>& g) { return detail::bern_fix(g, static_cast<int>(l), fixed[l]); };
     each(face);
   }
   const auto [dlo, dhi] = detail::bern_range(D2);

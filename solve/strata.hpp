@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "solve/contact.hpp"
 #include "spline/bezier.hpp"
 #include "spline/bspline.hpp"
 #include "spline/limits.hpp"
@@ -25,11 +26,12 @@ using detail::Bern;
 
 template <class T>
 struct Stratum {
+  int dims = 2;           // the object's parameters: 2 a surface, 1 a curve, 0 a point
   int k = 0;              // free parameters: 2 a piece, 1 an edge, 0 a corner or a point
   Bern<T> X[3], W;        // homogeneous coordinates in the k local parameters (W = 1 of degree 0 when polynomial)
   bool rational = false;
-  int var[2] = {-1, -1};  // per surface parameter: its free local variable, or -1 when fixed
-  T lo[2], hi[2];         // per surface parameter: its range (lo == hi when fixed)
+  int var[2] = {-1, -1};  // per parameter of the object: its free local variable, or -1 when fixed
+  T lo[2], hi[2];         // per parameter of the object: its range (lo == hi when fixed)
   std::size_t piece = 0;  // the Bezier piece it lies in
   std::string where;      // "interior", "edge", "corner", "point"
   std::string label;      // in words
@@ -64,6 +66,13 @@ PairSystem<T> pair_system(const Stratum<T>& A, const Stratum<T>& B);
 /// squared distance of any two of their points).
 template <class T>
 T hull_distance2(const Stratum<T>& A, const Stratum<T>& B);
+
+/// The stationary pairs of |A - B|^2 over all pairs of strata (solve/contact.hpp's engine):
+/// `minimum` searches only what can hold the minimum (branch and bound, a common point when the
+/// objects meet); otherwise every stationary pair is listed.
+template <class T>
+ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::vector<Stratum<T>>& B, const SolveOptions& options,
+                                  bool minimum);
 
 /// The parameters of a stratum's surface point for a vector of its local unknowns x (offset: where
 /// its unknowns start in x), in the surface's parameters; and its point (first three coordinates).

@@ -181,6 +181,14 @@ Bern<T> bern_face(const Bern<T>& b, int l, int side) {
   return out;
 }
 
+/// b with direction l fixed at t in [0, 1] (one direction fewer): the face at an end, else the
+/// face of the part above t.
+template <class T>
+Bern<T> bern_fix(const Bern<T>& b, int l, const T& t) {
+  if (T(0) < t && t < T(1)) return bern_face(bern_split(b, l, t).second, l, 0);
+  return bern_face(b, l, t == T(0) ? 0 : 1);
+}
+
 /// The value at x in [0, 1]^n (de Casteljau, direction by direction).
 template <class T>
 T bern_value(const Bern<T>& b, const std::vector<T>& x) {
