@@ -6,7 +6,10 @@
 
 #include "apps/command.hpp"
 #include "float/rounding.hpp"
+#include "experiments/solve_study.hpp"
+#include "experiments/svg_plot.hpp"
 #include "solve/contact.hpp"
+#include "solve/curve_projection.hpp"
 #include "solve/projection.hpp"
 
 namespace splinex::app {
@@ -123,19 +126,61 @@ Json contact_json(const ContactResult<T>& r) {
   return out;
 }
 
+Json curve_projection_json(const CurveProjectionResult& r) {
+  Json out;
+  out["segments"] = r.segments;
+  out["loops"] = r.loops;
+  out["certified_counts"] = r.certified_counts;
+  out["consistent"] = r.consistent;
+  out["max_cosine"] = r.max_cosine;
+  out["traced_points"] = r.traced_points;
+  out["boxes"] = r.boxes;
+  Json sp = Json::array();
+  for (const auto& p : r.special) {
+    Json j{{"kind", p.kind}, {"where", p.where}, {"branches", p.branches}};
+    j["parameters"] = p.exact ? point_to_json(p.lo) : box_json(p.lo, p.hi);
+    j["certificate"] = p.exact && p.unique ? "exact root, certified simple" : p.exact ? "exact root, multiplicity not decided" : p.unique ? "Krawczyk: one simple root in the box" : "none";
+    sp.push_back(j);
+  }
+  out["special_points"] = sp;
+  Json und = Json::array();
+  for (const auto& p : r.undecided) und.push_back(Json{{"where", p.where}, {"parameters", box_json(p.lo, p.hi)}});
+  out["undecided"] = und;
+  Json sl = Json::array();
+  for (const auto& s : r.slices) sl.push_back(Json{{"t", to_fraction_string(s.t)}, {"branches", s.roots}, {"certified", s.certified}});
+  out["slices"] = sl;
+  std::string verdict;
+  if (r.certified_counts && r.consistent)
+    verdict = "certified: the end and turning points and the number of branches between them; the joins traced in double agree with them (" +
+              std::to_string(r.segments) + " segments, " + std::to_string(r.loops) + " loops)";
+  else if (r.certified_counts)
+    verdict = "not certified: the special points and counts are certified, but the traced joins do not agree with them";
+  else
+    verdict = "not certified: some special points or slices stay undecided";
+  out["verdict"] = verdict;
+  return out;
+}
+
 }  // namespace
 
 Commands add_project(CLI::App& app) {
   struct Options {
-    std::string arith = "exact", file, point;
-    int max_depth = 30;
+    std::string arith = "exact", file, point, curve, svg, obj;
+    int max_depth = 30, steps = 48;
     std::size_t max_boxes = 200000;
   };
   auto o = std::make_shared<Options>();
-  auto* c = app.add_subcommand("project", "orthogonal projection of a point onto a surface: all critical points of the distance, the closest one certified");
-  add_arith_option(c, o->arith, "exact (certified) or double (the same subdivision in double, uncertified)")
+  auto* c = app.add_subcommand("project",
+                               "orthogonal projection onto a surface: of a point (all critical points of the distance, the closest one certified) "
+                               "or of a curve (Eq. 3: the solution curves, special points certified, branches traced)");
+  add_arith_option(c, o->arith, "exact (certified) or double (the same subdivision in double, uncertified; --point only)")
       ->check(CLI::IsMember({"exact", "double"}));
-  c->add_option("--point", o->point, "the point \"x,y,z\"")->required();
+  auto* point = c->add_option("--point", o->point, "the point \"x,y,z\"");
+  auto* curve = c->add_option("--curve", o->curve, "a curve document (polynomial or rational, points x,y,z)");
+  point->excludes(curve);
+  c->add_option("--steps", o->steps, "--curve: tracing steps in t between critical values")->check(CLI::Range(2, 100000))->capture_default_str();
+  c->add_option("--svg", o->svg, "--curve: write the parameter-domain and top-view figure here");
+  c->add_option("--obj", o->obj, "--curve: write the curve, the surface's boundary and the projection as OBJ polylines here");
   c->add_option("--max-depth", o->max_depth, "halvings per direction before a box is undecided")->check(CLI::Range(1, 200))->capture_default_str();
   c->add_option("--max-boxes", o->max_boxes, "solver boxes per system before the rest is undecided")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
@@ -143,6 +188,21 @@ Commands add_project(CLI::App& app) {
   c->add_option("surface", o->file, "spline surface document, - for stdin")->required();
   return {{c, [o](const Context& ctx) {
              const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             if (o->point.empty() == o->curve.empty()) throw UsageError("project", "needs --point or --curve", "give one of them");
+             if (!o->curve.empty()) {
+               if (o->arith != "exact") throw UsageError("arith", "--curve runs in exact arithmetic only", "leave --arith out");
+               const auto C = spline_from_json(read_json_file(o->curve, ctx.read_limits), ctx.limits, "curve");
+               CurveProjectionOptions co;
+               co.solve.max_depth = o->max_depth;
+               co.solve.max_boxes = o->max_boxes;
+               co.steps = o->steps;
+               const auto r = project_curve(C, S, co, ctx.limits);
+               if (!o->svg.empty()) write_file_atomically(o->svg, curve_projection_svg(C, S, r, "Projection of a curve onto a surface (papers/002 Eq. 3)"));
+               if (!o->obj.empty()) write_file_atomically(o->obj, curve_projection_obj(C, S, r));
+               std::cout << curve_projection_json(r).dump() << "\n";
+               return 0;
+             }
+             if (!o->svg.empty() || !o->obj.empty()) throw UsageError("svg", "figures are drawn for --curve only", "leave --svg and --obj out");
              const auto P = parse_number_list(o->point, "point");
              if (P.size() != 3) throw UsageError("point", "has " + std::to_string(P.size()) + " coordinates", "write --point \"x,y,z\"");
              SolveOptions so;

@@ -145,6 +145,30 @@ std::vector<Stratum<T>> surface_strata(const BSpline<T>& S, const Limits& limits
 }
 
 template <class T>
+std::vector<Stratum<T>> curve_strata(const BSpline<T>& C, const Limits& limits) {
+  const BezierForm<T> F = bezier_form(C, limits);
+  std::vector<Stratum<T>> out;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto bp = F.piece(k);
+    Stratum<T> s;
+    s.dims = 1;
+    s.k = 1;
+    s.rational = C.is_rational();
+    s.piece = k;
+    for (int c = 0; c < 3; ++c) s.X[c] = detail::bern_coordinate(bp.spline, c);
+    s.W = s.rational ? detail::bern_coordinate(bp.spline, bp.spline.q) : constant<T>(1, T(1));
+    s.var[0] = 0;
+    s.lo[0] = bp.box[0].first;
+    s.hi[0] = bp.box[0].second;
+    s.where = "curve";
+    s.label = "curve piece [" + text(s.lo[0]) + ", " + text(s.hi[0]) + "]";
+    set_hull(s);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+template <class T>
 PairSystem<T> pair_system(const Stratum<T>& A, const Stratum<T>& B) {
   PairSystem<T> sys;
   const std::size_t n = static_cast<std::size_t>(A.k + B.k), oa = 0, ob = static_cast<std::size_t>(A.k);
@@ -273,6 +297,7 @@ T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
 #define SPLINEX_STRATA(T)                                                                                                 \
   template std::vector<Stratum<T>> surface_strata(const BSpline<T>&, const Limits&);                                     \
   template Stratum<T> point_stratum(const std::vector<T>&);                                                              \
+  template std::vector<Stratum<T>> curve_strata(const BSpline<T>&, const Limits&);                                       \
   template PairSystem<T> pair_system(const Stratum<T>&, const Stratum<T>&);                                              \
   template T hull_distance2(const Stratum<T>&, const Stratum<T>&);                                                       \
   template std::vector<T> surface_parameters(const Stratum<T>&, const std::vector<T>&, std::size_t);                     \

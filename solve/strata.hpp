@@ -44,6 +44,10 @@ struct Stratum {
 template <class T>
 std::vector<Stratum<T>> surface_strata(const BSpline<T>& S, const Limits& limits);
 
+/// The Bezier pieces of a curve C (dim 1, q >= 3) as strata with one free parameter (dims 1).
+template <class T>
+std::vector<Stratum<T>> curve_strata(const BSpline<T>& C, const Limits& limits);
+
 /// A point as a stratum with no free parameter.
 template <class T>
 Stratum<T> point_stratum(const std::vector<T>& P);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
+#include "solve/curve_projection.hpp"
 #include "solve/projection.hpp"
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
@@ -135,4 +136,58 @@ TEST_CASE("projection: refusals", "[solve]") {
   CHECK_THROWS_AS(project_point<R>(flat, {R(0), R(0), R(1)}), ValidationError);
   const auto curve = make_spline<R>({1}, {{R(0), R(0), R(1), R(1)}}, 3, {R(0), R(0), R(0), R(1), R(0), R(0)});
   CHECK_THROWS_AS(project_point<R>(curve, {R(0), R(0), R(1)}), ValidationError);
+}
+
+TEST_CASE("curve projection: Figure 12's situation, a circle over a saddle in four segments", "[solve]") {
+  // The saddle z = (x^2 - y^2) / 8 over [-2, 2]^2 and the exact circle of radius 13/5 at z = 1/2
+  // (four rational quarters, C^0 at the knots): the circle leaves the square's projection near the
+  // axes, the projection leaves the domain through all four sides twice (tests/data/saddle.json,
+  // circle.json; the feet of the axis points lie beyond |x| = 2 for radius > 5/2, those of the
+  // diagonal points inside for radius < 2 sqrt 2).
+  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-2, -2, -2, 2, 2, 2], [-2, -2, -2, 2, 2, 2]],
+    "points": [[-2, -2, 0], [0, -2, -1], [2, -2, 0], [-2, 0, 1], [0, 0, 0], [2, 0, 1], [-2, 2, 0], [0, 2, -1], [2, 2, 0]]})");
+  const auto C = test::spline(R"({"type": "bspline", "degrees": [2], "knots": [[0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4]],
+    "points": [["13/5", 0, "1/2"], ["13/5", "13/5", "1/2"], [0, "13/5", "1/2"], ["-13/5", "13/5", "1/2"], ["-13/5", 0, "1/2"],
+               ["-13/5", "-13/5", "1/2"], [0, "-13/5", "1/2"], ["13/5", "-13/5", "1/2"], ["13/5", 0, "1/2"]],
+    "weights": [1, 1, 2, 2, 4, 4, 8, 8, 16]})");
+  const auto r = project_curve(C, S);
+  CHECK(r.segments == 4);
+  CHECK(r.loops == 0);
+  CHECK(r.certified_counts);
+  CHECK(r.consistent);
+  CHECK(r.max_cosine < 1e-12);
+  // Eight ends, all on the surface's boundary, each with one branch.
+  int ends = 0;
+  for (const auto& p : r.special) {
+    CHECK(p.kind == "surface boundary");
+    CHECK(p.branches == 1);
+    ++ends;
+  }
+  CHECK(ends == 8);
+}
+
+TEST_CASE("curve projection: a fold (turning point) and branches that end on the curve's ends", "[solve]") {
+  // z = x^2 (a parabolic cylinder) and the vertical line (1/10, 0, t), t in [0, 2]: from below the
+  // focal height one foot, above it three (the cubic 2x^3 + (1 - 2t) x - 1/10 = 0 gains two roots
+  // at a fold), and the outer feet leave the domain at x = -1 (t = 31/20) and x = 1 (t = 29/20):
+  // exactly, since 2 + (1 - 2t) (+-1) -+ 1/10 = 0 there.
+  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-1, -1, -1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
+    "points": [[-1, -1, 1], [0, -1, -1], [1, -1, 1], [-1, 0, 1], [0, 0, -1], [1, 0, 1], [-1, 1, 1], [0, 1, -1], [1, 1, 1]]})");
+  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 2, 2]], "points": [["1/10", 0, 0], ["1/10", 0, 2]]})");
+  const auto r = project_curve(C, S);
+  CHECK(r.certified_counts);
+  CHECK(r.consistent);
+  CHECK(r.segments == 2);
+  int turning = 0;
+  bool left = false, right = false;
+  for (const auto& p : r.special) {
+    turning += p.kind == "turning point";
+    if (p.kind == "surface boundary" && p.exact) {
+      left = left || (p.lo == std::vector<R>{R(-1), R(0), R(31, 20)});
+      right = right || (p.lo == std::vector<R>{R(1), R(0), R(29, 20)});
+    }
+  }
+  CHECK(turning == 1);
+  CHECK(left);
+  CHECK(right);
 }

@@ -1,0 +1,445 @@
+// Curve projection onto a surface (solve/curve_projection.hpp).
+#include "solve/curve_projection.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+
+#include "solve/strata.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex {
+
+namespace {
+
+using solve_detail::PairSystem;
+using solve_detail::Stratum;
+using Bern = detail::Bern<Rational>;
+using BernD = detail::Bern<double>;
+
+BernD to_double_bern(const Bern& b) {
+  BernD d{b.deg, {}};
+  d.c.reserve(b.c.size());
+  for (const auto& x : b.c) d.c.push_back(to_double(x));
+  return d;
+}
+
+bool is_zero(const Bern& b) {
+  for (const auto& x : b.c)
+    if (x != 0) return false;
+  return true;
+}
+
+/// A special point with its node data.
+struct Node {
+  ProjectionSpecialPoint sp;
+  bool terminal = false;  // an end of a segment (the curve's end, the surface's boundary)
+  bool joint = false;     // a point where a solution goes on into the neighbouring pair of pieces
+  std::size_t pair = 0;
+  std::array<double, 3> at{};  // the centre, in double
+};
+
+/// A traced arc between two critical values of one pair.
+struct Arc {
+  ProjectionBranch branch;
+  std::size_t pair = 0;
+  std::size_t cluster_below = 0, cluster_above = 0;  // indices into the pair's clusters (npos: none)
+  std::size_t next[2] = {static_cast<std::size_t>(-1), static_cast<std::size_t>(-1)};  // the arc its lower / upper end goes on into
+};
+
+struct UnionFind {
+  std::vector<std::size_t> p;
+  std::size_t add() {
+    p.push_back(p.size());
+    return p.size() - 1;
+  }
+  std::size_t find(std::size_t a) {
+    while (p[a] != a) a = p[a] = p[p[a]];
+    return a;
+  }
+  void unite(std::size_t a, std::size_t b) { p[find(a)] = find(b); }
+};
+
+double dist2(const std::array<double, 3>& a, const std::array<double, 3>& b, bool with_t) {
+  double s = 0;
+  for (int i = 0; i < (with_t ? 3 : 2); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return s;
+}
+
+bool boxes_meet(const std::vector<Rational>& alo, const std::vector<Rational>& ahi, const std::vector<Rational>& blo, const std::vector<Rational>& bhi) {
+  for (std::size_t l = 0; l < alo.size(); ++l)
+    if (ahi[l] < blo[l] || bhi[l] < alo[l]) return false;
+  return true;
+}
+
+}  // namespace
+
+CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Rational>& S, const CurveProjectionOptions& options,
+                                    const Limits& limits) {
+  validate(C, limits);
+  validate(S, limits);
+  if (C.dim() != 1 || C.q < 3) throw ValidationError("curve", "is not a curve in R^3", "give a spline with one parametric direction and points x,y,z");
+  if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  if (C.degrees[0] == 0) throw ValidationError("curve.degrees[0]", "is 0", "elevate the curve to degree >= 1");
+  for (int d = 0; d < 2; ++d)
+    if (S.degrees[d] == 0)
+      throw ValidationError("surface.degrees[" + std::to_string(d) + "]", "is 0: the surface has no tangent plane", "elevate the surface to degree >= 1");
+  if (options.steps < 2 || options.steps > 100000) throw UsageError("steps", "must be in [2, 100000]", "use e.g. 48");
+  const auto faces = [&] {
+    std::vector<Stratum<Rational>> out;
+    for (auto& s : solve_detail::surface_strata(S, limits))
+      if (s.where == "interior") out.push_back(std::move(s));
+    return out;
+  }();
+  const auto curves = solve_detail::curve_strata(C, limits);
+  const Rational dlo[3] = {S.domain_lo(0), S.domain_lo(1), C.domain_lo(0)}, dhi[3] = {S.domain_hi(0), S.domain_hi(1), C.domain_hi(0)};
+  const char* name[3] = {"u", "v", "t"};
+
+  CurveProjectionResult out;
+  std::vector<Node> nodes;
+  std::vector<Arc> arcs;
+  bool consistent = true, counts = true;
+  std::size_t pair_index = 0;
+  // Arc ends joined to nodes, and arc ends joined to arc ends, recorded for the union below.
+  std::vector<std::pair<std::size_t, std::size_t>> arc_node, arc_arc;
+
+  for (const auto& A : faces)
+    for (const auto& B : curves) {
+      const std::size_t pair = pair_index++;
+      const PairSystem<Rational> sys = solve_detail::pair_system(A, B);
+      const std::vector<Bern> F{sys.equations[0], sys.equations[1]};  // the surface's two: Eq. 3
+      if (detail::bern_sign(F[0]) != 0 || detail::bern_sign(F[1]) != 0) continue;  // no solution in this box
+      if (is_zero(F[0]) || is_zero(F[1])) {
+        ProjectionSpecialPoint u;
+        u.kind = "degenerate";
+        u.where = A.label + " / " + B.label + ": an equation vanishes identically";
+        u.lo = sys.lo;
+        u.hi = sys.hi;
+        out.undecided.push_back(u);
+        counts = false;
+        continue;
+      }
+      const std::size_t first_node = nodes.size();
+      const auto add_node = [&](Node n) {
+        // The same point found on two faces of the box (an edge or corner of it) is one node.
+        for (std::size_t i = first_node; i < nodes.size(); ++i)
+          if ((n.sp.exact && nodes[i].sp.exact && n.sp.lo == nodes[i].sp.lo) ||
+              (!(n.sp.exact && nodes[i].sp.exact) && boxes_meet(n.sp.lo, n.sp.hi, nodes[i].sp.lo, nodes[i].sp.hi))) {
+            if (n.terminal) nodes[i].terminal = true, nodes[i].sp.kind = n.sp.kind, nodes[i].sp.where = n.sp.where;
+            if (n.joint && !nodes[i].terminal) nodes[i].joint = true, nodes[i].sp.kind = n.sp.kind, nodes[i].sp.where = n.sp.where;
+            return;
+          }
+        n.pair = pair;
+        for (int l = 0; l < 3; ++l) n.at[l] = to_double((n.sp.lo[l] + n.sp.hi[l]) / 2);
+        nodes.push_back(std::move(n));
+      };
+      const auto undecided = [&](const RootBox<Rational>& box, const std::string& what, const std::function<std::vector<Rational>(const std::vector<Rational>&)>& to3) {
+        ProjectionSpecialPoint u;
+        u.kind = "undecided";
+        u.where = what;
+        u.lo = to3(box.lo);
+        u.hi = to3(box.hi);
+        out.undecided.push_back(u);
+        counts = false;
+      };
+      // End points on the six faces of the box.
+      for (int l = 0; l < 3; ++l)
+        for (int side = 0; side < 2; ++side) {
+          const Rational x = side ? sys.hi[l] : sys.lo[l];
+          const std::vector<Bern> G{detail::bern_fix(F[0], l, Rational(side)), detail::bern_fix(F[1], l, Rational(side))};
+          std::vector<Rational> glo, ghi;
+          for (int m = 0; m < 3; ++m)
+            if (m != l) {
+              glo.push_back(sys.lo[m]);
+              ghi.push_back(sys.hi[m]);
+            }
+          const auto to3 = [&](const std::vector<Rational>& y) {
+            std::vector<Rational> z(y);
+            z.insert(z.begin() + l, x);
+            return z;
+          };
+          const bool terminal = x == dlo[l] || x == dhi[l];
+          const std::string kind = terminal ? (l == 2 ? "curve end" : "surface boundary") : "joint";
+          const std::string where = std::string(name[l]) + " = " + to_fraction_string(x) + (terminal ? "" : l == 2 ? " (a knot of the curve)" : " (a knot line of the surface)");
+          if (is_zero(G[0]) || is_zero(G[1])) {
+            RootBox<Rational> b;
+            b.lo = glo;
+            b.hi = ghi;
+            undecided(b, where + ": the equations vanish on the whole face", to3);
+            continue;
+          }
+          const auto r = solve_system(G, glo, ghi, options.solve);
+          out.boxes += r.boxes;
+          for (const auto& root : r.roots) {
+            Node n;
+            n.sp.kind = kind;
+            n.sp.where = where;
+            n.sp.exact = root.exact;
+            n.sp.unique = root.unique;
+            n.sp.lo = to3(root.exact ? root.point : root.lo);
+            n.sp.hi = to3(root.exact ? root.point : root.hi);
+            n.terminal = terminal;
+            n.joint = !terminal;
+            if (!root.unique) counts = false;
+            add_node(std::move(n));
+          }
+          for (const auto& box : r.undecided) undecided(box, where, to3);
+        }
+      // Turning points: F = 0 and det dF/d(u, v) = 0.
+      {
+        const Bern J = detail::bern_sub(detail::bern_product(detail::bern_derivative(F[0], 0), detail::bern_derivative(F[1], 1)),
+                                        detail::bern_product(detail::bern_derivative(F[0], 1), detail::bern_derivative(F[1], 0)));
+        const auto id = [](const std::vector<Rational>& y) { return y; };
+        if (is_zero(J)) {
+          RootBox<Rational> b;
+          b.lo = sys.lo;
+          b.hi = sys.hi;
+          undecided(b, A.label + " / " + B.label + ": det dF/d(u, v) vanishes identically", id);
+        } else {
+          const auto r = solve_system({F[0], F[1], J}, sys.lo, sys.hi, options.solve);
+          out.boxes += r.boxes;
+          for (const auto& root : r.roots) {
+            Node n;
+            n.sp.kind = "turning point";
+            n.sp.where = A.label + " / " + B.label;
+            n.sp.exact = root.exact;
+            n.sp.unique = root.unique;
+            n.sp.lo = root.exact ? root.point : root.lo;
+            n.sp.hi = root.exact ? root.point : root.hi;
+            if (!root.unique) counts = false;
+            add_node(std::move(n));
+          }
+          for (const auto& box : r.undecided) undecided(box, "turning points of " + A.label + " / " + B.label, id);
+        }
+      }
+      // Critical values of t: clusters of the special points' t ranges.
+      struct Cluster {
+        Rational lo, hi;
+        std::vector<std::size_t> members;
+      };
+      std::vector<Cluster> clusters;
+      {
+        std::vector<std::size_t> order(nodes.size() - first_node);
+        std::iota(order.begin(), order.end(), first_node);
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes[a].sp.lo[2] < nodes[b].sp.lo[2]; });
+        for (std::size_t i : order) {
+          if (!clusters.empty() && !(clusters.back().hi < nodes[i].sp.lo[2])) {
+            if (clusters.back().hi < nodes[i].sp.hi[2]) clusters.back().hi = nodes[i].sp.hi[2];
+            clusters.back().members.push_back(i);
+          } else {
+            clusters.push_back({nodes[i].sp.lo[2], nodes[i].sp.hi[2], {i}});
+          }
+        }
+      }
+      // Gaps between them (and the box's ends), each with a certified slice and traced arcs.
+      const BernD Fd[2] = {to_double_bern(F[0]), to_double_bern(F[1])};
+      const BernD dF[2][2] = {{detail::bern_derivative(Fd[0], 0), detail::bern_derivative(Fd[0], 1)},
+                              {detail::bern_derivative(Fd[1], 0), detail::bern_derivative(Fd[1], 1)}};
+      const double t0 = to_double(sys.lo[2]), t1 = to_double(sys.hi[2]);
+      const double u0 = to_double(sys.lo[0]), u1 = to_double(sys.hi[0]), v0 = to_double(sys.lo[1]), v1 = to_double(sys.hi[1]);
+      constexpr std::size_t none = static_cast<std::size_t>(-1);
+      std::vector<std::size_t> pair_arcs;
+      for (std::size_t g = 0; g <= clusters.size(); ++g) {
+        const Rational glo = g == 0 ? sys.lo[2] : clusters[g - 1].hi, ghi = g == clusters.size() ? sys.hi[2] : clusters[g].lo;
+        if (!(glo < ghi)) continue;
+        const Rational q = (ghi - glo) / 4;
+        ProjectionSlice sl;
+        sl.t = simplest_rational_between(glo + q, ghi - q);
+        const Rational tl = (sl.t - sys.lo[2]) / (sys.hi[2] - sys.lo[2]);
+        const std::vector<Bern> G{detail::bern_fix(F[0], 2, tl), detail::bern_fix(F[1], 2, tl)};
+        if (is_zero(G[0]) || is_zero(G[1])) {
+          counts = false;
+          continue;
+        }
+        const auto r = solve_system(G, {sys.lo[0], sys.lo[1]}, {sys.hi[0], sys.hi[1]}, options.solve);
+        out.boxes += r.boxes;
+        sl.roots = r.roots.size();
+        sl.certified = r.complete();
+        counts = counts && sl.certified;
+        out.slices.push_back(sl);
+        // Trace each root up to ghi and down to glo in double (local coordinates of the box).
+        const double tlo = (to_double(glo) - t0) / (t1 - t0), thi = (to_double(ghi) - t0) / (t1 - t0), ts = to_double(tl);
+        for (const auto& root : r.roots) {
+          const std::vector<Rational>& x = root.exact ? root.point : root.lo;
+          const std::vector<Rational>& y = root.exact ? root.point : root.hi;
+          std::array<double, 2> start = {(to_double((x[0] + y[0]) / 2) - u0) / (u1 - u0), (to_double((x[1] + y[1]) / 2) - v0) / (v1 - v0)};
+          std::vector<std::array<double, 3>> down, up;
+          bool lost = false;
+          for (int dir = -1; dir <= 1; dir += 2) {
+            auto& pts = dir < 0 ? down : up;
+            std::array<double, 2> p = start, prev = start;
+            const double target = dir < 0 ? tlo : thi;
+            for (int k = 1; k <= options.steps; ++k) {
+              const double t = ts + (target - ts) * k / options.steps;
+              std::array<double, 2> guess = {2 * p[0] - prev[0], 2 * p[1] - prev[1]};
+              if (k == 1) guess = p;
+              bool ok = false;
+              for (int it = 0; it < 30; ++it) {
+                const std::vector<double> at{guess[0], guess[1], t};
+                Eigen::Vector2d f(detail::bern_value(Fd[0], at), detail::bern_value(Fd[1], at));
+                Eigen::Matrix2d J;
+                for (int i = 0; i < 2; ++i)
+                  for (int j = 0; j < 2; ++j) J(i, j) = detail::bern_value(dF[i][j], at);
+                const Eigen::Vector2d d = J.fullPivLu().solve(f);
+                if (!d.allFinite()) break;
+                guess[0] -= d(0);
+                guess[1] -= d(1);
+                if (d.lpNorm<Eigen::Infinity>() < 1e-15) {
+                  ok = true;
+                  break;
+                }
+              }
+              if (!ok || guess[0] < -1e-9 || guess[0] > 1 + 1e-9 || guess[1] < -1e-9 || guess[1] > 1 + 1e-9) {
+                lost = true;
+                break;
+              }
+              prev = p;
+              p = guess;
+              pts.push_back({u0 + (u1 - u0) * p[0], v0 + (v1 - v0) * p[1], t0 + (t1 - t0) * t});
+            }
+          }
+          if (lost) consistent = false;
+          Arc a;
+          a.pair = pair;
+          std::reverse(down.begin(), down.end());
+          a.branch.points = down;
+          a.branch.points.push_back({u0 + (u1 - u0) * start[0], v0 + (v1 - v0) * start[1], t0 + (t1 - t0) * ts});
+          a.branch.points.insert(a.branch.points.end(), up.begin(), up.end());
+          a.cluster_below = g == 0 ? none : g - 1;
+          a.cluster_above = g == clusters.size() ? none : g;
+          pair_arcs.push_back(arcs.size());
+          arcs.push_back(std::move(a));
+        }
+      }
+      // Joins at each cluster: every arc end goes to the nearest special point of the cluster or
+      // the nearest arc end on its other side, in (u, v, t).
+      for (std::size_t c = 0; c < clusters.size(); ++c) {
+        for (std::size_t ai : pair_arcs) {
+          for (int side = 0; side < 2; ++side) {
+            const bool below = side == 0;  // the arc's lower end at cluster c (the arc lies above it)
+            if ((below ? arcs[ai].cluster_below : arcs[ai].cluster_above) != c) continue;
+            const auto& end = below ? arcs[ai].branch.points.front() : arcs[ai].branch.points.back();
+            double best = INFINITY;
+            std::size_t best_node = none, best_arc = none;
+            for (std::size_t m : clusters[c].members) {
+              const double d = dist2(end, nodes[m].at, true);
+              if (d < best) best = d, best_node = m, best_arc = none;
+            }
+            for (std::size_t bj : pair_arcs) {  // an arc on the other side going on through
+              if (bj == ai) continue;
+              if ((below ? arcs[bj].cluster_above : arcs[bj].cluster_below) != c) continue;
+              const auto& other = below ? arcs[bj].branch.points.back() : arcs[bj].branch.points.front();
+              const double d = dist2(end, other, true);
+              if (d < best) best = d, best_node = none, best_arc = bj;
+            }
+            if (best_node != none) {
+              arc_node.emplace_back(ai, best_node);
+              ++nodes[best_node].sp.branches;
+            } else if (best_arc != none) {
+              arc_arc.emplace_back(ai, best_arc);
+              arcs[ai].next[side] = best_arc;
+            } else {
+              consistent = false;  // nothing to join to
+            }
+          }
+        }
+      }
+    }
+
+  // An arc that goes on into another must be that arc's choice too; an arc end at the box's side
+  // with no special point there is a point the solver did not find.
+  for (std::size_t a = 0; a < arcs.size(); ++a) {
+    if (arcs[a].cluster_below == static_cast<std::size_t>(-1) || arcs[a].cluster_above == static_cast<std::size_t>(-1)) consistent = false;
+    for (int side = 0; side < 2; ++side)
+      if (arcs[a].next[side] != static_cast<std::size_t>(-1) && arcs[arcs[a].next[side]].next[1 - side] != a) consistent = false;
+  }
+  // Components: nodes and arcs; joints of neighbouring pairs that are the same point are one.
+  UnionFind uf;
+  for (std::size_t i = 0; i < nodes.size() + arcs.size(); ++i) uf.add();
+  const std::size_t base = nodes.size();
+  for (const auto& [a, n] : arc_node) uf.unite(base + a, n);
+  for (const auto& [a, b] : arc_arc) uf.unite(base + a, base + b);
+  std::vector<int> joint_branches(nodes.size(), 0);
+  for (std::size_t i = 0; i < nodes.size(); ++i) joint_branches[i] = nodes[i].sp.branches;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (std::size_t j = i + 1; j < nodes.size(); ++j)
+      if (nodes[i].joint && nodes[j].joint && nodes[i].pair != nodes[j].pair &&
+          ((nodes[i].sp.exact && nodes[j].sp.exact) ? nodes[i].sp.lo == nodes[j].sp.lo : boxes_meet(nodes[i].sp.lo, nodes[i].sp.hi, nodes[j].sp.lo, nodes[j].sp.hi))) {
+        uf.unite(i, j);
+        joint_branches[i] += nodes[j].sp.branches;
+        joint_branches[j] += nodes[i].sp.branches;
+      }
+  // What each special point needs: an end one branch, a turning point two, a joint one from each side.
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto& n = nodes[i];
+    const int need = n.terminal ? 1 : n.joint ? 2 : 2;
+    const int have = n.joint && !n.terminal ? joint_branches[i] : n.sp.branches;
+    if (have != need) consistent = false;
+  }
+  std::vector<long> comp(uf.p.size(), -1);
+  std::vector<bool> has_end;
+  std::vector<bool> has_arc;
+  for (std::size_t i = 0; i < uf.p.size(); ++i) {
+    const std::size_t r = uf.find(i);
+    if (comp[r] < 0) {
+      comp[r] = static_cast<long>(has_end.size());
+      has_end.push_back(false);
+      has_arc.push_back(false);
+    }
+    if (i < base && nodes[i].terminal) has_end[comp[r]] = true;
+    if (i >= base) has_arc[comp[r]] = true;
+  }
+  for (std::size_t c = 0; c < has_end.size(); ++c) {
+    if (!has_arc[c]) continue;
+    (has_end[c] ? out.segments : out.loops) += 1;
+  }
+  for (std::size_t a = 0; a < arcs.size(); ++a) {
+    arcs[a].branch.component = static_cast<int>(comp[uf.find(base + a)]);
+    out.branches.push_back(std::move(arcs[a].branch));
+  }
+  for (auto& n : nodes) out.special.push_back(std::move(n.sp));
+  out.certified_counts = counts;
+  out.consistent = consistent;
+
+  // Every traced point measured exactly: cos^2 of the angles between C - S and S_u, S_v.
+  Rational worst(0);
+  std::size_t total = 0;
+  for (const auto& b : out.branches) total += b.points.size();
+  const std::size_t stride = std::max<std::size_t>(1, total / 4000);
+  std::size_t k = 0;
+  for (const auto& b : out.branches)
+    for (const auto& p : b.points) {
+      ++out.traced_points;
+      if (k++ % stride != 0) continue;
+      std::vector<Rational> uv(2), t(1);
+      for (int i = 0; i < 2; ++i) uv[i] = std::clamp(exact_from_double(p[i], "u"), Rational(dlo[i]), Rational(dhi[i]));
+      t[0] = std::clamp(exact_from_double(p[2], "t"), Rational(dlo[2]), Rational(dhi[2]));
+      const auto s = evaluate(S, uv), c = evaluate(C, t);
+      Rational dd(0);
+      std::vector<Rational> d(3);
+      for (int i = 0; i < 3; ++i) {
+        d[i] = c[i] - s[i];
+        dd += d[i] * d[i];
+      }
+      if (dd == 0) continue;  // the curve meets the surface: every direction is orthogonal
+      for (int dir = 0; dir < 2; ++dir) {
+        const auto su = derivative(S, uv, {dir == 0 ? 1 : 0, dir == 1 ? 1 : 0});
+        Rational dot(0), ss(0);
+        for (int i = 0; i < 3; ++i) {
+          dot += d[i] * su[i];
+          ss += su[i] * su[i];
+        }
+        if (ss == 0) continue;
+        const Rational cos2 = dot * dot / (dd * ss);
+        if (worst < cos2) worst = cos2;
+      }
+    }
+  out.max_cosine = std::sqrt(to_double(worst));
+  return out;
+}
+
+}  // namespace splinex
