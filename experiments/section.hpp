@@ -57,6 +57,8 @@ void vrep_section(ReportContext& ctx);
 // V-rep Booleans (issue 18): Figure 3's counts against CGAL's Nef polyhedra, Figure 5's colour
 // blend, the price of a tolerance in Booleans of nearly touching boxes.
 void vrep_boolean_section(ReportContext& ctx);
+/// Certified solving (issue 19): projection and contact, float solvers measured; part solve.
+void solve_section(ReportContext& ctx);
 /// Freeform boundaries: the float SSI of the teapot's handle and spout with its body, judged exactly; part vrep-ssi.
 void vrep_ssi_section(ReportContext& ctx);
 /// The peers' results judged by verify, from ReportOptions::peers_dir; part peers.

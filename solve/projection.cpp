@@ -8,6 +8,7 @@
 #include "float/arith_spec.hpp"
 #include "solve/strata.hpp"
 #include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
 
 namespace splinex {
 
@@ -50,6 +51,50 @@ ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, 
   out.boxes = all.boxes;
   out.complete = out.undecided.empty();
   for (const auto& c : out.critical) out.complete = out.complete && (c.unique || c.exact) && !c.merged;
+  return out;
+}
+
+std::vector<std::array<double, 2>> project_point_sampled(const BSpline<double>& S, const std::array<double, 3>& P, int grid) {
+  validate(S);
+  if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  if (grid < 1 || grid > 4096) throw UsageError("grid", "must be in [1, 4096]", "use e.g. 16");
+  const double lo[2] = {S.domain_lo(0), S.domain_lo(1)}, hi[2] = {S.domain_hi(0), S.domain_hi(1)};
+  const double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  std::vector<std::array<double, 2>> out;
+  for (int j = 0; j < grid; ++j)
+    for (int i = 0; i < grid; ++i) {
+      double x[2] = {lo[0] + (hi[0] - lo[0]) * (i + 0.5) / grid, lo[1] + (hi[1] - lo[1]) * (j + 0.5) / grid};
+      bool ok = false;
+      for (int it = 0; it < 50; ++it) {
+        const std::vector<double> at{x[0], x[1]};
+        const auto p = evaluate(S, at), su = derivative(S, at, {1, 0}), sv = derivative(S, at, {0, 1});
+        const auto suu = derivative(S, at, {2, 0}), suv = derivative(S, at, {1, 1}), svv = derivative(S, at, {0, 2});
+        double f[2] = {0, 0}, J[2][2] = {{0, 0}, {0, 0}};
+        for (int c = 0; c < 3; ++c) {
+          const double d = p[c] - P[c];
+          f[0] += d * su[c];
+          f[1] += d * sv[c];
+          J[0][0] += su[c] * su[c] + d * suu[c];
+          J[0][1] += su[c] * sv[c] + d * suv[c];
+          J[1][1] += sv[c] * sv[c] + d * svv[c];
+        }
+        J[1][0] = J[0][1];
+        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        if (!(std::abs(det) > 0) || !std::isfinite(det)) break;
+        const double dx = (J[1][1] * f[0] - J[0][1] * f[1]) / det, dy = (J[0][0] * f[1] - J[1][0] * f[0]) / det;
+        x[0] -= dx;
+        x[1] -= dy;
+        if (!(x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1])) break;  // left the domain
+        if (std::abs(dx) + std::abs(dy) <= 1e-14 * size) {
+          ok = true;
+          break;
+        }
+      }
+      if (!ok) continue;
+      bool seen = false;
+      for (const auto& y : out) seen = seen || std::abs(y[0] - x[0]) + std::abs(y[1] - x[1]) <= 1e-9 * size;
+      if (!seen) out.push_back({x[0], x[1]});
+    }
   return out;
 }
 

@@ -19,6 +19,7 @@
 // equality, certified boxes that overlap across such a line are merged into one entry that says
 // so. Degree 0 in a direction (no tangent plane) is refused with a typed error.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -56,5 +57,12 @@ struct ProjectionResult {
 template <class T>
 ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, const SolveOptions& options = {},
                                   const Limits& limits = {});
+
+/// What a CAD kernel does (issue 19, What to build 5): Newton in double on (S - P).S_u =
+/// (S - P).S_v = 0 (Jacobian from the second derivatives) from a grid x grid of starts over the
+/// domain; the points it converges to inside the domain, each kept once (within 1e-9 of the
+/// domain's size). Nothing is certified: roots between starts' basins are missed, nearby roots
+/// merge, and a start may converge to a saddle or a maximum as well as to a minimum.
+std::vector<std::array<double, 2>> project_point_sampled(const BSpline<double>& S, const std::array<double, 3>& P, int grid = 16);
 
 }  // namespace splinex
