@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "float/arith_spec.hpp"
+#include "float/mpfr.hpp"
 #include "solve/strata.hpp"
 #include "spline/errors.hpp"
 
@@ -135,7 +136,7 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     }
     if (size2 == T(0)) size2 = T(1);
   }
-  const T tau = size2 / T(4294967296.0);  // 2^-32 of the squared size
+  const T tau = size2 / T(static_cast<long>(1) << 32);  // 2^-32 of the squared size
 
   // U: the corners' closest pair, exactly.
   struct Job {
@@ -382,6 +383,7 @@ template ContactResult<Rational> stationary_pairs(const std::vector<Stratum<Rati
                                                   bool);
 template ContactResult<double> stationary_pairs(const std::vector<Stratum<double>>&, const std::vector<Stratum<double>>&, const SolveOptions&,
                                                 bool);
+template ContactResult<Mpfr> stationary_pairs(const std::vector<Stratum<Mpfr>>&, const std::vector<Stratum<Mpfr>>&, const SolveOptions&, bool);
 
 }  // namespace solve_detail
 
@@ -394,5 +396,6 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
 
 template ContactResult<Rational> surface_distance(const BSpline<Rational>&, const BSpline<Rational>&, const SolveOptions&, const Limits&);
 template ContactResult<double> surface_distance(const BSpline<double>&, const BSpline<double>&, const SolveOptions&, const Limits&);
+template ContactResult<Mpfr> surface_distance(const BSpline<Mpfr>&, const BSpline<Mpfr>&, const SolveOptions&, const Limits&);
 
 }  // namespace splinex

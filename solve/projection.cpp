@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "float/arith_spec.hpp"
+#include "float/mpfr.hpp"
 #include "solve/strata.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
@@ -100,5 +101,6 @@ std::vector<std::array<double, 2>> project_point_sampled(const BSpline<double>& 
 
 template ProjectionResult<Rational> project_point(const BSpline<Rational>&, const std::vector<Rational>&, const SolveOptions&, const Limits&);
 template ProjectionResult<double> project_point(const BSpline<double>&, const std::vector<double>&, const SolveOptions&, const Limits&);
+template ProjectionResult<Mpfr> project_point(const BSpline<Mpfr>&, const std::vector<Mpfr>&, const SolveOptions&, const Limits&);
 
 }  // namespace splinex

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "float/arith_spec.hpp"
+#include "float/mpfr.hpp"
 #include "spline/errors.hpp"
 
 namespace splinex {
@@ -297,6 +298,7 @@ void round_enclosure(T& lo, T& hi) {
 }
 template void round_enclosure(Rational&, Rational&);
 template void round_enclosure(double&, double&);
+template void round_enclosure(Mpfr&, Mpfr&);
 
 Rational simplest_rational_between(const Rational& a, const Rational& b) {
   if (b < a) return simplest_rational_between(b, a);
@@ -553,9 +555,12 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
 
 template struct SolveResult<Rational>;
 template struct SolveResult<double>;
+template struct SolveResult<Mpfr>;
 template SolveResult<Rational> solve_system(const std::vector<Bern<Rational>>&, const std::vector<Rational>&, const std::vector<Rational>&,
                                             const SolveOptions&, const Pruning<Rational>*);
 template SolveResult<double> solve_system(const std::vector<Bern<double>>&, const std::vector<double>&, const std::vector<double>&,
                                           const SolveOptions&, const Pruning<double>*);
+template SolveResult<Mpfr> solve_system(const std::vector<Bern<Mpfr>>&, const std::vector<Mpfr>&, const std::vector<Mpfr>&, const SolveOptions&,
+                                        const Pruning<Mpfr>*);
 
 }  // namespace splinex

@@ -3,6 +3,7 @@
 
 #include "exact/rational.hpp"
 #include "float/arith_spec.hpp"
+#include "float/mpfr.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex::solve_detail {
@@ -307,6 +308,7 @@ T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
   template T distance2_at(const PairSystem<T>&, const std::vector<T>&);
 SPLINEX_STRATA(Rational)
 SPLINEX_STRATA(double)
+SPLINEX_STRATA(Mpfr)
 #undef SPLINEX_STRATA
 
 }  // namespace splinex::solve_detail
