@@ -113,6 +113,20 @@ Json contact_json(const ContactResult<T>& r) {
   out["undecided"] = und;
   out["strata_pairs"] = Json{{"all", r.strata_pairs}, {"solved", r.pairs_solved}, {"skipped", r.pairs_skipped}};
   out["boxes"] = r.boxes;
+  if (r.intersecting && (!r.extremes.empty() || r.extremes_complete)) {
+    Json pen, ex = Json::array();
+    for (const auto& p : r.extremes) {
+      Json j = contact_point_json(p);
+      j["side1"] = p.side1;
+      j["side2"] = p.side2;
+      ex.push_back(j);
+    }
+    pen["stationary_pairs"] = ex;
+    pen["complete"] = r.extremes_complete;
+    pen["first_into_second"] = r.deepest_1_in_2 < 0 ? Json(nullptr) : contact_point_json(r.extremes[r.deepest_1_in_2]);
+    pen["second_into_first"] = r.deepest_2_in_1 < 0 ? Json(nullptr) : contact_point_json(r.extremes[r.deepest_2_in_1]);
+    out["penetration"] = pen;
+  }
   std::string verdict;
   if (!ArithTraits<T>::exact)
     verdict = "not certified: the subdivision ran in " + ArithTraits<T>::name();
@@ -223,6 +237,7 @@ Commands add_contact(CLI::App& app) {
     std::string arith = "exact", first, second;
     int max_depth = 30;
     std::size_t max_boxes = 200000;
+    bool penetration = false;
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("contact", "minimum distance of two surfaces (Eq. 4 and its boundary and knot-line cases), certified, or a certified common point");
@@ -232,6 +247,9 @@ Commands add_contact(CLI::App& app) {
   c->add_option("--max-boxes", o->max_boxes, "solver boxes per pair of strata before the rest is undecided")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
+  c->add_flag("--penetration", o->penetration,
+              "intersecting surfaces: also the stationary pairs away from the intersection and the deepest penetration each way (slow: the "
+              "subdivision follows the intersection curve)");
   c->add_option("first", o->first, "first surface document")->required();
   c->add_option("second", o->second, "second surface document")->required();
   return {{c, [o](const Context& ctx) {
@@ -240,8 +258,9 @@ Commands add_contact(CLI::App& app) {
              SolveOptions so;
              so.max_depth = o->max_depth;
              so.max_boxes = o->max_boxes;
-             const Json out = o->arith == "double" ? contact_json(surface_distance(round_spline<double>(S1), round_spline<double>(S2), so, ctx.limits))
-                                                   : contact_json(surface_distance(S1, S2, so, ctx.limits));
+             const Json out = o->arith == "double"
+                                  ? contact_json(surface_distance(round_spline<double>(S1), round_spline<double>(S2), so, ctx.limits, o->penetration))
+                                  : contact_json(surface_distance(S1, S2, so, ctx.limits, o->penetration));
              std::cout << out.dump() << "\n";
              return 0;
            }}};

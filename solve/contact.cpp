@@ -10,6 +10,7 @@
 #include "float/mpfr.hpp"
 #include "solve/strata.hpp"
 #include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
 
 namespace splinex {
 
@@ -117,7 +118,8 @@ namespace solve_detail {
 
 template <class T>
 ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::vector<Stratum<T>>& B, const SolveOptions& options,
-                                  bool minimum) {
+                                  Search search) {
+  const bool minimum = search == Search::minimum;
   ContactResult<T> out;
   out.strata_pairs = A.size() * B.size();
   // The model's size, for the threshold below which an intersection is sought.
@@ -136,7 +138,8 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     }
     if (size2 == T(0)) size2 = T(1);
   }
-  const T tau = size2 / T(static_cast<long>(1) << 32);  // 2^-32 of the squared size
+  const T tau = size2 / T(static_cast<long>(1) << 32);       // 2^-32 of the squared size
+  const T tau_away = size2 / T(static_cast<long>(1) << 16);  // 2^-16 of it: a distance of 2^-8 of the size
 
   // U: the corners' closest pair, exactly.
   struct Job {
@@ -192,6 +195,7 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       ContactPoint<T> u;
       u.where = where;
       u.strata = label + ": an equation vanishes identically";
+      u.degenerate = true;
       u.lo = params(a, b, sys.lo);
       u.hi = params(a, b, sys.hi);
       std::tie(u.d2_lo, u.d2_hi) = distance2_range(sys, sys.lo, sys.hi);
@@ -237,7 +241,14 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       }
       return U < low || !near_lo.empty();
     };
-    const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, minimum ? &pr : nullptr);
+    // Away from contact: boxes whose points are surely within 2^-8 of the model's size of each
+    // other are skipped (shallower penetrations are not searched).
+    Pruning<T> away;
+    away.aux = pr.aux;
+    away.discard = [&](const detail::Bern<T>* aux, std::size_t, const std::vector<T>&, const std::vector<T>&) {
+      return !(tau_away < distance2_bounds(aux + 1, aux[0]).second);
+    };
+    const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, minimum ? &pr : search == Search::away_from_contact ? &away : nullptr);
     ++out.pairs_solved;
     out.boxes += r.boxes;
     const auto add = [&](const RootBox<T>& root, bool as_root) {
@@ -380,22 +391,54 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
 }
 
 template ContactResult<Rational> stationary_pairs(const std::vector<Stratum<Rational>>&, const std::vector<Stratum<Rational>>&, const SolveOptions&,
-                                                  bool);
+                                                  Search);
 template ContactResult<double> stationary_pairs(const std::vector<Stratum<double>>&, const std::vector<Stratum<double>>&, const SolveOptions&,
-                                                bool);
-template ContactResult<Mpfr> stationary_pairs(const std::vector<Stratum<Mpfr>>&, const std::vector<Stratum<Mpfr>>&, const SolveOptions&, bool);
+                                                Search);
+template ContactResult<Mpfr> stationary_pairs(const std::vector<Stratum<Mpfr>>&, const std::vector<Stratum<Mpfr>>&, const SolveOptions&, Search);
 
 }  // namespace solve_detail
 
 template <class T>
-ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits) {
+ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits, bool penetration) {
   require_surface(S1, "first", limits);
   require_surface(S2, "second", limits);
-  return solve_detail::stationary_pairs(surface_strata(S1, limits), surface_strata(S2, limits), options, true);
+  const auto A = surface_strata(S1, limits), B = surface_strata(S2, limits);
+  auto out = solve_detail::stationary_pairs(A, B, options, solve_detail::Search::minimum);
+  for (const auto& u : out.undecided)
+    if (u.degenerate && u.where == "interior-interior")
+      throw ValidationError("surfaces", "the distance equations vanish identically on " + u.strata.substr(0, u.strata.rfind(':')) +
+                                            ": the stationary pairs are not isolated (equidistant surfaces, or a degenerate piece)",
+                            "give surfaces whose distance is not constant along a piece");
+  if (!out.intersecting || !penetration) return out;
+  // Intersecting: the stationary pairs away from the intersection, and on which side of each
+  // surface the other's point lies (the normals S_u x S_v, S_r x S_t at the pair's point).
+  auto away = solve_detail::stationary_pairs(A, B, options, solve_detail::Search::away_from_contact);
+  out.boxes += away.boxes;
+  out.extremes_complete = away.undecided.empty();
+  const auto side = [](const BSpline<T>& S, const std::vector<T>& uv, const std::vector<T>& from, const std::vector<T>& to) {
+    const auto su = derivative(S, uv, {1, 0}), sv = derivative(S, uv, {0, 1});
+    const T n[3] = {su[1] * sv[2] - su[2] * sv[1], su[2] * sv[0] - su[0] * sv[2], su[0] * sv[1] - su[1] * sv[0]};
+    T s(0);
+    for (int c = 0; c < 3; ++c) s += (to[c] - from[c]) * n[c];
+    return T(0) < s ? 1 : s < T(0) ? -1 : 0;
+  };
+  for (auto& p : away.points) {
+    std::vector<T> x(4);
+    for (int l = 0; l < 4; ++l) x[l] = (p.lo[l] + p.hi[l]) / T(2);
+    p.side1 = side(S1, {x[0], x[1]}, p.p1, p.p2);
+    p.side2 = side(S2, {x[2], x[3]}, p.p2, p.p1);
+    if (!(p.unique || p.exact) || !(out.distance2_hi < p.d2_lo)) continue;
+    if (p.side2 < 0 && (out.deepest_1_in_2 < 0 || away.points[out.deepest_1_in_2].d2_hi < p.d2_hi))
+      out.deepest_1_in_2 = &p - away.points.data();
+    if (p.side1 < 0 && (out.deepest_2_in_1 < 0 || away.points[out.deepest_2_in_1].d2_hi < p.d2_hi))
+      out.deepest_2_in_1 = &p - away.points.data();
+  }
+  out.extremes = std::move(away.points);
+  return out;
 }
 
-template ContactResult<Rational> surface_distance(const BSpline<Rational>&, const BSpline<Rational>&, const SolveOptions&, const Limits&);
-template ContactResult<double> surface_distance(const BSpline<double>&, const BSpline<double>&, const SolveOptions&, const Limits&);
-template ContactResult<Mpfr> surface_distance(const BSpline<Mpfr>&, const BSpline<Mpfr>&, const SolveOptions&, const Limits&);
+template ContactResult<Rational> surface_distance(const BSpline<Rational>&, const BSpline<Rational>&, const SolveOptions&, const Limits&, bool);
+template ContactResult<double> surface_distance(const BSpline<double>&, const BSpline<double>&, const SolveOptions&, const Limits&, bool);
+template ContactResult<Mpfr> surface_distance(const BSpline<Mpfr>&, const BSpline<Mpfr>&, const SolveOptions&, const Limits&, bool);
 
 }  // namespace splinex

@@ -21,8 +21,13 @@
 // Surfaces that intersect have a curve of zero distance, where Eq. 4 has no isolated solutions.
 // When U falls below 2^-32 of the squared model size, a common point is sought: S1 - S2 = 0 with
 // one parameter fixed (three equations in three unknowns) by the same solver; a certified root
-// proves the intersection (distance exactly 0). The penetration depth of intersecting surfaces
-// (the largest distance among the other stationary points) is not computed.
+// proves the intersection (distance exactly 0). Then the penetration: the stationary pairs of the
+// same strata away from the intersection (boxes whose distance is surely below 2^-8 of the model's
+// size are skipped: shallower penetrations are not searched; the paper's "extreme penetration of one surface into another"), each with the
+// side of the other surface its point lies on (the sign of (p1 - p2) against S2's normal
+// S_r x S_t, evaluated exactly at the pair's box centre), and the deepest certified pair with S1's
+// point behind S2 (and the other way round). Which side is "inside" is the orientation of the
+// surfaces' parametrizations.
 #pragma once
 #include <string>
 #include <vector>
@@ -41,6 +46,8 @@ struct ContactPoint {
   bool exact = false;     // lo is the stationary pair (a rational root, or corners)
   bool unique = false;    // exactly one simple root of the strata's equations in the box (Krawczyk)
   bool merged = false;    // boxes of neighbouring strata that overlap: one pair, or two very close ones
+  bool degenerate = false;  // an equation of the strata vanishes identically (undecided: the solutions are not isolated)
+  int side1 = 0, side2 = 0;  // extremes: the sign of (p2 - p1).(S_u x S_v) and of (p1 - p2).(S_r x S_t) at the box's centre
   T d2_lo, d2_hi;         // |S1 - S2|^2 over the box
   std::vector<T> p1, p2;  // the points (at lo when exact, else at the box's centre)
 };
@@ -55,12 +62,20 @@ struct ContactResult {
   bool intersecting = false;               // a common point is certified: the minimum is exactly 0
   std::vector<T> common_lo, common_hi;     // its (u, v, r, t) box
   std::size_t strata_pairs = 0, pairs_solved = 0, pairs_skipped = 0, boxes = 0;
+  /// Intersecting surfaces: the stationary pairs away from the intersection (the paper's extreme
+  /// penetration), and the deepest pair whose first point lies behind the second surface
+  /// (against its normal S_r x S_t) and the other way round (-1: none).
+  std::vector<ContactPoint<T>> extremes;
+  bool extremes_complete = false;
+  long deepest_1_in_2 = -1, deepest_2_in_1 = -1;
 };
 
 /// The minimum distance of the surfaces S1 and S2 (dim 2, points in R^q, q >= 3: the first three
-/// coordinates; degree >= 1 in both directions).
+/// coordinates; degree >= 1 in both directions); when they intersect and `penetration`, also the
+/// stationary pairs away from the intersection and the deepest penetration each way (costly: the
+/// subdivision follows the intersection curve down to boxes 2^-8 of the model's size).
 template <class T>
 ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options = {},
-                                  const Limits& limits = {});
+                                  const Limits& limits = {}, bool penetration = false);
 
 }  // namespace splinex

@@ -26,7 +26,12 @@ ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, 
     // The equations' degrees: 2p - 1 (polynomial) or 3p - 1 (rational) in the derivative's direction.
     limits.check_degree(static_cast<long>(S.is_rational() ? 3 : 2) * S.degrees[d], "degrees[" + std::to_string(d) + "]");
   }
-  const auto all = solve_detail::stationary_pairs(solve_detail::surface_strata(S, limits), {solve_detail::point_stratum(P)}, options, false);
+  const auto all = solve_detail::stationary_pairs(solve_detail::surface_strata(S, limits), {solve_detail::point_stratum(P)}, options, solve_detail::Search::all);
+  for (const auto& u : all.undecided)
+    if (u.degenerate && u.where == "interior-point")
+      throw ValidationError("point", "every point of " + u.strata.substr(0, u.strata.rfind(" / ")) +
+                                         " is a critical point of the distance (the point is a centre of the surface, or the piece is degenerate): the projection is not isolated",
+                            "move the point, or give a surface whose distance from it is not constant on a piece");
   // The pairs (stratum, point) as critical points of the stratum: "interior-point" is "interior".
   const auto convert = [](const ContactPoint<T>& p) {
     CriticalPoint<T> c;

@@ -71,12 +71,16 @@ PairSystem<T> pair_system(const Stratum<T>& A, const Stratum<T>& B);
 template <class T>
 T hull_distance2(const Stratum<T>& A, const Stratum<T>& B);
 
-/// The stationary pairs of |A - B|^2 over all pairs of strata (solve/contact.hpp's engine):
-/// `minimum` searches only what can hold the minimum (branch and bound, a common point when the
-/// objects meet); otherwise every stationary pair is listed.
+/// What the engine below searches: every stationary pair; only what can hold the minimum (branch
+/// and bound, a common point when the objects meet); or every stationary pair away from where the
+/// objects meet (boxes whose distance is surely below 2^-8 of the model's size are skipped: the
+/// curve of zero distance of intersecting surfaces has no isolated stationary pairs).
+enum class Search { all, minimum, away_from_contact };
+
+/// The stationary pairs of |A - B|^2 over all pairs of strata (solve/contact.hpp's engine).
 template <class T>
 ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::vector<Stratum<T>>& B, const SolveOptions& options,
-                                  bool minimum);
+                                  Search search);
 
 /// The parameters of a stratum's surface point for a vector of its local unknowns x (offset: where
 /// its unknowns start in x), in the surface's parameters; and its point (first three coordinates).
