@@ -133,7 +133,8 @@ Json contact_json(const ContactResult<T>& r) {
   else if (r.intersecting)
     verdict = "certified: the surfaces intersect (a common point is certified), the minimum distance is 0";
   else if (r.closest_certified)
-    verdict = "certified: the closest pair is the one in \"closest\", the minimum distance is enclosed in \"distance2\"";
+    verdict = "certified: the closest pair of points is in \"closest\" (one entry per pair of parameters giving them), the minimum distance is "
+              "enclosed in \"distance2\"";
   else
     verdict = "not certified: " + std::to_string(r.closest.size()) + " pairs (or undecided boxes) may be the closest; the minimum distance is enclosed";
   out["verdict"] = verdict;
@@ -199,9 +200,9 @@ Commands add_project(CLI::App& app) {
   c->add_option("--max-boxes", o->max_boxes, "solver boxes per system before the rest is undecided")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
-  c->add_option("surface", o->file, "spline surface document, - for stdin")->required();
+  c->add_option("surface", o->file, "spline surface document (- for stdin), or teapot:body|handle|spout|lid")->required();
   return {{c, [o](const Context& ctx) {
-             const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             const auto S = read_surface_argument(o->file, "surface", ctx);
              if (o->point.empty() == o->curve.empty()) throw UsageError("project", "needs --point or --curve", "give one of them");
              if (!o->curve.empty()) {
                if (o->arith != "exact") throw UsageError("arith", "--curve runs in exact arithmetic only", "leave --arith out");
@@ -222,6 +223,7 @@ Commands add_project(CLI::App& app) {
              SolveOptions so;
              so.max_depth = o->max_depth;
              so.max_boxes = o->max_boxes;
+             so.progress = [](const std::string& line) { std::cerr << "[project] " << line << "\n"; };
              Json out;
              if (o->arith == "double")
                out = projection_json(project_point(round_spline<double>(S), round_values<double>(P, "point"), so, ctx.limits));
@@ -250,14 +252,14 @@ Commands add_contact(CLI::App& app) {
   c->add_flag("--penetration", o->penetration,
               "intersecting surfaces: also the stationary pairs away from the intersection and the deepest penetration each way (slow: the "
               "subdivision follows the intersection curve)");
-  c->add_option("first", o->first, "first surface document")->required();
-  c->add_option("second", o->second, "second surface document")->required();
+  c->add_option("first", o->first, "first surface document, or teapot:body|handle|spout|lid")->required();
+  c->add_option("second", o->second, "second surface document, or teapot:body|handle|spout|lid")->required();
   return {{c, [o](const Context& ctx) {
-             const auto S1 = spline_from_json(read_json_file(o->first, ctx.read_limits), ctx.limits, "first");
-             const auto S2 = spline_from_json(read_json_file(o->second, ctx.read_limits), ctx.limits, "second");
+             const auto S1 = read_surface_argument(o->first, "first", ctx), S2 = read_surface_argument(o->second, "second", ctx);
              SolveOptions so;
              so.max_depth = o->max_depth;
              so.max_boxes = o->max_boxes;
+             so.progress = [](const std::string& line) { std::cerr << "[contact] " << line << "\n"; };
              const Json out = o->arith == "double"
                                   ? contact_json(surface_distance(round_spline<double>(S1), round_spline<double>(S2), so, ctx.limits, o->penetration))
                                   : contact_json(surface_distance(S1, S2, so, ctx.limits, o->penetration));

@@ -430,11 +430,7 @@ Commands add_vrep(CLI::App& app) {
              return 0;
            }},
           {ssi, [so](const Context& ctx) {
-             auto surface = [&](const std::string& what, const std::string& field) {
-               if (what.rfind("teapot:", 0) == 0) return teapot_surface(what.substr(7));
-               return read_spline(what, field, ctx);
-             };
-             const auto S1 = surface(so->a, "first"), S2 = surface(so->b, "second");
+             const auto S1 = read_surface_argument(so->a, "first", ctx), S2 = read_surface_argument(so->b, "second", ctx);
              SsiOptions opt;
              opt.step = to_double(parse_number(so->step, "step"));
              opt.tolerance = to_double(parse_number(so->tolerance, "tolerance"));

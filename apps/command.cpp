@@ -3,6 +3,8 @@
 
 #include <boost/multiprecision/number.hpp>
 
+#include "experiments/vrep_ssi.hpp"
+
 namespace splinex::app {
 
 std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::string& field, int hi,
@@ -13,6 +15,11 @@ std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::
     out.push_back(static_cast<int>(boost::multiprecision::numerator(r).template convert_to<long>()));
   }
   return out;
+}
+
+BSpline<Rational> read_surface_argument(const std::string& what, const std::string& field, const Context& ctx) {
+  if (what.rfind("teapot:", 0) == 0) return teapot_surface(what.substr(7));
+  return spline_from_json(read_json_file(what, ctx.read_limits), ctx.limits, field);
 }
 
 }  // namespace splinex::app

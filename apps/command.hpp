@@ -42,6 +42,10 @@ Commands add_vrep(CLI::App& app);  // vrep construct, vrep certify
 Commands add_project(CLI::App& app);  // project --point (solve/projection.hpp)
 Commands add_contact(CLI::App& app);  // contact (solve/contact.hpp)
 
+/// A surface argument: a spline document's path (- for stdin), or teapot:body|handle|spout|lid
+/// (the merged surfaces of the Utah teapot).
+BSpline<Rational> read_surface_argument(const std::string& what, const std::string& field, const Context& ctx);
+
 /// The options of the single-spline operations, shared by their commands and crosscheck.
 struct OpOptions {
   int dir = 0;

@@ -2,6 +2,9 @@
 #include "solve/contact.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <sstream>
 #include <cmath>
 #include <numeric>
 #include <type_traits>
@@ -175,7 +178,19 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     }
   std::stable_sort(jobs.begin(), jobs.end(), [](const Job& x, const Job& y) { return x.lower < y.lower; });
 
+  const auto started = std::chrono::steady_clock::now();
+  auto last = started;
+  std::size_t done = 0;
   for (const auto& job : jobs) {
+    ++done;
+    if (options.progress && std::chrono::steady_clock::now() - last > std::chrono::seconds(2)) {
+      last = std::chrono::steady_clock::now();
+      std::ostringstream line;
+      line << std::fixed << std::setprecision(1) << std::chrono::duration<double>(last - started).count() << " s: pairs of strata " << done << "/"
+           << jobs.size() << " (" << out.pairs_solved << " solved, " << out.pairs_skipped << " skipped), " << out.boxes << " boxes";
+      if (minimum && !(U < T(0))) line << ", smallest d^2 so far <= " << std::setprecision(6) << to_double(ArithTraits<T>::to_rational(U));
+      options.progress(line.str());
+    }
     if (out.intersecting) break;
     if (minimum && (U < job.lower || (!(tau < U) && A[job.a].k + B[job.b].k < 3))) {
       ++out.pairs_skipped;  // farther than the minimum, or too few unknowns to certify a common point
@@ -385,8 +400,18 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
   for (std::size_t i = 0; i < out.points.size(); ++i)
     if (!(out.distance2_hi < out.points[i].d2_lo)) out.closest.push_back(i);
   const bool within_tau = minimum && !(tau < U);
-  out.closest_certified = ArithTraits<T>::exact && out.closest.size() == 1 && !undecided_below && !within_tau &&
-                          (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact);
+  // One closest pair: one candidate, or several exact ones that are the same points in space (a
+  // seam or a collapsed edge maps several parameters to one point).
+  bool one = out.closest.size() == 1 && (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact);
+  if (out.closest.size() > 1) {
+    const auto& f = out.points[out.closest[0]];
+    one = true;
+    for (std::size_t i : out.closest) {
+      const auto& p = out.points[i];
+      one = one && p.exact && f.exact && p.d2_lo == f.d2_lo && p.p1 == f.p1 && p.p2 == f.p2;
+    }
+  }
+  out.closest_certified = ArithTraits<T>::exact && one && !undecided_below && !within_tau;
   return out;
 }
 

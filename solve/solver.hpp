@@ -44,6 +44,9 @@ struct SolveOptions {
   std::size_t max_boxes = 200000;   // boxes examined; what is left then is reported undecided
   int refine_bits = 60;             // certified boxes are shrunk to 2^-refine_bits of the system's box
   bool recognize_rationals = true;  // look for exact rational roots (exact arithmetic only)
+  /// Called about every two seconds by the searches over many systems (projection, contact) with a
+  /// line of progress; empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 template <class T>
