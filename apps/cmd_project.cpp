@@ -51,7 +51,7 @@ Json projection_json(const ProjectionResult<T>& r) {
   out["complete"] = r.complete;
   out["closest_certified"] = r.closest_certified;
   out["distance2"] = range_json(r.distance2_lo, r.distance2_hi);
-  out["distance_approx"] = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi)));
+  if (const double d = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi))); std::isfinite(d)) out["distance_approx"] = d;
   Json closest = Json::array();
   for (std::size_t i : r.closest) closest.push_back(critical_json(r.critical[i]));
   out["closest"] = closest;
@@ -103,7 +103,7 @@ Json contact_json(const ContactResult<T>& r) {
   out["intersecting"] = r.intersecting;
   out["closest_certified"] = r.closest_certified;
   out["distance2"] = range_json(r.distance2_lo, r.distance2_hi);
-  out["distance_approx"] = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi)));
+  if (const double d = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi))); std::isfinite(d)) out["distance_approx"] = d;
   Json closest = Json::array(), pts = Json::array(), und = Json::array();
   for (std::size_t i : r.closest) closest.push_back(contact_point_json(r.points[i]));
   for (const auto& p : r.points) pts.push_back(contact_point_json(p));
@@ -182,7 +182,7 @@ Commands add_project(CLI::App& app) {
   struct Options {
     std::string arith = "exact", file, point, curve, svg, obj;
     int max_depth = 30, steps = 48;
-    std::size_t max_boxes = 200000;
+    std::size_t max_boxes = 20000;
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("project",
@@ -197,7 +197,7 @@ Commands add_project(CLI::App& app) {
   c->add_option("--svg", o->svg, "--curve: write the parameter-domain and top-view figure here");
   c->add_option("--obj", o->obj, "--curve: write the curve, the surface's boundary and the projection as OBJ polylines here");
   c->add_option("--max-depth", o->max_depth, "halvings per direction before a box is undecided")->check(CLI::Range(1, 200))->capture_default_str();
-  c->add_option("--max-boxes", o->max_boxes, "solver boxes per system before the rest is undecided")
+  c->add_option("--max-boxes", o->max_boxes, "solver boxes per system before the rest is undecided (ten times this in all)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
   c->add_option("surface", o->file, "spline surface document (- for stdin), or teapot:body|handle|spout|lid")->required();
@@ -238,7 +238,7 @@ Commands add_contact(CLI::App& app) {
   struct Options {
     std::string arith = "exact", first, second;
     int max_depth = 30;
-    std::size_t max_boxes = 200000;
+    std::size_t max_boxes = 20000;
     bool penetration = false;
   };
   auto o = std::make_shared<Options>();
@@ -246,7 +246,7 @@ Commands add_contact(CLI::App& app) {
   add_arith_option(c, o->arith, "exact (certified) or double (the same subdivision in double, uncertified)")
       ->check(CLI::IsMember({"exact", "double"}));
   c->add_option("--max-depth", o->max_depth, "halvings per direction before a box is undecided")->check(CLI::Range(1, 200))->capture_default_str();
-  c->add_option("--max-boxes", o->max_boxes, "solver boxes per pair of strata before the rest is undecided")
+  c->add_option("--max-boxes", o->max_boxes, "solver boxes per pair of strata before the rest is undecided (ten times this in all)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
   c->add_flag("--penetration", o->penetration,

@@ -206,11 +206,13 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       degenerate = degenerate || z;
     }
     const std::string where = a.where + "-" + b.where, label = a.label + " / " + b.label;
-    if (degenerate) {
+    // The whole search's budget: max_boxes for ten systems; past it the pairs are left undecided whole.
+    const bool over_budget = out.boxes >= options.max_boxes * 10;
+    if (degenerate || over_budget) {
       ContactPoint<T> u;
       u.where = where;
-      u.strata = label + ": an equation vanishes identically";
-      u.degenerate = true;
+      u.strata = label + (degenerate ? ": an equation vanishes identically" : ": not searched (the search's budget of boxes is spent)");
+      u.degenerate = degenerate;
       u.lo = params(a, b, sys.lo);
       u.hi = params(a, b, sys.hi);
       std::tie(u.d2_lo, u.d2_hi) = distance2_range(sys, sys.lo, sys.hi);
@@ -368,12 +370,12 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
   std::stable_sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.d2_lo < y.d2_lo; });
 
   for (const auto& p : out.points)
-    if (!out.intersecting && p.exact && p.d2_hi == T(0)) {  // an exact common point
+    if (minimum && !out.intersecting && p.exact && p.d2_hi == T(0)) {  // an exact common point
       out.intersecting = true;
       out.common_lo = p.lo;
       out.common_hi = p.hi;
     }
-  if (out.intersecting) {
+  if (minimum && out.intersecting) {
     out.distance2_lo = out.distance2_hi = T(0);
     ContactPoint<T> c;
     c.where = "intersection";

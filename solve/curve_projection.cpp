@@ -113,10 +113,11 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
       const PairSystem<Rational> sys = solve_detail::pair_system(A, B);
       const std::vector<Bern> F{sys.equations[0], sys.equations[1]};  // the surface's two: Eq. 3
       if (detail::bern_sign(F[0]) != 0 || detail::bern_sign(F[1]) != 0) continue;  // no solution in this box
-      if (is_zero(F[0]) || is_zero(F[1])) {
+      const bool over_budget = out.boxes >= options.solve.max_boxes * 10;  // the whole search's budget
+      if (is_zero(F[0]) || is_zero(F[1]) || over_budget) {
         ProjectionSpecialPoint u;
-        u.kind = "degenerate";
-        u.where = A.label + " / " + B.label + ": an equation vanishes identically";
+        u.kind = over_budget ? "not searched" : "degenerate";
+        u.where = A.label + " / " + B.label + (over_budget ? ": the search's budget of boxes is spent" : ": an equation vanishes identically");
         u.lo = sys.lo;
         u.hi = sys.hi;
         out.undecided.push_back(u);

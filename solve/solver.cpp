@@ -34,6 +34,36 @@ T from_dbl(double x) {
     return ArithTraits<T>::from_rational(exact_from_double(x, "solver"));
 }
 
+/// floor(log2 |x|) within one (x != 0), from the exact value: numbers beyond double's range too.
+template <class T>
+long exponent_of(const T& x) {
+  const Rational q = ArithTraits<T>::to_rational(x);
+  return static_cast<long>(boost::multiprecision::msb(abs(boost::multiprecision::numerator(q)))) -
+         static_cast<long>(boost::multiprecision::msb(boost::multiprecision::denominator(q)));
+}
+
+/// 2^e exactly (rounded into a float arithmetic).
+template <class T>
+T pow2(long e) {
+  using boost::multiprecision::mpz_int;
+  const Rational q = e >= 0 ? Rational(mpz_int(1) << e) : Rational(1) / Rational(mpz_int(1) << -e);
+  return ArithTraits<T>::from_rational(q);
+}
+
+/// The scale 2^-e that brings the largest |x_i| near 1 (1 when all are 0).
+template <class T>
+long scale_exponent(const std::vector<T>& xs) {
+  long e = 0;
+  bool any = false;
+  for (const auto& x : xs)
+    if (!(x == T(0))) {
+      const long k = exponent_of(x);
+      e = any ? std::max(e, k) : k;
+      any = true;
+    }
+  return e;
+}
+
 template <class T>
 T tabs(const T& x) {
   return x < T(0) ? T(T(0) - x) : x;
@@ -64,13 +94,20 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
   if (c.empty()) c.assign(n, T(1) / T(2));
   std::vector<T> F(n);
   std::vector<std::vector<Bern<T>>> J(n, std::vector<Bern<T>>(n));
+  // F'(c) with its rows scaled by 2^-e_i into double's range (D J), its inverse in double, and
+  // Y = (D J)^-1 D taken exactly: entries beyond double's range do not defeat the test.
   Eigen::MatrixXd Jc(n, n);
+  std::vector<long> e(n);
   for (int i = 0; i < n; ++i) {
     F[i] = detail::bern_value(f[i], c);
+    std::vector<T> row(n);
     for (int j = 0; j < n; ++j) {
       J[i][j] = detail::bern_derivative(f[i], j);
-      Jc(i, j) = dbl(detail::bern_value(J[i][j], c));
+      row[j] = detail::bern_value(J[i][j], c);
     }
+    e[i] = scale_exponent(row);
+    const T s = pow2<T>(-e[i]);
+    for (int j = 0; j < n; ++j) Jc(i, j) = dbl(T(row[j] * s));
   }
   if (!Jc.allFinite()) return out;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(Jc);
@@ -78,8 +115,10 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
   const Eigen::MatrixXd Yd = lu.inverse();
   if (!Yd.allFinite()) return out;
   std::vector<std::vector<T>> Y(n, std::vector<T>(n));
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) Y[i][j] = from_dbl<T>(Yd(i, j));
+  for (int j = 0; j < n; ++j) {
+    const T s = pow2<T>(-e[j]);
+    for (int i = 0; i < n; ++i) Y[i][j] = from_dbl<T>(Yd(i, j)) * s;
+  }
   std::vector<std::vector<std::pair<T, T>>> R(n, std::vector<std::pair<T, T>>(n));
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) R[i][j] = detail::bern_range(J[i][j]);
@@ -213,18 +252,22 @@ bool recognize(const Node<T>& N, std::vector<T>& point) {
     for (std::size_t l = 0; l < n; ++l) x[l] = simplest_rational_between(N.lo[l], N.hi[l]);
     if (check(x)) return true;
     // Newton in double on the local polynomials from the centre.
-    std::vector<Bern<double>> fd(n);
+    std::vector<Bern<double>> fd(n);  // each equation scaled by a power of 2 into double's range
     for (std::size_t i = 0; i < n; ++i) {
       fd[i].deg = N.f[i].deg;
-      for (const auto& v : N.f[i].c) fd[i].c.push_back(to_double(v));
+      const Rational s = pow2<Rational>(-scale_exponent(N.f[i].c));
+      for (const auto& v : N.f[i].c) fd[i].c.push_back(to_double(Rational(v * s)));
     }
+    std::vector<std::vector<Bern<double>>> dfd(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) dfd[i].push_back(detail::bern_derivative(fd[i], static_cast<int>(j)));
     std::vector<double> t(n, 0.5);
     for (int it = 0; it < 60; ++it) {
       Eigen::VectorXd F(n);
       Eigen::MatrixXd J(n, n);
       for (std::size_t i = 0; i < n; ++i) {
         F(i) = detail::bern_value(fd[i], t);
-        for (std::size_t j = 0; j < n; ++j) J(i, j) = detail::bern_value(detail::bern_derivative(fd[i], static_cast<int>(j)), t);
+        for (std::size_t j = 0; j < n; ++j) J(i, j) = detail::bern_value(dfd[i][j], t);
       }
       if (!F.allFinite() || !J.allFinite()) return false;
       if (F.norm() == 0) break;
@@ -286,7 +329,8 @@ Rational round_to_dyadic(const Rational& x, int bits, bool down) {
 template <class T>
 void round_enclosure(T& lo, T& hi) {
   if constexpr (std::is_same_v<T, Rational>) {
-    const auto bits = [](const T& x) { return x == 0 ? 200 : 72 - static_cast<int>(std::floor(std::log2(std::abs(to_double(x))))); };
+    // 72 significant bits, from the exact exponent (values beyond double's range too).
+    const auto bits = [](const T& x) { return x == 0 ? 200 : static_cast<int>(72 - exponent_of(x)); };
     const bool nonnegative = !(lo < 0);
     lo = round_to_dyadic(lo, bits(lo), true);
     hi = round_to_dyadic(hi, bits(hi), false);
@@ -358,10 +402,11 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
   std::vector<Node<T>> stack{Node<T>{all, lo, hi, 0}}, leaves;
   std::vector<Node<T>> certified;  // refined boxes with one root each
   std::vector<RootBox<T>> known;   // exact roots certified unique in their boxes during the search
+  int recognitions = 0;
   while (!stack.empty()) {
     if (out.boxes >= options.max_boxes) {
       out.budget_exhausted = true;
-      for (auto& N : stack) leaves.push_back(std::move(N));
+      for (auto& N : stack) leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
       break;
     }
     Node<T> N = std::move(stack.back());
@@ -400,7 +445,8 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     // to the depth limit. Look for an exact rational root now and then: a contraction on the box
     // around it (twice this box's width) makes it that box's only root, and the search then skips
     // what lies inside.
-    if (N.depth >= 2 && N.depth % 2 == 0) {
+    if (N.depth >= 2 && N.depth % 2 == 0 && recognitions < 256) {
+      ++recognitions;  // a budget: a curve of solutions would otherwise try every other box
       std::vector<T> r;
       bool fresh = recognize(N, r);
       for (const auto& k : known) fresh = fresh && !box_inside(r, r, k.lo, k.hi);
@@ -426,7 +472,7 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       }
     }
     if (N.depth >= options.max_depth) {
-      leaves.push_back(std::move(N));
+      leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});  // the box is enough: clusters restrict anew
       continue;
     }
     // Halve in every direction: 2^n children.
@@ -476,12 +522,12 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     while (parent[a] != a) a = parent[a] = parent[parent[a]];
     return a;
   };
-  for (std::size_t i = 0; i < order.size() && leaves.size() <= 20000; ++i)
+  for (std::size_t i = 0; i < order.size() && leaves.size() <= 2000; ++i)
     for (std::size_t j = i + 1; j < order.size() && !(leaves[order[i]].hi[0] < leaves[order[j]].lo[0]); ++j)
       if (boxes_touch(leaves[order[i]].lo, leaves[order[i]].hi, leaves[order[j]].lo, leaves[order[j]].hi))
         parent[find(order[i])] = find(order[j]);
   std::vector<std::vector<std::size_t>> clusters;
-  if (leaves.size() > 20000) {
+  if (leaves.size() > 2000) {
     // Too many to join pairwise: one undecided hull around all of them.
     clusters.emplace_back(leaves.size());
     std::iota(clusters[0].begin(), clusters[0].end(), 0);

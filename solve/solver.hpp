@@ -41,7 +41,7 @@ namespace splinex {
 
 struct SolveOptions {
   int max_depth = 30;               // halvings per direction of the system's box (width 2^-max_depth)
-  std::size_t max_boxes = 200000;   // boxes examined; what is left then is reported undecided
+  std::size_t max_boxes = 20000;    // boxes examined per system (ten times this per projection or contact); what is left is undecided
   int refine_bits = 60;             // certified boxes are shrunk to 2^-refine_bits of the system's box
   bool recognize_rationals = true;  // look for exact rational roots (exact arithmetic only)
   /// Called about every two seconds by the searches over many systems (projection, contact) with a
