@@ -44,14 +44,22 @@ Json critical_json(const CriticalPoint<T>& c) {
   return j;
 }
 
-template <class T>
-Json projection_json(const ProjectionResult<T>& r) {
+/// What projection and contact results share: the arithmetic, the certified flag, the enclosure
+/// of the smallest squared distance and its square root in double (when finite).
+template <class T, class Result>
+Json distance_summary(const Result& r) {
   Json out;
   out["arithmetic"] = ArithTraits<T>::name();
-  out["complete"] = r.complete;
   out["closest_certified"] = r.closest_certified;
   out["distance2"] = range_json(r.distance2_lo, r.distance2_hi);
   if (const double d = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi))); std::isfinite(d)) out["distance_approx"] = d;
+  return out;
+}
+
+template <class T>
+Json projection_json(const ProjectionResult<T>& r) {
+  Json out = distance_summary<T>(r);
+  out["complete"] = r.complete;
   Json closest = Json::array();
   for (std::size_t i : r.closest) closest.push_back(critical_json(r.critical[i]));
   out["closest"] = closest;
@@ -98,12 +106,8 @@ Json contact_point_json(const ContactPoint<T>& p) {
 
 template <class T>
 Json contact_json(const ContactResult<T>& r) {
-  Json out;
-  out["arithmetic"] = ArithTraits<T>::name();
+  Json out = distance_summary<T>(r);
   out["intersecting"] = r.intersecting;
-  out["closest_certified"] = r.closest_certified;
-  out["distance2"] = range_json(r.distance2_lo, r.distance2_hi);
-  if (const double d = std::sqrt(to_double(ArithTraits<T>::to_rational(r.distance2_hi))); std::isfinite(d)) out["distance_approx"] = d;
   Json closest = Json::array(), pts = Json::array(), und = Json::array();
   for (std::size_t i : r.closest) closest.push_back(contact_point_json(r.points[i]));
   for (const auto& p : r.points) pts.push_back(contact_point_json(p));

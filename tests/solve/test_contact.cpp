@@ -18,19 +18,8 @@ using R = Rational;
 
 namespace {
 
-// z = x^2 + y^2 over [-1, 1]^2 (biquadratic: x^2 has the Bernstein coefficients 1, -1, 1).
-BSpline<R> paraboloid() {
-  const R x[3] = {R(-1), R(0), R(1)}, b[3] = {R(1), R(-1), R(1)};
-  std::vector<R> pts;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      pts.push_back(x[i]);
-      pts.push_back(x[j]);
-      pts.push_back(b[i] + b[j]);
-    }
-  const std::vector<R> k{R(-1), R(-1), R(-1), R(1), R(1), R(1)};
-  return make_spline<R>({2, 2}, {k, k}, 3, pts);
-}
+// z = x^2 + y^2 over [-1, 1]^2 (fixtures/solve_examples.hpp).
+BSpline<R> paraboloid() { return quadric_patch(R(1), R(1), R(1)); }
 
 BSpline<R> plane(const R& z) {  // over [-2, 2]^2
   const std::vector<R> k{R(-2), R(-2), R(2), R(2)};
