@@ -215,6 +215,7 @@ Commands add_project(CLI::App& app) {
                co.solve.max_depth = o->max_depth;
                co.solve.max_boxes = o->max_boxes;
                co.steps = o->steps;
+               co.solve.progress = [](const std::string& line) { std::cerr << "[project --curve] " << line << "\n"; };
                const auto r = project_curve(C, S, co, ctx.limits);
                if (!o->svg.empty()) write_file_atomically(o->svg, curve_projection_svg(C, S, r, "Projection of a curve onto a surface (papers/002 Eq. 3)"));
                if (!o->obj.empty()) write_file_atomically(o->obj, curve_projection_obj(C, S, r));

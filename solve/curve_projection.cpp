@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <numeric>
@@ -107,9 +108,16 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
   // Arc ends joined to nodes, and arc ends joined to arc ends, recorded for the union below.
   std::vector<std::pair<std::size_t, std::size_t>> arc_node, arc_arc;
 
+  const auto started = std::chrono::steady_clock::now();
+  auto last = started;
   for (const auto& A : faces)
     for (const auto& B : curves) {
       const std::size_t pair = pair_index++;
+      if (options.solve.progress && std::chrono::steady_clock::now() - last > std::chrono::seconds(2)) {
+        last = std::chrono::steady_clock::now();
+        options.solve.progress(std::to_string(static_cast<long>(std::chrono::duration<double>(last - started).count())) + " s: pairs of pieces " +
+                               std::to_string(pair) + "/" + std::to_string(faces.size() * curves.size()) + ", " + std::to_string(out.boxes) + " boxes");
+      }
       const PairSystem<Rational> sys = solve_detail::pair_system(A, B);
       const std::vector<Bern> F{sys.equations[0], sys.equations[1]};  // the surface's two: Eq. 3
       if (detail::bern_sign(F[0]) != 0 || detail::bern_sign(F[1]) != 0) continue;  // no solution in this box
