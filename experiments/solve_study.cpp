@@ -384,13 +384,13 @@ void solve_section(ReportContext& ctx) {
     for (const BSpline<R>* c : {static_cast<const BSpline<R>*>(&turned), &C}) {
       t0 = std::chrono::steady_clock::now();
       const auto rb = project_curve(*c, body);
-      md << "- the same circle around the teapot's body" << (c == &C ? ", starting on the body's seam (angle 0)" : ", turned by the angle (3/5, 4/5)") << ": "
+      md << "- the same circle around the teapot's body" << (c == &C ? ", not turned (its start on the body's seam)" : ", turned by the angle (3/5, 4/5)") << ": "
          << rb.segments << " segments and " << rb.loops << " loops (branches of nearest and farthest points, cut at the seam and at the curve's ends), "
          << rb.special.size() << " certified special points, " << rb.undecided.size() << " undecided boxes, counts "
          << (rb.certified_counts ? "certified" : "NOT certified") << ", joins " << (rb.consistent ? "consistent" : "NOT consistent") << ", "
          << std::setprecision(3) << ms_since(t0) << " ms"
-         << (c == &C ? " (the circle's start projects exactly onto the seam, a corner of the boxes, with an irrational coordinate: such "
-                       "end points stay undecided, see docs/solve.md)"
+         << (c == &C ? " (the circle's knots lie at quarter turns, where the body's seam and knot lines are: every end point lies on an "
+                       "edge of its box with an irrational coordinate, and such points stay undecided, see docs/solve.md)"
                      : "")
          << ";\n";
       if (c == &turned) ok = ok && rb.certified_counts && rb.consistent;
