@@ -22,19 +22,6 @@ namespace {
 using namespace solve_detail;
 
 template <class T>
-void require_surface(const BSpline<T>& S, const std::string& name, const Limits& limits) {
-  validate(S, limits);
-  if (S.dim() != 2 || S.q < 3)
-    throw ValidationError(name, "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
-  for (int d = 0; d < 2; ++d) {
-    if (S.degrees[d] == 0)
-      throw ValidationError(name + ".degrees[" + std::to_string(d) + "]", "is 0: the surface has no tangent plane, the distance equations are degenerate",
-                            "elevate the surface to degree >= 1");
-    limits.check_degree(static_cast<long>(S.is_rational() ? 3 : 2) * S.degrees[d] * 2, name + ".degrees[" + std::to_string(d) + "]");
-  }
-}
-
-template <class T>
 std::vector<T> concat(const std::vector<T>& a, const std::vector<T>& b) {
   std::vector<T> c = a;
   c.insert(c.end(), b.begin(), b.end());
@@ -45,11 +32,6 @@ std::vector<T> concat(const std::vector<T>& a, const std::vector<T>& b) {
 template <class T>
 std::vector<T> params(const Stratum<T>& A, const Stratum<T>& B, const std::vector<T>& x) {
   return concat(surface_parameters(A, x, 0), surface_parameters(B, x, static_cast<std::size_t>(A.k)));
-}
-
-template <class T>
-std::string text(const T& x) {
-  return ArithTraits<T>::to_string(x);
 }
 
 /// Tries to prove that the strata meet near the box [a, b] of their system: S1 - S2 = 0 (D = 0)
@@ -427,8 +409,9 @@ template ContactResult<Mpfr> stationary_pairs(const std::vector<Stratum<Mpfr>>&,
 
 template <class T>
 ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, const SolveOptions& options, const Limits& limits, bool penetration) {
-  require_surface(S1, "first", limits);
-  require_surface(S2, "second", limits);
+  // Eq. 4's equations: degree 2 p in each surface's own directions (3 p rational), times 2 for the pair.
+  require_surface(S1, "first", limits, 4);
+  require_surface(S2, "second", limits, 4);
   const auto A = surface_strata(S1, limits), B = surface_strata(S2, limits);
   auto out = solve_detail::stationary_pairs(A, B, options, solve_detail::Search::minimum);
   for (const auto& u : out.undecided)

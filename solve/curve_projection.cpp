@@ -82,13 +82,9 @@ bool boxes_meet(const std::vector<Rational>& alo, const std::vector<Rational>& a
 CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Rational>& S, const CurveProjectionOptions& options,
                                     const Limits& limits) {
   validate(C, limits);
-  validate(S, limits);
   if (C.dim() != 1 || C.q < 3) throw ValidationError("curve", "is not a curve in R^3", "give a spline with one parametric direction and points x,y,z");
-  if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
   if (C.degrees[0] == 0) throw ValidationError("curve.degrees[0]", "is 0", "elevate the curve to degree >= 1");
-  for (int d = 0; d < 2; ++d)
-    if (S.degrees[d] == 0)
-      throw ValidationError("surface.degrees[" + std::to_string(d) + "]", "is 0: the surface has no tangent plane", "elevate the surface to degree >= 1");
+  solve_detail::require_surface(S, "surface", limits, 2);
   if (options.steps < 2 || options.steps > 100000) throw UsageError("steps", "must be in [2, 100000]", "use e.g. 48");
   const auto faces = [&] {
     std::vector<Stratum<Rational>> out;

@@ -15,17 +15,9 @@ namespace splinex {
 
 template <class T>
 ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, const SolveOptions& options, const Limits& limits) {
-  validate(S, limits);
-  if (S.dim() != 2 || S.q < 3)
-    throw ValidationError("surface", "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  // The equations' degrees: 2p - 1 (polynomial) or 3p - 1 (rational) in the derivative's direction.
+  solve_detail::require_surface(S, "surface", limits, 2);
   if (P.size() != 3) throw ValidationError("point", "has " + std::to_string(P.size()) + " coordinates", "give x,y,z");
-  for (int d = 0; d < 2; ++d) {
-    if (S.degrees[d] == 0)
-      throw ValidationError("degrees[" + std::to_string(d) + "]", "is 0: the surface has no tangent plane, the projection equations are degenerate",
-                            "elevate the surface to degree >= 1");
-    // The equations' degrees: 2p - 1 (polynomial) or 3p - 1 (rational) in the derivative's direction.
-    limits.check_degree(static_cast<long>(S.is_rational() ? 3 : 2) * S.degrees[d], "degrees[" + std::to_string(d) + "]");
-  }
   const auto all = solve_detail::stationary_pairs(solve_detail::surface_strata(S, limits), {solve_detail::point_stratum(P)}, options, solve_detail::Search::all);
   for (const auto& u : all.undecided)
     if (u.degenerate && u.where == "interior-point")
@@ -61,8 +53,7 @@ ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, 
 }
 
 std::vector<std::array<double, 2>> project_point_sampled(const BSpline<double>& S, const std::array<double, 3>& P, int grid) {
-  validate(S);
-  if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  solve_detail::require_surface(S, "surface", Limits{}, 2);
   if (grid < 1 || grid > 4096) throw UsageError("grid", "must be in [1, 4096]", "use e.g. 16");
   const double lo[2] = {S.domain_lo(0), S.domain_lo(1)}, hi[2] = {S.domain_hi(0), S.domain_hi(1)};
   const double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);

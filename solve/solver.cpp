@@ -301,12 +301,12 @@ bool box_inside(const std::vector<T>& alo, const std::vector<T>& ahi, const std:
 }
 
 template <class T>
-RootBox<T> root_of(const Node<T>& N, bool unique) {
+RootBox<T> root_of(const Node<T>& N, bool unique, bool recognise) {
   RootBox<T> r;
   r.lo = N.lo;
   r.hi = N.hi;
   r.unique = unique;
-  r.exact = recognize(N, r.point);
+  r.exact = recognise && recognize(N, r.point);
   if (!r.exact) {
     r.point.resize(N.lo.size());
     for (std::size_t l = 0; l < N.lo.size(); ++l) r.point[l] = (N.lo[l] + N.hi[l]) / T(2);
@@ -445,7 +445,7 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     // to the depth limit. Look for an exact rational root now and then: a contraction on the box
     // around it (twice this box's width) makes it that box's only root, and the search then skips
     // what lies inside.
-    if (N.depth >= 2 && N.depth % 2 == 0 && recognitions < 256) {
+    if (options.recognize_rationals && N.depth >= 2 && N.depth % 2 == 0 && recognitions < 256) {
       ++recognitions;  // a budget: a curve of solutions would otherwise try every other box
       std::vector<T> r;
       bool fresh = recognize(N, r);
@@ -509,7 +509,7 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
     // Found before a known exact root whose box holds it: the same root.
     bool seen = false;
     for (const auto& k : known) seen = seen || (box_inside(k.point, k.point, N.lo, N.hi) || box_inside(N.lo, N.hi, k.lo, k.hi));
-    if (!seen) out.roots.push_back(root_of(N, true));
+    if (!seen) out.roots.push_back(root_of(N, true, options.recognize_rationals));
   }
 
   // Undecided leaves: clusters of touching boxes (a sweep along direction 0), then the closed test
@@ -576,11 +576,11 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       }
       if (same && !unclear) continue;
       if (!unclear) {
-        out.roots.push_back(root_of(R, true));
+        out.roots.push_back(root_of(R, true, options.recognize_rationals));
         continue;
       }
     }
-    RootBox<T> u = root_of(H, false);
+    RootBox<T> u = root_of(H, false, options.recognize_rationals);
     if (u.exact) {
       // Krawczyk about the exact root r (F(r) = 0): a contraction on the hull means r is its only
       // root, and a simple one.

@@ -4,6 +4,7 @@
 #include "exact/rational.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
+#include "spline/errors.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex::solve_detail {
@@ -76,6 +77,19 @@ Stratum<T> fix_side(const Stratum<T>& base, int d, int side) {
 }
 
 }  // namespace
+
+template <class T>
+void require_surface(const BSpline<T>& S, const std::string& name, const Limits& limits, int degree_factor) {
+  validate(S, limits);
+  if (S.dim() != 2 || S.q < 3)
+    throw ValidationError(name, "is not a surface in R^3", "give a spline with two parametric directions and points x,y,z");
+  for (int d = 0; d < 2; ++d) {
+    const std::string field = name + ".degrees[" + std::to_string(d) + "]";
+    if (S.degrees[d] == 0)
+      throw ValidationError(field, "is 0: the surface has no tangent plane, the distance equations are degenerate", "elevate the surface to degree >= 1");
+    limits.check_degree(static_cast<long>(S.is_rational() ? 3 : 2) * S.degrees[d] * degree_factor / 2, field);
+  }
+}
 
 template <class T>
 Stratum<T> point_stratum(const std::vector<T>& P) {
@@ -297,6 +311,7 @@ T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
 
 #define SPLINEX_STRATA(T)                                                                                                 \
   template std::vector<Stratum<T>> surface_strata(const BSpline<T>&, const Limits&);                                     \
+  template void require_surface(const BSpline<T>&, const std::string&, const Limits&, int);                             \
   template Stratum<T> point_stratum(const std::vector<T>&);                                                              \
   template std::vector<Stratum<T>> curve_strata(const BSpline<T>&, const Limits&);                                       \
   template PairSystem<T> pair_system(const Stratum<T>&, const Stratum<T>&);                                              \

@@ -38,7 +38,14 @@ struct Stratum {
   std::array<T, 6> hull;  // the box of its control points: it holds the stratum's points
 };
 
-/// All strata of S (dim 2, q >= 3, degree >= 1; checked by the callers). Edges on C^0 knot lines
+/// What the stationary-distance equations need of a surface, checked before any work: valid, two
+/// parametric directions with points in R^3, degree >= 1 in both (degree 0 has no tangent plane),
+/// and equation degrees `degree_factor` * p (rational: 3/2 of that) within the degree limit.
+/// ValidationError naming `name` (and `name.degrees[d]`).
+template <class T>
+void require_surface(const BSpline<T>& S, const std::string& name, const Limits& limits, int degree_factor);
+
+/// All strata of S (dim 2, q >= 3, degree >= 1; checked by require_surface). Edges on C^0 knot lines
 /// are taken once (from the piece below); at a C^-1 knot line both sides' edges are kept. Corners
 /// are the edges' ends, each (parameter, point) once.
 template <class T>
