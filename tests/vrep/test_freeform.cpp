@@ -1,0 +1,156 @@
+// Trimming by freeform solids (issue 18, papers/002 Figures 10 and 14): solids known only by their
+// trivariates. Point membership against the implicit oracle, volumes against closed forms and the
+// implicit path, certified component counts, the teapot's handle meeting its body twice.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "exact/rational.hpp"
+#include "fixtures/teapot_vmodel.hpp"
+#include "spline/errors.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/freeform.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/trimmed.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+const R pi_lo = R(314159265) / R(100000000), pi_hi = R(314159266) / R(100000000);
+
+BSpline<R> box(std::vector<R> lo, std::vector<R> hi) { return box_cells<R>(lo, hi).front(); }
+
+FreeformCell<R> cell(const BSpline<R>& V, std::vector<FreeformCondition<R>> c, std::size_t boxes) {
+  FreeformOptions o;
+  o.max_boxes = boxes;
+  return freeform_cell(V, c, o);
+}
+
+}  // namespace
+
+TEST_CASE("vrep freeform: a glued solid's boundary leaves out its inner faces, points agree with the exact implicit region") {
+  const auto S = freeform_solid<R>("cylinder", cylinder_cells<R>(R(1), R(2)));
+  CHECK(S.faces == 30);
+  CHECK(S.inner_faces == 16);  // eight glued pairs: square and sectors, sectors and their neighbours
+  // Exact answers on both sides of the curved boundary and on it.
+  CHECK(classify_point_freeform(S, {R(0), R(0), R(1)}) == Truth::in);
+  CHECK(classify_point_freeform(S, {R(7, 10), R(7, 10), R(1)}) == Truth::in);    // 0.98 < 1
+  CHECK(classify_point_freeform(S, {R(71, 100), R(71, 100), R(1)}) == Truth::out);  // 1.0082 > 1
+  CHECK(classify_point_freeform(S, {R(3, 5), R(4, 5), R(1)}) == Truth::mixed);     // on the side: 9/25 + 16/25 = 1
+  CHECK(classify_point_freeform(S, {R(0), R(0), R(2)}) == Truth::mixed);           // on the top
+  CHECK(classify_point_freeform(S, {R(0), R(0), R(5, 2)}) == Truth::out);
+  // Random points against the implicit region (an independent exact oracle: x^2 + y^2 <= 1, 0 <= z <= 2).
+  const auto implicit = cylinder_region<R>(R(1), R(2));
+  std::mt19937 rng(18);
+  std::uniform_int_distribution<int> coord(-120, 120), height(-20, 220);
+  int in = 0, out = 0;
+  for (int k = 0; k < 40; ++k) {
+    const std::vector<R> x{R(coord(rng), 100), R(coord(rng), 100), R(height(rng), 100)};
+    const Truth want = classify_point(implicit, x);
+    const Truth got = classify_point_freeform(S, x);
+    INFO(x[0] << ", " << x[1] << ", " << x[2]);
+    if (want == Truth::mixed) CHECK(got == Truth::mixed);
+    else CHECK(got == want);
+    in += got == Truth::in;
+    out += got == Truth::out;
+  }
+  CHECK(in > 5);
+  CHECK(out > 5);
+}
+
+TEST_CASE("vrep freeform: boxes cut by a freeform box: exact volumes enclosed, the two sides add up") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto U = freeform_solid<R>("U", {box({R(1, 3), R(-1), R(-1)}, {R(3), R(3), R(3)})});
+  const auto inside = cell(V, {{&U, true}}, 1024), outside = cell(V, {{&U, false}}, 1024);
+  CHECK(inside.cls.kind == CellClass<R>::cut);
+  CHECK(outside.cls.kind == CellClass<R>::cut);
+  CHECK(inside.volume.lower <= R(20, 3));
+  CHECK(R(20, 3) <= inside.volume.upper);
+  CHECK(outside.volume.lower <= R(4, 3));
+  CHECK(R(4, 3) <= outside.volume.upper);
+  // The enclosure narrows with the budget.
+  const auto coarse = cell(V, {{&U, true}}, 256);
+  CHECK(inside.volume.upper - inside.volume.lower < coarse.volume.upper - coarse.volume.lower);
+  CHECK(inside.volume.lower + outside.volume.lower <= R(8));
+  CHECK(R(8) <= inside.volume.upper + outside.volume.upper);
+  CHECK(inside.components == 1);
+  CHECK(outside.components == 1);
+  // No condition: the whole trivariate, its volume exactly.
+  const auto whole = cell(V, {}, 64);
+  CHECK(whole.cls.kind == CellClass<R>::whole);
+  CHECK(whole.volume.lower == R(8));
+  CHECK(whole.volume.upper == R(8));
+  // Disjoint: empty, volume 0.
+  const auto far = freeform_solid<R>("far", {box({R(5), R(5), R(5)}, {R(6), R(6), R(6)})});
+  const auto none = cell(V, {{&far, true}}, 64);
+  CHECK(none.cls.kind == CellClass<R>::empty);
+  CHECK(none.volume.upper == R(0));
+  CHECK(none.components == 0);
+}
+
+TEST_CASE("vrep freeform: component counts are certified lower bounds (two slabs through a bar)") {
+  const auto V = box({R(0), R(0), R(0)}, {R(4), R(1), R(1)});
+  const auto U = freeform_solid<R>("slabs", {box({R(1, 3), R(-1), R(-1)}, {R(4, 3), R(2), R(2)}),
+                                             box({R(7, 3), R(-1), R(-1)}, {R(10, 3), R(2), R(2)})});
+  CHECK(U.inner_faces == 0);
+  const auto inside = cell(V, {{&U, true}}, 1024), outside = cell(V, {{&U, false}}, 1024);
+  CHECK(inside.components == 2);
+  CHECK(inside.cover_components == 2);
+  CHECK(outside.components == 3);
+  CHECK(inside.volume.lower <= R(2));
+  CHECK(R(2) <= inside.volume.upper);
+}
+
+TEST_CASE("vrep freeform: a box cut by the five-cell cylinder: pi / 12 enclosed, agreeing with the implicit path") {
+  const auto V = box({R(0), R(0), R(1, 3)}, {R(2), R(2), R(2, 3)});
+  const auto C = freeform_solid<R>("cylinder", cylinder_cells<R>(R(1), R(1)));
+  const auto r = cell(V, {{&C, true}}, 2048);
+  CHECK(r.cls.kind == CellClass<R>::cut);
+  CHECK(r.volume.lower <= pi_lo / R(12));
+  CHECK(pi_hi / R(12) <= r.volume.upper);
+  CHECK(r.volume.upper - r.volume.lower < R(1, 10));
+  const auto implicit = trimmed_volume(V, cylinder_region<R>(R(1), R(1)), 2048);
+  CHECK(implicit.lower <= r.volume.upper);
+  CHECK(r.volume.lower <= implicit.upper);
+  CHECK(r.components == 1);
+}
+
+TEST_CASE("vrep freeform: the teapot's handle meets its body in two certified components, the volumes add up (Figure 14)") {
+  const auto T = teapot_solids();
+  const auto B = freeform_solid<R>("body", {T.body}), H = freeform_solid<R>("handle", {T.handle}),
+             C = freeform_solid<R>("cavity", {T.cavity});
+  CHECK(B.inner_faces == 2);  // the seam u = 0 / u = 4 of the body of revolution
+  CHECK(C.inner_faces == 2);
+  const auto meet = cell(T.handle, {{&B, true}}, 2048);
+  CHECK(meet.cls.kind == CellClass<R>::cut);
+  CHECK(meet.components == 2);  // the paper's two V-cells shared by handle and body
+  const auto rest = cell(T.handle, {{&B, false}, {&C, false}}, 2048);
+  const auto poke = cell(T.handle, {{&C, true}}, 512);
+  const auto whole = volume_enclosure(T.handle);
+  REQUIRE(whole.lower == whole.upper);
+  CHECK(meet.volume.lower + rest.volume.lower <= whole.lower);
+  CHECK(whole.lower <= meet.volume.upper + rest.volume.upper + poke.volume.upper);
+  CHECK(R(0) < meet.volume.lower);
+}
+
+TEST_CASE("vrep freeform: bad input is refused with typed errors naming the field") {
+  const auto V = box({R(0), R(0), R(0)}, {R(1), R(1), R(1)});
+  CHECK_THROWS_AS(freeform_solid<R>("empty", {}), ValidationError);
+  auto flat = V;
+  flat.degrees = {0, 1, 1};
+  flat.knots[0] = {R(0), R(1)};
+  flat.points.resize(12);
+  CHECK_THROWS_AS(freeform_solid<R>("flat", {flat}), ValidationError);
+  const auto U = freeform_solid<R>("U", {V});
+  CHECK_THROWS_AS(classify_point_freeform(U, {R(0), R(0)}), ValidationError);
+  CHECK_THROWS_AS(freeform_cell<R>(V, {{nullptr, true}}), ValidationError);
+  FreeformOptions none;
+  none.max_boxes = 0;
+  CHECK_THROWS_AS(freeform_cell<R>(V, {{&U, true}}, none), ValidationError);
+  auto open = V;
+  open.knots[0] = {R(-1), R(0), R(1), R(2)};  // unclamped: its faces are not layers of the net
+  CHECK_THROWS_AS(freeform_solid<R>("open", {open}), ValidationError);
+  CHECK_THROWS_AS(freeform_cell<R>(open, {{&U, true}}), ValidationError);
+}

@@ -1,0 +1,593 @@
+// Trimming by freeform solids (vrep/freeform.hpp), instantiated for Rational and double.
+#include "vrep/freeform.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <numeric>
+#include <queue>
+
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "spline/knots.hpp"
+#include "vrep/boolean_impl.hpp"
+#include "vrep/regularity_impl.hpp"
+#include "vrep/trivariate.hpp"
+#include "vrep/vmodel.hpp"
+
+namespace splinex {
+
+namespace {
+
+using detail::Bern;
+template <class T>
+using H4 = std::array<Bern<T>, 4>;  // W, wx, wy, wz
+
+/// Bounds (x_lo, y_lo, z_lo, x_hi, y_hi, z_hi) of the points of a homogeneous Bezier form: the
+/// control points' (weights positive: every point is a convex combination of them).
+template <class T>
+std::array<T, 6> bounds_of(const H4<T>& h) {
+  std::array<T, 6> b;
+  const T one(1);
+  for (std::size_t i = 0; i < h[0].c.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const bool unit = h[0].c[i] == one;  // polynomial: no division
+      const T x = unit ? h[k + 1].c[i] : T(h[k + 1].c[i] / h[0].c[i]);
+      if (i == 0 || x < b[k]) b[k] = x;
+      if (i == 0 || b[k + 3] < x) b[k + 3] = x;
+    }
+  return b;
+}
+
+template <class T>
+bool overlap(const std::array<T, 6>& a, const std::array<T, 6>& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a[k + 3] < b[k] || b[k + 3] < a[k]) return false;
+  return true;
+}
+
+template <class T>
+T extent(const std::array<T, 6>& a) {
+  T e = a[3] - a[0];
+  for (int k = 1; k < 3; ++k) e = std::max(e, T(a[k + 3] - a[k]));
+  return e;
+}
+
+template <class T>
+H4<T> homogeneous_form(const BSpline<T>& piece) {
+  H4<T> h;
+  h[0] = detail::bern_coordinate(piece, piece.q);
+  for (int k = 0; k < 3; ++k) h[k + 1] = detail::bern_coordinate(piece, k);
+  return h;
+}
+
+template <class T>
+std::pair<H4<T>, H4<T>> split_h(const H4<T>& h, int dir) {
+  std::pair<H4<T>, H4<T>> out;
+  for (int k = 0; k < 4; ++k) std::tie(out.first[k], out.second[k]) = vrep_detail::split_half(h[k], dir);
+  return out;
+}
+
+struct UnionFind {
+  std::vector<std::size_t> p;
+  explicit UnionFind(std::size_t n) : p(n) { std::iota(p.begin(), p.end(), std::size_t(0)); }
+  std::size_t find(std::size_t x) {
+    while (p[x] != x) x = p[x] = p[p[x]];
+    return x;
+  }
+  void join(std::size_t a, std::size_t b) { p[find(a)] = find(b); }
+};
+
+/// Pairs of closed boxes (lo, hi in 3 parameters) with a common point, among `ids`.
+template <class T>
+void join_touching(const std::vector<std::array<T, 3>>& lo, const std::vector<std::array<T, 3>>& hi, std::vector<std::size_t> ids,
+                   UnionFind& uf) {
+  std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) { return lo[a][0] < lo[b][0]; });
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    for (std::size_t j = i + 1; j < ids.size() && !(hi[ids[i]][0] < lo[ids[j]][0]); ++j) {
+      const std::size_t a = ids[i], b = ids[j];
+      if (hi[a][1] < lo[b][1] || hi[b][1] < lo[a][1] || hi[a][2] < lo[b][2] || hi[b][2] < lo[a][2]) continue;
+      uf.join(a, b);
+    }
+}
+
+template <class T>
+void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
+  try {
+    vrep_detail::require_jacobian_input(V, limits);
+  } catch (const ValidationError& e) {
+    throw ValidationError(name, e.what(), "");
+  }
+  for (int d = 0; d < 3; ++d)
+    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
+      throw ValidationError(name + ".knots[" + std::to_string(d) + "]", "is not clamped: its faces are not layers of the net",
+                            "clamp the trivariate first");
+  if (V.is_rational())
+    for (const auto& w : V.weights)
+      if (!(T(0) < w)) throw DomainError(name + ".weights", "has a weight that is not positive", "give positive weights");
+}
+
+/// The face (d, side) of V collapses along its direction `a` (0 or 1 of the face) when every line
+/// of its net along a holds one point (then the face's points depend on the other direction only).
+template <class T>
+bool collapsed(const BSpline<T>& F, int a) {
+  const std::size_t n0 = F.count(0), n1 = F.count(1), q = static_cast<std::size_t>(F.q);
+  for (std::size_t j = 0; j < (a == 0 ? n1 : n0); ++j)
+    for (std::size_t i = 1; i < (a == 0 ? n0 : n1); ++i) {
+      const std::size_t x = a == 0 ? i + n0 * j : j + n0 * i, y = a == 0 ? n0 * j : j;
+      for (int k = 0; k < 3; ++k)
+        if (!(F.points[x * q + k] == F.points[y * q + k])) return false;
+    }
+  return true;
+}
+
+/// The four corner points of a surface's net (geometry), sorted: equal surfaces have equal sets.
+template <class T>
+std::vector<std::array<T, 3>> corner_set(const BSpline<T>& F) {
+  const std::size_t n0 = F.count(0), n1 = F.count(1), q = static_cast<std::size_t>(F.q);
+  std::vector<std::array<T, 3>> c;
+  for (std::size_t idx : {std::size_t(0), n0 - 1, n0 * (n1 - 1), n0 * n1 - 1}) c.push_back({F.points[idx * q], F.points[idx * q + 1], F.points[idx * q + 2]});
+  std::sort(c.begin(), c.end());
+  return c;
+}
+
+}  // namespace
+
+template <class T>
+FreeformSolid<T> freeform_solid(std::string name, std::vector<BSpline<T>> cells, const Limits& limits) {
+  if (cells.empty()) throw ValidationError(name + ".cells", "is empty", "give at least one trivariate");
+  FreeformSolid<T> S;
+  S.name = std::move(name);
+  std::size_t pieces = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    require_cell(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d) n = checked_product(n, cells[c].knots[d].size(), limits, "solid pieces");
+    pieces += n;
+    limits.check_count(pieces, "solid pieces");
+  }
+  // Faces and which of them another face covers.
+  struct Face {
+    std::size_t cell;
+    int d, side;
+    BSpline<T> F;
+    std::vector<std::array<T, 3>> corners;
+    bool inner = false;
+  };
+  std::vector<Face> faces;
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (int d = 0; d < 3; ++d)
+      for (int s = 0; s < 2; ++s) {
+        Face f{c, d, s, face(cells[c], d, s), {}, false};
+        f.corners = corner_set(f.F);
+        faces.push_back(std::move(f));
+      }
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    for (std::size_t j = i + 1; j < faces.size(); ++j) {
+      if (faces[i].corners != faces[j].corners) continue;
+      if (same_surface(faces[i].F, faces[j].F, T(0), limits)) faces[i].inner = faces[j].inner = true;
+    }
+  S.faces = faces.size();
+  for (const auto& f : faces) {
+    if (f.inner) {
+      ++S.inner_faces;
+      continue;
+    }
+    const BezierForm<T> B = bezier_form(f.F, limits);
+    for (std::size_t k = 0; k < B.size(); ++k) {
+      typename FreeformSolid<T>::Patch p;
+      p.h = homogeneous_form(B.piece(k).spline);
+      p.box = bounds_of(p.h);
+      S.boundary.push_back(std::move(p));
+    }
+  }
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const BezierForm<T> B = bezier_form(cells[c], limits);
+    for (std::size_t k = 0; k < B.size(); ++k) {
+      const auto pc = B.piece(k);
+      typename FreeformSolid<T>::Piece p;
+      p.cell = c;
+      p.h = homogeneous_form(pc.spline);
+      p.box = bounds_of(p.h);
+      for (int d = 0; d < 3; ++d) {
+        p.lo.push_back(pc.box[d].first);
+        p.hi.push_back(pc.box[d].second);
+        for (int s = 0; s < 2; ++s) {
+          const T at = s ? cells[c].domain_hi(d) : cells[c].domain_lo(d);
+          const bool on_face = (s ? pc.box[d].second : pc.box[d].first) == at;
+          p.on_boundary[d][s] = on_face && !faces[c * 6 + d * 2 + s].inner;
+        }
+      }
+      S.pieces.push_back(std::move(p));
+    }
+  }
+  S.box = S.pieces.front().box;
+  for (const auto& p : S.pieces)
+    for (int k = 0; k < 3; ++k) {
+      S.box[k] = std::min(S.box[k], p.box[k]);
+      S.box[k + 3] = std::max(S.box[k + 3], p.box[k + 3]);
+    }
+  S.cells = std::move(cells);
+  return S;
+}
+
+template <class T>
+Truth classify_point_freeform(const FreeformSolid<T>& S, const std::vector<T>& x, const SolveOptions& options, std::size_t* systems) {
+  if (x.size() != 3) throw ValidationError("point", "has " + std::to_string(x.size()) + " coordinates", "give x, y, z");
+  const std::array<T, 6> at{x[0], x[1], x[2], x[0], x[1], x[2]};
+  if (!overlap(S.box, at)) return Truth::out;
+  bool doubtful = false;
+  for (const auto& p : S.pieces) {
+    if (!overlap(p.box, at)) continue;
+    std::vector<Bern<T>> f(3);
+    for (int k = 0; k < 3; ++k) {
+      f[k] = p.h[k + 1];
+      for (std::size_t i = 0; i < f[k].c.size(); ++i) f[k].c[i] -= x[k] * p.h[0].c[i];
+    }
+    const SolveResult<T> r = solve_system(f, p.lo, p.hi, options);
+    if (systems) ++*systems;
+    if (!r.undecided.empty()) doubtful = true;
+    for (const auto& root : r.roots) {
+      // A root on (or within its box of) a boundary face: x may lie on the boundary.
+      bool touches = false;
+      for (int d = 0; d < 3; ++d) {
+        const T lo = root.exact ? root.point[d] : root.lo[d], hi = root.exact ? root.point[d] : root.hi[d];
+        if ((p.on_boundary[d][0] && !(p.lo[d] < lo)) || (p.on_boundary[d][1] && !(hi < p.hi[d]))) touches = true;
+      }
+      if (!touches && (root.unique || root.exact)) return Truth::in;
+      doubtful = true;
+    }
+  }
+  return doubtful ? Truth::mixed : Truth::out;
+}
+
+template <class T>
+FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
+                              const Limits& limits) {
+  require_cell(V, "trivariate", limits);
+  if (options.max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
+  for (std::size_t j = 0; j < conditions.size(); ++j)
+    if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
+  const std::size_t nc = conditions.size();
+  using PatchPtr = std::shared_ptr<const typename FreeformSolid<T>::Patch>;
+  std::vector<std::vector<PatchPtr>> roots(nc);
+  for (std::size_t j = 0; j < nc; ++j)
+    for (const auto& p : conditions[j].solid->boundary) roots[j].push_back(std::make_shared<typename FreeformSolid<T>::Patch>(p));
+  struct Box {
+    H4<T> h;
+    Bern<T> N;
+    std::array<T, 3> lo, hi;
+    T vol;
+    std::array<T, 6> image;
+    std::vector<std::vector<PatchPtr>> cand;  // per condition: boundary pieces whose bounds meet the image's
+    std::vector<char> clear;                  // per condition: no candidate left
+  };
+  // Filters a box's candidates to those meeting its image's bounds; pieces larger than the image
+  // are halved in both directions (exact de Casteljau) first.
+  auto evaluate = [&](Box& b) {
+    b.image = bounds_of(b.h);
+    const T size = extent(b.image);
+    b.clear.assign(nc, 0);
+    for (std::size_t j = 0; j < nc; ++j) {
+      std::vector<PatchPtr> keep, todo = std::move(b.cand[j]);
+      while (!todo.empty()) {
+        PatchPtr p = std::move(todo.back());
+        todo.pop_back();
+        if (!overlap(p->box, b.image)) continue;
+        if (size < extent(p->box) && keep.size() + todo.size() < options.max_candidates) {
+          auto [a, c] = split_h(p->h, 0);
+          for (auto* half : {&a, &c}) {
+            auto [e, f] = split_h(*half, 1);
+            for (auto* quarter : {&e, &f}) {
+              auto q = std::make_shared<typename FreeformSolid<T>::Patch>();
+              q->h = std::move(*quarter);
+              q->box = bounds_of(q->h);
+              todo.push_back(std::move(q));
+            }
+          }
+          continue;
+        }
+        keep.push_back(std::move(p));
+      }
+      b.cand[j] = std::move(keep);
+      b.clear[j] = b.cand[j].empty();
+    }
+  };
+  // Settled: clear of every boundary, and det J's coefficients of one sign (then the box's volume
+  // is exact for a polynomial V, Jensen / chord bounds for a rational one: see box_integral_bounds).
+  auto settled = [&](const Box& b) {
+    if (!std::all_of(b.clear.begin(), b.clear.end(), [](char c) { return c != 0; })) return false;
+    bool pos = false, neg = false;
+    for (const auto& x : b.N.c) {
+      pos |= T(0) < x;
+      neg |= x < T(0);
+    }
+    return !(pos && neg);
+  };
+
+  // The direction in which a box's image is longest: the largest step between neighbouring
+  // control points along it (L1, times the degree: a bound on the speed), where halving helps most.
+  auto longest = [](const Box& b) {
+    int best = 0;
+    T top(-1);
+    const auto& deg = b.h[0].deg;
+    for (int d = 0; d < 3; ++d) {
+      if (deg[d] == 0) continue;
+      const std::size_t stride = detail::tensor_stride(deg, d);
+      T m(0);
+      std::vector<int> idx(deg.size());
+      for (std::size_t i = 0; i < b.h[0].c.size(); ++i) {
+        detail::unflatten(i, deg, idx);
+        if (idx[d] == deg[d]) continue;
+        const std::size_t j = i + stride;
+        T step(0);
+        for (int k = 1; k < 4; ++k) {
+          const T a = b.h[k].c[i] / b.h[0].c[i], c = b.h[k].c[j] / b.h[0].c[j];
+          step += c < a ? T(a - c) : T(c - a);
+        }
+        if (m < step) m = step;
+      }
+      m *= T(deg[d]);
+      if (top < m) {
+        top = m;
+        best = d;
+      }
+    }
+    return best;
+  };
+  // The volume a box may hold: the upper bound of |det J| over it (the order of splitting).
+  auto weight = [](const Box& b) {
+    T l, h;
+    vrep_detail::box_integral_bounds(b.N, b.h[0], b.vol, l, h, 4, true);
+    return std::max(T(l < T(0) ? T(-l) : l), T(h < T(0) ? T(-h) : h));
+  };
+  struct Queued {
+    T weight;
+    std::size_t at;
+    bool operator<(const Queued& o) const { return weight < o.weight; }
+  };
+  const BezierForm<T> F = bezier_form(V, limits);
+  std::vector<Box> todo;  // mixed boxes, split largest weight first
+  std::priority_queue<Queued> order;
+  std::vector<Box> done;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    Box b;
+    b.h = homogeneous_form(pc.spline);
+    b.N = vrep_detail::jacobian_numerator(pc.spline);
+    for (int d = 0; d < 3; ++d) {
+      b.lo[d] = pc.box[d].first;
+      b.hi[d] = pc.box[d].second;
+    }
+    b.vol = T(1);
+    b.cand = roots;
+    evaluate(b);
+    if (settled(b)) done.push_back(std::move(b));
+    else {
+      order.push({weight(b), todo.size()});
+      todo.push_back(std::move(b));
+    }
+  }
+  auto clock = std::chrono::steady_clock::now();
+  // Halve the boxes that are not settled, the one that may hold the most volume first, across the direction of its image's longest extent, until none is left or the budget
+  // is spent.
+  std::size_t live = todo.size();
+  while (live > 0 && live + done.size() < options.max_boxes) {
+    const std::size_t at = order.top().at;
+    order.pop();
+    Box b = std::move(todo[at]);
+    --live;
+    const int dir = longest(b);
+    auto [h0, h1] = split_h(b.h, dir);
+    auto [n0, n1] = vrep_detail::split_half(b.N, dir);
+    const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
+    Box c[2];
+    c[0].h = std::move(h0);
+    c[1].h = std::move(h1);
+    c[0].N = std::move(n0);
+    c[1].N = std::move(n1);
+    for (int s = 0; s < 2; ++s) {
+      c[s].lo = b.lo;
+      c[s].hi = b.hi;
+      c[s].vol = b.vol / T(2);
+      c[s].cand = b.cand;
+    }
+    c[0].hi[dir] = mid;
+    c[1].lo[dir] = mid;
+    bool reuse = true;  // the first mixed half takes the parent's slot
+    for (auto& x : c) {
+      evaluate(x);
+      if (settled(x)) {
+        done.push_back(std::move(x));
+        continue;
+      }
+      const std::size_t slot = reuse ? at : todo.size();
+      order.push({weight(x), slot});
+      if (reuse) todo[at] = std::move(x);
+      else todo.push_back(std::move(x));
+      reuse = false;
+      ++live;
+    }
+    if (options.progress && std::chrono::steady_clock::now() - clock > std::chrono::seconds(2)) {
+      clock = std::chrono::steady_clock::now();
+      options.progress("freeform cell: " + std::to_string(done.size() + live) + " of " + std::to_string(options.max_boxes) + " boxes, " +
+                       std::to_string(live) + " near a boundary or not yet integrated");
+    }
+  }
+  std::vector<Box> boxes = std::move(done);
+  while (!order.empty()) {  // the live mixed boxes (a slot emptied by a split that left none is not queued)
+    boxes.push_back(std::move(todo[order.top().at]));
+    order.pop();
+  }
+  const std::size_t n = boxes.size();
+  std::vector<std::array<T, 3>> lo(n), hi(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lo[i] = boxes[i].lo;
+    hi[i] = boxes[i].hi;
+  }
+  FreeformCell<T> out;
+  // Per condition: the clear boxes in groups that touch, one point query per group.
+  std::vector<std::vector<Truth>> truth(nc, std::vector<Truth>(n, Truth::mixed));
+  for (std::size_t j = 0; j < nc; ++j) {
+    std::vector<std::size_t> ids;
+    for (std::size_t i = 0; i < n; ++i)
+      if (boxes[i].clear[j]) ids.push_back(i);
+    UnionFind uf(n);
+    join_touching(lo, hi, ids, uf);
+    std::vector<std::vector<std::size_t>> groups;
+    std::vector<long> group_of(n, -1);
+    for (std::size_t i : ids) {
+      const std::size_t r = uf.find(i);
+      if (group_of[r] < 0) {
+        group_of[r] = static_cast<long>(groups.size());
+        groups.emplace_back();
+      }
+      groups[static_cast<std::size_t>(group_of[r])].push_back(i);
+    }
+    for (const auto& g : groups) {
+      Truth t = Truth::mixed;
+      // Corners of up to eight of its boxes (spread over the group) until one is decided.
+      const std::size_t tries = std::min<std::size_t>(g.size(), 8);
+      for (std::size_t a = 0; a < tries && t == Truth::mixed; ++a) {
+        const Box& b = boxes[g[a * g.size() / tries]];
+        for (int s = 0; s < 8 && t == Truth::mixed; s += 7) {
+          // Corner s of the box: its control point (an exact point of the image).
+          const int i0 = s & 1 ? b.h[0].deg[0] : 0, i1 = (s >> 1) & 1 ? b.h[0].deg[1] : 0, i2 = s >> 2 ? b.h[0].deg[2] : 0;
+          const std::size_t idx = static_cast<std::size_t>(i0 + (b.h[0].deg[0] + 1) * (i1 + (b.h[0].deg[1] + 1) * i2));
+          std::vector<T> x(3);
+          for (int k = 0; k < 3; ++k) x[k] = b.h[k + 1].c[idx] / b.h[0].c[idx];
+          ++out.queries;
+          t = classify_point_freeform(*conditions[j].solid, x, options.solve, &out.systems);
+          if (t == Truth::mixed) ++out.undecided_queries;
+        }
+      }
+      for (std::size_t i : g) truth[j][i] = t;
+    }
+  }
+  // Each box: in when every condition holds, out when one fails (Kleene's and).
+  std::vector<Truth> box_truth(n);
+  bool has_in = false, has_out = false;
+  std::size_t mixed = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Truth t = Truth::in;
+    for (std::size_t j = 0; j < nc; ++j) {
+      Truth c = truth[j][i];
+      if (!conditions[j].inside) c = c == Truth::in ? Truth::out : c == Truth::out ? Truth::in : Truth::mixed;
+      if (c == Truth::out) {
+        t = Truth::out;
+        break;
+      }
+      if (c == Truth::mixed) t = Truth::mixed;
+    }
+    box_truth[i] = t;
+    has_in |= t == Truth::in;
+    has_out |= t == Truth::out;
+    mixed += t == Truth::mixed;
+  }
+  using K = typename CellClass<T>::Kind;
+  out.cls.boxes = n;
+  out.cls.mixed = mixed;
+  out.cls.kind = mixed == 0 ? (has_in && has_out ? K::cut : has_in ? K::whole : K::empty) : has_in && has_out ? K::cut : K::undecided;
+  // Volume: in-boxes' integral of det J, mixed boxes between none and all.
+  auto& v = out.volume;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (box_truth[i] == Truth::out) continue;
+    T l, h;
+    vrep_detail::box_integral_bounds(boxes[i].N, boxes[i].h[0], boxes[i].vol, l, h, 4, box_truth[i] == Truth::mixed);
+    if (box_truth[i] == Truth::mixed) {
+      l = std::min(T(0), l);
+      h = std::max(T(0), h);
+    }
+    v.lower += l;
+    v.upper += h;
+  }
+  if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {
+    const T l = -v.upper;
+    v.upper = -v.lower;
+    v.lower = l;
+  }
+  v.boxes = n;
+  // Components of the cover (the boxes that are not out), with V's own identifications.
+  std::vector<std::size_t> cover;
+  for (std::size_t i = 0; i < n; ++i)
+    if (box_truth[i] != Truth::out) cover.push_back(i);
+  UnionFind uf(n);
+  join_touching(lo, hi, cover, uf);
+  std::array<std::array<BSpline<T>, 2>, 3> faces;
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) faces[d][s] = face(V, d, s);
+  auto touching_face = [&](int d, int s) {
+    std::vector<std::size_t> t;
+    const T at = s ? V.domain_hi(d) : V.domain_lo(d);
+    for (std::size_t i : cover)
+      if ((s ? hi[i][d] : lo[i][d]) == at) t.push_back(i);
+    return t;
+  };
+  auto join_all = [&](const std::vector<std::size_t>& t) {
+    for (std::size_t i = 1; i < t.size(); ++i) uf.join(t[0], t[i]);
+  };
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) {
+      const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;  // the face's directions in V
+      const bool along0 = collapsed(faces[d][s], 0), along1 = collapsed(faces[d][s], 1);
+      const auto t = touching_face(d, s);
+      if (along0 && along1) join_all(t);
+      else if (along0 || along1) {
+        // Collapsed along V's direction `gone`: boxes meeting the face over a common interval of
+        // the other direction `kept` meet in space.
+        const int kept = along0 ? b : a;
+        std::vector<std::array<T, 3>> l2(n), h2(n);
+        for (std::size_t i : t) {
+          l2[i] = {lo[i][kept], T(0), T(0)};
+          h2[i] = {hi[i][kept], T(0), T(0)};
+        }
+        join_touching(l2, h2, t, uf);
+      }
+      // A face equal to another face of V (a seam, or faces glued onto each other): join all that
+      // touch either (more than needed; the lower bound stays sound).
+      for (int d2 = d; d2 < 3; ++d2)
+        for (int s2 = 0; s2 < 2; ++s2) {
+          if (d2 == d && s2 <= s) continue;
+          if (corner_set(faces[d][s]) != corner_set(faces[d2][s2])) continue;
+          if (!same_surface(faces[d][s], faces[d2][s2], T(0), limits)) continue;
+          auto both = t;
+          const auto t2 = touching_face(d2, s2);
+          both.insert(both.end(), t2.begin(), t2.end());
+          join_all(both);
+        }
+    }
+  std::vector<long> comp(n, -1);
+  std::vector<char> comp_has_in;
+  for (std::size_t i : cover) {
+    const std::size_t r = uf.find(i);
+    if (comp[r] < 0) {
+      comp[r] = static_cast<long>(comp_has_in.size());
+      comp_has_in.push_back(0);
+    }
+    if (box_truth[i] == Truth::in) comp_has_in[static_cast<std::size_t>(comp[r])] = 1;
+  }
+  out.cover_components = comp_has_in.size();
+  out.components = static_cast<std::size_t>(std::count(comp_has_in.begin(), comp_has_in.end(), 1));
+  for (std::size_t i : cover) {
+    typename FreeformCell<T>::Box b;
+    b.lo = lo[i];
+    b.hi = hi[i];
+    b.truth = box_truth[i];
+    b.component = static_cast<int>(comp[uf.find(i)]);
+    out.boxes.push_back(b);
+    if (b.truth == Truth::in && out.cls.inside.empty()) out.cls.inside = {lo[i][0], lo[i][1], lo[i][2]};
+  }
+  for (std::size_t i = 0; i < n && out.cls.outside.empty(); ++i)
+    if (box_truth[i] == Truth::out) out.cls.outside = {lo[i][0], lo[i][1], lo[i][2]};
+  return out;
+}
+
+#define SPLINEX_INSTANTIATE_FREEFORM(T)                                                                                                   \
+  template FreeformSolid<T> freeform_solid(std::string, std::vector<BSpline<T>>, const Limits&);                                          \
+  template Truth classify_point_freeform(const FreeformSolid<T>&, const std::vector<T>&, const SolveOptions&, std::size_t*);              \
+  template FreeformCell<T> freeform_cell(const BSpline<T>&, const std::vector<FreeformCondition<T>>&, const FreeformOptions&, const Limits&);
+SPLINEX_INSTANTIATE_FREEFORM(Rational)
+SPLINEX_INSTANTIATE_FREEFORM(double)
+
+}  // namespace splinex
