@@ -14,6 +14,7 @@
 #include "experiments/vrep_figures.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_ssi.hpp"
+#include "experiments/vrep_teapot.hpp"
 #include <fstream>
 #include "vrep/blend.hpp"
 #include "vrep/boolean.hpp"
@@ -365,6 +366,17 @@ Commands add_vrep(CLI::App& app) {
     o.model = std::move(M);
     return o;
   };
+  struct TeapotCli {
+    std::string arith = "exact", svg, vtk;
+    std::size_t boxes = 4096;
+  };
+  auto tpo = std::make_shared<TeapotCli>();
+  auto* tp = v->add_subcommand("teapot", "the teapot's V-model (Figure 14): body shell, handle and spout trimmed by each other and the cavity, "
+                                         "from trivariates without an implicit form (certified in exact arithmetic)");
+  tp->add_option("--arith", tpo->arith, "exact (certified) or double")->check(CLI::IsMember({"exact", "double"}))->capture_default_str();
+  tp->add_option("--boxes", tpo->boxes, "subdivision boxes per cell")->check(CLI::Range(1, 1000000))->capture_default_str();
+  tp->add_option("--svg", tpo->svg, "write an exploded view (exact run only) to this SVG file");
+  tp->add_option("--vtk", tpo->vtk, "write the cells' boxes as hexahedra (legacy VTK, exact run only) to this file");
   struct SsiCli {
     std::string a, b, step = "1/16", tolerance = "1e-12", svg, obj;
     int grid = 48;
@@ -392,7 +404,55 @@ Commands add_vrep(CLI::App& app) {
   bl->add_option("--attribute", blo->attribute, "a constant or a field (on affine cells) both models carry")->required();
   bl->add_option("--k", blo->k, "the blend's order: d^k weights (1: Eq. 2)")->check(CLI::Range(1, 64))->capture_default_str();
   bl->add_option("--bits", blo->bits, "the MPFI enclosure's precision")->check(CLI::Range(16, 100000))->capture_default_str();
-  return {{bl, [blo, exact_model](const Context& ctx) {
+  auto teapot_json = [](const auto& M) {
+    using T = std::decay_t<decltype(M.cells.front().cell.volume.lower)>;
+    auto row = [](const auto& r) {
+      Json v;
+      if constexpr (std::is_same_v<T, Rational>) put_enclosure(v, "exact", r.cell.volume.lower, r.cell.volume.upper, true);
+      else v = {{"lower", r.cell.volume.lower}, {"upper", r.cell.volume.upper}};
+      return Json{{"name", r.name},
+                  {"trivariate", r.trivariate},
+                  {"conditions", r.conditions},
+                  {"kind", to_string<T>(r.cell.cls.kind)},
+                  {"components_at_least", r.cell.components},
+                  {"cover_components", r.cell.cover_components},
+                  {"volume", v},
+                  {"boxes", r.cell.cls.boxes},
+                  {"boxes_near_trimming", r.cell.cls.mixed},
+                  {"point_queries", r.cell.queries},
+                  {"seconds", r.seconds}};
+    };
+    Json cells = Json::array(), removed = Json::array();
+    std::size_t vcells = 0;
+    for (const auto& r : M.cells) {
+      cells.push_back(row(r));
+      vcells += r.cell.components;
+    }
+    for (const auto& r : M.removed) removed.push_back(row(r));
+    return Json{{"cells", cells},
+                {"removed_by_subtraction", removed},
+                {"v_cells_at_least", vcells},
+                {"seconds", M.seconds},
+                {"certified", std::is_same_v<T, Rational>},
+                {"note", std::is_same_v<T, Rational>
+                             ? "kinds, volume enclosures and the lower bounds on components are certified; (body + handle + spout) - cavity"
+                             : "double: the same steps in floats, nothing certified; (body + handle + spout) - cavity"}};
+  };
+  return {{tp, [tpo, teapot_json](const Context&) {
+             auto progress = [](const std::string& line) { std::cerr << "[vrep teapot] " << line << "\n"; };
+             if (tpo->arith == "double") {
+               if (!tpo->svg.empty() || !tpo->vtk.empty())
+                 throw UsageError("svg", "figures are drawn from the exact run", "drop --svg/--vtk or use --arith exact");
+               std::cout << teapot_json(teapot_vmodel<double>(tpo->boxes, progress)).dump() << "\n";
+               return 0;
+             }
+             const auto M = teapot_vmodel<Rational>(tpo->boxes, progress);
+             if (!tpo->svg.empty()) write_file_atomically(tpo->svg, teapot_vmodel_svg(M));
+             if (!tpo->vtk.empty()) write_file_atomically(tpo->vtk, teapot_vmodel_vtk(M));
+             std::cout << teapot_json(M).dump() << "\n";
+             return 0;
+           }},
+          {bl, [blo, exact_model](const Context& ctx) {
              const auto V1 = exact_model({blo->a}, ctx), V2 = exact_model({blo->b}, ctx);
              const auto x = parse_number_list(blo->at, "at");
              if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");

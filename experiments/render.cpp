@@ -1,4 +1,5 @@
 #include "experiments/render.hpp"
+#include "experiments/svg_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
   std::ostringstream o;
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << view.width << "\" height=\"" << view.height
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if (!view.title.empty()) o << "<text x=\"" << view.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << view.title << "</text>\n";
+  if (!view.title.empty()) o << "<text x=\"" << view.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << svg_escape(view.title) << "</text>\n";
   char buf[256];
   for (const auto& [depth, i] : order) {
     (void)depth;
@@ -85,7 +86,7 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
     o << buf;
   }
   if (!view.note.empty())
-    o << "<text x=\"" << view.width / 2 << "\" y=\"" << view.height - 10 << "\" text-anchor=\"middle\" fill=\"#555\">" << view.note << "</text>\n";
+    o << "<text x=\"" << view.width / 2 << "\" y=\"" << view.height - 10 << "\" text-anchor=\"middle\" fill=\"#555\">" << svg_escape(view.note) << "</text>\n";
   o << "</svg>\n";
   return o.str();
 }

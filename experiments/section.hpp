@@ -61,6 +61,8 @@ void vrep_boolean_section(ReportContext& ctx);
 void solve_section(ReportContext& ctx);
 /// Freeform boundaries: the float SSI of the teapot's handle and spout with its body, judged exactly; part vrep-ssi.
 void vrep_ssi_section(ReportContext& ctx);
+/// The teapot's V-model (papers/002 Figure 14, Table 1) from freeform solids; part vrep-teapot.
+void vrep_teapot_section(ReportContext& ctx);
 /// The peers' results judged by verify, from ReportOptions::peers_dir; part peers.
 void peers_section(ReportContext& ctx);
 /// The exact proofs of `splinex prove`; part proofs.

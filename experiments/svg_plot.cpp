@@ -11,8 +11,7 @@
 
 namespace splinex {
 
-namespace {
-std::string esc(const std::string& s) {
+std::string svg_escape(const std::string& s) {
   std::string o;
   for (char c : s) {
     if (c == '<') o += "&lt;";
@@ -22,6 +21,9 @@ std::string esc(const std::string& s) {
   }
   return o;
 }
+
+namespace {
+std::string esc(const std::string& s) { return svg_escape(s); }
 std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f", v);

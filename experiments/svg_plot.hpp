@@ -29,6 +29,9 @@ std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& s
 /// Least-squares slope of log10(y) against log10(x) over the points (0 for fewer than two).
 double loglog_slope(const std::vector<std::pair<double, double>>& pts);
 
+/// Text for SVG/XML: <, > and & as entities.
+std::string svg_escape(const std::string& s);
+
 /// Writes text to path through a temporary file and a rename, so readers never see half a file.
 void write_file_atomically(const std::string& path, const std::string& text);
 

@@ -347,6 +347,15 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
     std::size_t at;
     bool operator<(const Queued& o) const { return weight < o.weight; }
   };
+  // Limits before the work: every box holds its homogeneous net and det J's numerator.
+  {
+    std::size_t h = 1, n = 1;
+    for (int d = 0; d < 3; ++d) {
+      h = checked_product(h, static_cast<std::size_t>(V.degrees[d] + 1), limits, "trivariate piece");
+      n = checked_product(n, static_cast<std::size_t>((V.is_rational() ? 4 : 3) * V.degrees[d]), limits, "det J's numerator");
+    }
+    checked_product(4 * h + n, options.max_boxes, limits, "subdivision boxes of the cell (boxes times coefficients per box)");
+  }
   const BezierForm<T> F = bezier_form(V, limits);
   std::vector<Box> todo;  // mixed boxes, split largest weight first
   std::priority_queue<Queued> order;
