@@ -256,8 +256,8 @@ void vrep_ssi_section(ReportContext& ctx) {
   md << "\n![branches](vrep_ssi_handle_body.svg)\n\n![steps](vrep_ssi_steps.svg)\n\n"
         "Data: `vrep_ssi.csv`; the branches as polylines for ParaView: `vrep_ssi_handle_body.obj`. Coarse steps break the loops into "
         "several branches (the marching jumps or stalls; counted above), fine steps give two loops per pair; a loop is open in the parameters where it crosses a seam (the handle's and spout's u = 0 / u = 2, the body's s = 0 / s = 4 at the spout) and closed in space: the column counts the chains of branches whose ends meet (within step / 4) all around. What this does not "
-        "certify: that no further intersection loop exists (the seeds are sampled). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) are not built: "
-        "classifying a point against a freeform trivariate needs its inverse, which no implicit form gives.\n\n";
+        "certify: that no further intersection loop exists (the seeds are sampled). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) "
+        "are built without this SSI, by subdivision against the other solid and point membership by the certified solver: next section.\n\n";
   ctx.markdown["vrep-ssi"] = md.str();
   ctx.ok = ctx.ok && ok;
 }

@@ -13,7 +13,7 @@ DIRECT = {
     "compose": ["float"],
     "solve": ["compose"],
     "untrim": ["compose"],
-    "vrep": ["compose"],
+    "vrep": ["compose", "solve"],
     "hybrid": ["float"],
     "io": ["untrim", "hybrid", "vrep"],
     "fixtures": ["io"],
