@@ -10,6 +10,8 @@
 
 #include "float/mpfr.hpp"
 #include "vrep/boolean.hpp"
+#include "vrep/freeform.hpp"
+#include "fixtures/teapot_vmodel.hpp"
 #include "vrep/primitives.hpp"
 #include "experiments/vrep_ssi.hpp"
 #include "float/rounding.hpp"
@@ -111,9 +113,34 @@ void ssi_step(benchmark::State& st, bool judge) {
   st.counters[judge ? "certified" : "branches"] = static_cast<double>(n);
 }
 
+/// Trimming by a freeform solid: the teapot's handle inside its body (Figure 14's shared cells),
+/// 1024 boxes, exact and double.
+template <class T>
+void freeform_step(benchmark::State& st) {
+  const auto S = teapot_solids();
+  BSpline<T> H, B;
+  if constexpr (std::is_same_v<T, Rational>) {
+    H = S.handle;
+    B = S.body;
+  } else {
+    H = round_spline<double>(S.handle);
+    B = round_spline<double>(S.body);
+  }
+  const auto body = freeform_solid<T>("body", {B});
+  FreeformOptions o;
+  o.max_boxes = 1024;
+  std::size_t mixed = 0;
+  for (auto _ : st) mixed = freeform_cell(H, {{&body, true}}, o).cls.mixed;
+  st.counters["boxes_near_trimming"] = static_cast<double>(mixed);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  benchmark::RegisterBenchmark("vrep/freeform/double/teapot-handle-in-body", [](benchmark::State& st) { freeform_step<double>(st); })
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/freeform/exact/teapot-handle-in-body", [](benchmark::State& st) { freeform_step<Rational>(st); })
+      ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/trimmed/double/figure4", [](benchmark::State& st) { trimmed_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/trimmed/exact/figure4", [](benchmark::State& st) { trimmed_step(st, true); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
@@ -158,6 +185,9 @@ int main(int argc, char** argv) {
     const double f = rep.ns["vrep/ssi/double/teapot-handle-body"], j = rep.ns["vrep/ssi/judge/teapot-handle-body"];
     std::cout << "\nTeapot handle and body: float SSI " << std::setprecision(2) << f << " ms, its exact judgement " << j
               << " ms (judge/SSI " << std::setprecision(1) << (f > 0 ? j / f : 0.0) << ")\n";
+    const double fd = rep.ns["vrep/freeform/double/teapot-handle-in-body"], fe = rep.ns["vrep/freeform/exact/teapot-handle-in-body"];
+    std::cout << "Teapot handle in body (trimming by a freeform solid, 1024 boxes): ms double " << std::setprecision(2) << fd << ", exact " << fe
+              << " (exact/double " << std::setprecision(1) << (fd > 0 ? fe / fd : 0.0) << ")\n";
   }
   benchmark::Shutdown();
   return 0;
