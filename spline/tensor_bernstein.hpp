@@ -3,6 +3,7 @@
 // regularity and trimming, verification and the subdivision solver).
 #pragma once
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -130,7 +131,10 @@ std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
   const int p = b.deg[l];
   const std::size_t n = b.deg.size(), stride = tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
   std::vector<T> w(p + 1);
-  const T s = T(1) - t;
+  const T s = T(1) - t, two(2);
+  // At t = 1/2 one sum and one halving per step (the same value: halving is exact in binary
+  // floats and rationals); not in double, where the sum could overflow where the products do not.
+  const bool half = !std::is_floating_point_v<T> && t * two == T(1);
   std::vector<int> idx(n);
   auto reduced = b.deg;
   reduced[l] = 0;
@@ -142,7 +146,13 @@ std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
     for (int r = 0; r <= p; ++r) {
       L.c[base + r * stride] = w[0];
       R.c[base + (p - r) * stride] = w[p - r];
-      for (int i = 0; i < p - r; ++i) w[i] = w[i] * s + w[i + 1] * t;
+      if (half)
+        for (int i = 0; i < p - r; ++i) {
+          w[i] += w[i + 1];
+          w[i] /= two;
+        }
+      else
+        for (int i = 0; i < p - r; ++i) w[i] = w[i] * s + w[i + 1] * t;
     }
   }
   return {std::move(L), std::move(R)};

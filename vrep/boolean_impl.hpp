@@ -239,12 +239,17 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
     // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
     // Bernstein coefficients), and the gap shrinks with the square of the box.
     const T sg = nmax < T(0) || (nmax == T(0) && nmin < T(0)) ? T(-1) : T(1);
-    T si(0), sj(0);
+    T si(0);
     for (const auto& x : N.c) si += x;
-    const Bern<T> NW = vrep_detail::mul(N, W);
-    for (const auto& x : NW.c) sj += x;
     const T I = sg * vol * si / T(static_cast<long>(N.c.size()));
-    const T J = sg * vol * sj / T(static_cast<long>(NW.c.size()));
+    // J = int |N| W; W constant (a polynomial cell: W = 1) needs no product.
+    T J = I * wmin;
+    if (!(wmax == wmin)) {
+      T sj(0);
+      const Bern<T> NW = vrep_detail::mul(N, W);
+      for (const auto& x : NW.c) sj += x;
+      J = sg * vol * sj / T(static_cast<long>(NW.c.size()));
+    }
     if (I == T(0)) {
       lo = hi = T(0);
       return;

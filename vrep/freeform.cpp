@@ -12,6 +12,7 @@
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
+#include "vrep/box_components.hpp"
 #include "vrep/regularity_impl.hpp"
 #include "vrep/trivariate.hpp"
 #include "vrep/vmodel.hpp"
@@ -21,6 +22,10 @@ namespace splinex {
 namespace {
 
 using detail::Bern;
+using vrep_detail::corner_set;
+using vrep_detail::join_identified;
+using vrep_detail::join_touching;
+using vrep_detail::UnionFind;
 template <class T>
 using H4 = std::array<Bern<T>, 4>;  // W, wx, wy, wz
 
@@ -69,29 +74,6 @@ std::pair<H4<T>, H4<T>> split_h(const H4<T>& h, int dir) {
   return out;
 }
 
-struct UnionFind {
-  std::vector<std::size_t> p;
-  explicit UnionFind(std::size_t n) : p(n) { std::iota(p.begin(), p.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void join(std::size_t a, std::size_t b) { p[find(a)] = find(b); }
-};
-
-/// Pairs of closed boxes (lo, hi in 3 parameters) with a common point, among `ids`.
-template <class T>
-void join_touching(const std::vector<std::array<T, 3>>& lo, const std::vector<std::array<T, 3>>& hi, std::vector<std::size_t> ids,
-                   UnionFind& uf) {
-  std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) { return lo[a][0] < lo[b][0]; });
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    for (std::size_t j = i + 1; j < ids.size() && !(hi[ids[i]][0] < lo[ids[j]][0]); ++j) {
-      const std::size_t a = ids[i], b = ids[j];
-      if (hi[a][1] < lo[b][1] || hi[b][1] < lo[a][1] || hi[a][2] < lo[b][2] || hi[b][2] < lo[a][2]) continue;
-      uf.join(a, b);
-    }
-}
-
 template <class T>
 void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
   try {
@@ -106,30 +88,6 @@ void require_cell(const BSpline<T>& V, const std::string& name, const Limits& li
   if (V.is_rational())
     for (const auto& w : V.weights)
       if (!(T(0) < w)) throw DomainError(name + ".weights", "has a weight that is not positive", "give positive weights");
-}
-
-/// The face (d, side) of V collapses along its direction `a` (0 or 1 of the face) when every line
-/// of its net along a holds one point (then the face's points depend on the other direction only).
-template <class T>
-bool collapsed(const BSpline<T>& F, int a) {
-  const std::size_t n0 = F.count(0), n1 = F.count(1), q = static_cast<std::size_t>(F.q);
-  for (std::size_t j = 0; j < (a == 0 ? n1 : n0); ++j)
-    for (std::size_t i = 1; i < (a == 0 ? n0 : n1); ++i) {
-      const std::size_t x = a == 0 ? i + n0 * j : j + n0 * i, y = a == 0 ? n0 * j : j;
-      for (int k = 0; k < 3; ++k)
-        if (!(F.points[x * q + k] == F.points[y * q + k])) return false;
-    }
-  return true;
-}
-
-/// The four corner points of a surface's net (geometry), sorted: equal surfaces have equal sets.
-template <class T>
-std::vector<std::array<T, 3>> corner_set(const BSpline<T>& F) {
-  const std::size_t n0 = F.count(0), n1 = F.count(1), q = static_cast<std::size_t>(F.q);
-  std::vector<std::array<T, 3>> c;
-  for (std::size_t idx : {std::size_t(0), n0 - 1, n0 * (n1 - 1), n0 * n1 - 1}) c.push_back({F.points[idx * q], F.points[idx * q + 1], F.points[idx * q + 2]});
-  std::sort(c.begin(), c.end());
-  return c;
 }
 
 }  // namespace
@@ -523,49 +481,7 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
     if (box_truth[i] != Truth::out) cover.push_back(i);
   UnionFind uf(n);
   join_touching(lo, hi, cover, uf);
-  std::array<std::array<BSpline<T>, 2>, 3> faces;
-  for (int d = 0; d < 3; ++d)
-    for (int s = 0; s < 2; ++s) faces[d][s] = face(V, d, s);
-  auto touching_face = [&](int d, int s) {
-    std::vector<std::size_t> t;
-    const T at = s ? V.domain_hi(d) : V.domain_lo(d);
-    for (std::size_t i : cover)
-      if ((s ? hi[i][d] : lo[i][d]) == at) t.push_back(i);
-    return t;
-  };
-  auto join_all = [&](const std::vector<std::size_t>& t) {
-    for (std::size_t i = 1; i < t.size(); ++i) uf.join(t[0], t[i]);
-  };
-  for (int d = 0; d < 3; ++d)
-    for (int s = 0; s < 2; ++s) {
-      const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;  // the face's directions in V
-      const bool along0 = collapsed(faces[d][s], 0), along1 = collapsed(faces[d][s], 1);
-      const auto t = touching_face(d, s);
-      if (along0 && along1) join_all(t);
-      else if (along0 || along1) {
-        // Collapsed along V's direction `gone`: boxes meeting the face over a common interval of
-        // the other direction `kept` meet in space.
-        const int kept = along0 ? b : a;
-        std::vector<std::array<T, 3>> l2(n), h2(n);
-        for (std::size_t i : t) {
-          l2[i] = {lo[i][kept], T(0), T(0)};
-          h2[i] = {hi[i][kept], T(0), T(0)};
-        }
-        join_touching(l2, h2, t, uf);
-      }
-      // A face equal to another face of V (a seam, or faces glued onto each other): join all that
-      // touch either (more than needed; the lower bound stays sound).
-      for (int d2 = d; d2 < 3; ++d2)
-        for (int s2 = 0; s2 < 2; ++s2) {
-          if (d2 == d && s2 <= s) continue;
-          if (corner_set(faces[d][s]) != corner_set(faces[d2][s2])) continue;
-          if (!same_surface(faces[d][s], faces[d2][s2], T(0), limits)) continue;
-          auto both = t;
-          const auto t2 = touching_face(d2, s2);
-          both.insert(both.end(), t2.begin(), t2.end());
-          join_all(both);
-        }
-    }
+  join_identified(V, lo, hi, cover, uf, limits);
   std::vector<long> comp(n, -1);
   std::vector<char> comp_has_in;
   for (std::size_t i : cover) {

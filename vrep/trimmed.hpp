@@ -192,3 +192,56 @@ template <class T>
 std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, const TrimOptions& options = {}, const Limits& limits = {});
 
 }  // namespace splinex
+
+namespace splinex {
+
+/// The boundary structure of a trimmed cell (issue 18: the topology of trimmed cells, in part),
+/// certified where stated (exact arithmetic; in double the same steps, uncertified):
+///   - corners: the corners of V's domain that lie in the cell (every leaf strictly decided there,
+///     the formula "in"; exact values of G);
+///   - edges: each of the 12 edges of V's domain, cut exactly at the roots of every leaf along it
+///     (univariate Bernstein polynomials, roots certified by the solver of solve/solver.hpp); the
+///     runs of the edge inside the cell are its V-curves and their ends strictly inside the edge
+///     its V-points (exact counts: `pieces`, `points`). An edge collapsed to a point, an edge on
+///     which a leaf vanishes identically (it lies on a trimming surface) and an edge with a root the
+///     solver leaves undecided (tangency) are said so and not counted;
+///   - surfaces: the six faces of V's domain restricted to the cell (2D subdivision with the faces'
+///     Bernstein coefficients) and, per leaf, its zero set where it bounds the cell (3D
+///     subdivision). For each: proved absent (no box of its cover is left), and a lower bound on the
+///     number of its connected pieces: components of its cover that hold a certified point (a face:
+///     a box decided in; a trimming surface: a box where the leaf's corner values have both strict
+///     signs, every other leaf's coefficients have one strict sign, and the formula changes with
+///     the leaf), with V's own identifications joined (vrep/box_components.hpp). The cover's
+///     component count is shown beside it, not certified. Collapsed faces carry no surface.
+/// What is not built: V-curves on the faces and between trimming surfaces, V-points off the
+/// edges, and counts above the certified lower bounds.
+template <class T>
+struct TrimmedTopology {
+  struct Edge {
+    int along = 0;
+    std::array<int, 3> sides{};  // sides[d] for d != along: 0 domain start, 1 end
+    enum Status { curve, collapsed, on_trimming_surface, undecided } status = curve;
+    std::size_t pieces = 0;  // runs of the edge inside the cell (V-curves)
+    std::size_t points = 0;  // their ends strictly inside the edge (V-points)
+    std::vector<std::pair<T, T>> cuts;  // enclosures of those points' parameters (lo == hi: exact)
+  };
+  struct Surface {
+    std::string what;          // "face w = 0" or "leaf 2 (cylinder: side)"
+    int dir = -1, side = -1;   // a face of V's domain
+    int leaf = -1;             // or a leaf of the trim (collect order)
+    bool collapsed = false;    // a face of zero area
+    bool absent = false;       // proved: it bounds the cell nowhere
+    std::size_t at_least = 0;  // certified lower bound on its connected pieces
+    std::size_t cover = 0;     // components of its cover (not certified)
+    std::size_t boxes = 0, cover_boxes = 0;
+  };
+  std::size_t corners = 0, corners_on_trimming = 0;  // in the cell; on a trimming surface (not counted)
+  std::vector<Edge> edges;
+  std::vector<Surface> surfaces;
+  std::size_t boxes = 0;  // 3D subdivision boxes of the trimming surfaces
+};
+
+template <class T>
+TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {});
+
+}  // namespace splinex

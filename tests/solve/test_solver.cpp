@@ -119,7 +119,7 @@ TEST_CASE("solver: a double root is exact but not certified unique, roots 2^-40 
   CHECK_FALSE(dbl.complete());
   const R e20 = R(1) / R(1 << 20), e40 = e20 * e20;
   const auto close = solve_system<R>({univariate(from_roots({R(1, 2), R(1, 2) + e20, R(1, 2) - e40}))}, {R(0)}, {R(1)},
-                                     SolveOptions{50, 200000, 60, true});
+                                     SolveOptions{50, 200000, 60, true, {}});
   REQUIRE(close.roots.size() == 3);
   CHECK(close.complete());
   for (const R& x : {R(1, 2), R(1, 2) + e20, R(1, 2) - e40}) CHECK(exact_root(close, {x}));
@@ -161,7 +161,7 @@ TEST_CASE("solver: degenerate and malformed systems are refused, a curve of solu
   CHECK_THROWS_AS(solve_system<R>({univariate({R(1), R(1)})}, {R(1)}, {R(1)}), ValidationError);
   // x - y = 0 twice over: a whole segment of solutions. Nothing may be claimed unique.
   const auto sq = detail::bern_product(line, line);
-  const auto s = solve_system<R>({line, sq}, {R(0), R(0)}, {R(1), R(1)}, SolveOptions{10, 3000, 60, true});
+  const auto s = solve_system<R>({line, sq}, {R(0), R(0)}, {R(1), R(1)}, SolveOptions{10, 3000, 60, true, {}});
   CHECK_FALSE(s.complete());
   CHECK_FALSE(s.undecided.empty());
   for (const auto& r : s.roots) CHECK_FALSE(r.unique);

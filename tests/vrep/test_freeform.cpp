@@ -117,6 +117,19 @@ TEST_CASE("vrep freeform: a box cut by the five-cell cylinder: pi / 12 enclosed,
   CHECK(r.components == 1);
 }
 
+TEST_CASE("vrep freeform: a rational cell (a cylinder sector) cut by a slab: a third of its volume, enclosed") {
+  const auto V = cylinder_cells<R>(R(1), R(1))[1];
+  REQUIRE(V.is_rational());
+  const auto slab = freeform_solid<R>("slab", {box({R(-2), R(-2), R(1, 3)}, {R(2), R(2), R(2, 3)})});
+  const auto r = cell(V, {{&slab, true}}, 1024);
+  const auto whole = volume_enclosure(V, 4096);
+  // The sector is extruded along z linearly, so the slab holds exactly a third of it.
+  CHECK(r.cls.kind == CellClass<R>::cut);
+  CHECK(r.volume.lower <= whole.upper / R(3));
+  CHECK(whole.lower / R(3) <= r.volume.upper);
+  CHECK(r.components == 1);
+}
+
 TEST_CASE("vrep freeform: the teapot's handle meets its body in two certified components, the volumes add up (Figure 14)") {
   const auto T = teapot_solids();
   const auto B = freeform_solid<R>("body", {T.body}), H = freeform_solid<R>("handle", {T.handle}),

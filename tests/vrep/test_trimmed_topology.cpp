@@ -1,0 +1,119 @@
+// The boundary structure of trimmed cells (issue 18, the topology of trimmed cells in part): exact
+// V-points and V-curves on the trivariate's edges, certified lower bounds on the half-V-surfaces,
+// on cells whose true boundary is known (a box cut by a plane, a quarter cylinder slice, a bar with a
+// slab removed).
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/trimmed.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+BSpline<R> box(std::vector<R> lo, std::vector<R> hi) { return box_cells<R>(lo, hi).front(); }
+
+struct Counts {
+  std::size_t edge_pieces = 0, edge_points = 0, surfaces = 0, absent = 0, collapsed = 0;
+};
+template <class T>
+Counts counts(const TrimmedTopology<T>& t) {
+  Counts c;
+  for (const auto& e : t.edges) {
+    c.edge_pieces += e.pieces;
+    c.edge_points += e.points;
+  }
+  for (const auto& s : t.surfaces) {
+    c.surfaces += s.at_least;
+    c.absent += s.absent;
+    c.collapsed += s.collapsed;
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("vrep trimmed topology: a box cut by a plane has the boundary of the box [1/3, 2] x [0, 2]^2") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto trim = box_region<R>({R(1, 3), R(-1), R(-1)}, {R(3), R(3), R(3)});
+  const auto t = trimmed_topology(V, trim, 512);
+  CHECK(t.corners == 4);  // the corners at x = 2
+  const auto c = counts(t);
+  CHECK(c.edge_pieces == 8);  // four edges along x cut at x = 1/3, four whole at x = 2
+  CHECK(c.edge_points == 4);
+  // Each cut along x is exactly at u = 1/6 (x = 2u = 1/3).
+  for (const auto& e : t.edges)
+    if (e.along == 0) {
+      REQUIRE(e.cuts.size() == 1);
+      CHECK(e.cuts[0].first == R(1, 6));
+      CHECK(e.cuts[0].second == R(1, 6));
+    }
+  CHECK(c.surfaces == 6);  // five faces of V and the plane x = 1/3
+  CHECK(c.absent == 1 + 5);  // the face x = 0, and the five planes of the region that do not bound it
+  CHECK(c.collapsed == 0);
+  for (const auto& s : t.surfaces) CHECK(s.at_least == s.cover);
+}
+
+TEST_CASE("vrep trimmed topology: a box slice cut by a cylinder is a quarter cylinder slice (5 surfaces, 4 edge V-points)") {
+  const auto V = box({R(0), R(0), R(1, 3)}, {R(2), R(2), R(2, 3)});
+  const auto t = trimmed_topology(V, cylinder_region<R>(R(1), R(1)), 2048);
+  CHECK(t.corners == 2);  // (0, 0, 1/3) and (0, 0, 2/3)
+  const auto c = counts(t);
+  CHECK(c.edge_points == 4);   // x = 1 on the two edges along x at y = 0, y = 1 on the two along y at x = 0
+  CHECK(c.edge_pieces == 5);   // those four and the edge along z at x = y = 0
+  CHECK(c.surfaces == 5);      // faces x = 0, y = 0, z = 1/3, z = 2/3 and the cylinder's side
+  std::size_t side = 0;
+  for (const auto& s : t.surfaces)
+    if (s.leaf >= 0 && s.at_least > 0) ++side;
+  CHECK(side == 1);
+  for (const auto& e : t.edges)
+    for (const auto& cut : e.cuts) {
+      CHECK(cut.first == R(1, 2));  // x = 2u = 1 (exact rational root)
+      CHECK(cut.second == R(1, 2));
+    }
+}
+
+TEST_CASE("vrep trimmed topology: a bar with a slab removed: two pieces per face and per edge, certified") {
+  const auto V = box({R(0), R(0), R(0)}, {R(4), R(1), R(1)});
+  const auto trim = region_not(box_region<R>({R(4, 3), R(-1), R(-1)}, {R(7, 3), R(2), R(2)}));
+  const auto t = trimmed_topology(V, trim, 2048);
+  CHECK(t.corners == 8);
+  std::size_t split_faces = 0, planes = 0;
+  for (const auto& s : t.surfaces) {
+    if (s.dir >= 0 && s.dir != 0) {
+      CHECK(s.at_least == 2);
+      ++split_faces;
+    }
+    if (s.leaf >= 0 && s.at_least == 1) ++planes;
+  }
+  CHECK(split_faces == 4);
+  CHECK(planes == 2);  // x = 4/3 and x = 7/3
+  for (const auto& e : t.edges)
+    if (e.along == 0) {
+      CHECK(e.pieces == 2);
+      CHECK(e.points == 2);
+    } else {
+      CHECK(e.pieces == 1);
+      CHECK(e.points == 0);
+    }
+}
+
+TEST_CASE("vrep trimmed topology: edges on a trimming surface, collapsed edges and faces are said so, bad input refused") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto t = trimmed_topology(V, box_region<R>({R(0), R(-1), R(-1)}, {R(3), R(3), R(3)}), 256);
+  std::size_t on = 0;
+  for (const auto& e : t.edges) on += e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
+  CHECK(on == 4);  // the four edges of the face x = 0 lie on the plane x = 0
+  // A singular cylinder (one trivariate, an axis collapsed): its collapsed face carries no surface.
+  const auto S = singular_cylinder<R>(R(1), R(1));
+  const auto ts = trimmed_topology(S, box_region<R>({R(-2), R(-2), R(-1)}, {R(2), R(2), R(1, 2)}), 512);
+  std::size_t collapsed = 0;
+  for (const auto& s : ts.surfaces) collapsed += s.collapsed;
+  CHECK(collapsed >= 1);
+  CHECK_THROWS_AS(trimmed_topology(V, box_region<R>({R(0), R(0), R(0)}, {R(1), R(1), R(1)}), 4), ValidationError);
+  auto open = V;
+  open.knots[0] = {R(-1), R(0), R(1), R(2)};
+  CHECK_THROWS_AS(trimmed_topology(open, box_region<R>({R(0), R(0), R(0)}, {R(1), R(1), R(1)}), 64), ValidationError);
+}

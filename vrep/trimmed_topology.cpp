@@ -1,0 +1,450 @@
+// The boundary structure of a trimmed cell (vrep/trimmed.hpp: trimmed_topology), instantiated for
+// Rational and double.
+#include <algorithm>
+#include <deque>
+#include <functional>
+
+#include "solve/solver.hpp"
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "vrep/box_components.hpp"
+#include "vrep/trimmed.hpp"
+#include "vrep/trimmed_impl.hpp"
+
+namespace splinex {
+
+namespace {
+
+using detail::Bern;
+using namespace vrep_detail;
+
+/// Strict truth of G >= 0 on a box: every coefficient > 0 (in), every one < 0 (out), else mixed.
+template <class T>
+Truth strict_truth(const Bern<T>& G) {
+  bool pos = true, neg = true;
+  for (const auto& x : G.c) {
+    pos = pos && T(0) < x;
+    neg = neg && x < T(0);
+  }
+  return pos ? Truth::in : neg ? Truth::out : Truth::mixed;
+}
+
+template <class T>
+bool all_zero(const Bern<T>& G) {
+  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
+}
+
+/// The formula's truth with leaf k forced to `forced`.
+template <class T>
+Truth forced_truth(const Region<T>& R, std::vector<Truth> leaf, std::size_t k, Truth forced) {
+  leaf[k] = forced;
+  std::size_t i = 0;
+  return combine(R, leaf, i);
+}
+
+const char* kDirName[3] = {"u", "v", "w"};
+
+}  // namespace
+
+template <class T>
+TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
+  require_jacobian_input(V, limits);
+  if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
+  for (int d = 0; d < 3; ++d)
+    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
+      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
+                            "clamp the trivariate first");
+  if (V.is_rational())
+    for (const auto& w : V.weights)
+      if (!(T(0) < w)) throw DomainError("trivariate.weights", "has a weight that is not positive", "give positive weights");
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(trim, leaves);
+  const std::size_t nl = leaves.size();
+  // Limits before the work, as run_trim checks them.
+  std::size_t per_piece = 0;
+  for (const auto* g : leaves) {
+    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d) n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
+    per_piece += n;
+  }
+  checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
+  const BezierForm<T> F = bezier_form(V, limits);
+  struct Piece {
+    std::vector<Bern<T>> G;
+    std::array<T, 3> lo, hi;
+  };
+  std::vector<Piece> pieces(F.size());
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    for (const auto* g : leaves) pieces[k].G.push_back(compose_leaf(*g, pc.spline));
+    for (int d = 0; d < 3; ++d) {
+      pieces[k].lo[d] = pc.box[d].first;
+      pieces[k].hi[d] = pc.box[d].second;
+    }
+  }
+  auto domain_at = [&](int d, int s) { return s ? V.domain_hi(d) : V.domain_lo(d); };
+  auto truth_of = [&](const std::vector<Truth>& t) {
+    std::size_t i = 0;
+    return combine(trim, t, i);
+  };
+  TrimmedTopology<T> out;
+
+  // Corners: exact values of every leaf there.
+  for (int c = 0; c < 8; ++c) {
+    for (const auto& p : pieces) {
+      bool here = true;
+      for (int d = 0; d < 3; ++d) here = here && (((c >> d) & 1) ? p.hi[d] == V.domain_hi(d) : p.lo[d] == V.domain_lo(d));
+      if (!here) continue;
+      std::vector<Truth> t;
+      for (const auto& G : p.G) t.push_back(value_truth(corner(G, c & 1, (c >> 1) & 1, c >> 2), T(0)));
+      const Truth r = truth_of(t);
+      if (r == Truth::in) ++out.corners;
+      else if (r == Truth::mixed) ++out.corners_on_trimming;
+      break;
+    }
+  }
+
+  // Edges: exact cuts at the leaves' roots along each.
+  SolveOptions so;
+  so.recognize_rationals = true;
+  for (int along = 0; along < 3; ++along)
+    for (int s1 = 0; s1 < 2; ++s1)
+      for (int s2 = 0; s2 < 2; ++s2) {
+        typename TrimmedTopology<T>::Edge e;
+        e.along = along;
+        const int a = along == 0 ? 1 : 0, b = along == 2 ? 1 : 2;  // the fixed directions, a < b
+        e.sides[a] = s1;
+        e.sides[b] = s2;
+        const BSpline<T> C = edge_curve(V, along, e.sides);
+        bool point = true;
+        for (std::size_t i = 1; i < C.count(0) && point; ++i)
+          for (int k = 0; k < 3; ++k) point = point && C.points[i * C.q + k] == C.points[k];
+        if (point) {
+          e.status = TrimmedTopology<T>::Edge::collapsed;
+          out.edges.push_back(e);
+          continue;
+        }
+        // Per piece on the edge: the leaves as univariate polynomials along it.
+        struct Segment {
+          T lo, hi;
+          std::vector<Bern<T>> g;
+        };
+        std::vector<Segment> segs;
+        struct Event {
+          T lo, hi;
+        };
+        std::vector<Event> events;
+        for (const auto& p : pieces) {
+          if (!((s1 ? p.hi[a] : p.lo[a]) == domain_at(a, s1)) || !((s2 ? p.hi[b] : p.lo[b]) == domain_at(b, s2))) continue;
+          Segment sg{p.lo[along], p.hi[along], {}};
+          for (const auto& G : p.G) sg.g.push_back(bern_face(bern_face(G, b, s2), a, s1));  // b > a: remove b first
+          for (const auto& g : sg.g) {
+            if (all_zero(g)) {
+              e.status = TrimmedTopology<T>::Edge::on_trimming_surface;
+              continue;
+            }
+            const SolveResult<T> r = solve_system(std::vector<Bern<T>>{g}, {sg.lo}, {sg.hi}, so);
+            if (!r.undecided.empty()) e.status = TrimmedTopology<T>::Edge::undecided;
+            for (const auto& root : r.roots) events.push_back(root.exact ? Event{root.point[0], root.point[0]} : Event{root.lo[0], root.hi[0]});
+          }
+          segs.push_back(std::move(sg));
+        }
+        if (e.status != TrimmedTopology<T>::Edge::curve) {
+          out.edges.push_back(e);
+          continue;
+        }
+        std::sort(events.begin(), events.end(), [](const Event& x, const Event& y) { return x.lo < y.lo; });
+        std::vector<Event> merged;  // overlapping enclosures joined
+        for (const auto& ev : events) {
+          if (!merged.empty() && !(merged.back().hi < ev.lo)) merged.back().hi = std::max(merged.back().hi, ev.hi);
+          else merged.push_back(ev);
+        }
+        // The truth between consecutive events, at an exact point there.
+        auto truth_at = [&](const T& t) {
+          for (const auto& sg : segs) {
+            if (t < sg.lo || sg.hi < t) continue;
+            const std::vector<T> x{(t - sg.lo) / (sg.hi - sg.lo)};
+            std::vector<Truth> tr;
+            for (const auto& g : sg.g) tr.push_back(value_truth(detail::bern_value(g, x), T(0)));
+            return truth_of(tr);
+          }
+          return Truth::mixed;
+        };
+        // The gaps between the events (an empty one at an end of the edge: a root at the corner).
+        struct Gap {
+          Truth truth;
+          long after;  // the event before it (-1: the edge's start)
+        };
+        std::vector<Gap> gaps;
+        T from = V.domain_lo(along);
+        for (std::size_t i = 0; i <= merged.size(); ++i) {
+          const T to = i < merged.size() ? merged[i].lo : V.domain_hi(along);
+          if (from < to) gaps.push_back({truth_at((from + to) / T(2)), static_cast<long>(i) - 1});
+          if (i < merged.size()) from = merged[i].hi;
+        }
+        // Runs of "in": gaps joined across events that do not change the truth.
+        bool inside = false;
+        for (std::size_t i = 0; i < gaps.size(); ++i) {
+          if (gaps[i].truth == Truth::mixed) {
+            e.status = TrimmedTopology<T>::Edge::undecided;
+            break;
+          }
+          const bool in = gaps[i].truth == Truth::in;
+          if (in && !inside) ++e.pieces;
+          if (i > 0 && in != inside) {
+            ++e.points;
+            const auto& ev = merged[static_cast<std::size_t>(gaps[i].after)];
+            e.cuts.push_back({ev.lo, ev.hi});
+          }
+          inside = in;
+        }
+        if (e.status != TrimmedTopology<T>::Edge::curve) e.pieces = e.points = 0, e.cuts.clear();
+        out.edges.push_back(e);
+      }
+
+  // Faces: 2D subdivision with the faces' coefficients.
+  const std::size_t face_budget = std::max<std::size_t>(8, max_boxes / 8);
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) {
+      typename TrimmedTopology<T>::Surface sf;
+      sf.what = std::string("face ") + kDirName[d] + " = " + (s ? "end" : "start");
+      sf.dir = d;
+      sf.side = s;
+      const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
+      const BSpline<T> Fc = face(V, d, s);
+      if (collapsed(Fc, 0) || collapsed(Fc, 1)) {
+        sf.collapsed = true;
+        out.surfaces.push_back(sf);
+        continue;
+      }
+      struct Box2 {
+        std::vector<Bern<T>> G;
+        std::array<T, 2> lo, hi;
+        Truth truth;
+      };
+      auto eval2 = [&](Box2& x) {
+        std::vector<Truth> t;
+        for (const auto& G : x.G) t.push_back(coefficient_truth(G, T(0)));
+        x.truth = truth_of(t);
+      };
+      std::deque<Box2> todo;
+      std::vector<Box2> done;
+      for (const auto& p : pieces) {
+        if (!((s ? p.hi[d] : p.lo[d]) == domain_at(d, s))) continue;
+        Box2 x;
+        for (const auto& G : p.G) x.G.push_back(bern_face(G, d, s));
+        x.lo = {p.lo[a], p.lo[b]};
+        x.hi = {p.hi[a], p.hi[b]};
+        eval2(x);
+        if (x.truth == Truth::mixed) todo.push_back(std::move(x));
+        else done.push_back(std::move(x));
+      }
+      while (!todo.empty() && todo.size() + done.size() < face_budget) {
+        Box2 x = std::move(todo.front());
+        todo.pop_front();
+        const int dir = (x.hi[0] - x.lo[0]) < (x.hi[1] - x.lo[1]) ? 1 : 0;
+        Box2 c[2];
+        for (auto& h : c) {
+          h.lo = x.lo;
+          h.hi = x.hi;
+          h.G.resize(x.G.size());
+        }
+        for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(x.G[l], dir);
+        const T mid = (x.lo[dir] + x.hi[dir]) / T(2);
+        c[0].hi[dir] = mid;
+        c[1].lo[dir] = mid;
+        for (auto& h : c) {
+          eval2(h);
+          if (h.truth == Truth::mixed) todo.push_back(std::move(h));
+          else done.push_back(std::move(h));
+        }
+      }
+      for (auto& x : todo) done.push_back(std::move(x));
+      std::vector<std::array<T, 2>> lo, hi;
+      std::vector<std::size_t> cover;
+      for (std::size_t i = 0; i < done.size(); ++i) {
+        lo.push_back(done[i].lo);
+        hi.push_back(done[i].hi);
+        if (done[i].truth != Truth::out) cover.push_back(i);
+      }
+      UnionFind uf(done.size());
+      join_touching(lo, hi, cover, uf);
+      // The face's own identifications: an edge collapsed to a point or equal to another edge of
+      // the face joins every cover box meeting it (conservative).
+      {
+        std::vector<std::pair<int, int>> edge_ids;  // (face direction 0/1, side)
+        std::vector<BSpline<T>> curves;
+        for (int fd = 0; fd < 2; ++fd)
+          for (int fs = 0; fs < 2; ++fs) {
+            std::array<int, 3> sides{};
+            sides[d] = s;
+            const int other = fd == 0 ? b : a;  // the edge fixes face direction fd, runs along the other
+            const int fixed = fd == 0 ? a : b;
+            sides[fixed] = fs;
+            curves.push_back(edge_curve(V, other, sides));
+            edge_ids.push_back({fd, fs});
+          }
+        auto touching = [&](int fd, int fs) {
+          std::vector<std::size_t> t;
+          const T at = domain_at(fd == 0 ? a : b, fs);
+          for (std::size_t i : cover)
+            if ((fs ? hi[i][fd] : lo[i][fd]) == at) t.push_back(i);
+          return t;
+        };
+        auto join_all = [&](std::vector<std::size_t> t) {
+          for (std::size_t i = 1; i < t.size(); ++i) uf.join(t[0], t[i]);
+        };
+        for (std::size_t i = 0; i < curves.size(); ++i) {
+          bool point = true;
+          for (std::size_t j = 1; j < curves[i].count(0) && point; ++j)
+            for (int k = 0; k < 3; ++k) point = point && curves[i].points[j * curves[i].q + k] == curves[i].points[k];
+          auto t = touching(edge_ids[i].first, edge_ids[i].second);
+          if (point) join_all(t);
+          for (std::size_t j = i + 1; j < curves.size(); ++j)
+            if (same_curve(curves[i], curves[j], T(0), true, limits)) {
+              auto t2 = touching(edge_ids[j].first, edge_ids[j].second);
+              t.insert(t.end(), t2.begin(), t2.end());
+              join_all(t);
+            }
+        }
+      }
+      std::vector<long> comp(done.size(), -1);
+      std::vector<char> has_in;
+      for (std::size_t i : cover) {
+        const std::size_t r = uf.find(i);
+        if (comp[r] < 0) {
+          comp[r] = static_cast<long>(has_in.size());
+          has_in.push_back(0);
+        }
+        if (done[i].truth == Truth::in) has_in[static_cast<std::size_t>(comp[r])] = 1;
+      }
+      sf.boxes = done.size();
+      sf.cover_boxes = cover.size();
+      sf.cover = has_in.size();
+      sf.at_least = static_cast<std::size_t>(std::count(has_in.begin(), has_in.end(), 1));
+      sf.absent = cover.empty();
+      out.surfaces.push_back(sf);
+    }
+
+  // Trimming surfaces: 3D subdivision of the boxes where some leaf may bound the cell.
+  struct Box3 {
+    std::vector<Bern<T>> G;
+    std::array<T, 3> lo, hi;
+    std::vector<Truth> leaf;  // coefficient truths
+  };
+  auto bounds_here = [&](const Box3& x, std::size_t k) {
+    if (x.leaf[k] != Truth::mixed) return false;
+    const Truth i = forced_truth(trim, x.leaf, k, Truth::in), o = forced_truth(trim, x.leaf, k, Truth::out);
+    return !(i == o && i != Truth::mixed);
+  };
+  auto eval3 = [&](Box3& x) {
+    x.leaf.clear();
+    for (const auto& G : x.G) x.leaf.push_back(coefficient_truth(G, T(0)));
+    for (std::size_t k = 0; k < nl; ++k)
+      if (bounds_here(x, k)) return true;
+    return false;
+  };
+  std::deque<Box3> todo3;
+  std::vector<Box3> done3;
+  if (nl > 0)
+    for (const auto& p : pieces) {
+      Box3 x{p.G, p.lo, p.hi, {}};
+      if (eval3(x)) todo3.push_back(std::move(x));
+      else done3.push_back(std::move(x));
+    }
+  while (!todo3.empty() && todo3.size() + done3.size() < max_boxes) {
+    Box3 x = std::move(todo3.front());
+    todo3.pop_front();
+    int dir = 0;
+    for (int d = 1; d < 3; ++d)
+      if ((x.hi[dir] - x.lo[dir]) < (x.hi[d] - x.lo[d])) dir = d;
+    Box3 c[2];
+    for (auto& h : c) {
+      h.lo = x.lo;
+      h.hi = x.hi;
+      h.G.resize(x.G.size());
+    }
+    for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(x.G[l], dir);
+    const T mid = (x.lo[dir] + x.hi[dir]) / T(2);
+    c[0].hi[dir] = mid;
+    c[1].lo[dir] = mid;
+    for (auto& h : c) {
+      if (eval3(h)) todo3.push_back(std::move(h));
+      else done3.push_back(std::move(h));
+    }
+  }
+  for (auto& x : todo3) done3.push_back(std::move(x));
+  out.boxes = done3.size();
+  std::vector<std::array<T, 3>> lo3, hi3;
+  for (const auto& x : done3) {
+    lo3.push_back(x.lo);
+    hi3.push_back(x.hi);
+  }
+  for (std::size_t k = 0; k < nl; ++k) {
+    typename TrimmedTopology<T>::Surface sf;
+    sf.leaf = static_cast<int>(k);
+    std::size_t j = 0;
+    std::string label;
+    // The leaf's label: the region's leaves carry theirs.
+    std::function<void(const Region<T>&)> find_label = [&](const Region<T>& R) {
+      if (R.kind == Region<T>::leaf) {
+        if (j++ == k) label = R.label;
+        return;
+      }
+      for (const auto& p : R.parts) find_label(p);
+    };
+    find_label(trim);
+    sf.what = "leaf " + std::to_string(k) + (label.empty() ? "" : " (" + label + ")");
+    std::vector<std::size_t> cover;
+    std::vector<char> witness(done3.size(), 0);
+    for (std::size_t i = 0; i < done3.size(); ++i) {
+      const auto& x = done3[i];
+      if (!bounds_here(x, k)) continue;
+      cover.push_back(i);
+      // A certified point: both strict signs at corners, the others strictly decided, the formula
+      // changing with the leaf.
+      bool pos = false, neg = false;
+      for (int c = 0; c < 8; ++c) {
+        const T& v = corner(x.G[k], c & 1, (c >> 1) & 1, c >> 2);
+        pos |= T(0) < v;
+        neg |= v < T(0);
+      }
+      if (!(pos && neg)) continue;
+      std::vector<Truth> strict;
+      bool decided = true;
+      for (std::size_t l = 0; l < nl; ++l) {
+        strict.push_back(l == k ? Truth::mixed : strict_truth(x.G[l]));
+        decided = decided && (l == k || strict.back() != Truth::mixed);
+      }
+      if (!decided) continue;
+      const Truth i1 = forced_truth(trim, strict, k, Truth::in), o1 = forced_truth(trim, strict, k, Truth::out);
+      witness[i] = i1 != Truth::mixed && o1 != Truth::mixed && i1 != o1;
+    }
+    UnionFind uf(done3.size());
+    join_touching(lo3, hi3, cover, uf);
+    join_identified(V, lo3, hi3, cover, uf, limits);
+    std::vector<long> comp(done3.size(), -1);
+    std::vector<char> has;
+    for (std::size_t i : cover) {
+      const std::size_t r = uf.find(i);
+      if (comp[r] < 0) {
+        comp[r] = static_cast<long>(has.size());
+        has.push_back(0);
+      }
+      if (witness[i]) has[static_cast<std::size_t>(comp[r])] = 1;
+    }
+    sf.boxes = done3.size();
+    sf.cover_boxes = cover.size();
+    sf.cover = has.size();
+    sf.at_least = static_cast<std::size_t>(std::count(has.begin(), has.end(), 1));
+    sf.absent = cover.empty();
+    out.surfaces.push_back(sf);
+  }
+  return out;
+}
+
+template TrimmedTopology<Rational> trimmed_topology(const BSpline<Rational>&, const Region<Rational>&, std::size_t, const Limits&);
+template TrimmedTopology<double> trimmed_topology(const BSpline<double>&, const Region<double>&, std::size_t, const Limits&);
+
+}  // namespace splinex
