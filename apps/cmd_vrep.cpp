@@ -366,6 +366,15 @@ Commands add_vrep(CLI::App& app) {
     o.model = std::move(M);
     return o;
   };
+  struct TopologyCli {
+    std::string file;
+    std::size_t boxes = 1024;
+  };
+  auto tco = std::make_shared<TopologyCli>();
+  auto* topo = v->add_subcommand("topology", "the boundary structure of a trimmed V-model's cells: exact V-curves and V-points on the trivariates' "
+                                             "edges, certified lower bounds on the half-V-surfaces");
+  topo->add_option("file", tco->file, "a trimmed V-model document (the output of vrep boolean with trimmed cells)")->required();
+  topo->add_option("--boxes", tco->boxes, "subdivision boxes per cell (the faces get an eighth each)")->check(CLI::Range(8, 1000000))->capture_default_str();
   struct TeapotCli {
     std::string arith = "exact", svg, vtk;
     std::size_t boxes = 4096;
@@ -438,7 +447,52 @@ Commands add_vrep(CLI::App& app) {
                              ? "kinds, volume enclosures and the lower bounds on components are certified; (body + handle + spout) - cavity"
                              : "double: the same steps in floats, nothing certified; (body + handle + spout) - cavity"}};
   };
-  return {{tp, [tpo, teapot_json](const Context&) {
+  return {{topo, [tco](const Context& ctx) {
+             const Json doc = read_json_file(tco->file, ctx.read_limits);
+             if (!doc.is_object() || !doc.contains("type") || doc["type"] != "trimmed_vmodel")
+               throw ValidationError(tco->file, "is not a trimmed V-model document (type \"trimmed_vmodel\")",
+                                     "give the output of vrep boolean with trimmed cells; a V-model's own topology is in vrep info");
+             const auto M = trimmed_from_json(doc, ctx.limits, tco->file);
+             Json cells = Json::array();
+             const char* status[] = {"curve", "collapsed", "on_trimming_surface", "undecided"};
+             for (std::size_t k = 0; k < M.cells.size(); ++k) {
+               const auto t = trimmed_topology(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, tco->boxes, ctx.limits);
+               Json edges = Json::array(), surfaces = Json::array();
+               std::size_t pieces = 0, points = 0, faces = 0, trims = 0;
+               for (const auto& e : t.edges) {
+                 Json cuts = Json::array();
+                 for (const auto& [lo, hi] : e.cuts) {
+                   Json c;
+                   put_enclosure(c, "exact", lo, hi, false);
+                   cuts.push_back(c);
+                 }
+                 edges.push_back({{"along", e.along}, {"sides", e.sides}, {"status", status[e.status]}, {"v_curves", e.pieces}, {"v_points", e.points}, {"cuts", cuts}});
+                 pieces += e.pieces;
+                 points += e.points;
+               }
+               for (const auto& sf : t.surfaces) {
+                 surfaces.push_back({{"what", sf.what}, {"collapsed", sf.collapsed}, {"absent", sf.absent}, {"at_least", sf.at_least}, {"cover_components", sf.cover}});
+                 (sf.leaf < 0 ? faces : trims) += sf.at_least;
+               }
+               cells.push_back({{"cell", k},
+                                {"name", M.cells[k].name},
+                                {"corners", t.corners},
+                                {"corners_on_trimming_surface", t.corners_on_trimming},
+                                {"edge_v_curves", pieces},
+                                {"edge_v_points", points},
+                                {"face_half_v_surfaces_at_least", faces},
+                                {"trimming_half_v_surfaces_at_least", trims},
+                                {"edges", edges},
+                                {"surfaces", surfaces}});
+             }
+             std::cout << Json{{"cells", cells},
+                               {"note", "exact: corners, edge V-curves and V-points (certified roots); lower bounds (certified): half-V-surfaces; "
+                                        "not built: V-curves on faces and between trimming surfaces, V-points off the edges"}}
+                              .dump()
+                       << "\n";
+             return 0;
+           }},
+          {tp, [tpo, teapot_json](const Context&) {
              auto progress = [](const std::string& line) { std::cerr << "[vrep teapot] " << line << "\n"; };
              if (tpo->arith == "double") {
                if (!tpo->svg.empty() || !tpo->vtk.empty())
