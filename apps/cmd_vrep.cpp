@@ -474,6 +474,13 @@ Commands add_vrep(CLI::App& app) {
                  surfaces.push_back({{"what", sf.what}, {"collapsed", sf.collapsed}, {"absent", sf.absent}, {"at_least", sf.at_least}, {"cover_components", sf.cover}});
                  (sf.leaf < 0 ? faces : trims) += sf.at_least;
                }
+               Json face_curves = Json::array();
+               std::size_t curves = 0;
+               for (const auto& fc : t.face_curves) {
+                 if (fc.absent) continue;
+                 face_curves.push_back({{"face", {fc.dir, fc.side}}, {"leaf", fc.leaf}, {"at_least", fc.at_least}, {"cover_components", fc.cover}});
+                 curves += fc.at_least;
+               }
                cells.push_back({{"cell", k},
                                 {"name", M.cells[k].name},
                                 {"corners", t.corners},
@@ -483,11 +490,14 @@ Commands add_vrep(CLI::App& app) {
                                 {"face_half_v_surfaces_at_least", faces},
                                 {"trimming_half_v_surfaces_at_least", trims},
                                 {"edges", edges},
-                                {"surfaces", surfaces}});
+                                {"surfaces", surfaces},
+                                {"face_curves", face_curves},
+                                {"trimming_curves_on_faces_at_least", curves}});
              }
              std::cout << Json{{"cells", cells},
-                               {"note", "exact: corners, edge V-curves and V-points (certified roots); lower bounds (certified): half-V-surfaces; "
-                                        "not built: V-curves on faces and between trimming surfaces, V-points off the edges"}}
+                               {"note", "exact: corners, edge V-curves and V-points (certified roots); lower bounds (certified): half-V-surfaces and the "
+                                        "trimming surfaces' boundary curves on the faces (face_curves, present ones listed); not built: V-curves "
+                                        "between two trimming surfaces, V-points off the edges"}}
                               .dump()
                        << "\n";
              return 0;

@@ -146,8 +146,9 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   md << "\n**Their trimmed cells' boundary structure** (`trimmed_topology`, 1024 boxes per cell; exact: corners of the trivariate in the "
         "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
         "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
-        "in brackets, not certified; V-curves on faces and between trimming surfaces, and V-points off the edges, are not built):\n\n"
-        "| model | cell (category) | corners | edge V-curves | edge V-points | face half-V-surfaces >= | trimming half-V-surfaces >= | s |\n|---|---|---|---|---|---|---|---|\n";
+        "in brackets, not certified; and the trimming surfaces' boundary curves on the faces, certified lower bounds; V-curves between two "
+        "trimming surfaces and V-points off the edges are not built):\n\n"
+        "| model | cell (category) | corners | edge V-curves | edge V-points | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : cases)
     for (std::size_t k = 0; k < c.model.cells.size(); ++k) {
       const auto& x = c.model.cells[k];
@@ -160,9 +161,12 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         odd += e.status == TrimmedTopology<R>::Edge::undecided || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
       }
       for (const auto& sf : t.surfaces) (sf.leaf < 0 ? faces : trims) += sf.at_least, (sf.leaf < 0 ? face_cover : trim_cover) += sf.cover;
+      std::size_t curves = 0, curve_cover = 0;
+      for (const auto& fc : t.face_curves) curves += fc.at_least, curve_cover += fc.cover;
       md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
          << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << faces << " ("
-         << face_cover << ") | " << trims << " (" << trim_cover << ") | " << std::setprecision(3) << seconds_since(t0) << " |\n";
+         << face_cover << ") | " << trims << " (" << trim_cover << ") | " << curves << " (" << curve_cover << ") | " << std::setprecision(3)
+         << seconds_since(t0) << " |\n";
     }
   md << "\nThe second model is built like the paper's Figure 15 (one union and two subtractions of non-singular "
         "primitives, 7 V-cells), but the paper gives no dimensions: plate [-2,2]^2 x [0,1], post r 1, h 3, holes r 1/4 at "

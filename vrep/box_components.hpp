@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "spline/bspline.hpp"
@@ -27,18 +28,27 @@ struct UnionFind {
   void join(std::size_t a, std::size_t b) { p[find(a)] = find(b); }
 };
 
-/// Joins the closed boxes among `ids` (lo, hi in N parameters) that have a common point.
+/// The pairs of closed boxes among `ids` (lo, hi in N parameters) that have a common point.
 template <class T, std::size_t N>
-void join_touching(const std::vector<std::array<T, N>>& lo, const std::vector<std::array<T, N>>& hi, std::vector<std::size_t> ids,
-                   UnionFind& uf) {
+std::vector<std::pair<std::size_t, std::size_t>> touching_pairs(const std::vector<std::array<T, N>>& lo, const std::vector<std::array<T, N>>& hi,
+                                                                std::vector<std::size_t> ids) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
   std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) { return lo[a][0] < lo[b][0]; });
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size() && !(hi[ids[i]][0] < lo[ids[j]][0]); ++j) {
       const std::size_t a = ids[i], b = ids[j];
       bool meet = true;
       for (std::size_t d = 1; d < N && meet; ++d) meet = !(hi[a][d] < lo[b][d] || hi[b][d] < lo[a][d]);
-      if (meet) uf.join(a, b);
+      if (meet) out.push_back({a, b});
     }
+  return out;
+}
+
+/// Joins the closed boxes among `ids` that have a common point.
+template <class T, std::size_t N>
+void join_touching(const std::vector<std::array<T, N>>& lo, const std::vector<std::array<T, N>>& hi, std::vector<std::size_t> ids,
+                   UnionFind& uf) {
+  for (const auto& [a, b] : touching_pairs(lo, hi, std::move(ids))) uf.join(a, b);
 }
 
 /// A surface collapses along its direction `a` (0 or 1) when every line of its net along a holds

@@ -28,8 +28,10 @@
 // b's trivariate, which has no implicit form for a curved cell). The result's region is the Boolean
 // of the input regions, so results feed further Booleans (Figure 15: one union, two subtractions).
 //
-// What is not built: the V-surfaces, V-curves and V-points of trimmed cells (the level sets' own
-// topology); the result carries cells, their trims and regions, and the certified statements above.
+// The boundary structure of a trimmed cell (trimmed_topology, below): exact V-points and V-curves on
+// the trivariate's edges, certified lower bounds on its half-V-surfaces and on the trimming
+// surfaces' boundary curves on its faces. What is not built: exact counts of those, V-curves
+// between two trimming surfaces, V-points off the edges, and the gluing of trimmed cells.
 //
 // The volume of a trimmed cell is a certified enclosure: in-boxes contribute the enclosure of their
 // integral of |det J| (exact for polynomial cells), mixed boxes [0, their upper bound], out-boxes 0.
@@ -212,9 +214,12 @@ namespace splinex {
 ///     a box decided in; a trimming surface: a box where the leaf's corner values have both strict
 ///     signs, every other leaf's coefficients have one strict sign, and the formula changes with
 ///     the leaf), with V's own identifications joined (vrep/box_components.hpp). The cover's
-///     component count is shown beside it, not certified. Collapsed faces carry no surface.
-/// What is not built: V-curves on the faces and between trimming surfaces, V-points off the
-/// edges, and counts above the certified lower bounds.
+///     component count is shown beside it, not certified. Collapsed faces carry no surface;
+///   - face curves: per face and leaf, the leaf's zero set where it bounds the face's part (the
+///     trimming surface's boundary curve on that face): proved absent, or a lower bound on its
+///     pieces as above (2D boxes of the face's subdivision).
+/// What is not built: V-curves between two trimming surfaces, V-points off the edges, and counts
+/// above the certified lower bounds.
 template <class T>
 struct TrimmedTopology {
   struct Edge {
@@ -236,8 +241,14 @@ struct TrimmedTopology {
     std::size_t boxes = 0, cover_boxes = 0;
   };
   std::size_t corners = 0, corners_on_trimming = 0;  // in the cell; on a trimming surface (not counted)
+  struct FaceCurve {
+    int dir = 0, side = 0, leaf = 0;  // face (dir, side) of V's domain, leaf of the trim
+    bool absent = false;
+    std::size_t at_least = 0, cover = 0;
+  };
   std::vector<Edge> edges;
   std::vector<Surface> surfaces;
+  std::vector<FaceCurve> face_curves;  // per face (collapsed faces have none), per leaf
   std::size_t boxes = 0;  // 3D subdivision boxes of the trimming surfaces
 };
 

@@ -44,6 +44,94 @@ Truth forced_truth(const Region<T>& R, std::vector<Truth> leaf, std::size_t k, T
 
 const char* kDirName[3] = {"u", "v", "w"};
 
+/// The values at the corners of a tensor Bernstein polynomial's box (its corner coefficients).
+template <class T>
+std::vector<T> corner_values(const Bern<T>& b) {
+  const std::size_t n = b.deg.size();
+  std::vector<T> out;
+  for (std::size_t c = 0; c < (std::size_t(1) << n); ++c) {
+    std::size_t i = 0;
+    for (std::size_t l = 0; l < n; ++l)
+      if ((c >> l) & 1) i += static_cast<std::size_t>(b.deg[l]) * detail::tensor_stride(b.deg, static_cast<int>(l));
+    out.push_back(b.c[i]);
+  }
+  return out;
+}
+
+/// Leaf k may bound the cell in a box: it may vanish there (its coefficients are not all of one
+/// strict sign: a zero set on the box's boundary counts, e.g. on a split plane) and the formula, with
+/// the other leaves' coefficient truths, does not come out the same decided value with k in and out.
+template <class T>
+bool may_bound(const Region<T>& R, const std::vector<Bern<T>>& G, const std::vector<Truth>& leaf, std::size_t k) {
+  if (strict_truth(G[k]) != Truth::mixed) return false;
+  const Truth i = forced_truth(R, leaf, k, Truth::in), o = forced_truth(R, leaf, k, Truth::out);
+  return !(i == o && i != Truth::mixed);
+}
+
+/// Every other leaf strictly signed on the box, and the formula in with leaf k on one side and out
+/// with it on the other.
+template <class T>
+bool others_decide(const Region<T>& R, const std::vector<Bern<T>>& G, std::size_t k) {
+  std::vector<Truth> strict;
+  for (std::size_t l = 0; l < G.size(); ++l) {
+    strict.push_back(l == k ? Truth::mixed : strict_truth(G[l]));
+    if (l != k && strict.back() == Truth::mixed) return false;
+  }
+  const Truth i = forced_truth(R, strict, k, Truth::in), o = forced_truth(R, strict, k, Truth::out);
+  return i != Truth::mixed && o != Truth::mixed && i != o;
+}
+
+/// The sign pattern of leaf k's corner values: bit 0 some > 0, bit 1 some < 0.
+template <class T>
+int corner_signs(const Bern<T>& g) {
+  int m = 0;
+  for (const auto& v : corner_values(g)) m |= (T(0) < v ? 1 : 0) | (v < T(0) ? 2 : 0);
+  return m;
+}
+
+/// Marks the cover boxes that certainly hold a point of leaf k's bounding piece. On a path from a
+/// corner where the leaf is > 0 to one where it is < 0 it changes sign at some point; inside one box,
+/// or through the common point of two touching boxes, where every other leaf is strictly signed (the
+/// same sign on both: they touch) and the formula changes with the leaf, that point bounds the cell.
+/// It lies in the box (or one of the two) that is in the cover, and two touching cover boxes are in
+/// one component.
+template <class T, std::size_t N>
+std::vector<char> certified_points(const Region<T>& R, const std::vector<std::vector<Bern<T>>>& G, const std::vector<std::array<T, N>>& lo,
+                                   const std::vector<std::array<T, N>>& hi, const std::vector<char>& in_cover, std::size_t k) {
+  const std::size_t n = G.size();
+  std::vector<char> mark(n, 0);
+  std::vector<std::size_t> decided;
+  std::vector<int> signs(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!others_decide(R, G[i], k)) continue;
+    decided.push_back(i);
+    signs[i] = corner_signs(G[i][k]);
+    if (signs[i] == 3 && in_cover[i]) mark[i] = 1;
+  }
+  for (const auto& [a, b] : vrep_detail::touching_pairs(lo, hi, decided))
+    if (((signs[a] & 1) && (signs[b] & 2)) || ((signs[a] & 2) && (signs[b] & 1))) {
+      if (in_cover[a]) mark[a] = 1;
+      if (in_cover[b]) mark[b] = 1;
+    }
+  return mark;
+}
+
+/// Components of `cover` (after `join`) and how many of them hold a box marked in `certified`.
+inline std::pair<std::size_t, std::size_t> count_components(const std::vector<std::size_t>& cover, const std::vector<char>& certified,
+                                                            vrep_detail::UnionFind& uf) {
+  std::vector<long> comp(certified.size(), -1);
+  std::vector<char> has;
+  for (std::size_t i : cover) {
+    const std::size_t r = uf.find(i);
+    if (comp[r] < 0) {
+      comp[r] = static_cast<long>(has.size());
+      has.push_back(0);
+    }
+    if (certified[i]) has[static_cast<std::size_t>(comp[r])] = 1;
+  }
+  return {has.size(), static_cast<std::size_t>(std::count(has.begin(), has.end(), 1))};
+}
+
 }  // namespace
 
 template <class T>
@@ -268,63 +356,88 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         hi.push_back(done[i].hi);
         if (done[i].truth != Truth::out) cover.push_back(i);
       }
-      UnionFind uf(done.size());
-      join_touching(lo, hi, cover, uf);
       // The face's own identifications: an edge collapsed to a point or equal to another edge of
-      // the face joins every cover box meeting it (conservative).
-      {
-        std::vector<std::pair<int, int>> edge_ids;  // (face direction 0/1, side)
-        std::vector<BSpline<T>> curves;
-        for (int fd = 0; fd < 2; ++fd)
-          for (int fs = 0; fs < 2; ++fs) {
-            std::array<int, 3> sides{};
-            sides[d] = s;
-            const int other = fd == 0 ? b : a;  // the edge fixes face direction fd, runs along the other
-            const int fixed = fd == 0 ? a : b;
-            sides[fixed] = fs;
-            curves.push_back(edge_curve(V, other, sides));
-            edge_ids.push_back({fd, fs});
-          }
-        auto touching = [&](int fd, int fs) {
+      // the face joins every box of a cover meeting it (conservative).
+      std::vector<std::pair<int, int>> edge_ids;  // (face direction 0/1, side)
+      std::vector<BSpline<T>> curves;
+      for (int fd = 0; fd < 2; ++fd)
+        for (int fs = 0; fs < 2; ++fs) {
+          std::array<int, 3> sides{};
+          sides[d] = s;
+          const int other = fd == 0 ? b : a;  // the edge fixes face direction fd, runs along the other
+          sides[fd == 0 ? a : b] = fs;
+          curves.push_back(edge_curve(V, other, sides));
+          edge_ids.push_back({fd, fs});
+        }
+      std::vector<std::pair<std::size_t, std::size_t>> same;  // pairs of equal edges
+      std::vector<char> point(curves.size(), 0);
+      for (std::size_t i = 0; i < curves.size(); ++i) {
+        point[i] = 1;
+        for (std::size_t j = 1; j < curves[i].count(0) && point[i]; ++j)
+          for (int k = 0; k < 3; ++k) point[i] = point[i] && curves[i].points[j * curves[i].q + k] == curves[i].points[k];
+        for (std::size_t j = i + 1; j < curves.size(); ++j)
+          if (same_curve(curves[i], curves[j], T(0), true, limits)) same.push_back({i, j});
+      }
+      auto components = [&](const std::vector<std::size_t>& cov, const std::vector<char>& certified) {
+        UnionFind uf(done.size());
+        join_touching(lo, hi, cov, uf);
+        auto touching = [&](std::size_t e) {
           std::vector<std::size_t> t;
+          const int fd = edge_ids[e].first, fs = edge_ids[e].second;
           const T at = domain_at(fd == 0 ? a : b, fs);
-          for (std::size_t i : cover)
+          for (std::size_t i : cov)
             if ((fs ? hi[i][fd] : lo[i][fd]) == at) t.push_back(i);
           return t;
         };
-        auto join_all = [&](std::vector<std::size_t> t) {
+        auto join_all = [&](const std::vector<std::size_t>& t) {
           for (std::size_t i = 1; i < t.size(); ++i) uf.join(t[0], t[i]);
         };
-        for (std::size_t i = 0; i < curves.size(); ++i) {
-          bool point = true;
-          for (std::size_t j = 1; j < curves[i].count(0) && point; ++j)
-            for (int k = 0; k < 3; ++k) point = point && curves[i].points[j * curves[i].q + k] == curves[i].points[k];
-          auto t = touching(edge_ids[i].first, edge_ids[i].second);
-          if (point) join_all(t);
-          for (std::size_t j = i + 1; j < curves.size(); ++j)
-            if (same_curve(curves[i], curves[j], T(0), true, limits)) {
-              auto t2 = touching(edge_ids[j].first, edge_ids[j].second);
-              t.insert(t.end(), t2.begin(), t2.end());
-              join_all(t);
-            }
+        for (std::size_t e = 0; e < curves.size(); ++e)
+          if (point[e]) join_all(touching(e));
+        for (const auto& [i, j] : same) {
+          auto t = touching(i);
+          const auto t2 = touching(j);
+          t.insert(t.end(), t2.begin(), t2.end());
+          join_all(t);
         }
-      }
-      std::vector<long> comp(done.size(), -1);
-      std::vector<char> has_in;
-      for (std::size_t i : cover) {
-        const std::size_t r = uf.find(i);
-        if (comp[r] < 0) {
-          comp[r] = static_cast<long>(has_in.size());
-          has_in.push_back(0);
-        }
-        if (done[i].truth == Truth::in) has_in[static_cast<std::size_t>(comp[r])] = 1;
-      }
+        return count_components(cov, certified, uf);
+      };
+      std::vector<char> in_box(done.size(), 0);
+      for (std::size_t i = 0; i < done.size(); ++i) in_box[i] = done[i].truth == Truth::in;
+      const auto [fc, fl] = components(cover, in_box);
       sf.boxes = done.size();
       sf.cover_boxes = cover.size();
-      sf.cover = has_in.size();
-      sf.at_least = static_cast<std::size_t>(std::count(has_in.begin(), has_in.end(), 1));
+      sf.cover = fc;
+      sf.at_least = fl;
       sf.absent = cover.empty();
       out.surfaces.push_back(sf);
+      // The trimming surfaces' boundary curves on this face: per leaf, where it bounds the face's part.
+      std::vector<std::vector<Bern<T>>> Gs;
+      std::vector<std::vector<Truth>> truths;
+      for (const auto& x : done) {
+        Gs.push_back(x.G);
+        truths.emplace_back();
+        for (const auto& G : x.G) truths.back().push_back(coefficient_truth(G, T(0)));
+      }
+      for (std::size_t k = 0; k < nl; ++k) {
+        typename TrimmedTopology<T>::FaceCurve fcv;
+        fcv.dir = d;
+        fcv.side = s;
+        fcv.leaf = static_cast<int>(k);
+        std::vector<std::size_t> cov;
+        std::vector<char> in_cov(done.size(), 0);
+        for (std::size_t i = 0; i < done.size(); ++i) {
+          if (!may_bound(trim, Gs[i], truths[i], k)) continue;
+          cov.push_back(i);
+          in_cov[i] = 1;
+        }
+        const auto cert = certified_points(trim, Gs, lo, hi, in_cov, k);
+        const auto [cc, cl] = components(cov, cert);
+        fcv.cover = cc;
+        fcv.at_least = cl;
+        fcv.absent = cov.empty();
+        out.face_curves.push_back(fcv);
+      }
     }
 
   // Trimming surfaces: 3D subdivision of the boxes where some leaf may bound the cell.
@@ -333,11 +446,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     std::array<T, 3> lo, hi;
     std::vector<Truth> leaf;  // coefficient truths
   };
-  auto bounds_here = [&](const Box3& x, std::size_t k) {
-    if (x.leaf[k] != Truth::mixed) return false;
-    const Truth i = forced_truth(trim, x.leaf, k, Truth::in), o = forced_truth(trim, x.leaf, k, Truth::out);
-    return !(i == o && i != Truth::mixed);
-  };
+  auto bounds_here = [&](const Box3& x, std::size_t k) { return may_bound(trim, x.G, x.leaf, k); };
   auto eval3 = [&](Box3& x) {
     x.leaf.clear();
     for (const auto& G : x.G) x.leaf.push_back(coefficient_truth(G, T(0)));
@@ -377,9 +486,11 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   for (auto& x : todo3) done3.push_back(std::move(x));
   out.boxes = done3.size();
   std::vector<std::array<T, 3>> lo3, hi3;
+  std::vector<std::vector<Bern<T>>> G3;
   for (const auto& x : done3) {
     lo3.push_back(x.lo);
     hi3.push_back(x.hi);
+    G3.push_back(x.G);
   }
   for (std::size_t k = 0; k < nl; ++k) {
     typename TrimmedTopology<T>::Surface sf;
@@ -397,47 +508,21 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     find_label(trim);
     sf.what = "leaf " + std::to_string(k) + (label.empty() ? "" : " (" + label + ")");
     std::vector<std::size_t> cover;
-    std::vector<char> witness(done3.size(), 0);
-    for (std::size_t i = 0; i < done3.size(); ++i) {
-      const auto& x = done3[i];
-      if (!bounds_here(x, k)) continue;
-      cover.push_back(i);
-      // A certified point: both strict signs at corners, the others strictly decided, the formula
-      // changing with the leaf.
-      bool pos = false, neg = false;
-      for (int c = 0; c < 8; ++c) {
-        const T& v = corner(x.G[k], c & 1, (c >> 1) & 1, c >> 2);
-        pos |= T(0) < v;
-        neg |= v < T(0);
+    std::vector<char> in_cov(done3.size(), 0);
+    for (std::size_t i = 0; i < done3.size(); ++i)
+      if (bounds_here(done3[i], k)) {
+        cover.push_back(i);
+        in_cov[i] = 1;
       }
-      if (!(pos && neg)) continue;
-      std::vector<Truth> strict;
-      bool decided = true;
-      for (std::size_t l = 0; l < nl; ++l) {
-        strict.push_back(l == k ? Truth::mixed : strict_truth(x.G[l]));
-        decided = decided && (l == k || strict.back() != Truth::mixed);
-      }
-      if (!decided) continue;
-      const Truth i1 = forced_truth(trim, strict, k, Truth::in), o1 = forced_truth(trim, strict, k, Truth::out);
-      witness[i] = i1 != Truth::mixed && o1 != Truth::mixed && i1 != o1;
-    }
+    const auto witness = certified_points(trim, G3, lo3, hi3, in_cov, k);
     UnionFind uf(done3.size());
     join_touching(lo3, hi3, cover, uf);
     join_identified(V, lo3, hi3, cover, uf, limits);
-    std::vector<long> comp(done3.size(), -1);
-    std::vector<char> has;
-    for (std::size_t i : cover) {
-      const std::size_t r = uf.find(i);
-      if (comp[r] < 0) {
-        comp[r] = static_cast<long>(has.size());
-        has.push_back(0);
-      }
-      if (witness[i]) has[static_cast<std::size_t>(comp[r])] = 1;
-    }
+    const auto [cc, cl] = count_components(cover, witness, uf);
     sf.boxes = done3.size();
     sf.cover_boxes = cover.size();
-    sf.cover = has.size();
-    sf.at_least = static_cast<std::size_t>(std::count(has.begin(), has.end(), 1));
+    sf.cover = cc;
+    sf.at_least = cl;
     sf.absent = cover.empty();
     out.surfaces.push_back(sf);
   }

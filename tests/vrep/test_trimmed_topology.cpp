@@ -16,7 +16,7 @@ namespace {
 BSpline<R> box(std::vector<R> lo, std::vector<R> hi) { return box_cells<R>(lo, hi).front(); }
 
 struct Counts {
-  std::size_t edge_pieces = 0, edge_points = 0, surfaces = 0, absent = 0, collapsed = 0;
+  std::size_t edge_pieces = 0, edge_points = 0, surfaces = 0, absent = 0, collapsed = 0, face_curves = 0, face_curves_cover = 0;
 };
 template <class T>
 Counts counts(const TrimmedTopology<T>& t) {
@@ -29,6 +29,10 @@ Counts counts(const TrimmedTopology<T>& t) {
     c.surfaces += s.at_least;
     c.absent += s.absent;
     c.collapsed += s.collapsed;
+  }
+  for (const auto& f : t.face_curves) {
+    c.face_curves += f.at_least;
+    c.face_curves_cover += f.cover;
   }
   return c;
 }
@@ -54,6 +58,8 @@ TEST_CASE("vrep trimmed topology: a box cut by a plane has the boundary of the b
   CHECK(c.absent == 1 + 5);  // the face x = 0, and the five planes of the region that do not bound it
   CHECK(c.collapsed == 0);
   for (const auto& s : t.surfaces) CHECK(s.at_least == s.cover);
+  CHECK(c.face_curves == 4);  // the plane's boundary: a segment on each of the faces y = 0, 2 and z = 0, 2
+  CHECK(c.face_curves_cover == 4);
 }
 
 TEST_CASE("vrep trimmed topology: a box slice cut by a cylinder is a quarter cylinder slice (5 surfaces, 4 edge V-points)") {
@@ -68,6 +74,7 @@ TEST_CASE("vrep trimmed topology: a box slice cut by a cylinder is a quarter cyl
   for (const auto& s : t.surfaces)
     if (s.leaf >= 0 && s.at_least > 0) ++side;
   CHECK(side == 1);
+  CHECK(c.face_curves == 4);  // lines on x = 0 and y = 0, quarter circles on z = 1/3 and z = 2/3
   for (const auto& e : t.edges)
     for (const auto& cut : e.cuts) {
       CHECK(cut.first == R(1, 2));  // x = 2u = 1 (exact rational root)
@@ -90,6 +97,7 @@ TEST_CASE("vrep trimmed topology: a bar with a slab removed: two pieces per face
   }
   CHECK(split_faces == 4);
   CHECK(planes == 2);  // x = 4/3 and x = 7/3
+  CHECK(counts(t).face_curves == 8);  // each plane meets the four long faces
   for (const auto& e : t.edges)
     if (e.along == 0) {
       CHECK(e.pieces == 2);
