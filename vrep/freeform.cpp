@@ -7,6 +7,8 @@
 #include <memory>
 #include <numeric>
 #include <queue>
+#include <sstream>
+#include <type_traits>
 
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
@@ -74,6 +76,41 @@ std::pair<H4<T>, H4<T>> split_h(const H4<T>& h, int dir) {
   return out;
 }
 
+/// A cell that folds (det J takes both strict signs) is not a solid whose boundary is its faces:
+/// det J's numerator is evaluated exactly on a 5 x 5 x 5 grid of every Bezier piece (the piece's
+/// corners among them) and two values of opposite strict signs are a certified fold. A fold
+/// between the grid points is not excluded (injectivity is assumed, as papers/002 assumes valid
+/// V-cells); det J = 0 alone (a face collapsed to a curve or a point) is allowed.
+template <class T>
+void require_no_fold(const BSpline<T>& V, const std::string& name, const Limits& limits) {
+  const BezierForm<T> F = bezier_form(V, limits);
+  int seen = 0;  // bit 0: a positive value, bit 1: a negative one
+  std::vector<T> first[2];
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    const Bern<T> N = vrep_detail::jacobian_numerator(pc.spline);
+    for (int i = 0; i < 125; ++i) {
+      const std::vector<T> x{T(i % 5) / T(4), T((i / 5) % 5) / T(4), T(i / 25) / T(4)};
+      const T v = detail::bern_value(N, x);
+      const int sg = T(0) < v ? 1 : v < T(0) ? 2 : 0;
+      if (!sg) continue;
+      if (first[sg - 1].empty())
+        for (int d = 0; d < 3; ++d) first[sg - 1].push_back(pc.box[d].first + x[d] * (pc.box[d].second - pc.box[d].first));
+      seen |= sg;
+    }
+  }
+  if (seen == 3) {
+    auto text = [](const std::vector<T>& p) {
+      std::ostringstream o;
+      o << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+      return o.str();
+    };
+    throw DomainError(name, "folds: det J is positive at " + text(first[0]) + " and negative at " + text(first[1]) +
+                                " (exact values), so its faces are not its boundary",
+                      "give a valid trivariate (det J of one sign)");
+  }
+}
+
 template <class T>
 void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
   try {
@@ -88,6 +125,7 @@ void require_cell(const BSpline<T>& V, const std::string& name, const Limits& li
   if (V.is_rational())
     for (const auto& w : V.weights)
       if (!(T(0) < w)) throw DomainError(name + ".weights", "has a weight that is not positive", "give positive weights");
+  if constexpr (!std::is_floating_point_v<T>) require_no_fold(V, name, limits);  // in double a rounded 0 would fake a fold
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 #include <random>
 
 #include "exact/rational.hpp"
+#include "fixtures/teapot.hpp"
 #include "fixtures/teapot_vmodel.hpp"
+#include "vrep/trivariate.hpp"
 #include "spline/errors.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/freeform.hpp"
@@ -146,6 +148,21 @@ TEST_CASE("vrep freeform: the teapot's handle meets its body in two certified co
   CHECK(meet.volume.lower + rest.volume.lower <= whole.lower);
   CHECK(whole.lower <= meet.volume.upper + rest.volume.upper + poke.volume.upper);
   CHECK(R(0) < meet.volume.lower);
+}
+
+TEST_CASE("vrep freeform: a cell that folds is refused with two exact points of opposite det J (the teapot's rim scaled inward)") {
+  BSpline<R> body;
+  for (const auto& t : teapot_surfaces(read_bpt(data_path("teapot.bpt"))))
+    if (t.name == "body") body = t.surface;
+  auto inner = body;
+  for (std::size_t i = 0; i < inner.size(); ++i)
+    for (int k = 0; k < 2; ++k) inner.points[i * 3 + k] *= R(9, 10);
+  const auto rimmed = ruled(body, inner);
+  CHECK_THROWS_WITH(freeform_solid<R>("rimmed", {rimmed}), Catch::Contains("folds: det J is positive at"));
+  const auto U = freeform_solid<R>("U", {box({R(0), R(0), R(0)}, {R(1), R(1), R(1)})});
+  CHECK_THROWS_AS(freeform_cell<R>(rimmed, {{&U, true}}), DomainError);
+  // The model's body (below the rim) does not fold.
+  CHECK_NOTHROW(freeform_solid<R>("body", {teapot_solids().body}));
 }
 
 TEST_CASE("vrep freeform: bad input is refused with typed errors naming the field") {
