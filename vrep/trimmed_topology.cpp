@@ -44,6 +44,24 @@ Truth forced_truth(const Region<T>& R, std::vector<Truth> leaf, std::size_t k, T
 
 const char* kDirName[3] = {"u", "v", "w"};
 
+/// The halves of a subdivision box (its leaves' polynomials and its parameter range) across its
+/// widest parameter direction.
+template <class Box>
+void halve(const Box& x, Box (&c)[2]) {
+  int dir = 0;
+  for (int d = 1; d < static_cast<int>(x.lo.size()); ++d)
+    if ((x.hi[dir] - x.lo[dir]) < (x.hi[d] - x.lo[d])) dir = d;
+  for (auto& h : c) {
+    h.lo = x.lo;
+    h.hi = x.hi;
+    h.G.resize(x.G.size());
+  }
+  for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = vrep_detail::split_half(x.G[l], dir);
+  const auto mid = (x.lo[dir] + x.hi[dir]) / 2;
+  c[0].hi[dir] = mid;
+  c[1].lo[dir] = mid;
+}
+
 /// The values at the corners of a tensor Bernstein polynomial's box (its corner coefficients).
 template <class T>
 std::vector<T> corner_values(const Bern<T>& b) {
@@ -331,17 +349,8 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       while (!todo.empty() && todo.size() + done.size() < face_budget) {
         Box2 x = std::move(todo.front());
         todo.pop_front();
-        const int dir = (x.hi[0] - x.lo[0]) < (x.hi[1] - x.lo[1]) ? 1 : 0;
         Box2 c[2];
-        for (auto& h : c) {
-          h.lo = x.lo;
-          h.hi = x.hi;
-          h.G.resize(x.G.size());
-        }
-        for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(x.G[l], dir);
-        const T mid = (x.lo[dir] + x.hi[dir]) / T(2);
-        c[0].hi[dir] = mid;
-        c[1].lo[dir] = mid;
+        halve(x, c);
         for (auto& h : c) {
           eval2(h);
           if (h.truth == Truth::mixed) todo.push_back(std::move(h));
@@ -465,19 +474,8 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   while (!todo3.empty() && todo3.size() + done3.size() < max_boxes) {
     Box3 x = std::move(todo3.front());
     todo3.pop_front();
-    int dir = 0;
-    for (int d = 1; d < 3; ++d)
-      if ((x.hi[dir] - x.lo[dir]) < (x.hi[d] - x.lo[d])) dir = d;
     Box3 c[2];
-    for (auto& h : c) {
-      h.lo = x.lo;
-      h.hi = x.hi;
-      h.G.resize(x.G.size());
-    }
-    for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(x.G[l], dir);
-    const T mid = (x.lo[dir] + x.hi[dir]) / T(2);
-    c[0].hi[dir] = mid;
-    c[1].lo[dir] = mid;
+    halve(x, c);
     for (auto& h : c) {
       if (eval3(h)) todo3.push_back(std::move(h));
       else done3.push_back(std::move(h));
