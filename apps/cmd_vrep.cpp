@@ -419,7 +419,16 @@ Commands add_vrep(CLI::App& app) {
       Json v;
       if constexpr (std::is_same_v<T, Rational>) put_enclosure(v, "exact", r.cell.volume.lower, r.cell.volume.upper, true);
       else v = {{"lower", r.cell.volume.lower}, {"upper", r.cell.volume.upper}};
+      std::size_t pieces = 0, points = 0, undecided = 0, collapsed = 0;
+      for (const auto& e : r.edges.edges) {
+        pieces += e.pieces;
+        points += e.points;
+        undecided += e.status == std::decay_t<decltype(e)>::undecided;
+        collapsed += e.status == std::decay_t<decltype(e)>::collapsed;
+      }
       return Json{{"name", r.name},
+                  {"edges", {{"corners", r.edges.corners}, {"corners_undecided", r.edges.corners_undecided}, {"v_curves", pieces}, {"v_points", points},
+                             {"undecided", undecided}, {"collapsed", collapsed}}},
                   {"trivariate", r.trivariate},
                   {"conditions", r.conditions},
                   {"kind", to_string<T>(r.cell.cls.kind)},

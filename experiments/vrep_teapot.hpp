@@ -18,7 +18,8 @@ struct TeapotVModel {
   struct Row {
     std::string name, trivariate, conditions;
     FreeformCell<T> cell;
-    double seconds = 0;
+    FreeformEdges<T> edges;  // the cell's V-curves and V-points on its trivariate's edges
+    double seconds = 0, seconds_edges = 0;
   };
   /// The model's cells: body - handle - spout, handle & body, handle - body - cavity, spout & body,
   /// spout - body - cavity (a cell with k components stands for k V-cells).

@@ -124,4 +124,53 @@ void join_identified(const BSpline<T>& V, const std::vector<std::array<T, 3>>& l
     }
 }
 
+/// An edge of a trimmed cell cut at events (enclosures [lo, hi] of the parameters where a trimming
+/// surface crosses it, possibly overlapping): the runs of the edge [a, b] inside the cell and their
+/// ends strictly inside the edge. `truth_at(t)` is the cell's truth at a parameter between events
+/// (in / out; mixed makes the answer undecided). An empty gap at an end of the edge is a crossing
+/// at the corner, not a V-point of the edge.
+template <class T>
+struct EdgeRuns {
+  bool decided = true;
+  std::size_t pieces = 0, points = 0;
+  std::vector<std::pair<T, T>> cuts;
+};
+template <class T, class TruthAt>
+EdgeRuns<T> edge_runs(std::vector<std::pair<T, T>> events, const T& a, const T& b, TruthAt&& truth_at) {
+  std::sort(events.begin(), events.end());
+  std::vector<std::pair<T, T>> merged;  // overlapping enclosures joined
+  for (const auto& ev : events) {
+    if (!merged.empty() && !(merged.back().second < ev.first)) merged.back().second = std::max(merged.back().second, ev.second);
+    else merged.push_back(ev);
+  }
+  struct Gap {
+    int truth;   // 0 out, 1 mixed, 2 in
+    long after;  // the event before it (-1: the edge's start)
+  };
+  std::vector<Gap> gaps;
+  T from = a;
+  for (std::size_t i = 0; i <= merged.size(); ++i) {
+    const T to = i < merged.size() ? merged[i].first : b;
+    if (from < to) gaps.push_back({truth_at((from + to) / T(2)), static_cast<long>(i) - 1});
+    if (i < merged.size()) from = merged[i].second;
+  }
+  EdgeRuns<T> r;
+  bool inside = false;
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    if (gaps[i].truth == 1) {
+      r.decided = false;
+      break;
+    }
+    const bool in = gaps[i].truth == 2;
+    if (in && !inside) ++r.pieces;
+    if (i > 0 && in != inside) {
+      ++r.points;
+      r.cuts.push_back(merged[static_cast<std::size_t>(gaps[i].after)]);
+    }
+    inside = in;
+  }
+  if (!r.decided) r = EdgeRuns<T>{false, 0, 0, {}};
+  return r;
+}
+
 }  // namespace splinex::vrep_detail

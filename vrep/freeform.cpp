@@ -12,6 +12,7 @@
 
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
 #include "vrep/box_components.hpp"
@@ -235,7 +236,50 @@ Truth classify_point_freeform(const FreeformSolid<T>& S, const std::vector<T>& x
       doubtful = true;
     }
   }
-  return doubtful ? Truth::mixed : Truth::out;
+  if (!doubtful) return Truth::out;
+  // A root exactly on a piece's face at an inner knot plane, with irrational coordinates, stays
+  // undecided for the solver (its box cannot reach across the face). Common case: a symmetry plane
+  // of the data at a patch boundary, where one coordinate vanishes identically on the face. Then
+  // the other two equations on the face decide: a certified root there, away from the solid's
+  // boundary, puts x in the solid.
+  for (const auto& p : S.pieces) {
+    if (!overlap(p.box, at)) continue;
+    for (int d = 0; d < 3; ++d)
+      for (int side = 0; side < 2; ++side) {
+        const T& plane = side ? p.hi[d] : p.lo[d];
+        const auto& cell = S.cells[p.cell];
+        if (plane == cell.domain_lo(d) || plane == cell.domain_hi(d)) continue;  // a face of the cell, not an inner knot plane
+        std::vector<Bern<T>> f, zero;
+        for (int k = 0; k < 3; ++k) {
+          Bern<T> g = detail::bern_face(p.h[k + 1], d, side);
+          const Bern<T> w = detail::bern_face(p.h[0], d, side);
+          for (std::size_t i = 0; i < g.c.size(); ++i) g.c[i] -= x[k] * w.c[i];
+          (std::all_of(g.c.begin(), g.c.end(), [](const T& v) { return v == T(0); }) ? zero : f).push_back(std::move(g));
+        }
+        if (zero.size() != 1) continue;
+        std::vector<T> lo, hi;
+        std::vector<int> dirs;
+        for (int e = 0; e < 3; ++e)
+          if (e != d) {
+            lo.push_back(p.lo[e]);
+            hi.push_back(p.hi[e]);
+            dirs.push_back(e);
+          }
+        const SolveResult<T> r = solve_system(f, lo, hi, options);
+        if (systems) ++*systems;
+        for (const auto& root : r.roots) {
+          if (!(root.unique || root.exact)) continue;
+          bool touches = false;
+          for (int i = 0; i < 2; ++i) {
+            const int e = dirs[static_cast<std::size_t>(i)];
+            const T rl = root.exact ? root.point[i] : root.lo[i], rh = root.exact ? root.point[i] : root.hi[i];
+            if ((p.on_boundary[e][0] && !(p.lo[e] < rl)) || (p.on_boundary[e][1] && !(rh < p.hi[e]))) touches = true;
+          }
+          if (!touches) return Truth::in;
+        }
+      }
+  }
+  return Truth::mixed;
 }
 
 template <class T>
@@ -546,10 +590,113 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
   return out;
 }
 
+template <class T>
+FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
+                                const Limits& limits) {
+  require_cell(V, "trivariate", limits);
+  for (std::size_t j = 0; j < conditions.size(); ++j)
+    if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
+  FreeformEdges<T> out;
+  // The cell's truth at a point: every condition by a point query (Kleene's and).
+  auto truth_at_point = [&](const std::vector<T>& x) {
+    Truth t = Truth::in;
+    for (const auto& c : conditions) {
+      Truth q = classify_point_freeform(*c.solid, x, options.solve, &out.systems);
+      if (!c.inside) q = q == Truth::in ? Truth::out : q == Truth::out ? Truth::in : Truth::mixed;
+      if (q == Truth::out) return Truth::out;
+      if (q == Truth::mixed) t = Truth::mixed;
+    }
+    return t;
+  };
+  auto point_of = [&](const BSpline<T>& C, const T& t) {
+    const auto p = evaluate(C, std::vector<T>{t});
+    return std::vector<T>{p[0], p[1], p[2]};
+  };
+  for (int c = 0; c < 8; ++c) {
+    std::vector<T> u;
+    for (int d = 0; d < 3; ++d) u.push_back((c >> d) & 1 ? V.domain_hi(d) : V.domain_lo(d));
+    const auto p = evaluate(V, u);
+    const Truth t = truth_at_point({p[0], p[1], p[2]});
+    out.corners += t == Truth::in;
+    out.corners_undecided += t == Truth::mixed;
+  }
+  // An edge piece's homogeneous coordinates lifted to (s, t, tau), and a boundary piece's.
+  auto lift = [](Bern<T> b, int dims_before) {
+    std::vector<int> deg(static_cast<std::size_t>(dims_before), 0);
+    deg.insert(deg.end(), b.deg.begin(), b.deg.end());
+    while (deg.size() < 3) deg.push_back(0);
+    b.deg = deg;
+    return b;
+  };
+  for (int along = 0; along < 3; ++along)
+    for (int s1 = 0; s1 < 2; ++s1)
+      for (int s2 = 0; s2 < 2; ++s2) {
+        typename FreeformEdges<T>::Edge e;
+        e.along = along;
+        const int a = along == 0 ? 1 : 0, b = along == 2 ? 1 : 2;
+        e.sides[a] = s1;
+        e.sides[b] = s2;
+        const BSpline<T> C = edge_curve(V, along, e.sides);
+        bool point = true;
+        for (std::size_t i = 1; i < C.count(0) && point; ++i)
+          for (int k = 0; k < 3; ++k) point = point && C.points[i * C.q + k] == C.points[k];
+        if (point) {
+          e.status = FreeformEdges<T>::Edge::collapsed;
+          out.edges.push_back(e);
+          continue;
+        }
+        std::vector<std::pair<T, T>> events;
+        const BezierForm<T> F = bezier_form(C, limits);
+        for (std::size_t k = 0; k < F.size() && e.status == FreeformEdges<T>::Edge::curve; ++k) {
+          const auto pc = F.piece(k);
+          H4<T> h;
+          h[0] = detail::bern_coordinate(pc.spline, pc.spline.q);
+          for (int c = 0; c < 3; ++c) h[c + 1] = detail::bern_coordinate(pc.spline, c);
+          const auto box = bounds_of(h);
+          for (const auto& cond : conditions)
+            for (const auto& P : cond.solid->boundary) {
+              if (!overlap(P.box, box)) continue;
+              std::vector<Bern<T>> f;
+              const Bern<T> WE = lift(h[0], 2), WP = lift(P.h[0], 0);
+              for (int c = 1; c < 4; ++c)
+                f.push_back(detail::bern_sub(detail::bern_product(lift(P.h[c], 0), WE), detail::bern_product(lift(h[c], 2), WP)));
+              // An equation that vanishes identically (the edge and the piece in one coordinate plane):
+              // no crossing if another one has one strict sign, else the solutions need not be isolated.
+              bool zero = false, excluded = false;
+              for (const auto& g : f) {
+                zero = zero || std::all_of(g.c.begin(), g.c.end(), [](const T& x) { return x == T(0); });
+                excluded = excluded || std::all_of(g.c.begin(), g.c.end(), [](const T& x) { return T(0) < x; }) ||
+                           std::all_of(g.c.begin(), g.c.end(), [](const T& x) { return x < T(0); });
+              }
+              if (excluded) continue;
+              if (zero) {
+                e.status = FreeformEdges<T>::Edge::undecided;
+                continue;
+              }
+              const SolveResult<T> r = solve_system(f, {T(0), T(0), pc.box[0].first}, {T(1), T(1), pc.box[0].second}, options.solve);
+              ++out.systems;
+              if (!r.undecided.empty()) e.status = FreeformEdges<T>::Edge::undecided;
+              for (const auto& root : r.roots) events.push_back(root.exact ? std::pair<T, T>{root.point[2], root.point[2]} : std::pair<T, T>{root.lo[2], root.hi[2]});
+            }
+        }
+        if (e.status == FreeformEdges<T>::Edge::curve) {
+          const auto runs = vrep_detail::edge_runs(events, V.domain_lo(along), V.domain_hi(along),
+                                                   [&](const T& t) { return static_cast<int>(truth_at_point(point_of(C, t))); });
+          if (!runs.decided) e.status = FreeformEdges<T>::Edge::undecided;
+          e.pieces = runs.pieces;
+          e.points = runs.points;
+          e.cuts = runs.cuts;
+        }
+        out.edges.push_back(e);
+      }
+  return out;
+}
+
 #define SPLINEX_INSTANTIATE_FREEFORM(T)                                                                                                   \
   template FreeformSolid<T> freeform_solid(std::string, std::vector<BSpline<T>>, const Limits&);                                          \
   template Truth classify_point_freeform(const FreeformSolid<T>&, const std::vector<T>&, const SolveOptions&, std::size_t*);              \
-  template FreeformCell<T> freeform_cell(const BSpline<T>&, const std::vector<FreeformCondition<T>>&, const FreeformOptions&, const Limits&);
+  template FreeformCell<T> freeform_cell(const BSpline<T>&, const std::vector<FreeformCondition<T>>&, const FreeformOptions&, const Limits&); \
+  template FreeformEdges<T> freeform_edges(const BSpline<T>&, const std::vector<FreeformCondition<T>>&, const FreeformOptions&, const Limits&);
 SPLINEX_INSTANTIATE_FREEFORM(Rational)
 SPLINEX_INSTANTIATE_FREEFORM(double)
 

@@ -122,4 +122,30 @@ template <class T>
 FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options = {},
                               const Limits& limits = {});
 
+/// The edges of a freeform-trimmed cell, exactly (the part of the cell's topology on V's edges, as
+/// trimmed_topology gives it for implicit trims): the corners of V's domain inside the cell (every
+/// condition decided by a point query), and per edge of V's domain its V-curves (runs inside the
+/// cell) and V-points (their ends strictly inside the edge). The crossings of an edge with a
+/// solid's boundary are the roots of S_face(s, t) = E(tau), three polynomial equations per pair of
+/// a boundary piece and an edge piece, solved by the certified solver; between crossings one
+/// point query decides. An edge collapsed to a point is said so; a crossing or a query the solver
+/// leaves undecided (tangency, an edge on the boundary) makes the edge undecided.
+template <class T>
+struct FreeformEdges {
+  struct Edge {
+    int along = 0;
+    std::array<int, 3> sides{};
+    enum Status { curve, collapsed, undecided } status = curve;
+    std::size_t pieces = 0, points = 0;
+    std::vector<std::pair<T, T>> cuts;  // enclosures of the V-points' parameters
+  };
+  std::size_t corners = 0, corners_undecided = 0;
+  std::vector<Edge> edges;
+  std::size_t systems = 0;  // systems solved (crossings and point queries)
+};
+
+template <class T>
+FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options = {},
+                                const Limits& limits = {});
+
 }  // namespace splinex

@@ -260,12 +260,6 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           out.edges.push_back(e);
           continue;
         }
-        std::sort(events.begin(), events.end(), [](const Event& x, const Event& y) { return x.lo < y.lo; });
-        std::vector<Event> merged;  // overlapping enclosures joined
-        for (const auto& ev : events) {
-          if (!merged.empty() && !(merged.back().hi < ev.lo)) merged.back().hi = std::max(merged.back().hi, ev.hi);
-          else merged.push_back(ev);
-        }
         // The truth between consecutive events, at an exact point there.
         auto truth_at = [&](const T& t) {
           for (const auto& sg : segs) {
@@ -273,39 +267,17 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
             const std::vector<T> x{(t - sg.lo) / (sg.hi - sg.lo)};
             std::vector<Truth> tr;
             for (const auto& g : sg.g) tr.push_back(value_truth(detail::bern_value(g, x), T(0)));
-            return truth_of(tr);
+            return static_cast<int>(truth_of(tr));
           }
-          return Truth::mixed;
+          return static_cast<int>(Truth::mixed);
         };
-        // The gaps between the events (an empty one at an end of the edge: a root at the corner).
-        struct Gap {
-          Truth truth;
-          long after;  // the event before it (-1: the edge's start)
-        };
-        std::vector<Gap> gaps;
-        T from = V.domain_lo(along);
-        for (std::size_t i = 0; i <= merged.size(); ++i) {
-          const T to = i < merged.size() ? merged[i].lo : V.domain_hi(along);
-          if (from < to) gaps.push_back({truth_at((from + to) / T(2)), static_cast<long>(i) - 1});
-          if (i < merged.size()) from = merged[i].hi;
-        }
-        // Runs of "in": gaps joined across events that do not change the truth.
-        bool inside = false;
-        for (std::size_t i = 0; i < gaps.size(); ++i) {
-          if (gaps[i].truth == Truth::mixed) {
-            e.status = TrimmedTopology<T>::Edge::undecided;
-            break;
-          }
-          const bool in = gaps[i].truth == Truth::in;
-          if (in && !inside) ++e.pieces;
-          if (i > 0 && in != inside) {
-            ++e.points;
-            const auto& ev = merged[static_cast<std::size_t>(gaps[i].after)];
-            e.cuts.push_back({ev.lo, ev.hi});
-          }
-          inside = in;
-        }
-        if (e.status != TrimmedTopology<T>::Edge::curve) e.pieces = e.points = 0, e.cuts.clear();
+        std::vector<std::pair<T, T>> ev;
+        for (const auto& x : events) ev.push_back({x.lo, x.hi});
+        const auto runs = edge_runs(ev, V.domain_lo(along), V.domain_hi(along), truth_at);
+        if (!runs.decided) e.status = TrimmedTopology<T>::Edge::undecided;
+        e.pieces = runs.pieces;
+        e.points = runs.points;
+        e.cuts = runs.cuts;
         out.edges.push_back(e);
       }
 

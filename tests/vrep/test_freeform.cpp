@@ -119,6 +119,44 @@ TEST_CASE("vrep freeform: a box cut by the five-cell cylinder: pi / 12 enclosed,
   CHECK(r.components == 1);
 }
 
+TEST_CASE("vrep freeform: the edges of trimmed cells, exactly: crossings by the solver, runs by point queries") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto U = freeform_solid<R>("U", {box({R(1, 3), R(-1), R(-1)}, {R(3), R(3), R(3)})});
+  const auto e = freeform_edges<R>(V, {{&U, true}});
+  CHECK(e.corners == 4);
+  std::size_t pieces = 0, points = 0;
+  for (const auto& x : e.edges) {
+    CHECK(x.status == FreeformEdges<R>::Edge::curve);
+    pieces += x.pieces;
+    points += x.points;
+    if (x.along == 0) {
+      REQUIRE(x.cuts.size() == 1);
+      CHECK(x.cuts[0].first == R(1, 6));  // x = 2u = 1/3, an exact rational root
+      CHECK(x.cuts[0].second == R(1, 6));
+    }
+  }
+  CHECK(pieces == 8);
+  CHECK(points == 4);
+  // The same slice against the five-cell cylinder: the edges along x and y at the axis cross the
+  // side at x = 1 and y = 1 (parameter 1/2), the edge along z at the axis is inside.
+  const auto S = box({R(0), R(0), R(1, 3)}, {R(2), R(2), R(2, 3)});
+  const auto C = freeform_solid<R>("cylinder", cylinder_cells<R>(R(1), R(1)));
+  const auto c = freeform_edges<R>(S, {{&C, true}});
+  CHECK(c.corners == 2);
+  pieces = points = 0;
+  for (const auto& x : c.edges) {
+    CHECK(x.status == FreeformEdges<R>::Edge::curve);
+    pieces += x.pieces;
+    points += x.points;
+    for (const auto& cut : x.cuts) {
+      CHECK(cut.first <= R(1, 2));
+      CHECK(R(1, 2) <= cut.second);
+    }
+  }
+  CHECK(pieces == 5);
+  CHECK(points == 4);
+}
+
 TEST_CASE("vrep freeform: a rational cell (a cylinder sector) cut by a slab: a third of its volume, enclosed") {
   const auto V = cylinder_cells<R>(R(1), R(1))[1];
   REQUIRE(V.is_rational());
@@ -137,6 +175,11 @@ TEST_CASE("vrep freeform: the teapot's handle meets its body in two certified co
   const auto B = freeform_solid<R>("body", {T.body}), H = freeform_solid<R>("handle", {T.handle}),
              C = freeform_solid<R>("cavity", {T.cavity});
   CHECK(B.inner_faces == 2);  // the seam u = 0 / u = 4 of the body of revolution
+  // The handle's end corners: inside the shell with the preimage on the body's patch boundary u = 2
+  // (the data's symmetry plane y = 0), certified by the face system; one is a body control point on
+  // its outer surface, exactly: on the boundary.
+  CHECK(classify_point_freeform(B, {R(-8, 5), R(0), R(81, 40)}) == Truth::in);
+  CHECK(classify_point_freeform(B, {R(-2), R(0), R(9, 10)}) == Truth::mixed);
   CHECK(C.inner_faces == 2);
   const auto meet = cell(T.handle, {{&B, true}}, 2048);
   CHECK(meet.cls.kind == CellClass<R>::cut);
