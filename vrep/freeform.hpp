@@ -34,8 +34,16 @@
 // The number of cover components is shown beside it and is not certified (two true components
 // can share a cover component whose mixed boxes were not resolved).
 //
+// Validity: the arguments above need the solids' boundaries to be their faces, so a cell whose det
+// J takes both strict signs (a fold: certified by two exact values on a 5 x 5 x 5 grid per piece) is
+// refused; a fold between grid points and a non-injective cell without a fold are not detected
+// (valid V-cells are assumed, as in the paper). A point whose preimage lies on an inner knot plane
+// with irrational coordinates is decided by the face's two-equation system when the third vanishes
+// identically there (a symmetry plane at a patch boundary); otherwise it stays mixed.
+//
 // In double the same steps run with rounding and the solver's float answers: nothing is certified,
-// which is the float Boolean the exact one is compared with (Table 1's double column).
+// which is the float Boolean the exact one is compared with (Table 1's double column); the fold
+// check is skipped (a rounded zero could fake one).
 #pragma once
 #include <array>
 #include <cstddef>
