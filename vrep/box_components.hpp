@@ -65,6 +65,15 @@ bool collapsed(const BSpline<T>& F, int a) {
   return true;
 }
 
+/// A curve whose control points (geometry) are all one point: an edge collapsed to a point.
+template <class T>
+bool curve_collapsed(const BSpline<T>& C) {
+  for (std::size_t i = 1; i < C.count(0); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!(C.points[i * static_cast<std::size_t>(C.q) + static_cast<std::size_t>(k)] == C.points[static_cast<std::size_t>(k)])) return false;
+  return true;
+}
+
 /// The four corner points of a surface's net (geometry), sorted: equal surfaces have equal sets.
 template <class T>
 std::vector<std::array<T, 3>> corner_set(const BSpline<T>& F) {

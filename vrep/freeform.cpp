@@ -637,10 +637,7 @@ FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformC
         e.sides[a] = s1;
         e.sides[b] = s2;
         const BSpline<T> C = edge_curve(V, along, e.sides);
-        bool point = true;
-        for (std::size_t i = 1; i < C.count(0) && point; ++i)
-          for (int k = 0; k < 3; ++k) point = point && C.points[i * C.q + k] == C.points[k];
-        if (point) {
+        if (vrep_detail::curve_collapsed(C)) {
           e.status = FreeformEdges<T>::Edge::collapsed;
           out.edges.push_back(e);
           continue;

@@ -223,10 +223,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         e.sides[a] = s1;
         e.sides[b] = s2;
         const BSpline<T> C = edge_curve(V, along, e.sides);
-        bool point = true;
-        for (std::size_t i = 1; i < C.count(0) && point; ++i)
-          for (int k = 0; k < 3; ++k) point = point && C.points[i * C.q + k] == C.points[k];
-        if (point) {
+        if (vrep_detail::curve_collapsed(C)) {
           e.status = TrimmedTopology<T>::Edge::collapsed;
           out.edges.push_back(e);
           continue;
@@ -353,9 +350,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       std::vector<std::pair<std::size_t, std::size_t>> same;  // pairs of equal edges
       std::vector<char> point(curves.size(), 0);
       for (std::size_t i = 0; i < curves.size(); ++i) {
-        point[i] = 1;
-        for (std::size_t j = 1; j < curves[i].count(0) && point[i]; ++j)
-          for (int k = 0; k < 3; ++k) point[i] = point[i] && curves[i].points[j * curves[i].q + k] == curves[i].points[k];
+        point[i] = curve_collapsed(curves[i]);
         for (std::size_t j = i + 1; j < curves.size(); ++j)
           if (same_curve(curves[i], curves[j], T(0), true, limits)) same.push_back({i, j});
       }
