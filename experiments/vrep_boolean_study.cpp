@@ -147,8 +147,10 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
         "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
         "in brackets, not certified; and the trimming surfaces' boundary curves on the faces, certified lower bounds; V-curves between two "
-        "trimming surfaces and V-points off the edges are not built):\n\n"
-        "| model | cell (category) | corners | edge V-curves | edge V-points | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s |\n|---|---|---|---|---|---|---|---|---|\n";
+        "trimming surfaces and V-points off the edges are not built); and the cell's Euler characteristic, exact (`trimmed_euler`: "
+        "chi in the trivariate's parameters / chi of the cell in space, V's identifications counted once; \"dual\" where the interior's "
+        "chi_c is -chi, as for a 3-manifold with boundary):\n\n"
+        "| model | cell (category) | corners | edge V-curves | edge V-points | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : cases)
     for (std::size_t k = 0; k < c.model.cells.size(); ++k) {
       const auto& x = c.model.cells[k];
@@ -166,7 +168,12 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
          << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << faces << " ("
          << face_cover << ") | " << trims << " (" << trim_cover << ") | " << curves << " (" << curve_cover << ") | " << std::setprecision(3)
-         << seconds_since(t0) << " |\n";
+         << seconds_since(t0) << " | ";
+      const auto t1 = std::chrono::steady_clock::now();
+      const auto eu = trimmed_euler(c.model.trivariates[x.trivariate], x.trim);
+      if (eu.decided) md << eu.chi << " / " << eu.image_chi << (eu.duality ? ", dual" : ", not dual");
+      else md << "undecided: " << eu.undecided_reason;
+      md << " | " << std::setprecision(3) << seconds_since(t1) << " |\n";
     }
   md << "\nThe second model is built like the paper's Figure 15 (one union and two subtractions of non-singular "
         "primitives, 7 V-cells), but the paper gives no dimensions: plate [-2,2]^2 x [0,1], post r 1, h 3, holes r 1/4 at "

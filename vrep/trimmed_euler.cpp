@@ -1,0 +1,468 @@
+// The Euler characteristic of a trimmed cell (vrep/trimmed.hpp: trimmed_euler), instantiated for
+// Rational and double.
+//
+// The method: the compactly supported Euler characteristic chi_c is additive over a partition into
+// cells (open boxes, their open faces, edges, vertices), so chi(S) = sum over the open cells C of
+// a box subdivision of chi_c(S cap C). On one open cell C of dimension d:
+//   - the formula decided on the closed cell (every relevant leaf's Bernstein coefficients of one
+//     sign): chi_c = (-1)^d if it holds, 0 if not;
+//   - every undecided leaf monotone along one free direction t of C, with the formula monotone
+//     the same way (closed "up": the fibre over each point y of the open face is empty, [t0, b) or
+//     the whole (a, b)): chi_c of the fibre is 0, 0 or -1, and it is whole exactly where the
+//     formula holds at t = a, so chi_c(S cap C) = -chi_c(S cap C_a), C_a the open face at t = a;
+//     "down" is the mirror (C_b). Strictly monotone on every fibre: the derivative's Bernstein
+//     coefficients all >= 0 with one > 0 (all Bernstein basis functions are positive inside);
+//     a leaf independent of t (derivative 0) is both up and down;
+//   - otherwise C is halved: two open halves and the open face between them.
+// The interior's chi_c uses strict atoms on the open domain: fibres empty or (t0, b) (chi_c -1),
+// nonempty exactly where the formula holds at the other end, so the faces swap. For a compact
+// 3-manifold with boundary M, chi_c(int M) = chi(M) - chi(bd M) = -chi(M): the duality check.
+//
+// In V's image, the open cells of the domain's boundary that V identifies (equal faces, equal
+// edges, one point for equal corners) count once, and collapsed faces and edges not at all (their
+// image lies on their edges' or corners'); V is assumed injective otherwise.
+#include <algorithm>
+#include <array>
+#include <functional>
+
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "vrep/box_components.hpp"
+#include "vrep/trimmed.hpp"
+#include "vrep/trimmed_impl.hpp"
+#include "vrep/trivariate.hpp"
+
+namespace splinex {
+
+namespace {
+
+using detail::Bern;
+using namespace vrep_detail;
+
+/// The formula in negation normal form: atoms "leaf >= 0" (sign +1) or "leaf <= 0" (sign -1), read
+/// non-strictly (closure) or strictly (interior).
+struct Nnf {
+  enum Kind { atom, all_of, any_of } kind = atom;
+  int leaf = 0, sign = 1;
+  std::vector<Nnf> parts;
+};
+
+template <class T>
+Nnf to_nnf(const Region<T>& R, bool negate, int& next_leaf) {
+  Nnf n;
+  switch (R.kind) {
+    case Region<T>::leaf:
+      n.leaf = next_leaf++;
+      n.sign = negate ? -1 : 1;
+      return n;
+    case Region<T>::complement: return to_nnf(R.parts.front(), !negate, next_leaf);
+    case Region<T>::all_of:
+    case Region<T>::any_of:
+      n.kind = (R.kind == Region<T>::all_of) != negate ? Nnf::all_of : Nnf::any_of;
+      for (const auto& p : R.parts) n.parts.push_back(to_nnf(p, negate, next_leaf));
+      return n;
+  }
+  return n;
+}
+
+struct Undecided {
+  std::string where;
+};
+
+/// The signs of a leaf's Bernstein coefficients on a closed cell.
+struct Signs {
+  bool nonneg = true, nonpos = true, pos = true, neg = true;
+};
+
+template <class T>
+Signs signs_of(const Bern<T>& G) {
+  Signs s;
+  for (const auto& x : G.c) {
+    const bool p = T(0) < x, n = x < T(0);
+    s.nonneg = s.nonneg && !n;
+    s.nonpos = s.nonpos && !p;
+    s.pos = s.pos && p;
+    s.neg = s.neg && n;
+  }
+  return s;
+}
+
+/// An atom's truth on the closed cell: leaf >= 0 / <= 0 (closed) or > 0 / < 0 (strict).
+Truth atom_truth(const Signs& s, int sign, bool strict) {
+  const bool ge = sign > 0;
+  if (strict) {
+    if (ge ? s.pos : s.neg) return Truth::in;
+    if (ge ? s.nonpos : s.nonneg) return Truth::out;
+  } else {
+    if (ge ? s.nonneg : s.nonpos) return Truth::in;
+    if (ge ? s.neg : s.pos) return Truth::out;
+  }
+  return Truth::mixed;
+}
+
+Truth eval(const Nnf& n, const std::vector<Signs>& s, bool strict) {
+  switch (n.kind) {
+    case Nnf::atom: return atom_truth(s[static_cast<std::size_t>(n.leaf)], n.sign, strict);
+    case Nnf::all_of: {
+      Truth t = Truth::in;
+      for (const auto& p : n.parts) t = std::min(t, eval(p, s, strict));
+      return t;
+    }
+    case Nnf::any_of: {
+      Truth t = Truth::out;
+      for (const auto& p : n.parts) t = std::max(t, eval(p, s, strict));
+      return t;
+    }
+  }
+  return Truth::mixed;
+}
+
+/// The leaves of the atoms undecided on the cell.
+void undecided_leaves(const Nnf& n, const std::vector<Signs>& s, bool strict, std::vector<char>& out) {
+  if (n.kind != Nnf::atom) {
+    for (const auto& p : n.parts) undecided_leaves(p, s, strict, out);
+    return;
+  }
+  if (atom_truth(s[static_cast<std::size_t>(n.leaf)], n.sign, strict) == Truth::mixed) out[static_cast<std::size_t>(n.leaf)] = 1;
+}
+
+/// Whether every undecided atom is closed upwards (+1) or downwards (-1) along a direction in
+/// which its leaf is increasing (mono +1), decreasing (-1) or constant (0; both senses). False
+/// when two atoms disagree or a leaf is not monotone (2).
+bool sense_of(const Nnf& n, const std::vector<Signs>& s, bool strict, const std::vector<int>& mono, int& sense) {
+  if (n.kind != Nnf::atom) {
+    for (const auto& p : n.parts)
+      if (!sense_of(p, s, strict, mono, sense)) return false;
+    return true;
+  }
+  if (atom_truth(s[static_cast<std::size_t>(n.leaf)], n.sign, strict) != Truth::mixed) return true;
+  const int m = mono[static_cast<std::size_t>(n.leaf)];
+  if (m == 2) return false;
+  if (m == 0) return true;
+  const int x = m * n.sign;
+  if (sense != 0 && sense != x) return false;
+  sense = x;
+  return true;
+}
+
+/// +1: all coefficients >= 0 and one > 0 (strictly increasing on every line of the open cell); -1
+/// the mirror; 0: all zero; 2: otherwise.
+template <class T>
+int monotone(const Bern<T>& D) {
+  bool nonneg = true, nonpos = true, any = false;
+  for (const auto& x : D.c) {
+    const bool p = T(0) < x, n = x < T(0);
+    nonneg = nonneg && !n;
+    nonpos = nonpos && !p;
+    any = any || p || n;
+  }
+  if (!any) return 0;
+  return nonneg ? 1 : nonpos ? -1 : 2;
+}
+
+template <class T>
+double approx(const T& x) {
+  if constexpr (std::is_same_v<T, double>) return x;
+  else return to_double(x);
+}
+
+template <class T>
+bool all_zero(const Bern<T>& G) {
+  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
+}
+
+/// The sign of a leaf (G on a piece) just inside the domain next to a stratum of the piece's
+/// boundary on which it vanishes: per inward direction of the stratum, the derivative either
+/// vanishes on the whole piece (the leaf does not depend on it) or has one strict sign on the
+/// stratum (every Bernstein coefficient); all those signs agree and there is at least one. Then
+/// G(p + sum a_i n_i) = sum a_i dG_i(p) + O(|a|^2) has that sign for small a_i >= 0, not all 0.
+/// 0 when the rule does not apply.
+template <class T>
+int inward_sign(const Bern<T>& G, const std::array<int, 3>& state, const std::vector<std::pair<int, int>>& boundary) {
+  int sign = 0;
+  for (const auto& [d, side] : boundary) {
+    const Bern<T> D = detail::bern_derivative(G, d);
+    if (all_zero(D)) continue;
+    Bern<T> on = D;
+    for (int e = 2; e >= 0; --e)
+      if (state[e] != 0) on = detail::bern_face(on, e, state[e] == 2 ? 1 : 0);
+    const Signs s = signs_of(on);
+    const int here = s.pos ? 1 : s.neg ? -1 : 0;
+    if (here == 0) return 0;
+    const int inward = side == 0 ? here : -here;
+    if (sign != 0 && sign != inward) return 0;
+    sign = inward;
+  }
+  return sign;
+}
+
+template <class T>
+class EulerRun {
+ public:
+  EulerRun(const Nnf& f, std::size_t leaves, std::size_t max_cells, int max_level, T split)
+      : f_(f), leaves_(leaves), max_cells_(max_cells), max_level_(max_level), split_(std::move(split)) {}
+
+  /// chi_c of the formula's set on an open cell: G[l] the leaves on it (Bern over [0, 1]^d), dirs
+  /// the V directions of its free directions in order, lo/hi its parameter box in V, level the
+  /// halvings per V direction so far.
+  long chi(std::vector<Bern<T>> G, std::vector<int> dirs, std::array<T, 3> lo, std::array<T, 3> hi, std::array<int, 3> level, bool strict) {
+    if (++cells_ > max_cells_) throw Undecided{"the budget of " + std::to_string(max_cells_) + " cells is spent" + at(lo, hi)};
+    const int d = static_cast<int>(dirs.size());
+    std::vector<Signs> s(leaves_);
+    for (std::size_t l = 0; l < leaves_; ++l) s[l] = signs_of(G[l]);
+    const Truth t = eval(f_, s, strict);
+    if (t == Truth::in) return d % 2 ? -1 : 1;
+    if (t == Truth::out) return 0;
+    std::vector<char> open(leaves_, 0);
+    undecided_leaves(f_, s, strict, open);
+    // A direction along which every undecided leaf is monotone, the formula closed the same way.
+    for (int j = 0; j < d; ++j) {
+      std::vector<int> mono(leaves_, 0);
+      bool ok = true;
+      for (std::size_t l = 0; l < leaves_ && ok; ++l) {
+        if (!open[l]) continue;
+        mono[l] = monotone(detail::bern_derivative(G[l], j));
+        ok = mono[l] != 2;
+      }
+      int sense = 0;
+      if (!ok || !sense_of(f_, s, strict, mono, sense)) continue;
+      // Closed: up -> the face at the start; strict: up -> the face at the end.
+      const int side = sense == 0 ? 0 : ((sense > 0) == strict ? 1 : 0);
+      for (auto& g : G) g = detail::bern_face(g, j, side);
+      const int vd = dirs[static_cast<std::size_t>(j)];
+      if (side) lo[vd] = hi[vd];
+      else hi[vd] = lo[vd];
+      dirs.erase(dirs.begin() + j);
+      return -chi(std::move(G), std::move(dirs), lo, hi, level, strict);
+    }
+    // Halve across the direction halved least so far.
+    int j = 0;
+    for (int k = 1; k < d; ++k)
+      if (level[dirs[k]] < level[dirs[j]]) j = k;
+    const int vd = dirs[static_cast<std::size_t>(j)];
+    if (level[vd] >= max_level_)
+      throw Undecided{"no monotone direction within " + std::to_string(max_level_) + " halvings" + at(lo, hi) +
+                      " (a singular or tangential point of the trimming surfaces)"};
+    std::vector<Bern<T>> A(leaves_), B(leaves_), M(leaves_);
+    for (std::size_t l = 0; l < leaves_; ++l) {
+      std::tie(A[l], B[l]) = detail::bern_split(G[l], j, split_);
+      M[l] = detail::bern_face(A[l], j, 1);
+    }
+    G.clear();
+    const T mid = lo[vd] + split_ * (hi[vd] - lo[vd]);
+    ++level[vd];
+    auto hA = hi, lB = lo, lM = lo, hM = hi;
+    hA[vd] = mid;
+    lB[vd] = mid;
+    lM[vd] = hM[vd] = mid;
+    auto mdirs = dirs;
+    mdirs.erase(mdirs.begin() + j);
+    long sum = chi(std::move(A), dirs, lo, hA, level, strict);
+    sum += chi(std::move(B), dirs, lB, hi, level, strict);
+    sum += chi(std::move(M), std::move(mdirs), lM, hM, level, strict);
+    return sum;
+  }
+
+  std::size_t cells() const { return cells_; }
+
+ private:
+  static std::string at(const std::array<T, 3>& lo, const std::array<T, 3>& hi) {
+    std::string s = " near (u, v, w) = (";
+    for (int d = 0; d < 3; ++d) {
+      if (d) s += ", ";
+      s += std::to_string(approx((lo[d] + hi[d]) / T(2)));
+    }
+    s += ")";
+    return s;
+  }
+
+  const Nnf& f_;
+  std::size_t leaves_, max_cells_;
+  int max_level_;
+  T split_;
+  std::size_t cells_ = 0;
+};
+
+}  // namespace
+
+template <class T>
+TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options, const Limits& limits) {
+  require_jacobian_input(V, limits);
+  for (int d = 0; d < 3; ++d)
+    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
+      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
+                            "clamp the trivariate first");
+  if (options.max_cells < 1) throw ValidationError("cells", "must be at least 1", "give a positive cell budget");
+  if (options.max_level < 1 || options.max_level > 60) throw ValidationError("level", "must be in 1..60", "give a halving depth in 1..60");
+  if (V.is_rational())
+    for (const auto& w : V.weights)
+      if (!(T(0) < w))
+        throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator", "give positive weights");
+  for (int d = 0; d < 3; ++d) {
+    const auto& k = V.knots[d];
+    for (std::size_t i = 0; i < k.size();) {
+      std::size_t j = i;
+      while (j < k.size() && k[j] == k[i]) ++j;
+      if (V.domain_lo(d) < k[i] && k[i] < V.domain_hi(d) && static_cast<int>(j - i) > V.degrees[d])
+        throw DomainError("trivariate.knots", "has an inner knot of multiplicity above the degree: the trivariate jumps there and its cell is not a closed set",
+                          "give a trivariate continuous across its inner knots");
+      i = j;
+    }
+  }
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(trim, leaves);
+  // Limits before the work, as the classification checks them.
+  std::size_t per_piece = 0;
+  for (const auto* g : leaves) {
+    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d) {
+      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
+      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
+    }
+    per_piece += n;
+  }
+  limits.check_count(per_piece, "region composed with the trivariate");
+  int next = 0;
+  const Nnf f = to_nnf(trim, false, next);
+  const BezierForm<T> F = bezier_form(V, limits);
+  checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
+  std::array<std::size_t, 3> n{};
+  for (int d = 0; d < 3; ++d) n[d] = F.breaks[d].size() - 1;
+  std::vector<std::vector<Bern<T>>> G(F.size());
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    for (const auto* g : leaves) G[k].push_back(compose_leaf(*g, pc.spline));
+  }
+
+  // V's identifications (geometry): kept faces, edges and corners of the domain.
+  TrimmedEuler<T> out;
+  std::array<std::array<bool, 2>, 3> face_kept{};
+  std::vector<BSpline<T>> kept_faces;
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) {
+      const BSpline<T> S = face(V, d, s);
+      bool keep = !collapsed(S, 0) && !collapsed(S, 1);
+      for (const auto& K : kept_faces)
+        if (keep && corner_set(K) == corner_set(S) && same_surface(K, S, T(0), limits)) keep = false;
+      if (keep) kept_faces.push_back(S);
+      face_kept[d][s] = keep;
+      if (!keep) ++out.identified_faces;
+    }
+  std::map<std::array<int, 4>, bool> edge_kept;  // (along, side of the lower other, side of the upper other, 0)
+  std::vector<BSpline<T>> kept_edges;
+  for (int along = 0; along < 3; ++along)
+    for (int s1 = 0; s1 < 2; ++s1)
+      for (int s2 = 0; s2 < 2; ++s2) {
+        std::array<int, 3> sides{};
+        const int a = along == 0 ? 1 : 0, b = along == 2 ? 1 : 2;
+        sides[a] = s1;
+        sides[b] = s2;
+        const BSpline<T> C = edge_curve(V, along, sides);
+        bool keep = !curve_collapsed(C);
+        for (const auto& K : kept_edges)
+          if (keep && same_curve(K, C, T(0), true, limits)) keep = false;
+        if (keep) kept_edges.push_back(C);
+        edge_kept[{along, s1, s2, 0}] = keep;
+        if (!keep) ++out.identified_edges;
+      }
+  std::array<bool, 8> corner_kept{};
+  std::vector<std::vector<T>> kept_corners;
+  for (int c = 0; c < 8; ++c) {
+    std::vector<T> x(3);
+    for (int d = 0; d < 3; ++d) x[d] = (c >> d) & 1 ? V.domain_hi(d) : V.domain_lo(d);
+    std::vector<T> p = evaluate(V, x);
+    p.resize(3);
+    corner_kept[c] = std::find(kept_corners.begin(), kept_corners.end(), p) == kept_corners.end();
+    if (corner_kept[c]) kept_corners.push_back(p);
+    else ++out.identified_corners;
+  }
+
+  // The strata of the piece grid: per direction, the open segment (state 0), its start (1) or, for
+  // the last segment, its end (2).
+  const std::vector<T> fractions{T(1) / T(2), T(7) / T(16), T(13) / T(32)};
+  for (const T& split : fractions) {
+    EulerRun<T> run(f, leaves.size(), options.max_cells, options.max_level, split);
+    try {
+      long param = 0, image = 0, interior = 0;
+      std::size_t resolved = 0, unresolved = 0;
+      for (std::size_t k = 0; k < F.size(); ++k) {
+        const std::array<std::size_t, 3> idx{k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
+        for (int st = 0; st < 27; ++st) {
+          const std::array<int, 3> state{st % 3, (st / 3) % 3, st / 9};
+          bool valid = true;
+          for (int d = 0; d < 3; ++d) valid = valid && (state[d] != 2 || idx[d] + 1 == n[d]);
+          if (!valid) continue;
+          std::vector<Bern<T>> H = G[k];
+          std::vector<int> dirs;
+          std::array<T, 3> lo, hi;
+          std::vector<std::pair<int, int>> boundary;  // (direction, side) of the domain it lies on
+          for (int d = 0; d < 3; ++d) {
+            lo[d] = F.breaks[d][idx[d]];
+            hi[d] = F.breaks[d][idx[d] + 1];
+            if (state[d] == 0) dirs.push_back(d);
+            else {
+              (state[d] == 1 ? hi : lo)[d] = state[d] == 1 ? lo[d] : hi[d];
+              if (state[d] == 1 && idx[d] == 0) boundary.push_back({d, 0});
+              if (state[d] == 2) boundary.push_back({d, 1});
+            }
+          }
+          // Fix the directions from the last: direction d is then still at index d of every leaf.
+          for (int d = 2; d >= 0; --d)
+            if (state[d] != 0)
+              for (auto& h : H) h = detail::bern_face(h, d, state[d] == 2 ? 1 : 0);
+          // A leaf that vanishes on the whole stratum (a face of the cell on a trimming surface:
+          // coplanar contact) is read by its sign just inside the domain, so the closed reading
+          // is the closure of the cell's interior there, not a thin sheet.
+          if (!boundary.empty() && boundary.size() + dirs.size() == 3)
+            for (std::size_t l = 0; l < H.size(); ++l) {
+              if (!all_zero(H[l])) continue;
+              const int near = inward_sign(G[k][l], state, boundary);
+              if (near == 0) {
+                ++unresolved;
+                continue;
+              }
+              ++resolved;
+              Bern<T> c;
+              c.deg.assign(std::max<std::size_t>(dirs.size(), 1), 0);
+              c.c = {T(near)};
+              H[l] = std::move(c);
+            }
+          std::array<int, 3> level{};
+          const long c = run.chi(H, dirs, lo, hi, level, false);
+          param += c;
+          bool kept = true;
+          if (boundary.size() == 1) kept = face_kept[boundary[0].first][boundary[0].second];
+          else if (boundary.size() == 2) {
+            const int along = 3 - boundary[0].first - boundary[1].first;
+            kept = edge_kept[{along, boundary[0].second, boundary[1].second, 0}];
+          } else if (boundary.size() == 3)
+            kept = corner_kept[boundary[0].second | (boundary[1].second << 1) | (boundary[2].second << 2)];
+          if (kept) image += c;
+          if (boundary.empty()) interior += run.chi(H, dirs, lo, hi, level, true);
+        }
+      }
+      out.decided = true;
+      out.resolved_contacts = resolved;
+      out.unresolved_contacts = unresolved;
+      out.chi = param;
+      out.image_chi = image;
+      out.interior_chi_c = interior;
+      out.duality = interior == -param;
+      out.split = split;
+      out.cells = run.cells();
+      out.undecided_reason.clear();
+      return out;
+    } catch (const Undecided& u) {
+      out.cells += run.cells();
+      out.undecided_reason = u.where;
+    }
+  }
+  return out;
+}
+
+template TrimmedEuler<Rational> trimmed_euler(const BSpline<Rational>&, const Region<Rational>&, const EulerOptions&, const Limits&);
+template TrimmedEuler<double> trimmed_euler(const BSpline<double>&, const Region<double>&, const EulerOptions&, const Limits&);
+
+}  // namespace splinex
