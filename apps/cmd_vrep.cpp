@@ -27,6 +27,28 @@ namespace splinex::app {
 
 namespace {
 
+/// An Euler characteristic as JSON: decided or the reason, chi in the parameters and in space,
+/// the interior's chi_c and whether duality holds (the only case in which chi is the regularized
+/// cell's for sure).
+Json euler_json(const TrimmedEuler<Rational>& e) {
+  if (!e.decided) return Json{{"decided", false}, {"reason", e.undecided_reason}, {"cells_visited", e.cells}};
+  return Json{{"decided", true},
+              {"chi_parameters", e.chi},
+              {"chi", e.image_chi},
+              {"interior_chi_c", e.interior_chi_c},
+              {"dual", e.duality},
+              {"coplanar_contacts_read_from_inside", e.resolved_contacts},
+              {"coplanar_contacts_unresolved", e.unresolved_contacts},
+              {"cells_visited", e.cells},
+              {"verdict", e.duality ? "exact: a 3-manifold's chi (chi_c of the open set is -chi)"
+                                    : "the closed and open readings disagree: thin parts, cracks or non-manifold points; chi of the closed set only"}};
+}
+
+}  // namespace
+
+
+namespace {
+
 struct ConstructOptions {
   std::string kind, arith = "exact", surface, first, second, faces, surfaces, vector, at, axis = "z";
   int quarters = 4, degree = 3;
@@ -501,12 +523,17 @@ Commands add_vrep(CLI::App& app) {
                                 {"edges", edges},
                                 {"surfaces", surfaces},
                                 {"face_curves", face_curves},
-                                {"trimming_curves_on_faces_at_least", curves}});
+                                {"trimming_curves_on_faces_at_least", curves},
+                                {"euler", euler_json(trimmed_euler(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))}});
              }
+             const Json model = euler_json(model_euler(M, {}, ctx.limits));
              std::cout << Json{{"cells", cells},
-                               {"note", "exact: corners, edge V-curves and V-points (certified roots); lower bounds (certified): half-V-surfaces and the "
-                                        "trimming surfaces' boundary curves on the faces (face_curves, present ones listed); not built: V-curves "
-                                        "between two trimming surfaces, V-points off the edges"}}
+                               {"model_euler", model},
+                               {"note", "exact: corners, edge V-curves and V-points (certified roots), the Euler characteristic of every cell (in its "
+                                        "trivariate's parameters and in space) and of the model (its region), trusted where dual (the open set's "
+                                        "chi_c is -chi); lower bounds (certified): half-V-surfaces and the trimming surfaces' boundary curves on "
+                                        "the faces (face_curves, present ones listed); not built: V-curves between two trimming surfaces, V-points "
+                                        "off the edges"}}
                               .dump()
                        << "\n";
              return 0;

@@ -76,6 +76,13 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     double exact_s = 0, double_s = 0;
     std::size_t double_cells = 0;
     std::string double_note;
+    std::string euler;  // the model's chi and its check
+  };
+  // chi of a model's point set, exactly (model_euler), with its verdict.
+  auto chi_of = [&](const TrimmedModel<R>& M, bool& fine) -> long {
+    const auto e = model_euler(M);
+    fine = fine && e.decided && e.duality;
+    return e.image_chi;
   };
   std::vector<Case> cases;
   // Figure 4: cone union a cylinder through it.
@@ -86,6 +93,14 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     auto t0 = std::chrono::steady_clock::now();
     c.model = trimmed_boolean(cone, cyl, BooleanOp::unite);
     c.exact_s = seconds_since(t0);
+    {
+      bool fine = true;
+      const long a = chi_of(cone, fine), b = chi_of(cyl, fine), u = chi_of(c.model, fine), i = chi_of(trimmed_boolean(cone, cyl, BooleanOp::intersect), fine);
+      const bool holds = fine && u == a + b - i;
+      ctx.ok = ctx.ok && holds;
+      c.euler = "chi(cone u cylinder) = " + std::to_string(u) + " = chi(cone) " + std::to_string(a) + " + chi(cylinder) " + std::to_string(b) +
+                " - chi(cone n cylinder) " + std::to_string(i) + (holds ? " (all four exact and dual: inclusion-exclusion holds)" : " (CHECK FAILED)");
+    }
     t0 = std::chrono::steady_clock::now();
     try {
       c.double_cells = trimmed_boolean(trimmed_to_double(cone), trimmed_to_double(cyl), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
@@ -104,6 +119,15 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
     Case c{"Figure 15's kind: (plate union post) - hole - hole", {}};
     auto t0 = std::chrono::steady_clock::now();
     c.model = trimmed_boolean(trimmed_boolean(trimmed_boolean(base, post, BooleanOp::unite), hole1, BooleanOp::subtract), hole2, BooleanOp::subtract);
+    {
+      bool fine = true;
+      const auto P = trimmed_boolean(base, post, BooleanOp::unite);
+      const long p = chi_of(P, fine), p1 = chi_of(trimmed_boolean(P, hole1, BooleanOp::subtract), fine), p2 = chi_of(c.model, fine);
+      const bool holds = fine && p == 1 && p1 == 0 && p2 == -1;
+      ctx.ok = ctx.ok && holds;
+      c.euler = "chi after each Boolean: plate u post " + std::to_string(p) + ", - hole " + std::to_string(p1) + ", - hole " + std::to_string(p2) +
+                (holds ? " (exact and dual; 1, 0, -1: one, then two through-holes)" : " (CHECK FAILED: expected 1, 0, -1)");
+    }
     c.exact_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     try {
@@ -175,6 +199,8 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       else md << "undecided: " << eu.undecided_reason;
       md << " | " << std::setprecision(3) << seconds_since(t1) << " |\n";
     }
+  md << "\n**The models' Euler characteristic after every Boolean** (`model_euler`: the region's chi in a box around the model, exact):\n\n";
+  for (const auto& c : cases) md << "- " << c.name.substr(0, c.name.find(':')) << ": " << c.euler << "\n";
   md << "\nThe second model is built like the paper's Figure 15 (one union and two subtractions of non-singular "
         "primitives, 7 V-cells), but the paper gives no dimensions: plate [-2,2]^2 x [0,1], post r 1, h 3, holes r 1/4 at "
         "(+-3/2, +-3/2). Its volume is 16 + 15 pi / 8 = " << std::setprecision(8) << 16 + 15 * M_PI / 8

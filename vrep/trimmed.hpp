@@ -291,4 +291,15 @@ struct TrimmedEuler {
 template <class T>
 TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options = {}, const Limits& limits = {});
 
+/// The Euler characteristic of a region of space inside the box [lo, hi] (the region as the trim
+/// of the box's identity trivariate), and of a trimmed model's point set (its region in its
+/// cells' control-point box grown by a sixteenth of its largest side, at least 1/16, all round,
+/// so no face of the box meets it): the model's chi after a Boolean, with the regularized
+/// Booleans' inclusion-exclusion chi(A u B) = chi(A) + chi(B) - chi(A n B) to check it by.
+template <class T>
+TrimmedEuler<T> region_euler(const Region<T>& R, const std::vector<T>& lo, const std::vector<T>& hi, const EulerOptions& options = {},
+                             const Limits& limits = {});
+template <class T>
+TrimmedEuler<T> model_euler(const TrimmedModel<T>& M, const EulerOptions& options = {}, const Limits& limits = {});
+
 }  // namespace splinex

@@ -29,6 +29,7 @@
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/box_components.hpp"
+#include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
 #include "vrep/trivariate.hpp"
@@ -462,6 +463,45 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   return out;
 }
 
+template <class T>
+TrimmedEuler<T> region_euler(const Region<T>& R, const std::vector<T>& lo, const std::vector<T>& hi, const EulerOptions& options, const Limits& limits) {
+  if (lo.size() != 3 || hi.size() != 3) throw ValidationError("box", "needs three lower and three upper bounds", "give lo and hi in R^3");
+  for (int d = 0; d < 3; ++d)
+    if (!(lo[d] < hi[d])) throw ValidationError("box", "has lo >= hi in direction " + std::to_string(d), "give lo < hi");
+  return trimmed_euler(box_cells<T>(lo, hi).front(), R, options, limits);
+}
+
+template <class T>
+TrimmedEuler<T> model_euler(const TrimmedModel<T>& M, const EulerOptions& options, const Limits& limits) {
+  if (M.trivariates.empty()) throw ValidationError("model", "has no trivariates", "give a model with cells");
+  std::vector<T> lo(3), hi(3);
+  bool first = true;
+  for (const auto& c : M.cells) {
+    const auto b = control_bounds(M.trivariates[c.trivariate]);
+    for (int d = 0; d < 3; ++d) {
+      if (first || b[d] < lo[d]) lo[d] = b[d];
+      if (first || hi[d] < b[d + 3]) hi[d] = b[d + 3];
+    }
+    first = false;
+  }
+  if (first) throw ValidationError("model", "has no cells", "give a model with cells");
+  // A margin of a 1/16 of the largest side (at least 1) all round: the region then meets the
+  // box's faces nowhere, as the model lies in its cells' control boxes.
+  T side = T(1);
+  for (int d = 0; d < 3; ++d)
+    if (side < hi[d] - lo[d]) side = hi[d] - lo[d];
+  for (int d = 0; d < 3; ++d) {
+    lo[d] -= side / T(16);
+    hi[d] += side / T(16);
+  }
+  return region_euler(M.region, lo, hi, options, limits);
+}
+
+template TrimmedEuler<Rational> region_euler(const Region<Rational>&, const std::vector<Rational>&, const std::vector<Rational>&, const EulerOptions&,
+                                             const Limits&);
+template TrimmedEuler<double> region_euler(const Region<double>&, const std::vector<double>&, const std::vector<double>&, const EulerOptions&, const Limits&);
+template TrimmedEuler<Rational> model_euler(const TrimmedModel<Rational>&, const EulerOptions&, const Limits&);
+template TrimmedEuler<double> model_euler(const TrimmedModel<double>&, const EulerOptions&, const Limits&);
 template TrimmedEuler<Rational> trimmed_euler(const BSpline<Rational>&, const Region<Rational>&, const EulerOptions&, const Limits&);
 template TrimmedEuler<double> trimmed_euler(const BSpline<double>&, const Region<double>&, const EulerOptions&, const Limits&);
 
