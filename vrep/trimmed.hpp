@@ -31,7 +31,9 @@
 // The boundary structure of a trimmed cell (trimmed_topology, below): exact V-points and V-curves on
 // the trivariate's edges, certified lower bounds on its half-V-surfaces and on the trimming
 // surfaces' boundary curves on its faces. What is not built: exact counts of those, V-curves
-// between two trimming surfaces, V-points off the edges, and the gluing of trimmed cells.
+// between two trimming surfaces, V-points off the edges, and the gluing of trimmed cells. The
+// Euler characteristic of a trimmed cell and of a model's point set is exact (trimmed_euler,
+// model_euler, below).
 //
 // The volume of a trimmed cell is a certified enclosure: in-boxes contribute the enclosure of their
 // integral of |det J| (exact for polynomial cells), mixed boxes [0, their upper bound], out-boxes 0.
