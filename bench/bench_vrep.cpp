@@ -90,6 +90,28 @@ void trimmed_step(benchmark::State& st, bool exact) {
   st.counters["cells"] = static_cast<double>(cells);
 }
 
+/// The Euler characteristic of Figure 4's union: every cell's (trimmed_euler) and the model's
+/// (model_euler), exact or on the rounded model.
+void euler_step(benchmark::State& st, bool exact) {
+  using R = Rational;
+  const auto cone = placed(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  const auto U = trimmed_boolean(cone, cyl, BooleanOp::unite);
+  long chi = 0;
+  auto run = [&](const auto& M) {
+    chi = 0;
+    for (const auto& c : M.cells) chi += trimmed_euler(M.trivariates[c.trivariate], c.trim).image_chi;
+    chi += 1000 * model_euler(M).image_chi;
+  };
+  if (exact)
+    for (auto _ : st) run(U);
+  else {
+    const auto D = trimmed_to_double(U);
+    for (auto _ : st) run(D);
+  }
+  st.counters["sum_chi_cells_plus_1000_chi_model"] = static_cast<double>(chi);
+}
+
 /// The teapot's handle against its body (step 1/16): the float SSI, and the exact judgement of its
 /// points (Krawczyk certificates).
 void ssi_step(benchmark::State& st, bool judge) {
@@ -143,6 +165,8 @@ int main(int argc, char** argv) {
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/trimmed/double/figure4", [](benchmark::State& st) { trimmed_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/trimmed/exact/figure4", [](benchmark::State& st) { trimmed_step(st, true); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/euler/double/figure4", [](benchmark::State& st) { euler_step(st, false); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/euler/exact/figure4", [](benchmark::State& st) { euler_step(st, true); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/judge/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, true); })->Unit(benchmark::kMillisecond);
   const std::vector<std::string> booleans{"figure3", "grid-cavity"};
@@ -182,6 +206,9 @@ int main(int argc, char** argv) {
     const double d = rep.ns["vrep/trimmed/double/figure4"], e = rep.ns["vrep/trimmed/exact/figure4"];
     std::cout << std::left << std::setw(12) << "figure4" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << d
               << std::setw(10) << e << std::setprecision(1) << std::setw(8) << (d > 0 ? e / d : 0.0) << "  (trimmed cells)\n";
+    const double ed = rep.ns["vrep/euler/double/figure4"], ee = rep.ns["vrep/euler/exact/figure4"];
+    std::cout << std::left << std::setw(12) << "euler" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << ed << std::setw(10) << ee
+              << std::setprecision(1) << std::setw(8) << (ed > 0 ? ee / ed : 0.0) << "  (Euler characteristic of Figure 4's 15 cells and model)\n";
     const double f = rep.ns["vrep/ssi/double/teapot-handle-body"], j = rep.ns["vrep/ssi/judge/teapot-handle-body"];
     std::cout << "\nTeapot handle and body: float SSI " << std::setprecision(2) << f << " ms, its exact judgement " << j
               << " ms (judge/SSI " << std::setprecision(1) << (f > 0 ? j / f : 0.0) << ")\n";
