@@ -524,16 +524,20 @@ Commands add_vrep(CLI::App& app) {
                                 {"surfaces", surfaces},
                                 {"face_curves", face_curves},
                                 {"trimming_curves_on_faces_at_least", curves},
+                                {"face_v_points", t.face_points},
+                                {"interior_v_points", t.interior_points},
+                                {"v_points_undecided", t.points_undecided},
                                 {"euler", euler_json(trimmed_euler(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))}});
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
              std::cout << Json{{"cells", cells},
                                {"model_euler", model},
-                               {"note", "exact: corners, edge V-curves and V-points (certified roots), the Euler characteristic of every cell (in its "
-                                        "trivariate's parameters and in space) and of the model (its region), trusted where dual (the open set's "
-                                        "chi_c is -chi); lower bounds (certified): half-V-surfaces and the trimming surfaces' boundary curves on "
-                                        "the faces (face_curves, present ones listed); not built: V-curves between two trimming surfaces, V-points "
-                                        "off the edges"}}
+                               {"note", "exact: corners, edge V-curves and V-points (certified roots), V-points off the edges (two trimming "
+                                        "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
+                                        "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "
+                                        "region), trusted where dual (the open set's chi_c is -chi); lower bounds (certified): half-V-surfaces "
+                                        "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed); not built: "
+                                        "V-curves between two trimming surfaces"}}
                               .dump()
                        << "\n";
              return 0;

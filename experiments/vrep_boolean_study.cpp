@@ -170,11 +170,12 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   md << "\n**Their trimmed cells' boundary structure** (`trimmed_topology`, 1024 boxes per cell; exact: corners of the trivariate in the "
         "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
         "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
-        "in brackets, not certified; and the trimming surfaces' boundary curves on the faces, certified lower bounds; V-curves between two "
-        "trimming surfaces and V-points off the edges are not built); and the cell's Euler characteristic, exact (`trimmed_euler`: "
+        "in brackets, not certified; and the trimming surfaces' boundary curves on the faces, certified lower bounds; exact: V-points off "
+        "the edges, two trimming surfaces meeting on a face or three inside, roots not certified in brackets; V-curves between two "
+        "trimming surfaces are not built); and the cell's Euler characteristic, exact (`trimmed_euler`: "
         "chi in the trivariate's parameters / chi of the cell in space, V's identifications counted once; \"dual\" where the interior's "
         "chi_c is -chi, as for a 3-manifold with boundary):\n\n"
-        "| model | cell (category) | corners | edge V-curves | edge V-points | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| model | cell (category) | corners | edge V-curves | edge V-points | V-points on faces / inside (undecided) | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : cases)
     for (std::size_t k = 0; k < c.model.cells.size(); ++k) {
       const auto& x = c.model.cells[k];
@@ -190,7 +191,8 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       std::size_t curves = 0, curve_cover = 0;
       for (const auto& fc : t.face_curves) curves += fc.at_least, curve_cover += fc.cover;
       md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
-         << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << faces << " ("
+         << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << t.face_points << " / "
+         << t.interior_points << (t.points_undecided ? " (" + std::to_string(t.points_undecided) + ")" : "") << " | " << faces << " ("
          << face_cover << ") | " << trims << " (" << trim_cover << ") | " << curves << " (" << curve_cover << ") | " << std::setprecision(3)
          << seconds_since(t0) << " | ";
       const auto t1 = std::chrono::steady_clock::now();
@@ -436,8 +438,8 @@ void vrep_boolean_section(ReportContext& ctx) {
         "![tolerance](vrep_boolean_tolerance.svg)\n\n"
      ;
   trimmed_part(ctx, md);
-  md << "Not built yet (issue 18 stays open): the V-curves between two trimming surfaces, the V-points off the edges and "
-        "exact counts of the half-V-surfaces of trimmed cells (their Euler characteristic is exact, above); the gluing of "
+  md << "Not built yet (issue 18 stays open): the V-curves between two trimming surfaces and exact counts of the "
+        "half-V-surfaces of trimmed cells (their V-points and Euler characteristic are exact, above); the gluing of "
         "trimmed cells; the topology of freeform-trimmed cells beyond their edges (the teapot's section).\n\n";
   ctx.markdown["vrep-boolean"] = md.str();
 }

@@ -220,8 +220,9 @@ namespace splinex {
 ///   - face curves: per face and leaf, the leaf's zero set where it bounds the face's part (the
 ///     trimming surface's boundary curve on that face): proved absent, or a lower bound on its
 ///     pieces as above (2D boxes of the face's subdivision).
-/// What is not built: V-curves between two trimming surfaces, V-points off the edges, and counts
-/// above the certified lower bounds.
+///   - V-points off the edges (below), exact where every system is decided.
+/// What is not built: V-curves between two trimming surfaces and counts above the certified lower
+/// bounds.
 template <class T>
 struct TrimmedTopology {
   struct Edge {
@@ -251,6 +252,17 @@ struct TrimmedTopology {
   std::vector<Edge> edges;
   std::vector<Surface> surfaces;
   std::vector<FaceCurve> face_curves;  // per face (collapsed faces have none), per leaf
+  /// V-points off the edges, exact: two leaves meeting on a face of the domain, three inside it,
+  /// at a certified simple root where the formula depends on each of their signs (a corner of
+  /// the cell's boundary). `points_undecided`: roots not certified, on a piece's boundary or with
+  /// a further leaf not strictly signed near them (then the counts are lower bounds).
+  struct VPoint {
+    int dir = -1, side = -1;         // the face (dir, side) of V's domain, or -1 inside
+    std::vector<std::size_t> leaves;  // the meeting leaves (collect order)
+    std::vector<T> lo, hi;            // the root's box in V's parameters (on the face: its two directions)
+  };
+  std::size_t face_points = 0, interior_points = 0, points_undecided = 0;
+  std::vector<VPoint> inner_points;
   std::size_t boxes = 0;  // 3D subdivision boxes of the trimming surfaces
 };
 

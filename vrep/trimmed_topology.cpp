@@ -278,6 +278,144 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         out.edges.push_back(e);
       }
 
+  // V-points off the edges: where two leaves meet on a face of the domain (2x2 systems on the
+  // face) or three inside it (3x3 systems), certified simple roots strictly inside the piece, with
+  // every other leaf of one strict sign on the root's box. Near such a root the leaves' zero sets
+  // are transversal (Krawczyk: the Jacobian is regular on the box), so the sign patterns of the
+  // meeting leaves are the local sectors; the root is a corner of the cell's boundary when the
+  // formula depends on every one of those signs there (else one zero set passes by smoothly, or
+  // the point is not on the cell at all).
+  {
+    SolveOptions vo;
+    vo.max_depth = 24;
+    vo.max_boxes = 4000;
+    vo.refine_bits = 40;
+    const std::size_t nl = leaves.size();
+    // Whether the formula depends on every leaf in `which`, the others fixed at `fixed`.
+    auto corner_of = [&](std::vector<Truth> fixed, const std::vector<std::size_t>& which) {
+      const std::size_t m = which.size();
+      std::vector<Truth> value(std::size_t(1) << m);
+      for (std::size_t pattern = 0; pattern < value.size(); ++pattern) {
+        for (std::size_t q = 0; q < m; ++q) fixed[which[q]] = (pattern >> q) & 1 ? Truth::in : Truth::out;
+        value[pattern] = truth_of(fixed);
+        if (value[pattern] == Truth::mixed) return false;
+      }
+      for (std::size_t q = 0; q < m; ++q) {
+        bool depends = false;
+        for (std::size_t pattern = 0; pattern < value.size(); ++pattern) depends = depends || value[pattern] != value[pattern ^ (std::size_t(1) << q)];
+        if (!depends) return false;
+      }
+      return true;
+    };
+    // The roots of the leaves `which` (Bern over the unit box standing for [lo, hi], dims given)
+    // and the decision at each; `others` the remaining leaves on the same box.
+    auto meet = [&](const std::vector<Bern<T>>& sys, const std::vector<std::size_t>& which, const std::vector<Bern<T>>& all, const std::vector<T>& lo,
+                    const std::vector<T>& hi, std::size_t& found, std::size_t& undecided) {
+      const SolveResult<T> r = solve_system(sys, lo, hi, vo);
+      undecided += r.undecided.size();
+      const std::size_t n = lo.size();
+      for (const auto& root : r.roots) {
+        std::vector<Truth> fixed(nl, Truth::mixed);
+        if (root.exact) {
+          // An exact rational root: simple and transversal when the Jacobian is regular there
+          // (exact determinant); the other leaves' exact values decide them nearby.
+          bool inside = true;
+          std::vector<T> u(n);
+          for (std::size_t d = 0; d < n; ++d) {
+            inside = inside && lo[d] < root.point[d] && root.point[d] < hi[d];
+            u[d] = (root.point[d] - lo[d]) / (hi[d] - lo[d]);
+          }
+          std::vector<std::vector<T>> J(n, std::vector<T>(n));
+          for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = 0; b < n; ++b) J[a][b] = detail::bern_value(detail::bern_derivative(sys[a], static_cast<int>(b)), u);
+          T det;
+          if (n == 2) det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+          else
+            det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                  J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+          bool clear = inside && !(det == T(0));
+          for (std::size_t l = 0; l < nl && clear; ++l) {
+            if (std::find(which.begin(), which.end(), l) != which.end()) continue;
+            fixed[l] = value_truth(detail::bern_value(all[l], u), T(0));
+            clear = fixed[l] != Truth::mixed;
+          }
+          if (!clear) {
+            ++undecided;
+            continue;
+          }
+          if (corner_of(fixed, which)) {
+            ++found;
+            out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, root.point, root.point});
+          }
+          continue;
+        }
+        if (!root.unique) {
+          ++undecided;
+          continue;
+        }
+        bool inside = true;
+        for (std::size_t d = 0; d < n; ++d) inside = inside && lo[d] < root.lo[d] && root.hi[d] < hi[d];
+        if (!inside) {  // on the piece's boundary: an edge's V-point, or across pieces
+          ++undecided;
+          continue;
+        }
+        bool clear = true;
+        for (std::size_t l = 0; l < nl && clear; ++l) {
+          if (std::find(which.begin(), which.end(), l) != which.end()) continue;
+          Bern<T> b = all[l];
+          for (std::size_t d = 0; d < n; ++d)
+          {
+            const T a = (root.lo[d] - lo[d]) / (hi[d] - lo[d]), c = (root.hi[d] - lo[d]) / (hi[d] - lo[d]);
+            b = detail::bern_restrict(b, static_cast<int>(d), a, c);
+          }
+          fixed[l] = strict_truth(b);
+          clear = fixed[l] != Truth::mixed;
+        }
+        if (!clear) {
+          ++undecided;
+          continue;
+        }
+        if (corner_of(fixed, which)) {
+          ++found;
+          out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, root.lo, root.hi});
+        }
+      }
+    };
+    for (const auto& p : pieces) {
+      // On the faces of the domain that this piece touches.
+      for (int d = 0; d < 3; ++d)
+        for (int sd = 0; sd < 2; ++sd) {
+          if (!((sd ? p.hi[d] : p.lo[d]) == domain_at(d, sd))) continue;
+          std::vector<Bern<T>> H;
+          for (const auto& G : p.G) H.push_back(bern_face(G, d, sd));
+          std::vector<T> lo, hi;
+          for (int e = 0; e < 3; ++e)
+            if (e != d) {
+              lo.push_back(p.lo[e]);
+              hi.push_back(p.hi[e]);
+            }
+          for (std::size_t i = 0; i < nl; ++i)
+            for (std::size_t j = i + 1; j < nl; ++j) {
+              if (all_zero(H[i]) || all_zero(H[j]) || strict_truth(H[i]) != Truth::mixed || strict_truth(H[j]) != Truth::mixed) continue;
+              const std::size_t before = out.inner_points.size();
+              meet({H[i], H[j]}, {i, j}, H, lo, hi, out.face_points, out.points_undecided);
+              for (std::size_t q = before; q < out.inner_points.size(); ++q) {
+                out.inner_points[q].dir = d;
+                out.inner_points[q].side = sd;
+              }
+            }
+        }
+      // Inside: three leaves.
+      std::vector<T> lo(p.lo.begin(), p.lo.end()), hi(p.hi.begin(), p.hi.end());
+      for (std::size_t i = 0; i < nl; ++i)
+        for (std::size_t j = i + 1; j < nl; ++j)
+          for (std::size_t k = j + 1; k < nl; ++k) {
+            if (strict_truth(p.G[i]) != Truth::mixed || strict_truth(p.G[j]) != Truth::mixed || strict_truth(p.G[k]) != Truth::mixed) continue;
+            meet({p.G[i], p.G[j], p.G[k]}, {i, j, k}, p.G, lo, hi, out.interior_points, out.points_undecided);
+          }
+    }
+  }
+
   // Faces: 2D subdivision with the faces' coefficients.
   const std::size_t face_budget = std::max<std::size_t>(8, max_boxes / 8);
   for (int d = 0; d < 3; ++d)

@@ -3,6 +3,7 @@
 // on cells whose true boundary is known (a box cut by a plane, a quarter cylinder slice, a bar with a
 // slab removed).
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "exact/rational.hpp"
 #include "vrep/primitives.hpp"
@@ -124,4 +125,65 @@ TEST_CASE("vrep trimmed topology: edges on a trimming surface, collapsed edges a
   auto open = V;
   open.knots[0] = {R(-1), R(0), R(1), R(2)};
   CHECK_THROWS_AS(trimmed_topology(open, box_region<R>({R(0), R(0), R(0)}, {R(1), R(1), R(1)}), 64), ValidationError);
+}
+
+TEST_CASE("vrep trimmed topology: V-points off the edges, on faces and inside, exact") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  auto plane = [](int axis, R at) {  // x_axis - at >= 0
+    Poly3<R> g;
+    std::array<int, 3> e{};
+    e[axis] = 1;
+    g.terms[e] = R(1);
+    g.terms[{0, 0, 0}] = -at;
+    return region_leaf(g, "plane");
+  };
+  // Two planes: their line crosses the faces z = 0 and z = 2 at corners of the cell.
+  const auto two = trimmed_topology(V, region_and<R>({plane(0, R(1, 3)), plane(1, R(1, 4))}), 512);
+  CHECK(two.face_points == 2);
+  CHECK(two.interior_points == 0);
+  CHECK(two.points_undecided == 0);
+  // Three planes: the cell is the box [1/3, 2] x [1/4, 2] x [1/5, 2], whose 8 vertices are one
+  // corner of V's domain, three V-points on its edges, three on its faces and one inside.
+  const auto three = trimmed_topology(V, region_and<R>({plane(0, R(1, 3)), plane(1, R(1, 4)), plane(2, R(1, 5))}), 512);
+  CHECK(three.corners == 1);
+  std::size_t edge_points = 0;
+  for (const auto& e : three.edges) edge_points += e.points;
+  CHECK(edge_points == 3);
+  CHECK(three.face_points == 3);
+  CHECK(three.interior_points == 1);
+  CHECK(three.points_undecided == 0);
+  REQUIRE(three.inner_points.size() == 4);
+  for (const auto& p : three.inner_points)
+    if (p.dir < 0) {  // the inside corner (1/3, 1/4, 1/5) / 2 in V's parameters
+      const R want[3] = {R(1, 6), R(1, 8), R(1, 10)};
+      for (int d = 0; d < 3; ++d) CHECK((p.lo[d] <= want[d] && want[d] <= p.hi[d]));
+    }
+  // The lens of two balls cut by a plane: its circular edge crosses the plane at two irrational
+  // points, y = 1 +- sqrt(1/5).
+  auto ball = [](std::array<R, 3> c, R r) {
+    Poly3<R> g;
+    R k = r * r;
+    for (int d = 0; d < 3; ++d) {
+      std::array<int, 3> e{}, e2{};
+      e[d] = 1;
+      e2[d] = 2;
+      g.terms[e2] = R(-1);
+      g.terms[e] = R(2) * c[d];
+      k -= c[d] * c[d];
+    }
+    g.terms[{0, 0, 0}] = k;
+    return region_leaf(g, "ball");
+  };
+  const auto lens = trimmed_topology(V, region_and<R>({ball({R(4, 5), R(1), R(1)}, R(1, 2)), ball({R(6, 5), R(1), R(1)}, R(1, 2)), plane(2, R(11, 10))}), 512);
+  CHECK(lens.interior_points == 2);
+  CHECK(lens.face_points == 0);
+  CHECK(lens.points_undecided == 0);
+  for (const auto& p : lens.inner_points) {
+    const double y = (to_double(p.lo[1]) + to_double(p.hi[1])) / 2 * 2;  // v = y / 2
+    CHECK(std::abs(std::abs(y - 1) - std::sqrt(0.2)) < 1e-9);
+  }
+  // The same balls without the plane: the lens's edge is a circle, no V-point anywhere.
+  const auto lens_only = trimmed_topology(V, region_and<R>({ball({R(4, 5), R(1), R(1)}, R(1, 2)), ball({R(6, 5), R(1), R(1)}, R(1, 2))}), 512);
+  CHECK(lens_only.interior_points == 0);
+  CHECK(lens_only.face_points == 0);
 }
