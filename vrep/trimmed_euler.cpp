@@ -314,17 +314,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   // Limits before the work, as the classification checks them.
-  std::size_t per_piece = 0;
-  for (const auto* g : leaves) {
-    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
-    std::size_t n = 1;
-    for (int d = 0; d < 3; ++d) {
-      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
-      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
-    }
-    per_piece += n;
-  }
-  limits.check_count(per_piece, "region composed with the trivariate");
+  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
   int next = 0;
   const Nnf f = to_nnf(trim, false, next);
   const BezierForm<T> F = bezier_form(V, limits);

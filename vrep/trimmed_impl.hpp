@@ -151,6 +151,24 @@ Truth coefficient_truth(const Bern<T>& G, const T& eps) {
   return nonneg ? Truth::in : Truth::mixed;
 }
 
+/// Limits before the work: each leaf composed with V has prod (k p_d + 1) coefficients per Bezier
+/// piece; all leaves together are bounded like one spline's control points. Returns that count.
+template <class T>
+std::size_t composed_leaves_size(const BSpline<T>& V, const std::vector<const Poly3<T>*>& leaves, const Limits& limits) {
+  std::size_t per_piece = 0;
+  for (const auto* g : leaves) {
+    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d) {
+      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
+      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
+    }
+    per_piece += n;
+  }
+  limits.check_count(per_piece, "region composed with the trivariate");
+  return per_piece;
+}
+
 /// W^k g(X / W, Y / W, Z / W) on a Bezier piece (k the degree of g), exact.
 template <class T>
 Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
@@ -237,19 +255,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
                                          "give positive weights");
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
-  // Limits before the work: each composed leaf has prod (k p_d + 1) coefficients per Bezier piece,
-  // all leaves together (and the pieces) are bounded like one spline's control points.
-  std::size_t per_piece = 0;
-  for (const auto* g : leaves) {
-    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
-    std::size_t n = 1;
-    for (int d = 0; d < 3; ++d) {
-      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
-      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
-    }
-    per_piece += n;
-  }
-  limits.check_count(per_piece, "region composed with the trivariate");
+  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
   std::size_t pieces = 1;
   for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
   checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");

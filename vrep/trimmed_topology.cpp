@@ -167,13 +167,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   collect_leaves(trim, leaves);
   const std::size_t nl = leaves.size();
   // Limits before the work, as run_trim checks them.
-  std::size_t per_piece = 0;
-  for (const auto* g : leaves) {
-    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
-    std::size_t n = 1;
-    for (int d = 0; d < 3; ++d) n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
-    per_piece += n;
-  }
+  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
   checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
   const BezierForm<T> F = bezier_form(V, limits);
   struct Piece {
@@ -314,6 +308,15 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       const SolveResult<T> r = solve_system(sys, lo, hi, vo);
       undecided += r.undecided.size();
       const std::size_t n = lo.size();
+      // With every other leaf decided near the root (clear): a V-point when the formula depends
+      // on each meeting sign; otherwise undecided.
+      auto conclude = [&](bool clear, const std::vector<Truth>& fixed, const std::vector<T>& at_lo, const std::vector<T>& at_hi) {
+        if (!clear) ++undecided;
+        else if (corner_of(fixed, which)) {
+          ++found;
+          out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, at_lo, at_hi});
+        }
+      };
       for (const auto& root : r.roots) {
         std::vector<Truth> fixed(nl, Truth::mixed);
         if (root.exact) {
@@ -339,14 +342,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
             fixed[l] = value_truth(detail::bern_value(all[l], u), T(0));
             clear = fixed[l] != Truth::mixed;
           }
-          if (!clear) {
-            ++undecided;
-            continue;
-          }
-          if (corner_of(fixed, which)) {
-            ++found;
-            out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, root.point, root.point});
-          }
+          conclude(clear, fixed, root.point, root.point);
           continue;
         }
         if (!root.unique) {
@@ -371,14 +367,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           fixed[l] = strict_truth(b);
           clear = fixed[l] != Truth::mixed;
         }
-        if (!clear) {
-          ++undecided;
-          continue;
-        }
-        if (corner_of(fixed, which)) {
-          ++found;
-          out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, root.lo, root.hi});
-        }
+        conclude(clear, fixed, root.lo, root.hi);
       }
     };
     for (const auto& p : pieces) {

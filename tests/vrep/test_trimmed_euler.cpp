@@ -11,6 +11,7 @@
 #include "vrep/vmodel.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
+#include "region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -19,21 +20,7 @@ namespace {
 
 BSpline<R> box(R a, R b) { return box_cells<R>({a, a, a}, {b, b, b}).front(); }
 
-/// r^2 - |x - c|^2 >= 0.
-Region<R> ball(std::array<R, 3> c, R r) {
-  Poly3<R> g;
-  R k = r * r;
-  for (int d = 0; d < 3; ++d) {
-    std::array<int, 3> e{}, e2{};
-    e[d] = 1;
-    e2[d] = 2;
-    g.terms[e2] = R(-1);
-    g.terms[e] = R(2) * c[d];
-    k -= c[d] * c[d];
-  }
-  g.terms[{0, 0, 0}] = k;
-  return region_leaf(g, "ball");
-}
+using test::ball;
 
 /// r^2 - (x_a - ca)^2 - (x_b - cb)^2 >= 0: the solid cylinder about a line parallel to the third
 /// axis (a, b = 0, 1: along z).

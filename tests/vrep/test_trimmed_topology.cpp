@@ -8,6 +8,7 @@
 #include "exact/rational.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
+#include "region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -129,14 +130,7 @@ TEST_CASE("vrep trimmed topology: edges on a trimming surface, collapsed edges a
 
 TEST_CASE("vrep trimmed topology: V-points off the edges, on faces and inside, exact") {
   const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
-  auto plane = [](int axis, R at) {  // x_axis - at >= 0
-    Poly3<R> g;
-    std::array<int, 3> e{};
-    e[axis] = 1;
-    g.terms[e] = R(1);
-    g.terms[{0, 0, 0}] = -at;
-    return region_leaf(g, "plane");
-  };
+  const auto plane = test::above;
   // Two planes: their line crosses the faces z = 0 and z = 2 at corners of the cell.
   const auto two = trimmed_topology(V, region_and<R>({plane(0, R(1, 3)), plane(1, R(1, 4))}), 512);
   CHECK(two.face_points == 2);
@@ -160,20 +154,7 @@ TEST_CASE("vrep trimmed topology: V-points off the edges, on faces and inside, e
     }
   // The lens of two balls cut by a plane: its circular edge crosses the plane at two irrational
   // points, y = 1 +- sqrt(1/5).
-  auto ball = [](std::array<R, 3> c, R r) {
-    Poly3<R> g;
-    R k = r * r;
-    for (int d = 0; d < 3; ++d) {
-      std::array<int, 3> e{}, e2{};
-      e[d] = 1;
-      e2[d] = 2;
-      g.terms[e2] = R(-1);
-      g.terms[e] = R(2) * c[d];
-      k -= c[d] * c[d];
-    }
-    g.terms[{0, 0, 0}] = k;
-    return region_leaf(g, "ball");
-  };
+  using test::ball;
   const auto lens = trimmed_topology(V, region_and<R>({ball({R(4, 5), R(1), R(1)}, R(1, 2)), ball({R(6, 5), R(1), R(1)}, R(1, 2)), plane(2, R(11, 10))}), 512);
   CHECK(lens.interior_points == 2);
   CHECK(lens.face_points == 0);
