@@ -406,11 +406,36 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
           // A leaf that vanishes on the whole stratum (a face of the cell on a trimming surface:
           // coplanar contact) is read by its sign just inside the domain, so the closed reading
           // is the closure of the cell's interior there, not a thin sheet.
-          if (!boundary.empty() && boundary.size() + dirs.size() == 3)
+          // At an inner knot (fixed directions inside the domain) the stratum is shared by the
+          // pieces on both sides: the leaf must vanish on each one's part of the domain's face
+          // (or edge) there, and read the same sign inside each.
+          if (!boundary.empty()) {
+            std::vector<int> inner;
+            for (int d = 0; d < 3; ++d)
+              if (state[d] != 0 && std::find_if(boundary.begin(), boundary.end(), [&](const auto& b) { return b.first == d; }) == boundary.end())
+                inner.push_back(d);
             for (std::size_t l = 0; l < H.size(); ++l) {
               if (!all_zero(H[l])) continue;
-              const int near = inward_sign(G[k][l], state, boundary);
-              if (near == 0) {
+              int near = 0;
+              bool ok = true;
+              for (std::size_t mask = 0; mask < (std::size_t(1) << inner.size()) && ok; ++mask) {
+                auto at = idx;
+                auto st = state;
+                for (std::size_t q = 0; q < inner.size(); ++q)
+                  if ((mask >> q) & 1) {  // the piece below the knot: the stratum is at its end
+                    --at[inner[q]];
+                    st[inner[q]] = 2;
+                  }
+                const auto& GP = G[at[0] + n[0] * (at[1] + n[1] * at[2])][l];
+                Bern<T> carrier = GP;  // the leaf on this piece's part of the boundary stratum's carrier
+                for (int d = 2; d >= 0; --d)
+                  for (const auto& [bd, bs] : boundary)
+                    if (bd == d) carrier = detail::bern_face(carrier, d, bs);
+                const int here = all_zero(carrier) ? inward_sign(GP, st, boundary) : 0;
+                ok = here != 0 && (near == 0 || near == here);
+                near = here;
+              }
+              if (!ok) {
                 ++unresolved;
                 continue;
               }
@@ -420,6 +445,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
               c.c = {T(near)};
               H[l] = std::move(c);
             }
+          }
           std::array<int, 3> level{};
           const long c = run.chi(H, dirs, lo, hi, level, false);
           param += c;

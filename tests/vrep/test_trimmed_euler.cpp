@@ -8,6 +8,7 @@
 
 #include "exact/rational.hpp"
 #include "spline/evaluate.hpp"
+#include "spline/insert.hpp"
 #include "vrep/vmodel.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
@@ -419,4 +420,22 @@ TEST_CASE("vrep trimmed euler: random balls and rods, overlapping, against the v
   }
   INFO("undecided " << undecided);
   CHECK(checked >= 12);
+}
+
+TEST_CASE("vrep trimmed euler: coplanar contact read from inside, across inner knots too") {
+  // A post B = [1/2, 3/2]^2 x [0, 2] standing in a plate A = [0, 2]^2 x [0, 1], their bottom faces
+  // coplanar: B - A is the post's upper part (chi 1), not that plus a sheet at z = 0. With an inner
+  // knot in the post's trivariate the bottom face is split by a knot line, which must not count
+  // either.
+  auto B = box_cells<R>({R(1, 2), R(1, 2), R(0)}, {R(3, 2), R(3, 2), R(2)}).front();
+  const auto A = box_region<R>({R(0), R(0), R(0)}, {R(2), R(2), R(1)});
+  for (const auto& V : {B, refine_knots(B, 0, std::vector<R>{R(1, 3)}), refine_knots(refine_knots(B, 0, std::vector<R>{R(1, 3)}), 1, std::vector<R>{R(3, 4)})}) {
+    const auto e = trimmed_euler(V, region_not(A));
+    REQUIRE(e.decided);
+    CHECK(e.chi == 1);
+    CHECK(e.interior_chi_c == -1);
+    CHECK(e.duality);
+    CHECK(e.resolved_contacts > 0);
+    CHECK(e.unresolved_contacts == 0);
+  }
 }
