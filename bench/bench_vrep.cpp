@@ -72,14 +72,10 @@ void boolean_step(benchmark::State& st, const std::string& name) {
 
 /// Trimmed Booleans: Figure 4, the cone r 1 to 1/2 (h 2) united with a cylinder r 1/3 along x at
 /// z = 1; exact, and in double with eps 1e-12 on the rounded models.
-TrimmedModel<Rational> placed(std::vector<BSpline<Rational>> cells, const Region<Rational>& region, int axis, std::vector<Rational> at) {
-  for (auto& V : cells) V = place_trivariate(V, axis, at);
-  return as_trimmed(glue(cells), place_region(region, axis, at));
-}
 void trimmed_step(benchmark::State& st, bool exact) {
   using R = Rational;
-  const auto cone = placed(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-  const auto cyl = placed(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
   std::size_t cells = 0;
   if (exact)
     for (auto _ : st) cells = trimmed_boolean(cone, cyl, BooleanOp::unite).cells.size();
@@ -94,8 +90,8 @@ void trimmed_step(benchmark::State& st, bool exact) {
 /// (model_euler), exact or on the rounded model.
 void euler_step(benchmark::State& st, bool exact) {
   using R = Rational;
-  const auto cone = placed(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-  const auto cyl = placed(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
   const auto U = trimmed_boolean(cone, cyl, BooleanOp::unite);
   long chi = 0;
   auto run = [&](const auto& M) {

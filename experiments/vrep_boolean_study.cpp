@@ -50,11 +50,6 @@ std::string sci(double v) {
   return o.str();
 }
 
-TrimmedModel<Rational> exact_primitive(std::vector<BSpline<Rational>> cells, const Region<Rational>& region, int axis, const std::vector<Rational>& at) {
-  for (auto& V : cells) V = place_trivariate(V, axis, at);
-  return as_trimmed(glue(cells), place_region(region, axis, at));
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -87,8 +82,8 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   std::vector<Case> cases;
   // Figure 4: cone union a cylinder through it.
   {
-    const auto cone = exact_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-    const auto cyl = exact_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+    const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+    const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
     Case c{"Figure 4: cone (r 1 to 1/2, h 2) union cylinder (r 1/3, along x at z = 1)", {}};
     auto t0 = std::chrono::steady_clock::now();
     c.model = trimmed_boolean(cone, cyl, BooleanOp::unite);
@@ -112,10 +107,10 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   }
   // Figure 15's kind of solid: a base plate and a post united, then two holes subtracted.
   {
-    const auto base = exact_primitive(box_cells<R>({-2, -2, 0}, {2, 2, 1}), box_region<R>({-2, -2, 0}, {2, 2, 1}), 2, {R(0), R(0), R(0)});
-    const auto post = exact_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
-    const auto hole1 = exact_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
-    const auto hole2 = exact_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
+    const auto base = placed_primitive(box_cells<R>({-2, -2, 0}, {2, 2, 1}), box_region<R>({-2, -2, 0}, {2, 2, 1}), 2, {R(0), R(0), R(0)});
+    const auto post = placed_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
+    const auto hole1 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
+    const auto hole2 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
     Case c{"Figure 15's kind: (plate union post) - hole - hole", {}};
     auto t0 = std::chrono::steady_clock::now();
     c.model = trimmed_boolean(trimmed_boolean(trimmed_boolean(base, post, BooleanOp::unite), hole1, BooleanOp::subtract), hole2, BooleanOp::subtract);
@@ -216,7 +211,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         "count as 0). Exact arithmetic decides every g it can certify with the budget and refuses the rest; the float run "
         "decides by eps.\n\n| g | exact | double, eps 1e-12 | double, eps 1e-6 |\n|---|---|---|---|\n";
   {
-    const auto cyl = exact_primitive(cylinder_cells<R>(R(1), R(2)), cylinder_region<R>(R(1), R(2)), 2, {R(0), R(0), R(0)});
+    const auto cyl = placed_primitive(cylinder_cells<R>(R(1), R(2)), cylinder_region<R>(R(1), R(2)), 2, {R(0), R(0), R(0)});
     auto verdict = [](auto&& run) -> std::string {
       try {
         const auto M = run();
@@ -232,7 +227,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       for (int k : {4, 10, 20, 30, 40}) {
         if (sign == 0 && k != 4) continue;
         const R g = sign == 0 ? R(0) : R(sign) / R(1LL << k);
-        const auto box = exact_primitive(box_cells<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}),
+        const auto box = placed_primitive(box_cells<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}),
                                          box_region<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}), 2, {R(0), R(0), R(0)});
         const std::string ex = verdict([&] { return trimmed_boolean(cyl, box, BooleanOp::intersect); });
         const std::string d12 = verdict([&] {

@@ -177,6 +177,7 @@ const char* to_string(Regularity r) {
   template T poly_at(const Poly3<T>&, const T*);                                                                     \
   template Truth classify_point(const Region<T>&, const std::vector<T>&, const T&);                                  \
   template TrimmedModel<T> as_trimmed(const VModel<T>&, Region<T>);                                                  \
+  template TrimmedModel<T> placed_primitive(std::vector<BSpline<T>>, const Region<T>&, int, const std::vector<T>&);    \
   template const char* to_string<T>(typename CellClass<T>::Kind);                                                    \
   template CellClass<T> classify_cell(const BSpline<T>&, const Region<T>&, const TrimOptions&, const T&, const Limits&); \
   template TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>&, const TrimmedModel<T>&, BooleanOp, Blend, const TrimOptions&, \

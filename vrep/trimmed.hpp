@@ -140,6 +140,11 @@ TrimmedModel<double> trimmed_to_double(const TrimmedModel<Rational>& M);
 template <class T>
 TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region);
 
+/// A primitive placed (place_trivariate on its cells, place_region on its region) and glued, as
+/// untrimmed cells: an operand for trimmed_boolean.
+template <class T>
+TrimmedModel<T> placed_primitive(std::vector<BSpline<T>> cells, const Region<T>& region, int axis, const std::vector<T>& offset);
+
 struct TrimOptions {
   std::size_t max_boxes = 4096;  // per cell: the subdivision budget of the classification
 };

@@ -151,26 +151,15 @@ bool sense_of(const Nnf& n, const std::vector<Signs>& s, bool strict, const std:
 /// the mirror; 0: all zero; 2: otherwise.
 template <class T>
 int monotone(const Bern<T>& D) {
-  bool nonneg = true, nonpos = true, any = false;
-  for (const auto& x : D.c) {
-    const bool p = T(0) < x, n = x < T(0);
-    nonneg = nonneg && !n;
-    nonpos = nonpos && !p;
-    any = any || p || n;
-  }
-  if (!any) return 0;
-  return nonneg ? 1 : nonpos ? -1 : 2;
+  const Signs s = signs_of(D);
+  if (s.nonneg && s.nonpos) return 0;
+  return s.nonneg ? 1 : s.nonpos ? -1 : 2;
 }
 
 template <class T>
 double approx(const T& x) {
   if constexpr (std::is_same_v<T, double>) return x;
   else return to_double(x);
-}
-
-template <class T>
-bool all_zero(const Bern<T>& G) {
-  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
 }
 
 /// The sign of a leaf (G on a piece) just inside the domain next to a stratum of the piece's
@@ -290,27 +279,15 @@ class EulerRun {
 template <class T>
 TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options, const Limits& limits) {
   require_jacobian_input(V, limits);
-  for (int d = 0; d < 3; ++d)
-    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
-      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
-                            "clamp the trivariate first");
+  require_clamped(V);
   if (options.max_cells < 1) throw ValidationError("cells", "must be at least 1", "give a positive cell budget");
   if (options.max_level < 1 || options.max_level > 60) throw ValidationError("level", "must be in 1..60", "give a halving depth in 1..60");
-  if (V.is_rational())
-    for (const auto& w : V.weights)
-      if (!(T(0) < w))
-        throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator", "give positive weights");
-  for (int d = 0; d < 3; ++d) {
-    const auto& k = V.knots[d];
-    for (std::size_t i = 0; i < k.size();) {
-      std::size_t j = i;
-      while (j < k.size() && k[j] == k[i]) ++j;
-      if (V.domain_lo(d) < k[i] && k[i] < V.domain_hi(d) && static_cast<int>(j - i) > V.degrees[d])
+  require_positive_weights(V);
+  for (int d = 0; d < 3; ++d)
+    for (const T& b : breakpoints(V.knots[d], V.degrees[d], V.count(d)))
+      if (V.domain_lo(d) < b && b < V.domain_hi(d) && multiplicity(V.knots[d], b) > static_cast<std::size_t>(V.degrees[d]))
         throw DomainError("trivariate.knots", "has an inner knot of multiplicity above the degree: the trivariate jumps there and its cell is not a closed set",
                           "give a trivariate continuous across its inner knots");
-      i = j;
-    }
-  }
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   // Limits before the work, as the classification checks them.
@@ -341,7 +318,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
       face_kept[d][s] = keep;
       if (!keep) ++out.identified_faces;
     }
-  std::map<std::array<int, 4>, bool> edge_kept;  // (along, side of the lower other, side of the upper other, 0)
+  std::array<std::array<std::array<bool, 2>, 2>, 3> edge_kept{};  // [along][side of the lower other][side of the upper other]
   std::vector<BSpline<T>> kept_edges;
   for (int along = 0; along < 3; ++along)
     for (int s1 = 0; s1 < 2; ++s1)
@@ -355,7 +332,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
         for (const auto& K : kept_edges)
           if (keep && same_curve(K, C, T(0), true, limits)) keep = false;
         if (keep) kept_edges.push_back(C);
-        edge_kept[{along, s1, s2, 0}] = keep;
+        edge_kept[along][s1][s2] = keep;
         if (!keep) ++out.identified_edges;
       }
   std::array<bool, 8> corner_kept{};
@@ -371,104 +348,109 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   }
 
   // The strata of the piece grid: per direction, the open segment (state 0), its start (1) or, for
-  // the last segment, its end (2).
+  // the last segment, its end (2); each with its leaves, box, place on the domain's boundary.
+  struct Stratum {
+    std::vector<Bern<T>> H;
+    std::vector<int> dirs;
+    std::array<T, 3> lo, hi;
+    bool inside = false;  // in the open domain (the interior's chi_c counts it)
+    bool kept = true;     // counted in the image
+  };
+  std::vector<Stratum> strata;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const std::array<std::size_t, 3> idx{k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
+    for (int st = 0; st < 27; ++st) {
+      const std::array<int, 3> state{st % 3, (st / 3) % 3, st / 9};
+      bool valid = true;
+      for (int d = 0; d < 3; ++d) valid = valid && (state[d] != 2 || idx[d] + 1 == n[d]);
+      if (!valid) continue;
+      Stratum z;
+      z.H = G[k];
+      std::vector<std::pair<int, int>> boundary;  // (direction, side) of the domain it lies on
+      for (int d = 0; d < 3; ++d) {
+        z.lo[d] = F.breaks[d][idx[d]];
+        z.hi[d] = F.breaks[d][idx[d] + 1];
+        if (state[d] == 0) z.dirs.push_back(d);
+        else {
+          (state[d] == 1 ? z.hi : z.lo)[d] = state[d] == 1 ? z.lo[d] : z.hi[d];
+          if (state[d] == 1 && idx[d] == 0) boundary.push_back({d, 0});
+          if (state[d] == 2) boundary.push_back({d, 1});
+        }
+      }
+      // Fix the directions from the last: direction d is then still at index d of every leaf.
+      for (int d = 2; d >= 0; --d)
+        if (state[d] != 0)
+          for (auto& h : z.H) h = detail::bern_face(h, d, state[d] == 2 ? 1 : 0);
+      // A leaf that vanishes on the whole stratum (a face of the cell on a trimming surface:
+      // coplanar contact) is read by its sign just inside the domain, so the closed reading is
+      // the closure of the cell's interior there, not a thin sheet. At an inner knot (fixed
+      // directions inside the domain) the stratum is shared by the pieces on both sides: the
+      // leaf must vanish on each one's part of the domain's face (or edge) there, and read the
+      // same sign inside each.
+      if (!boundary.empty()) {
+        std::vector<int> inner;
+        for (int d = 0; d < 3; ++d)
+          if (state[d] != 0 && std::find_if(boundary.begin(), boundary.end(), [&](const auto& b) { return b.first == d; }) == boundary.end())
+            inner.push_back(d);
+        for (std::size_t l = 0; l < z.H.size(); ++l) {
+          if (!all_zero(z.H[l])) continue;
+          int near = 0;
+          bool ok = true;
+          for (std::size_t mask = 0; mask < (std::size_t(1) << inner.size()) && ok; ++mask) {
+            auto at = idx;
+            auto sp = state;
+            for (std::size_t q = 0; q < inner.size(); ++q)
+              if ((mask >> q) & 1) {  // the piece below the knot: the stratum is at its end
+                --at[inner[q]];
+                sp[inner[q]] = 2;
+              }
+            const auto& GP = G[at[0] + n[0] * (at[1] + n[1] * at[2])][l];
+            Bern<T> carrier = GP;  // the leaf on this piece's part of the boundary stratum's carrier
+            for (int d = 2; d >= 0; --d)
+              for (const auto& [bd, bs] : boundary)
+                if (bd == d) carrier = detail::bern_face(carrier, d, bs);
+            const int here = all_zero(carrier) ? inward_sign(GP, sp, boundary) : 0;
+            ok = here != 0 && (near == 0 || near == here);
+            near = here;
+          }
+          if (!ok) {
+            ++out.unresolved_contacts;
+            continue;
+          }
+          ++out.resolved_contacts;
+          Bern<T> c;
+          c.deg.assign(std::max<std::size_t>(z.dirs.size(), 1), 0);
+          c.c = {T(near)};
+          z.H[l] = std::move(c);
+        }
+      }
+      z.inside = boundary.empty();
+      if (boundary.size() == 1) z.kept = face_kept[boundary[0].first][boundary[0].second];
+      else if (boundary.size() == 2) z.kept = edge_kept[3 - boundary[0].first - boundary[1].first][boundary[0].second][boundary[1].second];
+      else if (boundary.size() == 3) z.kept = corner_kept[boundary[0].second | (boundary[1].second << 1) | (boundary[2].second << 2)];
+      strata.push_back(std::move(z));
+    }
+  }
+
+  // chi_c summed over the strata; a split fraction that leaves a cell undecided is retried.
   const std::vector<T> fractions{T(1) / T(2), T(7) / T(16), T(13) / T(32)};
   for (const T& split : fractions) {
     EulerRun<T> run(f, leaves.size(), options.max_cells, options.max_level, split);
     try {
       long param = 0, image = 0, interior = 0;
-      std::size_t resolved = 0, unresolved = 0;
-      for (std::size_t k = 0; k < F.size(); ++k) {
-        const std::array<std::size_t, 3> idx{k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
-        for (int st = 0; st < 27; ++st) {
-          const std::array<int, 3> state{st % 3, (st / 3) % 3, st / 9};
-          bool valid = true;
-          for (int d = 0; d < 3; ++d) valid = valid && (state[d] != 2 || idx[d] + 1 == n[d]);
-          if (!valid) continue;
-          std::vector<Bern<T>> H = G[k];
-          std::vector<int> dirs;
-          std::array<T, 3> lo, hi;
-          std::vector<std::pair<int, int>> boundary;  // (direction, side) of the domain it lies on
-          for (int d = 0; d < 3; ++d) {
-            lo[d] = F.breaks[d][idx[d]];
-            hi[d] = F.breaks[d][idx[d] + 1];
-            if (state[d] == 0) dirs.push_back(d);
-            else {
-              (state[d] == 1 ? hi : lo)[d] = state[d] == 1 ? lo[d] : hi[d];
-              if (state[d] == 1 && idx[d] == 0) boundary.push_back({d, 0});
-              if (state[d] == 2) boundary.push_back({d, 1});
-            }
-          }
-          // Fix the directions from the last: direction d is then still at index d of every leaf.
-          for (int d = 2; d >= 0; --d)
-            if (state[d] != 0)
-              for (auto& h : H) h = detail::bern_face(h, d, state[d] == 2 ? 1 : 0);
-          // A leaf that vanishes on the whole stratum (a face of the cell on a trimming surface:
-          // coplanar contact) is read by its sign just inside the domain, so the closed reading
-          // is the closure of the cell's interior there, not a thin sheet.
-          // At an inner knot (fixed directions inside the domain) the stratum is shared by the
-          // pieces on both sides: the leaf must vanish on each one's part of the domain's face
-          // (or edge) there, and read the same sign inside each.
-          if (!boundary.empty()) {
-            std::vector<int> inner;
-            for (int d = 0; d < 3; ++d)
-              if (state[d] != 0 && std::find_if(boundary.begin(), boundary.end(), [&](const auto& b) { return b.first == d; }) == boundary.end())
-                inner.push_back(d);
-            for (std::size_t l = 0; l < H.size(); ++l) {
-              if (!all_zero(H[l])) continue;
-              int near = 0;
-              bool ok = true;
-              for (std::size_t mask = 0; mask < (std::size_t(1) << inner.size()) && ok; ++mask) {
-                auto at = idx;
-                auto st = state;
-                for (std::size_t q = 0; q < inner.size(); ++q)
-                  if ((mask >> q) & 1) {  // the piece below the knot: the stratum is at its end
-                    --at[inner[q]];
-                    st[inner[q]] = 2;
-                  }
-                const auto& GP = G[at[0] + n[0] * (at[1] + n[1] * at[2])][l];
-                Bern<T> carrier = GP;  // the leaf on this piece's part of the boundary stratum's carrier
-                for (int d = 2; d >= 0; --d)
-                  for (const auto& [bd, bs] : boundary)
-                    if (bd == d) carrier = detail::bern_face(carrier, d, bs);
-                const int here = all_zero(carrier) ? inward_sign(GP, st, boundary) : 0;
-                ok = here != 0 && (near == 0 || near == here);
-                near = here;
-              }
-              if (!ok) {
-                ++unresolved;
-                continue;
-              }
-              ++resolved;
-              Bern<T> c;
-              c.deg.assign(std::max<std::size_t>(dirs.size(), 1), 0);
-              c.c = {T(near)};
-              H[l] = std::move(c);
-            }
-          }
-          std::array<int, 3> level{};
-          const long c = run.chi(H, dirs, lo, hi, level, false);
-          param += c;
-          bool kept = true;
-          if (boundary.size() == 1) kept = face_kept[boundary[0].first][boundary[0].second];
-          else if (boundary.size() == 2) {
-            const int along = 3 - boundary[0].first - boundary[1].first;
-            kept = edge_kept[{along, boundary[0].second, boundary[1].second, 0}];
-          } else if (boundary.size() == 3)
-            kept = corner_kept[boundary[0].second | (boundary[1].second << 1) | (boundary[2].second << 2)];
-          if (kept) image += c;
-          if (boundary.empty()) interior += run.chi(H, dirs, lo, hi, level, true);
-        }
+      for (const auto& z : strata) {
+        const long c = run.chi(z.H, z.dirs, z.lo, z.hi, {}, false);
+        param += c;
+        if (z.kept) image += c;
+        if (z.inside) interior += run.chi(z.H, z.dirs, z.lo, z.hi, {}, true);
       }
       out.decided = true;
-      out.resolved_contacts = resolved;
-      out.unresolved_contacts = unresolved;
       out.chi = param;
       out.image_chi = image;
       out.interior_chi_c = interior;
       out.duality = interior == -param;
       out.split = split;
-      out.cells = run.cells();
+      out.cells += run.cells();
       out.undecided_reason.clear();
       return out;
     } catch (const Undecided& u) {
@@ -489,7 +471,6 @@ TrimmedEuler<T> region_euler(const Region<T>& R, const std::vector<T>& lo, const
 
 template <class T>
 TrimmedEuler<T> model_euler(const TrimmedModel<T>& M, const EulerOptions& options, const Limits& limits) {
-  if (M.trivariates.empty()) throw ValidationError("model", "has no trivariates", "give a model with cells");
   std::vector<T> lo(3), hi(3);
   bool first = true;
   for (const auto& c : M.cells) {

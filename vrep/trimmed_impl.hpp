@@ -151,6 +151,28 @@ Truth coefficient_truth(const Bern<T>& G, const T& eps) {
   return nonneg ? Truth::in : Truth::mixed;
 }
 
+/// Positive weights: then the sign of g o T is the sign of the composed numerator W^k g(X/W, ...).
+template <class T>
+void require_positive_weights(const BSpline<T>& V) {
+  for (const auto& w : V.weights)
+    if (!(T(0) < w))
+      throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator", "give positive weights");
+}
+
+/// Clamped in every direction, so that the faces and edges of V's domain are layers of its net.
+template <class T>
+void require_clamped(const BSpline<T>& V) {
+  for (int d = 0; d < V.dim(); ++d)
+    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
+      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
+                            "clamp the trivariate first");
+}
+
+template <class T>
+bool all_zero(const Bern<T>& G) {
+  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
+}
+
 /// Limits before the work: each leaf composed with V has prod (k p_d + 1) coefficients per Bezier
 /// piece; all leaves together are bounded like one spline's control points. Returns that count.
 template <class T>
@@ -249,10 +271,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   const BSpline<T>& V = refined ? refined->first : V0;
   const int power = field ? 4 : 5;
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
-  if (V.is_rational())
-    for (const auto& w : V.weights)
-      if (!(T(0) < w)) throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator",
-                                         "give positive weights");
+  require_positive_weights(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
@@ -622,6 +641,12 @@ BSpline<T> place_trivariate(const BSpline<T>& V, int axis, const std::vector<T>&
   for (std::size_t i = 0; i < V.size(); ++i)
     for (int j = 0; j < 3; ++j) out.points[i * V.q + j] = V.points[i * V.q + (j + s) % 3] + offset[j];
   return out;
+}
+
+template <class T>
+TrimmedModel<T> placed_primitive(std::vector<BSpline<T>> cells, const Region<T>& region, int axis, const std::vector<T>& offset) {
+  for (auto& V : cells) V = place_trivariate(V, axis, offset);
+  return as_trimmed(glue(cells), place_region(region, axis, offset));
 }
 
 template <class T>

@@ -29,11 +29,6 @@ Truth strict_truth(const Bern<T>& G) {
   return pos ? Truth::in : neg ? Truth::out : Truth::mixed;
 }
 
-template <class T>
-bool all_zero(const Bern<T>& G) {
-  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
-}
-
 /// The formula's truth with leaf k forced to `forced`.
 template <class T>
 Truth forced_truth(const Region<T>& R, std::vector<Truth> leaf, std::size_t k, Truth forced) {
@@ -156,13 +151,8 @@ template <class T>
 TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
   require_jacobian_input(V, limits);
   if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
-  for (int d = 0; d < 3; ++d)
-    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
-      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
-                            "clamp the trivariate first");
-  if (V.is_rational())
-    for (const auto& w : V.weights)
-      if (!(T(0) < w)) throw DomainError("trivariate.weights", "has a weight that is not positive", "give positive weights");
+  require_clamped(V);
+  require_positive_weights(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   const std::size_t nl = leaves.size();
@@ -301,10 +291,13 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       }
       return true;
     };
-    // The roots of the leaves `which` (Bern over the unit box standing for [lo, hi], dims given)
-    // and the decision at each; `others` the remaining leaves on the same box.
+    // The roots of the leaves `which` (Bern over the unit box standing for [lo, hi]) and the
+    // decision at each; `all` every leaf on the same box; (dir, side) the face of V's domain, or
+    // dir = -1 inside.
     auto meet = [&](const std::vector<Bern<T>>& sys, const std::vector<std::size_t>& which, const std::vector<Bern<T>>& all, const std::vector<T>& lo,
-                    const std::vector<T>& hi, std::size_t& found, std::size_t& undecided) {
+                    const std::vector<T>& hi, int dir, int side) {
+      std::size_t& found = dir < 0 ? out.interior_points : out.face_points;
+      std::size_t& undecided = out.points_undecided;
       const SolveResult<T> r = solve_system(sys, lo, hi, vo);
       undecided += r.undecided.size();
       const std::size_t n = lo.size();
@@ -314,7 +307,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         if (!clear) ++undecided;
         else if (corner_of(fixed, which)) {
           ++found;
-          out.inner_points.push_back({n == 3 ? -1 : 0, -1, which, at_lo, at_hi});
+          out.inner_points.push_back({dir, side, which, at_lo, at_hi});
         }
       };
       for (const auto& root : r.roots) {
@@ -386,12 +379,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           for (std::size_t i = 0; i < nl; ++i)
             for (std::size_t j = i + 1; j < nl; ++j) {
               if (all_zero(H[i]) || all_zero(H[j]) || strict_truth(H[i]) != Truth::mixed || strict_truth(H[j]) != Truth::mixed) continue;
-              const std::size_t before = out.inner_points.size();
-              meet({H[i], H[j]}, {i, j}, H, lo, hi, out.face_points, out.points_undecided);
-              for (std::size_t q = before; q < out.inner_points.size(); ++q) {
-                out.inner_points[q].dir = d;
-                out.inner_points[q].side = sd;
-              }
+              meet({H[i], H[j]}, {i, j}, H, lo, hi, d, sd);
             }
         }
       // Inside: three leaves.
@@ -400,7 +388,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         for (std::size_t j = i + 1; j < nl; ++j)
           for (std::size_t k = j + 1; k < nl; ++k) {
             if (strict_truth(p.G[i]) != Truth::mixed || strict_truth(p.G[j]) != Truth::mixed || strict_truth(p.G[k]) != Truth::mixed) continue;
-            meet({p.G[i], p.G[j], p.G[k]}, {i, j, k}, p.G, lo, hi, out.interior_points, out.points_undecided);
+            meet({p.G[i], p.G[j], p.G[k]}, {i, j, k}, p.G, lo, hi, -1, -1);
           }
     }
   }

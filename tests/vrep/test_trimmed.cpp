@@ -25,9 +25,7 @@ const R pi_lo = R(314159265) / R(100000000), pi_hi = R(314159266) / R(100000000)
 TrimmedModel<R> box(std::vector<R> lo, std::vector<R> hi) { return as_trimmed(glue(box_cells<R>(lo, hi)), box_region<R>(lo, hi)); }
 
 TrimmedModel<R> cylinder(const R& r, const R& h, int axis, std::vector<R> at) {
-  auto cells = cylinder_cells<R>(r, h);
-  for (auto& V : cells) V = place_trivariate(V, axis, at);
-  return as_trimmed(glue(cells), place_region(cylinder_region<R>(r, h), axis, at));
+  return placed_primitive(cylinder_cells<R>(r, h), cylinder_region<R>(r, h), axis, at);
 }
 
 VolumeEnclosure<R> volume(const TrimmedModel<R>& M, std::size_t boxes = 4096) {

@@ -201,11 +201,6 @@ TEST_CASE("vrep trimmed euler: hostile input refused before the work") {
 
 namespace {
 
-TrimmedModel<R> primitive(std::vector<BSpline<R>> cells, const Region<R>& region, int axis, const std::vector<R>& at) {
-  for (auto& V : cells) V = place_trivariate(V, axis, at);
-  return as_trimmed(glue(cells), place_region(region, axis, at));
-}
-
 /// An independent estimate: the Euler characteristic V - E + F - C of the union of the closed
 /// parameter voxels (n per direction) whose centres lie in the cell (double evaluation and
 /// classification), which equals the cell's once the voxels resolve its features.
@@ -255,12 +250,12 @@ long voxel_chi(const BSpline<double>& V, const Region<double>& trim, int n) {
 }  // namespace
 
 TEST_CASE("vrep trimmed euler: the cells of Figures 4 and 15 agree with their voxel complexes") {
-  const auto cone = primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-  const auto cyl = primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
-  const auto base = primitive(box_cells<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
-  const auto post = primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
-  const auto hole1 = primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
-  const auto hole2 = primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
+  const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  const auto base = placed_primitive(box_cells<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
+  const auto post = placed_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
+  const auto hole1 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
+  const auto hole2 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
   const std::vector<TrimmedModel<R>> models{
       trimmed_boolean(cone, cyl, BooleanOp::unite),
       trimmed_boolean(trimmed_boolean(trimmed_boolean(base, post, BooleanOp::unite), hole1, BooleanOp::subtract), hole2, BooleanOp::subtract)};
@@ -281,8 +276,8 @@ TEST_CASE("vrep trimmed euler: the cells of Figures 4 and 15 agree with their vo
 }
 
 TEST_CASE("vrep trimmed euler: the model after a Boolean, with inclusion-exclusion") {
-  const auto cone = primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-  const auto cyl = primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
   auto chi = [](const TrimmedModel<R>& M) {
     const auto e = model_euler(M);
     INFO(e.undecided_reason);
@@ -300,18 +295,18 @@ TEST_CASE("vrep trimmed euler: the model after a Boolean, with inclusion-exclusi
   CHECK(u == 1);
   CHECK(amb == 0);  // the cone with a tunnel
   // Figure 15's kind: two through-holes, genus 2.
-  const auto base = primitive(box_cells<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
-  const auto post = primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
-  const auto hole = primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
-  const auto hole2 = primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
+  const auto base = placed_primitive(box_cells<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(-2), R(-2), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
+  const auto post = placed_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
+  const auto hole = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
+  const auto hole2 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
   const auto P = trimmed_boolean(base, post, BooleanOp::unite);
   CHECK(chi(P) == 1);
   const auto P1 = trimmed_boolean(P, hole, BooleanOp::subtract);
   CHECK(chi(P1) == 0);
   CHECK(chi(trimmed_boolean(P1, hole2, BooleanOp::subtract)) == -1);
   // Figure 3's L: O1 = [0,2]x[0,1]x[0,1], O2 = [1,2]x[0,2]x[0,1], faces partly coplanar.
-  const auto O1 = primitive(box_cells<R>({R(0), R(0), R(0)}, {R(2), R(1), R(1)}), box_region<R>({R(0), R(0), R(0)}, {R(2), R(1), R(1)}), 2, {R(0), R(0), R(0)});
-  const auto O2 = primitive(box_cells<R>({R(1), R(0), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(1), R(0), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
+  const auto O1 = placed_primitive(box_cells<R>({R(0), R(0), R(0)}, {R(2), R(1), R(1)}), box_region<R>({R(0), R(0), R(0)}, {R(2), R(1), R(1)}), 2, {R(0), R(0), R(0)});
+  const auto O2 = placed_primitive(box_cells<R>({R(1), R(0), R(0)}, {R(2), R(2), R(1)}), box_region<R>({R(1), R(0), R(0)}, {R(2), R(2), R(1)}), 2, {R(0), R(0), R(0)});
   CHECK(chi(trimmed_boolean(O1, O2, BooleanOp::unite)) == 1);
   CHECK(chi(trimmed_boolean(O1, O2, BooleanOp::intersect)) == 1);
 }
