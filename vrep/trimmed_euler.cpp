@@ -474,6 +474,9 @@ TrimmedEuler<T> model_euler(const TrimmedModel<T>& M, const EulerOptions& option
   std::vector<T> lo(3), hi(3);
   bool first = true;
   for (const auto& c : M.cells) {
+    if (c.trivariate >= M.trivariates.size())
+      throw ValidationError("model.cells", "names trivariate " + std::to_string(c.trivariate) + " of " + std::to_string(M.trivariates.size()),
+                            "give each cell the index of one of the model's trivariates");
     const auto b = control_bounds(M.trivariates[c.trivariate]);
     for (int d = 0; d < 3; ++d) {
       if (first || b[d] < lo[d]) lo[d] = b[d];

@@ -197,6 +197,15 @@ TEST_CASE("vrep trimmed euler: hostile input refused before the work") {
   const auto e = trimmed_euler(V, ball({R(1), R(1), R(1)}, R(1, 2)), EulerOptions{5, 24});
   CHECK_FALSE(e.decided);
   CHECK(e.undecided_reason.find("budget") != std::string::npos);
+  // A model without cells, and one whose cell names a trivariate it does not hold.
+  TrimmedModel<R> M;
+  CHECK_THROWS_AS(model_euler(M), ValidationError);
+  M.cells.emplace_back();
+  M.cells.back().trivariate = 0;
+  CHECK_THROWS_AS(model_euler(M), ValidationError);
+  M.trivariates.push_back(V);
+  M.cells.back().trivariate = 1;
+  CHECK_THROWS_AS(model_euler(M), ValidationError);
 }
 
 namespace {
