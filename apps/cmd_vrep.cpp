@@ -44,6 +44,29 @@ Json euler_json(const TrimmedEuler<Rational>& e) {
                                     : "the closed and open readings disagree: thin parts, cracks or non-manifold points; chi of the closed set only"}};
 }
 
+/// The V-curves between two trimming surfaces as JSON: per pair of leaves, arcs and loops or the
+/// reason it is undecided.
+Json curves_json(const TrimmedCurves<Rational>& c) {
+  Json pairs = Json::array();
+  for (const auto& p : c.pairs) {
+    Json x{{"leaves", {p.i, p.j}}, {"decided", p.decided}};
+    if (p.decided) {
+      x["arcs"] = p.arcs;
+      x["loops"] = p.loops;
+      x["ends_on_faces"] = p.ends_on_faces;
+      x["ends_at_v_points"] = p.ends_at_points;
+      x["ends_on_identified_faces"] = p.ends_on_identified_faces;
+      x["boxes"] = p.boxes;
+      x["split_fraction"] = to_fraction_string(p.split);
+    } else
+      x["reason"] = p.undecided_reason;
+    pairs.push_back(x);
+  }
+  return Json{{"decided", c.decided}, {"arcs", c.arcs}, {"loops", c.loops}, {"pairs", pairs},
+              {"verdict", c.decided ? "exact: certified graph of the curves (counts in the trivariate's parameters)"
+                                    : "undecided for some pair (reason given); the totals count the decided pairs only"}};
+}
+
 }  // namespace
 
 
@@ -527,6 +550,7 @@ Commands add_vrep(CLI::App& app) {
                                 {"face_v_points", t.face_points},
                                 {"interior_v_points", t.interior_points},
                                 {"v_points_undecided", t.points_undecided},
+                                {"v_curves_between_trimming_surfaces", curves_json(trimmed_curves(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))},
                                 {"euler", euler_json(trimmed_euler(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))}});
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
@@ -536,8 +560,9 @@ Commands add_vrep(CLI::App& app) {
                                         "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
                                         "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "
                                         "region), trusted where dual (the open set's chi_c is -chi); lower bounds (certified): half-V-surfaces "
-                                        "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed); not built: "
-                                        "V-curves between two trimming surfaces"}}
+                                        "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed); exact where decided: "
+                                        "V-curves between two trimming surfaces (arcs and closed loops per pair of trimming surfaces, in the "
+                                        "trivariate's parameters)"}}
                               .dump()
                        << "\n";
              return 0;

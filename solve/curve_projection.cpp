@@ -267,7 +267,12 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
         counts = counts && sl.certified;
         out.slices.push_back(sl);
         // Trace each root up to ghi and down to glo in double (local coordinates of the box).
-        const double tlo = (to_double(glo) - t0) / (t1 - t0), thi = (to_double(ghi) - t0) / (t1 - t0), ts = to_double(tl);
+        // A special point's box may be refined to 2^-60: Newton in double cannot follow a branch
+        // into a fold that close (its Jacobian is singular there), so the tracing stops 2^-24 of
+        // the box short of a cluster; the joins below take the nearest point anyway.
+        const double margin = std::ldexp(1.0, -24), ts = to_double(tl);
+        const double tlo = std::min(ts, (to_double(glo) - t0) / (t1 - t0) + (g == 0 ? 0.0 : margin)),
+                     thi = std::max(ts, (to_double(ghi) - t0) / (t1 - t0) - (g == clusters.size() ? 0.0 : margin));
         for (const auto& root : r.roots) {
           const std::vector<Rational>& x = root.exact ? root.point : root.lo;
           const std::vector<Rational>& y = root.exact ? root.point : root.hi;

@@ -205,6 +205,14 @@ Node<T> refine(Node<T> N, std::vector<T> klo, std::vector<T> khi, const std::vec
       const int e = w > 0 ? std::max(8, 8 - static_cast<int>(std::floor(std::log2(w)))) : 8;
       klo[l] = tmax(round_dyadic(klo[l], e, true), T(0));
       khi[l] = tmin(round_dyadic(khi[l], e, false), T(1));
+      if (klo[l] == khi[l]) {
+        // K pinned this coordinate exactly (a dyadic value, e.g. where an equation is linear in
+        // it): one step of 2^-e either side keeps the root strictly inside and the box proper.
+        T step(1);
+        for (int b = 0; b < e; ++b) step /= T(2);
+        klo[l] = tmax(T(klo[l] - step), T(0));
+        khi[l] = tmin(T(khi[l] + step), T(1));
+      }
       if (!(klo[l] < khi[l])) return N;  // a box of width 0 (double's rounding): keep the last one
     }
     const bool progress = [&] {

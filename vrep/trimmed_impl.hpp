@@ -134,6 +134,27 @@ Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k
   return Truth::mixed;
 }
 
+/// Whether the formula, the leaves outside `which` fixed at `fixed`, is decided for every sign
+/// pattern of the leaves in `which` and depends on each of them (they meet at a corner or along
+/// an edge of the cell's boundary there, rather than one passing the other by).
+template <class T>
+bool depends_on_each(const Region<T>& R, std::vector<Truth> fixed, const std::vector<std::size_t>& which) {
+  const std::size_t m = which.size();
+  std::vector<Truth> value(std::size_t(1) << m);
+  for (std::size_t pattern = 0; pattern < value.size(); ++pattern) {
+    for (std::size_t q = 0; q < m; ++q) fixed[which[q]] = (pattern >> q) & 1 ? Truth::in : Truth::out;
+    std::size_t k = 0;
+    value[pattern] = combine(R, fixed, k);
+    if (value[pattern] == Truth::mixed) return false;
+  }
+  for (std::size_t q = 0; q < m; ++q) {
+    bool depends = false;
+    for (std::size_t pattern = 0; pattern < value.size(); ++pattern) depends = depends || value[pattern] != value[pattern ^ (std::size_t(1) << q)];
+    if (!depends) return false;
+  }
+  return true;
+}
+
 template <class T>
 Truth value_truth(const T& v, const T& eps) {
   return eps < v ? Truth::in : v < -eps ? Truth::out : Truth::mixed;

@@ -275,22 +275,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     vo.max_boxes = 4000;
     vo.refine_bits = 40;
     const std::size_t nl = leaves.size();
-    // Whether the formula depends on every leaf in `which`, the others fixed at `fixed`.
-    auto corner_of = [&](std::vector<Truth> fixed, const std::vector<std::size_t>& which) {
-      const std::size_t m = which.size();
-      std::vector<Truth> value(std::size_t(1) << m);
-      for (std::size_t pattern = 0; pattern < value.size(); ++pattern) {
-        for (std::size_t q = 0; q < m; ++q) fixed[which[q]] = (pattern >> q) & 1 ? Truth::in : Truth::out;
-        value[pattern] = truth_of(fixed);
-        if (value[pattern] == Truth::mixed) return false;
-      }
-      for (std::size_t q = 0; q < m; ++q) {
-        bool depends = false;
-        for (std::size_t pattern = 0; pattern < value.size(); ++pattern) depends = depends || value[pattern] != value[pattern ^ (std::size_t(1) << q)];
-        if (!depends) return false;
-      }
-      return true;
-    };
+    auto corner_of = [&](const std::vector<Truth>& fixed, const std::vector<std::size_t>& which) { return depends_on_each(trim, fixed, which); };
     // The roots of the leaves `which` (Bern over the unit box standing for [lo, hi]) and the
     // decision at each; `all` every leaf on the same box; (dir, side) the face of V's domain, or
     // dir = -1 inside.

@@ -33,4 +33,22 @@ inline Region<Rational> above(int axis, Rational at) {
   return region_leaf(g, "plane");
 }
 
+/// r^2 - (x_a - c_a)^2 - (x_b - c_b)^2 >= 0 for the two axes a, b other than `axis`: a solid
+/// cylinder along `axis`.
+inline Region<Rational> cylinder(int axis, std::array<Rational, 3> c, Rational r) {
+  Poly3<Rational> g;
+  Rational k = r * r;
+  for (int d = 0; d < 3; ++d) {
+    if (d == axis) continue;
+    std::array<int, 3> e{}, e2{};
+    e[d] = 1;
+    e2[d] = 2;
+    g.terms[e2] = Rational(-1);
+    g.terms[e] = Rational(2) * c[d];
+    k -= c[d] * c[d];
+  }
+  g.terms[{0, 0, 0}] = k;
+  return region_leaf(g, "cylinder");
+}
+
 }  // namespace splinex::test
