@@ -138,19 +138,9 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
   checked_product(per_piece + 1, options.max_boxes, limits, "region composed on the subdivision boxes");
   TrimmedCurves<T> out;
   if (nl < 2) return out;
-  const BezierForm<T> F = bezier_form(V, limits);
-  struct Piece {
-    std::vector<Bern<T>> G;
-    std::array<T, 3> lo, hi;
-  };
-  std::vector<Piece> pieces(F.size());
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    for (const auto* g : leaves) pieces[k].G.push_back(compose_leaf(*g, pc.spline));
-    for (int d = 0; d < 3; ++d) {
-      pieces[k].lo[d] = pc.box[d].first;
-      pieces[k].hi[d] = pc.box[d].second;
-    }
+  auto pieces = leaf_pieces(V, leaves, limits);
+  using Piece = LeafPiece<T>;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
     // A leaf vanishing on a face of the domain (a trimming plane on a face of the cell: coplanar
     // contact) has that face's parameter as a factor; the curves of the open domain are those of
     // the quotient, which has the same signs inside.

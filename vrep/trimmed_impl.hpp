@@ -237,6 +237,27 @@ Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
 }
 
 /// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
+/// The leaves composed with V on each Bezier piece of V, with the piece's parameter box.
+template <class T>
+struct LeafPiece {
+  std::vector<Bern<T>> G;  // per leaf (collect order), Bernstein form on the piece
+  std::array<T, 3> lo, hi;
+};
+template <class T>
+std::vector<LeafPiece<T>> leaf_pieces(const BSpline<T>& V, const std::vector<const Poly3<T>*>& leaves, const Limits& limits) {
+  const BezierForm<T> F = bezier_form(V, limits);
+  std::vector<LeafPiece<T>> pieces(F.size());
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    for (const auto* g : leaves) pieces[k].G.push_back(compose_leaf(*g, pc.spline));
+    for (int d = 0; d < 3; ++d) {
+      pieces[k].lo[d] = pc.box[d].first;
+      pieces[k].hi[d] = pc.box[d].second;
+    }
+  }
+  return pieces;
+}
+
 template <class T>
 const T& corner(const Bern<T>& b, int s0, int s1, int s2) {
   const std::size_t n0 = b.deg[0] + 1, n1 = b.deg[1] + 1;

@@ -159,20 +159,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   // Limits before the work, as run_trim checks them.
   const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
   checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
-  const BezierForm<T> F = bezier_form(V, limits);
-  struct Piece {
-    std::vector<Bern<T>> G;
-    std::array<T, 3> lo, hi;
-  };
-  std::vector<Piece> pieces(F.size());
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    for (const auto* g : leaves) pieces[k].G.push_back(compose_leaf(*g, pc.spline));
-    for (int d = 0; d < 3; ++d) {
-      pieces[k].lo[d] = pc.box[d].first;
-      pieces[k].hi[d] = pc.box[d].second;
-    }
-  }
+  const auto pieces = leaf_pieces(V, leaves, limits);
   auto domain_at = [&](int d, int s) { return s ? V.domain_hi(d) : V.domain_lo(d); };
   auto truth_of = [&](const std::vector<Truth>& t) {
     std::size_t i = 0;
