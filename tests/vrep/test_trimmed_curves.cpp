@@ -310,6 +310,7 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
   std::mt19937 rng(20261204);
   std::uniform_int_distribution<int> pos(2, 30), rad(5, 18), height(4, 28);
   int checked = 0, skipped = 0, loops = 0, arcs = 0, vpoints = 0;
+  std::size_t faces = 0;
   for (int trial = 0; trial < 200 && checked < 24; ++trial) {
     std::array<R, 3> c0, c1;
     std::array<double, 3> d0, d1;
@@ -358,6 +359,8 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
       if (!x.decided) reasons += " (" + std::to_string(x.i) + ", " + std::to_string(x.j) + "): " + x.undecided_reason;
     INFO("undecided:" << reasons);
     REQUIRE(got.decided);
+    const auto topo = trimmed_topology(V, region_and<R>(parts), 256);
+    REQUIRE(topo.points_undecided == 0);
     const std::pair<std::size_t, std::size_t> ids[3] = {{0, 1}, {0, 2}, {1, 2}};
     for (int p = 0; p < 3; ++p) {
       std::size_t got_arcs = 0, got_loops = 0, ends = 0;
@@ -368,16 +371,33 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
           ends = x.ends_at_points;
         }
       CHECK(got_loops == (whole[p] ? 1u : 0u));
+      // The arcs' ends on the domain's faces are the face V-points trimmed_topology finds for the
+      // same pair by its own systems (2x2 on the whole faces of the pieces).
+      std::size_t face_points = 0;
+      for (const auto& q : topo.inner_points)
+        face_points += q.dir >= 0 && q.leaves == std::vector<std::size_t>{ids[p].first, ids[p].second};
+      std::size_t face_ends = 0;
+      for (const auto& x : got.pairs)
+        if (x.i == ids[p].first && x.j == ids[p].second) face_ends = x.ends_on_faces;
+      CHECK(face_ends == face_points);
+      faces += face_ends;
       CHECK(got_arcs == (whole[p] ? 0u : static_cast<std::size_t>(want[p])));
       loops += whole[p];
       arcs += whole[p] ? 0 : want[p];
       vpoints += static_cast<int>(ends);
     }
+    // At a corner where three trimming surfaces of an intersection meet, each pair's curve goes on
+    // into the cell on one side only: three arc ends per inside V-point.
+    std::size_t ends_at_points = 0;
+    for (const auto& x : got.pairs) ends_at_points += x.ends_at_points;
+    CHECK(ends_at_points == 3 * topo.interior_points);
     ++checked;
   }
-  INFO("checked " << checked << ", skipped near tangency " << skipped << ": loops " << loops << ", arcs " << arcs << ", arc ends at V-points " << vpoints);
+  INFO("checked " << checked << ", skipped near tangency " << skipped << ": loops " << loops << ", arcs " << arcs << ", arc ends at V-points " << vpoints
+                    << ", on faces " << faces);
   CHECK(checked == 24);
   CHECK(loops >= 4);  // the sample covers loops, arcs and V-points
   CHECK(arcs >= 8);
   CHECK(vpoints >= 4);
+  CHECK(faces >= 8);
 }
