@@ -529,10 +529,22 @@ Commands add_vrep(CLI::App& app) {
                  (sf.leaf < 0 ? faces : trims) += sf.at_least;
                }
                Json face_curves = Json::array();
-               std::size_t curves = 0;
+               std::size_t curves = 0, exact_curves = 0;
+               bool curves_decided = true;
                for (const auto& fc : t.face_curves) {
                  if (fc.absent) continue;
-                 face_curves.push_back({{"face", {fc.dir, fc.side}}, {"leaf", fc.leaf}, {"at_least", fc.at_least}, {"cover_components", fc.cover}});
+                 Json f{{"face", {fc.dir, fc.side}}, {"leaf", fc.leaf}, {"at_least", fc.at_least}, {"cover_components", fc.cover}, {"decided", fc.decided}};
+                 if (fc.decided) {
+                   f["arcs"] = fc.arcs;
+                   f["loops"] = fc.loops;
+                   f["ends_on_edges"] = fc.ends_on_edges;
+                   f["ends_at_face_v_points"] = fc.ends_at_points;
+                   exact_curves += fc.arcs + fc.loops;
+                 } else {
+                   f["reason"] = fc.undecided_reason;
+                   curves_decided = false;
+                 }
+                 face_curves.push_back(f);
                  curves += fc.at_least;
                }
                cells.push_back({{"cell", k},
@@ -547,6 +559,7 @@ Commands add_vrep(CLI::App& app) {
                                 {"surfaces", surfaces},
                                 {"face_curves", face_curves},
                                 {"trimming_curves_on_faces_at_least", curves},
+                                {"trimming_curves_on_faces", curves_decided ? Json(exact_curves) : Json("undecided (see face_curves)")},
                                 {"face_v_points", t.face_points},
                                 {"interior_v_points", t.interior_points},
                                 {"v_points_undecided", t.points_undecided},
@@ -560,7 +573,8 @@ Commands add_vrep(CLI::App& app) {
                                         "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
                                         "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "
                                         "region), trusted where dual (the open set's chi_c is -chi); lower bounds (certified): half-V-surfaces "
-                                        "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed); exact where decided: "
+                                        "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed), which are also counted exactly "
+                                        "where decided (trimming_curves_on_faces: arcs and loops); exact where decided: "
                                         "V-curves between two trimming surfaces (arcs and closed loops per pair of trimming surfaces, in the "
                                         "trivariate's parameters)"}}
                               .dump()

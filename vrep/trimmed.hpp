@@ -254,6 +254,12 @@ struct TrimmedTopology {
     int dir = 0, side = 0, leaf = 0;  // face (dir, side) of V's domain, leaf of the trim
     bool absent = false;
     std::size_t at_least = 0, cover = 0;
+    /// Exact (the certified curve graph of trimmed_curves, in the face's two parameters): its
+    /// pieces where the face's part depends on the leaf, cut at the face V-points where another
+    /// leaf crosses; arcs end on the face's edges or at those V-points.
+    bool decided = false;
+    std::size_t arcs = 0, loops = 0, ends_on_edges = 0, ends_at_points = 0;
+    std::string undecided_reason;
   };
   std::vector<Edge> edges;
   std::vector<Surface> surfaces;

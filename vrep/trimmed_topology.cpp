@@ -8,6 +8,7 @@
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
 #include "vrep/box_components.hpp"
+#include "vrep/curve_graph.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
 
@@ -482,6 +483,38 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         truths.emplace_back();
         for (const auto& G : x.G) truths.back().push_back(coefficient_truth(G, T(0)));
       }
+      // The exact count of each leaf's curve on this face (vrep/curve_graph.hpp, in 2D).
+      CurveProblem<T, 2> face_problem;
+      face_problem.trim = &trim;
+      face_problem.dom_lo = {V.domain_lo(a), V.domain_lo(b)};
+      face_problem.dom_hi = {V.domain_hi(a), V.domain_hi(b)};
+      for (std::size_t e = 0; e < curves.size(); ++e) {
+        bool id = point[e] != 0;
+        for (const auto& [i, j] : same) id = id || i == e || j == e;
+        face_problem.identified[static_cast<std::size_t>(edge_ids[e].first)][static_cast<std::size_t>(edge_ids[e].second)] = id;
+      }
+      for (const auto& p : pieces) {
+        if (!((s ? p.hi[d] : p.lo[d]) == domain_at(d, s))) continue;
+        CurvePiece<T, 2> fp;
+        fp.lo = {p.lo[a], p.lo[b]};
+        fp.hi = {p.hi[a], p.hi[b]};
+        for (const auto& G0 : p.G) {
+          // A leaf containing the face (coplanar contact) is read from inside: divided by the
+          // face's parameter, its sign just inside the face.
+          Bern<T> G = G0;
+          while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) G = divide_facet(G, d, s);
+          Bern<T> H = bern_face(G, d, s);
+          // A leaf vanishing along an edge of the domain on this face: divided by that edge's
+          // parameter (the same signs inside the face).
+          for (int fd = 0; fd < 2; ++fd)
+            for (int fs = 0; fs < 2; ++fs)
+              while ((fs ? fp.hi[fd] == face_problem.dom_hi[fd] : fp.lo[fd] == face_problem.dom_lo[fd]) && H.deg[static_cast<std::size_t>(fd)] > 0 &&
+                     !all_zero(H) && all_zero(bern_face(H, fd, fs)))
+                H = divide_facet(H, fd, fs);
+          fp.G.push_back(std::move(H));
+        }
+        face_problem.pieces.push_back(std::move(fp));
+      }
       for (std::size_t k = 0; k < nl; ++k) {
         typename TrimmedTopology<T>::FaceCurve fcv;
         fcv.dir = d;
@@ -499,6 +532,22 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         fcv.cover = cc;
         fcv.at_least = cl;
         fcv.absent = cov.empty();
+        if (fcv.absent) fcv.decided = true;
+        else {
+          bool on_face = false;
+          for (const auto& fp : face_problem.pieces) on_face = on_face || all_zero(fp.G[k]);
+          if (on_face) fcv.undecided_reason = "the trimming surface's composition vanishes identically";
+          else {
+            face_problem.curve = {k};
+            const CurveCount c = count_curve(face_problem);
+            fcv.decided = c.decided;
+            fcv.arcs = c.arcs;
+            fcv.loops = c.loops;
+            fcv.ends_on_edges = c.ends_on_facets;
+            fcv.ends_at_points = c.ends_at_points;
+            fcv.undecided_reason = c.undecided_reason;
+          }
+        }
         out.face_curves.push_back(fcv);
       }
     }

@@ -310,7 +310,7 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
   std::mt19937 rng(20261204);
   std::uniform_int_distribution<int> pos(2, 30), rad(5, 18), height(4, 28);
   int checked = 0, skipped = 0, loops = 0, arcs = 0, vpoints = 0;
-  std::size_t faces = 0;
+  std::size_t faces = 0, face_curves = 0;
   for (int trial = 0; trial < 200 && checked < 24; ++trial) {
     std::array<R, 3> c0, c1;
     std::array<double, 3> d0, d1;
@@ -344,6 +344,11 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
       if (meets > 0) want[2] = circle_pieces(k, {{true, 0, 0.0, d0, q0, true}}, whole[2]);
     }
     for (int w : want) skip = skip || w < 0;
+    // A sphere touching a face of the cube (a tangency the curves on that face cannot decide).
+    for (int e = 0; e < 3; ++e)
+      for (const auto& [c, q] : {std::pair{d0[e], q0}, std::pair{d1[e], q1}})
+        skip = skip || std::abs(std::abs(c - 0) - q) < 1e-3 || std::abs(std::abs(c - 2) - q) < 1e-3;
+    // The plane on a face, or through an edge where a sphere crosses it, is not chosen (h in (0, 2)).
     if (skip || want[0] + want[1] + want[2] == 0) {
       skipped += skip;
       continue;
@@ -391,13 +396,26 @@ TEST_CASE("vrep trimmed curves: random spheres and a plane, against the circles'
     std::size_t ends_at_points = 0;
     for (const auto& x : got.pairs) ends_at_points += x.ends_at_points;
     CHECK(ends_at_points == 3 * topo.interior_points);
+    // The trimming surfaces' curves on the cube's faces, exact: each edge V-point ends one on each
+    // of its two faces, each face V-point (two surfaces meeting on a face of an intersection) two.
+    std::size_t edge_points = 0, on_edges = 0, at_face_points = 0;
+    for (const auto& e : topo.edges) edge_points += e.points;
+    for (const auto& f : topo.face_curves) {
+      CHECK(f.decided);
+      on_edges += f.ends_on_edges;
+      at_face_points += f.ends_at_points;
+      face_curves += f.arcs + f.loops;
+    }
+    CHECK(on_edges == 2 * edge_points);
+    CHECK(at_face_points == 2 * topo.face_points);
     ++checked;
   }
   INFO("checked " << checked << ", skipped near tangency " << skipped << ": loops " << loops << ", arcs " << arcs << ", arc ends at V-points " << vpoints
-                    << ", on faces " << faces);
+                    << ", on faces " << faces << "; curves on the faces " << face_curves);
   CHECK(checked == 24);
   CHECK(loops >= 4);  // the sample covers loops, arcs and V-points
   CHECK(arcs >= 8);
   CHECK(vpoints >= 4);
   CHECK(faces >= 8);
+  CHECK(face_curves >= 16);
 }

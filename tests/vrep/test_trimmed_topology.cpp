@@ -3,6 +3,7 @@
 // on cells whose true boundary is known (a box cut by a plane, a quarter cylinder slice, a bar with a
 // slab removed).
 #include <catch2/catch.hpp>
+#include <array>
 #include <cmath>
 
 #include "exact/rational.hpp"
@@ -167,4 +168,39 @@ TEST_CASE("vrep trimmed topology: V-points off the edges, on faces and inside, e
   const auto lens_only = trimmed_topology(V, region_and<R>({ball({R(4, 5), R(1), R(1)}, R(1, 2)), ball({R(6, 5), R(1), R(1)}, R(1, 2))}), 512);
   CHECK(lens_only.interior_points == 0);
   CHECK(lens_only.face_points == 0);
+}
+
+TEST_CASE("vrep trimmed topology: the trimming surfaces' curves on the faces, exact arcs and loops") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  auto exact = [](const TrimmedTopology<R>& t) {
+    std::array<std::size_t, 4> c{};  // arcs, loops, ends on edges, ends at face V-points
+    for (const auto& f : t.face_curves) {
+      CHECK(f.decided);
+      c[0] += f.arcs;
+      c[1] += f.loops;
+      c[2] += f.ends_on_edges;
+      c[3] += f.ends_at_points;
+    }
+    return c;
+  };
+  // A plane: four lines across the faces it cuts, edge to edge.
+  const auto plane = exact(trimmed_topology(V, test::above(0, R(1, 3)), 512));
+  CHECK(plane == std::array<std::size_t, 4>{4, 0, 8, 0});
+  // Three planes: on each of the faces x, y, z = 2 two lines from an edge to the face's V-point.
+  const auto three = exact(trimmed_topology(V, region_and<R>({test::above(0, R(1, 3)), test::above(1, R(1, 4)), test::above(2, R(1, 5))}), 512));
+  CHECK(three == std::array<std::size_t, 4>{6, 0, 6, 6});
+  // A cylinder along z inside the cube: its circles on the faces z = 0 and z = 2 are loops.
+  const auto cyl = exact(trimmed_topology(V, test::cylinder(2, {R(1), R(1), R(0)}, R(1, 2)), 512));
+  CHECK(cyl == std::array<std::size_t, 4>{0, 2, 0, 0});
+  // A ball inside: nothing on the faces.
+  const auto ball = exact(trimmed_topology(V, test::ball({R(1), R(1), R(1)}, R(1, 2)), 512));
+  CHECK(ball == std::array<std::size_t, 4>{0, 0, 0, 0});
+  // The ball through the face z = 2 (centre at height 7/4, radius 1/2): one circle there.
+  const auto cap = exact(trimmed_topology(V, test::ball({R(1), R(1), R(7, 4)}, R(1, 2)), 512));
+  CHECK(cap == std::array<std::size_t, 4>{0, 1, 0, 0});
+  // A cylinder along x through the cube's corner edge region: on the faces x = 0 and x = 2 its
+  // circle about (y, z) = (0, 0) radius 1 is cut by the edges: a quarter circle from edge to edge
+  // on each; on the faces y = 0 and z = 0 it runs as two lines.
+  const auto corner = exact(trimmed_topology(V, test::cylinder(0, {R(0), R(0), R(0)}, R(1)), 512));
+  CHECK(corner == std::array<std::size_t, 4>{4, 0, 8, 0});
 }
