@@ -31,8 +31,9 @@
 // The boundary structure of a trimmed cell (trimmed_topology, below): exact V-points and V-curves on
 // the trivariate's edges, certified lower bounds on its half-V-surfaces and on the trimming
 // surfaces' boundary curves on its faces, exact V-points off the edges; the V-curves between two
-// trimming surfaces exactly (trimmed_curves, below). What is not built: exact counts of the
-// half-V-surfaces and face curves, and the gluing of trimmed cells. The
+// trimming surfaces and the trimming surfaces' curves on the faces exactly (trimmed_curves,
+// below). What is not built: exact counts of the half-V-surfaces, and the gluing of trimmed
+// cells. The
 // Euler characteristic of a trimmed cell and of a model's point set is exact (trimmed_euler,
 // model_euler, below).
 //
@@ -225,10 +226,12 @@ namespace splinex {
 ///     component count is shown beside it, not certified. Collapsed faces carry no surface;
 ///   - face curves: per face and leaf, the leaf's zero set where it bounds the face's part (the
 ///     trimming surface's boundary curve on that face): proved absent, or a lower bound on its
-///     pieces as above (2D boxes of the face's subdivision).
+///     pieces as above (2D boxes of the face's subdivision), and its exact count (arcs and loops,
+///     the certified curve graph of trimmed_curves in the face's two parameters; undecided at a
+///     tangency, with the reason).
 ///   - V-points off the edges (below), exact where every system is decided.
 /// The V-curves between two trimming surfaces are trimmed_curves' (below). What is not built:
-/// counts of half-V-surfaces and face curves above the certified lower bounds.
+/// counts of half-V-surfaces above the certified lower bounds.
 template <class T>
 struct TrimmedTopology {
   struct Edge {
