@@ -36,8 +36,9 @@ struct CurveCount {
   bool decided = false;
   std::size_t arcs = 0, loops = 0;
   std::size_t ends_on_facets = 0, ends_at_points = 0, ends_on_identified = 0;
-  std::size_t boxes = 0, crossings = 0;
-  int split_fraction = 0;  // index into {1/2, 7/16, 13/32}
+  std::size_t boxes = 0, crossings = 0;  // of the deciding attempt
+  std::size_t spent = 0;                  // boxes over all attempts
+  int split_fraction = 0;                 // index into {1/2, 7/16, 13/32}
   std::string undecided_reason;
 };
 

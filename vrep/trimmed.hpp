@@ -310,8 +310,9 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
 /// three surfaces meet, or the box budget is spent. Exact in exact arithmetic; in double the same
 /// steps on rounded values, uncertified.
 struct CurveOptions {
-  std::size_t max_boxes = 6000;  // subdivision boxes per pair and attempt
-  int max_level = 36;            // splits of one box (all directions together)
+  std::size_t max_boxes = 6000;       // subdivision boxes per pair and attempt
+  int max_level = 36;                 // splits of one box (all directions together)
+  std::size_t max_total_boxes = 200000;  // over all pairs and attempts of one cell: the pairs left are undecided
 };
 template <class T>
 struct TrimmedCurves {

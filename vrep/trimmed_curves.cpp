@@ -183,12 +183,14 @@ class CurveRun {
       std::string hard;
       const Verdict v = examine(B, arc, hard);
       if (v == Verdict::fail) {
+        out.boxes = boxes;
         out.undecided_reason = hard;
         return false;
       }
       if (v == Verdict::arc) arcs.push_back(std::move(arc));
       if (v != Verdict::split) continue;
       if (B.level >= P.options.max_level) {
+        out.boxes = boxes;
         out.undecided_reason = "a box at the deepest level is still open (a singular or tangential point of the curve)";
         return false;
       }
@@ -495,12 +497,16 @@ CurveCount count_curve(const CurveProblem<T, N>& problem) {
   const T fractions[3] = {T(1) / T(2), T(7) / T(16), T(13) / T(32)};
   CurveCount out;
   std::string reason;
+  std::size_t spent = 0;
   for (int f = 0; f < 3; ++f) {
     out = CurveCount{};
     CurveRun<T, N> run(problem, fractions[f]);
-    if (run.run(out)) {
+    const bool decided = run.run(out);
+    spent += out.boxes;
+    if (decided) {
       out.decided = true;
       out.split_fraction = f;
+      out.spent = spent;
       return out;
     }
     reason = out.undecided_reason;
@@ -508,6 +514,7 @@ CurveCount count_curve(const CurveProblem<T, N>& problem) {
   }
   out = CurveCount{};
   out.undecided_reason = reason;
+  out.spent = spent;
   return out;
 }
 
@@ -571,13 +578,21 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
       }
   }
   const T fractions[3] = {T(1) / T(2), T(7) / T(16), T(13) / T(32)};
+  std::size_t spent = 0;  // boxes over all pairs and attempts
   for (std::size_t i = 0; i < nl; ++i)
     for (std::size_t j = i + 1; j < nl; ++j) {
       bool meet = false;
       for (const auto& p : problem.pieces) meet = meet || (detail::bern_sign(p.G[i]) == 0 && detail::bern_sign(p.G[j]) == 0);
       if (!meet) continue;
       problem.curve = {i, j};
-      const CurveCount c = count_curve(problem);
+      CurveCount c;
+      if (spent >= options.max_total_boxes)
+        c.undecided_reason = "the cell's total box budget (" + std::to_string(options.max_total_boxes) + ") is spent";
+      else {
+        problem.options.max_boxes = std::min(options.max_boxes, options.max_total_boxes - spent);
+        c = count_curve(problem);
+        spent += c.spent;
+      }
       typename TrimmedCurves<T>::Pair pr;
       pr.i = i;
       pr.j = j;

@@ -486,6 +486,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       // The exact count of each leaf's curve on this face (vrep/curve_graph.hpp, in 2D).
       CurveProblem<T, 2> face_problem;
       face_problem.trim = &trim;
+      face_problem.options.max_boxes = std::max<std::size_t>(512, max_boxes / 2);  // per leaf and attempt
       face_problem.dom_lo = {V.domain_lo(a), V.domain_lo(b)};
       face_problem.dom_hi = {V.domain_hi(a), V.domain_hi(b)};
       for (std::size_t e = 0; e < curves.size(); ++e) {

@@ -152,6 +152,13 @@ TEST_CASE("vrep trimmed curves: coincident trimming surfaces and bad input are r
   CHECK_FALSE(t.decided);
   REQUIRE(t.pairs.size() == 1);
   CHECK_FALSE(t.pairs.front().undecided_reason.empty());
+  // The cell's total budget: the pairs after it is spent are undecided, not computed.
+  CurveOptions tight;
+  tight.max_total_boxes = 2;  // each pair of planes takes one box
+  const auto three = trimmed_curves(V, region_and<R>({test::above(0, R(1, 3)), test::above(1, R(1, 4)), test::above(2, R(1, 5))}), tight);
+  CHECK_FALSE(three.decided);
+  REQUIRE(three.pairs.size() == 3);
+  CHECK(three.pairs.back().undecided_reason.find("total box budget") != std::string::npos);
   CurveOptions bad;
   bad.max_boxes = 2;
   CHECK_THROWS_AS(trimmed_curves(V, region_and<R>({b, b}), bad), ValidationError);
