@@ -4,6 +4,7 @@
 
 #include "bench/ratio_reporter.hpp"
 
+#include <array>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -108,6 +109,44 @@ void euler_step(benchmark::State& st, bool exact) {
   st.counters["sum_chi_cells_plus_1000_chi_model"] = static_cast<double>(chi);
 }
 
+/// r^2 - |x - c|^2 >= 0 and z - h >= 0 as regions (the cells of the V-curve benchmark).
+template <class T>
+Region<T> ball_region(const std::array<T, 3>& c, const T& r) {
+  Poly3<T> g;
+  T k = r * r;
+  for (int d = 0; d < 3; ++d) {
+    std::array<int, 3> e{}, e2{};
+    e[d] = 1;
+    e2[d] = 2;
+    g.terms[e2] = T(-1);
+    g.terms[e] = T(2) * c[d];
+    k -= c[d] * c[d];
+  }
+  g.terms[{0, 0, 0}] = k;
+  return region_leaf(g, "ball");
+}
+
+/// The V-curves between trimming surfaces (trimmed_curves) of the lens of two balls cut by the
+/// plane z = 11/10 in the cube [0, 2]^3: three arcs between two V-points, exact or double.
+template <class T>
+void curves_step(benchmark::State& st) {
+  const auto V = box_cells<T>({T(0), T(0), T(0)}, {T(2), T(2), T(2)}).front();
+  Poly3<T> plane;
+  plane.terms[{0, 0, 1}] = T(1);
+  plane.terms[{0, 0, 0}] = -(T(11) / T(10));
+  const auto R = region_and<T>({ball_region<T>({T(4) / T(5), T(1), T(1)}, T(1) / T(2)), ball_region<T>({T(6) / T(5), T(1), T(1)}, T(1) / T(2)),
+                                region_leaf(plane, "plane")});
+  std::size_t arcs = 0, decided = 0;
+  for (auto _ : st) {
+    const auto c = trimmed_curves(V, R);
+    arcs = c.arcs;
+    decided = 0;
+    for (const auto& p : c.pairs) decided += p.decided;
+  }
+  st.counters["arcs"] = static_cast<double>(arcs);
+  st.counters["decided_pairs"] = static_cast<double>(decided);
+}
+
 /// The teapot's handle against its body (step 1/16): the float SSI, and the exact judgement of its
 /// points (Krawczyk certificates).
 void ssi_step(benchmark::State& st, bool judge) {
@@ -163,6 +202,8 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("vrep/trimmed/exact/figure4", [](benchmark::State& st) { trimmed_step(st, true); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/euler/double/figure4", [](benchmark::State& st) { euler_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/euler/exact/figure4", [](benchmark::State& st) { euler_step(st, true); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/curves/double/lens-cut", [](benchmark::State& st) { curves_step<double>(st); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/curves/exact/lens-cut", [](benchmark::State& st) { curves_step<Rational>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/judge/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, true); })->Unit(benchmark::kMillisecond);
   const std::vector<std::string> booleans{"figure3", "grid-cavity"};
@@ -205,6 +246,10 @@ int main(int argc, char** argv) {
     const double ed = rep.ns["vrep/euler/double/figure4"], ee = rep.ns["vrep/euler/exact/figure4"];
     std::cout << std::left << std::setw(12) << "euler" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << ed << std::setw(10) << ee
               << std::setprecision(1) << std::setw(8) << (ed > 0 ? ee / ed : 0.0) << "  (Euler characteristic of Figure 4's 15 cells and model)\n";
+    const double cd = rep.ns["vrep/curves/double/lens-cut"], ce = rep.ns["vrep/curves/exact/lens-cut"];
+    std::cout << std::left << std::setw(12) << "curves" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << cd << std::setw(10) << ce
+              << std::setprecision(1) << std::setw(8) << (cd > 0 ? ce / cd : 0.0)
+              << "  (V-curves between trimming surfaces: lens of two balls cut by a plane; see the decided_pairs counter)\n";
     const double f = rep.ns["vrep/ssi/double/teapot-handle-body"], j = rep.ns["vrep/ssi/judge/teapot-handle-body"];
     std::cout << "\nTeapot handle and body: float SSI " << std::setprecision(2) << f << " ms, its exact judgement " << j
               << " ms (judge/SSI " << std::setprecision(1) << (f > 0 ? j / f : 0.0) << ")\n";
