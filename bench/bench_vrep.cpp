@@ -109,23 +109,6 @@ void euler_step(benchmark::State& st, bool exact) {
   st.counters["sum_chi_cells_plus_1000_chi_model"] = static_cast<double>(chi);
 }
 
-/// r^2 - |x - c|^2 >= 0 and z - h >= 0 as regions (the cells of the V-curve benchmark).
-template <class T>
-Region<T> ball_region(const std::array<T, 3>& c, const T& r) {
-  Poly3<T> g;
-  T k = r * r;
-  for (int d = 0; d < 3; ++d) {
-    std::array<int, 3> e{}, e2{};
-    e[d] = 1;
-    e2[d] = 2;
-    g.terms[e2] = T(-1);
-    g.terms[e] = T(2) * c[d];
-    k -= c[d] * c[d];
-  }
-  g.terms[{0, 0, 0}] = k;
-  return region_leaf(g, "ball");
-}
-
 /// The V-curves between trimming surfaces (trimmed_curves) of the lens of two balls cut by the
 /// plane z = 11/10 in the cube [0, 2]^3: three arcs between two V-points, exact or double.
 template <class T>

@@ -81,20 +81,6 @@ void curves_sweep(std::ostringstream& md) {
   const auto Vd = box_cells<double>({0, 0, 0}, {2, 2, 2}).front();
   std::mt19937 rng(20261204);
   std::uniform_int_distribution<int> pos(2, 30), rad(5, 18), height(4, 28);
-  auto ball = [](const std::array<R, 3>& c, const R& r) {
-    Poly3<R> g;
-    R k = r * r;
-    for (int d = 0; d < 3; ++d) {
-      std::array<int, 3> e{}, e2{};
-      e[d] = 1;
-      e2[d] = 2;
-      g.terms[e2] = R(-1);
-      g.terms[e] = R(2) * c[d];
-      k -= c[d] * c[d];
-    }
-    g.terms[{0, 0, 0}] = k;
-    return region_leaf(g, "ball");
-  };
   std::array<std::size_t, 3> total{};
   std::size_t undecided_exact = 0, pairs = 0, arcs = 0, loops = 0;
   std::map<std::string, std::size_t> reasons;  // of the pairs undecided in exact arithmetic
@@ -109,7 +95,7 @@ void curves_sweep(std::ostringstream& md) {
     plane.terms[{0, 0, 1}] = R(1);
     plane.terms[{0, 0, 0}] = -R(height(rng), 16);
     const R r0(rad(rng), 16), r1(rad(rng), 16);
-    const auto region = region_and<R>({ball(c0, r0), ball(c1, r1), region_leaf(plane, "plane")});
+    const auto region = region_and<R>({ball_region(c0, r0), ball_region(c1, r1), region_leaf(plane, "plane")});
     auto t0 = std::chrono::steady_clock::now();
     const auto ex = trimmed_curves(V, region);
     exact_s += seconds_since(t0);

@@ -38,9 +38,15 @@ struct CurveCount {
   std::size_t ends_on_facets = 0, ends_at_points = 0, ends_on_identified = 0;
   std::size_t boxes = 0, crossings = 0;  // of the deciding attempt
   std::size_t spent = 0;                  // boxes over all attempts
-  int split_fraction = 0;                 // index into {1/2, 7/16, 13/32}
+  int split_fraction = 0;                 // index for split_fraction<T>() below
   std::string undecided_reason;
 };
+
+/// The split fractions tried in turn: 1/2, 7/16, 13/32 (index 0, 1, 2).
+template <class T>
+T split_fraction(int index) {
+  return index == 0 ? T(1) / T(2) : index == 1 ? T(7) / T(16) : T(13) / T(32);
+}
 
 /// Runs the subdivision at the split fractions 1/2, 7/16, 13/32 until one decides.
 template <class T, std::size_t N>

@@ -171,6 +171,7 @@ const char* to_string(Regularity r) {
   template Region<T> cylinder_region(const T&, const T&);                                                            \
   template Region<T> cone_region(const T&, const T&, const T&);                                                      \
   template Region<T> torus_region(const T&, const T&);                                                               \
+  template Region<T> ball_region(const std::array<T, 3>&, const T&);                                                 \
   template std::optional<Region<T>> planar_region(const VModel<T>&, const T&);                                       \
   template Region<T> place_region(const Region<T>&, int, const std::vector<T>&);                                     \
   template BSpline<T> place_trivariate(const BSpline<T>&, int, const std::vector<T>&);                               \

@@ -92,6 +92,9 @@ template <class T>
 Region<T> cone_region(const T& r0, const T& r1, const T& h);
 template <class T>
 Region<T> torus_region(const T& R, const T& r);
+/// The ball |x - c| <= r: the leaf r^2 - |x - c|^2 >= 0 (label "ball").
+template <class T>
+Region<T> ball_region(const std::array<T, 3>& c, const T& r);
 
 /// The convex planar cells' half-spaces as a region (any_of over cells of all_of over faces), if
 /// every cell has them (vrep/boolean.hpp: convex_planes).

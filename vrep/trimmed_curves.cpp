@@ -494,13 +494,12 @@ template <class T, std::size_t N>
 CurveCount count_curve(const CurveProblem<T, N>& problem) {
   static_assert(N == 2 || N == 3, "curves in 2 or 3 unknowns");
   if (problem.curve.size() != N - 1) throw ValidationError("curve", "needs N - 1 equations", "pass one leaf on a face, two inside");
-  const T fractions[3] = {T(1) / T(2), T(7) / T(16), T(13) / T(32)};
   CurveCount out;
   std::string reason;
   std::size_t spent = 0;
   for (int f = 0; f < 3; ++f) {
     out = CurveCount{};
-    CurveRun<T, N> run(problem, fractions[f]);
+    CurveRun<T, N> run(problem, split_fraction<T>(f));
     const bool decided = run.run(out);
     spent += out.boxes;
     if (decided) {
@@ -529,16 +528,9 @@ template CurveCount count_curve(const CurveProblem<double, 3>&);
 
 template <class T>
 TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, const CurveOptions& options, const Limits& limits) {
-  require_jacobian_input(V, limits);
-  if (options.max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
   if (options.max_level < 1 || options.max_level > 200) throw ValidationError("max_level", "must be in [1, 200]", "give a level between 1 and 200");
-  require_clamped(V);
-  require_positive_weights(V);
-  std::vector<const Poly3<T>*> leaves;
-  collect_leaves(trim, leaves);
+  const std::vector<const Poly3<T>*> leaves = checked_trim_leaves(V, trim, options.max_boxes, limits);
   const std::size_t nl = leaves.size();
-  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
-  checked_product(per_piece + 1, options.max_boxes, limits, "region composed on the subdivision boxes");
   TrimmedCurves<T> out;
   if (nl < 2) return out;
   CurveProblem<T, 3> problem;
@@ -577,7 +569,6 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
           }
       }
   }
-  const T fractions[3] = {T(1) / T(2), T(7) / T(16), T(13) / T(32)};
   std::size_t spent = 0;  // boxes over all pairs and attempts
   for (std::size_t i = 0; i < nl; ++i)
     for (std::size_t j = i + 1; j < nl; ++j) {
@@ -604,7 +595,7 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
       pr.ends_on_identified_faces = c.ends_on_identified;
       pr.boxes = c.boxes;
       pr.crossings = c.crossings;
-      pr.split = fractions[c.split_fraction];
+      pr.split = split_fraction<T>(c.split_fraction);
       pr.undecided_reason = c.undecided_reason;
       if (!pr.decided) out.decided = false;
       else {

@@ -237,6 +237,21 @@ Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
 }
 
 /// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
+/// The checks before a trimmed cell's subdivision, before any work (trimmed_topology,
+/// trimmed_curves): V a valid Jacobian input, clamped, with positive weights; a box budget of at
+/// least 8; the region composed on every box within the limits. The region's leaves (collect order).
+template <class T>
+std::vector<const Poly3<T>*> checked_trim_leaves(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
+  require_jacobian_input(V, limits);
+  if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
+  require_clamped(V);
+  require_positive_weights(V);
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(trim, leaves);
+  checked_product(composed_leaves_size(V, leaves, limits) + 1, max_boxes, limits, "region composed on the subdivision boxes");
+  return leaves;
+}
+
 /// The leaves composed with V on each Bezier piece of V, with the piece's parameter box.
 template <class T>
 struct LeafPiece {
@@ -591,6 +606,22 @@ Region<T> box_region(const std::vector<T>& lo, const std::vector<T>& hi) {
     parts.push_back(region_leaf(poly_linear(hi[a], T(-e[0]), T(-e[1]), T(-e[2])), std::string("box: ") + axis[a] + " <= hi"));
   }
   return region_and(std::move(parts));
+}
+
+template <class T>
+Region<T> ball_region(const std::array<T, 3>& c, const T& r) {
+  Poly3<T> g;
+  T k = r * r;
+  for (int d = 0; d < 3; ++d) {
+    std::array<int, 3> e{}, e2{};
+    e[d] = 1;
+    e2[d] = 2;
+    g.terms[e2] = T(-1);
+    g.terms[e] = T(2) * c[d];
+    k -= c[d] * c[d];
+  }
+  g.terms[{0, 0, 0}] = k;
+  return region_leaf(g, "ball");
 }
 
 template <class T>

@@ -150,16 +150,8 @@ inline std::pair<std::size_t, std::size_t> count_components(const std::vector<st
 
 template <class T>
 TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
-  require_jacobian_input(V, limits);
-  if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
-  require_clamped(V);
-  require_positive_weights(V);
-  std::vector<const Poly3<T>*> leaves;
-  collect_leaves(trim, leaves);
+  const std::vector<const Poly3<T>*> leaves = checked_trim_leaves(V, trim, max_boxes, limits);
   const std::size_t nl = leaves.size();
-  // Limits before the work, as run_trim checks them.
-  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
-  checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
   const auto pieces = leaf_pieces(V, leaves, limits);
   auto domain_at = [&](int d, int s) { return s ? V.domain_hi(d) : V.domain_lo(d); };
   auto truth_of = [&](const std::vector<Truth>& t) {

@@ -7,26 +7,8 @@
 
 namespace splinex::test {
 
-/// r^2 - sum over the axes other than `skip` of (x_e - c_e)^2 >= 0 (skip -1: a ball; else a solid
-/// cylinder along axis `skip`).
-inline Region<Rational> round_region(std::array<Rational, 3> c, Rational r, int skip, const char* label) {
-  Poly3<Rational> g;
-  Rational k = r * r;
-  for (int d = 0; d < 3; ++d) {
-    if (d == skip) continue;
-    std::array<int, 3> e{}, e2{};
-    e[d] = 1;
-    e2[d] = 2;
-    g.terms[e2] = Rational(-1);
-    g.terms[e] = Rational(2) * c[d];
-    k -= c[d] * c[d];
-  }
-  g.terms[{0, 0, 0}] = k;
-  return region_leaf(g, label);
-}
-
 /// r^2 - |x - c|^2 >= 0.
-inline Region<Rational> ball(std::array<Rational, 3> c, Rational r) { return round_region(c, r, -1, "ball"); }
+inline Region<Rational> ball(std::array<Rational, 3> c, Rational r) { return ball_region(c, r); }
 
 /// x_axis - at >= 0.
 inline Region<Rational> above(int axis, Rational at) {
@@ -39,6 +21,20 @@ inline Region<Rational> above(int axis, Rational at) {
 }
 
 /// A solid cylinder along `axis`: r^2 - (x_a - c_a)^2 - (x_b - c_b)^2 >= 0 for the other axes.
-inline Region<Rational> cylinder(int axis, std::array<Rational, 3> c, Rational r) { return round_region(c, r, axis, "cylinder"); }
+inline Region<Rational> cylinder(int axis, std::array<Rational, 3> c, Rational r) {
+  Poly3<Rational> g;
+  Rational k = r * r;
+  for (int d = 0; d < 3; ++d) {
+    if (d == axis) continue;
+    std::array<int, 3> e{}, e2{};
+    e[d] = 1;
+    e2[d] = 2;
+    g.terms[e2] = Rational(-1);
+    g.terms[e] = Rational(2) * c[d];
+    k -= c[d] * c[d];
+  }
+  g.terms[{0, 0, 0}] = k;
+  return region_leaf(g, "cylinder");
+}
 
 }  // namespace splinex::test
