@@ -283,11 +283,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   if (options.max_cells < 1) throw ValidationError("cells", "must be at least 1", "give a positive cell budget");
   if (options.max_level < 1 || options.max_level > 60) throw ValidationError("level", "must be in 1..60", "give a halving depth in 1..60");
   require_positive_weights(V);
-  for (int d = 0; d < 3; ++d)
-    for (const T& b : breakpoints(V.knots[d], V.degrees[d], V.count(d)))
-      if (V.domain_lo(d) < b && b < V.domain_hi(d) && multiplicity(V.knots[d], b) > static_cast<std::size_t>(V.degrees[d]))
-        throw DomainError("trivariate.knots", "has an inner knot of multiplicity above the degree: the trivariate jumps there and its cell is not a closed set",
-                          "give a trivariate continuous across its inner knots");
+  require_continuous(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   // Limits before the work, as the classification checks them.

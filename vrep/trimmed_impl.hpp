@@ -237,15 +237,28 @@ Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
 }
 
 /// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
+/// No inner knot of multiplicity above the degree: a trivariate that jumps there (C^-1) has a cell
+/// that is not a closed set, and its pieces' polynomials do not meet across the joint.
+template <class T>
+void require_continuous(const BSpline<T>& V) {
+  for (int d = 0; d < 3; ++d)
+    for (const T& b : breakpoints(V.knots[d], V.degrees[d], V.count(d)))
+      if (V.domain_lo(d) < b && b < V.domain_hi(d) && multiplicity(V.knots[d], b) > static_cast<std::size_t>(V.degrees[d]))
+        throw DomainError("trivariate.knots", "has an inner knot of multiplicity above the degree: the trivariate jumps there and its cell is not a closed set",
+                          "give a trivariate continuous across its inner knots");
+}
+
 /// The checks before a trimmed cell's subdivision, before any work (trimmed_topology,
-/// trimmed_curves): V a valid Jacobian input, clamped, with positive weights; a box budget of at
-/// least 8; the region composed on every box within the limits. The region's leaves (collect order).
+/// trimmed_curves): V a valid Jacobian input, clamped, with positive weights, continuous across
+/// its inner knots; a box budget of at least 8; the region composed on every box within the
+/// limits. The region's leaves (collect order).
 template <class T>
 std::vector<const Poly3<T>*> checked_trim_leaves(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
   require_jacobian_input(V, limits);
   if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
   require_clamped(V);
   require_positive_weights(V);
+  require_continuous(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   checked_product(composed_leaves_size(V, leaves, limits) + 1, max_boxes, limits, "region composed on the subdivision boxes");

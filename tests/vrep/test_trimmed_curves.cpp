@@ -24,6 +24,22 @@ const TrimmedCurves<R>::Pair& pair_of(const TrimmedCurves<R>& t, std::size_t i, 
   return t.pairs.front();
 }
 
+/// V with a knot of multiplicity p + 1 inserted inside along w (a C^-1 joint): its control net
+/// doubled there, so the two halves may differ.
+BSpline<R> test_spline_with_jump(const BSpline<R>& V) {
+  BSpline<R> J = V;
+  const int p = V.degrees[2];
+  std::vector<R> k(V.knots[2].begin(), V.knots[2].begin() + p + 1);
+  const R mid = (V.knots[2].front() + V.knots[2].back()) / 2;
+  for (int i = 0; i <= p; ++i) k.push_back(mid);
+  k.insert(k.end(), V.knots[2].end() - (p + 1), V.knots[2].end());
+  J.knots[2] = k;
+  std::vector<R> pts(V.points.begin(), V.points.end());
+  pts.insert(pts.end(), V.points.begin(), V.points.end());
+  J.points = pts;
+  return J;
+}
+
 }  // namespace
 
 TEST_CASE("vrep trimmed curves: planes meet in straight V-curves from V-points to the domain's faces") {
@@ -159,6 +175,26 @@ TEST_CASE("vrep trimmed curves: coincident trimming surfaces and bad input are r
   CHECK_FALSE(three.decided);
   REQUIRE(three.pairs.size() == 3);
   CHECK(three.pairs.back().undecided_reason.find("total box budget") != std::string::npos);
+  // Inputs at the edges, refused before the work: an unclamped trivariate, a non-positive weight,
+  // an inner knot of multiplicity p + 1 (C^-1: the cell is not closed), degree 0, a region whose
+  // composition exceeds the limits.
+  auto open = V;
+  open.knots[0] = {R(-1), R(0), R(1), R(2)};
+  CHECK_THROWS_AS(trimmed_curves(open, region_and<R>({b, b})), ValidationError);
+  auto heavy = V;
+  heavy.weights.assign(heavy.size(), R(1));
+  heavy.weights[0] = R(0);
+  CHECK_THROWS_AS(trimmed_curves(heavy, region_and<R>({b, b})), Error);
+  const auto jump = test_spline_with_jump(V);
+  CHECK_THROWS_AS(trimmed_curves(jump, region_and<R>({b, b})), DomainError);
+  CHECK_THROWS_AS(trimmed_topology(jump, region_and<R>({b, b}), 64), DomainError);
+  auto flat = V;
+  flat.degrees[2] = 0;
+  flat.knots[2] = {R(0), R(2)};
+  CHECK_THROWS_AS(trimmed_curves(flat, region_and<R>({b, b})), Error);
+  Limits tiny;
+  tiny.max_control_points = 20;
+  CHECK_THROWS_AS(trimmed_curves(V, region_and<R>({b, b}), {}, tiny), SizeLimitError);
   CurveOptions bad;
   bad.max_boxes = 2;
   CHECK_THROWS_AS(trimmed_curves(V, region_and<R>({b, b}), bad), ValidationError);
