@@ -137,13 +137,19 @@ def mutate_bytes(rng, text):
     return bytes(b)
 
 
-def command_for(rng, docs):
+KINDS = ["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "compose",
+         "crosscheck", "untrim", "hybrid", "prove", "vrep-info", "vrep-volume", "vrep-classify", "vrep-topology",
+         "vrep-boolean", "vrep-certify", "vrep-export", "vrep-glue", "project", "contact"]
+
+
+def command_for(rng, docs, kinds=KINDS):
     """(argv after the program, document bytes or None, kind)"""
-    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid"))]
+    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel"))]
+    models = [n for n in docs if n.startswith("vmodel")]
+    surfaces = [n for n in docs if n.startswith(("sphere", "paraboloid", "saddle", "plane", "roof", "surface"))]
     doc_name = rng.choice(curves)
     doc = docs[doc_name]
-    kind = rng.choice(["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse",
-                       "compose", "crosscheck", "untrim", "hybrid", "prove"])
+    kind = rng.choice(kinds)
     arith = rng.choice(ARITHS) if rng.random() < 0.3 else rng.choice(["exact", "double", "flint", "mpfr:113"])
     argv = []
     extra_files = {}
@@ -197,6 +203,44 @@ def command_for(rng, docs):
         if rng.random() < 0.3:
             argv += ["--monomial", rng.choice(["1,1", "0,0", "3,2"])]
         argv += ["DOC"]
+    elif kind.startswith("vrep-"):
+        # V-model documents (planar, curved, trimmed cells; tests/data/vmodel_*.json), mutated.
+        sub = kind[5:]
+        trimmed = [n for n in models if n.startswith("vmodel_trimmed")] or models
+        trivariates = [n for n in models if n.startswith("vmodel_trivariate")] or models
+        doc = docs[rng.choice(trimmed if sub == "topology" else trivariates if sub == "certify" else models)]
+        if sub == "info":
+            argv = ["vrep", "info", "--levels", rng.choice(["0", "2", "6"]), "DOC"]
+        elif sub == "volume":
+            argv = ["vrep", "volume", "--boxes", rng.choice(["1", "16", "256"])] + (["--centroid"] if rng.random() < 0.4 else []) + ["DOC"]
+        elif sub == "classify":
+            argv = ["vrep", "classify", "--at", rng.choice(["1/2,1/2,1/2", "0,0,0", "1,1,1", "0.1,0.2,0.3", "1e-400,0,0",
+                                                           "1e400,0,0", "1/3,1/3,1/3", "0.5,0.5"]), "DOC"]
+        elif sub == "topology":
+            argv = ["vrep", "topology", "--boxes", rng.choice(["8", "64", "512"]), "DOC"]
+        elif sub == "boolean":
+            extra_files["SECOND"] = docs[rng.choice(models)]
+            argv = ["vrep", "boolean", rng.choice(["union", "intersect", "subtract"]), "DOC", "SECOND",
+                    "--trim", rng.choice(["auto", "always", "never"]), "--boxes", rng.choice(["8", "64", "512"])]
+            if rng.random() < 0.3:
+                argv += ["--eps", rng.choice(["1e-9", "1e-3", "0"])]
+        elif sub == "certify":
+            argv = ["vrep", "certify", "--arith", rng.choice(["exact", "double", "mpfr:64"]), "--levels",
+                    rng.choice(["0", "3"]), "DOC"]
+        elif sub == "export":
+            argv = ["vrep", "export", "--vtk", "OUT.vtu", "DOC"]
+        else:
+            extra_files["SECOND"] = docs[rng.choice(models)]
+            argv = ["vrep", "glue", "DOC", "SECOND"] + (["--eps", "1e-9"] if rng.random() < 0.3 else [])
+    elif kind in ("project", "contact"):
+        doc = docs[rng.choice(surfaces)]
+        budget = ["--max-depth", rng.choice(["4", "12", "30"]), "--max-boxes", rng.choice(["16", "2000"])]
+        if kind == "project":
+            argv = ["project", "--arith", rng.choice(["exact", "double"]), "--point",
+                    rng.choice(["0,0,2", "1/2,1/3,1", "0,0,0", "1e300,0,0", "1,2"]), "DOC"] + budget
+        else:
+            extra_files["SECOND"] = docs[rng.choice(surfaces)]
+            argv = ["contact", "--arith", rng.choice(["exact", "double"]), "DOC", "SECOND"] + budget
     elif kind == "hybrid":
         doc = docs[rng.choice([n for n in docs if n.startswith(("hybrid", "bad_hybrid"))])]
         argv = ["hybrid", "eval", "--arith", rng.choice(["exact", "double", "mpfr:64"]), "--at",
@@ -226,6 +270,20 @@ def mutate_options(rng, argv):
     return argv
 
 
+NULL_ALLOWED = {"twin"}  # documented nulls: a boundary half-V-surface has no twin
+
+
+def has_null(value, key=None):
+    """A JSON null anywhere but under a key whose null is documented."""
+    if value is None:
+        return key not in NULL_ALLOWED
+    if isinstance(value, dict):
+        return any(has_null(v, k) for k, v in value.items())
+    if isinstance(value, list):
+        return any(has_null(v, key) for v in value)
+    return False
+
+
 def classify(kind, rc, out, err, timed_out):
     if timed_out:
         return "FAIL-timeout"
@@ -239,11 +297,13 @@ def classify(kind, rc, out, err, timed_out):
     if rc == 0:
         if kind == "prove":
             return "ok-json"
+        if kind == "vrep-export":  # writes the file and says so on stderr
+            return "ok-json" if not out and len(lines) == 1 and lines[0].startswith("splinex vrep export: wrote ") else "FAIL-export-output"
         try:
             j = json.loads(out)
         except Exception:
             return "FAIL-invalid-json"
-        if b"null" in out and kind not in ("compose",):
+        if kind not in ("compose",) and has_null(j):
             return "FAIL-null"
         return "ok-json"
     if rc == 1 and kind == "prove":
@@ -260,7 +320,12 @@ def main():
     ap.add_argument("--timeout", type=float, default=30.0)
     ap.add_argument("--memory", default="2G", help="--max-memory given to every case (a hard cap of twice that is set too)")
     ap.add_argument("--out", default="fuzz-out")
+    ap.add_argument("--kinds", default="", help="comma-separated subset of: " + ", ".join(KINDS))
     a = ap.parse_args()
+    kinds = a.kinds.split(",") if a.kinds else KINDS
+    for k in kinds:
+        if k not in KINDS:
+            ap.error("unknown kind %r" % k)
 
     rng = random.Random(a.seed)
     docs = load_documents(a.data)
@@ -275,7 +340,7 @@ def main():
 
     counts, failures, t0 = {}, 0, time.time()
     for case in range(a.cases):
-        argv, doc, extra, kind = command_for(rng, docs)
+        argv, doc, extra, kind = command_for(rng, docs, kinds)
         r = rng.random()
         if doc is not None and r < 0.45:
             doc = mutate_structured(rng, doc)
@@ -289,7 +354,9 @@ def main():
         files.update(extra)
         args = []
         for x in argv:
-            if x in files:
+            if x == "OUT.vtu":
+                args.append(os.path.join(work, "out.vtu"))
+            elif x in files:
                 path = os.path.join(work, x.lower() + ".json")
                 with open(path, "wb") as f:
                     f.write(files[x])
