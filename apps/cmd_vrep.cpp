@@ -524,8 +524,22 @@ Commands add_vrep(CLI::App& app) {
                  pieces += e.pieces;
                  points += e.points;
                }
+               std::size_t face_pieces = 0, trim_pieces = 0;
+               bool face_pieces_decided = true, trim_pieces_decided = true;
                for (const auto& sf : t.surfaces) {
-                 surfaces.push_back({{"what", sf.what}, {"collapsed", sf.collapsed}, {"absent", sf.absent}, {"at_least", sf.at_least}, {"cover_components", sf.cover}});
+                 Json j{{"what", sf.what}, {"collapsed", sf.collapsed}, {"absent", sf.absent}, {"at_least", sf.at_least}, {"cover_components", sf.cover}};
+                 if (!sf.collapsed) {
+                   j["decided"] = sf.decided;
+                   if (sf.decided) {
+                     j["pieces"] = sf.pieces;
+                     j[sf.leaf < 0 ? "pieces_on_identified_edges" : "pieces_on_identified_faces"] = sf.on_identified_edges;
+                     (sf.leaf < 0 ? face_pieces : trim_pieces) += sf.pieces;
+                   } else {
+                     j["reason"] = sf.undecided_reason;
+                     (sf.leaf < 0 ? face_pieces_decided : trim_pieces_decided) = false;
+                   }
+                 }
+                 surfaces.push_back(j);
                  (sf.leaf < 0 ? faces : trims) += sf.at_least;
                }
                Json face_curves = Json::array();
@@ -554,7 +568,9 @@ Commands add_vrep(CLI::App& app) {
                                 {"edge_v_curves", pieces},
                                 {"edge_v_points", points},
                                 {"face_half_v_surfaces_at_least", faces},
+                                {"face_half_v_surfaces", face_pieces_decided ? Json(face_pieces) : Json("undecided (see surfaces)")},
                                 {"trimming_half_v_surfaces_at_least", trims},
+                                {"trimming_half_v_surfaces", trim_pieces_decided ? Json(trim_pieces) : Json("undecided (see surfaces)")},
                                 {"edges", edges},
                                 {"surfaces", surfaces},
                                 {"face_curves", face_curves},
@@ -572,7 +588,9 @@ Commands add_vrep(CLI::App& app) {
                                {"note", "exact: corners, edge V-curves and V-points (certified roots), V-points off the edges (two trimming "
                                         "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
                                         "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "
-                                        "region), trusted where dual (the open set's chi_c is -chi); lower bounds (certified): half-V-surfaces "
+                                        "region), trusted where dual (the open set's chi_c is -chi); exact where decided: the pieces of the cell's part of "
+                                        "each face of the domain and of each trimming surface (face_half_v_surfaces, trimming_half_v_surfaces, in the "
+                                        "trivariate's parameters; parts touching at one point count apart); lower bounds (certified): half-V-surfaces "
                                         "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed), which are also counted exactly "
                                         "where decided (trimming_curves_on_faces: arcs and loops); exact where decided: "
                                         "V-curves between two trimming surfaces (arcs and closed loops per pair of trimming surfaces, in the "

@@ -236,12 +236,13 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   md << "\n**Their trimmed cells' boundary structure** (`trimmed_topology`, 1024 boxes per cell; exact: corners of the trivariate in the "
         "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
         "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
-        "in brackets, not certified; and the trimming surfaces' boundary curves on the faces, certified lower bounds (the covers' counts and the exact count, arcs and loops of a certified curve graph, in brackets); exact: V-points off "
+        "in brackets, not certified, and the exact count of the parts' pieces (`count_region` on each face, `count_surface` on each "
+        "trimming surface: certified subdivisions, in the trivariate's parameters); and the trimming surfaces' boundary curves on the faces, certified lower bounds (the covers' counts and the exact count, arcs and loops of a certified curve graph, in brackets); exact: V-points off "
         "the edges, two trimming surfaces meeting on a face or three inside, roots not certified in brackets); the V-curves between two "
         "trimming surfaces, exact (`trimmed_curves`: arcs / closed loops, from a certified graph of each pair's curve); and the cell's Euler characteristic, exact (`trimmed_euler`: "
         "chi in the trivariate's parameters / chi of the cell in space, V's identifications counted once; \"dual\" where the interior's "
         "chi_c is -chi, as for a 3-manifold with boundary):\n\n"
-        "| model | cell (category) | corners | edge V-curves | edge V-points | V-points on faces / inside (undecided) | face half-V-surfaces >= | trimming half-V-surfaces >= | trimming curves on faces >= | s | V-curves between trimming surfaces (arcs / loops) | s | double: pairs agreeing / undecided / wrong | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| model | cell (category) | corners | edge V-curves | edge V-points | V-points on faces / inside (undecided) | face half-V-surfaces >= (cover; exact) | trimming half-V-surfaces >= (cover; exact) | trimming curves on faces >= | s | V-curves between trimming surfaces (arcs / loops) | s | double: pairs agreeing / undecided / wrong | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::vector<TrimmedModel<double>> D;  // the cases rounded to double, for the curves' double run
   for (const auto& c : cases) D.push_back(trimmed_to_double(c.model));
   for (const auto& c : cases)
@@ -255,7 +256,14 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         points += e.points;
         odd += e.status == TrimmedTopology<R>::Edge::undecided || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
       }
-      for (const auto& sf : t.surfaces) (sf.leaf < 0 ? faces : trims) += sf.at_least, (sf.leaf < 0 ? face_cover : trim_cover) += sf.cover;
+      std::size_t face_pieces = 0, trim_pieces = 0;
+      std::string face_undecided, trim_undecided;
+      for (const auto& sf : t.surfaces) {
+        (sf.leaf < 0 ? faces : trims) += sf.at_least, (sf.leaf < 0 ? face_cover : trim_cover) += sf.cover;
+        if (sf.collapsed) continue;
+        (sf.leaf < 0 ? face_pieces : trim_pieces) += sf.pieces;
+        if (!sf.decided) (sf.leaf < 0 ? face_undecided : trim_undecided) = sf.undecided_reason;
+      }
       std::size_t curves = 0, curve_cover = 0, exact_curves = 0;
       bool curves_decided = true;
       for (const auto& fc : t.face_curves) {
@@ -266,7 +274,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
          << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << t.face_points << " / "
          << t.interior_points << (t.points_undecided ? " (" + std::to_string(t.points_undecided) + ")" : "") << " | " << faces << " ("
-         << face_cover << ") | " << trims << " (" << trim_cover << ") | " << curves << " (" << curve_cover << "; exact: " << (curves_decided ? std::to_string(exact_curves) : std::string("undecided")) << ") | " << std::setprecision(3)
+         << face_cover << "; exact: " << (face_undecided.empty() ? std::to_string(face_pieces) : "undecided: " + face_undecided) << ") | " << trims << " (" << trim_cover << "; exact: " << (trim_undecided.empty() ? std::to_string(trim_pieces) : "undecided: " + trim_undecided) << ") | " << curves << " (" << curve_cover << "; exact: " << (curves_decided ? std::to_string(exact_curves) : std::string("undecided")) << ") | " << std::setprecision(3)
          << seconds_since(t0) << " | ";
       const auto tc = std::chrono::steady_clock::now();
       const auto cv = trimmed_curves(c.model.trivariates[x.trivariate], x.trim);

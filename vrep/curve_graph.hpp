@@ -52,6 +52,53 @@ T split_fraction(int index) {
 template <class T, std::size_t N>
 CurveCount count_curve(const CurveProblem<T, N>& problem);
 
+/// The connected pieces of the interior of {formula true} on a rectangle (the face of a
+/// trivariate's domain; `curve` unused), in its parameters, from a certified subdivision
+/// (vrep/region_graph.cpp proves the box rule): a box is resolved when the formula is decided on
+/// it, or at most two leaves matter there and each is one arc through the box (a partial
+/// derivative of one strict sign, exactly two simple roots on the box's boundary, none at a
+/// corner) and, for two, det(grad g_k, grad g_l) has one strict sign (they cross at most once).
+/// The sign patterns between consecutive roots along the boundary are the faces of the box's
+/// arrangement; true faces whose patterns differ in one sign form one piece. Pieces of boxes that
+/// share a side join where their true gaps overlap on the common segment (roots compared exactly:
+/// brackets refined, equal roots of one leaf certified by Descartes' rule). Regions that touch at
+/// a single point are separate pieces. Split at the fraction 6/13 of a box, retried at 7/17 and 1/2
+/// when a curve is tangent to a split line or crosses another on it (`split_fraction`: 0, 1, 2 for
+/// 6/13, 7/17, 1/2): rational data on dyadic grids put tangencies on dyadic split lines, which
+/// the odd denominators miss.
+struct RegionCount {
+  bool decided = false;
+  std::size_t pieces = 0;
+  std::size_t on_identified = 0;  // pieces reaching an edge V identifies with another or collapses
+  std::size_t boxes = 0, spent = 0;
+  int split_fraction = 0;
+  std::string undecided_reason;
+};
+
+template <class T>
+RegionCount count_region(const CurveProblem<T, 2>& problem);
+
+/// The connected pieces of the part of leaf `leaf`'s zero set where the formula depends on its
+/// sign (a trimming surface's part of the cell's boundary), in the trivariate's parameters, from a
+/// certified subdivision (vrep/surface_graph.cpp proves the box rule): a box is resolved when the
+/// surface misses it or does not bound there, or when {g <= 0} and {g >= 0} are contractible in it
+/// (retractions along weakly monotone directions, down to a segment or a rectangle with one closed
+/// loop), so the surface piece is a disk, at most two further leaves change whether it bounds, each
+/// cutting it in one arc (a strict component of the curve's tangent, two or no crossings with the
+/// box's faces) and two crossing at most once (a strict triple product). The sign patterns on the
+/// surface's traces on the box's faces are its parts; parts whose patterns differ in one sign are
+/// joined (undecided if that leaf bounds there too: more than two sheets); parts of boxes sharing
+/// a face join where their patterns occur on the trace there. Split fractions as for count_region.
+template <class T>
+RegionCount count_surface(const CurveProblem<T, 3>& problem, std::size_t leaf);
+
+/// The leaves of a trimmed cell on V's Bezier pieces, leaves vanishing on a face of the domain
+/// divided by that face's parameter, and V's identified or collapsed faces: the problem
+/// count_curve (N = 3) and count_surface work on (`curve` left empty).
+template <class T>
+CurveProblem<T, 3> cell_problem(const BSpline<T>& V, const Region<T>& trim, const std::vector<const Poly3<T>*>& leaves, const CurveOptions& options,
+                                const Limits& limits);
+
 /// G / t_d (side 0) or G / (1 - t_d) (side 1), for G vanishing identically on that facet: the
 /// same signs inside the box.
 template <class T>

@@ -7,6 +7,7 @@
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
+#include "vrep/brackets.hpp"
 #include "vrep/regularity.hpp"
 
 namespace splinex {
@@ -87,11 +88,6 @@ Bern<T> jacobian_numerator(const BSpline<T>& piece) {
 template <class T>
 std::pair<Bern<T>, Bern<T>> split_half(const Bern<T>& b, int l) {
   return detail::bern_split(b, l, T(1) / T(2));
-}
-
-template <class T>
-int sign_of(const T& x) {
-  return T(0) < x ? 1 : x < T(0) ? -1 : 0;
 }
 
 /// det J's numerator degrees, checked against the limits before any work: the degree limit per

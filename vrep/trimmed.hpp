@@ -254,6 +254,14 @@ struct TrimmedTopology {
     std::size_t at_least = 0;  // certified lower bound on its connected pieces
     std::size_t cover = 0;     // components of its cover (not certified)
     std::size_t boxes = 0, cover_boxes = 0;
+    /// Exact where decided (vrep/curve_graph.hpp: count_region for a face of the domain,
+    /// count_surface for a trimming surface): the connected pieces of the interior of the part,
+    /// in V's parameters (parts that touch at one point, or along a curve where a further sheet
+    /// bounds, are apart); `on_identified_edges` of them reach an edge or face V identifies with
+    /// another or collapses (there the count in space may be smaller). Undecided: the reason.
+    bool decided = false;
+    std::size_t pieces = 0, on_identified_edges = 0;
+    std::string undecided_reason;
   };
   std::size_t corners = 0, corners_on_trimming = 0;  // in the cell; on a trimming surface (not counted)
   struct FaceCurve {

@@ -38,6 +38,54 @@ detail::Bern<T> divide_facet(const detail::Bern<T>& G, int d, int side) {
   return H;
 }
 
+
+template <class T>
+CurveProblem<T, 3> cell_problem(const BSpline<T>& V, const Region<T>& trim, const std::vector<const Poly3<T>*>& leaves, const CurveOptions& options,
+                                const Limits& limits) {
+  CurveProblem<T, 3> problem;
+  problem.trim = &trim;
+  problem.options = options;
+  for (int d = 0; d < 3; ++d) {
+    problem.dom_lo[static_cast<std::size_t>(d)] = V.domain_lo(d);
+    problem.dom_hi[static_cast<std::size_t>(d)] = V.domain_hi(d);
+  }
+  for (auto& lp : leaf_pieces(V, leaves, limits)) {
+    CurvePiece<T, 3> piece{std::move(lp.G), lp.lo, lp.hi};
+    // A leaf vanishing on a face of the domain (a trimming plane on a face of the cell: coplanar
+    // contact) has that face's parameter as a factor; the curves of the open domain are those of
+    // the quotient, which has the same signs inside.
+    for (auto& G : piece.G)
+      for (int d = 0; d < 3; ++d)
+        for (int s = 0; s < 2; ++s)
+          while ((s ? piece.hi[d] == V.domain_hi(d) : piece.lo[d] == V.domain_lo(d)) && G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) &&
+                 all_zero(detail::bern_face(G, d, s)))
+            G = divide_facet(G, d, s);
+    problem.pieces.push_back(std::move(piece));
+  }
+  // V's own identifications: faces collapsed or equal to another face.
+  {
+    std::array<std::array<BSpline<T>, 2>, 3> faces;
+    for (int d = 0; d < 3; ++d)
+      for (int s = 0; s < 2; ++s) faces[d][s] = face(V, d, s);
+    for (std::size_t d = 0; d < 3; ++d)
+      for (std::size_t s = 0; s < 2; ++s) {
+        problem.identified[d][s] = problem.identified[d][s] || collapsed(faces[d][s], 0) || collapsed(faces[d][s], 1);
+        for (std::size_t d2 = d; d2 < 3; ++d2)
+          for (std::size_t s2 = 0; s2 < 2; ++s2) {
+            if (d2 == d && s2 <= s) continue;
+            if (corner_set(faces[d][s]) != corner_set(faces[d2][s2]) || !same_surface(faces[d][s], faces[d2][s2], T(0), limits)) continue;
+            problem.identified[d][s] = problem.identified[d2][s2] = true;
+          }
+      }
+  }
+  return problem;
+}
+
+template CurveProblem<Rational, 3> cell_problem(const BSpline<Rational>&, const Region<Rational>&, const std::vector<const Poly3<Rational>*>&,
+                                                const CurveOptions&, const Limits&);
+template CurveProblem<double, 3> cell_problem(const BSpline<double>&, const Region<double>&, const std::vector<const Poly3<double>*>&,
+                                              const CurveOptions&, const Limits&);
+
 }  // namespace vrep_detail
 
 namespace {
@@ -533,42 +581,7 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
   const std::size_t nl = leaves.size();
   TrimmedCurves<T> out;
   if (nl < 2) return out;
-  CurveProblem<T, 3> problem;
-  problem.trim = &trim;
-  problem.options = options;
-  for (int d = 0; d < 3; ++d) {
-    problem.dom_lo[static_cast<std::size_t>(d)] = V.domain_lo(d);
-    problem.dom_hi[static_cast<std::size_t>(d)] = V.domain_hi(d);
-  }
-  for (auto& lp : leaf_pieces(V, leaves, limits)) {
-    CurvePiece<T, 3> piece{std::move(lp.G), lp.lo, lp.hi};
-    // A leaf vanishing on a face of the domain (a trimming plane on a face of the cell: coplanar
-    // contact) has that face's parameter as a factor; the curves of the open domain are those of
-    // the quotient, which has the same signs inside.
-    for (auto& G : piece.G)
-      for (int d = 0; d < 3; ++d)
-        for (int s = 0; s < 2; ++s)
-          while ((s ? piece.hi[d] == V.domain_hi(d) : piece.lo[d] == V.domain_lo(d)) && G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) &&
-                 all_zero(detail::bern_face(G, d, s)))
-            G = divide_facet(G, d, s);
-    problem.pieces.push_back(std::move(piece));
-  }
-  // V's own identifications: faces collapsed or equal to another face.
-  {
-    std::array<std::array<BSpline<T>, 2>, 3> faces;
-    for (int d = 0; d < 3; ++d)
-      for (int s = 0; s < 2; ++s) faces[d][s] = face(V, d, s);
-    for (std::size_t d = 0; d < 3; ++d)
-      for (std::size_t s = 0; s < 2; ++s) {
-        problem.identified[d][s] = problem.identified[d][s] || collapsed(faces[d][s], 0) || collapsed(faces[d][s], 1);
-        for (std::size_t d2 = d; d2 < 3; ++d2)
-          for (std::size_t s2 = 0; s2 < 2; ++s2) {
-            if (d2 == d && s2 <= s) continue;
-            if (corner_set(faces[d][s]) != corner_set(faces[d2][s2]) || !same_surface(faces[d][s], faces[d2][s2], T(0), limits)) continue;
-            problem.identified[d][s] = problem.identified[d2][s2] = true;
-          }
-      }
-  }
+  CurveProblem<T, 3> problem = cell_problem(V, trim, leaves, options, limits);
   std::size_t spent = 0;  // boxes over all pairs and attempts
   for (std::size_t i = 0; i < nl; ++i)
     for (std::size_t j = i + 1; j < nl; ++j) {

@@ -466,6 +466,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       sf.cover = fc;
       sf.at_least = fl;
       sf.absent = cover.empty();
+      const std::size_t face_index = out.surfaces.size();
       out.surfaces.push_back(sf);
       // The trimming surfaces' boundary curves on this face: per leaf, where it bounds the face's part.
       std::vector<std::vector<Bern<T>>> Gs;
@@ -507,6 +508,16 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           fp.G.push_back(std::move(H));
         }
         face_problem.pieces.push_back(std::move(fp));
+      }
+      {
+        // The exact pieces of the face's part (its leaves read from inside, as for the curves).
+        const RegionCount rc = count_region(face_problem);
+        auto& fs = out.surfaces[face_index];
+        fs.decided = rc.decided;
+        fs.pieces = rc.pieces;
+        fs.on_identified_edges = rc.on_identified;
+        fs.undecided_reason = rc.undecided_reason;
+        if (fs.decided && fs.pieces < fs.at_least) throw std::logic_error("trimmed_topology: exact face pieces below the certified lower bound");
       }
       for (std::size_t k = 0; k < nl; ++k) {
         typename TrimmedTopology<T>::FaceCurve fcv;
@@ -586,6 +597,11 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     hi3.push_back(x.hi);
     G3.push_back(x.G);
   }
+  // The exact pieces of each trimming surface's part (vrep/curve_graph.hpp: count_surface).
+  CurveOptions surface_options;
+  surface_options.max_boxes = std::max<std::size_t>(512, max_boxes);
+  surface_options.max_total_boxes = 3 * surface_options.max_boxes;
+  const CurveProblem<T, 3> surface_problem = cell_problem(V, trim, leaves, surface_options, limits);
   for (std::size_t k = 0; k < nl; ++k) {
     typename TrimmedTopology<T>::Surface sf;
     sf.leaf = static_cast<int>(k);
@@ -618,6 +634,15 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     sf.cover = cc;
     sf.at_least = cl;
     sf.absent = cover.empty();
+    if (sf.absent) sf.decided = true;
+    else {
+      const RegionCount rc = count_surface(surface_problem, k);
+      sf.decided = rc.decided;
+      sf.pieces = rc.pieces;
+      sf.on_identified_edges = rc.on_identified;
+      sf.undecided_reason = rc.undecided_reason;
+      if (sf.decided && sf.pieces < sf.at_least) throw std::logic_error("trimmed_topology: exact surface pieces below the certified lower bound");
+    }
     out.surfaces.push_back(sf);
   }
   return out;
