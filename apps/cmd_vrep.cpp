@@ -417,7 +417,7 @@ Commands add_vrep(CLI::App& app) {
   };
   auto tco = std::make_shared<TopologyCli>();
   auto* topo = v->add_subcommand("topology", "the boundary structure of a trimmed V-model's cells: exact V-curves and V-points on the trivariates' "
-                                             "edges, certified lower bounds on the half-V-surfaces");
+                                             "edges, V-curves between trimming surfaces, half-V-surfaces (exact where decided), Euler characteristic");
   topo->add_option("file", tco->file, "a trimmed V-model document (the output of vrep boolean with trimmed cells)")->required();
   topo->add_option("--boxes", tco->boxes, "subdivision boxes per cell (the faces get an eighth each)")->check(CLI::Range(8, 1000000))->capture_default_str();
   struct TeapotCli {

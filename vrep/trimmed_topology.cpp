@@ -383,12 +383,34 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         for (const auto& G : x.G) t.push_back(coefficient_truth(G, T(0)));
         x.truth = truth_of(t);
       };
+      // The leaves on the face, read from inside: a leaf containing the face (coplanar contact) is
+      // divided by the face's parameter (its sign just inside the face), and a leaf vanishing
+      // along an edge of the domain on this face by that edge's parameter (the same signs inside
+      // the face). Without this the face's part would count where a coplanar leaf's zero set
+      // lies on it, not where the cell is.
+      const std::array<T, 2> face_lo{V.domain_lo(a), V.domain_lo(b)}, face_hi{V.domain_hi(a), V.domain_hi(b)};
+      auto face_leaves = [&](const LeafPiece<T>& p) {
+        std::vector<Bern<T>> out_leaves;
+        const std::array<T, 2> plo{p.lo[a], p.lo[b]}, phi{p.hi[a], p.hi[b]};
+        for (const auto& G0 : p.G) {
+          Bern<T> G = G0;
+          while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) G = divide_facet(G, d, s);
+          Bern<T> H = bern_face(G, d, s);
+          for (int fd = 0; fd < 2; ++fd)
+            for (int fs = 0; fs < 2; ++fs)
+              while ((fs ? phi[static_cast<std::size_t>(fd)] == face_hi[static_cast<std::size_t>(fd)] : plo[static_cast<std::size_t>(fd)] == face_lo[static_cast<std::size_t>(fd)]) &&
+                     H.deg[static_cast<std::size_t>(fd)] > 0 && !all_zero(H) && all_zero(bern_face(H, fd, fs)))
+                H = divide_facet(H, fd, fs);
+          out_leaves.push_back(std::move(H));
+        }
+        return out_leaves;
+      };
       std::deque<Box2> todo;
       std::vector<Box2> done;
       for (const auto& p : pieces) {
         if (!((s ? p.hi[d] : p.lo[d]) == domain_at(d, s))) continue;
         Box2 x;
-        for (const auto& G : p.G) x.G.push_back(bern_face(G, d, s));
+        x.G = face_leaves(p);
         x.lo = {p.lo[a], p.lo[b]};
         x.hi = {p.hi[a], p.hi[b]};
         eval2(x);
@@ -492,21 +514,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         CurvePiece<T, 2> fp;
         fp.lo = {p.lo[a], p.lo[b]};
         fp.hi = {p.hi[a], p.hi[b]};
-        for (const auto& G0 : p.G) {
-          // A leaf containing the face (coplanar contact) is read from inside: divided by the
-          // face's parameter, its sign just inside the face.
-          Bern<T> G = G0;
-          while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) G = divide_facet(G, d, s);
-          Bern<T> H = bern_face(G, d, s);
-          // A leaf vanishing along an edge of the domain on this face: divided by that edge's
-          // parameter (the same signs inside the face).
-          for (int fd = 0; fd < 2; ++fd)
-            for (int fs = 0; fs < 2; ++fs)
-              while ((fs ? fp.hi[fd] == face_problem.dom_hi[fd] : fp.lo[fd] == face_problem.dom_lo[fd]) && H.deg[static_cast<std::size_t>(fd)] > 0 &&
-                     !all_zero(H) && all_zero(bern_face(H, fd, fs)))
-                H = divide_facet(H, fd, fs);
-          fp.G.push_back(std::move(H));
-        }
+        fp.G = face_leaves(p);
         face_problem.pieces.push_back(std::move(fp));
       }
       {
@@ -517,7 +525,9 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         fs.pieces = rc.pieces;
         fs.on_identified_edges = rc.on_identified;
         fs.undecided_reason = rc.undecided_reason;
-        if (fs.decided && fs.pieces < fs.at_least) throw std::logic_error("trimmed_topology: exact face pieces below the certified lower bound");
+        if (fs.decided && fs.pieces < fs.at_least)
+          throw std::logic_error("trimmed_topology: exact pieces of " + fs.what + " (" + std::to_string(fs.pieces) + ") below the certified lower bound (" +
+                                 std::to_string(fs.at_least) + ")");
       }
       for (std::size_t k = 0; k < nl; ++k) {
         typename TrimmedTopology<T>::FaceCurve fcv;
@@ -599,7 +609,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   }
   // The exact pieces of each trimming surface's part (vrep/curve_graph.hpp: count_surface).
   CurveOptions surface_options;
-  surface_options.max_boxes = std::max<std::size_t>(512, max_boxes);
+  surface_options.max_boxes = std::min<std::size_t>(8192, std::max<std::size_t>(512, max_boxes));
   surface_options.max_total_boxes = 3 * surface_options.max_boxes;
   const CurveProblem<T, 3> surface_problem = cell_problem(V, trim, leaves, surface_options, limits);
   for (std::size_t k = 0; k < nl; ++k) {
@@ -641,7 +651,9 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       sf.pieces = rc.pieces;
       sf.on_identified_edges = rc.on_identified;
       sf.undecided_reason = rc.undecided_reason;
-      if (sf.decided && sf.pieces < sf.at_least) throw std::logic_error("trimmed_topology: exact surface pieces below the certified lower bound");
+      if (sf.decided && sf.pieces < sf.at_least)
+        throw std::logic_error("trimmed_topology: exact pieces of " + sf.what + " (" + std::to_string(sf.pieces) + ") below the certified lower bound (" +
+                               std::to_string(sf.at_least) + ")");
     }
     out.surfaces.push_back(sf);
   }

@@ -28,6 +28,8 @@ const TrimmedTopology<R>::Surface& face_of(const TrimmedTopology<R>& t, int dir,
   return t.surfaces.front();
 }
 
+std::vector<std::size_t> surface_pieces(const TrimmedTopology<R>& t);
+
 /// lo < x_axis < hi, as a region.
 Region<R> slab(int axis, R lo, R hi) { return region_and<R>({test::above(axis, lo), region_not(test::above(axis, hi))}); }
 
@@ -94,6 +96,17 @@ TEST_CASE("vrep face pieces: slabs, holes and disks on the faces of a cube, exac
     const auto& f = face_of(t, 2, 0);
     CHECK((!f.decided || f.pieces == 2));
     if (!f.decided) CHECK(!f.undecided_reason.empty());
+  }
+  SECTION("coplanar contact: a slab's plane on the face z = 0 is read from inside, lower bound and count agree") {
+    // The cube minus the slab [-1, 3]^2 x [0, 1]: the cell is the cube above z = 1; its face z = 0
+    // lies in the removed slab's bottom plane (the leaf z >= 0 vanishes there) and holds nothing.
+    const auto t = trimmed_topology(V, region_not(box_region<R>({R(-1), R(-1), R(0)}, {R(3), R(3), R(1)})), 1024);
+    CHECK(face_of(t, 2, 0).decided);
+    CHECK(face_of(t, 2, 0).pieces == 0);
+    CHECK(face_of(t, 2, 0).at_least == 0);  // was 1: the cover read the vanishing leaf as "out"
+    CHECK(face_of(t, 2, 1).pieces == 1);
+    CHECK(face_of(t, 0, 0).pieces == 1);
+    CHECK(surface_pieces(t) == std::vector<std::size_t>{0, 0, 0, 0, 0, 1});  // only z <= 1's plane bounds
   }
   SECTION("a ball touching a face: the face's part is one point, no piece, or undecided; never a piece") {
     const auto t = trimmed_topology(V, test::ball({R(1), R(1), R(1, 2)}, R(1, 2)), 1024);

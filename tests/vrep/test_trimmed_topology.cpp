@@ -1,5 +1,5 @@
 // The boundary structure of trimmed cells (issue 18, the topology of trimmed cells in part): exact
-// V-points and V-curves on the trivariate's edges, certified lower bounds on the half-V-surfaces,
+// V-points and V-curves on the trivariate's edges, certified lower bounds on the half-V-surfaces (their exact counts: test_region_pieces.cpp),
 // on cells whose true boundary is known (a box cut by a plane, a quarter cylinder slice, a bar with a
 // slab removed).
 #include <catch2/catch.hpp>
