@@ -130,6 +130,30 @@ void curves_step(benchmark::State& st) {
   st.counters["decided_pairs"] = static_cast<double>(decided);
 }
 
+/// The half-V-surfaces (count_surface through trimmed_topology's parts) of the same cell: the
+/// pieces of the three trimming surfaces' parts (1 each), exact or double.
+template <class T>
+void surfaces_step(benchmark::State& st) {
+  const auto V = box_cells<T>({T(0), T(0), T(0)}, {T(2), T(2), T(2)}).front();
+  Poly3<T> plane;
+  plane.terms[{0, 0, 1}] = T(1);
+  plane.terms[{0, 0, 0}] = -(T(11) / T(10));
+  const auto R = region_and<T>({ball_region<T>({T(4) / T(5), T(1), T(1)}, T(1) / T(2)), ball_region<T>({T(6) / T(5), T(1), T(1)}, T(1) / T(2)),
+                                region_leaf(plane, "plane")});
+  std::size_t pieces = 0, decided = 0;
+  for (auto _ : st) {
+    const auto t = trimmed_topology(V, R, 1024);
+    pieces = decided = 0;
+    for (const auto& s : t.surfaces)
+      if (s.leaf >= 0) {
+        pieces += s.pieces;
+        decided += s.decided;
+      }
+  }
+  st.counters["trimming_pieces"] = static_cast<double>(pieces);
+  st.counters["decided_surfaces"] = static_cast<double>(decided);
+}
+
 /// The teapot's handle against its body (step 1/16): the float SSI, and the exact judgement of its
 /// points (Krawczyk certificates).
 void ssi_step(benchmark::State& st, bool judge) {
@@ -187,6 +211,8 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("vrep/euler/exact/figure4", [](benchmark::State& st) { euler_step(st, true); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/curves/double/lens-cut", [](benchmark::State& st) { curves_step<double>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/curves/exact/lens-cut", [](benchmark::State& st) { curves_step<Rational>(st); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/topology/double/lens-cut", [](benchmark::State& st) { surfaces_step<double>(st); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/topology/exact/lens-cut", [](benchmark::State& st) { surfaces_step<Rational>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/judge/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, true); })->Unit(benchmark::kMillisecond);
   const std::vector<std::string> booleans{"figure3", "grid-cavity"};
@@ -233,6 +259,10 @@ int main(int argc, char** argv) {
     std::cout << std::left << std::setw(12) << "curves" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << cd << std::setw(10) << ce
               << std::setprecision(1) << std::setw(8) << (cd > 0 ? ce / cd : 0.0)
               << "  (V-curves between trimming surfaces: lens of two balls cut by a plane; see the decided_pairs counter)\n";
+    const double td = rep.ns["vrep/topology/double/lens-cut"], te = rep.ns["vrep/topology/exact/lens-cut"];
+    std::cout << std::left << std::setw(12) << "topology" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << td << std::setw(10) << te
+              << std::setprecision(1) << std::setw(8) << (td > 0 ? te / td : 0.0)
+              << "  (trimmed_topology of the same cell, with the exact half-V-surfaces; see the decided_surfaces counter)\n";
     const double f = rep.ns["vrep/ssi/double/teapot-handle-body"], j = rep.ns["vrep/ssi/judge/teapot-handle-body"];
     std::cout << "\nTeapot handle and body: float SSI " << std::setprecision(2) << f << " ms, its exact judgement " << j
               << " ms (judge/SSI " << std::setprecision(1) << (f > 0 ? j / f : 0.0) << ")\n";

@@ -85,6 +85,11 @@ void curves_sweep(std::ostringstream& md) {
   std::size_t undecided_exact = 0, pairs = 0, arcs = 0, loops = 0;
   std::map<std::string, std::size_t> reasons;  // of the pairs undecided in exact arithmetic
   double exact_s = 0, double_s = 0;
+  // The half-V-surfaces (trimmed_topology: pieces per face and per trimming surface), the same way.
+  std::array<std::size_t, 3> surf{};  // double agrees / undecided / wrong
+  std::size_t surfaces = 0, surf_undecided = 0, surf_pieces = 0;
+  std::map<std::string, std::size_t> surf_reasons;
+  double surf_exact_s = 0, surf_double_s = 0;
   for (int trial = 0; trial < 40; ++trial) {
     std::array<R, 3> c0, c1;
     for (int e = 0; e < 3; ++e) {
@@ -111,6 +116,25 @@ void curves_sweep(std::ostringstream& md) {
     }
     const auto cmp = compare_curves(ex, db);
     for (int q = 0; q < 3; ++q) total[static_cast<std::size_t>(q)] += cmp[static_cast<std::size_t>(q)];
+    t0 = std::chrono::steady_clock::now();
+    const auto te = trimmed_topology(V, region, 1024);
+    surf_exact_s += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    const auto td = trimmed_topology(Vd, region_to_double(region), 1024);
+    surf_double_s += seconds_since(t0);
+    for (std::size_t i = 0; i < te.surfaces.size(); ++i) {
+      const auto& e = te.surfaces[i];
+      const auto& d = td.surfaces[i];
+      if (e.collapsed) continue;
+      ++surfaces;
+      if (!e.decided) {
+        ++surf_undecided;
+        ++surf_reasons[e.undecided_reason];
+        continue;
+      }
+      surf_pieces += e.pieces;
+      ++surf[!d.decided ? 1 : d.pieces == e.pieces ? 0 : 2];
+    }
   }
   md << "\n**V-curves in double** (`trimmed_curves` on 40 random cells: two balls and a half-space z >= h in the cube [0, 2]^3, "
         "data in sixteenths, exact and on the region rounded to double): "
@@ -124,6 +148,17 @@ void curves_sweep(std::ostringstream& md) {
      << " pairs agree, " << total[1] << " undecided, " << total[2] << " wrong (decided, other counts)"
      << (total[2] == 0 ? ": here the rounded run fails safe, its graph checks catch what rounding breaks. " : ": silently wrong topology in double. ") << std::setprecision(3) << exact_s
      << " s exact, " << double_s << " s double.\n";
+  md << "\n**Half-V-surfaces in double** (`trimmed_topology` on the same 40 cells, exact and rounded to double: the pieces of "
+        "the cell's part of each face of the domain and of each trimming surface): "
+     << surfaces << " parts, " << surf_undecided << " undecided in exact arithmetic";
+  if (!surf_reasons.empty()) {
+    md << " (";
+    for (auto it = surf_reasons.begin(); it != surf_reasons.end(); ++it) md << (it == surf_reasons.begin() ? "" : "; ") << it->first << ": " << it->second;
+    md << ")";
+  }
+  md << ", the others " << surf_pieces << " pieces. Against them, double: " << surf[0] << " parts agree, " << surf[1] << " undecided, " << surf[2]
+     << " wrong (decided, another count)" << (surf[2] == 0 ? "" : ": silently wrong topology in double") << ". " << std::setprecision(3)
+     << surf_exact_s << " s exact, " << surf_double_s << " s double (the whole topology: edges, V-points, curves on faces, pieces).\n";
 }
 
 void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
@@ -135,7 +170,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         "Bernstein coefficients decide boxes of the parameter domain (in, out, mixed), subdivision refines the mixed ones, and a "
         "cell is `whole`, `empty`, `cut` (certified by an inside and an outside box or exact witness point) or undecided "
         "(tangential contact: a typed error). Volumes are certified enclosures. The cells' own V-surfaces, V-curves and "
-        "V-points (the trimming surfaces' topology) are not built.\n\n";
+        "V-points are counted below (`trimmed_topology`, `trimmed_curves`).\n\n";
   struct Case {
     std::string name;
     TrimmedModel<R> model;

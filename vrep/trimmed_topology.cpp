@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <functional>
+#include <type_traits>
 
 #include "solve/solver.hpp"
 #include "spline/bezier.hpp"
@@ -525,7 +526,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         fs.pieces = rc.pieces;
         fs.on_identified_edges = rc.on_identified;
         fs.undecided_reason = rc.undecided_reason;
-        if (fs.decided && fs.pieces < fs.at_least)
+        if (!std::is_floating_point_v<T> && fs.decided && fs.pieces < fs.at_least)  // exact: both certified
           throw std::logic_error("trimmed_topology: exact pieces of " + fs.what + " (" + std::to_string(fs.pieces) + ") below the certified lower bound (" +
                                  std::to_string(fs.at_least) + ")");
       }
@@ -651,7 +652,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       sf.pieces = rc.pieces;
       sf.on_identified_edges = rc.on_identified;
       sf.undecided_reason = rc.undecided_reason;
-      if (sf.decided && sf.pieces < sf.at_least)
+      if (!std::is_floating_point_v<T> && sf.decided && sf.pieces < sf.at_least)  // exact: both certified
         throw std::logic_error("trimmed_topology: exact pieces of " + sf.what + " (" + std::to_string(sf.pieces) + ") below the certified lower bound (" +
                                std::to_string(sf.at_least) + ")");
     }
