@@ -2,6 +2,7 @@
 // their products, derivatives, de Casteljau splits and values (used by composition, the V-rep's
 // regularity and trimming, verification and the subdivision solver).
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -97,6 +98,27 @@ template <class T>
 Bern<T> bern_sub(Bern<T> a, const Bern<T>& b) {
   for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] -= b.c[i];
   return a;
+}
+
+/// a + b (or a - b with `minus`) of any degrees: each raised to the larger degree per direction
+/// (times the polynomial 1 in Bernstein form of the difference) first.
+template <class T>
+Bern<T> bern_combine(const Bern<T>& a, const Bern<T>& b, bool minus) {
+  std::vector<int> deg(a.deg.size());
+  for (std::size_t l = 0; l < deg.size(); ++l) deg[l] = std::max(a.deg[l], b.deg[l]);
+  auto up = [&](const Bern<T>& x) {
+    Bern<T> one;
+    one.deg.resize(deg.size());
+    bool same = true;
+    for (std::size_t l = 0; l < deg.size(); ++l) {
+      one.deg[l] = deg[l] - x.deg[l];
+      same = same && one.deg[l] == 0;
+    }
+    if (same) return x;
+    one.c.assign(tensor_size(one.deg), T(1));
+    return bern_product(x, one);
+  };
+  return minus ? bern_sub(up(a), up(b)) : bern_add(up(a), up(b));
 }
 
 /// d/dt_l on [0, 1]^n: degree deg_l - 1, coefficients deg_l (c_{i+1} - c_i). Degree 0 gives the

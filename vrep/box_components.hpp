@@ -44,6 +44,21 @@ std::vector<std::pair<std::size_t, std::size_t>> touching_pairs(const std::vecto
   return out;
 }
 
+/// Numbers the pieces of resolved boxes (members lo, hi, pieces, first) consecutively: each box's
+/// `first`, its corners in lo/hi and all of them in ids; returns the number of pieces.
+template <class Box, class T, std::size_t N>
+std::size_t number_pieces(std::vector<Box>& boxes, std::vector<std::array<T, N>>& lo, std::vector<std::array<T, N>>& hi, std::vector<std::size_t>& ids) {
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    boxes[i].first = total;
+    total += static_cast<std::size_t>(boxes[i].pieces);
+    lo.push_back(boxes[i].lo);
+    hi.push_back(boxes[i].hi);
+    ids.push_back(i);
+  }
+  return total;
+}
+
 /// Joins the closed boxes among `ids` that have a common point.
 template <class T, std::size_t N>
 void join_touching(const std::vector<std::array<T, N>>& lo, const std::vector<std::array<T, N>>& hi, std::vector<std::size_t> ids,

@@ -20,6 +20,20 @@ int sign_of(const T& v) {
   return T(0) < v ? 1 : v < T(0) ? -1 : 0;
 }
 
+/// Sign variations of a Bernstein polynomial's coefficients (zeros skipped): an upper bound on its
+/// roots in the open interval, of the same parity.
+template <class T>
+int sign_variations(const Bern<T>& f) {
+  int changes = 0, last = 0;
+  for (const auto& c : f.c) {
+    const int s = sign_of(c);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++changes;
+    last = s;
+  }
+  return changes;
+}
+
 /// A simple root of a leaf along one side of a box: the leaf on the side (univariate, on [L, H]),
 /// an isolating bracket [lo, hi] with opposite strict signs at its ends, or lo == hi exactly.
 template <class T>
@@ -78,15 +92,7 @@ std::optional<int> compare(Root<T>& a, Root<T>& b, bool same_line) {
     if (same_line && a.leaf == b.leaf) {
       const T u0 = std::min(a.lo, b.lo), u1 = std::max(a.hi, b.hi);
       if (a.L <= u0 && u1 <= a.H) {
-        const Bern<T> piece = detail::bern_restrict(a.f, 0, T((u0 - a.L) / (a.H - a.L)), T((u1 - a.L) / (a.H - a.L)));
-        int changes = 0, last = 0;
-        for (const auto& c : piece.c) {
-          const int s = sign_of(c);
-          if (s == 0) continue;
-          if (last != 0 && s != last) ++changes;
-          last = s;
-        }
-        if (changes == 1) return 0;
+        if (sign_variations(detail::bern_restrict(a.f, 0, T((u0 - a.L) / (a.H - a.L)), T((u1 - a.L) / (a.H - a.L)))) == 1) return 0;
       }
     }
     const T m = (std::max(a.lo, b.lo) + std::min(a.hi, b.hi)) / 2;
@@ -110,13 +116,7 @@ std::optional<int> compare(Bound<T>& a, Bound<T>& b, bool same_line) {
 /// `depth` halvings.
 template <class T>
 bool isolate(const Bern<T>& f, const T& a, const T& b, int depth, std::vector<std::pair<T, T>>& out) {
-  int changes = 0, last = 0;
-  for (const auto& c : f.c) {
-    const int s = sign_of(c);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++changes;
-    last = s;
-  }
+  const int changes = sign_variations(f);
   if (changes == 0) return true;
   if (changes == 1 && !(f.c.front() == T(0)) && !(f.c.back() == T(0))) {
     out.push_back({a, b});
@@ -133,19 +133,5 @@ bool isolate(const Bern<T>& f, const T& a, const T& b, int depth, std::vector<st
   return isolate(r, m, b, depth - 1, out);
 }
 
-
-/// Sign variations of a Bernstein polynomial's coefficients (zeros skipped): an upper bound on its
-/// roots in the open interval, of the same parity.
-template <class T>
-int sign_variations(const Bern<T>& f) {
-  int changes = 0, last = 0;
-  for (const auto& c : f.c) {
-    const int s = sign_of(c);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++changes;
-    last = s;
-  }
-  return changes;
-}
 
 }  // namespace splinex::vrep_detail

@@ -194,7 +194,7 @@ class RegionRun {
   int arrange(const std::vector<Bern<T>>& G, std::vector<Truth> t, const std::vector<std::size_t>& mixed, const std::vector<std::size_t>& keep,
               Resolved<T>& r) {
     if (keep.size() == 2) {
-      const Bern<T> det = difference(detail::bern_product(detail::bern_derivative(G[keep[0]], 0), detail::bern_derivative(G[keep[1]], 1)),
+      const Bern<T> det = detail::bern_sub(detail::bern_product(detail::bern_derivative(G[keep[0]], 0), detail::bern_derivative(G[keep[1]], 1)),
                                      detail::bern_product(detail::bern_derivative(G[keep[0]], 1), detail::bern_derivative(G[keep[1]], 0)));
       if (detail::bern_sign(det) == 0) return 0;
     }
@@ -269,21 +269,12 @@ class RegionRun {
     return 1;
   }
 
-  static Bern<T> difference(const Bern<T>& a, const Bern<T>& b) { return detail::bern_sub(a, b); }
-
   /// Joins the pieces of boxes that share a side segment of positive length across the gaps that
   /// overlap there; counts the components.
   bool graph(RegionCount& out) {
-    std::size_t total = 0;
     std::vector<std::array<T, 2>> lo, hi;
     std::vector<std::size_t> ids;
-    for (std::size_t i = 0; i < done_.size(); ++i) {
-      done_[i].first = total;
-      total += static_cast<std::size_t>(done_[i].pieces);
-      lo.push_back(done_[i].lo);
-      hi.push_back(done_[i].hi);
-      ids.push_back(i);
-    }
+    const std::size_t total = number_pieces(done_, lo, hi, ids);
     UnionFind uf(total);
     for (const auto& [ia, ib] : touching_pairs(lo, hi, ids)) {
       for (int d = 0; d < 2; ++d) {

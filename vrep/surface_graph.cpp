@@ -481,35 +481,12 @@ class SurfaceRun {
     return 1;
   }
 
-  static Bern<T> sum(const Bern<T>& a, const Bern<T>& b, bool minus) {
-    std::vector<int> deg(a.deg.size());
-    for (std::size_t l = 0; l < deg.size(); ++l) deg[l] = std::max(a.deg[l], b.deg[l]);
-    auto up = [&](const Bern<T>& x) {
-      Bern<T> one;
-      one.deg.resize(deg.size());
-      bool same = true;
-      for (std::size_t l = 0; l < deg.size(); ++l) {
-        one.deg[l] = deg[l] - x.deg[l];
-        same = same && one.deg[l] == 0;
-      }
-      if (same) return x;
-      one.c.assign(detail::tensor_size(one.deg), T(1));
-      return detail::bern_product(x, one);
-    };
-    return minus ? detail::bern_sub(up(a), up(b)) : detail::bern_add(up(a), up(b));
-  }
+  static Bern<T> sum(const Bern<T>& a, const Bern<T>& b, bool minus) { return detail::bern_combine(a, b, minus); }
 
   bool graph(RegionCount& out) {
-    std::size_t total = 0;
     std::vector<std::array<T, 3>> lo, hi;
     std::vector<std::size_t> ids;
-    for (std::size_t i = 0; i < done_.size(); ++i) {
-      done_[i].first = total;
-      total += static_cast<std::size_t>(done_[i].pieces);
-      lo.push_back(done_[i].lo);
-      hi.push_back(done_[i].hi);
-      ids.push_back(i);
-    }
+    const std::size_t total = number_pieces(done_, lo, hi, ids);
     UnionFind uf(total);
     for (const auto& [ia, ib] : touching_pairs(lo, hi, ids))
       for (int d = 0; d < 3; ++d) {

@@ -93,28 +93,10 @@ namespace {
 using detail::Bern;
 using namespace vrep_detail;
 
-/// a raised to the degrees `deg` (each >= a's): a times the polynomial 1 of the difference.
-template <class T>
-Bern<T> elevate_to(const Bern<T>& a, const std::vector<int>& deg) {
-  Bern<T> one;
-  one.deg.resize(deg.size());
-  bool same = true;
-  for (std::size_t l = 0; l < deg.size(); ++l) {
-    one.deg[l] = deg[l] - a.deg[l];
-    same = same && one.deg[l] == 0;
-  }
-  if (same) return a;
-  one.c.assign(detail::tensor_size(one.deg), T(1));
-  return detail::bern_product(a, one);
-}
-
 /// a + b or a - b at their common degrees.
 template <class T>
 Bern<T> sum(const Bern<T>& a, const Bern<T>& b, bool minus) {
-  std::vector<int> deg(a.deg.size());
-  for (std::size_t l = 0; l < deg.size(); ++l) deg[l] = std::max(a.deg[l], b.deg[l]);
-  const Bern<T> x = elevate_to(a, deg), y = elevate_to(b, deg);
-  return minus ? detail::bern_sub(x, y) : detail::bern_add(x, y);
+  return detail::bern_combine(a, b, minus);
 }
 
 template <class T>
