@@ -78,6 +78,30 @@ struct RegionCount {
 template <class T>
 RegionCount count_region(const CurveProblem<T, 2>& problem);
 
+/// The attempts of count_region and count_surface: `attempt(fraction, out)` at the split
+/// fractions 6/13, 7/17, 1/2 until one decides or `max_total` boxes are spent. Data on dyadic
+/// grids put tangencies on dyadic split lines (a circle of radius 5/8 about (1/2, 1) touches
+/// y = 13/8); odd denominators miss them (starting at 1/2 spent the budget on every such case).
+template <class T, class Attempt>
+RegionCount retry_fractions(std::size_t max_total, Attempt&& attempt) {
+  RegionCount out;
+  const T fractions[3] = {T(6) / T(13), T(7) / T(17), T(1) / T(2)};
+  for (int f = 0; f < 3; ++f) {
+    RegionCount a;
+    const bool ok = attempt(fractions[f], a);
+    out.spent += a.boxes;
+    if (ok) {
+      a.spent = out.spent;
+      a.split_fraction = f;
+      return a;
+    }
+    out.undecided_reason = a.undecided_reason;
+    out.boxes = a.boxes;
+    if (out.spent >= max_total) break;
+  }
+  return out;
+}
+
 /// The connected pieces of the part of leaf `leaf`'s zero set where the formula depends on its
 /// sign (a trimming surface's part of the cell's boundary), in the trivariate's parameters, from a
 /// certified subdivision (vrep/surface_graph.cpp proves the box rule): a box is resolved when the

@@ -349,25 +349,10 @@ RegionCount count_region(const CurveProblem<T, 2>& problem) {
         out.undecided_reason = "a trimming surface's composition vanishes identically on the face";
         return out;
       }
-  // Split fractions 6/13, 7/17, 1/2: data on dyadic grids put tangencies of the trimming curves
-  // on dyadic split lines (a circle of radius 5/8 about (1/2, 1) touches y = 13/8); split lines
-  // with odd denominators miss them (and 1/2 first cost a spent budget on every such case).
-  const T fractions[3] = {T(6) / T(13), T(7) / T(17), T(1) / T(2)};
-  for (int f = 0; f < 3; ++f) {
-    RegionCount attempt;
-    RegionRun<T> run(problem, fractions[f]);
-    const bool ok = run.run(attempt);
-    out.spent += attempt.boxes;
-    if (ok) {
-      attempt.spent = out.spent;
-      attempt.split_fraction = f;
-      return attempt;
-    }
-    out.undecided_reason = attempt.undecided_reason;
-    out.boxes = attempt.boxes;
-    if (out.spent >= problem.options.max_total_boxes) break;
-  }
-  return out;
+  return retry_fractions<T>(problem.options.max_total_boxes, [&](const T& fraction, RegionCount& attempt) {
+    RegionRun<T> run(problem, fraction);
+    return run.run(attempt);
+  });
 }
 
 template RegionCount count_region(const CurveProblem<Rational, 2>&);

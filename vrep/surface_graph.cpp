@@ -593,22 +593,10 @@ RegionCount count_surface(const CurveProblem<T, 3>& problem, std::size_t leaf) {
       out.undecided_reason = "the trimming surface's composition vanishes identically on a piece";
       return out;
     }
-  const T fractions[3] = {T(6) / T(13), T(7) / T(17), T(1) / T(2)};
-  for (int f = 0; f < 3; ++f) {
-    RegionCount attempt;
-    SurfaceRun<T> run(problem, leaf, fractions[f]);
-    const bool ok = run.run(attempt);
-    out.spent += attempt.boxes;
-    if (ok) {
-      attempt.spent = out.spent;
-      attempt.split_fraction = f;
-      return attempt;
-    }
-    out.undecided_reason = attempt.undecided_reason;
-    out.boxes = attempt.boxes;
-    if (out.spent >= problem.options.max_total_boxes) break;
-  }
-  return out;
+  return retry_fractions<T>(problem.options.max_total_boxes, [&](const T& fraction, RegionCount& attempt) {
+    SurfaceRun<T> run(problem, leaf, fraction);
+    return run.run(attempt);
+  });
 }
 
 template RegionCount count_surface(const CurveProblem<Rational, 3>&, std::size_t);
