@@ -109,16 +109,23 @@ void euler_step(benchmark::State& st, bool exact) {
   st.counters["sum_chi_cells_plus_1000_chi_model"] = static_cast<double>(chi);
 }
 
-/// The V-curves between trimming surfaces (trimmed_curves) of the lens of two balls cut by the
-/// plane z = 11/10 in the cube [0, 2]^3: three arcs between two V-points, exact or double.
+/// The cube [0, 2]^3 trimmed to the lens of two balls (centres (4/5, 1, 1), (6/5, 1, 1), radius
+/// 1/2) cut by the plane z = 11/10: its trivariate and region.
 template <class T>
-void curves_step(benchmark::State& st) {
-  const auto V = box_cells<T>({T(0), T(0), T(0)}, {T(2), T(2), T(2)}).front();
+std::pair<BSpline<T>, Region<T>> lens_cut() {
   Poly3<T> plane;
   plane.terms[{0, 0, 1}] = T(1);
   plane.terms[{0, 0, 0}] = -(T(11) / T(10));
-  const auto R = region_and<T>({ball_region<T>({T(4) / T(5), T(1), T(1)}, T(1) / T(2)), ball_region<T>({T(6) / T(5), T(1), T(1)}, T(1) / T(2)),
-                                region_leaf(plane, "plane")});
+  return {box_cells<T>({T(0), T(0), T(0)}, {T(2), T(2), T(2)}).front(),
+          region_and<T>({ball_region<T>({T(4) / T(5), T(1), T(1)}, T(1) / T(2)), ball_region<T>({T(6) / T(5), T(1), T(1)}, T(1) / T(2)),
+                         region_leaf(plane, "plane")})};
+}
+
+/// The V-curves between trimming surfaces (trimmed_curves) of the lens cell: three arcs between
+/// two V-points, exact or double.
+template <class T>
+void curves_step(benchmark::State& st) {
+  const auto [V, R] = lens_cut<T>();
   std::size_t arcs = 0, decided = 0;
   for (auto _ : st) {
     const auto c = trimmed_curves(V, R);
@@ -134,12 +141,7 @@ void curves_step(benchmark::State& st) {
 /// pieces of the three trimming surfaces' parts (1 each), exact or double.
 template <class T>
 void surfaces_step(benchmark::State& st) {
-  const auto V = box_cells<T>({T(0), T(0), T(0)}, {T(2), T(2), T(2)}).front();
-  Poly3<T> plane;
-  plane.terms[{0, 0, 1}] = T(1);
-  plane.terms[{0, 0, 0}] = -(T(11) / T(10));
-  const auto R = region_and<T>({ball_region<T>({T(4) / T(5), T(1), T(1)}, T(1) / T(2)), ball_region<T>({T(6) / T(5), T(1), T(1)}, T(1) / T(2)),
-                                region_leaf(plane, "plane")});
+  const auto [V, R] = lens_cut<T>();
   std::size_t pieces = 0, decided = 0;
   for (auto _ : st) {
     const auto t = trimmed_topology(V, R, 1024);

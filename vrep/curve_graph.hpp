@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "spline/tensor_bernstein.hpp"
@@ -41,6 +42,33 @@ struct CurveCount {
   int split_fraction = 0;                 // index for split_fraction<T>() below
   std::string undecided_reason;
 };
+
+/// The widest direction of the box [lo, hi] (the first of equal ones): the one a subdivision splits.
+template <class T, std::size_t N>
+int widest(const std::array<T, N>& lo, const std::array<T, N>& hi) {
+  int dir = 0;
+  for (std::size_t d = 1; d < N; ++d)
+    if ((hi[static_cast<std::size_t>(dir)] - lo[static_cast<std::size_t>(dir)]) < (hi[d] - lo[d])) dir = static_cast<int>(d);
+  return dir;
+}
+
+/// The two parts c[0], c[1] of a subdivision box (members lo, hi, level, G: its leaves on it) at
+/// the fraction `frac` of direction `dir`: ranges, polynomials and level; other members are left
+/// to the caller.
+template <class Box, class T>
+void split_box(const Box& box, int dir, const T& frac, Box (&c)[2]) {
+  const std::size_t D = static_cast<std::size_t>(dir), n = box.G.size();
+  for (auto& h : c) {
+    h.lo = box.lo;
+    h.hi = box.hi;
+    h.level = box.level + 1;
+    h.G.resize(n);
+  }
+  for (std::size_t l = 0; l < n; ++l) std::tie(c[0].G[l], c[1].G[l]) = detail::bern_split(box.G[l], dir, frac);
+  const T mid = box.lo[D] + frac * (box.hi[D] - box.lo[D]);
+  c[0].hi[D] = mid;
+  c[1].lo[D] = mid;
+}
 
 /// The split fractions tried in turn: 1/2, 7/16, 13/32 (index 0, 1, 2).
 template <class T>

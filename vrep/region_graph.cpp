@@ -89,18 +89,8 @@ class RegionRun {
         out.undecided_reason = "a box at the deepest level is still open (a trimming curve is singular or tangent to a split line there, or more than two curves meet)";
         return false;
       }
-      const int dir = (B.hi[0] - B.lo[0]) < (B.hi[1] - B.lo[1]) ? 1 : 0;
       Open c[2];
-      for (auto& h : c) {
-        h.lo = B.lo;
-        h.hi = B.hi;
-        h.level = B.level + 1;
-        h.G.resize(nl_);
-      }
-      for (std::size_t l = 0; l < nl_; ++l) std::tie(c[0].G[l], c[1].G[l]) = detail::bern_split(B.G[l], dir, frac_);
-      const T mid = B.lo[dir] + frac_ * (B.hi[dir] - B.lo[dir]);
-      c[0].hi[dir] = mid;
-      c[1].lo[dir] = mid;
+      split_box(B, widest(B.lo, B.hi), frac_, c);
       todo.push_back(std::move(c[0]));
       todo.push_back(std::move(c[1]));
     }

@@ -136,7 +136,6 @@ Shape shape3(const Bern<T>& g, int s, std::size_t budget) {
 /// The patterns of the tracked leaves (bit q: leaf q > 0) on the trace {h = 0} in the open
 /// rectangle [0, 1]^2 (h and the tracked leaves restricted to it), and the crossings of each
 /// tracked leaf's zero set with the trace. False when a rectangle stays open.
-template <class T>
 struct Trace {
   unsigned patterns = 0;  // bit p: pattern p occurs
   std::vector<std::size_t> crossings;
@@ -144,7 +143,7 @@ struct Trace {
 };
 
 template <class T>
-bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_depth, std::size_t& budget, Trace<T>& out) {
+bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_depth, std::size_t& budget, Trace& out) {
   const std::size_t nt = tracked0.size();
   out.crossings.assign(nt, 0);
   struct Q {
@@ -307,20 +306,8 @@ class SurfaceRun {
         out.undecided_reason = hard.empty() ? "a box at the deepest level is still open (the surface is singular, or tangent to a split plane, or more than three surfaces meet)" : hard;
         return false;
       }
-      int dir = 0;
-      for (int d = 1; d < 3; ++d)
-        if ((B.hi[static_cast<std::size_t>(dir)] - B.lo[static_cast<std::size_t>(dir)]) < (B.hi[static_cast<std::size_t>(d)] - B.lo[static_cast<std::size_t>(d)])) dir = d;
       Open c[2];
-      for (auto& h : c) {
-        h.lo = B.lo;
-        h.hi = B.hi;
-        h.level = B.level + 1;
-        h.G.resize(nl_);
-      }
-      for (std::size_t l = 0; l < nl_; ++l) std::tie(c[0].G[l], c[1].G[l]) = detail::bern_split(B.G[l], dir, frac_);
-      const T mid = B.lo[static_cast<std::size_t>(dir)] + frac_ * (B.hi[static_cast<std::size_t>(dir)] - B.lo[static_cast<std::size_t>(dir)]);
-      c[0].hi[static_cast<std::size_t>(dir)] = mid;
-      c[1].lo[static_cast<std::size_t>(dir)] = mid;
+      split_box(B, widest(B.lo, B.hi), frac_, c);
       for (auto& h : c)
         if (detail::bern_sign(h.G[k_]) == 0) todo.push_back(std::move(h));
     }
@@ -420,7 +407,7 @@ class SurfaceRun {
       for (int s = 0; s < 2; ++s) {
         std::vector<Bern<T>> o;
         for (std::size_t l : r.rel) o.push_back(detail::bern_face(G[l], d, s));
-        Trace<T> tr;
+        Trace tr;
         if (!trace(detail::bern_face(G[k_], d, s), o, 24, budget_, tr)) {
           if (budget_ == 0) {
             hard = "the budget of face subdivisions is spent";
@@ -519,7 +506,7 @@ class SurfaceRun {
           if (!P.identified[D][static_cast<std::size_t>(s)] || !(s ? r.hi[D] == P.dom_hi[D] : r.lo[D] == P.dom_lo[D])) continue;
           std::vector<Bern<T>> o;
           for (std::size_t l : r.rel) o.push_back(detail::bern_face(r.G[l], d, s));
-          Trace<T> tr;
+          Trace tr;
           std::size_t budget = 4096;
           if (!trace(detail::bern_face(r.G[k_], d, s), o, 24, budget, tr)) {
             for (int p = 0; p < r.pieces; ++p) on_id[uf.find(r.first + static_cast<std::size_t>(p))] = 1;  // conservative
@@ -555,7 +542,7 @@ class SurfaceRun {
     };
     std::vector<Bern<T>> o;
     for (std::size_t l : tracked) o.push_back(on_E(a.G[l]));
-    Trace<T> tr;
+    Trace tr;
     if (!trace(on_E(a.G[k_]), o, 24, budget_, tr)) {
       out.undecided_reason = tr.why.empty() ? "the budget of face subdivisions is spent" : tr.why;
       return false;

@@ -224,22 +224,11 @@ class CurveRun {
         out.undecided_reason = "a box at the deepest level is still open (a singular or tangential point of the curve)";
         return false;
       }
-      int dir = 0;
-      for (int d = 1; d < static_cast<int>(N); ++d)
-        if ((B.hi[dir] - B.lo[dir]) < (B.hi[d] - B.lo[d])) dir = d;
+      const int dir = widest(B.lo, B.hi);
       Box<T, N> c[2];
-      for (auto& h : c) {
-        h.lo = B.lo;
-        h.hi = B.hi;
-        h.piece = B.piece;
-        h.level = B.level + 1;
-        h.G.resize(nl_);
-      }
-      for (std::size_t l = 0; l < nl_; ++l) std::tie(c[0].G[l], c[1].G[l]) = detail::bern_split(B.G[l], dir, frac_);
+      split_box(B, dir, frac_, c);
+      for (auto& h : c) h.piece = B.piece;
       for (std::size_t d = 0; d < N; ++d) std::tie(c[0].X[d], c[1].X[d]) = detail::bern_split(B.X[d], dir, frac_);
-      const T mid = B.lo[dir] + frac_ * (B.hi[dir] - B.lo[dir]);
-      c[0].hi[dir] = mid;
-      c[1].lo[dir] = mid;
       todo.push_back(std::move(c[0]));
       todo.push_back(std::move(c[1]));
     }

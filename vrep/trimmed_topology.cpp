@@ -131,6 +131,19 @@ std::vector<char> certified_points(const Region<T>& R, const std::vector<std::ve
   return mark;
 }
 
+/// A part's exact count into its Surface entry; in exact arithmetic a count below the certified
+/// lower bound is an internal error (both are certified), never a result.
+template <class T>
+void take_count(typename TrimmedTopology<T>::Surface& sf, const RegionCount& rc) {
+  sf.decided = rc.decided;
+  sf.pieces = rc.pieces;
+  sf.on_identified_edges = rc.on_identified;
+  sf.undecided_reason = rc.undecided_reason;
+  if (!std::is_floating_point_v<T> && sf.decided && sf.pieces < sf.at_least)
+    throw std::logic_error("trimmed_topology: exact pieces of " + sf.what + " (" + std::to_string(sf.pieces) + ") below the certified lower bound (" +
+                           std::to_string(sf.at_least) + ")");
+}
+
 /// Components of `cover` (after `join`) and how many of them hold a box marked in `certified`.
 inline std::pair<std::size_t, std::size_t> count_components(const std::vector<std::size_t>& cover, const std::vector<char>& certified,
                                                             vrep_detail::UnionFind& uf) {
@@ -520,15 +533,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       }
       {
         // The exact pieces of the face's part (its leaves read from inside, as for the curves).
-        const RegionCount rc = count_region(face_problem);
-        auto& fs = out.surfaces[face_index];
-        fs.decided = rc.decided;
-        fs.pieces = rc.pieces;
-        fs.on_identified_edges = rc.on_identified;
-        fs.undecided_reason = rc.undecided_reason;
-        if (!std::is_floating_point_v<T> && fs.decided && fs.pieces < fs.at_least)  // exact: both certified
-          throw std::logic_error("trimmed_topology: exact pieces of " + fs.what + " (" + std::to_string(fs.pieces) + ") below the certified lower bound (" +
-                                 std::to_string(fs.at_least) + ")");
+        take_count<T>(out.surfaces[face_index], count_region(face_problem));
       }
       for (std::size_t k = 0; k < nl; ++k) {
         typename TrimmedTopology<T>::FaceCurve fcv;
@@ -647,14 +652,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     sf.absent = cover.empty();
     if (sf.absent) sf.decided = true;
     else {
-      const RegionCount rc = count_surface(surface_problem, k);
-      sf.decided = rc.decided;
-      sf.pieces = rc.pieces;
-      sf.on_identified_edges = rc.on_identified;
-      sf.undecided_reason = rc.undecided_reason;
-      if (!std::is_floating_point_v<T> && sf.decided && sf.pieces < sf.at_least)  // exact: both certified
-        throw std::logic_error("trimmed_topology: exact pieces of " + sf.what + " (" + std::to_string(sf.pieces) + ") below the certified lower bound (" +
-                               std::to_string(sf.at_least) + ")");
+      take_count<T>(sf, count_surface(surface_problem, k));
     }
     out.surfaces.push_back(sf);
   }
