@@ -470,3 +470,30 @@ TEST_CASE("vrep surface pieces: random balls and a plane against a sampled count
   WARN("surfaces: compared " << compared << " cells in " << trials << " trials, skipped " << skipped << ", undecided " << undecided << ", pieces "
                              << pieces_seen);
 }
+
+TEST_CASE("vrep face and surface pieces: inputs at the edges") {
+  // Scales no double holds: a cube of side 2^-1100 (and 2^1100) with a ball inside, exactly: the
+  // sphere one piece, no face touched; a ball through the top face: one cap on it.
+  for (int e : {-1100, 1100}) {
+    R s(1);
+    for (int i = 0; i < 1100; ++i) s = e < 0 ? R(s / 2) : R(s * 2);
+    const auto V = box({R(0), R(0), R(0)}, {R(2 * s), R(2 * s), R(2 * s)});
+    const auto inside = trimmed_topology(V, test::ball({s, s, s}, R(s / 2)), 1024);
+    CHECK(surface_pieces(inside) == std::vector<std::size_t>{1});
+    for (int d = 0; d < 3; ++d) CHECK(face_of(inside, d, 0).pieces == 0);
+    const auto cap = trimmed_topology(V, test::ball({s, s, R(7 * s / 4)}, R(s / 2)), 1024);
+    CHECK(face_of(cap, 2, 1).pieces == 1);
+    CHECK(surface_pieces(cap) == std::vector<std::size_t>{1});
+  }
+  // Refused before the work, as for the curves: unclamped knots, an inner knot of multiplicity
+  // p + 1 (C^-1), degree 0 in a direction.
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  const auto b = test::ball({R(1), R(1), R(1)}, R(1, 2));
+  auto open = V;
+  open.knots[0] = {R(-1), R(0), R(1), R(2)};
+  CHECK_THROWS_AS(trimmed_topology(open, b, 64), ValidationError);
+  auto flat = V;
+  flat.degrees[2] = 0;
+  flat.knots[2] = {R(0), R(2)};
+  CHECK_THROWS_AS(trimmed_topology(flat, b, 64), Error);
+}
