@@ -1,5 +1,6 @@
 // splinex vrep: volumetric models of papers/002 (vrep/): trivariate constructors, primitives,
 // gluing into a V-model, its topology and invariants, certified regularity per cell.
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -225,6 +226,44 @@ Primitive<F> primitive_cells(const PrimitiveOptions& o) {
   return {{singular_sphere(num(o.radius, "radius"))}, std::nullopt};
 }
 
+/// trimmed_glue's result as JSON (halves, twins, the V-surface counts, the time taken).
+template <class T>
+Json gluing_json(const TrimmedGluing<T>& G, const TrimmedModel<T>& M, double seconds) {
+  Json halves = Json::array(), twins = Json::array();
+  for (std::size_t i = 0; i < G.halves.size(); ++i) {
+    const auto& h = G.halves[i];
+    if (h.decided && h.internal == 0 && h.boundary == 0) continue;  // absent
+    Json j{{"half", i}, {"cell", h.cell}, {"name", M.cells[h.cell].name}, {"what", h.what}, {"decided", h.decided}};
+    if (h.decided) {
+      j["internal_pieces"] = h.internal;
+      j["boundary_pieces"] = h.boundary;
+      j["unmatched_pieces"] = h.unmatched;
+    } else j["reason"] = h.undecided_reason;
+    halves.push_back(j);
+  }
+  for (const auto& t : G.twins) {
+    Json j{{"halves", {t.a, t.b}}, {"how", t.how}, {"decided", t.decided}};
+    if (t.decided) j["v_surfaces"] = t.pieces;
+    else j["reason"] = t.undecided_reason;
+    if (t.witnesses) j["witness_points"] = t.witnesses;
+    twins.push_back(j);
+  }
+  return Json{{"decided", G.decided},
+              {"half_v_surface_pieces", G.half_pieces},
+              {"boundary_v_surfaces", G.boundary_v_surfaces},
+              {"internal_v_surfaces", G.internal_v_surfaces},
+              {"v_surfaces", G.boundary_v_surfaces + G.internal_v_surfaces},
+              {"internal_matched_at_witness_points", G.contacts},
+              {"witness_points", G.witness_points},
+              {"halves_unmatched", G.unmatched_halves},
+              {"seconds", seconds},
+              {"halves", halves},
+              {"twins", twins},
+              {"verdict", G.contacts == 0 ? "exact where decided: certified subdivision counts, twins by identity and exact face gluing"
+                                          : "exact where decided, except contacts between operands: matched at witness points (checked at " +
+                                                std::to_string(G.witness_points) + " points), not proved one set"}};
+}
+
 /// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
 /// regularity verdict.
 template <class F>
@@ -414,12 +453,15 @@ Commands add_vrep(CLI::App& app) {
   struct TopologyCli {
     std::string file;
     std::size_t boxes = 1024;
+    bool glue = false;
   };
   auto tco = std::make_shared<TopologyCli>();
   auto* topo = v->add_subcommand("topology", "the boundary structure of a trimmed V-model's cells: exact V-curves and V-points on the trivariates' "
                                              "edges, V-curves between trimming surfaces, half-V-surfaces (exact where decided), Euler characteristic");
   topo->add_option("file", tco->file, "a trimmed V-model document (the output of vrep boolean with trimmed cells)")->required();
   topo->add_option("--boxes", tco->boxes, "subdivision boxes per cell (the faces get an eighth each)")->check(CLI::Range(8, 1000000))->capture_default_str();
+  topo->add_flag("--glue", tco->glue, "also glue the cells into one V-model: internal and boundary pieces of every half-V-surface, their twins, "
+                                      "the V-surface counts (trimmed_glue)");
   struct TeapotCli {
     std::string arith = "exact", svg, vtk;
     std::size_t boxes = 4096;
@@ -583,8 +625,17 @@ Commands add_vrep(CLI::App& app) {
                                 {"euler", euler_json(trimmed_euler(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))}});
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
+             Json gluing = nullptr;
+             if (tco->glue) {
+               TrimmedGlueOptions go;
+               go.max_boxes = std::max<std::size_t>(512, tco->boxes);
+               const auto t0 = std::chrono::steady_clock::now();
+               const auto G = trimmed_glue(M, go, ctx.limits);
+               gluing = gluing_json(G, M, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+             }
              std::cout << Json{{"cells", cells},
                                {"model_euler", model},
+                               {"gluing", gluing},
                                {"note", "exact: corners, edge V-curves and V-points (certified roots), V-points off the edges (two trimming "
                                         "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
                                         "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "

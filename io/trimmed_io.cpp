@@ -55,6 +55,7 @@ Json region_to_json(const Region<T>& R) {
   if (!R.label.empty()) out["label"] = R.label;
   switch (R.kind) {
     case Region<T>::leaf: {
+      if (R.alias >= 0) throw std::logic_error("region_to_json: an internal alias leaf cannot be written");
       Json t = Json::array();
       for (const auto& [e, c] : R.g.terms) t.push_back({ArithTraits<T>::to_json(c), e[0], e[1], e[2]});
       out["leaf"] = t;

@@ -151,6 +151,34 @@ template <class T>
 CurveProblem<T, 3> cell_problem(const BSpline<T>& V, const Region<T>& trim, const std::vector<const Poly3<T>*>& leaves, const CurveOptions& options,
                                 const Limits& limits);
 
+template <class T>
+struct LeafPiece;
+
+/// A face (d, s) of V's domain: its four edges (face direction, side), those collapsed to a point,
+/// and pairs of equal edges (V's identifications on the face).
+struct FaceEdges {
+  std::vector<std::pair<int, int>> ids;
+  std::vector<char> point;
+  std::vector<std::pair<std::size_t, std::size_t>> same;
+};
+template <class T>
+FaceEdges face_edges(const BSpline<T>& V, int d, int s, const Limits& limits);
+
+/// The leaves of one piece on face (d, s) of V's domain, read from inside: a leaf containing the
+/// face (coplanar contact) divided by the face's parameter as often as it vanishes there (its
+/// order m, returned in `multiplicity`), a leaf vanishing along an edge of the face by that edge's
+/// parameter. Where `outside` marks a leaf, it is read from the other side of the face: the
+/// quotient times (-1)^m.
+template <class T>
+std::vector<detail::Bern<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
+                                            std::vector<int>* multiplicity);
+
+/// The 2D problem of face (d, s): the pieces touching it with leaves_on_face, the face's
+/// identified edges (`trim` and `options` left to the caller).
+template <class T>
+CurveProblem<T, 2> face_curve_problem(const BSpline<T>& V, const std::vector<LeafPiece<T>>& pieces, int d, int s, const FaceEdges& edges,
+                                      const std::vector<char>* outside);
+
 /// G / t_d (side 0) or G / (1 - t_d) (side 1), for G vanishing identically on that facet: the
 /// same signs inside the box.
 template <class T>

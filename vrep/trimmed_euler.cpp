@@ -54,8 +54,8 @@ Nnf to_nnf(const Region<T>& R, bool negate, int& next_leaf) {
   Nnf n;
   switch (R.kind) {
     case Region<T>::leaf:
-      n.leaf = next_leaf++;
-      n.sign = negate ? -1 : 1;
+      n.leaf = R.alias < 0 ? next_leaf++ : R.alias;
+      n.sign = (negate != R.flip) ? -1 : 1;
       return n;
     case Region<T>::complement: return to_nnf(R.parts.front(), !negate, next_leaf);
     case Region<T>::all_of:

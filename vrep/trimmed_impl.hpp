@@ -105,7 +105,7 @@ Poly3<T> poly_pow(const Poly3<T>& p, int k) {
 template <class T>
 void collect_leaves(const Region<T>& R, std::vector<const Poly3<T>*>& out) {
   if (R.kind == Region<T>::leaf) {
-    out.push_back(&R.g);
+    if (R.alias < 0) out.push_back(&R.g);
     return;
   }
   for (const auto& p : R.parts) collect_leaves(p, out);
@@ -115,7 +115,11 @@ void collect_leaves(const Region<T>& R, std::vector<const Poly3<T>*>& out) {
 template <class T>
 Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k) {
   switch (R.kind) {
-    case Region<T>::leaf: return leaf[k++];
+    case Region<T>::leaf: {
+      if (R.alias < 0) return leaf[k++];
+      const Truth t = leaf[static_cast<std::size_t>(R.alias)];
+      return !R.flip ? t : t == Truth::in ? Truth::out : t == Truth::out ? Truth::in : Truth::mixed;
+    }
     case Region<T>::complement: {
       const Truth t = combine(R.parts.front(), leaf, k);
       return t == Truth::in ? Truth::out : t == Truth::out ? Truth::in : Truth::mixed;

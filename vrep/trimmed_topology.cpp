@@ -15,6 +15,100 @@
 
 namespace splinex {
 
+namespace vrep_detail {
+
+using detail::Bern;
+using detail::bern_face;
+
+template <class T>
+std::vector<Bern<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
+                                    std::vector<int>* multiplicity) {
+  const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
+  const std::array<T, 2> face_lo{V.domain_lo(a), V.domain_lo(b)}, face_hi{V.domain_hi(a), V.domain_hi(b)};
+  const std::array<T, 2> plo{p.lo[a], p.lo[b]}, phi{p.hi[a], p.hi[b]};
+  std::vector<Bern<T>> out;
+  if (multiplicity) multiplicity->assign(p.G.size(), 0);
+  for (std::size_t l = 0; l < p.G.size(); ++l) {
+    Bern<T> G = p.G[l];
+    int m = 0;
+    while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) {
+      G = divide_facet(G, d, s);
+      ++m;
+    }
+    if (multiplicity) (*multiplicity)[l] = m;
+    Bern<T> H = bern_face(G, d, s);
+    for (int fd = 0; fd < 2; ++fd)
+      for (int fs = 0; fs < 2; ++fs)
+        while ((fs ? phi[static_cast<std::size_t>(fd)] == face_hi[static_cast<std::size_t>(fd)] : plo[static_cast<std::size_t>(fd)] == face_lo[static_cast<std::size_t>(fd)]) &&
+               H.deg[static_cast<std::size_t>(fd)] > 0 && !all_zero(H) && all_zero(bern_face(H, fd, fs)))
+          H = divide_facet(H, fd, fs);
+    // Just outside the face the quotient's sign is multiplied by (-1)^m (m: the leaf's order of
+    // vanishing on the face).
+    if (outside && (*outside)[l] && m % 2 == 1)
+      for (auto& c : H.c) c = -c;
+    out.push_back(std::move(H));
+  }
+  return out;
+}
+
+template <class T>
+FaceEdges face_edges(const BSpline<T>& V, int d, int s, const Limits& limits) {
+  const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
+  FaceEdges out;
+  std::vector<BSpline<T>> curves;
+  for (int fd = 0; fd < 2; ++fd)
+    for (int fs = 0; fs < 2; ++fs) {
+      std::array<int, 3> sides{};
+      sides[static_cast<std::size_t>(d)] = s;
+      const int other = fd == 0 ? b : a;  // the edge fixes face direction fd, runs along the other
+      sides[static_cast<std::size_t>(fd == 0 ? a : b)] = fs;
+      curves.push_back(edge_curve(V, other, sides));
+      out.ids.push_back({fd, fs});
+    }
+  out.point.assign(curves.size(), 0);
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    out.point[i] = curve_collapsed(curves[i]);
+    for (std::size_t j = i + 1; j < curves.size(); ++j)
+      if (same_curve(curves[i], curves[j], T(0), true, limits)) out.same.push_back({i, j});
+  }
+  return out;
+}
+
+template <class T>
+CurveProblem<T, 2> face_curve_problem(const BSpline<T>& V, const std::vector<LeafPiece<T>>& pieces, int d, int s, const FaceEdges& edges,
+                                      const std::vector<char>* outside) {
+  const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
+  CurveProblem<T, 2> problem;
+  problem.dom_lo = {V.domain_lo(a), V.domain_lo(b)};
+  problem.dom_hi = {V.domain_hi(a), V.domain_hi(b)};
+  for (std::size_t e = 0; e < edges.ids.size(); ++e) {
+    bool id = edges.point[e] != 0;
+    for (const auto& [i, j] : edges.same) id = id || i == e || j == e;
+    problem.identified[static_cast<std::size_t>(edges.ids[e].first)][static_cast<std::size_t>(edges.ids[e].second)] = id;
+  }
+  const T at = s ? V.domain_hi(d) : V.domain_lo(d);
+  for (const auto& p : pieces) {
+    if (!((s ? p.hi[d] : p.lo[d]) == at)) continue;
+    CurvePiece<T, 2> fp;
+    fp.lo = {p.lo[a], p.lo[b]};
+    fp.hi = {p.hi[a], p.hi[b]};
+    fp.G = leaves_on_face(V, p, d, s, outside, nullptr);
+    problem.pieces.push_back(std::move(fp));
+  }
+  return problem;
+}
+
+#define SPLINEX_FACE_HELPERS(T)                                                                                                        \
+  template std::vector<Bern<T>> leaves_on_face(const BSpline<T>&, const LeafPiece<T>&, int, int, const std::vector<char>*, std::vector<int>*); \
+  template FaceEdges face_edges(const BSpline<T>&, int, int, const Limits&);                                                           \
+  template CurveProblem<T, 2> face_curve_problem(const BSpline<T>&, const std::vector<LeafPiece<T>>&, int, int, const FaceEdges&,      \
+                                                 const std::vector<char>*);
+SPLINEX_FACE_HELPERS(Rational)
+SPLINEX_FACE_HELPERS(double)
+#undef SPLINEX_FACE_HELPERS
+
+}  // namespace vrep_detail
+
 namespace {
 
 using detail::Bern;
@@ -402,23 +496,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       // along an edge of the domain on this face by that edge's parameter (the same signs inside
       // the face). Without this the face's part would count where a coplanar leaf's zero set
       // lies on it, not where the cell is.
-      const std::array<T, 2> face_lo{V.domain_lo(a), V.domain_lo(b)}, face_hi{V.domain_hi(a), V.domain_hi(b)};
-      auto face_leaves = [&](const LeafPiece<T>& p) {
-        std::vector<Bern<T>> out_leaves;
-        const std::array<T, 2> plo{p.lo[a], p.lo[b]}, phi{p.hi[a], p.hi[b]};
-        for (const auto& G0 : p.G) {
-          Bern<T> G = G0;
-          while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) G = divide_facet(G, d, s);
-          Bern<T> H = bern_face(G, d, s);
-          for (int fd = 0; fd < 2; ++fd)
-            for (int fs = 0; fs < 2; ++fs)
-              while ((fs ? phi[static_cast<std::size_t>(fd)] == face_hi[static_cast<std::size_t>(fd)] : plo[static_cast<std::size_t>(fd)] == face_lo[static_cast<std::size_t>(fd)]) &&
-                     H.deg[static_cast<std::size_t>(fd)] > 0 && !all_zero(H) && all_zero(bern_face(H, fd, fs)))
-                H = divide_facet(H, fd, fs);
-          out_leaves.push_back(std::move(H));
-        }
-        return out_leaves;
-      };
+      auto face_leaves = [&](const LeafPiece<T>& p) { return leaves_on_face(V, p, d, s, nullptr, nullptr); };
       std::deque<Box2> todo;
       std::vector<Box2> done;
       for (const auto& p : pieces) {
@@ -452,24 +530,10 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       }
       // The face's own identifications: an edge collapsed to a point or equal to another edge of
       // the face joins every box of a cover meeting it (conservative).
-      std::vector<std::pair<int, int>> edge_ids;  // (face direction 0/1, side)
-      std::vector<BSpline<T>> curves;
-      for (int fd = 0; fd < 2; ++fd)
-        for (int fs = 0; fs < 2; ++fs) {
-          std::array<int, 3> sides{};
-          sides[d] = s;
-          const int other = fd == 0 ? b : a;  // the edge fixes face direction fd, runs along the other
-          sides[fd == 0 ? a : b] = fs;
-          curves.push_back(edge_curve(V, other, sides));
-          edge_ids.push_back({fd, fs});
-        }
-      std::vector<std::pair<std::size_t, std::size_t>> same;  // pairs of equal edges
-      std::vector<char> point(curves.size(), 0);
-      for (std::size_t i = 0; i < curves.size(); ++i) {
-        point[i] = curve_collapsed(curves[i]);
-        for (std::size_t j = i + 1; j < curves.size(); ++j)
-          if (same_curve(curves[i], curves[j], T(0), true, limits)) same.push_back({i, j});
-      }
+      const FaceEdges edges_ids = face_edges(V, d, s, limits);
+      const auto& edge_ids = edges_ids.ids;
+      const auto& point = edges_ids.point;
+      const auto& same = edges_ids.same;
       auto components = [&](const std::vector<std::size_t>& cov, const std::vector<char>& certified) {
         UnionFind uf(done.size());
         join_touching(lo, hi, cov, uf);
@@ -484,7 +548,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         auto join_all = [&](const std::vector<std::size_t>& t) {
           for (std::size_t i = 1; i < t.size(); ++i) uf.join(t[0], t[i]);
         };
-        for (std::size_t e = 0; e < curves.size(); ++e)
+        for (std::size_t e = 0; e < point.size(); ++e)
           if (point[e]) join_all(touching(e));
         for (const auto& [i, j] : same) {
           auto t = touching(i);
@@ -513,24 +577,9 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         for (const auto& G : x.G) truths.back().push_back(coefficient_truth(G, T(0)));
       }
       // The exact count of each leaf's curve on this face (vrep/curve_graph.hpp, in 2D).
-      CurveProblem<T, 2> face_problem;
+      CurveProblem<T, 2> face_problem = face_curve_problem(V, pieces, d, s, edges_ids, nullptr);
       face_problem.trim = &trim;
       face_problem.options.max_boxes = std::max<std::size_t>(512, max_boxes / 2);  // per leaf and attempt
-      face_problem.dom_lo = {V.domain_lo(a), V.domain_lo(b)};
-      face_problem.dom_hi = {V.domain_hi(a), V.domain_hi(b)};
-      for (std::size_t e = 0; e < curves.size(); ++e) {
-        bool id = point[e] != 0;
-        for (const auto& [i, j] : same) id = id || i == e || j == e;
-        face_problem.identified[static_cast<std::size_t>(edge_ids[e].first)][static_cast<std::size_t>(edge_ids[e].second)] = id;
-      }
-      for (const auto& p : pieces) {
-        if (!((s ? p.hi[d] : p.lo[d]) == domain_at(d, s))) continue;
-        CurvePiece<T, 2> fp;
-        fp.lo = {p.lo[a], p.lo[b]};
-        fp.hi = {p.hi[a], p.hi[b]};
-        fp.G = face_leaves(p);
-        face_problem.pieces.push_back(std::move(fp));
-      }
       {
         // The exact pieces of the face's part (its leaves read from inside, as for the curves).
         take_count<T>(out.surfaces[face_index], count_region(face_problem));
