@@ -625,18 +625,15 @@ Commands add_vrep(CLI::App& app) {
                                 {"euler", euler_json(trimmed_euler(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, {}, ctx.limits))}});
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
-             Json gluing = nullptr;
+             Json out_doc{{"cells", cells}, {"model_euler", model}};
              if (tco->glue) {
                TrimmedGlueOptions go;
                go.max_boxes = std::max<std::size_t>(512, tco->boxes);
                const auto t0 = std::chrono::steady_clock::now();
                const auto G = trimmed_glue(M, go, ctx.limits);
-               gluing = gluing_json(G, M, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+               out_doc["gluing"] = gluing_json(G, M, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
              }
-             std::cout << Json{{"cells", cells},
-                               {"model_euler", model},
-                               {"gluing", gluing},
-                               {"note", "exact: corners, edge V-curves and V-points (certified roots), V-points off the edges (two trimming "
+             out_doc["note"] = std::string( "exact: corners, edge V-curves and V-points (certified roots), V-points off the edges (two trimming "
                                         "surfaces meeting on a face, three inside; exact where v_points_undecided is 0, else lower bounds), the "
                                         "Euler characteristic of every cell (in its trivariate's parameters and in space) and of the model (its "
                                         "region), trusted where dual (the open set's chi_c is -chi); exact where decided: the pieces of the cell's part of "
@@ -645,9 +642,8 @@ Commands add_vrep(CLI::App& app) {
                                         "and the trimming surfaces' boundary curves on the faces (face_curves, present ones listed), which are also counted exactly "
                                         "where decided (trimming_curves_on_faces: arcs and loops); exact where decided: "
                                         "V-curves between two trimming surfaces (arcs and closed loops per pair of trimming surfaces, in the "
-                                        "trivariate's parameters)"}}
-                              .dump()
-                       << "\n";
+                                        "trivariate's parameters)");
+             std::cout << out_doc.dump() << "\n";
              return 0;
            }},
           {tp, [tpo, teapot_json](const Context&) {

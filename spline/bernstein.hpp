@@ -1,17 +1,38 @@
 // The Bernstein basis and binomial coefficients in the arithmetic T: the one home of both
 // (The NURBS Book, Section 1.3).
 #pragma once
+#include <algorithm>
+#include <limits>
+#include <numeric>
 #include <vector>
 
 namespace splinex {
 
 namespace detail {
 
-/// Binomial coefficient C(n, k) as an exact T (T(integer) products and exact quotients; no
-/// floating intermediate; 0 outside 0 <= k <= n).
+/// Binomial coefficient C(n, k) as a T: computed in 64-bit integers where it fits (C(n, k) < 2^63;
+/// one conversion to T), else by products and quotients in T (exact for exact T); 0 outside
+/// 0 <= k <= n.
 template <class T>
 T binomial(int n, int k) {
   if (k < 0 || k > n) return T(0);
+  {
+    // In integers while C(n - kk + i, i) fits in 63 bits (always for n <= 62): r (n - k + i) / i
+    // is an integer at every step (r = C(n - kk + i - 1, i - 1)); with g = gcd(r, i), i / g
+    // divides n - k + i, so no intermediate exceeds the next value, and an overflow is detected.
+    // One conversion to T (exact for exact T, correctly rounded otherwise) instead of k
+    // multiplications and divisions in T (with a gcd each for rationals: a quarter of the time of
+    // exact Bernstein products).
+    const int kk = std::min(k, n - k);
+    unsigned long long r = 1;
+    bool fits = true;
+    for (int i = 1; i <= kk && fits; ++i) {
+      const unsigned long long g = std::gcd(r, static_cast<unsigned long long>(i));
+      fits = !__builtin_mul_overflow(r / g, static_cast<unsigned long long>(n - kk + i) / (static_cast<unsigned long long>(i) / g), &r) &&
+             r <= static_cast<unsigned long long>(std::numeric_limits<long>::max());
+    }
+    if (fits) return T(static_cast<long>(r));
+  }
   T r(1);
   for (int i = 1; i <= k; ++i) r = r * T(n - k + i) / T(i);
   return r;

@@ -217,7 +217,7 @@ def command_for(rng, docs, kinds=KINDS):
             argv = ["vrep", "classify", "--at", rng.choice(["1/2,1/2,1/2", "0,0,0", "1,1,1", "0.1,0.2,0.3", "1e-400,0,0",
                                                            "1e400,0,0", "1/3,1/3,1/3", "0.5,0.5"]), "DOC"]
         elif sub == "topology":
-            argv = ["vrep", "topology", "--boxes", rng.choice(["8", "64", "512"]), "DOC"]
+            argv = ["vrep", "topology", "--boxes", rng.choice(["8", "64", "512"])] + (["--glue"] if rng.random() < 0.3 else []) + ["DOC"]
         elif sub == "boolean":
             extra_files["SECOND"] = docs[rng.choice(models)]
             argv = ["vrep", "boolean", rng.choice(["union", "intersect", "subtract"]), "DOC", "SECOND",

@@ -9,6 +9,7 @@
 #include "proofs/suite.hpp"
 #include "spline/errors.hpp"
 #include "spline/hodograph.hpp"
+#include "spline/bernstein.hpp"
 #include "spline/kernel.hpp"
 
 using namespace splinex;
@@ -316,4 +317,27 @@ TEST_CASE("insert_knots_boehm equals insert_knot knot by knot, exactly, on the s
     ++compared;
   }
   CHECK(compared > 100);
+}
+
+TEST_CASE("binomial coefficients: the integer path equals Pascal's triangle exactly, in every arithmetic") {
+  // Pascal's rule in exact integers (GMP) up to n = 70, beyond the integer path's n <= 62.
+  std::vector<std::vector<Rational>> pascal{{Rational(1)}};
+  for (int n = 1; n <= 70; ++n) {
+    std::vector<Rational> row(static_cast<std::size_t>(n) + 1, Rational(1));
+    for (int k = 1; k < n; ++k) row[static_cast<std::size_t>(k)] = pascal.back()[static_cast<std::size_t>(k) - 1] + pascal.back()[static_cast<std::size_t>(k)];
+    pascal.push_back(std::move(row));
+  }
+  for (int n = 0; n <= 70; ++n)
+    for (int k = -1; k <= n + 1; ++k) {
+      const Rational want = k < 0 || k > n ? Rational(0) : pascal[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)];
+      REQUIRE(splinex::detail::binomial<Rational>(n, k) == want);
+      // Below 2^63 the integer path: exact in long, exact in double below 2^53 and correctly
+      // rounded above (half an ulp: |d - want| <= want 2^-53); beyond, k + 1 roundings at most
+      // in double's floating path.
+      const Rational d(splinex::detail::binomial<double>(n, k));
+      const Rational two53(9007199254740992LL), two63 = Rational(9223372036854775807LL) + 1;
+      if (want < two63) REQUIRE(Rational(splinex::detail::binomial<long>(n, k)) == want);
+      if (want < two53) REQUIRE(d == want);
+      else REQUIRE(abs(d - want) <= want * Rational(want < two63 ? 1 : 2 * k + 2) / two53);
+    }
 }
