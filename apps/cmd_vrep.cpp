@@ -249,7 +249,8 @@ Json gluing_json(const TrimmedGluing<T>& G, const TrimmedModel<T>& M, double sec
     twins.push_back(j);
   }
   return Json{{"decided", G.decided},
-              {"half_v_surface_pieces", G.half_pieces},
+              {"half_v_surfaces", G.half_v_surfaces},
+              {"part_pieces", G.part_pieces},
               {"boundary_v_surfaces", G.boundary_v_surfaces},
               {"internal_v_surfaces", G.internal_v_surfaces},
               {"v_surfaces", G.boundary_v_surfaces + G.internal_v_surfaces},

@@ -243,8 +243,8 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("vrep/curves/exact/lens-cut", [](benchmark::State& st) { curves_step<Rational>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/topology/double/lens-cut", [](benchmark::State& st) { surfaces_step<double>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/topology/exact/lens-cut", [](benchmark::State& st) { surfaces_step<Rational>(st); })->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("vrep/glue/double/box-cylinder", [](benchmark::State& st) { glue_step<double>(st); })->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("vrep/glue/exact/box-cylinder", [](benchmark::State& st) { glue_step<Rational>(st); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/trimmed-glue/double/box-cylinder", [](benchmark::State& st) { glue_step<double>(st); })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("vrep/trimmed-glue/exact/box-cylinder", [](benchmark::State& st) { glue_step<Rational>(st); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/double/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, false); })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("vrep/ssi/judge/teapot-handle-body", [](benchmark::State& st) { ssi_step(st, true); })->Unit(benchmark::kMillisecond);
   const std::vector<std::string> booleans{"figure3", "grid-cavity"};
@@ -295,7 +295,7 @@ int main(int argc, char** argv) {
     std::cout << std::left << std::setw(12) << "topology" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << td << std::setw(10) << te
               << std::setprecision(1) << std::setw(8) << (td > 0 ? te / td : 0.0)
               << "  (trimmed_topology of the same cell, with the exact half-V-surfaces; see the decided_surfaces counter)\n";
-    const double gd = rep.ns["vrep/glue/double/box-cylinder"], ge = rep.ns["vrep/glue/exact/box-cylinder"];
+    const double gd = rep.ns["vrep/trimmed-glue/double/box-cylinder"], ge = rep.ns["vrep/trimmed-glue/exact/box-cylinder"];
     std::cout << std::left << std::setw(12) << "glue" << std::right << std::fixed << std::setprecision(2) << std::setw(10) << gd << std::setw(10) << ge
               << std::setprecision(1) << std::setw(8) << (gd > 0 ? ge / gd : 0.0)
               << "  (trimmed_glue of box u cylinder, 7 cells; double's counts are wrong here: see the v_surfaces and decided counters)\n";

@@ -188,7 +188,7 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
         "twins exact where two cells share a trivariate (the two sides of a trimming surface) or glued faces of two trivariates, and "
         "contacts between the operands' cells matched at exact witness points (sampled, not a proof). V-surfaces = boundary + "
         "internal pieces. Table 1's gluing time, exact and double:\n\n"
-        "| model | cells | half-V-surface pieces | V-surfaces: boundary + internal (exact twins / contacts) | decided | by hand | gluing s exact | "
+        "| model | cells | half-V-surfaces (boundary + 2 internal) | V-surfaces: boundary + internal (exact twins / contacts) | decided | by hand | gluing s exact | "
         "double: boundary + internal, decided | gluing s double | double vs exact |\n|---|---|---|---|---|---|---|---|---|---|\n";
   TrimmedGlueOptions go;
   go.max_boxes = 2048;
@@ -203,7 +203,7 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
     std::size_t undecided_twins = 0, undecided_halves = 0;
     for (const auto& t : e.twins) undecided_twins += !t.decided;
     for (const auto& h : e.halves) undecided_halves += !h.decided;
-    md << "| " << m.name << " | " << m.model.cells.size() << " | " << e.half_pieces << " | " << e.boundary_v_surfaces << " + " << e.internal_v_surfaces
+    md << "| " << m.name << " | " << m.model.cells.size() << " | " << e.half_v_surfaces << " | " << e.boundary_v_surfaces << " + " << e.internal_v_surfaces
        << " (" << e.internal_v_surfaces - e.contacts << " / " << e.contacts << ") | "
        << (e.decided ? "yes" : "no: " + std::to_string(undecided_halves) + " halves, " + std::to_string(undecided_twins) + " contacts undecided")
        << " | " << (m.expected.empty() ? "-" : m.expected) << " | " << std::setprecision(3) << es << " | " << d.boundary_v_surfaces << " + "

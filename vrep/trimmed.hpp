@@ -347,7 +347,8 @@ struct TrimmedGluing {
   };
   std::vector<Half> halves;
   std::vector<Twin> twins;
-  std::size_t half_pieces = 0;          // internal + boundary over the halves
+  std::size_t part_pieces = 0;          // internal + boundary pieces over the halves (before twins split them)
+  std::size_t half_v_surfaces = 0;      // of the glued V-model: boundary + 2 internal
   std::size_t boundary_v_surfaces = 0;  // boundary pieces
   std::size_t internal_v_surfaces = 0;  // pieces of the twins' shared parts
   std::size_t contacts = 0, witness_points = 0;  // of them matched at witness points

@@ -223,7 +223,8 @@ class Gluer {
       h.unmatched = n;
     }
     // Contacts, matched at witness points: rational points of a face half's unmatched part, located
-    // on the trimming surfaces of cells of other trivariates.
+    // on the trimming surfaces of cells of other trivariates, or on their faces (affine
+    // trivariates: faces that overlap in part, which exact face gluing does not pair).
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> met;  // (face half, surface half) -> witnesses
     std::map<std::size_t, std::set<std::size_t>> partners;
     for (std::size_t i = 0; i < out.halves.size(); ++i) {
@@ -232,9 +233,9 @@ class Gluer {
       for (const auto& x : witnesses(i, out)) {
         for (std::size_t j = 0; j < out.halves.size(); ++j) {
           const auto& h2 = out.halves[j];
-          if (h2.leaf < 0 || tri(h2.cell) == tri(h.cell) || h2.unmatched == 0) continue;
-          if (!on_surface_part(h2, x)) continue;
-          ++met[{i, j}];
+          if (tri(h2.cell) == tri(h.cell) || !h2.decided || h2.unmatched == 0) continue;
+          if (!(h2.leaf >= 0 ? on_surface_part(h2, x) : on_face_part(h2, x))) continue;
+          ++met[{std::min(i, j), std::max(i, j)}];
           partners[i].insert(j);
           partners[j].insert(i);
         }
@@ -248,7 +249,7 @@ class Gluer {
       typename TrimmedGluing<T>::Twin t;
       t.a = ij.first;
       t.b = ij.second;
-      t.how = "contact across a trimming surface, located at witness points";
+      t.how = "contact between cells of different trivariates, located at witness points";
       t.witnesses = n;
       const auto& ha = out.halves[t.a];
       const auto& hb = out.halves[t.b];
@@ -282,7 +283,7 @@ class Gluer {
     for (const auto& h : out.halves) {
       out.decided = out.decided && h.decided;
       out.boundary_v_surfaces += h.boundary;
-      out.half_pieces += h.internal + h.boundary;
+      out.part_pieces += h.internal + h.boundary;
       if (!h.decided || h.unmatched == 0) continue;
       const bool matched = partners.count(static_cast<std::size_t>(&h - out.halves.data())) > 0;
       if (!matched) {
@@ -298,6 +299,7 @@ class Gluer {
         out.witness_points += t.witnesses;
       }
     }
+    out.half_v_surfaces = out.boundary_v_surfaces + 2 * out.internal_v_surfaces;
     return out;
   }
 
@@ -538,6 +540,62 @@ class Gluer {
       split_box(x, widest(x.lo, x.hi), T(1) / T(2), c);
       todo.push_back(std::move(c[0]));
       todo.push_back(std::move(c[1]));
+    }
+    return out;
+  }
+
+  /// The point x (exact, in space) lies in the relative interior of the face half's part, for an
+  /// affine trivariate (else false: not located): its exact parameters on the face, strictly inside
+  /// the face's other two ranges; every leaf of the trim read just inside (a leaf vanishing at x by
+  /// the sign of its gradient along the inward parameter direction, which must not be 0) and the
+  /// trim in.
+  bool on_face_part(const typename TrimmedGluing<T>::Half& h, const std::vector<T>& x) const {
+    const auto& cell = M_.cells[h.cell];
+    const auto& V = M_.trivariates.at(cell.trivariate);
+    const auto inv = affine_inverse(V);
+    if (!inv) return false;
+    const auto u = (*inv)(x.data());
+    for (int d = 0; d < 3; ++d) {
+      const T& ud = u[static_cast<std::size_t>(d)];
+      if (d == h.dir) {
+        if (!(ud == (h.side ? V.domain_hi(d) : V.domain_lo(d)))) return false;
+      } else if (!(V.domain_lo(d) < ud && ud < V.domain_hi(d)))
+        return false;
+    }
+    // The inward direction in space: +-dT/du_dir (T affine: the difference of two points).
+    const std::vector<T> a = u_point(V, u, h.dir, false), b = u_point(V, u, h.dir, true);
+    std::array<T, 3> inward;
+    for (int k = 0; k < 3; ++k) inward[static_cast<std::size_t>(k)] = (b[static_cast<std::size_t>(k)] - a[static_cast<std::size_t>(k)]) * (h.side ? T(-1) : T(1));
+    std::vector<const Poly3<T>*> leaves;
+    collect_leaves(cell.trim, leaves);
+    std::vector<Truth> t;
+    for (const auto* l : leaves) {
+      T v = poly_at(*l, x.data());
+      if (v == T(0)) {
+        v = T(0);
+        for (int k = 0; k < 3; ++k) v += poly_at(partial(*l, k), x.data()) * inward[static_cast<std::size_t>(k)];
+        if (v == T(0)) return false;
+      }
+      t.push_back(T(0) < v ? Truth::in : Truth::out);
+    }
+    std::size_t k = 0;
+    return combine(cell.trim, t, k) == Truth::in;
+  }
+
+  /// The point of V at the parameters u with u[dir] set to the domain's start or end.
+  static std::vector<T> u_point(const BSpline<T>& V, std::array<T, 3> u, int dir, bool end) {
+    u[static_cast<std::size_t>(dir)] = end ? V.domain_hi(dir) : V.domain_lo(dir);
+    return evaluate(V, std::vector<T>(u.begin(), u.end()));
+  }
+
+  /// d g / d x_k.
+  static Poly3<T> partial(const Poly3<T>& g, int k) {
+    Poly3<T> out;
+    for (const auto& [e, c] : g.terms) {
+      if (e[static_cast<std::size_t>(k)] == 0) continue;
+      auto f = e;
+      --f[static_cast<std::size_t>(k)];
+      out.terms[f] += c * T(e[static_cast<std::size_t>(k)]);
     }
     return out;
   }

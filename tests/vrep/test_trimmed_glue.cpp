@@ -44,7 +44,8 @@ TEST_CASE("vrep trimmed glue: Figure 3 through the trimmed path has the paper's 
   REQUIRE(U.cells.size() == 3);
   const auto G = trimmed_glue(U, options());
   CHECK(G.decided);
-  CHECK(G.half_pieces == 18);
+  CHECK(G.half_v_surfaces == 18);
+  CHECK(G.part_pieces == 18);
   CHECK(G.boundary_v_surfaces == 14);
   CHECK(G.internal_v_surfaces == 2);
   // x = 1 between O1's two parts: one trivariate, the two sides of O2's plane, exact.
@@ -67,6 +68,28 @@ TEST_CASE("vrep trimmed glue: Figure 3 through the trimmed path has the paper's 
   CHECK(D.decided);
   CHECK(D.boundary_v_surfaces == 14);
   CHECK(D.internal_v_surfaces == 2);
+}
+
+TEST_CASE("vrep trimmed glue: boxes touching on faces that overlap in part are matched face to face") {
+  // A = [0,1]^3, B = [1,2]x[0,2]x[0,1]: the faces x = 1 overlap in [0,1]^2 only, so exact face
+  // gluing does not pair them; witness points of A's face are located on B's face exactly.
+  const auto U = trimmed_boolean(box({R(0), R(0), R(0)}, {R(1), R(1), R(1)}), box({R(1), R(0), R(0)}, {R(2), R(2), R(1)}), BooleanOp::unite,
+                                 Blend::sum_clipped, TrimOptions{}, R(0));
+  const auto G = trimmed_glue(U, options());
+  CHECK(G.decided);
+  // A's five other faces; B's face x = 1 above y = 1, and its five other faces.
+  CHECK(G.boundary_v_surfaces == 11);
+  CHECK(G.internal_v_surfaces == 1);
+  CHECK(G.half_v_surfaces == 13);
+  CHECK(twins_of(G, "contact") == 1);
+  // A gap of 2^-40 between them: nothing internal, every face on the boundary (12), exactly.
+  const R gap = R(1) / R(1099511627776LL);
+  const auto Gap = trimmed_glue(trimmed_boolean(box({R(0), R(0), R(0)}, {R(1), R(1), R(1)}), box({R(1) + gap, R(0), R(0)}, {R(2), R(2), R(1)}),
+                                                BooleanOp::unite, Blend::sum_clipped, TrimOptions{}, R(0)),
+                                options());
+  CHECK(Gap.decided);
+  CHECK(Gap.boundary_v_surfaces == 12);
+  CHECK(Gap.internal_v_surfaces == 0);
 }
 
 TEST_CASE("vrep trimmed glue: a box united with a cylinder through it, counted by hand") {
