@@ -3,11 +3,18 @@
 // intersected and subtracted, double against exact, and contacts it cannot match said so.
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+
 #include "exact/rational.hpp"
 #include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
+#include "vrep/trimmed_impl.hpp"
 #include "vrep/vmodel.hpp"
 
 using namespace splinex;
@@ -152,4 +159,183 @@ TEST_CASE("vrep trimmed glue: contacts it cannot match are said so, bad input re
   auto bad = U;
   bad.cells.front().trivariate = 1000;
   CHECK_THROWS_AS(trimmed_glue(bad, options()), ValidationError);
+}
+
+namespace {
+
+/// 4-connected components of the marked squares of an n0 x n1 grid.
+std::size_t components(const std::vector<std::vector<char>>& m) {
+  const std::size_t n0 = m.size(), n1 = n0 ? m[0].size() : 0;
+  std::vector<std::vector<char>> seen(n0, std::vector<char>(n1, 0));
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n0; ++i)
+    for (std::size_t j = 0; j < n1; ++j) {
+      if (!m[i][j] || seen[i][j]) continue;
+      ++count;
+      std::vector<std::pair<std::size_t, std::size_t>> stack{{i, j}};
+      seen[i][j] = 1;
+      while (!stack.empty()) {
+        const auto [a, b] = stack.back();
+        stack.pop_back();
+        const std::pair<long, long> nb[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+        for (const auto& [da, db] : nb) {
+          const long x = static_cast<long>(a) + da, y = static_cast<long>(b) + db;
+          if (x < 0 || y < 0 || x >= static_cast<long>(n0) || y >= static_cast<long>(n1)) continue;
+          if (!m[static_cast<std::size_t>(x)][static_cast<std::size_t>(y)] || seen[static_cast<std::size_t>(x)][static_cast<std::size_t>(y)]) continue;
+          seen[static_cast<std::size_t>(x)][static_cast<std::size_t>(y)] = 1;
+          stack.push_back({static_cast<std::size_t>(x), static_cast<std::size_t>(y)});
+        }
+      }
+    }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("vrep trimmed glue: random Booleans of boxes against a grid oracle, per half-V-surface") {
+  // Boxes with corners on the grid of halves in [0, 3]: every region boundary lies on that grid, so
+  // classifying the centres of quarter-unit squares (1/8 off the surface on either side) is exact,
+  // and their 4-connected components are the pieces (touching at corners counts apart, as in
+  // count_region). Independent of the subdivision engines: exact point classification only.
+  std::uint64_t state = 0x2545f4914f6cdd1dULL;
+  auto next = [&](int m) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<int>(state % static_cast<std::uint64_t>(m));
+  };
+  auto random_corners = [&](std::vector<R>& lo, std::vector<R>& hi) {
+    lo.clear();
+    hi.clear();
+    for (int d = 0; d < 3; ++d) {
+      const int a = next(5), b = a + 1 + next(6 - a);
+      lo.push_back(R(a, 2));
+      hi.push_back(R(b, 2));
+    }
+  };
+  const R h(1, 4), off(1, 8);
+  std::size_t halves_compared = 0, undecided = 0, models = 0, decided_models = 0;
+  for (int k = 0; k < 24; ++k) {
+    std::vector<R> alo, ahi, blo, bhi;
+    random_corners(alo, ahi);
+    random_corners(blo, bhi);
+    const BooleanOp op = k % 3 == 0 ? BooleanOp::intersect : k % 3 == 1 ? BooleanOp::subtract : BooleanOp::unite;
+    TrimmedModel<R> M;
+    try {
+      M = trimmed_boolean(box(alo, ahi), box(blo, bhi), op, Blend::sum_clipped, TrimOptions{}, R(0));
+    } catch (const Error&) {
+      continue;  // an empty result
+    }
+    ++models;
+    const auto G = trimmed_glue(M, options());
+    decided_models += G.decided;
+    std::size_t shared_twice = 0;  // V-surfaces seen from both sides: per half and cell across, components
+    std::vector<std::array<R, 6>> boxes;  // every cell's box, for the cell across
+    for (const auto& c : M.cells) {
+      const auto& V = M.trivariates[c.trivariate];
+      const auto a = evaluate(V, {V.domain_lo(0), V.domain_lo(1), V.domain_lo(2)}), b = evaluate(V, {V.domain_hi(0), V.domain_hi(1), V.domain_hi(2)});
+      boxes.push_back({a[0], a[1], a[2], b[0], b[1], b[2]});
+    }
+    auto in = [](const Region<R>& r, const std::array<R, 3>& x) { return classify_point(r, std::vector<R>(x.begin(), x.end())) == Truth::in; };
+    for (const auto& half : G.halves) {
+      const auto& cell = M.cells[half.cell];
+      const auto& V = M.trivariates[cell.trivariate];
+      std::array<R, 3> lo, hi;  // the cell's box: its trivariate's corners
+      {
+        const auto a = evaluate(V, {V.domain_lo(0), V.domain_lo(1), V.domain_lo(2)}), b = evaluate(V, {V.domain_hi(0), V.domain_hi(1), V.domain_hi(2)});
+        for (int d = 0; d < 3; ++d) {
+          lo[static_cast<std::size_t>(d)] = a[static_cast<std::size_t>(d)];
+          hi[static_cast<std::size_t>(d)] = b[static_cast<std::size_t>(d)];
+        }
+      }
+      // The plane of the half: a face of the box, or the trimming plane (leaf linear in one coordinate).
+      int axis = 0;
+      R at(0);
+      bool face = half.leaf < 0;
+      if (face) {
+        axis = half.dir;  // box_cells: parameter d runs along coordinate d
+        at = half.side ? hi[static_cast<std::size_t>(axis)] : lo[static_cast<std::size_t>(axis)];
+      } else {
+        std::vector<const Poly3<R>*> leaves;
+        vrep_detail::collect_leaves(cell.trim, leaves);
+        const auto& g = *leaves.at(static_cast<std::size_t>(half.leaf));
+        R coef(0), cst(0);
+        for (const auto& [e, c] : g.terms) {
+          if (e == std::array<int, 3>{0, 0, 0}) cst = c;
+          else {
+            axis = e[0] ? 0 : e[1] ? 1 : 2;
+            coef = c;
+          }
+        }
+        at = -cst / coef;
+        // On or beyond the box's faces the open domain holds none of it.
+        if (!(lo[static_cast<std::size_t>(axis)] < at && at < hi[static_cast<std::size_t>(axis)])) {
+          if (half.decided) {
+            CHECK(half.internal == 0);
+            CHECK(half.boundary == 0);
+          }
+          continue;
+        }
+      }
+      const int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;
+      const auto na = static_cast<std::size_t>(((hi[static_cast<std::size_t>(a)] - lo[static_cast<std::size_t>(a)]) / h).convert_to<double>() + 0.5);
+      const auto nb = static_cast<std::size_t>(((hi[static_cast<std::size_t>(b)] - lo[static_cast<std::size_t>(b)]) / h).convert_to<double>() + 0.5);
+      std::vector<std::vector<char>> internal(na, std::vector<char>(nb, 0)), boundary = internal;
+      std::map<std::size_t, std::vector<std::vector<char>>> across;  // cell on the other side -> its squares
+      for (std::size_t i = 0; i < na; ++i)
+        for (std::size_t j = 0; j < nb; ++j) {
+          std::array<R, 3> p;
+          p[static_cast<std::size_t>(axis)] = at;
+          p[static_cast<std::size_t>(a)] = lo[static_cast<std::size_t>(a)] + (R(static_cast<long>(i)) + R(1, 2)) * h;
+          p[static_cast<std::size_t>(b)] = lo[static_cast<std::size_t>(b)] + (R(static_cast<long>(j)) + R(1, 2)) * h;
+          std::array<R, 3> plus = p, minus = p;
+          plus[static_cast<std::size_t>(axis)] += off;
+          minus[static_cast<std::size_t>(axis)] -= off;
+          // The cell's side and the other side.
+          std::array<R, 3> mine, other;
+          if (face) {
+            mine = half.side ? minus : plus;
+            other = half.side ? plus : minus;
+            if (!in(cell.trim, mine)) continue;
+          } else {
+            const bool ip = in(cell.trim, plus), im = in(cell.trim, minus);
+            if (ip == im) continue;  // the trim does not change across the plane here
+            mine = ip ? plus : minus;
+            other = ip ? minus : plus;
+          }
+          (in(M.region, other) ? internal : boundary)[i][j] = 1;
+          if (!in(M.region, other)) continue;
+          std::size_t found = 0, which = 0;
+          for (std::size_t c2 = 0; c2 < M.cells.size(); ++c2) {
+            const auto& bx = boxes[c2];
+            bool inside = true;
+            for (int d = 0; d < 3; ++d) inside = inside && bx[static_cast<std::size_t>(d)] < other[static_cast<std::size_t>(d)] && other[static_cast<std::size_t>(d)] < bx[3 + static_cast<std::size_t>(d)];
+            if (inside && in(M.cells[c2].trim, other)) {
+              ++found;
+              which = c2;
+            }
+          }
+          REQUIRE(found == 1);  // the cells tile the model
+          auto& m = across[which];
+          if (m.empty()) m.assign(na, std::vector<char>(nb, 0));
+          m[i][j] = 1;
+        }
+      for (const auto& [c2, m] : across) shared_twice += components(m);
+      if (!half.decided) {
+        ++undecided;
+        continue;
+      }
+      ++halves_compared;
+      INFO("model " << k << ", cell " << half.cell << " (" << cell.name << "), " << half.what);
+      CHECK(half.internal == components(internal));
+      CHECK(half.boundary == components(boundary));
+    }
+    // The V-model's internal V-surfaces: each seen once from each side.
+    if (G.decided) CHECK(2 * G.internal_v_surfaces == shared_twice);
+  }
+  CHECK(models >= 15);
+  CHECK(halves_compared >= 200);
+  CHECK(undecided * 10 <= halves_compared);  // nearly all decided
+  WARN("grid oracle: " << models << " models (" << decided_models << " glued decided), " << halves_compared << " halves compared, " << undecided
+                       << " undecided");
 }
