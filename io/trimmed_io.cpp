@@ -175,7 +175,7 @@ Json trimmed_to_json(const TrimmedModel<T>& M) {
   }
   Json out{{"type", "trimmed_vmodel"},
            {"summary", {{"cells", M.cells.size()}, {"whole", whole}, {"cut", cut}, {"categories", categories},
-                        {"topology", "not built for trimmed cells (their V-surfaces, V-curves and V-points)"}}},
+                        {"topology", "not stored: vrep topology computes the cells' V-points, V-curves and half-V-surfaces, vrep topology --glue their gluing into V-surfaces"}}},
            {"region", region_to_json(M.region)},
            {"cells", cells}};
   if (!inherited.empty()) out["inherited_trivariates"] = inherited;

@@ -13,8 +13,8 @@ VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const 
   VModelCells out;
   if (!doc.is_object()) throw ValidationError(where, "is not a JSON object", "give a V-model or trivariate document");
   if (doc.contains("type") && doc["type"] == "trimmed_vmodel")
-    throw ValidationError(where, "is a trimmed V-model (cells cut along curved surfaces, no topology)",
-                          "give it to vrep boolean, volume, classify or export; glue, info and eval need a V-model");
+    throw ValidationError(where, "is a trimmed V-model (cells cut along curved surfaces)",
+                          "give it to vrep boolean, volume, classify, export or topology (--glue: its gluing); glue, info and eval need a V-model");
   if (!doc.contains("type") || doc["type"] != "vmodel") {
     out.trivariates.push_back(spline_from_json(doc, limits, where));
     out.names.push_back(where);
