@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,5 +33,17 @@ inline BSpline<Rational> affine_field(const BSpline<Rational>& V, const std::arr
 
 /// The exact sphere patch (fixtures/solve_examples.hpp).
 inline BSpline<Rational> stereographic_sphere() { return splinex::stereographic_sphere(); }
+
+/// A seeded xorshift64 stream of integers in [0, m): reproducible random cases without <random>'s
+/// distributions, whose results differ between standard libraries.
+struct XorShift {
+  std::uint64_t state;
+  int operator()(int m) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<int>(state % static_cast<std::uint64_t>(m));
+  }
+};
 
 }  // namespace splinex::test

@@ -95,7 +95,6 @@ Region<T> conj(Region<T> a, Region<T> b) {
   return region_and<T>({std::move(a), std::move(b)});
 }
 
-template <class T>
 void take(RegionCount c, bool& decided, std::size_t& pieces, std::string& reason) {
   decided = c.decided;
   pieces = c.decided ? c.pieces : 0;
@@ -172,7 +171,7 @@ class Gluer {
         t.b = *j;
         t.how = "one trivariate, the two sides of a trimming surface";
         std::string reason;
-        take<T>(count_leaf(h.cell, poly(h), &M_.cells[c2].trim, {}), t.decided, t.pieces, reason);
+        take(count_leaf(h.cell, poly(h), &M_.cells[c2].trim, {}), t.decided, t.pieces, reason);
         t.undecided_reason = reason;
         if (t.decided && t.pieces == 0) continue;
         out.twins.push_back(t);
@@ -194,7 +193,7 @@ class Gluer {
           t.b = *j;
           t.how = c1 == c2 ? "a seam of the cell's trivariate" : "faces of the trivariates glued exactly";
           std::string reason;
-          take<T>(count_face(c1, fa[1], fa[2], {&M_.cells[c2].trim}, false), t.decided, t.pieces, reason);
+          take(count_face(c1, fa[1], fa[2], {&M_.cells[c2].trim}, false), t.decided, t.pieces, reason);
           t.undecided_reason = reason;
           if (t.decided && t.pieces == 0) continue;
           out.twins.push_back(t);
@@ -214,8 +213,8 @@ class Gluer {
       bool decided = false;
       std::size_t n = 0;
       std::string reason;
-      if (h.leaf >= 0) take<T>(count_leaf(h.cell, poly(h), nullptr, others), decided, n, reason);
-      else take<T>(count_face(h.cell, h.dir, h.side, others, true), decided, n, reason);
+      if (h.leaf >= 0) take(count_leaf(h.cell, poly(h), nullptr, others), decided, n, reason);
+      else take(count_face(h.cell, h.dir, h.side, others, true), decided, n, reason);
       if (!decided) {
         h.decided = false;
         h.undecided_reason = "its part not on an exact twin: " + reason;
@@ -346,6 +345,17 @@ class Gluer {
     return o;
   }
 
+  /// The model's region and none of the cells' trims `minus`, over `table`'s surfaces (read as
+  /// `aliased` says).
+  template <class Outside, class Flip>
+  Region<T> model_minus(LeafTable<T>& table, const std::vector<const Region<T>*>& minus, const Outside& read_outside, const Flip& flip) const {
+    Region<T> other = aliased(M_.region, table, read_outside, flip);
+    if (minus.empty()) return other;
+    std::vector<Region<T>> any;
+    for (const auto* r : minus) any.push_back(aliased(*r, table, read_outside, flip));
+    return conj(std::move(other), region_not(region_or(std::move(any))));
+  }
+
   /// The formula on face (d, s) of cell c: its trim and, read just outside the face, the model's
   /// region (minus the cells' trims `extra` when `model_minus_extra`; without it, `extra`'s trims
   /// instead of the region), or its complement; with its distinct surfaces.
@@ -379,14 +389,8 @@ class Gluer {
     const auto no = [](const Poly3<T>&) { return false; };
     Region<T> formula = aliased(cell.trim, out.table, no, no);
     Region<T> other;
-    if (extra.empty() || model_minus_extra) {
-      other = aliased(M_.region, out.table, vanishes, no);
-      if (!extra.empty()) {
-        std::vector<Region<T>> any;
-        for (const auto* r : extra) any.push_back(aliased(*r, out.table, vanishes, no));
-        other = conj(std::move(other), region_not(region_or(std::move(any))));
-      }
-    } else {
+    if (extra.empty() || model_minus_extra) other = model_minus(out.table, extra, vanishes, no);
+    else {
       std::vector<Region<T>> all_of;
       for (const auto* r : extra) all_of.push_back(aliased(*r, out.table, vanishes, no));
       other = region_and(std::move(all_of));
@@ -425,16 +429,7 @@ class Gluer {
     const auto no = [](const Poly3<T>&) { return false; };
     const auto across = [&](const Poly3<T>& h) { return proportional(g, h) != 0; };
     Region<T> formula = aliased(cell.trim, table, no, no);
-    Region<T> other;
-    if (pair) other = aliased(*pair, table, no, across);
-    else {
-      other = aliased(M_.region, table, no, across);
-      if (!minus.empty()) {
-        std::vector<Region<T>> any;
-        for (const auto* r : minus) any.push_back(aliased(*r, table, no, across));
-        other = conj(std::move(other), region_not(region_or(std::move(any))));
-      }
-    }
+    Region<T> other = pair ? aliased(*pair, table, no, across) : model_minus(table, minus, no, across);
     formula = conj(std::move(formula), complement ? region_not(std::move(other)) : std::move(other));
     std::size_t k = table.g.size();
     for (std::size_t i = 0; i < table.g.size() && k == table.g.size(); ++i)
@@ -446,8 +441,8 @@ class Gluer {
   void face_half(typename TrimmedGluing<T>::Half& h) const {
     std::string reason;
     bool d1 = false, d2 = false;
-    take<T>(count_face(h.cell, h.dir, h.side, {}, true, false), d1, h.internal, reason);
-    take<T>(count_face(h.cell, h.dir, h.side, {}, true, true), d2, h.boundary, reason);
+    take(count_face(h.cell, h.dir, h.side, {}, true, false), d1, h.internal, reason);
+    take(count_face(h.cell, h.dir, h.side, {}, true, true), d2, h.boundary, reason);
     h.decided = d1 && d2;
     h.undecided_reason = reason;
   }
@@ -455,8 +450,8 @@ class Gluer {
   void leaf_half(typename TrimmedGluing<T>::Half& h) const {
     std::string reason;
     bool d1 = false, d2 = false;
-    take<T>(count_leaf(h.cell, poly(h), nullptr, {}, false), d1, h.internal, reason);
-    take<T>(count_leaf(h.cell, poly(h), nullptr, {}, true), d2, h.boundary, reason);
+    take(count_leaf(h.cell, poly(h), nullptr, {}, false), d1, h.internal, reason);
+    take(count_leaf(h.cell, poly(h), nullptr, {}, true), d2, h.boundary, reason);
     h.decided = d1 && d2;
     h.undecided_reason = reason;
   }
@@ -517,14 +512,7 @@ class Gluer {
       std::vector<Truth> t;
       for (const auto& G : x.G) t.push_back(coefficient_truth(G, T(0)));
       bool strict = true;
-      for (const auto& G : x.G) {
-        bool pos = true, neg = true;
-        for (const auto& c : G.c) {
-          pos = pos && T(0) < c;
-          neg = neg && c < T(0);
-        }
-        strict = strict && (pos || neg);
-      }
+      for (const auto& G : x.G) strict = strict && detail::bern_sign(G) != 0;
       std::size_t k = 0;
       const Truth f = combine(formula, t, k);
       if (f == Truth::out) continue;

@@ -220,13 +220,7 @@ TEST_CASE("vrep boolean: CGAL's exact Nef polyhedra agree (volumes and boundary 
   CHECK(v.facets == n.facets);
   // Random boxes with coordinates in {0, 1/2, ..., 3} (coplanar and touching faces are common):
   // every operation, volumes exactly, counts where both boundaries are manifold.
-  std::uint64_t state = 0x9e3779b97f4a7c15ULL;
-  auto next = [&](int m) {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return static_cast<int>(state % static_cast<std::uint64_t>(m));
-  };
+  test::XorShift next{0x9e3779b97f4a7c15ULL};
   auto random_box = [&]() {
     std::vector<R> lo, hi;
     for (int d = 0; d < 3; ++d) {

@@ -11,6 +11,7 @@
 #include "exact/rational.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
+#include "tests/helpers.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
@@ -197,13 +198,7 @@ TEST_CASE("vrep trimmed glue: random Booleans of boxes against a grid oracle, pe
   // classifying the centres of quarter-unit squares (1/8 off the surface on either side) is exact,
   // and their 4-connected components are the pieces (touching at corners counts apart, as in
   // count_region). Independent of the subdivision engines: exact point classification only.
-  std::uint64_t state = 0x2545f4914f6cdd1dULL;
-  auto next = [&](int m) {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return static_cast<int>(state % static_cast<std::uint64_t>(m));
-  };
+  test::XorShift next{0x2545f4914f6cdd1dULL};
   auto random_corners = [&](std::vector<R>& lo, std::vector<R>& hi) {
     lo.clear();
     hi.clear();
