@@ -1,0 +1,289 @@
+#include "cut/guide.hpp"
+
+#include <chrono>
+
+#include "float/rounding.hpp"
+#include "spline/basis.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/factories.hpp"
+#include "spline/knots.hpp"
+
+namespace splinex {
+
+namespace {
+
+constexpr int kDegree = 3;
+
+template <class T>
+T from_q(const Rational& x) { return ArithTraits<T>::from_rational(x); }
+
+// The non-zero basis values and first derivatives at x: (first index, values, derivatives).
+template <class T>
+struct Local {
+  std::size_t first = 0;
+  std::vector<T> v, d;
+};
+
+template <class T>
+Local<T> local_basis(const std::vector<T>& U, std::size_t n, const T& x) {
+  const std::size_t s = find_span(U, kDegree, n, x);
+  const auto ders = ders_basis_funs(s, x, kDegree, 1, U);
+  return {s - kDegree, ders[0], ders[1]};
+}
+
+// A row of the basis at a point: value, d/dx and d/dy of every non-zero phi_i (sparse).
+template <class T>
+struct BasisRow {
+  std::vector<std::pair<std::size_t, T>> v, dx, dy;
+};
+
+template <class T>
+BasisRow<T> basis_row(const std::vector<T>& U, std::size_t n, const T& x, const T& y) {
+  const auto bx = local_basis(U, n, x), by = local_basis(U, n, y);
+  BasisRow<T> r;
+  for (int b = 0; b <= kDegree; ++b)
+    for (int a = 0; a <= kDegree; ++a) {
+      const std::size_t idx = (bx.first + a) + n * (by.first + b);
+      r.v.emplace_back(idx, bx.v[a] * by.v[b]);
+      r.dx.emplace_back(idx, bx.d[a] * by.v[b]);
+      r.dy.emplace_back(idx, bx.v[a] * by.d[b]);
+    }
+  return r;
+}
+
+template <class T>
+void add_outer(QuadraticProgram<T>& qp, const std::vector<std::pair<std::size_t, T>>& a, const T& w) {
+  for (const auto& [i, vi] : a)
+    for (const auto& [j, vj] : a) qp.d(i, j) += w * vi * vj;
+}
+
+// The univariate Gram matrices G^a_{IJ} = int N_I^(a) N_J^(a), a = 0, 1, 2, over the knots' domain:
+// per span, each basis function's Taylor expansion at the span's left end (exact from its
+// derivatives there) gives its power form in t in [0, 1], and products integrate term by term.
+template <class T>
+std::array<std::vector<T>, 3> gram_matrices(const std::vector<T>& U) {
+  const std::size_t n = U.size() - kDegree - 1;
+  std::array<std::vector<T>, 3> G;
+  for (auto& g : G) g.assign(n * n, T(0));
+  for (std::size_t s = kDegree; s < n; ++s) {
+    if (!(U[s] < U[s + 1])) continue;
+    const T h = U[s + 1] - U[s];
+    const auto ders = ders_basis_funs(s, U[s], kDegree, kDegree, U);
+    // power coefficients in t of N_j(U[s] + h t): ders[r][j] h^r / r!
+    std::vector<std::vector<T>> pw(kDegree + 1, std::vector<T>(kDegree + 1));
+    for (int j = 0; j <= kDegree; ++j) {
+      T hr(1), fact(1);
+      for (int r = 0; r <= kDegree; ++r) {
+        if (r > 0) hr = hr * h, fact = fact * T(r);
+        pw[j][r] = ders[r][j] * hr / fact;
+      }
+    }
+    for (int a = 0; a <= 2; ++a) {
+      // the a-th x-derivative: d^a/dt^a times h^-a
+      T scale(1);
+      for (int k = 0; k < a; ++k) scale = scale / h;
+      std::vector<std::vector<T>> q(kDegree + 1, std::vector<T>(kDegree + 1 - a, T(0)));
+      for (int j = 0; j <= kDegree; ++j)
+        for (int r = a; r <= kDegree; ++r) {
+          T c = pw[j][r];
+          for (int k = 0; k < a; ++k) c = c * T(r - k);
+          q[j][r - a] = c * scale;
+        }
+      for (int i = 0; i <= kDegree; ++i)
+        for (int j = 0; j <= kDegree; ++j) {
+          T sum(0);
+          for (std::size_t m = 0; m < q[i].size(); ++m)
+            for (std::size_t l = 0; l < q[j].size(); ++l) sum += q[i][m] * q[j][l] / T(static_cast<int>(m + l + 1));
+          G[a][(s - kDegree + i) * n + (s - kDegree + j)] += sum * h;
+        }
+    }
+  }
+  return G;
+}
+
+std::array<Rational, 2> normal_at(const CutData2<Rational>& cut, int e) {
+  const auto& t = cut.ends[e].tangent;
+  return e == 0 ? std::array<Rational, 2>{t[1], -t[0]} : std::array<Rational, 2>{-t[1], t[0]};
+}
+
+struct Sample {
+  std::size_t facet;
+  Rational param;
+  bool positive;
+};
+
+template <class T>
+std::array<T, 2> point_of(const BSpline<T>& F, const T& s) {
+  const auto p = evaluate(F, std::vector<T>{s});
+  return {p[0], p[1]};
+}
+
+}  // namespace
+
+std::vector<Rational> guide_knots(int inner_knots) {
+  std::vector<Rational> inner;
+  for (int i = 1; i <= inner_knots; ++i) inner.push_back(Rational(i, inner_knots + 1));
+  return clamped_knots<Rational>(kDegree, Rational(0), Rational(1), inner);
+}
+
+template <class T>
+std::vector<T> regularization_matrix(const std::vector<T>& U) {
+  const std::size_t n = U.size() - kDegree - 1, N = n * n;
+  const auto G = gram_matrices(U);
+  std::vector<T> M(N * N, T(0));
+  for (std::size_t j1 = 0; j1 < n; ++j1)
+    for (std::size_t i1 = 0; i1 < n; ++i1)
+      for (std::size_t j2 = 0; j2 < n; ++j2)
+        for (std::size_t i2 = 0; i2 < n; ++i2) {
+          const std::size_t I = i1 + n * j1, J = i2 + n * j2;
+          const std::size_t x = i1 * n + i2, y = j1 * n + j2;
+          // f_xx^2 + 2 f_xy^2 + f_yy^2
+          M[I * N + J] = G[2][x] * G[0][y] + T(2) * G[1][x] * G[1][y] + G[0][x] * G[2][y];
+        }
+  return M;
+}
+
+template <class T>
+GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rational>& cut_in, const GuideOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (o.inner_knots < 0 || o.inner_knots > 1000) throw ValidationError("inner-knots", "is " + std::to_string(o.inner_knots), "give 0 .. 1000 inner knots");
+  if (o.max_inner_knots < o.inner_knots) throw ValidationError("max-inner-knots", "is below inner-knots", "give max-inner-knots >= inner-knots");
+  if (o.samples < 1 || o.samples > 100000) throw ValidationError("samples", "is " + std::to_string(o.samples), "give 1 .. 100000 samples per facet");
+  if (!(o.delta > 0)) throw ValidationError("delta", "is not positive", "give delta > 0 (the margin of f* on the samples)");
+  if (!(o.lambda_int > 0) || !(o.lambda_tan > 0) || !(o.lambda_reg > 0))
+    throw ValidationError("weights", "are not all positive", "give positive lambda_int, lambda_tan, lambda_reg (Lemma 1 needs them)");
+  if (o.strip < 0) throw ValidationError("strip", "is negative", "give a strip width >= 0");
+  validate_solid(solid_in);
+  GuideResult<T> R;
+  R.cut = validate_cut(solid_in, cut_in);
+  R.frame = unit_frame(solid_in);
+  R.solid = to_frame(solid_in, R.frame);
+  const auto& S = R.solid;
+
+  // The cut points and their normals (exact), and the samples (parameters and sides exact).
+  std::array<std::array<Rational, 2>, 2> ends;
+  for (int e = 0; e < 2; ++e) {
+    const auto p = evaluate(S.facets[R.cut.ends[e].facet], std::vector<Rational>{R.cut.ends[e].param});
+    ends[e] = {p[0], p[1]};
+  }
+  auto in_strip = [&](const std::array<Rational, 2>& x) {
+    for (const auto& p : ends) {
+      Rational dx = x[0] - p[0], dy = x[1] - p[1];
+      if (dx < 0) dx = -dx;
+      if (dy < 0) dy = -dy;
+      if (dx <= o.strip && dy <= o.strip) return true;
+    }
+    return false;
+  };
+  std::vector<Sample> samples;
+  for (std::size_t i = 0; i < S.facets.size(); ++i) {
+    const auto& F = S.facets[i];
+    const Rational lo = F.domain_lo(0), hi = F.domain_hi(0);
+    for (int j = 0; j < o.samples; ++j) {
+      const Rational s = lo + (hi - lo) * Rational(j, o.samples);
+      const auto p = evaluate(F, std::vector<Rational>{s});
+      const std::array<Rational, 2> x{p[0], p[1]};
+      if (in_strip(x)) continue;
+      bool is_end = false;
+      for (const auto& c : R.cut.ends) is_end = is_end || (c.facet == i && c.param == s);
+      if (is_end) continue;
+      samples.push_back({i, s, on_arc(i, s, R.cut.ends[0], R.cut.ends[1])});
+    }
+  }
+  std::vector<Sample> ordered;
+  for (const auto& s : samples) if (s.positive) ordered.push_back(s);
+  R.samples_positive = ordered.size();
+  for (const auto& s : samples) if (!s.positive) ordered.push_back(s);
+  R.samples_negative = ordered.size() - R.samples_positive;
+  for (const auto& s : ordered) {
+    const auto p = evaluate(S.facets[s.facet], std::vector<Rational>{s.param});
+    R.sample_points.push_back({p[0], p[1]});
+  }
+
+  // The facets, points and data in T (rounded for double).
+  std::vector<BSpline<T>> facets;
+  for (const auto& F : S.facets) {
+    if constexpr (ArithTraits<T>::exact) facets.push_back(F);
+    else facets.push_back(round_spline<T>(F, "facet"));
+  }
+  const T delta = from_q<T>(o.delta), li = from_q<T>(o.lambda_int), lt = from_q<T>(o.lambda_tan), lr = from_q<T>(o.lambda_reg);
+
+  for (int k = o.inner_knots;; k = 2 * k + 1) {
+    R.tried.push_back(k);
+    const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, N = n * n;
+    if (N * (N + ordered.size()) > o.max_size)
+      throw SizeLimitError("inner-knots", "the program with " + std::to_string(k) + " inner knots has " + std::to_string(N) + " variables and " + std::to_string(ordered.size()) + " rows, over the limit", "give fewer inner knots or samples, or raise the limit");
+    std::vector<T> U;
+    for (const auto& u : guide_knots(k)) U.push_back(from_q<T>(u));
+    QuadraticProgram<T> qp;
+    qp.n = N;
+    qp.D = regularization_matrix(U);
+    for (auto& v : qp.D) v = v * lr;
+    qp.c.assign(N, T(0));
+    qp.c0 = T(0);
+    for (int e = 0; e < 2; ++e) {
+      const auto& c = R.cut.ends[e];
+      const auto x = point_of(facets[c.facet], from_q<T>(c.param));
+      const auto row = basis_row(U, n, x[0], x[1]);
+      const auto nr = normal_at(R.cut, e);
+      const T nx = from_q<T>(nr[0]), ny = from_q<T>(nr[1]);
+      add_outer(qp, row.v, li);
+      add_outer(qp, row.dx, lt);
+      add_outer(qp, row.dy, lt);
+      for (const auto& [i, v] : row.dx) qp.c[i] += T(-2) * lt * nx * v;
+      for (const auto& [i, v] : row.dy) qp.c[i] += T(-2) * lt * ny * v;
+      qp.c0 += lt * (nx * nx + ny * ny);
+    }
+    // Rounded sums need not be symmetric bit for bit; the solver reads the lower triangle, and so
+    // does the program kept for the check.
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = i + 1; j < N; ++j) qp.d(i, j) = qp.d(j, i);
+    for (const auto& s : ordered) {
+      const auto x = point_of(facets[s.facet], from_q<T>(s.param));
+      const auto row = basis_row(U, n, x[0], x[1]);
+      typename QuadraticProgram<T>::Row r;
+      r.a = row.v;
+      r.at_least = s.positive;
+      r.b = s.positive ? delta : T(-delta);
+      qp.rows.push_back(std::move(r));
+    }
+    R.solution = solve_qp(qp);
+    if constexpr (ArithTraits<T>::exact) R.program = qp;
+    else R.program = exact_program(qp);
+    R.status = R.solution.status;
+    R.inner_knots = k;
+    if (R.status == QPStatus::optimal || 2 * k + 1 > o.max_inner_knots) break;
+  }
+  R.kkt = check_kkt(R.program, R.solution);
+  R.positive_definite = positive_definite(R.program);
+  if (R.status == QPStatus::optimal) {
+    const auto U = guide_knots(R.inner_knots);
+    R.coefficients = R.solution.x;
+    std::vector<T> pts;
+    for (const auto& c : R.coefficients) pts.push_back(from_q<T>(c));
+    std::vector<T> UT;
+    for (const auto& u : U) UT.push_back(from_q<T>(u));
+    R.f = make_spline<T>({kDegree, kDegree}, {UT, UT}, 1, pts);
+    // The interpolation errors at L*, exactly (for double: of the rounded coefficients).
+    std::vector<Rational> exact_pts;
+    for (const auto& v : pts) exact_pts.push_back(ArithTraits<T>::to_rational(v));
+    const auto fq = make_spline<Rational>({kDegree, kDegree}, {U, U}, 1, exact_pts);
+    for (int e = 0; e < 2; ++e) {
+      const auto x = evaluate(S.facets[R.cut.ends[e].facet], std::vector<Rational>{R.cut.ends[e].param});
+      R.value_at_ends[e] = evaluate(fq, x)[0];
+      const Rational gx = derivative(fq, x, {1, 0})[0], gy = derivative(fq, x, {0, 1})[0];
+      const auto nr = normal_at(R.cut, e);
+      R.gradient_error2[e] = (gx - nr[0]) * (gx - nr[0]) + (gy - nr[1]) * (gy - nr[1]);
+    }
+  }
+  R.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return R;
+}
+
+template GuideResult<Rational> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
+template GuideResult<double> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
+template std::vector<Rational> regularization_matrix(const std::vector<Rational>&);
+template std::vector<double> regularization_matrix(const std::vector<double>&);
+
+}  // namespace splinex

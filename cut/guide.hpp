@@ -1,0 +1,79 @@
+// The implicit guiding curve of papers/004 Section 3 (d = 2): f* = sum c_i phi_i, a tensor-product
+// cubic spline on the unit square of the normalized solid (open knot vectors, uniform inner knots),
+// found by the regularized discretized cutting problem RDCP:
+//
+//   minimize  lambda_int F_int + lambda_tan F_tan + lambda_reg F_reg
+//   F_int = sum_{x in L*} f*(x)^2,  F_tan = sum_{x in L*} |grad f*(x) - n(x)|^2,
+//   F_reg = integral over [0,1]^2 of f_xx^2 + 2 f_xy^2 + f_yy^2   (Eq. 3; c^T M c, M exact from
+//           univariate integrals of products of B-spline derivatives),
+//   subject to f*(x) >= delta on b*, f*(x) <= -delta on b-bar*.
+//
+// L* holds the two cut points; n is the tangent t turned a quarter towards b: (t_y, -t_x) at the
+// first point, (-t_y, t_x) at the second, with t's length (give unit tangents such as (3/5, 4/5)
+// for the paper's unit normals). b is the boundary from the first point to the second,
+// counter-clockwise (f* > 0), b-bar the rest (f* < 0). b* and b-bar* are the facets' points at
+// `samples` equal parameter steps, without those in the strip (max-norm distance <= strip) around
+// the cut points. When RDCP is infeasible the knots are refined dyadically (k -> 2k + 1 inner knots)
+// up to max_inner_knots, as in the paper.
+//
+// Exact: assembled in Rational, solved by CGAL's exact QP solver, the KKT conditions and the
+// positive definiteness of the objective's matrix checked exactly (Lemma 1: then the minimizer is
+// unique and this is it). Double: assembled in double, the rounded program solved by the same
+// solver (exactly, on doubles), the minimizer rounded to double.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cut/qp.hpp"
+#include "cut/solid.hpp"
+#include "float/mpfr.hpp"  // ArithTraits<double>
+
+namespace splinex {
+
+struct GuideOptions {
+  int inner_knots = 3;
+  int max_inner_knots = 7;
+  Rational delta{1, 20};
+  Rational lambda_int{1};
+  Rational lambda_tan{1};
+  Rational lambda_reg{1, 100};
+  int samples = 16;  // per facet
+  Rational strip{1, 16};
+  /// The program's size limit (variables x rows), checked before assembling.
+  std::size_t max_size = 400000;
+};
+
+template <class T>
+struct GuideResult {
+  Frame2 frame;                 // normalized = (x - frame.lo) / frame.scale
+  Solid2<Rational> solid;       // the solid in normalized coordinates
+  CutData2<Rational> cut;       // validated and normalized ends
+  QPStatus status = QPStatus::infeasible;
+  int inner_knots = 0;
+  std::vector<int> tried;       // inner knot counts tried, in order
+  BSpline<T> f;                 // f* on [0,1]^2 (normalized coordinates); empty unless optimal
+  std::vector<Rational> coefficients;  // the program's exact minimizer (double: of the rounded program)
+  QuadraticProgram<Rational> program;  // the last program, exactly (double: its doubles' values)
+  QPSolution solution;
+  KKTCheck kkt;
+  bool positive_definite = false;
+  std::size_t samples_positive = 0, samples_negative = 0;
+  std::vector<std::array<Rational, 2>> sample_points;  // b* then b-bar* (exact, normalized)
+  std::array<Rational, 2> value_at_ends{Rational(0), Rational(0)};  // f*(x), x in L*, exactly
+  std::array<Rational, 2> gradient_error2{Rational(0), Rational(0)};  // |grad f*(x) - n(x)|^2 exactly
+  double seconds = 0;
+};
+
+/// Validates the solid and the cutting data (typed errors), then solves RDCP. T = Rational or double.
+template <class T>
+GuideResult<T> guide_curve(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const GuideOptions& options = {});
+
+/// The tensor-product cubic space of the guide: clamped knots on [0, 1] with k uniform inner knots.
+std::vector<Rational> guide_knots(int inner_knots);
+
+/// The regularization matrix M of Eq. 3 (n^2 x n^2, row-major; n = k + 4 per direction), exactly,
+/// from the univariate Gram matrices of the basis and its first and second derivatives.
+template <class T>
+std::vector<T> regularization_matrix(const std::vector<T>& knots);
+
+}  // namespace splinex

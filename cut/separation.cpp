@@ -1,0 +1,145 @@
+#include "cut/separation.hpp"
+
+#include "compose/compose.hpp"
+#include "spline/bezier.hpp"
+#include "spline/evaluate.hpp"
+
+namespace splinex {
+
+namespace {
+
+struct Ctx {
+  const Solid2<Rational>& solid;
+  const CutData2<Rational>& cut;
+  const BSpline<Rational>& f;
+  BezierForm<Rational> form;
+  std::array<std::array<Rational, 2>, 2> ends;
+  Rational strip;
+  SeparationOptions options;
+  SeparationResult result;
+  std::size_t examined = 0;
+};
+
+Rational absq(const Rational& x) { return x < 0 ? Rational(-x) : x; }
+
+// The index range [first, last] of segments of `breaks` meeting [lo, hi] (closed).
+std::pair<std::size_t, std::size_t> segments_meeting(const std::vector<Rational>& breaks, const Rational& lo, const Rational& hi) {
+  std::size_t first = 0, last = breaks.size() - 2;
+  while (first < last && breaks[first + 1] < lo) ++first;
+  while (last > first && hi < breaks[last]) --last;
+  return {first, last};
+}
+
+bool box_in_strip(const Ctx& c, const Rational* lo, const Rational* hi) {
+  for (const auto& p : c.ends)
+    if (p[0] - c.strip <= lo[0] && hi[0] <= p[0] + c.strip && p[1] - c.strip <= lo[1] && hi[1] <= p[1] + c.strip) return true;
+  return false;
+}
+
+bool point_in_strip(const Ctx& c, const std::array<Rational, 2>& x) {
+  for (const auto& p : c.ends)
+    if (absq(x[0] - p[0]) <= c.strip && absq(x[1] - p[1]) <= c.strip) return true;
+  return false;
+}
+
+// A Bezier piece of a facet on [s0, s1] (its own knots), on side `positive`.
+bool examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool positive, int depth) {
+  if (++c.examined > c.options.max_pieces) {
+    c.result.undecided.push_back({facet, piece.domain_lo(0), piece.domain_hi(0)});
+    return false;
+  }
+  Rational lo[2], hi[2];
+  for (int a = 0; a < 2; ++a) lo[a] = hi[a] = piece.points[a];
+  for (std::size_t i = 0; i < piece.size(); ++i)
+    for (int a = 0; a < 2; ++a) {
+      const Rational& x = piece.points[2 * i + a];
+      if (x < lo[a]) lo[a] = x;
+      if (hi[a] < x) hi[a] = x;
+    }
+  if (box_in_strip(c, lo, hi)) {
+    ++c.result.excluded;
+    return true;
+  }
+  const auto [x0, x1] = segments_meeting(c.form.breaks[0], lo[0], hi[0]);
+  const auto [y0, y1] = segments_meeting(c.form.breaks[1], lo[1], hi[1]);
+  const std::size_t nx = c.form.breaks[0].size() - 1;
+  bool all = true;
+  for (std::size_t j = y0; j <= y1 && all; ++j)
+    for (std::size_t i = x0; i <= x1 && all; ++i) {
+      const auto cell = c.form.piece(i + nx * j).spline;
+      const auto g = compose_bezier(cell, piece);
+      for (const auto& v : g.points)
+        if (positive ? !(v > 0) : !(v < 0)) {
+          all = false;
+          break;
+        }
+    }
+  if (all) {
+    ++c.result.pieces;
+    return true;
+  }
+  // Witnesses: exact values at the ends and the middle.
+  const Rational s0 = piece.domain_lo(0), s1 = piece.domain_hi(0), sm = (s0 + s1) / 2;
+  for (const Rational& s : {s0, sm, s1}) {
+    const auto p = evaluate(piece, std::vector<Rational>{s});
+    const std::array<Rational, 2> x{p[0], p[1]};
+    if (point_in_strip(c, x)) continue;
+    const Rational v = evaluate(c.f, std::vector<Rational>{x[0], x[1]})[0];
+    if (positive ? !(v > 0) : !(v < 0)) {
+      c.result.witness = SeparationWitness{facet, s, x, v, positive};
+      return false;
+    }
+  }
+  if (depth >= c.options.max_depth) {
+    c.result.undecided.push_back({facet, s0, s1});
+    return true;  // go on: a violation elsewhere still decides
+  }
+  const auto [a, b] = split_at(piece, 0, sm);
+  return examine(c, facet, a, positive, depth + 1) && examine(c, facet, b, positive, depth + 1);
+}
+
+}  // namespace
+
+SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const BSpline<Rational>& f,
+                                    const Rational& strip, const SeparationOptions& options) {
+  Ctx c{solid, cut, f, bezier_form(f), {}, strip, options, {}, 0};
+  for (int e = 0; e < 2; ++e) {
+    const auto p = evaluate(solid.facets[cut.ends[e].facet], std::vector<Rational>{cut.ends[e].param});
+    c.ends[e] = {p[0], p[1]};
+  }
+  bool go = true;
+  for (std::size_t i = 0; i < solid.facets.size() && go; ++i) {
+    // Split the facet at the cut points on it, then into Bezier pieces.
+    std::vector<BSpline<Rational>> parts{solid.facets[i]};
+    for (const auto& e : cut.ends) {
+      if (e.facet != i) continue;
+      std::vector<BSpline<Rational>> next;
+      for (const auto& P : parts)
+        if (P.domain_lo(0) < e.param && e.param < P.domain_hi(0)) {
+          auto [a, b] = split_at(P, 0, e.param);
+          next.push_back(a);
+          next.push_back(b);
+        } else {
+          next.push_back(P);
+        }
+      parts = next;
+    }
+    for (const auto& P : parts) {
+      for (const auto& bz : extract_bezier(P)) {
+        const Rational mid = (bz.spline.domain_lo(0) + bz.spline.domain_hi(0)) / 2;
+        const bool positive = on_arc(i, mid, cut.ends[0], cut.ends[1]);
+        if (!examine(c, i, bz.spline, positive, 0)) {
+          go = false;
+          break;
+        }
+      }
+      if (!go) break;
+    }
+  }
+  if (c.result.witness) c.result.verdict = "violated";
+  else if (!c.result.undecided.empty()) c.result.verdict = "undecided";
+  else c.result.verdict = "certified";
+  return c.result;
+}
+
+}  // namespace splinex

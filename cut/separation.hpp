@@ -1,0 +1,45 @@
+// Certified separation (issue 20, item 3): the samples b* only approximate "f* > 0 on all of b".
+// f* composed with every boundary facet (papers/000's composition: each Bezier piece of a facet
+// with each polynomial piece of f* whose cell its control polygon's box meets, extended beyond
+// the cell by Observation 1) is a univariate Bernstein polynomial; if every such polynomial has
+// coefficients of the required strict sign, the sign holds on the whole piece. Otherwise the piece
+// is halved, and exact values of f* at exact boundary points serve as witnesses of a violation.
+// Points within the strip around the cut points (max-norm distance <= strip) are excluded, as the
+// samples exclude them.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cut/solid.hpp"
+
+namespace splinex {
+
+struct SeparationOptions {
+  int max_depth = 30;               // halvings of one Bezier piece
+  std::size_t max_pieces = 200000;  // pieces examined in total
+};
+
+struct SeparationWitness {
+  std::size_t facet = 0;
+  Rational param;
+  std::array<Rational, 2> point;  // normalized coordinates
+  Rational value;                 // f* there, exactly
+  bool positive_side = true;      // b (f* must be > 0) or b-bar (< 0)
+};
+
+struct SeparationResult {
+  std::string verdict;  // "certified", "violated", "undecided"
+  std::optional<SeparationWitness> witness;
+  std::size_t pieces = 0;         // pieces certified (after subdivision)
+  std::size_t excluded = 0;       // pieces inside the strip
+  struct Open { std::size_t facet; Rational lo, hi; };
+  std::vector<Open> undecided;    // parameter intervals left undecided
+};
+
+/// f: the guide on [0,1]^2 (normalized coordinates); solid and cut: normalized (GuideResult).
+SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const BSpline<Rational>& f,
+                                    const Rational& strip, const SeparationOptions& options = {});
+
+}  // namespace splinex

@@ -1,0 +1,67 @@
+// Planar solids bounded by B-spline curve facets and the cutting data of papers/004 Section 2
+// (d = 2): the solid S is bounded by facets F_i, polynomial B-spline curves in the plane joined end
+// to start in a closed counter-clockwise loop; the cutting data are two points on that loop, each
+// with a tangent vector pointing into S. Everything is exact (Rational); a double run rounds the
+// validated data.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "spline/bspline.hpp"
+
+namespace splinex {
+
+template <class T>
+struct Solid2 {
+  std::vector<BSpline<T>> facets;  // curves (one parameter), q = 2, polynomial, clamped
+};
+
+/// A point of the cutting data: on facet `facet` at parameter `param` (a facet's end parameter is
+/// the vertex it shares with the next facet), with the tangent t of the cutting curve there.
+template <class T>
+struct CutPoint2 {
+  std::size_t facet = 0;
+  T param = T(0);
+  std::array<T, 2> tangent{T(0), T(0)};
+};
+
+/// The cutting data D = (L, t) for d = 2: the two end points of the cutting curve.
+template <class T>
+struct CutData2 {
+  std::array<CutPoint2<T>, 2> ends;
+};
+
+/// Checks the solid: at least two facets; each a polynomial clamped curve of degree >= 1 in R^2;
+/// each facet's end point equals the next one's start point exactly (the last joins the first);
+/// the loop's exact signed area is positive (counter-clockwise: the solid on the left).
+/// ValidationError names the field and the fix. The loop is not checked for self-intersection.
+void validate_solid(const Solid2<Rational>& S);
+
+/// Checks the cutting data against the solid: facets and parameters in range, two distinct points,
+/// non-zero tangents pointing strictly into the solid (exact orientation tests against the facets'
+/// one-sided derivatives; at a vertex against both facets' directions: inside the corner's
+/// angle). Returns the data with each end normalized: a facet's end parameter becomes the next
+/// facet's start parameter.
+CutData2<Rational> validate_cut(const Solid2<Rational>& S, const CutData2<Rational>& cut);
+
+/// The exact signed area enclosed by the loop (1/2 of the integral of x dy - y dx).
+Rational signed_area(const Solid2<Rational>& S);
+
+/// The uniform scaling into the unit square used by papers/004 ("scaled such that the bounding box
+/// fits into the unit cube"): normalized = (x - lo) / scale, scale the larger side of the control
+/// points' bounding box.
+struct Frame2 {
+  std::array<Rational, 2> lo{Rational(0), Rational(0)};
+  Rational scale{1};
+};
+Frame2 unit_frame(const Solid2<Rational>& S);
+Solid2<Rational> to_frame(const Solid2<Rational>& S, const Frame2& f);
+
+/// Position on the loop: true when facet/param lies strictly inside the counter-clockwise arc from
+/// `from` to `to` (both normalized ends).
+bool on_arc(std::size_t facet, const Rational& param, const CutPoint2<Rational>& from, const CutPoint2<Rational>& to);
+
+}  // namespace splinex

@@ -1,0 +1,224 @@
+// papers/004 (cutting curves): the exact QP and its KKT check, the regularization matrix against an
+// independent integral, validation of solids and cutting data, the guiding curve exactly and in
+// double, and certified separation (including a guide that must fail).
+#include <catch2/catch.hpp>
+
+#include "cut/examples.hpp"
+#include "cut/guide.hpp"
+#include "cut/qp.hpp"
+#include "cut/separation.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/factories.hpp"
+#include "spline/tensor_bernstein.hpp"
+#include "spline/bezier.hpp"
+
+using namespace splinex;
+
+namespace {
+Rational q(long a, long b = 1) { return Rational(a, b); }
+
+QuadraticProgram<Rational> small_program() {
+  // minimize (x - 1)^2 + (y - 2)^2 = x^2 + y^2 - 2x - 4y + 5 subject to x + y <= 2, x >= -10
+  QuadraticProgram<Rational> p;
+  p.n = 2;
+  p.D = {q(1), q(0), q(0), q(1)};
+  p.c = {q(-2), q(-4)};
+  p.c0 = q(5);
+  p.rows.push_back({{{0, q(1)}, {1, q(1)}}, q(2), false});
+  p.rows.push_back({{{0, q(1)}}, q(-10), true});
+  return p;
+}
+}  // namespace
+
+TEST_CASE("cut: the exact QP solver's minimizer, multipliers and KKT check", "[cut]") {
+  const auto p = small_program();
+  const auto s = solve_qp(p);
+  REQUIRE(s.status == QPStatus::optimal);
+  // The projection of (1, 2) onto x + y <= 2: (1/2, 3/2), multiplier 1 (gradient (-1, -1) = -1 * (1, 1)).
+  CHECK(s.x == std::vector<Rational>{q(1, 2), q(3, 2)});
+  CHECK(s.y[0] == q(1));
+  CHECK(s.y[1] == q(0));
+  CHECK(s.objective == q(1, 2));
+  const auto k = check_kkt(p, s);
+  CHECK(k.holds);
+  CHECK(k.active == 1);
+  CHECK(positive_definite(p));
+  // A wrong minimizer fails the check, naming the condition.
+  auto wrong = s;
+  wrong.x[0] = q(1, 3);
+  CHECK_FALSE(check_kkt(p, wrong).holds);
+  auto wrong2 = s;
+  wrong2.y[0] = q(2);
+  CHECK(check_kkt(p, wrong2).failed.find("stationarity") != std::string::npos);
+  // Infeasible: x >= 1 and x <= 0; the Farkas certificate is checked exactly.
+  QuadraticProgram<Rational> inf = p;
+  inf.rows = {{{{0, q(1)}}, q(1), true}, {{{0, q(1)}}, q(0), false}};
+  const auto si = solve_qp(inf);
+  REQUIRE(si.status == QPStatus::infeasible);
+  CHECK(check_kkt(inf, si).holds);
+  // The same program in double: the rounded data are exact here, so the minimizer is the same.
+  QuadraticProgram<double> pd;
+  pd.n = 2;
+  pd.D = {1, 0, 0, 1};
+  pd.c = {-2, -4};
+  pd.c0 = 5;
+  pd.rows.push_back({{{0, 1.0}, {1, 1.0}}, 2.0, false});
+  const auto sd = solve_qp(pd);
+  REQUIRE(sd.status == QPStatus::optimal);
+  CHECK(sd.x == std::vector<Rational>{q(1, 2), q(3, 2)});
+  CHECK(check_kkt(exact_program(pd), sd).holds);
+}
+
+TEST_CASE("cut: the regularization matrix equals the integral of the second derivatives", "[cut]") {
+  // Independent: each cell's Bernstein form of f, its second derivatives by bern_derivative, their
+  // squares' integrals as coefficient means times the cell's area.
+  for (int k : {0, 1, 3}) {
+    const auto U = guide_knots(k);
+    const std::size_t n = U.size() - 4, N = n * n;
+    const auto M = regularization_matrix(U);
+    std::vector<Rational> c(N);
+    for (std::size_t i = 0; i < N; ++i) c[i] = Rational(static_cast<long>((i * 7919) % 13) - 6, static_cast<long>(1 + i % 5));
+    Rational quad(0);
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j) quad += c[i] * M[i * N + j] * c[j];
+    const auto f = make_spline<Rational>({3, 3}, {U, U}, 1, c);
+    Rational integral(0);
+    for (const auto& piece : extract_bezier(f)) {
+      detail::Bern<Rational> b{{3, 3}, piece.spline.points};
+      const Rational hx = piece.box[0].second - piece.box[0].first, hy = piece.box[1].second - piece.box[1].first;
+      auto mean = [](const detail::Bern<Rational>& g) {
+        Rational s(0);
+        for (const auto& v : g.c) s += v;
+        return s / Rational(static_cast<long>(g.c.size()));
+      };
+      auto dxx = detail::bern_derivative(detail::bern_derivative(b, 0), 0);
+      auto dyy = detail::bern_derivative(detail::bern_derivative(b, 1), 1);
+      auto dxy = detail::bern_derivative(detail::bern_derivative(b, 0), 1);
+      // bern_derivative differentiates in the local [0,1] parameter: divide by the cell's sides.
+      const Rational sxx = mean(detail::bern_product(dxx, dxx)) / (hx * hx * hx * hx);
+      const Rational syy = mean(detail::bern_product(dyy, dyy)) / (hy * hy * hy * hy);
+      const Rational sxy = mean(detail::bern_product(dxy, dxy)) / (hx * hx * hy * hy);
+      integral += (sxx + 2 * sxy + syy) * hx * hy;
+    }
+    CHECK(quad == integral);
+    // Affine functions (coefficients at the Greville abscissae) have no second derivatives: M c = 0.
+    std::vector<Rational> g(n);
+    for (std::size_t i = 0; i < n; ++i) g[i] = (U[i + 1] + U[i + 2] + U[i + 3]) / 3;
+    std::vector<Rational> a(N);
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t i = 0; i < n; ++i) a[i + n * j] = 2 * g[i] - 3 * g[j] + q(1, 7);
+    for (std::size_t i = 0; i < N; ++i) {
+      Rational r(0);
+      for (std::size_t j = 0; j < N; ++j) r += M[i * N + j] * a[j];
+      CHECK(r == 0);
+    }
+  }
+}
+
+TEST_CASE("cut: solids and cutting data are validated with typed errors", "[cut]") {
+  auto e = cut_example("square");
+  CHECK(signed_area(e.solid) == q(1));
+  CHECK(signed_area(cut_example("L").solid) == q(3));
+  // The U: two arms [0,1]x[1,3] and [2,3]x[1,3] (area 4) and below y = 1 the outer cubic's cap
+  // (y = 1 - 4t(1-t), x = 9t^2 - 6t^3: integral of 4t(1-t) 18t(1-t) dt = 12/5) minus the inner one's
+  // (y = 1 - 2t(1-t), x = 2 - 3t^2 + 2t^3: 2/5), by hand.
+  CHECK(signed_area(cut_example("U").solid) == q(6));
+  // Reversed loop: clockwise.
+  auto rev = e.solid;
+  std::reverse(rev.facets.begin(), rev.facets.end());
+  for (auto& F : rev.facets) {
+    std::swap(F.points[0], F.points[2]);
+    std::swap(F.points[1], F.points[3]);
+  }
+  CHECK_THROWS_AS(validate_solid(rev), ValidationError);
+  // A gap between facets.
+  auto gap = e.solid;
+  gap.facets[1].points[0] = q(1, 1) + q(1, 1000);
+  CHECK_THROWS_WITH(validate_solid(gap), Catch::Contains("facets[0]"));
+  // A tangent pointing out, along the boundary, or zero; a facet index out of range; a cusp-free corner.
+  auto out = e.cut;
+  out.ends[0].tangent = {q(0), q(-1)};
+  CHECK_THROWS_WITH(validate_cut(e.solid, out), Catch::Contains("points[0].tangent"));
+  out.ends[0].tangent = {q(1), q(0)};
+  CHECK_THROWS_WITH(validate_cut(e.solid, out), Catch::Contains("points[0].tangent"));
+  out.ends[0].tangent = {q(0), q(0)};
+  CHECK_THROWS_AS(validate_cut(e.solid, out), ValidationError);
+  auto far = e.cut;
+  far.ends[1].facet = 9;
+  CHECK_THROWS_WITH(validate_cut(e.solid, far), Catch::Contains("points[1].facet"));
+  // At a convex corner (1, 0) = end of facet 0: inside iff strictly between the two edges.
+  auto corner = e.cut;
+  corner.ends[0] = {0, q(1), {q(-1), q(1)}};
+  const auto v = validate_cut(e.solid, corner);
+  CHECK(v.ends[0].facet == 1);
+  CHECK(v.ends[0].param == q(0));
+  corner.ends[0].tangent = {q(1), q(1)};
+  CHECK_THROWS_AS(validate_cut(e.solid, corner), ValidationError);
+  // At the L's reflex corner (1, 1): inside over 3/4 of the turn.
+  auto L = cut_example("L");
+  auto r = L.cut;
+  r.ends[0] = {2, q(1), {q(1), q(-1)}};  // end of facet 2 = (1, 1), pointing down-right: inside
+  CHECK_NOTHROW(validate_cut(L.solid, r));
+  r.ends[0].tangent = {q(1), q(1)};  // into the missing square: outside
+  CHECK_THROWS_AS(validate_cut(L.solid, r), ValidationError);
+}
+
+TEST_CASE("cut: the guiding curve exactly, certified, and in double judged exactly", "[cut]") {
+  for (const std::string name : {"square", "L", "U"}) {
+    INFO(name);
+    const auto e = cut_example(name);
+    GuideOptions o;
+    const auto R = guide_curve<Rational>(e.solid, e.cut, o);
+    REQUIRE(R.status == QPStatus::optimal);
+    CHECK(R.kkt.holds);
+    CHECK(R.positive_definite);
+    // The sample constraints hold exactly at the sample points.
+    for (std::size_t i = 0; i < R.sample_points.size(); ++i) {
+      const Rational v = evaluate(R.f, std::vector<Rational>{R.sample_points[i][0], R.sample_points[i][1]})[0];
+      if (i < R.samples_positive) CHECK(v >= o.delta);
+      else CHECK(v <= -o.delta);
+    }
+    const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
+    CHECK(sep.verdict == "certified");
+    // Double: the same program rounded, solved by the same solver; its minimizer is close to the
+    // exact one but not equal (the data are rounded), and its KKT check holds for its own program.
+    const auto D = guide_curve<double>(e.solid, e.cut, o);
+    REQUIRE(D.status == QPStatus::optimal);
+    INFO(D.kkt.failed);
+    CHECK(D.kkt.holds);
+    REQUIRE(D.coefficients.size() == R.coefficients.size());
+    Rational err(0), mag(0);
+    for (std::size_t i = 0; i < R.coefficients.size(); ++i) {
+      Rational d = ArithTraits<double>::to_rational(D.f.points[i]) - R.coefficients[i];
+      if (d < 0) d = -d;
+      if (err < d) err = d;
+      Rational m = R.coefficients[i] < 0 ? Rational(-R.coefficients[i]) : R.coefficients[i];
+      if (mag < m) mag = m;
+    }
+    CHECK(err < mag * q(1, 1 << 20));
+  }
+}
+
+TEST_CASE("cut: certified separation finds a guide that leaves the solid between samples", "[cut]") {
+  // The square cut at x = 1/2: f = x - 1/2 is certified. Pulling one coefficient near the right edge
+  // down makes f negative on a part of the right edge (b): a violation with an exact witness.
+  const auto e = cut_example("square");
+  GuideOptions o;
+  const auto R = guide_curve<Rational>(e.solid, e.cut, o);
+  const auto U = guide_knots(3);
+  const std::size_t n = U.size() - 4;
+  std::vector<Rational> c(n * n);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) c[i + n * j] = (U[i + 1] + U[i + 2] + U[i + 3]) / 3 - q(1, 2);
+  auto f = make_spline<Rational>({3, 3}, {U, U}, 1, c);
+  CHECK(certify_separation(R.solid, R.cut, f, o.strip).verdict == "certified");
+  f.points[(n - 1) + n * 3] = q(-2);
+  const auto sep = certify_separation(R.solid, R.cut, f, o.strip);
+  REQUIRE(sep.verdict == "violated");
+  REQUIRE(sep.witness);
+  CHECK(sep.witness->positive_side);
+  CHECK(sep.witness->point[0] == q(1));  // on the right edge
+  CHECK(evaluate(f, std::vector<Rational>{sep.witness->point[0], sep.witness->point[1]})[0] == sep.witness->value);
+  CHECK(sep.witness->value <= 0);
+}
