@@ -144,9 +144,16 @@ std::vector<T> regularization_matrix(const std::vector<T>& U) {
   return M;
 }
 
-template <class T>
-GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rational>& cut_in, const GuideOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+std::size_t msb_bits(const Integer& z) { return z == 0 ? 0 : boost::multiprecision::msb(z < 0 ? Integer(-z) : z) + 1; }
+
+std::size_t program_size(int k, std::size_t rows) {
+  const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, N = n * n;
+  return N * (N + rows);
+}
+}  // namespace
+
+void validate_guide_options(const GuideOptions& o, std::size_t facets) {
   if (o.inner_knots < 0 || o.inner_knots > 1000) throw ValidationError("inner-knots", "is " + std::to_string(o.inner_knots), "give 0 .. 1000 inner knots");
   if (o.max_inner_knots < o.inner_knots) throw ValidationError("max-inner-knots", "is below inner-knots", "give max-inner-knots >= inner-knots");
   if (o.samples < 1 || o.samples > 100000) throw ValidationError("samples", "is " + std::to_string(o.samples), "give 1 .. 100000 samples per facet");
@@ -154,7 +161,44 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
   if (!(o.lambda_int > 0) || !(o.lambda_tan > 0) || !(o.lambda_reg > 0))
     throw ValidationError("weights", "are not all positive", "give positive lambda_int, lambda_tan, lambda_reg (Lemma 1 needs them)");
   if (o.strip < 0) throw ValidationError("strip", "is negative", "give a strip width >= 0");
+  const std::size_t rows = static_cast<std::size_t>(o.samples) * facets;
+  if (program_size(o.inner_knots, rows) > o.max_size)
+    throw SizeLimitError("inner-knots", "a program with " + std::to_string(o.inner_knots) + " inner knots and up to " + std::to_string(rows) +
+                                            " sample rows is over the size limit (" + std::to_string(o.max_size) + " entries)",
+                         "give fewer inner knots or samples");
+}
+
+void check_exact_sizes(const Solid2<Rational>& S, const CutData2<Rational>& C, const GuideOptions& o) {
+  auto check = [&](const Rational& x, const std::string& field) {
+    const std::size_t bits = std::max(msb_bits(numerator(x)), msb_bits(denominator(x)));
+    if (bits > o.max_bits)
+      throw SizeLimitError(field, "has a number of " + std::to_string(bits) + " bits, over the exact QP's limit of " + std::to_string(o.max_bits),
+                           "give the number with fewer digits, or use --arith double");
+  };
+  for (std::size_t i = 0; i < S.facets.size(); ++i) {
+    const std::string f = "facets[" + std::to_string(i) + "]";
+    for (const auto& v : S.facets[i].points) check(v, f + ".points");
+    for (const auto& v : S.facets[i].knots[0]) check(v, f + ".knots");
+  }
+  for (int e = 0; e < 2; ++e) {
+    const std::string f = "points[" + std::to_string(e) + "]";
+    check(C.ends[e].param, f + ".parameter");
+    check(C.ends[e].tangent[0], f + ".tangent");
+    check(C.ends[e].tangent[1], f + ".tangent");
+  }
+  check(o.delta, "delta");
+  check(o.strip, "strip");
+  check(o.lambda_int, "lambda-int");
+  check(o.lambda_tan, "lambda-tan");
+  check(o.lambda_reg, "lambda-reg");
+}
+
+template <class T>
+GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rational>& cut_in, const GuideOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
   validate_solid(solid_in);
+  validate_guide_options(o, solid_in.facets.size());
+  if constexpr (ArithTraits<T>::exact) check_exact_sizes(solid_in, cut_in, o);
   GuideResult<T> R;
   R.cut = validate_cut(solid_in, cut_in);
   R.frame = unit_frame(solid_in);
@@ -212,8 +256,6 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
   for (int k = o.inner_knots;; k = 2 * k + 1) {
     R.tried.push_back(k);
     const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, N = n * n;
-    if (N * (N + ordered.size()) > o.max_size)
-      throw SizeLimitError("inner-knots", "the program with " + std::to_string(k) + " inner knots has " + std::to_string(N) + " variables and " + std::to_string(ordered.size()) + " rows, over the limit", "give fewer inner knots or samples, or raise the limit");
     std::vector<T> U;
     for (const auto& u : guide_knots(k)) U.push_back(from_q<T>(u));
     QuadraticProgram<T> qp;
@@ -254,6 +296,10 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
     R.status = R.solution.status;
     R.inner_knots = k;
     if (R.status == QPStatus::optimal || 2 * k + 1 > o.max_inner_knots) break;
+    if (program_size(2 * k + 1, ordered.size()) > o.max_size) {
+      R.refinement_stopped_by_limit = true;
+      break;
+    }
   }
   R.kkt = check_kkt(R.program, R.solution);
   R.positive_definite = positive_definite(R.program);

@@ -39,8 +39,11 @@ struct GuideOptions {
   Rational lambda_reg{1, 100};
   int samples = 16;  // per facet
   Rational strip{1, 16};
-  /// The program's size limit (variables x rows), checked before assembling.
+  /// The program's size limit (variables x (variables + rows)), checked before assembling.
   std::size_t max_size = 400000;
+  /// Exact runs: the largest numerator or denominator (bits) of any input number. The exact QP's
+  /// cost grows with the data's size; a tangent of 1e-100000 would take hours.
+  std::size_t max_bits = 1024;
 };
 
 template <class T>
@@ -51,6 +54,7 @@ struct GuideResult {
   QPStatus status = QPStatus::infeasible;
   int inner_knots = 0;
   std::vector<int> tried;       // inner knot counts tried, in order
+  bool refinement_stopped_by_limit = false;
   BSpline<T> f;                 // f* on [0,1]^2 (normalized coordinates); empty unless optimal
   std::vector<Rational> coefficients;  // the program's exact minimizer (double: of the rounded program)
   QuadraticProgram<Rational> program;  // the last program, exactly (double: its doubles' values)
@@ -64,7 +68,17 @@ struct GuideResult {
   double seconds = 0;
 };
 
-/// Validates the solid and the cutting data (typed errors), then solves RDCP. T = Rational or double.
+/// Checks the options (typed errors naming the option) and the size of the first program against
+/// max_size, with at most samples x facets rows: before any work. Refinement stops (infeasible,
+/// `refinement_stopped_by_limit`) where the next program would exceed it.
+void validate_guide_options(const GuideOptions& options, std::size_t facets);
+
+/// For exact runs: every number of the solid, the cutting data and the options within max_bits
+/// (SizeLimitError naming the field otherwise, with the fix: fewer digits, or --arith double).
+void check_exact_sizes(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const GuideOptions& options);
+
+/// Validates the solid, the cutting data and the options (typed errors), then solves RDCP.
+/// T = Rational or double.
 template <class T>
 GuideResult<T> guide_curve(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const GuideOptions& options = {});
 

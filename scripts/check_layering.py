@@ -20,7 +20,7 @@ DIRECT = {
     "fixtures": ["io"],
     "crosscheck": ["io"],
     "proofs": ["fixtures"],
-    "experiments": ["proofs", "crosscheck", "vrep", "solve"],
+    "experiments": ["proofs", "crosscheck", "vrep", "solve", "cut"],
     "apps": ["experiments"],
     "python": ["crosscheck", "fixtures"],
 }

@@ -222,3 +222,25 @@ TEST_CASE("cut: certified separation finds a guide that leaves the solid between
   CHECK(evaluate(f, std::vector<Rational>{sep.witness->point[0], sep.witness->point[1]})[0] == sep.witness->value);
   CHECK(sep.witness->value <= 0);
 }
+
+TEST_CASE("cut: a sample-feasible RDCP solution that leaves the solid is refuted with an exact witness", "[cut]") {
+  // The U with one sample per facet (its vertices only): RDCP is feasible and solved exactly (KKT
+  // holds), but f* = 0 runs straight down the arms and leaves through the round bottom, where f*
+  // must be positive (b: the outer boundary). With two samples per facet the guide is certified.
+  const auto e = cut_example("U");
+  GuideOptions o;
+  o.samples = 1;
+  const auto R = guide_curve<Rational>(e.solid, e.cut, o);
+  REQUIRE(R.status == QPStatus::optimal);
+  CHECK(R.kkt.holds);
+  const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
+  REQUIRE(sep.verdict == "violated");
+  REQUIRE(sep.witness);
+  CHECK(sep.witness->facet == 1);  // the outer bottom
+  CHECK(sep.witness->positive_side);
+  CHECK(evaluate(R.f, std::vector<Rational>{sep.witness->point[0], sep.witness->point[1]})[0] <= 0);
+  o.samples = 2;
+  const auto R2 = guide_curve<Rational>(e.solid, e.cut, o);
+  REQUIRE(R2.status == QPStatus::optimal);
+  CHECK(certify_separation(R2.solid, R2.cut, R2.f, o.strip).verdict == "certified");
+}

@@ -139,12 +139,12 @@ def mutate_bytes(rng, text):
 
 KINDS = ["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "compose",
          "crosscheck", "untrim", "hybrid", "prove", "vrep-info", "vrep-volume", "vrep-classify", "vrep-topology",
-         "vrep-boolean", "vrep-certify", "vrep-export", "vrep-glue", "project", "contact"]
+         "vrep-boolean", "vrep-certify", "vrep-export", "vrep-glue", "project", "contact", "cut-guide"]
 
 
 def command_for(rng, docs, kinds=KINDS):
     """(argv after the program, document bytes or None, kind)"""
-    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel"))]
+    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel", "solid2d", "cut2d"))]
     models = [n for n in docs if n.startswith("vmodel")]
     surfaces = [n for n in docs if n.startswith(("sphere", "paraboloid", "saddle", "plane", "roof", "surface"))]
     doc_name = rng.choice(curves)
@@ -241,6 +241,18 @@ def command_for(rng, docs, kinds=KINDS):
         else:
             extra_files["SECOND"] = docs[rng.choice(surfaces)]
             argv = ["contact", "--arith", rng.choice(["exact", "double"]), "DOC", "SECOND"] + budget
+    elif kind == "cut-guide":
+        # A solid and its cutting data (tests/data/solid2d_*, cut2d_*): one of them is DOC (mutated).
+        name = rng.choice([n for n in docs if n.startswith("solid2d")])
+        other = docs[name.replace("solid2d", "cut2d")]
+        opts = ["--arith", rng.choice(["exact", "double", "both"]), "--samples", rng.choice(["1", "2", "4"]),
+                "--inner-knots", rng.choice(["0", "1", "3"]), "--max-inner-knots", "3"]
+        if rng.random() < 0.5:
+            doc, extra_files["SECOND"] = docs[name], other
+            argv = ["cut", "guide"] + opts + ["DOC", "SECOND"]
+        else:
+            doc, extra_files["SECOND"] = other, docs[name]
+            argv = ["cut", "guide"] + opts + ["SECOND", "DOC"]
     elif kind == "hybrid":
         doc = docs[rng.choice([n for n in docs if n.startswith(("hybrid", "bad_hybrid"))])]
         argv = ["hybrid", "eval", "--arith", rng.choice(["exact", "double", "mpfr:64"]), "--at",

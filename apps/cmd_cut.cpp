@@ -1,0 +1,229 @@
+// splinex cut: papers/004's cutting curves (d = 2). `cut example NAME` writes an example solid and
+// its cutting data; `cut guide SOLID CUT` finds the implicit guiding curve by RDCP (exact QP, KKT
+// checked exactly; or in double) and certifies the separation of b and b-bar by f* on the whole
+// boundary.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "cut/examples.hpp"
+#include "cut/guide.hpp"
+#include "cut/separation.hpp"
+#include "experiments/cut_figure.hpp"
+#include "experiments/svg_plot.hpp"
+#include "io/cut_io.hpp"
+
+namespace splinex::app {
+
+namespace {
+
+// An exact value and its double (or, beyond double's range, log2 of its magnitude).
+Json q_json(const Rational& x) {
+  Json j{{"exact", to_fraction_string(x)}};
+  const double d = to_double(x);
+  if (std::isfinite(d)) j["approx"] = d;
+  else j["log2_abs"] = log2_abs(x);
+  return j;
+}
+
+Json separation_json(const SeparationResult& s) {
+  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
+  if (s.witness) {
+    const auto& w = *s.witness;
+    j["witness"] = Json{{"facet", w.facet},
+                        {"parameter", to_fraction_string(w.param)},
+                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1])})},
+                        {"value", q_json(w.value)},
+                        {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
+  }
+  Json u = Json::array();
+  for (const auto& o : s.undecided) u.push_back(Json{{"facet", o.facet}, {"parameters", Json::array({to_fraction_string(o.lo), to_fraction_string(o.hi)})}});
+  j["undecided"] = u;
+  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
+                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
+                                           : "some boundary pieces stay undecided (listed); no violation was found";
+  return j;
+}
+
+template <class T>
+BSpline<Rational> exact_guide(const GuideResult<T>& R) {
+  if constexpr (ArithTraits<T>::exact) return R.f;
+  else {
+    BSpline<Rational> f;
+    f.degrees = R.f.degrees;
+    for (const auto& U : R.f.knots) {
+      std::vector<Rational> V;
+      for (const auto& u : U) V.push_back(ArithTraits<T>::to_rational(u));
+      f.knots.push_back(V);
+    }
+    f.q = 1;
+    for (const auto& v : R.f.points) f.points.push_back(ArithTraits<T>::to_rational(v));
+    return f;
+  }
+}
+
+template <class T>
+Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& sep) {
+  Json j;
+  j["arithmetic"] = ArithTraits<T>::name();
+  j["status"] = to_string(R.status);
+  j["inner_knots"] = R.inner_knots;
+  j["inner_knots_tried"] = R.tried;
+  j["variables"] = R.program.n;
+  j["rows"] = R.program.rows.size();
+  j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}};
+  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1])})},
+                    {"scale", to_fraction_string(R.frame.scale)},
+                    {"meaning", "f* lives on [0,1]^2 in normalized coordinates (x - lo) / scale"}};
+  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
+  j["positive_definite"] = R.positive_definite;
+  if (R.status == QPStatus::optimal) {
+    const bool proved = R.kkt.holds && R.positive_definite;
+    j["verdict"] = ArithTraits<T>::exact
+                       ? (proved ? "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)"
+                                 : "not proved: " + R.kkt.failed)
+                       : std::string("the exact minimizer of the program assembled in double (KKT ") + (R.kkt.holds ? "holds" : "fails") +
+                             "), rounded to double: judge it against --arith exact";
+    j["objective"] = q_json(R.solution.objective);
+    j["value_at_ends"] = Json::array({q_json(R.value_at_ends[0]), q_json(R.value_at_ends[1])});
+    j["gradient_error_squared_at_ends"] = Json::array({q_json(R.gradient_error2[0]), q_json(R.gradient_error2[1])});
+    j["guide"] = spline_to_json(R.f);
+  } else {
+    j["verdict"] = R.status == QPStatus::infeasible
+                       ? std::string("infeasible up to ") + std::to_string(R.inner_knots) + " inner knots (Farkas certificate " +
+                             (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
+                             (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") + ": raise --max-inner-knots, lower --delta, or widen --strip"
+                       : "unbounded";
+  }
+  if (sep) j["separation"] = separation_json(*sep);
+  j["seconds"] = R.seconds;
+  return j;
+}
+
+}  // namespace
+
+Commands add_cut(CLI::App& app) {
+  auto* cut = app.add_subcommand("cut", "cutting curves for isogeometric segmentation (papers/004, d = 2): example, guide");
+  cut->require_subcommand(1);
+
+  struct ExampleOptions {
+    std::string name, out = ".";
+  };
+  auto eo = std::make_shared<ExampleOptions>();
+  auto* ex = cut->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
+  ex->add_option("name", eo->name, "square, L or U")->required();
+  ex->add_option("--out", eo->out, "folder to write into")->capture_default_str();
+
+  struct GuideCliOptions {
+    std::string solid, cut, arith = "exact", svg, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
+    int inner = 3, max_inner = 7, samples = 16;
+  };
+  auto go = std::make_shared<GuideCliOptions>();
+  auto* g = cut->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
+  g->add_option("solid", go->solid, "solid document {\"type\": \"solid2d\", ...}")->required();
+  g->add_option("cut", go->cut, "cutting data document {\"type\": \"cut2d\", ...}")->required();
+  add_arith_option(g, go->arith, "exact (the QP exactly, KKT checked), double (assembled in double), or both (and the double judged exactly)")
+      ->check(CLI::IsMember({"exact", "double", "both"}));
+  g->add_option("--inner-knots", go->inner, "uniform inner knots per direction of the cubic guide")->check(CLI::Range(0, 1000))->capture_default_str();
+  g->add_option("--max-inner-knots", go->max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this")->check(CLI::Range(0, 1000))->capture_default_str();
+  g->add_option("--samples", go->samples, "sample points per facet (b* and b-bar*)")->check(CLI::Range(1, 100000))->capture_default_str();
+  g->add_option("--delta", go->delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
+  g->add_option("--strip", go->strip, "no samples (and no certification) within this max-norm distance of the cut points, normalized units")->capture_default_str();
+  g->add_option("--lambda-int", go->li, "weight of F_int")->capture_default_str();
+  g->add_option("--lambda-tan", go->lt, "weight of F_tan")->capture_default_str();
+  g->add_option("--lambda-reg", go->lr, "weight of F_reg (Eq. 3)")->capture_default_str();
+  g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here");
+
+  return {{ex, [eo](const Context&) {
+             const auto e = cut_example(eo->name);
+             std::filesystem::create_directories(eo->out);
+             Json s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
+             s["description"] = e.description;
+             const std::string sp = (std::filesystem::path(eo->out) / (e.name + ".solid.json")).string();
+             const std::string cp = (std::filesystem::path(eo->out) / (e.name + ".cut.json")).string();
+             write_file_atomically(sp, s.dump(1) + "\n");
+             write_file_atomically(cp, c.dump(1) + "\n");
+             std::cout << Json{{"solid", sp}, {"cut", cp}}.dump() << "\n";
+             return 0;
+           }},
+          {g, [go](const Context& ctx) {
+             const auto S = solid2_from_json(read_json_file(go->solid, ctx.read_limits), ctx.limits);
+             const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
+             GuideOptions o;
+             o.inner_knots = go->inner;
+             o.max_inner_knots = go->max_inner;
+             o.samples = go->samples;
+             o.delta = parse_number(go->delta, "delta");
+             o.strip = parse_number(go->strip, "strip");
+             o.lambda_int = parse_number(go->li, "lambda-int");
+             o.lambda_tan = parse_number(go->lt, "lambda-tan");
+             o.lambda_reg = parse_number(go->lr, "lambda-reg");
+             validate_cut(S, C);  // every typed error before the first progress line
+             validate_guide_options(o, S.facets.size());
+             if (go->arith != "double") check_exact_sizes(S, C, o);
+             auto run = [&](auto tag) {
+               using T = decltype(tag);
+               std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": solving RDCP\n";
+               const auto R = guide_curve<T>(S, C, o);
+               std::optional<SeparationResult> sep;
+               BSpline<Rational> fq;
+               if (R.status == QPStatus::optimal) {
+                 fq = exact_guide(R);
+                 std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
+                 sep = certify_separation(R.solid, R.cut, fq, o.strip);
+               }
+               return std::make_tuple(R, sep, fq);
+             };
+             Json out;
+             std::string svg;
+             if (go->arith == "exact" || go->arith == "both") {
+               const auto [R, sep, fq] = run(Rational());
+               out = guide_json(R, sep);
+               if (R.status == QPStatus::optimal)
+                 svg = cut_guide_svg(R.solid, R.cut, fq, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
+                                     "Guiding curve (papers/004 RDCP), exact, " + std::to_string(R.inner_knots) + " inner knots");
+               if (go->arith == "both") {
+                 const auto [D, dsep, dq] = run(double());
+                 Json d = guide_json(D, dsep);
+                 if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
+                   Rational err(0), mag(0);
+                   for (std::size_t i = 0; i < R.coefficients.size(); ++i) {
+                     Rational e = dq.points[i] - R.coefficients[i];
+                     if (e < 0) e = -e;
+                     if (err < e) err = e;
+                     const Rational m = R.coefficients[i] < 0 ? Rational(-R.coefficients[i]) : R.coefficients[i];
+                     if (mag < m) mag = m;
+                   }
+                   Json cmp{{"max_abs_error", q_json(err)}};
+                   if (mag > 0 && err > 0) {
+                     const double rel = to_double(err / mag);
+                     cmp["max_rel_error"] = rel;
+                     cmp["bits_lost"] = std::max(0.0, 53 + std::log2(rel));
+                   } else {
+                     cmp["max_rel_error"] = 0.0;
+                     cmp["bits_lost"] = 0.0;
+                   }
+                   cmp["meaning"] = "the double guide's coefficients against the exact minimizer (Lemma 1: unique), measured exactly";
+                   d["judged_against_exact"] = cmp;
+                 }
+                 out = Json{{"exact", out}, {"double", d}};
+               }
+             } else {
+               const auto [D, dsep, dq] = run(double());
+               out = guide_json(D, dsep);
+               if (D.status == QPStatus::optimal)
+                 svg = cut_guide_svg(D.solid, D.cut, dq, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
+                                     "Guiding curve (papers/004 RDCP), double, " + std::to_string(D.inner_knots) + " inner knots");
+             }
+             if (!go->svg.empty()) {
+               if (svg.empty()) throw DomainError("svg", "there is no guide to draw (RDCP infeasible)", "leave --svg out or make RDCP feasible");
+               write_file_atomically(go->svg, svg);
+             }
+             std::cout << out.dump() << "\n";
+             return 0;
+           }}};
+}
+
+}  // namespace splinex::app
