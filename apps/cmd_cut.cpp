@@ -8,12 +8,14 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "cut/curve_facet.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
 #include "experiments/cut_figure.hpp"
 #include "experiments/svg_plot.hpp"
 #include "io/cut_io.hpp"
+#include "spline/knots.hpp"
 
 namespace splinex::app {
 
@@ -44,6 +46,63 @@ Json separation_json(const SeparationResult& s) {
   j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
                  : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
                                            : "some boundary pieces stay undecided (listed); no violation was found";
+  return j;
+}
+
+struct GuideCliOptions {
+  std::string solid, cut, arith = "exact", svg, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
+  int inner = 3, max_inner = 7, samples = 16;
+};
+
+void add_guide_options(CLI::App* g, GuideCliOptions& go) {
+  g->add_option("solid", go.solid, "solid document {\"type\": \"solid2d\", ...}")->required();
+  g->add_option("cut", go.cut, "cutting data document {\"type\": \"cut2d\", ...}")->required();
+  g->add_option("--inner-knots", go.inner, "uniform inner knots per direction of the cubic guide")->check(CLI::Range(0, 1000))->capture_default_str();
+  g->add_option("--max-inner-knots", go.max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this")->check(CLI::Range(0, 1000))->capture_default_str();
+  g->add_option("--samples", go.samples, "sample points per facet (b* and b-bar*)")->check(CLI::Range(1, 100000))->capture_default_str();
+  g->add_option("--delta", go.delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
+  g->add_option("--strip", go.strip, "no samples (and no certification) within this max-norm distance of the cut points, normalized units")->capture_default_str();
+  g->add_option("--lambda-int", go.li, "weight of F_int")->capture_default_str();
+  g->add_option("--lambda-tan", go.lt, "weight of F_tan")->capture_default_str();
+  g->add_option("--lambda-reg", go.lr, "weight of F_reg (Eq. 3)")->capture_default_str();
+}
+
+GuideOptions to_guide_options(const GuideCliOptions& go) {
+  GuideOptions o;
+  o.inner_knots = go.inner;
+  o.max_inner_knots = go.max_inner;
+  o.samples = go.samples;
+  o.delta = parse_number(go.delta, "delta");
+  o.strip = parse_number(go.strip, "strip");
+  o.lambda_int = parse_number(go.li, "lambda-int");
+  o.lambda_tan = parse_number(go.lt, "lambda-tan");
+  o.lambda_reg = parse_number(go.lr, "lambda-reg");
+  return o;
+}
+
+// A cutting curve document must be a polynomial curve in the plane.
+void check_cutting_curve_shape(const BSpline<Rational>& C) {
+  if (C.dim() != 1 || C.q != 2) throw ValidationError("curve", "is not a curve in R^2", "give a spline with one parameter and 2 coordinates");
+  if (C.is_rational()) throw ValidationError("curve", "is rational", "give a polynomial curve");
+  if (C.degrees[0] < 1) throw ValidationError("curve", "has degree 0", "give a continuous curve of degree >= 1");
+  if (!is_clamped(C.knots[0], C.degrees[0], C.count(0))) throw ValidationError("curve.knots", "is not clamped", "clamp the knot vector");
+}
+
+Json validity_json(const ValidityResult& v) {
+  Json j{{"verdict", v.verdict},
+         {"boundary_interpolation", v.interpolates},
+         {"tangent_conditions", v.tangents},
+         {"regular", v.regular},
+         {"injective", v.injective},
+         {"no_collision", v.inside},
+         {"pairs_examined", v.pairs}};
+  if (v.singular_s) j["singular_at"] = to_fraction_string(*v.singular_s);
+  if (v.witness) {
+    j["witness"] = Json{{"parameter", to_fraction_string(*v.witness_s)},
+                        {"point", Json::array({to_fraction_string((*v.witness)[0]), to_fraction_string((*v.witness)[1])})},
+                        {"meaning", v.witness_meaning}};
+  }
+  j["meaning"] = "each condition decided exactly (certified or violated, with a witness) or undecided at the subdivision budget";
   return j;
 }
 
@@ -105,7 +164,7 @@ Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& 
 }  // namespace
 
 Commands add_cut(CLI::App& app) {
-  auto* cut = app.add_subcommand("cut", "cutting curves for isogeometric segmentation (papers/004, d = 2): example, guide");
+  auto* cut = app.add_subcommand("cut", "cutting curves for isogeometric segmentation (papers/004, d = 2): example, guide, facet, certify, split");
   cut->require_subcommand(1);
 
   struct ExampleOptions {
@@ -116,25 +175,42 @@ Commands add_cut(CLI::App& app) {
   ex->add_option("name", eo->name, "square, L or U")->required();
   ex->add_option("--out", eo->out, "folder to write into")->capture_default_str();
 
-  struct GuideCliOptions {
-    std::string solid, cut, arith = "exact", svg, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
-    int inner = 3, max_inner = 7, samples = 16;
-  };
   auto go = std::make_shared<GuideCliOptions>();
   auto* g = cut->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
-  g->add_option("solid", go->solid, "solid document {\"type\": \"solid2d\", ...}")->required();
-  g->add_option("cut", go->cut, "cutting data document {\"type\": \"cut2d\", ...}")->required();
+  add_guide_options(g, *go);
   add_arith_option(g, go->arith, "exact (the QP exactly, KKT checked), double (assembled in double), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
-  g->add_option("--inner-knots", go->inner, "uniform inner knots per direction of the cubic guide")->check(CLI::Range(0, 1000))->capture_default_str();
-  g->add_option("--max-inner-knots", go->max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this")->check(CLI::Range(0, 1000))->capture_default_str();
-  g->add_option("--samples", go->samples, "sample points per facet (b* and b-bar*)")->check(CLI::Range(1, 100000))->capture_default_str();
-  g->add_option("--delta", go->delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
-  g->add_option("--strip", go->strip, "no samples (and no certification) within this max-norm distance of the cut points, normalized units")->capture_default_str();
-  g->add_option("--lambda-int", go->li, "weight of F_int")->capture_default_str();
-  g->add_option("--lambda-tan", go->lt, "weight of F_tan")->capture_default_str();
-  g->add_option("--lambda-reg", go->lr, "weight of F_reg (Eq. 3)")->capture_default_str();
   g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here");
+
+  struct FacetCliOptions {
+    GuideCliOptions guide;
+    int control_points = 8;
+    double step = 1.0 / 256;
+    std::string out;
+  };
+  auto fo = std::make_shared<FacetCliOptions>();
+  auto* fc = cut->add_subcommand("facet", "the cutting curve: the exact guide traced (march in double), fitted exactly (least squares, ends and "
+                                           "tangents imposed), its validity certified; with --out also the two sub-solids");
+  add_guide_options(fc, fo->guide);
+  fc->add_option("--control-points", fo->control_points, "control points of the fitted cubic")->check(CLI::Range(4, 1000))->capture_default_str();
+  fc->add_option("--step", fo->step, "marching step, normalized units")->check(CLI::Range(1e-6, 0.5))->capture_default_str();
+  fc->add_option("--svg", fo->guide.svg, "write the figure (guide, samples, cutting curve) here");
+  fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder");
+
+  struct CertifyCliOptions {
+    std::string solid, cut, curve, out;
+  };
+  auto co = std::make_shared<CertifyCliOptions>();
+  auto* ce = cut->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
+  ce->add_option("solid", co->solid, "solid document")->required();
+  ce->add_option("cut", co->cut, "cutting data document")->required();
+  ce->add_option("curve", co->curve, "the cutting curve (a spline document: a polynomial curve in R^2, from the first cut point to the second)")->required();
+  auto cso = std::make_shared<CertifyCliOptions>();
+  auto* sp = cut->add_subcommand("split", "split the solid along a cutting curve certified valid: the two sub-solids' facets");
+  sp->add_option("solid", cso->solid, "solid document")->required();
+  sp->add_option("cut", cso->cut, "cutting data document")->required();
+  sp->add_option("curve", cso->curve, "the cutting curve (spline document)")->required();
+  sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json")->required();
 
   return {{ex, [eo](const Context&) {
              const auto e = cut_example(eo->name);
@@ -151,15 +227,7 @@ Commands add_cut(CLI::App& app) {
           {g, [go](const Context& ctx) {
              const auto S = solid2_from_json(read_json_file(go->solid, ctx.read_limits), ctx.limits);
              const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
-             GuideOptions o;
-             o.inner_knots = go->inner;
-             o.max_inner_knots = go->max_inner;
-             o.samples = go->samples;
-             o.delta = parse_number(go->delta, "delta");
-             o.strip = parse_number(go->strip, "strip");
-             o.lambda_int = parse_number(go->li, "lambda-int");
-             o.lambda_tan = parse_number(go->lt, "lambda-tan");
-             o.lambda_reg = parse_number(go->lr, "lambda-reg");
+             const GuideOptions o = to_guide_options(*go);
              validate_cut(S, C);  // every typed error before the first progress line
              validate_guide_options(o, S.facets.size());
              if (go->arith != "double") check_exact_sizes(S, C, o);
@@ -222,6 +290,82 @@ Commands add_cut(CLI::App& app) {
                write_file_atomically(go->svg, svg);
              }
              std::cout << out.dump() << "\n";
+             return 0;
+           }},
+          {fc, [fo](const Context& ctx) {
+             const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);
+             const auto C = cut2_from_json(read_json_file(fo->guide.cut, ctx.read_limits));
+             const GuideOptions o = to_guide_options(fo->guide);
+             validate_cut(S, C);
+             validate_guide_options(o, S.facets.size());
+             check_exact_sizes(S, C, o);
+             // No progress lines here: the march can still fail with a typed error, which must be the
+             // only line on stderr (the default sizes take seconds).
+             const auto R = guide_curve<Rational>(S, C, o);
+             if (R.status != QPStatus::optimal)
+               throw DomainError("guide", "RDCP is " + to_string(R.status) + " up to " + std::to_string(R.inner_knots) + " inner knots",
+                                 "raise --max-inner-knots, lower --delta, or widen --strip");
+             const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
+             CurveFitOptions fo2;
+             fo2.control_points = fo->control_points;
+             fo2.step = fo->step;
+             const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo2);
+             const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
+             const auto curve = from_frame(cc.curve, R.frame);
+             Json out{{"guide", guide_json(R, sep)},
+                      {"curve", spline_to_json(curve)},
+                      {"march_points", cc.polygon.size()},
+                      {"fit_max_deviation_normalized", cc.fit_max_deviation},
+                      {"validity", validity_json(v)}};
+             out["guide"].erase("guide");
+             if (!fo->guide.svg.empty())
+               write_file_atomically(fo->guide.svg, cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, &sep,
+                                                                  "Cutting curve (papers/004): guide, samples, fitted curve (" + v.verdict + ")", &cc.curve));
+             if (!fo->out.empty()) {
+               std::filesystem::create_directories(fo->out);
+               write_file_atomically((std::filesystem::path(fo->out) / "curve.json").string(), spline_to_json(curve).dump(1) + "\n");
+               if (v.verdict == "valid") {
+                 const auto [S1, S2] = split_solid(S, validate_cut(S, C), curve);
+                 write_file_atomically((std::filesystem::path(fo->out) / "part1.solid.json").string(), solid2_to_json(S1).dump(1) + "\n");
+                 write_file_atomically((std::filesystem::path(fo->out) / "part2.solid.json").string(), solid2_to_json(S2).dump(1) + "\n");
+                 out["split"] = Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
+                                     {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
+                                     {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
+               } else {
+                 out["split"] = "not written: the curve is not certified valid";
+               }
+             }
+             std::cout << out.dump() << "\n";
+             return 0;
+           }},
+          {ce, [co](const Context& ctx) {
+             const auto S = solid2_from_json(read_json_file(co->solid, ctx.read_limits), ctx.limits);
+             const auto C = validate_cut(S, cut2_from_json(read_json_file(co->cut, ctx.read_limits)));
+             const auto curve = spline_from_json(read_json_file(co->curve, ctx.read_limits), ctx.limits, "curve");
+             check_cutting_curve_shape(curve);
+             std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
+             return 0;
+           }},
+          {sp, [cso](const Context& ctx) {
+             const auto S = solid2_from_json(read_json_file(cso->solid, ctx.read_limits), ctx.limits);
+             const auto C = validate_cut(S, cut2_from_json(read_json_file(cso->cut, ctx.read_limits)));
+             const auto curve = spline_from_json(read_json_file(cso->curve, ctx.read_limits), ctx.limits, "curve");
+             check_cutting_curve_shape(curve);
+             const auto v = certify_cutting_curve(S, C, curve);
+             if (v.verdict != "valid")
+               throw DomainError("curve", "is not certified valid (" + v.verdict + ": regular " + v.regular + ", injective " + v.injective +
+                                              ", no collision " + v.inside + ")",
+                                 "run cut certify to see why; split along a valid cutting curve");
+             const auto [S1, S2] = split_solid(S, C, curve);
+             std::filesystem::create_directories(cso->out);
+             const std::string p1 = (std::filesystem::path(cso->out) / "part1.solid.json").string();
+             const std::string p2 = (std::filesystem::path(cso->out) / "part2.solid.json").string();
+             write_file_atomically(p1, solid2_to_json(S1).dump(1) + "\n");
+             write_file_atomically(p2, solid2_to_json(S2).dump(1) + "\n");
+             std::cout << Json{{"part1", p1}, {"part2", p2}, {"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
+                               {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
+                               {"area_check", "area(part1) + area(part2) = area(solid), exactly"}}.dump()
+                       << "\n";
              return 0;
            }}};
 }

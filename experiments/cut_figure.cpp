@@ -11,7 +11,8 @@ namespace splinex {
 
 std::string cut_guide_svg(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const BSpline<Rational>& f,
                           const std::vector<std::array<Rational, 2>>& samples, std::size_t samples_positive,
-                          const Rational& strip, const SeparationResult* sep, const std::string& title) {
+                          const Rational& strip, const SeparationResult* sep, const std::string& title,
+                          const BSpline<Rational>* curve) {
   const double W = 520, M = 30;
   auto X = [&](double x) { return M + x * (W - 2 * M); };
   auto Y = [&](double y) { return W - M - y * (W - 2 * M); };
@@ -54,6 +55,15 @@ std::string cut_guide_svg(const Solid2<Rational>& solid, const CutData2<Rational
         s << "M" << X(cross[k].first) << "," << Y(cross[k].second) << "L" << X(cross[k + 1].first) << "," << Y(cross[k + 1].second);
     }
   s << "\"/>\n";
+  if (curve) {
+    const auto Cd = round_spline<double>(*curve, "curve");
+    s << "<polyline fill=\"none\" stroke=\"#9467bd\" stroke-width=\"2.5\" stroke-dasharray=\"6,3\" points=\"";
+    for (int k = 0; k <= 200; ++k) {
+      const auto p = evaluate(Cd, std::vector<double>{Cd.domain_lo(0) + (Cd.domain_hi(0) - Cd.domain_lo(0)) * k / 200.0});
+      s << X(p[0]) << "," << Y(p[1]) << " ";
+    }
+    s << "\"/>\n";
+  }
   // samples
   for (std::size_t i = 0; i < samples.size(); ++i)
     s << "<circle cx=\"" << X(to_double(samples[i][0])) << "\" cy=\"" << Y(to_double(samples[i][1])) << "\" r=\"2.5\" fill=\""
@@ -81,7 +91,7 @@ std::string cut_guide_svg(const Solid2<Rational>& solid, const CutData2<Rational
       s << "<circle cx=\"" << X(to_double(p[0])) << "\" cy=\"" << Y(to_double(p[1])) << "\" r=\"6\" fill=\"none\" stroke=\"orange\" stroke-width=\"2\"/>\n";
     }
   }
-  s << "<text x=\"" << M << "\" y=\"" << W + 12 << "\" font-family=\"sans-serif\" font-size=\"12\">blue: f* = 0; green/red: samples of b*/b-bar*; grey: strip</text>\n";
+  s << "<text x=\"" << M << "\" y=\"" << W + 12 << "\" font-family=\"sans-serif\" font-size=\"11\">blue: f* = 0; " << (curve ? "purple dashed: cutting curve; " : "") << "green/red: samples on b/b-bar; grey: strip</text>\n";
   s << "<text x=\"" << M << "\" y=\"" << W + 30 << "\" font-family=\"sans-serif\" font-size=\"12\">" << svg_escape(verdict) << "</text>\n</svg>\n";
   return s.str();
 }

@@ -3,6 +3,7 @@
 // double, and certified separation (including a guide that must fail).
 #include <catch2/catch.hpp>
 
+#include "cut/curve_facet.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/qp.hpp"
@@ -243,4 +244,59 @@ TEST_CASE("cut: a sample-feasible RDCP solution that leaves the solid is refuted
   const auto R2 = guide_curve<Rational>(e.solid, e.cut, o);
   REQUIRE(R2.status == QPStatus::optimal);
   CHECK(certify_separation(R2.solid, R2.cut, R2.f, o.strip).verdict == "certified");
+}
+
+TEST_CASE("cut: the cutting curve fitted to the guide, certified valid, and the solid split exactly", "[cut]") {
+  for (const std::string name : {"square", "L", "U"}) {
+    INFO(name);
+    const auto e = cut_example(name);
+    const auto R = guide_curve<Rational>(e.solid, e.cut, GuideOptions{});
+    REQUIRE(R.status == QPStatus::optimal);
+    const auto cc = fit_cutting_curve(R.solid, R.cut, R.f);
+    CHECK(cc.fit_max_deviation < 0.05);
+    const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
+    CHECK(v.interpolates);
+    CHECK(v.tangents);
+    CHECK(v.regular == "certified");
+    CHECK(v.injective == "certified");
+    CHECK(v.inside == "certified");
+    CHECK(v.verdict == "valid");
+    const auto [S1, S2] = split_solid(R.solid, R.cut, cc.curve);
+    CHECK(signed_area(S1) > 0);
+    CHECK(signed_area(S2) > 0);
+    CHECK(signed_area(S1) + signed_area(S2) == signed_area(R.solid));
+  }
+}
+
+TEST_CASE("cut: an invalid cutting curve is refuted at an exact point outside the solid", "[cut]") {
+  // The U's two arm tops joined by the cubic p, p + (0,-1), q + (0,-1), q: it has the right ends and
+  // tangents but dips only to y = 9/4 between the arms, through the slot: C(1/2) = (3/2, 9/4) lies
+  // outside the U.
+  const auto e = cut_example("U");
+  const auto C = make_spline<Rational>({3}, {clamped_knots<Rational>(3, q(0), q(1))}, 2,
+                                       {q(1, 2), q(3), q(1, 2), q(2), q(5, 2), q(2), q(5, 2), q(3)});
+  const auto cut = validate_cut(e.solid, e.cut);
+  const auto v = certify_cutting_curve(e.solid, cut, C);
+  CHECK(v.interpolates);
+  CHECK(v.tangents);
+  CHECK(v.regular == "certified");
+  CHECK(v.injective == "certified");
+  REQUIRE(v.inside == "violated");
+  CHECK(v.verdict == "invalid");
+  REQUIRE(v.witness);
+  CHECK(classify_point(e.solid, *v.witness) == -1);
+  // Ray casting itself: inside, outside, on the boundary.
+  CHECK(classify_point(e.solid, {q(1, 2), q(2)}) == 1);
+  CHECK(classify_point(e.solid, {q(3, 2), q(2)}) == -1);
+  CHECK(classify_point(e.solid, {q(3, 2), q(1, 4)}) == 1);   // between the two bottoms (0 and 1/2 at x = 3/2)
+  CHECK(classify_point(e.solid, {q(3, 2), q(3, 4)}) == -1);  // above the inner bottom
+  CHECK(classify_point(e.solid, {q(3, 2), q(-1, 8)}) == -1);
+  // A self-intersecting loop is not certified injective; a curve with a cusp is refuted as irregular.
+  const auto loop = make_spline<Rational>({3}, {clamped_knots<Rational>(3, q(0), q(1))}, 2, {q(0), q(0), q(2), q(1), q(2), q(-1), q(0), q(1)});
+  const auto vl = certify_cutting_curve(e.solid, cut, loop);
+  CHECK(vl.injective == "undecided");
+  const auto cusp = make_spline<Rational>({3}, {clamped_knots<Rational>(3, q(0), q(1))}, 2, {q(0), q(0), q(1), q(1), q(0), q(1), q(1), q(0)});
+  const auto vc = certify_cutting_curve(e.solid, cut, cusp);
+  CHECK(vc.regular == "violated");
+  CHECK(vc.singular_s == q(1, 2));
 }

@@ -253,6 +253,10 @@ def command_for(rng, docs, kinds=KINDS):
         else:
             doc, extra_files["SECOND"] = other, docs[name]
             argv = ["cut", "guide"] + opts + ["SECOND", "DOC"]
+        if rng.random() < 0.3:  # the whole pipeline: guide, march, fit, validity
+            argv[1] = "facet"
+            argv = [a for i, a in enumerate(argv) if not (a == "--arith" or (i > 0 and argv[i - 1] == "--arith"))]
+            argv[2:2] = ["--control-points", rng.choice(["4", "8", "30"])]
     elif kind == "hybrid":
         doc = docs[rng.choice([n for n in docs if n.startswith(("hybrid", "bad_hybrid"))])]
         argv = ["hybrid", "eval", "--arith", rng.choice(["exact", "double", "mpfr:64"]), "--at",
