@@ -51,13 +51,14 @@ Json separation_json(const SeparationResult& s) {
 
 struct GuideCliOptions {
   std::string solid, cut, arith = "exact", svg, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
-  int inner = 3, max_inner = 7, samples = 16;
+  int inner = 3, inner_y = -1, max_inner = 7, samples = 16;
 };
 
 void add_guide_options(CLI::App* g, GuideCliOptions& go) {
   g->add_option("solid", go.solid, "solid document {\"type\": \"solid2d\", ...}")->required();
   g->add_option("cut", go.cut, "cutting data document {\"type\": \"cut2d\", ...}")->required();
   g->add_option("--inner-knots", go.inner, "uniform inner knots per direction of the cubic guide")->check(CLI::Range(0, 1000))->capture_default_str();
+  g->add_option("--inner-knots-y", go.inner_y, "inner knots in y, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
   g->add_option("--max-inner-knots", go.max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this")->check(CLI::Range(0, 1000))->capture_default_str();
   g->add_option("--samples", go.samples, "sample points per facet (b* and b-bar*)")->check(CLI::Range(1, 100000))->capture_default_str();
   g->add_option("--delta", go.delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
@@ -70,6 +71,7 @@ void add_guide_options(CLI::App* g, GuideCliOptions& go) {
 GuideOptions to_guide_options(const GuideCliOptions& go) {
   GuideOptions o;
   o.inner_knots = go.inner;
+  o.inner_knots_y = go.inner_y;
   o.max_inner_knots = go.max_inner;
   o.samples = go.samples;
   o.delta = parse_number(go.delta, "delta");
@@ -128,7 +130,7 @@ Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& 
   Json j;
   j["arithmetic"] = ArithTraits<T>::name();
   j["status"] = to_string(R.status);
-  j["inner_knots"] = R.inner_knots;
+  j["inner_knots"] = Json::array({R.inner_knots, R.inner_knots_y});
   j["inner_knots_tried"] = R.tried;
   j["variables"] = R.program.n;
   j["rows"] = R.program.rows.size();

@@ -1,6 +1,7 @@
 #include "cut/curve_facet.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "exact/root_isolation.hpp"
 #include "float/rounding.hpp"
@@ -154,12 +155,18 @@ CuttingCurve fit_cutting_curve(const Solid2<Rational>& S, const CutData2<Rationa
   double gq[2];
   const double fq = F(q[0], q[1], gq);
   const double reach = 1.5 * o.step + 2 * std::abs(fq) / std::max(1e-300, std::hypot(gq[0], gq[1]));
+  double gp[2];
+  const double fp = F(p[0], p[1], gp);
+  const double start_offset = std::max(o.step, 2 * std::abs(fp) / std::max(1e-300, std::hypot(gp[0], gp[1])));
   CuttingCurve out;
   out.polygon.push_back({p[0], p[1]});
-  double x = p[0], y = p[1];
-  project(x, y);
+  // Start a little inside along the tangent (f*(p) is only about 0), then project onto f* = 0.
   double dir[2] = {to_double(cut.ends[0].tangent[0]), to_double(cut.ends[0].tangent[1])};
-  bool reached = false;
+  const double dn = std::hypot(dir[0], dir[1]);
+  double x = p[0] + start_offset * dir[0] / dn, y = p[1] + start_offset * dir[1] / dn;
+  project(x, y);
+  const double x0 = x, y0 = y;
+  bool reached = false, closed = false;
   for (int k = 0; k < o.max_steps; ++k) {
     double g[2];
     F(x, y, g);
@@ -177,12 +184,19 @@ CuttingCurve fit_cutting_curve(const Solid2<Rational>& S, const CutData2<Rationa
       reached = true;
       break;
     }
+    if (k > 8 && std::hypot(x - x0, y - y0) < 1.5 * o.step) {
+      closed = true;
+      break;
+    }
     out.polygon.push_back({x, y});
   }
-  if (!reached)
-    throw DomainError("guide", "its zero set traced from the first cut point does not reach the second (it leaves the square or runs past " +
-                                   std::to_string(o.max_steps) + " steps)",
+  if (!reached) {
+    char where[160];
+    std::snprintf(where, sizeof where, " (the march %s at (%.4g, %.4g) after %zu steps, %.3g from it; normalized units)",
+                  closed ? "closed a loop" : "ended", x, y, out.polygon.size(), std::hypot(x - q[0], y - q[1]));
+    throw DomainError("guide", std::string("its zero set traced from the first cut point does not reach the second") + where,
                       "certify the guide first (cut guide), refine it (--inner-knots), or shorten --step");
+  }
   out.polygon.push_back({q[0], q[1]});
   // Chord-length parameters, exact from the doubles.
   std::vector<double> len{0};
@@ -320,6 +334,13 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
                dot(d1, cut.ends[1].tangent) < 0;
   const auto cp = pieces_of(C);
   std::size_t budget = o.max_pairs;
+  // One budget for the three subdivisions; once spent, what is left is undecided.
+  auto take = [&]() {
+    if (budget == 0) return false;
+    --budget;
+    ++R.pairs;
+    return true;
+  };
 
   // Regularity: on each piece, x' or y' of one strict sign; else halve.
   R.regular = "certified";
@@ -328,6 +349,10 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   while (!todo.empty() && R.regular != "violated") {
     auto [pc, depth] = todo.back();
     todo.pop_back();
+    if (!take()) {  // the shared budget: what is left stays undecided
+      R.regular = "undecided";
+      break;
+    }
     bool ok = false;
     for (int a = 0; a < 2 && !ok; ++a) {
       bool pos = true, neg = true;
@@ -363,8 +388,7 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   while (!pairs.empty()) {
     Pair pr = pairs.back();
     pairs.pop_back();
-    ++R.pairs;
-    if (budget-- == 0) {
+    if (!take()) {
       R.injective = "undecided";
       break;
     }
@@ -436,8 +460,7 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   while (!cpairs.empty()) {
     CPair pr = cpairs.back();
     cpairs.pop_back();
-    ++R.pairs;
-    if (budget-- == 0) {
+    if (!take()) {
       R.inside = "undecided";
       break;
     }

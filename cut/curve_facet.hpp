@@ -32,7 +32,7 @@ namespace splinex {
 struct CurveFitOptions {
   int control_points = 8;   // of the fitted cubic (>= 4)
   double step = 1.0 / 256;  // marching step in normalized units
-  int max_steps = 100000;
+  int max_steps = 20000;  // 78 unit lengths at the default step
 };
 
 struct CuttingCurve {
@@ -48,7 +48,7 @@ CuttingCurve fit_cutting_curve(const Solid2<Rational>& solid, const CutData2<Rat
 
 struct ValidityOptions {
   int max_depth = 24;
-  std::size_t max_pairs = 400000;
+  std::size_t max_pairs = 40000;  // interval pairs examined in all (a few hundred for the examples)
 };
 
 struct ValidityResult {

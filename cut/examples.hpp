@@ -15,8 +15,8 @@ struct CutExample {
   CutData2<Rational> cut;
 };
 
-/// The names: "square", "L" (Figure 10's L-shaped domain), "U" (a U with round bottom, cut along
-/// its middle from one arm's top to the other's).
+/// The names: "square", "L" (Figure 10's L-shaped domain), and the domains of Figures 8-9 / Table 1
+/// modelled from exact data: "U", "J", "K", "maze", "snake" (descriptions say how).
 std::vector<std::string> cut_example_names();
 CutExample cut_example(const std::string& name);  // UsageError for an unknown name
 

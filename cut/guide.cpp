@@ -39,8 +39,8 @@ struct BasisRow {
 };
 
 template <class T>
-BasisRow<T> basis_row(const std::vector<T>& U, std::size_t n, const T& x, const T& y) {
-  const auto bx = local_basis(U, n, x), by = local_basis(U, n, y);
+BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y) {
+  const auto bx = local_basis(Ux, n, x), by = local_basis(Uy, ny, y);
   BasisRow<T> r;
   for (int b = 0; b <= kDegree; ++b)
     for (int a = 0; a <= kDegree; ++a) {
@@ -128,29 +128,36 @@ std::vector<Rational> guide_knots(int inner_knots) {
 }
 
 template <class T>
-std::vector<T> regularization_matrix(const std::vector<T>& U) {
-  const std::size_t n = U.size() - kDegree - 1, N = n * n;
-  const auto G = gram_matrices(U);
+std::vector<T> regularization_matrix(const std::vector<T>& Ux, const std::vector<T>& Uy) {
+  const std::size_t n = Ux.size() - kDegree - 1, m = Uy.size() - kDegree - 1, N = n * m;
+  const auto G = gram_matrices(Ux);
+  const auto H = gram_matrices(Uy);
   std::vector<T> M(N * N, T(0));
-  for (std::size_t j1 = 0; j1 < n; ++j1)
+  for (std::size_t j1 = 0; j1 < m; ++j1)
     for (std::size_t i1 = 0; i1 < n; ++i1)
-      for (std::size_t j2 = 0; j2 < n; ++j2)
+      for (std::size_t j2 = 0; j2 < m; ++j2)
         for (std::size_t i2 = 0; i2 < n; ++i2) {
           const std::size_t I = i1 + n * j1, J = i2 + n * j2;
-          const std::size_t x = i1 * n + i2, y = j1 * n + j2;
+          const std::size_t x = i1 * n + i2, y = j1 * m + j2;
           // f_xx^2 + 2 f_xy^2 + f_yy^2
-          M[I * N + J] = G[2][x] * G[0][y] + T(2) * G[1][x] * G[1][y] + G[0][x] * G[2][y];
+          M[I * N + J] = G[2][x] * H[0][y] + T(2) * G[1][x] * H[1][y] + G[0][x] * H[2][y];
         }
   return M;
+}
+
+template <class T>
+std::vector<T> regularization_matrix(const std::vector<T>& U) {
+  return regularization_matrix(U, U);
 }
 
 namespace {
 std::size_t msb_bits(const Integer& z) { return z == 0 ? 0 : boost::multiprecision::msb(z < 0 ? Integer(-z) : z) + 1; }
 
-std::size_t program_size(int k, std::size_t rows) {
-  const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, N = n * n;
+std::size_t program_size(int kx, int ky, std::size_t rows) {
+  const std::size_t N = (static_cast<std::size_t>(kx) + kDegree + 1) * (static_cast<std::size_t>(ky) + kDegree + 1);
   return N * (N + rows);
 }
+int first_ky(const GuideOptions& o) { return o.inner_knots_y < 0 ? o.inner_knots : o.inner_knots_y; }
 }  // namespace
 
 void validate_guide_options(const GuideOptions& o, std::size_t facets) {
@@ -162,7 +169,8 @@ void validate_guide_options(const GuideOptions& o, std::size_t facets) {
     throw ValidationError("weights", "are not all positive", "give positive lambda_int, lambda_tan, lambda_reg (Lemma 1 needs them)");
   if (o.strip < 0) throw ValidationError("strip", "is negative", "give a strip width >= 0");
   const std::size_t rows = static_cast<std::size_t>(o.samples) * facets;
-  if (program_size(o.inner_knots, rows) > o.max_size)
+  if (o.inner_knots_y < -1 || o.inner_knots_y > 1000) throw ValidationError("inner-knots-y", "is " + std::to_string(o.inner_knots_y), "give 0 .. 1000 inner knots in y, or leave it out (the same as in x)");
+  if (program_size(o.inner_knots, first_ky(o), rows) > o.max_size)
     throw SizeLimitError("inner-knots", "a program with " + std::to_string(o.inner_knots) + " inner knots and up to " + std::to_string(rows) +
                                             " sample rows is over the size limit (" + std::to_string(o.max_size) + " entries)",
                          "give fewer inner knots or samples");
@@ -253,21 +261,22 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
   }
   const T delta = from_q<T>(o.delta), li = from_q<T>(o.lambda_int), lt = from_q<T>(o.lambda_tan), lr = from_q<T>(o.lambda_reg);
 
-  for (int k = o.inner_knots;; k = 2 * k + 1) {
+  for (int k = o.inner_knots, ky = first_ky(o);; k = 2 * k + 1, ky = 2 * ky + 1) {
     R.tried.push_back(k);
-    const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, N = n * n;
-    std::vector<T> U;
+    const std::size_t n = static_cast<std::size_t>(k) + kDegree + 1, ny = static_cast<std::size_t>(ky) + kDegree + 1, N = n * ny;
+    std::vector<T> U, Uy;
     for (const auto& u : guide_knots(k)) U.push_back(from_q<T>(u));
+    for (const auto& u : guide_knots(ky)) Uy.push_back(from_q<T>(u));
     QuadraticProgram<T> qp;
     qp.n = N;
-    qp.D = regularization_matrix(U);
+    qp.D = regularization_matrix(U, Uy);
     for (auto& v : qp.D) v = v * lr;
     qp.c.assign(N, T(0));
     qp.c0 = T(0);
     for (int e = 0; e < 2; ++e) {
       const auto& c = R.cut.ends[e];
       const auto x = point_of(facets[c.facet], from_q<T>(c.param));
-      const auto row = basis_row(U, n, x[0], x[1]);
+      const auto row = basis_row(U, n, Uy, ny, x[0], x[1]);
       const auto nr = normal_at(R.cut, e);
       const T nx = from_q<T>(nr[0]), ny = from_q<T>(nr[1]);
       add_outer(qp, row.v, li);
@@ -283,7 +292,7 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
       for (std::size_t j = i + 1; j < N; ++j) qp.d(i, j) = qp.d(j, i);
     for (const auto& s : ordered) {
       const auto x = point_of(facets[s.facet], from_q<T>(s.param));
-      const auto row = basis_row(U, n, x[0], x[1]);
+      const auto row = basis_row(U, n, Uy, ny, x[0], x[1]);
       typename QuadraticProgram<T>::Row r;
       r.a = row.v;
       r.at_least = s.positive;
@@ -295,8 +304,9 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
     else R.program = exact_program(qp);
     R.status = R.solution.status;
     R.inner_knots = k;
+    R.inner_knots_y = ky;
     if (R.status == QPStatus::optimal || 2 * k + 1 > o.max_inner_knots) break;
-    if (program_size(2 * k + 1, ordered.size()) > o.max_size) {
+    if (program_size(2 * k + 1, 2 * ky + 1, ordered.size()) > o.max_size) {
       R.refinement_stopped_by_limit = true;
       break;
     }
@@ -304,17 +314,18 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
   R.kkt = check_kkt(R.program, R.solution);
   R.positive_definite = positive_definite(R.program);
   if (R.status == QPStatus::optimal) {
-    const auto U = guide_knots(R.inner_knots);
+    const auto U = guide_knots(R.inner_knots), Uy = guide_knots(R.inner_knots_y);
     R.coefficients = R.solution.x;
     std::vector<T> pts;
     for (const auto& c : R.coefficients) pts.push_back(from_q<T>(c));
-    std::vector<T> UT;
+    std::vector<T> UT, UyT;
     for (const auto& u : U) UT.push_back(from_q<T>(u));
-    R.f = make_spline<T>({kDegree, kDegree}, {UT, UT}, 1, pts);
+    for (const auto& u : Uy) UyT.push_back(from_q<T>(u));
+    R.f = make_spline<T>({kDegree, kDegree}, {UT, UyT}, 1, pts);
     // The interpolation errors at L*, exactly (for double: of the rounded coefficients).
     std::vector<Rational> exact_pts;
     for (const auto& v : pts) exact_pts.push_back(ArithTraits<T>::to_rational(v));
-    const auto fq = make_spline<Rational>({kDegree, kDegree}, {U, U}, 1, exact_pts);
+    const auto fq = make_spline<Rational>({kDegree, kDegree}, {U, Uy}, 1, exact_pts);
     for (int e = 0; e < 2; ++e) {
       const auto x = evaluate(S.facets[R.cut.ends[e].facet], std::vector<Rational>{R.cut.ends[e].param});
       R.value_at_ends[e] = evaluate(fq, x)[0];
@@ -331,5 +342,7 @@ template GuideResult<Rational> guide_curve(const Solid2<Rational>&, const CutDat
 template GuideResult<double> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
 template std::vector<Rational> regularization_matrix(const std::vector<Rational>&);
 template std::vector<double> regularization_matrix(const std::vector<double>&);
+template std::vector<Rational> regularization_matrix(const std::vector<Rational>&, const std::vector<Rational>&);
+template std::vector<double> regularization_matrix(const std::vector<double>&, const std::vector<double>&);
 
 }  // namespace splinex

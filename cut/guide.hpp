@@ -32,7 +32,8 @@ namespace splinex {
 
 struct GuideOptions {
   int inner_knots = 3;
-  int max_inner_knots = 7;
+  int inner_knots_y = -1;  // inner knots in y; -1: as in x (the paper's snake needed its own knot vector)
+  int max_inner_knots = 7;  // refinement doubles both counts (+1) while the x count stays within this
   Rational delta{1, 20};
   Rational lambda_int{1};
   Rational lambda_tan{1};
@@ -52,7 +53,7 @@ struct GuideResult {
   Solid2<Rational> solid;       // the solid in normalized coordinates
   CutData2<Rational> cut;       // validated and normalized ends
   QPStatus status = QPStatus::infeasible;
-  int inner_knots = 0;
+  int inner_knots = 0, inner_knots_y = 0;
   std::vector<int> tried;       // inner knot counts tried, in order
   bool refinement_stopped_by_limit = false;
   BSpline<T> f;                 // f* on [0,1]^2 (normalized coordinates); empty unless optimal
@@ -89,5 +90,8 @@ std::vector<Rational> guide_knots(int inner_knots);
 /// from the univariate Gram matrices of the basis and its first and second derivatives.
 template <class T>
 std::vector<T> regularization_matrix(const std::vector<T>& knots);
+/// The same for different knots in x and y ((n_x n_y)^2, x index fastest).
+template <class T>
+std::vector<T> regularization_matrix(const std::vector<T>& knots_x, const std::vector<T>& knots_y);
 
 }  // namespace splinex

@@ -12,11 +12,6 @@ namespace {
 
 std::string facet_field(std::size_t i) { return "facets[" + std::to_string(i) + "]"; }
 
-std::array<Rational, 2> point_at(const BSpline<Rational>& F, const Rational& s) {
-  const auto p = evaluate(F, std::vector<Rational>{s});
-  return {p[0], p[1]};
-}
-
 std::array<Rational, 2> start_of(const BSpline<Rational>& F) { return {F.points[0], F.points[1]}; }
 std::array<Rational, 2> end_of(const BSpline<Rational>& F) {
   const std::size_t n = F.size();

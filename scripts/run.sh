@@ -51,7 +51,7 @@ case "$what" in
     fuzz/run_fuzz.sh build-fuzz/bin/fuzz_splinex tests/data build-fuzz/corpus "${2:-10000000}" ;;
   bench)
     cmake --preset default >&2
-    cmake --build --preset default --target bench_kernel bench_compose bench_hybrid bench_vrep bench_solve
+    cmake --build --preset default --target bench_kernel bench_compose bench_hybrid bench_vrep bench_solve bench_cut
     build/bin/bench_kernel --benchmark_out=build/bench_kernel.json --benchmark_out_format=json \
       "${@:2}" >&2
     mkdir -p build/bench_cases
@@ -62,6 +62,7 @@ case "$what" in
     build/bin/bench_hybrid --benchmark_out=build/bench_hybrid.json --benchmark_out_format=json >&2
     build/bin/bench_vrep --benchmark_out=build/bench_vrep.json --benchmark_out_format=json >&2
     build/bin/bench_solve --benchmark_out=build/bench_solve.json --benchmark_out_format=json >&2
+    build/bin/bench_cut --benchmark_out=build/bench_cut.json --benchmark_out_format=json >&2
     python3 scripts/bench_table.py build/bench_kernel.json bench/results build/bench_python.json \
       --compose build/bench_compose.json --hybrid build/bench_hybrid.json --vrep build/bench_vrep.json ;;
   peers)

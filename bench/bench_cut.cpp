@@ -1,0 +1,84 @@
+// Cutting curves (issue 20, papers/004 d = 2): each step exact vs double in one run: the guide's QP
+// (assembly + CGAL's solver: exact on Rational data, and on the doubles of the rounded program),
+// the certified separation of the guide, the march + fit of the cutting curve, its validity.
+// Prints the ratios exact/double per step.
+#include <benchmark/benchmark.h>
+
+#include "bench/ratio_reporter.hpp"
+
+#include <iomanip>
+#include <iostream>
+
+#include "cut/curve_facet.hpp"
+#include "cut/examples.hpp"
+#include "cut/guide.hpp"
+#include "cut/separation.hpp"
+
+using namespace splinex;
+
+namespace {
+
+BSpline<Rational> as_exact(const BSpline<double>& f) {
+  BSpline<Rational> g;
+  g.degrees = f.degrees;
+  for (const auto& U : f.knots) {
+    std::vector<Rational> V;
+    for (double u : U) V.push_back(exact_from_double(u));
+    g.knots.push_back(V);
+  }
+  g.q = f.q;
+  for (double v : f.points) g.points.push_back(exact_from_double(v));
+  return g;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> cases{"L", "U", "K"};
+  for (const auto& c : cases) {
+    benchmark::RegisterBenchmark(("cut/guide/exact/" + c).c_str(), [c](benchmark::State& st) {
+      const auto e = cut_example(c);
+      for (auto _ : st) benchmark::DoNotOptimize(guide_curve<Rational>(e.solid, e.cut));
+    })->Unit(benchmark::kMillisecond)->Iterations(2);
+    benchmark::RegisterBenchmark(("cut/guide/double/" + c).c_str(), [c](benchmark::State& st) {
+      const auto e = cut_example(c);
+      for (auto _ : st) benchmark::DoNotOptimize(guide_curve<double>(e.solid, e.cut));
+    })->Unit(benchmark::kMillisecond)->Iterations(2);
+    benchmark::RegisterBenchmark(("cut/separation/exact/" + c).c_str(), [c](benchmark::State& st) {
+      const auto e = cut_example(c);
+      const auto R = guide_curve<Rational>(e.solid, e.cut);
+      for (auto _ : st) benchmark::DoNotOptimize(certify_separation(R.solid, R.cut, R.f, GuideOptions{}.strip));
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("cut/separation/double/" + c).c_str(), [c](benchmark::State& st) {
+      // the double guide's coefficients, decided exactly (the certificate has no float variant)
+      const auto e = cut_example(c);
+      const auto D = guide_curve<double>(e.solid, e.cut);
+      const auto f = as_exact(D.f);
+      for (auto _ : st) benchmark::DoNotOptimize(certify_separation(D.solid, D.cut, f, GuideOptions{}.strip));
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("cut/fit/exact/" + c).c_str(), [c](benchmark::State& st) {
+      const auto e = cut_example(c);
+      const auto R = guide_curve<Rational>(e.solid, e.cut);
+      for (auto _ : st) benchmark::DoNotOptimize(fit_cutting_curve(R.solid, R.cut, R.f));
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("cut/validity/exact/" + c).c_str(), [c](benchmark::State& st) {
+      const auto e = cut_example(c);
+      const auto R = guide_curve<Rational>(e.solid, e.cut);
+      const auto cc = fit_cutting_curve(R.solid, R.cut, R.f);
+      for (auto _ : st) benchmark::DoNotOptimize(certify_cutting_curve(R.solid, R.cut, cc.curve));
+    })->Unit(benchmark::kMillisecond);
+  }
+  benchmark::Initialize(&argc, argv);
+  RatioReporter rep;
+  benchmark::RunSpecifiedBenchmarks(&rep);
+  std::cout << "\nCutting curves: ms per step (guide: assembly + QP; double: the rounded program on the same exact solver)\n"
+            << "case   guide exact  guide double  exact/double   separation  fit (march+LSQ)  validity\n";
+  for (const auto& c : cases) {
+    const auto t = [&](const std::string& a) { return rep.ns["cut/" + a + "/" + c]; };
+    std::cout << std::left << std::setw(6) << c << std::right << std::fixed << std::setprecision(1) << std::setw(12) << t("guide/exact")
+              << std::setw(14) << t("guide/double") << std::setprecision(2) << std::setw(14)
+              << (t("guide/double") > 0 ? t("guide/exact") / t("guide/double") : 0.0) << std::setprecision(1) << std::setw(13)
+              << t("separation/exact") << std::setw(17) << t("fit/exact") << std::setw(10) << t("validity/exact") << "\n";
+  }
+  return 0;
+}
