@@ -74,16 +74,16 @@ TEST_CASE("cut: the exact QP solver's minimizer, multipliers and KKT check", "[c
 TEST_CASE("cut: the regularization matrix equals the integral of the second derivatives", "[cut]") {
   // Independent: each cell's Bernstein form of f, its second derivatives by bern_derivative, their
   // squares' integrals as coefficient means times the cell's area.
-  for (int k : {0, 1, 3}) {
-    const auto U = guide_knots(k);
-    const std::size_t n = U.size() - 4, N = n * n;
-    const auto M = regularization_matrix(U);
+  for (const auto [k, ky] : {std::pair{0, 0}, std::pair{1, 1}, std::pair{3, 3}, std::pair{1, 3}}) {
+    const auto U = guide_knots(k), Uy = guide_knots(ky);
+    const std::size_t n = U.size() - 4, ny = Uy.size() - 4, N = n * ny;
+    const auto M = k == ky ? regularization_matrix(U) : regularization_matrix(U, Uy);
     std::vector<Rational> c(N);
     for (std::size_t i = 0; i < N; ++i) c[i] = Rational(static_cast<long>((i * 7919) % 13) - 6, static_cast<long>(1 + i % 5));
     Rational quad(0);
     for (std::size_t i = 0; i < N; ++i)
       for (std::size_t j = 0; j < N; ++j) quad += c[i] * M[i * N + j] * c[j];
-    const auto f = make_spline<Rational>({3, 3}, {U, U}, 1, c);
+    const auto f = make_spline<Rational>({3, 3}, {U, Uy}, 1, c);
     Rational integral(0);
     for (const auto& piece : extract_bezier(f)) {
       detail::Bern<Rational> b{{3, 3}, piece.spline.points};
@@ -104,11 +104,12 @@ TEST_CASE("cut: the regularization matrix equals the integral of the second deri
     }
     CHECK(quad == integral);
     // Affine functions (coefficients at the Greville abscissae) have no second derivatives: M c = 0.
-    std::vector<Rational> g(n);
+    std::vector<Rational> g(n), gy(ny);
     for (std::size_t i = 0; i < n; ++i) g[i] = (U[i + 1] + U[i + 2] + U[i + 3]) / 3;
+    for (std::size_t j = 0; j < ny; ++j) gy[j] = (Uy[j + 1] + Uy[j + 2] + Uy[j + 3]) / 3;
     std::vector<Rational> a(N);
-    for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t i = 0; i < n; ++i) a[i + n * j] = 2 * g[i] - 3 * g[j] + q(1, 7);
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < n; ++i) a[i + n * j] = 2 * g[i] - 3 * gy[j] + q(1, 7);
     for (std::size_t i = 0; i < N; ++i) {
       Rational r(0);
       for (std::size_t j = 0; j < N; ++j) r += M[i * N + j] * a[j];
