@@ -20,7 +20,8 @@ std::string cut_guide_svg(const Solid2<Rational>& solid, const CutData2<Rational
   s.precision(5);
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << W + 40 << "\" viewBox=\"0 0 " << W << " "
     << W + 40 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s << "<text x=\"" << M << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"13\">" << svg_escape(title) << "</text>\n";
+  s << "<text x=\"" << M / 2 << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"" << (title.size() > 70 ? 11 : 13) << "\">" << svg_escape(title)
+    << "</text>\n";
   // boundary
   for (const auto& F : solid.facets) {
     const auto Fd = round_spline<double>(F, "facet");

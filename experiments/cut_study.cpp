@@ -226,6 +226,7 @@ void cut_section(ReportContext& ctx) {
   for (std::size_t di = 0; di < 3; ++di) {
     PlotSeries ds, cs;
     ds.label = cs.label = "delta = " + to_fraction_string(deltas[di]);
+    ds.color = cs.color = kPalette[di % kPaletteSize];
     for (const auto& lr : lambdas) {
       GuideOptions o;
       o.delta = deltas[di];
