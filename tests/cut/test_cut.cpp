@@ -74,7 +74,7 @@ TEST_CASE("cut: the exact QP solver's minimizer, multipliers and KKT check", "[c
 TEST_CASE("cut: the regularization matrix equals the integral of the second derivatives", "[cut]") {
   // Independent: each cell's Bernstein form of f, its second derivatives by bern_derivative, their
   // squares' integrals as coefficient means times the cell's area.
-  for (const auto [k, ky] : {std::pair{0, 0}, std::pair{1, 1}, std::pair{3, 3}, std::pair{1, 3}}) {
+  for (const auto& [k, ky] : {std::pair{0, 0}, std::pair{1, 1}, std::pair{3, 3}, std::pair{1, 3}}) {
     const auto U = guide_knots(k), Uy = guide_knots(ky);
     const std::size_t n = U.size() - 4, ny = Uy.size() - 4, N = n * ny;
     const auto M = k == ky ? regularization_matrix(U) : regularization_matrix(U, Uy);
