@@ -109,23 +109,6 @@ Json validity_json(const ValidityResult& v) {
 }
 
 template <class T>
-BSpline<Rational> exact_guide(const GuideResult<T>& R) {
-  if constexpr (ArithTraits<T>::exact) return R.f;
-  else {
-    BSpline<Rational> f;
-    f.degrees = R.f.degrees;
-    for (const auto& U : R.f.knots) {
-      std::vector<Rational> V;
-      for (const auto& u : U) V.push_back(ArithTraits<T>::to_rational(u));
-      f.knots.push_back(V);
-    }
-    f.q = 1;
-    for (const auto& v : R.f.points) f.points.push_back(ArithTraits<T>::to_rational(v));
-    return f;
-  }
-}
-
-template <class T>
 Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& sep) {
   Json j;
   j["arithmetic"] = ArithTraits<T>::name();
@@ -161,6 +144,24 @@ Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& 
   if (sep) j["separation"] = separation_json(*sep);
   j["seconds"] = R.seconds;
   return j;
+}
+
+struct CertifyCliOptions {
+  std::string solid, cut, curve, out;
+};
+
+/// cut certify and cut split: the solid, the validated cutting data and the curve (typed errors).
+struct CurveInput {
+  Solid2<Rational> solid;
+  CutData2<Rational> cut;
+  BSpline<Rational> curve;
+};
+CurveInput read_curve_input(const CertifyCliOptions& o, const Context& ctx) {
+  auto S = solid2_from_json(read_json_file(o.solid, ctx.read_limits), ctx.limits);
+  auto C = validate_cut(S, cut2_from_json(read_json_file(o.cut, ctx.read_limits)));
+  auto curve = spline_from_json(read_json_file(o.curve, ctx.read_limits), ctx.limits, "curve");
+  check_cutting_curve_shape(curve);
+  return {std::move(S), std::move(C), std::move(curve)};
 }
 
 }  // namespace
@@ -199,9 +200,6 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--svg", fo->guide.svg, "write the figure (guide, samples, cutting curve) here");
   fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder");
 
-  struct CertifyCliOptions {
-    std::string solid, cut, curve, out;
-  };
   auto co = std::make_shared<CertifyCliOptions>();
   auto* ce = cut->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
   ce->add_option("solid", co->solid, "solid document")->required();
@@ -238,29 +236,27 @@ Commands add_cut(CLI::App& app) {
                std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": solving RDCP\n";
                const auto R = guide_curve<T>(S, C, o);
                std::optional<SeparationResult> sep;
-               BSpline<Rational> fq;
                if (R.status == QPStatus::optimal) {
-                 fq = exact_guide(R);
                  std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
-                 sep = certify_separation(R.solid, R.cut, fq, o.strip);
+                 sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
                }
-               return std::make_tuple(R, sep, fq);
+               return std::make_pair(R, sep);
              };
              Json out;
              std::string svg;
              if (go->arith == "exact" || go->arith == "both") {
-               const auto [R, sep, fq] = run(Rational());
+               const auto [R, sep] = run(Rational());
                out = guide_json(R, sep);
                if (R.status == QPStatus::optimal)
-                 svg = cut_guide_svg(R.solid, R.cut, fq, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
+                 svg = cut_guide_svg(R.solid, R.cut, R.f_exact, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
                                      "Guiding curve (papers/004 RDCP), exact, " + std::to_string(R.inner_knots) + " inner knots");
                if (go->arith == "both") {
-                 const auto [D, dsep, dq] = run(double());
+                 const auto [D, dsep] = run(double());
                  Json d = guide_json(D, dsep);
                  if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
                    Rational err(0), mag(0);
                    for (std::size_t i = 0; i < R.coefficients.size(); ++i) {
-                     Rational e = dq.points[i] - R.coefficients[i];
+                     Rational e = D.f_exact.points[i] - R.coefficients[i];
                      if (e < 0) e = -e;
                      if (err < e) err = e;
                      const Rational m = R.coefficients[i] < 0 ? Rational(-R.coefficients[i]) : R.coefficients[i];
@@ -281,10 +277,10 @@ Commands add_cut(CLI::App& app) {
                  out = Json{{"exact", out}, {"double", d}};
                }
              } else {
-               const auto [D, dsep, dq] = run(double());
+               const auto [D, dsep] = run(double());
                out = guide_json(D, dsep);
                if (D.status == QPStatus::optimal)
-                 svg = cut_guide_svg(D.solid, D.cut, dq, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
+                 svg = cut_guide_svg(D.solid, D.cut, D.f_exact, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
                                      "Guiding curve (papers/004 RDCP), double, " + std::to_string(D.inner_knots) + " inner knots");
              }
              if (!go->svg.empty()) {
@@ -341,18 +337,12 @@ Commands add_cut(CLI::App& app) {
              return 0;
            }},
           {ce, [co](const Context& ctx) {
-             const auto S = solid2_from_json(read_json_file(co->solid, ctx.read_limits), ctx.limits);
-             const auto C = validate_cut(S, cut2_from_json(read_json_file(co->cut, ctx.read_limits)));
-             const auto curve = spline_from_json(read_json_file(co->curve, ctx.read_limits), ctx.limits, "curve");
-             check_cutting_curve_shape(curve);
+             const auto [S, C, curve] = read_curve_input(*co, ctx);
              std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
              return 0;
            }},
           {sp, [cso](const Context& ctx) {
-             const auto S = solid2_from_json(read_json_file(cso->solid, ctx.read_limits), ctx.limits);
-             const auto C = validate_cut(S, cut2_from_json(read_json_file(cso->cut, ctx.read_limits)));
-             const auto curve = spline_from_json(read_json_file(cso->curve, ctx.read_limits), ctx.limits, "curve");
-             check_cutting_curve_shape(curve);
+             const auto [S, C, curve] = read_curve_input(*cso, ctx);
              const auto v = certify_cutting_curve(S, C, curve);
              if (v.verdict != "valid")
                throw DomainError("curve", "is not certified valid (" + v.verdict + ": regular " + v.regular + ", injective " + v.injective +

@@ -16,23 +16,6 @@
 
 using namespace splinex;
 
-namespace {
-
-BSpline<Rational> as_exact(const BSpline<double>& f) {
-  BSpline<Rational> g;
-  g.degrees = f.degrees;
-  for (const auto& U : f.knots) {
-    std::vector<Rational> V;
-    for (double u : U) V.push_back(exact_from_double(u));
-    g.knots.push_back(V);
-  }
-  g.q = f.q;
-  for (double v : f.points) g.points.push_back(exact_from_double(v));
-  return g;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   const std::vector<std::string> cases{"L", "U", "K"};
   for (const auto& c : cases) {
@@ -53,7 +36,7 @@ int main(int argc, char** argv) {
       // the double guide's coefficients, decided exactly (the certificate has no float variant)
       const auto e = cut_example(c);
       const auto D = guide_curve<double>(e.solid, e.cut);
-      const auto f = as_exact(D.f);
+      const auto& f = D.f_exact;
       for (auto _ : st) benchmark::DoNotOptimize(certify_separation(D.solid, D.cut, f, GuideOptions{}.strip));
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("cut/fit/exact/" + c).c_str(), [c](benchmark::State& st) {

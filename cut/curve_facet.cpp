@@ -424,24 +424,8 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   // No collision: curve intervals against facet pieces (split at the cut points).
   R.inside = "certified";
   std::vector<std::pair<Piece, std::size_t>> fp;
-  for (std::size_t i = 0; i < S.facets.size(); ++i) {
-    std::vector<BSpline<Rational>> parts{S.facets[i]};
-    for (const auto& e : cut.ends) {
-      if (e.facet != i) continue;
-      std::vector<BSpline<Rational>> next;
-      for (const auto& Pp : parts)
-        if (Pp.domain_lo(0) < e.param && e.param < Pp.domain_hi(0)) {
-          auto [a, b] = split_at(Pp, 0, e.param);
-          next.push_back(a);
-          next.push_back(b);
-        } else {
-          next.push_back(Pp);
-        }
-      parts = next;
-    }
-    for (const auto& Pp : parts)
-      for (const auto& bz : extract_bezier(Pp)) fp.push_back({make_piece(bz.spline), i});
-  }
+  for (const auto& P : split_at_cut_points(S, cut))
+    for (const auto& bz : extract_bezier(P.curve)) fp.push_back({make_piece(bz.spline), P.facet});
   // n . (F - c) <= 0 on the facet piece
   auto behind = [](const Piece& f, const P2& n, const P2& c) {
     for (const auto& x : f.P)
@@ -523,27 +507,8 @@ BSpline<Rational> from_frame(const BSpline<Rational>& C, const Frame2& f) {
 
 std::pair<Solid2<Rational>, Solid2<Rational>> split_solid(const Solid2<Rational>& S, const CutData2<Rational>& cut, const BSpline<Rational>& C) {
   // The boundary as a cyclic list of pieces split at the cut points.
-  struct Part {
-    BSpline<Rational> F;
-    std::size_t facet;
-  };
-  std::vector<Part> parts;
-  for (std::size_t i = 0; i < S.facets.size(); ++i) {
-    std::vector<BSpline<Rational>> ps{S.facets[i]};
-    std::vector<Rational> cuts;
-    for (const auto& e : cut.ends)
-      if (e.facet == i && S.facets[i].domain_lo(0) < e.param) cuts.push_back(e.param);
-    std::sort(cuts.begin(), cuts.end());
-    for (const auto& c : cuts) {
-      auto last = ps.back();
-      ps.pop_back();
-      auto [a, b] = split_at(last, 0, c);
-      ps.push_back(a);
-      ps.push_back(b);
-    }
-    for (auto& p : ps) parts.push_back({p, i});
-  }
-  auto starts_at = [&](const Part& p, const CutPoint2<Rational>& e) { return p.facet == e.facet && p.F.domain_lo(0) == e.param; };
+  const auto parts = split_at_cut_points(S, cut);
+  auto starts_at = [&](const BoundaryPiece& p, const CutPoint2<Rational>& e) { return p.facet == e.facet && p.curve.domain_lo(0) == e.param; };
   std::size_t ip = parts.size(), iq = parts.size();
   for (std::size_t k = 0; k < parts.size(); ++k) {
     if (starts_at(parts[k], cut.ends[0])) ip = k;
@@ -551,9 +516,9 @@ std::pair<Solid2<Rational>, Solid2<Rational>> split_solid(const Solid2<Rational>
   }
   if (ip == parts.size() || iq == parts.size()) throw DomainError("cut", "the cut points are not on the split boundary", "report this with the input");
   Solid2<Rational> S1, S2;
-  for (std::size_t k = ip; k != iq; k = (k + 1) % parts.size()) S1.facets.push_back(parts[k].F);
+  for (std::size_t k = ip; k != iq; k = (k + 1) % parts.size()) S1.facets.push_back(parts[k].curve);
   S1.facets.push_back(reverse(C, 0));
-  for (std::size_t k = iq; k != ip; k = (k + 1) % parts.size()) S2.facets.push_back(parts[k].F);
+  for (std::size_t k = iq; k != ip; k = (k + 1) % parts.size()) S2.facets.push_back(parts[k].curve);
   S2.facets.push_back(C);
   validate_solid(S1);
   validate_solid(S2);

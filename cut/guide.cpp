@@ -322,10 +322,10 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
     for (const auto& u : U) UT.push_back(from_q<T>(u));
     for (const auto& u : Uy) UyT.push_back(from_q<T>(u));
     R.f = make_spline<T>({kDegree, kDegree}, {UT, UyT}, 1, pts);
-    // The interpolation errors at L*, exactly (for double: of the rounded coefficients).
-    std::vector<Rational> exact_pts;
-    for (const auto& v : pts) exact_pts.push_back(ArithTraits<T>::to_rational(v));
-    const auto fq = make_spline<Rational>({kDegree, kDegree}, {U, Uy}, 1, exact_pts);
+    // The interpolation errors at L*, exactly (for double: of the spline the doubles hold).
+    if constexpr (ArithTraits<T>::exact) R.f_exact = R.f;
+    else R.f_exact = convert<Rational>(R.f, [](const T& v) { return ArithTraits<T>::to_rational(v); });
+    const auto& fq = R.f_exact;
     for (int e = 0; e < 2; ++e) {
       const auto x = evaluate(S.facets[R.cut.ends[e].facet], std::vector<Rational>{R.cut.ends[e].param});
       R.value_at_ends[e] = evaluate(fq, x)[0];

@@ -57,6 +57,9 @@ struct GuideResult {
   std::vector<int> tried;       // inner knot counts tried, in order
   bool refinement_stopped_by_limit = false;
   BSpline<T> f;                 // f* on [0,1]^2 (normalized coordinates); empty unless optimal
+  /// f exactly: the exact run's f; the double run's f converted exactly (its knots and coefficients
+  /// as the doubles hold them). Every exact check of a guide (separation, errors at L*) reads this.
+  BSpline<Rational> f_exact;
   std::vector<Rational> coefficients;  // the program's exact minimizer (double: of the rounded program)
   QuadraticProgram<Rational> program;  // the last program, exactly (double: its doubles' values)
   QPSolution solution;

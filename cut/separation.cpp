@@ -108,33 +108,16 @@ SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData
     c.ends[e] = {p[0], p[1]};
   }
   bool go = true;
-  for (std::size_t i = 0; i < solid.facets.size() && go; ++i) {
-    // Split the facet at the cut points on it, then into Bezier pieces.
-    std::vector<BSpline<Rational>> parts{solid.facets[i]};
-    for (const auto& e : cut.ends) {
-      if (e.facet != i) continue;
-      std::vector<BSpline<Rational>> next;
-      for (const auto& P : parts)
-        if (P.domain_lo(0) < e.param && e.param < P.domain_hi(0)) {
-          auto [a, b] = split_at(P, 0, e.param);
-          next.push_back(a);
-          next.push_back(b);
-        } else {
-          next.push_back(P);
-        }
-      parts = next;
-    }
-    for (const auto& P : parts) {
-      for (const auto& bz : extract_bezier(P)) {
-        const Rational mid = (bz.spline.domain_lo(0) + bz.spline.domain_hi(0)) / 2;
-        const bool positive = on_arc(i, mid, cut.ends[0], cut.ends[1]);
-        if (!examine(c, i, bz.spline, positive, 0)) {
-          go = false;
-          break;
-        }
+  for (const auto& P : split_at_cut_points(solid, cut)) {
+    for (const auto& bz : extract_bezier(P.curve)) {
+      const Rational mid = (bz.spline.domain_lo(0) + bz.spline.domain_hi(0)) / 2;
+      const bool positive = on_arc(P.facet, mid, cut.ends[0], cut.ends[1]);
+      if (!examine(c, P.facet, bz.spline, positive, 0)) {
+        go = false;
+        break;
       }
-      if (!go) break;
     }
+    if (!go) break;
   }
   if (c.result.witness) c.result.verdict = "violated";
   else if (!c.result.undecided.empty()) c.result.verdict = "undecided";

@@ -1,5 +1,7 @@
 #include "cut/solid.hpp"
 
+#include <algorithm>
+
 #include "spline/bernstein.hpp"
 #include "spline/bezier.hpp"
 #include "spline/errors.hpp"
@@ -72,6 +74,12 @@ void validate_solid(const Solid2<Rational>& S) {
     if (F.degrees[0] < 1) throw ValidationError(f, "has degree 0", "give curves of degree >= 1 (a loop of facets must be continuous)");
     if (!is_clamped(F.knots[0], F.degrees[0], F.count(0)))
       throw ValidationError(f + ".knots", "is not clamped", "clamp the knot vector (end knots of multiplicity degree + 1) so the facet starts and ends at control points");
+    // An inner knot of multiplicity degree + 1 (C^-1) may be a jump: the loop must be continuous.
+    const auto pieces = extract_bezier(F);
+    for (std::size_t k = 0; k + 1 < pieces.size(); ++k)
+      if (end_of(pieces[k].spline) != start_of(pieces[k + 1].spline))
+        throw ValidationError(f, "jumps at its inner knot " + to_fraction_string(pieces[k].spline.domain_hi(0)) + " (a C^-1 knot with a gap)",
+                              "split the facet there into two facets joined end to start, or close the gap");
   }
   for (std::size_t i = 0; i < S.facets.size(); ++i) {
     const std::size_t j = (i + 1) % S.facets.size();
@@ -172,6 +180,25 @@ bool on_arc(std::size_t facet, const Rational& param, const CutPoint2<Rational>&
   const bool before_to = less(facet, param, to.facet, to.param);
   if (less(from.facet, from.param, to.facet, to.param)) return after_from && before_to;
   return after_from || before_to;
+}
+
+std::vector<BoundaryPiece> split_at_cut_points(const Solid2<Rational>& S, const CutData2<Rational>& cut) {
+  std::vector<BoundaryPiece> parts;
+  for (std::size_t i = 0; i < S.facets.size(); ++i) {
+    std::vector<Rational> cuts;
+    for (const auto& e : cut.ends)
+      if (e.facet == i && S.facets[i].domain_lo(0) < e.param && e.param < S.facets[i].domain_hi(0)) cuts.push_back(e.param);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    BSpline<Rational> rest = S.facets[i];
+    for (const auto& c : cuts) {
+      auto [a, b] = split_at(rest, 0, c);
+      parts.push_back({std::move(a), i});
+      rest = std::move(b);
+    }
+    parts.push_back({std::move(rest), i});
+  }
+  return parts;
 }
 
 }  // namespace splinex

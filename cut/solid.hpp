@@ -64,4 +64,14 @@ Solid2<Rational> to_frame(const Solid2<Rational>& S, const Frame2& f);
 /// `from` to `to` (both normalized ends).
 bool on_arc(std::size_t facet, const Rational& param, const CutPoint2<Rational>& from, const CutPoint2<Rational>& to);
 
+/// A part of the boundary loop: facet `facet`'s curve between two of its cut points or ends.
+struct BoundaryPiece {
+  BSpline<Rational> curve;
+  std::size_t facet = 0;
+};
+/// The boundary loop in order (facet 0 first), every facet split at the cut points inside it
+/// (normalized ends: a cut point at a facet's start is already a vertex). Every piece lies
+/// entirely on b or entirely on b-bar.
+std::vector<BoundaryPiece> split_at_cut_points(const Solid2<Rational>& S, const CutData2<Rational>& cut);
+
 }  // namespace splinex

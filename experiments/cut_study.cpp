@@ -23,19 +23,6 @@ namespace splinex {
 
 namespace {
 
-BSpline<Rational> as_exact(const BSpline<double>& f) {
-  BSpline<Rational> g;
-  g.degrees = f.degrees;
-  for (const auto& U : f.knots) {
-    std::vector<Rational> V;
-    for (double u : U) V.push_back(exact_from_double(u));
-    g.knots.push_back(V);
-  }
-  g.q = f.q;
-  for (double v : f.points) g.points.push_back(exact_from_double(v));
-  return g;
-}
-
 std::string fmt(double x, int p = 3) {
   std::ostringstream s;
   s << std::setprecision(p) << x;
@@ -123,7 +110,7 @@ void cut_section(ReportContext& ctx) {
     }
     const auto D = guide_curve<double>(e.solid, e.cut, o);
     if (D.status == QPStatus::optimal) {
-      const auto fq = as_exact(D.f);
+      const auto& fq = D.f_exact;
       sep_d = certify_separation(D.solid, D.cut, fq, o.strip).verdict;
       if (R.status == QPStatus::optimal) {
         Rational err(0), mag(0);
@@ -200,7 +187,7 @@ void cut_section(ReportContext& ctx) {
       const auto R = guide_curve<Rational>(e.solid, e.cut, o);
       if (R.status == QPStatus::optimal) ve = certify_separation(R.solid, R.cut, R.f, o.strip).verdict;
       const auto D = guide_curve<double>(e.solid, e.cut, o);
-      if (D.status == QPStatus::optimal) vd = certify_separation(D.solid, D.cut, as_exact(D.f), o.strip).verdict;
+      if (D.status == QPStatus::optimal) vd = certify_separation(D.solid, D.cut, D.f_exact, o.strip).verdict;
       for (const auto* v : {&ve, &vd})
         if (*v != "infeasible") ++runs, invalid += *v == "violated";
       md << "| " << name << " | " << samples << " | " << ve << " | " << vd << " |\n";

@@ -166,6 +166,35 @@ TEST_CASE("cut: solids and cutting data are validated with typed errors", "[cut]
   CHECK_THROWS_AS(validate_cut(L.solid, r), ValidationError);
 }
 
+TEST_CASE("cut: facets at the edges of the input (degree 0, unclamped, rational, C^-1 knots) get typed errors", "[cut]") {
+  const auto square = cut_example("square").solid;  // four segments, counter-clockwise from (0, 0)
+  // Degree 0: a constant piece cannot join a loop.
+  auto deg0 = square;
+  deg0.facets[2] = make_spline<Rational>({0}, {{q(0), q(1)}}, 2, {q(1), q(1)});
+  CHECK_THROWS_WITH(validate_solid(deg0), Catch::Contains("facets[2]") && Catch::Contains("degree 0"));
+  // Unclamped: a uniform quadratic whose ends are not control points.
+  auto open = square;
+  open.facets[1] = make_spline<Rational>({2}, {{q(0), q(1), q(2), q(3), q(4), q(5)}}, 2, {q(1), q(0), q(1), q(1, 2), q(1), q(1)});
+  CHECK_THROWS_WITH(validate_solid(open), Catch::Contains("facets[1].knots") && Catch::Contains("not clamped"));
+  // Rational: refused, not silently read as polynomial.
+  auto rat = square;
+  rat.facets[3] = make_spline<Rational>({1}, {clamped_knots<Rational>(1, q(0), q(1))}, 2, {q(0), q(1), q(0), q(0)}, {q(1), q(2)});
+  CHECK_THROWS_WITH(validate_solid(rat), Catch::Contains("facets[3]") && Catch::Contains("rational"));
+  // A facet with a C^-1 knot (multiplicity degree + 1 inside) that jumps: the loop is not continuous
+  // there. The facet's ends still join, so only the jump can be refused; validate() of the spline
+  // accepts it, so the solid check must. Degree 1: (1,0) -> (1,1/2) | jump | (1,1/2 + 1/10) -> (1,1).
+  auto jump = square;
+  jump.facets[1] = make_spline<Rational>({1}, {{q(0), q(0), q(1, 2), q(1, 2), q(1), q(1)}}, 2,
+                                         {q(1), q(0), q(1), q(1, 2), q(1), q(3, 5), q(1), q(1)});
+  CHECK_THROWS_WITH(validate_solid(jump), Catch::Contains("facets[1]") && Catch::Contains("jump"));
+  // The same knot without a jump (a C^0 corner inside the facet) is a legal facet.
+  auto kink = square;
+  kink.facets[1] = make_spline<Rational>({1}, {{q(0), q(0), q(1, 2), q(1, 2), q(1), q(1)}}, 2,
+                                         {q(1), q(0), q(1), q(1, 2), q(1), q(1, 2), q(1), q(1)});
+  CHECK_NOTHROW(validate_solid(kink));
+  CHECK(signed_area(kink) == q(1));
+}
+
 TEST_CASE("cut: the guiding curve exactly, certified, and in double judged exactly", "[cut]") {
   for (const std::string name : {"square", "L", "U"}) {
     INFO(name);
