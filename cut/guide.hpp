@@ -26,6 +26,7 @@
 
 #include "cut/qp.hpp"
 #include "cut/solid.hpp"
+#include "cut/solid3.hpp"
 #include "float/mpfr.hpp"  // ArithTraits<double>
 
 namespace splinex {
@@ -96,5 +97,67 @@ std::vector<T> regularization_matrix(const std::vector<T>& knots);
 /// The same for different knots in x and y ((n_x n_y)^2, x index fastest).
 template <class T>
 std::vector<T> regularization_matrix(const std::vector<T>& knots_x, const std::vector<T>& knots_y);
+
+
+// ---- d = 3: the implicit guiding surface -----------------------------------------------------
+//
+// f* a trivariate tensor-product cubic on [0,1]^3 (the same k uniform inner knots in x, y and z),
+// RDCP as for d = 2 with F_reg the thin-plate energy of Eq. 3 in three variables
+// (f_xx^2 + f_yy^2 + f_zz^2 + 2 f_xy^2 + 2 f_xz^2 + 2 f_yz^2, exact from univariate Gram matrices).
+// L*: `loop_samples` equally spaced points on every loop side (its start included, its end not),
+// each with the side's target gradient n (LoopSide3::normal). b* and b-bar*: every facet's points
+// at the centres of a samples x samples grid of its parameter domain, without those within
+// max-norm distance `strip` of the loop. Knots are refined dyadically as for d = 2.
+
+/// The d = 3 defaults: 1 inner knot (125 coefficients), refined up to 3 (343), and a 4 x 4 grid of
+/// samples per facet; inner_knots_y is not used.
+inline GuideOptions guide3_defaults() {
+  GuideOptions o;
+  o.inner_knots = 1;
+  o.max_inner_knots = 3;
+  o.samples = 4;
+  o.max_size = 1000000;
+  return o;
+}
+
+struct GuideOptions3 {
+  GuideOptions base = guide3_defaults();
+  int loop_samples = 4;  // points of L* per loop side
+  /// Inner knots per direction (x, y, z); -1: base.inner_knots. Refinement maps each k to 2k + 1
+  /// while the largest stays within base.max_inner_knots.
+  std::array<int, 3> inner_knots{-1, -1, -1};
+};
+
+template <class T>
+struct GuideResult3 {
+  Frame3 frame;
+  Solid3<Rational> solid;           // normalized
+  std::vector<LoopSide3> loop;      // validated, in cycle order (normalized coordinates)
+  QPStatus status = QPStatus::infeasible;
+  std::array<int, 3> inner_knots{0, 0, 0};
+  std::vector<std::array<int, 3>> tried;
+  bool refinement_stopped_by_limit = false;
+  BSpline<T> f;                     // f* on [0,1]^3; empty unless optimal
+  BSpline<Rational> f_exact;        // f exactly (double: the doubles' values)
+  std::vector<Rational> coefficients;
+  QuadraticProgram<Rational> program;
+  QPSolution solution;
+  KKTCheck kkt;
+  bool positive_definite = false;
+  std::size_t samples_positive = 0, samples_negative = 0;
+  std::vector<std::array<Rational, 3>> sample_points;  // b* then b-bar*
+  std::vector<std::array<Rational, 3>> loop_points;    // L*
+  Rational max_abs_value_on_loop{0};                   // max |f*(x)|, x in L*, exactly
+  Rational max_gradient_error2{0};                     // max |grad f*(x) - n(x)|^2, x in L*, exactly
+  double seconds = 0;
+};
+
+/// Validates (typed errors), then solves RDCP for d = 3. T = Rational or double.
+template <class T>
+GuideResult3<T> guide_surface(const Solid3<Rational>& solid, const CutData3& cut, const GuideOptions3& options = {});
+
+/// The thin-plate matrix in three variables ((n_x n_y n_z)^2, x index fastest), exactly.
+template <class T>
+std::vector<T> regularization_matrix3(const std::array<std::vector<T>, 3>& knots);
 
 }  // namespace splinex

@@ -125,4 +125,112 @@ SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData
   return c.result;
 }
 
+
+namespace {
+
+struct Ctx3 {
+  const std::vector<LoopSide3>& loop;
+  const BSpline<Rational>& f;
+  BezierForm<Rational> form;
+  Rational strip;
+  SeparationOptions options;
+  SeparationResult3 result;
+  std::size_t examined = 0;
+};
+
+bool box_in_strip3(const Ctx3& c, const std::array<Rational, 3>& lo, const std::array<Rational, 3>& hi) {
+  for (const auto& L : c.loop) {
+    bool all = true;
+    for (int m = 0; m < 8 && all; ++m) {
+      const std::array<Rational, 3> x{(m & 1) ? hi[0] : lo[0], (m & 2) ? hi[1] : lo[1], (m & 4) ? hi[2] : lo[2]};
+      all = within_segment(x, L.start, L.end, c.strip);
+    }
+    if (all) return true;
+  }
+  return false;
+}
+
+bool point_in_strip3(const Ctx3& c, const std::array<Rational, 3>& x) {
+  for (const auto& L : c.loop)
+    if (within_segment(x, L.start, L.end, c.strip)) return true;
+  return false;
+}
+
+bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool positive, int depth) {
+  const std::array<Rational, 2> plo{piece.domain_lo(0), piece.domain_lo(1)}, phi{piece.domain_hi(0), piece.domain_hi(1)};
+  if (++c.examined > c.options.max_pieces) {
+    c.result.undecided.push_back({facet, plo, phi});
+    return false;
+  }
+  std::array<Rational, 3> lo{piece.points[0], piece.points[1], piece.points[2]}, hi = lo;
+  for (std::size_t i = 0; i < piece.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const Rational& x = piece.points[3 * i + a];
+      if (x < lo[a]) lo[a] = x;
+      if (hi[a] < x) hi[a] = x;
+    }
+  if (box_in_strip3(c, lo, hi)) {
+    ++c.result.excluded;
+    return true;
+  }
+  std::array<std::pair<std::size_t, std::size_t>, 3> range;
+  for (int a = 0; a < 3; ++a) range[a] = segments_meeting(c.form.breaks[a], lo[a], hi[a]);
+  const std::size_t nx = c.form.breaks[0].size() - 1, ny = c.form.breaks[1].size() - 1;
+  bool all = true;
+  for (std::size_t k = range[2].first; k <= range[2].second && all; ++k)
+    for (std::size_t j = range[1].first; j <= range[1].second && all; ++j)
+      for (std::size_t i = range[0].first; i <= range[0].second && all; ++i) {
+        const auto g = compose_bezier(c.form.piece(i + nx * (j + ny * k)).spline, piece);
+        for (const auto& v : g.points)
+          if (positive ? !(v > 0) : !(v < 0)) {
+            all = false;
+            break;
+          }
+      }
+  if (all) {
+    ++c.result.pieces;
+    return true;
+  }
+  // Witnesses: exact values at the corners and the middle.
+  const std::array<Rational, 2> mid{(plo[0] + phi[0]) / 2, (plo[1] + phi[1]) / 2};
+  for (int m = 0; m < 5; ++m) {
+    const std::array<Rational, 2> s = m == 4 ? mid : std::array<Rational, 2>{(m & 1) ? phi[0] : plo[0], (m & 2) ? phi[1] : plo[1]};
+    const auto p = evaluate(piece, std::vector<Rational>{s[0], s[1]});
+    const std::array<Rational, 3> x{p[0], p[1], p[2]};
+    if (point_in_strip3(c, x)) continue;
+    const Rational v = evaluate(c.f, std::vector<Rational>{x[0], x[1], x[2]})[0];
+    if (positive ? !(v > 0) : !(v < 0)) {
+      c.result.witness = SeparationWitness3{facet, s, x, v, positive};
+      return false;
+    }
+  }
+  if (depth >= c.options.max_depth) {
+    c.result.undecided.push_back({facet, plo, phi});
+    return true;
+  }
+  const int d = depth % 2;
+  const auto [a, b] = split_at(piece, d, mid[d]);
+  return examine3(c, facet, a, positive, depth + 1) && examine3(c, facet, b, positive, depth + 1);
+}
+
+}  // namespace
+
+SeparationResult3 certify_separation(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const std::vector<std::size_t>& positive,
+                                     const BSpline<Rational>& f, const Rational& strip, const SeparationOptions& options) {
+  Ctx3 c{loop, f, bezier_form(f), strip, options, {}, 0};
+  std::vector<char> in_b(solid.facets.size(), 0);
+  for (auto i : positive) in_b.at(i) = 1;
+  bool go = true;
+  for (std::size_t i = 0; i < solid.facets.size() && go; ++i)
+    for (const auto& bz : extract_bezier(solid.facets[i]))
+      if (!examine3(c, i, bz.spline, in_b[i], 0)) {
+        go = false;
+        break;
+      }
+  if (c.result.witness) c.result.verdict = "violated";
+  else if (!c.result.undecided.empty()) c.result.verdict = "undecided";
+  else c.result.verdict = "certified";
+  return c.result;
+}
+
 }  // namespace splinex

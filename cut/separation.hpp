@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cut/solid.hpp"
+#include "cut/solid3.hpp"
 
 namespace splinex {
 
@@ -41,5 +42,32 @@ struct SeparationResult {
 /// f: the guide on [0,1]^2 (normalized coordinates); solid and cut: normalized (GuideResult).
 SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const BSpline<Rational>& f,
                                     const Rational& strip, const SeparationOptions& options = {});
+
+
+// ---- d = 3 ---------------------------------------------------------------------------------------
+// The same for surface facets: f* composed with each Bezier piece of a facet is a bivariate
+// Bernstein polynomial; pieces are halved alternately in u and v. The strip is the set of points
+// within max-norm distance `strip` of a loop side; a piece is excluded when its control net's box
+// lies in the strip of one side (the distance to a segment is convex, so the box's corners decide).
+
+struct SeparationWitness3 {
+  std::size_t facet = 0;
+  std::array<Rational, 2> param;
+  std::array<Rational, 3> point;  // normalized coordinates
+  Rational value;
+  bool positive_side = true;
+};
+
+struct SeparationResult3 {
+  std::string verdict;  // "certified", "violated", "undecided"
+  std::optional<SeparationWitness3> witness;
+  std::size_t pieces = 0, excluded = 0;
+  struct Open { std::size_t facet; std::array<Rational, 2> lo, hi; };
+  std::vector<Open> undecided;
+};
+
+/// f: the guide on [0,1]^3; solid, loop: normalized (GuideResult3); positive: the facets of b.
+SeparationResult3 certify_separation(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const std::vector<std::size_t>& positive,
+                                     const BSpline<Rational>& f, const Rational& strip, const SeparationOptions& options = {});
 
 }  // namespace splinex
