@@ -2,6 +2,7 @@
 // its cutting data; `cut guide SOLID CUT` finds the implicit guiding curve by RDCP (exact QP, KKT
 // checked exactly; or in double) and certifies the separation of b and b-bar by f* on the whole
 // boundary.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -49,18 +50,40 @@ Json separation_json(const SeparationResult& s) {
   return j;
 }
 
+// The double guide's coefficients against the exact minimizer, measured exactly.
+Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
+  Rational err(0), mag(0);
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const Rational e = abs(rounded[i] - exact[i]), m = abs(exact[i]);
+    if (err < e) err = e;
+    if (mag < m) mag = m;
+  }
+  Json cmp{{"max_abs_error", q_json(err)}};
+  if (mag > 0 && err > 0) {
+    const double rel = to_double(err / mag);
+    cmp["max_rel_error"] = rel;
+    cmp["bits_lost"] = std::max(0.0, 53 + std::log2(rel));
+  } else {
+    cmp["max_rel_error"] = 0.0;
+    cmp["bits_lost"] = 0.0;
+  }
+  cmp["meaning"] = "the double guide's coefficients against the exact minimizer (Lemma 1: unique), measured exactly";
+  return cmp;
+}
+
 struct GuideCliOptions {
-  std::string solid, cut, arith = "exact", svg, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
-  int inner = 3, inner_y = -1, max_inner = 7, samples = 16;
+  std::string solid, cut, arith = "exact", svg, vtk, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
+  int inner = 3, inner_y = -1, inner_z = -1, max_inner = 7, samples = 16, loop_samples = 4;
+  CLI::Option *inner_opt = nullptr, *max_inner_opt = nullptr, *samples_opt = nullptr;
 };
 
 void add_guide_options(CLI::App* g, GuideCliOptions& go) {
   g->add_option("solid", go.solid, "solid document {\"type\": \"solid2d\", ...}")->required();
   g->add_option("cut", go.cut, "cutting data document {\"type\": \"cut2d\", ...}")->required();
-  g->add_option("--inner-knots", go.inner, "uniform inner knots per direction of the cubic guide")->check(CLI::Range(0, 1000))->capture_default_str();
+  go.inner_opt = g->add_option("--inner-knots", go.inner, "uniform inner knots per direction of the cubic guide (solid3d: default 1)")->check(CLI::Range(0, 1000))->capture_default_str();
   g->add_option("--inner-knots-y", go.inner_y, "inner knots in y, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
-  g->add_option("--max-inner-knots", go.max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this")->check(CLI::Range(0, 1000))->capture_default_str();
-  g->add_option("--samples", go.samples, "sample points per facet (b* and b-bar*)")->check(CLI::Range(1, 100000))->capture_default_str();
+  go.max_inner_opt = g->add_option("--max-inner-knots", go.max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this (solid3d: default 3)")->check(CLI::Range(0, 1000))->capture_default_str();
+  go.samples_opt = g->add_option("--samples", go.samples, "sample points per facet (b* and b-bar*); solid3d: per facet direction, default 4")->check(CLI::Range(1, 100000))->capture_default_str();
   g->add_option("--delta", go.delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
   g->add_option("--strip", go.strip, "no samples (and no certification) within this max-norm distance of the cut points, normalized units")->capture_default_str();
   g->add_option("--lambda-int", go.li, "weight of F_int")->capture_default_str();
@@ -164,10 +187,125 @@ CurveInput read_curve_input(const CertifyCliOptions& o, const Context& ctx) {
   return {std::move(S), std::move(C), std::move(curve)};
 }
 
+Json separation3_json(const SeparationResult3& s) {
+  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
+  if (s.witness) {
+    const auto& w = *s.witness;
+    j["witness"] = Json{{"facet", w.facet},
+                        {"parameters", Json::array({to_fraction_string(w.param[0]), to_fraction_string(w.param[1])})},
+                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1]), to_fraction_string(w.point[2])})},
+                        {"value", q_json(w.value)},
+                        {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
+  }
+  Json u = Json::array();
+  for (const auto& o : s.undecided)
+    u.push_back(Json{{"facet", o.facet},
+                     {"parameters", Json::array({Json::array({to_fraction_string(o.lo[0]), to_fraction_string(o.hi[0])}),
+                                                 Json::array({to_fraction_string(o.lo[1]), to_fraction_string(o.hi[1])})})}});
+  j["undecided"] = u;
+  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip around the loop, decided exactly"
+                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
+                                           : "some boundary pieces stay undecided (listed); no violation was found";
+  return j;
+}
+
+template <class T>
+Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3>& sep) {
+  Json j;
+  j["arithmetic"] = ArithTraits<T>::name();
+  j["status"] = to_string(R.status);
+  j["inner_knots"] = R.inner_knots;
+  j["inner_knots_tried"] = R.tried;
+  j["variables"] = R.program.n;
+  j["rows"] = R.program.rows.size();
+  j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}, {"loop", R.loop_points.size()}};
+  j["loop_sides"] = R.loop.size();
+  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1]), to_fraction_string(R.frame.lo[2])})},
+                    {"scale", to_fraction_string(R.frame.scale)},
+                    {"meaning", "f* lives on [0,1]^3 in normalized coordinates (x - lo) / scale"}};
+  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
+  j["positive_definite"] = R.positive_definite;
+  if (R.status == QPStatus::optimal) {
+    const bool proved = R.kkt.holds && R.positive_definite;
+    j["verdict"] = ArithTraits<T>::exact
+                       ? (proved ? "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)" : "not proved: " + R.kkt.failed)
+                       : std::string("the exact minimizer of the program assembled in double (KKT ") + (R.kkt.holds ? "holds" : "fails") +
+                             "), rounded to double: judge it against --arith exact";
+    j["objective"] = q_json(R.solution.objective);
+    j["max_abs_value_on_loop_samples"] = q_json(R.max_abs_value_on_loop);
+    j["max_gradient_error_squared_on_loop_samples"] = q_json(R.max_gradient_error2);
+    j["guide"] = spline_to_json(R.f);
+  } else {
+    j["verdict"] = R.status == QPStatus::infeasible
+                       ? std::string("infeasible (Farkas certificate ") + (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
+                             (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") +
+                             ": raise --max-inner-knots, lower --delta, or widen --strip"
+                       : "unbounded";
+  }
+  if (sep) j["separation"] = separation3_json(*sep);
+  j["seconds"] = R.seconds;
+  return j;
+}
+
+int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& ctx) {
+  const auto S = solid3_from_json(solid_doc, ctx.limits);
+  const auto C = cut3_from_json(read_json_file(go.cut, ctx.read_limits));
+  if (!go.svg.empty()) throw UsageError("svg", "is for solid2d documents", "give --vtk DIR for a solid3d");
+  GuideOptions3 o;
+  const GuideOptions b = to_guide_options(go);
+  // the 2D defaults of --inner-knots, --max-inner-knots and --samples give way to the 3D ones
+  o.base.delta = b.delta, o.base.strip = b.strip, o.base.lambda_int = b.lambda_int, o.base.lambda_tan = b.lambda_tan, o.base.lambda_reg = b.lambda_reg;
+  if (go.inner_opt && go.inner_opt->count()) o.base.inner_knots = go.inner;
+  if (go.max_inner_opt && go.max_inner_opt->count()) o.base.max_inner_knots = go.max_inner;
+  if (go.samples_opt && go.samples_opt->count()) o.base.samples = go.samples;
+  o.inner_knots = {-1, go.inner_y, go.inner_z};
+  o.loop_samples = go.loop_samples;
+  validate_cut(S, C);  // every typed error before the first progress line
+  validate_guide_options(o, S.facets.size());
+  if (go.arith != "double") check_exact_sizes(S, C, o.base);
+  auto run = [&](auto tag) {
+    using T = decltype(tag);
+    std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": solving RDCP in three variables\n";
+    const auto R = guide_surface<T>(S, C, o);
+    std::optional<SeparationResult3> sep;
+    if (R.status == QPStatus::optimal) {
+      std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
+      sep = certify_separation(R.solid, R.loop, C.positive, R.f_exact, o.base.strip);
+    }
+    return std::make_pair(R, sep);
+  };
+  Json out;
+  std::optional<std::pair<BSpline<Rational>, Frame3>> drawn;
+  if (go.arith == "exact" || go.arith == "both") {
+    const auto [R, sep] = run(Rational());
+    out = guide3_json(R, sep);
+    if (R.status == QPStatus::optimal) drawn = std::make_pair(R.f_exact, R.frame);
+    if (go.arith == "both") {
+      const auto [D, dsep] = run(double());
+      Json d = guide3_json(D, dsep);
+      if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size())
+        d["judged_against_exact"] = judged_against_exact(R.coefficients, D.f_exact.points);
+      out = Json{{"exact", out}, {"double", d}};
+    }
+  } else {
+    const auto [D, dsep] = run(double());
+    out = guide3_json(D, dsep);
+    if (D.status == QPStatus::optimal) drawn = std::make_pair(D.f_exact, D.frame);
+  }
+  if (!go.vtk.empty()) {
+    std::filesystem::create_directories(go.vtk);
+    write_file_atomically((std::filesystem::path(go.vtk) / "solid.vtk").string(), solid3_vtk(S));
+    if (drawn) write_file_atomically((std::filesystem::path(go.vtk) / "guide.vtk").string(), guide3_vtk(drawn->first, drawn->second.lo, drawn->second.scale, 32));
+    out["vtk"] = drawn ? "solid.vtk and guide.vtk written" : "solid.vtk written; no guide (RDCP infeasible)";
+  }
+  std::cout << out.dump() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 Commands add_cut(CLI::App& app) {
-  auto* cut = app.add_subcommand("cut", "cutting curves for isogeometric segmentation (papers/004, d = 2): example, guide, facet, certify, split");
+  auto* cut = app.add_subcommand("cut", "cutting curves and surfaces for isogeometric segmentation (papers/004): example, guide (d = 2 and 3), facet, certify, split (d = 2)");
   cut->require_subcommand(1);
 
   struct ExampleOptions {
@@ -175,12 +313,15 @@ Commands add_cut(CLI::App& app) {
   };
   auto eo = std::make_shared<ExampleOptions>();
   auto* ex = cut->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
-  ex->add_option("name", eo->name, "square, L or U")->required();
+  ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: cube, slotted, maiden")->required();
   ex->add_option("--out", eo->out, "folder to write into")->capture_default_str();
 
   auto go = std::make_shared<GuideCliOptions>();
   auto* g = cut->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
   add_guide_options(g, *go);
+  g->add_option("--inner-knots-z", go->inner_z, "solid3d: inner knots in z, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
+  g->add_option("--loop-samples", go->loop_samples, "solid3d: points of L* per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
+  g->add_option("--vtk", go->vtk, "solid3d: write solid.vtk (the facets) and guide.vtk (f* on a 33^3 grid, contour it at 0 in ParaView) into this folder");
   add_arith_option(g, go->arith, "exact (the QP exactly, KKT checked), double (assembled in double), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
   g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here");
@@ -213,19 +354,30 @@ Commands add_cut(CLI::App& app) {
   sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json")->required();
 
   return {{ex, [eo](const Context&) {
-             const auto e = cut_example(eo->name);
+             Json s, c;
+             const auto names3 = cut_example3_names();
+             if (std::find(names3.begin(), names3.end(), eo->name) != names3.end()) {
+               const auto e = cut_example3(eo->name);
+               s = solid3_to_json(e.solid), c = cut3_to_json(e.cut);
+               s["description"] = e.description;
+             } else {
+               const auto e = cut_example(eo->name);
+               s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
+               s["description"] = e.description;
+             }
              std::filesystem::create_directories(eo->out);
-             Json s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
-             s["description"] = e.description;
-             const std::string sp = (std::filesystem::path(eo->out) / (e.name + ".solid.json")).string();
-             const std::string cp = (std::filesystem::path(eo->out) / (e.name + ".cut.json")).string();
+             const std::string sp = (std::filesystem::path(eo->out) / (eo->name + ".solid.json")).string();
+             const std::string cp = (std::filesystem::path(eo->out) / (eo->name + ".cut.json")).string();
              write_file_atomically(sp, s.dump(1) + "\n");
              write_file_atomically(cp, c.dump(1) + "\n");
              std::cout << Json{{"solid", sp}, {"cut", cp}}.dump() << "\n";
              return 0;
            }},
           {g, [go](const Context& ctx) {
-             const auto S = solid2_from_json(read_json_file(go->solid, ctx.read_limits), ctx.limits);
+             const Json solid_doc = read_json_file(go->solid, ctx.read_limits);
+             if (solid_document_type(solid_doc) == "solid3d") return run_guide3(*go, solid_doc, ctx);
+             if (!go->vtk.empty()) throw UsageError("vtk", "is for solid3d documents", "leave --vtk out, or give --svg for a 2D figure");
+             const auto S = solid2_from_json(solid_doc, ctx.limits);
              const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
              const GuideOptions o = to_guide_options(*go);
              validate_cut(S, C);  // every typed error before the first progress line
@@ -254,24 +406,7 @@ Commands add_cut(CLI::App& app) {
                  const auto [D, dsep] = run(double());
                  Json d = guide_json(D, dsep);
                  if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
-                   Rational err(0), mag(0);
-                   for (std::size_t i = 0; i < R.coefficients.size(); ++i) {
-                     Rational e = D.f_exact.points[i] - R.coefficients[i];
-                     if (e < 0) e = -e;
-                     if (err < e) err = e;
-                     const Rational m = R.coefficients[i] < 0 ? Rational(-R.coefficients[i]) : R.coefficients[i];
-                     if (mag < m) mag = m;
-                   }
-                   Json cmp{{"max_abs_error", q_json(err)}};
-                   if (mag > 0 && err > 0) {
-                     const double rel = to_double(err / mag);
-                     cmp["max_rel_error"] = rel;
-                     cmp["bits_lost"] = std::max(0.0, 53 + std::log2(rel));
-                   } else {
-                     cmp["max_rel_error"] = 0.0;
-                     cmp["bits_lost"] = 0.0;
-                   }
-                   cmp["meaning"] = "the double guide's coefficients against the exact minimizer (Lemma 1: unique), measured exactly";
+                   const Json cmp = judged_against_exact(R.coefficients, D.f_exact.points);
                    d["judged_against_exact"] = cmp;
                  }
                  out = Json{{"exact", out}, {"double", d}};

@@ -142,7 +142,10 @@ CutExample cut_example(const std::string& name) {
   } else {
     std::string names;
     for (const auto& n : cut_example_names()) names += (names.empty() ? "" : ", ") + n;
-    throw UsageError("example", "'" + name + "' is not an example", "give one of " + names);
+    names += " (2D) or";
+    for (const auto& n : cut_example3_names()) names += " " + n + ",";
+    names.back() = ' ';
+    throw UsageError("example", "'" + name + "' is not an example", "give one of " + names + "(3D)");
   }
   return e;
 }

@@ -457,6 +457,9 @@ struct Sample3 {
 
 }  // namespace
 
+void validate_guide_options(const GuideOptions3& options, std::size_t facets) { validate_guide_options3(options, facets); }
+void check_exact_sizes(const Solid3<Rational>& solid, const CutData3& cut, const GuideOptions& options) { check_exact_sizes3(solid, cut, options); }
+
 template <class T>
 GuideResult3<T> guide_surface(const Solid3<Rational>& solid_in, const CutData3& cut, const GuideOptions3& o3) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -152,6 +152,10 @@ struct GuideResult3 {
   double seconds = 0;
 };
 
+/// The d = 3 options' checks and the exact size check (typed errors), before any work.
+void validate_guide_options(const GuideOptions3& options, std::size_t facets);
+void check_exact_sizes(const Solid3<Rational>& solid, const CutData3& cut, const GuideOptions& options);
+
 /// Validates (typed errors), then solves RDCP for d = 3. T = Rational or double.
 template <class T>
 GuideResult3<T> guide_surface(const Solid3<Rational>& solid, const CutData3& cut, const GuideOptions3& options = {});

@@ -1,6 +1,11 @@
 #include "io/cut_io.hpp"
 
+#include <iomanip>
+#include <sstream>
+
+#include "spline/bezier.hpp"
 #include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
 
 namespace splinex {
 
@@ -62,6 +67,113 @@ Json cut2_to_json(const CutData2<Rational>& C) {
                        {"parameter", ArithTraits<Rational>::to_json(e.param)},
                        {"tangent", Json::array({ArithTraits<Rational>::to_json(e.tangent[0]), ArithTraits<Rational>::to_json(e.tangent[1])})}});
   return Json{{"type", "cut2d"}, {"points", pts}};
+}
+
+
+std::string solid_document_type(const Json& doc) {
+  if (doc.is_object() && doc.contains("type") && (doc["type"] == "solid2d" || doc["type"] == "solid3d")) return doc["type"].get<std::string>();
+  throw ParseError("type", "must be \"solid2d\" or \"solid3d\"", "give a solid document (splinex cut example writes both kinds)");
+}
+
+Solid3<Rational> solid3_from_json(const Json& doc, const Limits& limits) {
+  if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"solid3d\", \"facets\": [...]}");
+  if (!doc.contains("type") || doc["type"] != "solid3d") throw ParseError("type", "must be \"solid3d\"", "set \"type\": \"solid3d\"");
+  only_fields(doc, {"type", "facets", "description"}, "", "use type, facets (and description)");
+  if (!doc.contains("facets") || !doc["facets"].is_array()) throw ParseError("facets", "must be an array of spline documents", "give the boundary surfaces");
+  if (doc["facets"].size() > 20000) throw SizeLimitError("facets", "has more than 20000 facets", "give fewer facets");
+  Solid3<Rational> S;
+  for (std::size_t i = 0; i < doc["facets"].size(); ++i)
+    S.facets.push_back(spline_from_json(doc["facets"][i], limits, "facets[" + std::to_string(i) + "]"));
+  validate_solid(S);
+  return S;
+}
+
+CutData3 cut3_from_json(const Json& doc) {
+  if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"cut3d\", \"positive\": [...], \"tangents\": [...]}");
+  if (!doc.contains("type") || doc["type"] != "cut3d") throw ParseError("type", "must be \"cut3d\"", "set \"type\": \"cut3d\" (a solid3d needs 3D cutting data)");
+  only_fields(doc, {"type", "positive", "tangents", "description"}, "", "use type, positive, tangents (and description)");
+  if (!doc.contains("positive") || !doc["positive"].is_array()) throw ParseError("positive", "must be an array of facet indices", "name the facets of b");
+  if (!doc.contains("tangents") || !doc["tangents"].is_array()) throw ParseError("tangents", "must be an array", "give one tangent per loop side");
+  if (doc["positive"].size() > 20000 || doc["tangents"].size() > 80000) throw SizeLimitError("positive", "is too long", "give fewer facets");
+  CutData3 C;
+  for (std::size_t k = 0; k < doc["positive"].size(); ++k)
+    C.positive.push_back(static_cast<std::size_t>(json_int(doc["positive"][k], "positive[" + std::to_string(k) + "]", 0, 1 << 30)));
+  for (std::size_t k = 0; k < doc["tangents"].size(); ++k) {
+    const auto& t = doc["tangents"][k];
+    const std::string f = "tangents[" + std::to_string(k) + "]";
+    if (!t.is_object()) throw ParseError(f, "is not an object", "give {\"facet\": i, \"side\": s, \"tangent\": [tx, ty, tz]}");
+    only_fields(t, {"facet", "side", "tangent"}, f + ".", "use facet, side, tangent");
+    if (!t.contains("facet") || !t.contains("side") || !t.contains("tangent"))
+      throw ParseError(f, "lacks facet, side or tangent", "give {\"facet\": i, \"side\": s, \"tangent\": [tx, ty, tz]}");
+    LoopTangent3 L;
+    L.facet = static_cast<std::size_t>(json_int(t["facet"], f + ".facet", 0, 1 << 30));
+    L.side = static_cast<int>(json_int(t["side"], f + ".side", 0, 3));
+    if (!t["tangent"].is_array() || t["tangent"].size() != 3) throw ParseError(f + ".tangent", "must be [tx, ty, tz]", "give three numbers");
+    for (int c = 0; c < 3; ++c) L.tangent[c] = json_number(t["tangent"][c], f + ".tangent[" + std::to_string(c) + "]");
+    C.tangents.push_back(L);
+  }
+  return C;
+}
+
+Json solid3_to_json(const Solid3<Rational>& S) {
+  Json f = Json::array();
+  for (const auto& F : S.facets) f.push_back(spline_to_json(F));
+  return Json{{"type", "solid3d"}, {"facets", f}};
+}
+
+Json cut3_to_json(const CutData3& C) {
+  Json t = Json::array();
+  for (const auto& L : C.tangents) {
+    Json v = Json::array();
+    for (const auto& x : L.tangent) v.push_back(ArithTraits<Rational>::to_json(x));
+    t.push_back(Json{{"facet", L.facet}, {"side", L.side}, {"tangent", v}});
+  }
+  return Json{{"type", "cut3d"}, {"positive", C.positive}, {"tangents", t}};
+}
+
+
+std::string solid3_vtk(const Solid3<Rational>& S) {
+  constexpr int m = 8;
+  std::ostringstream pts, polys;
+  pts << std::setprecision(17);
+  std::size_t np = 0, nq = 0;
+  for (const auto& F : S.facets)
+    for (const auto& piece : extract_bezier(F)) {
+      const auto D = convert<double>(piece.spline, [](const Rational& x) { return to_double(x); });
+      const std::size_t base = np;
+      for (int j = 0; j <= m; ++j)
+        for (int i = 0; i <= m; ++i) {
+          const double u = D.domain_lo(0) + (D.domain_hi(0) - D.domain_lo(0)) * i / m, v = D.domain_lo(1) + (D.domain_hi(1) - D.domain_lo(1)) * j / m;
+          const auto p = evaluate(D, std::vector<double>{u, v});
+          pts << p[0] << " " << p[1] << " " << p[2] << "\n";
+          ++np;
+        }
+      for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) {
+          const std::size_t a = base + i + (m + 1) * j;
+          polys << "4 " << a << " " << a + 1 << " " << a + m + 2 << " " << a + m + 1 << "\n";
+          ++nq;
+        }
+    }
+  std::ostringstream o;
+  o << "# vtk DataFile Version 3.0\nsplinex solid3d facets (tessellated in double)\nASCII\nDATASET POLYDATA\nPOINTS " << np << " double\n"
+    << pts.str() << "POLYGONS " << nq << " " << 5 * nq << "\n" << polys.str();
+  return o.str();
+}
+
+std::string guide3_vtk(const BSpline<Rational>& f, const std::array<Rational, 3>& lo, const Rational& scale, int n) {
+  const auto D = convert<double>(f, [](const Rational& x) { return to_double(x); });
+  std::ostringstream o;
+  o << std::setprecision(17);
+  const double h = to_double(scale) / n;
+  o << "# vtk DataFile Version 3.0\nsplinex guiding surface f* (values in double; contour at 0)\nASCII\nDATASET STRUCTURED_POINTS\n"
+    << "DIMENSIONS " << n + 1 << " " << n + 1 << " " << n + 1 << "\nORIGIN " << to_double(lo[0]) << " " << to_double(lo[1]) << " " << to_double(lo[2])
+    << "\nSPACING " << h << " " << h << " " << h << "\nPOINT_DATA " << (n + 1) * (n + 1) * (n + 1) << "\nSCALARS f double 1\nLOOKUP_TABLE default\n";
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        o << evaluate(D, std::vector<double>{double(i) / n, double(j) / n, double(k) / n})[0] << "\n";
+  return o.str();
 }
 
 }  // namespace splinex
