@@ -74,7 +74,8 @@ Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<
 struct GuideCliOptions {
   std::string solid, cut, arith = "exact", svg, vtk, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
   int inner = 3, inner_y = -1, inner_z = -1, max_inner = 7, samples = 16, loop_samples = 4;
-  CLI::Option *inner_opt = nullptr, *max_inner_opt = nullptr, *samples_opt = nullptr;
+  std::size_t max_size = 400000;
+  CLI::Option *inner_opt = nullptr, *max_inner_opt = nullptr, *samples_opt = nullptr, *max_size_opt = nullptr;
 };
 
 void add_guide_options(CLI::App* g, GuideCliOptions& go) {
@@ -84,6 +85,11 @@ void add_guide_options(CLI::App* g, GuideCliOptions& go) {
   g->add_option("--inner-knots-y", go.inner_y, "inner knots in y, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
   go.max_inner_opt = g->add_option("--max-inner-knots", go.max_inner, "dyadic refinement (k -> 2k+1) while infeasible, up to this (solid3d: default 3)")->check(CLI::Range(0, 1000))->capture_default_str();
   go.samples_opt = g->add_option("--samples", go.samples, "sample points per facet (b* and b-bar*); solid3d: per facet direction, default 4")->check(CLI::Range(1, 100000))->capture_default_str();
+  go.max_size_opt = g->add_option("--max-size", go.max_size,
+                                  "the program's size limit, variables x (variables + rows), checked before any work (solid3d: default 60000, "
+                                  "about 2 minutes exactly)")
+                       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
+                       ->capture_default_str();
   g->add_option("--delta", go.delta, "the margin: f* >= delta on b*, <= -delta on b-bar*")->capture_default_str();
   g->add_option("--strip", go.strip, "no samples (and no certification) within this max-norm distance of the cut points, normalized units")->capture_default_str();
   g->add_option("--lambda-int", go.li, "weight of F_int")->capture_default_str();
@@ -97,6 +103,7 @@ GuideOptions to_guide_options(const GuideCliOptions& go) {
   o.inner_knots_y = go.inner_y;
   o.max_inner_knots = go.max_inner;
   o.samples = go.samples;
+  o.max_size = go.max_size;
   o.delta = parse_number(go.delta, "delta");
   o.strip = parse_number(go.strip, "strip");
   o.lambda_int = parse_number(go.li, "lambda-int");
@@ -258,6 +265,7 @@ int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& 
   if (go.inner_opt && go.inner_opt->count()) o.base.inner_knots = go.inner;
   if (go.max_inner_opt && go.max_inner_opt->count()) o.base.max_inner_knots = go.max_inner;
   if (go.samples_opt && go.samples_opt->count()) o.base.samples = go.samples;
+  if (go.max_size_opt && go.max_size_opt->count()) o.base.max_size = go.max_size;
   o.inner_knots = {-1, go.inner_y, go.inner_z};
   o.loop_samples = go.loop_samples;
   validate_cut(S, C);  // every typed error before the first progress line

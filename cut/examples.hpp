@@ -33,7 +33,7 @@ struct CutExample3 {
   CutData3 cut;
 };
 
-/// "cube" (2 x 2 x 2 boxes, cut at half height), "slotted" (the bi-slotted cube of Figure 13,
+/// "tower" (two unit boxes stacked, cut between them), "cube" (2 x 2 x 2 boxes, cut at half height), "slotted" (the bi-slotted cube of Figure 13,
 /// modelled: a block with two slots from the top, cut below the first slot), "maiden" (the iron
 /// maiden of Figure 11, modelled: the gap between two walls with box spikes reaching past the middle,
 /// a wave-shaped loop between them).

@@ -91,12 +91,17 @@ Solid3<Rational> box_solid(const std::vector<Rational>& xs, const std::vector<Ra
   return S;
 }
 
-std::vector<std::string> cut_example3_names() { return {"cube", "slotted", "maiden"}; }
+std::vector<std::string> cut_example3_names() { return {"tower", "cube", "slotted", "maiden"}; }
 
 CutExample3 cut_example3(const std::string& name) {
   CutExample3 e;
   e.name = name;
-  if (name == "cube") {
+  if (name == "tower") {
+    e.description = "two unit boxes stacked, [0,1]^2 x [0,2] (10 unit-square facets), b: the facets above z = 1; the smallest example";
+    const auto g = grid({q(0), q(1)});
+    e.solid = box_solid(g, g, grid({q(0), q(1), q(2)}), [](std::size_t, std::size_t, std::size_t) { return true; });
+    e.cut = cut_by(e.solid, [](const P3& c) { return c[2] > 1; });
+  } else if (name == "cube") {
     e.description = "the cube [0,2]^3 of 2 x 2 x 2 unit boxes (24 unit-square facets), b: the facets above z = 1; the loop runs around at z = 1";
     const auto g = grid({q(0), q(1), q(2)});
     e.solid = box_solid(g, g, g, [](std::size_t, std::size_t, std::size_t) { return true; });

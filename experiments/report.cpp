@@ -43,14 +43,14 @@ namespace {
 constexpr Section kSections[] = {
     crosscheck_section,       composition_orders_section, teapot_stars_section, tolerance_section,
     algorithm2_stars_section, untrim_tolerance_section,   checkerboard_section, curved_untrim_section,
-    hybrid_section,           elevation_accuracy_section, vrep_section, vrep_boolean_section, vrep_ssi_section, vrep_teapot_section, solve_section, cut_section, peers_section, proofs_section,
+    hybrid_section,           elevation_accuracy_section, vrep_section, vrep_boolean_section, vrep_ssi_section, vrep_teapot_section, solve_section, cut_section, cut3_section, peers_section, proofs_section,
 };
 
 // report.md's parts in the order they are read.
 const char* const kDocument[] = {
     "crosscheck.intro", "proofs",         "crosscheck.figures", "composition-orders", "teapot-stars",
     "tolerance",        "algorithm2-stars", "checkerboard",     "curved-untrim",      "untrim-tolerance",
-    "hybrid",           "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve", "cut", "peers",            "crosscheck.tables",
+    "hybrid",           "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve", "cut", "cut3", "peers",            "crosscheck.tables",
 };
 
 }  // namespace

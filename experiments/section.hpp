@@ -61,6 +61,8 @@ void vrep_boolean_section(ReportContext& ctx);
 void solve_section(ReportContext& ctx);
 /// Cutting curves (papers/004, issue 20): Table 1's examples, sampling density, Figure 10; part cut.
 void cut_section(ReportContext& ctx);
+/// papers/004 for d = 3: guiding surfaces, certified separation, coarse sampling; part cut3.
+void cut3_section(ReportContext& ctx);
 /// Freeform boundaries: the float SSI of the teapot's handle and spout with its body, judged exactly; part vrep-ssi.
 void vrep_ssi_section(ReportContext& ctx);
 /// The teapot's V-model (papers/002 Figure 14, Table 1) from freeform solids; part vrep-teapot.

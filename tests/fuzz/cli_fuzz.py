@@ -142,9 +142,12 @@ KINDS = ["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparame
          "vrep-boolean", "vrep-certify", "vrep-export", "vrep-glue", "project", "contact", "cut-guide"]
 
 
+NO_OPTION_MUTATION = {"cut-guide-3d"}
+
+
 def command_for(rng, docs, kinds=KINDS):
     """(argv after the program, document bytes or None, kind)"""
-    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel", "solid2d", "cut2d"))]
+    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel", "solid2d", "cut2d", "solid3d", "cut3d"))]
     models = [n for n in docs if n.startswith("vmodel")]
     surfaces = [n for n in docs if n.startswith(("sphere", "paraboloid", "saddle", "plane", "roof", "surface"))]
     doc_name = rng.choice(curves)
@@ -241,7 +244,25 @@ def command_for(rng, docs, kinds=KINDS):
         else:
             extra_files["SECOND"] = docs[rng.choice(surfaces)]
             argv = ["contact", "--arith", rng.choice(["exact", "double"]), "DOC", "SECOND"] + budget
-    elif kind == "cut-guide":
+    elif kind == "cut-guide" and rng.random() < 0.3:
+        # d = 3: the smallest solid (tests/data/solid3d_tower.json) and its cutting data, one of them
+        # mutated, with settings that keep the exact QP to seconds (options are not mutated: a
+        # larger legal program runs for minutes, which is not a fault); sometimes a program over the
+        # size limit, which must be refused before any work.
+        kind = "cut-guide-3d"
+        solid, cut = docs["solid3d_tower.json"], docs["cut3d_tower.json"]
+        opts = ["--arith", rng.choice(["exact", "double"]), "--samples", rng.choice(["1", "2"]), "--loop-samples", rng.choice(["1", "2"]),
+                "--inner-knots", "0", "--max-inner-knots", "0"]
+        if rng.random() < 0.1:
+            opts[opts.index("--inner-knots") + 1] = rng.choice(["5", "100"])
+            opts[opts.index("--max-inner-knots") + 1] = "100"
+        if rng.random() < 0.5:
+            doc, extra_files["SECOND"] = solid, cut
+            argv = ["cut", "guide"] + opts + ["DOC", "SECOND"]
+        else:
+            doc, extra_files["SECOND"] = cut, solid
+            argv = ["cut", "guide"] + opts + ["SECOND", "DOC"]
+    elif kind in ("cut-guide", "cut-guide-3d"):
         # A solid and its cutting data (tests/data/solid2d_*, cut2d_*): one of them is DOC (mutated).
         name = rng.choice([n for n in docs if n.startswith("solid2d")])
         other = docs[name.replace("solid2d", "cut2d")]
@@ -362,7 +383,7 @@ def main():
             doc = mutate_structured(rng, doc)
         elif doc is not None and r < 0.6:
             doc = mutate_bytes(rng, doc)
-        if r >= 0.45 and rng.random() < 0.6:
+        if r >= 0.45 and rng.random() < 0.6 and kind not in NO_OPTION_MUTATION:
             argv = mutate_options(rng, argv)
         files = {}
         if doc is not None:
