@@ -51,6 +51,30 @@ int main(int argc, char** argv) {
       for (auto _ : st) benchmark::DoNotOptimize(certify_cutting_curve(R.solid, R.cut, cc.curve));
     })->Unit(benchmark::kMillisecond);
   }
+  // d = 3: the guiding surface of the smallest and of the modelled bi-slotted example (settings of
+  // the report), and its certified separation.
+  const std::vector<std::string> cases3{"tower", "slotted"};
+  auto options3 = [] {
+    GuideOptions3 o;
+    o.base.samples = 1;
+    o.loop_samples = 2;
+    return o;
+  };
+  for (const auto& c : cases3) {
+    benchmark::RegisterBenchmark(("cut3/guide/exact/" + c).c_str(), [c, options3](benchmark::State& st) {
+      const auto e = cut_example3(c);
+      for (auto _ : st) benchmark::DoNotOptimize(guide_surface<Rational>(e.solid, e.cut, options3()));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("cut3/guide/double/" + c).c_str(), [c, options3](benchmark::State& st) {
+      const auto e = cut_example3(c);
+      for (auto _ : st) benchmark::DoNotOptimize(guide_surface<double>(e.solid, e.cut, options3()));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("cut3/separation/exact/" + c).c_str(), [c, options3](benchmark::State& st) {
+      const auto e = cut_example3(c);
+      const auto R = guide_surface<Rational>(e.solid, e.cut, options3());
+      for (auto _ : st) benchmark::DoNotOptimize(certify_separation(R.solid, R.loop, e.cut.positive, R.f_exact, options3().base.strip));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+  }
   benchmark::Initialize(&argc, argv);
   RatioReporter rep;
   benchmark::RunSpecifiedBenchmarks(&rep);
@@ -62,6 +86,15 @@ int main(int argc, char** argv) {
               << std::setw(14) << t("guide/double") << std::setprecision(2) << std::setw(14)
               << (t("guide/double") > 0 ? t("guide/exact") / t("guide/double") : 0.0) << std::setprecision(1) << std::setw(13)
               << t("separation/exact") << std::setw(17) << t("fit/exact") << std::setw(10) << t("validity/exact") << "\n";
+  }
+  std::cout << "\nCutting surfaces (d = 3): ms per step (1 inner knot, 1 sample per facet, 2 points per loop side)\n"
+            << "case      guide exact  guide double  exact/double   separation\n";
+  for (const auto& c : cases3) {
+    const auto t = [&](const std::string& a) { return rep.ns["cut3/" + a + "/" + c]; };
+    std::cout << std::left << std::setw(9) << c << std::right << std::fixed << std::setprecision(1) << std::setw(12) << t("guide/exact")
+              << std::setw(14) << t("guide/double") << std::setprecision(2) << std::setw(14)
+              << (t("guide/double") > 0 ? t("guide/exact") / t("guide/double") : 0.0) << std::setprecision(1) << std::setw(13)
+              << t("separation/exact") << "\n";
   }
   return 0;
 }
