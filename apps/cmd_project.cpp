@@ -180,13 +180,27 @@ Json curve_projection_json(const CurveProjectionResult& r) {
   return out;
 }
 
+// Exact runs: every number of the inputs within max_bits (SizeLimitError naming the field before
+// any work). A coordinate of 10^100000 made an exact projection take half a minute.
+void check_exact_bits(const BSpline<Rational>& S, const std::string& field, std::size_t max_bits) {
+  auto check = [&](const std::vector<Rational>& v, const std::string& part) {
+    for (const auto& x : v)
+      if (bit_size(x) > max_bits)
+        throw SizeLimitError(field + "." + part, "has a number of " + std::to_string(bit_size(x)) + " bits, over the exact limit of " + std::to_string(max_bits),
+                             "give the number with fewer digits, raise --max-bits, or use --arith double");
+  };
+  check(S.points, "points");
+  check(S.weights, "weights");
+  for (const auto& U : S.knots) check(U, "knots");
+}
+
 }  // namespace
 
 Commands add_project(CLI::App& app) {
   struct Options {
     std::string arith = "exact", file, point, curve, svg, obj;
     int max_depth = 30, steps = 48;
-    std::size_t max_boxes = 20000;
+    std::size_t max_boxes = 20000, max_bits = 4096;
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("project",
@@ -197,6 +211,9 @@ Commands add_project(CLI::App& app) {
   auto* point = c->add_option("--point", o->point, "the point \"x,y,z\"");
   auto* curve = c->add_option("--curve", o->curve, "a curve document (polynomial or rational, points x,y,z)");
   point->excludes(curve);
+  c->add_option("--max-bits", o->max_bits, "exact runs: the largest input number (numerator or denominator, bits), checked before the work")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
+      ->capture_default_str();
   c->add_option("--steps", o->steps, "--curve: tracing steps in t between critical values")->check(CLI::Range(2, 100000))->capture_default_str();
   c->add_option("--svg", o->svg, "--curve: write the parameter-domain and top-view figure here");
   c->add_option("--obj", o->obj, "--curve: write the curve, the surface's boundary and the projection as OBJ polylines here");
@@ -211,6 +228,8 @@ Commands add_project(CLI::App& app) {
              if (!o->curve.empty()) {
                if (o->arith != "exact") throw UsageError("arith", "--curve runs in exact arithmetic only", "leave --arith out");
                const auto C = spline_from_json(read_json_file(o->curve, ctx.read_limits), ctx.limits, "curve");
+               check_exact_bits(S, "surface", o->max_bits);
+               check_exact_bits(C, "curve", o->max_bits);
                CurveProjectionOptions co;
                co.solve.max_depth = o->max_depth;
                co.solve.max_boxes = o->max_boxes;
@@ -232,8 +251,14 @@ Commands add_project(CLI::App& app) {
              Json out;
              if (o->arith == "double")
                out = projection_json(project_point(round_spline<double>(S), round_values<double>(P, "point"), so, ctx.limits));
-             else
+             else {
+               check_exact_bits(S, "surface", o->max_bits);
+               for (const auto& x : P)
+                 if (bit_size(x) > o->max_bits)
+                   throw SizeLimitError("point", "has a number of " + std::to_string(bit_size(x)) + " bits, over the exact limit of " + std::to_string(o->max_bits),
+                                        "give the number with fewer digits, raise --max-bits, or use --arith double");
                out = projection_json(project_point(S, P, so, ctx.limits));
+             }
              std::cout << out.dump() << "\n";
              return 0;
            }}};
@@ -243,7 +268,7 @@ Commands add_contact(CLI::App& app) {
   struct Options {
     std::string arith = "exact", first, second;
     int max_depth = 30;
-    std::size_t max_boxes = 20000;
+    std::size_t max_boxes = 20000, max_bits = 4096;
     bool penetration = false;
   };
   auto o = std::make_shared<Options>();
@@ -254,6 +279,9 @@ Commands add_contact(CLI::App& app) {
   c->add_option("--max-boxes", o->max_boxes, "solver boxes per pair of strata before the rest is undecided (ten times this in all)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
+  c->add_option("--max-bits", o->max_bits, "exact runs: the largest input number (numerator or denominator, bits), checked before the work")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
+      ->capture_default_str();
   c->add_flag("--penetration", o->penetration,
               "intersecting surfaces: also the stationary pairs away from the intersection and the deepest penetration each way (slow: the "
               "subdivision follows the intersection curve)");
@@ -261,6 +289,7 @@ Commands add_contact(CLI::App& app) {
   c->add_option("second", o->second, "second surface document, or teapot:body|handle|spout|lid")->required();
   return {{c, [o](const Context& ctx) {
              const auto S1 = read_surface_argument(o->first, "first", ctx), S2 = read_surface_argument(o->second, "second", ctx);
+             if (o->arith != "double") check_exact_bits(S1, "first", o->max_bits), check_exact_bits(S2, "second", o->max_bits);
              SolveOptions so;
              so.max_depth = o->max_depth;
              so.max_boxes = o->max_boxes;

@@ -152,11 +152,10 @@ std::vector<T> regularization_matrix(const std::vector<T>& U) {
 }
 
 namespace {
-std::size_t msb_bits(const Integer& z) { return z == 0 ? 0 : boost::multiprecision::msb(z < 0 ? Integer(-z) : z) + 1; }
 
 // An exact input number within the exact QP's size limit (SizeLimitError naming the field).
 void check_bits(const Rational& x, const std::string& field, std::size_t max_bits) {
-  const std::size_t bits = std::max(msb_bits(numerator(x)), msb_bits(denominator(x)));
+  const std::size_t bits = bit_size(x);
   if (bits > max_bits)
     throw SizeLimitError(field, "has a number of " + std::to_string(bits) + " bits, over the exact QP's limit of " + std::to_string(max_bits),
                          "give the number with fewer digits, or use --arith double");

@@ -201,8 +201,8 @@ Adjacency3 validate_solid(const Solid3<Rational>& S) {
       sides[i][s] = facet_side(S.facets[i], s);
       const auto& C = sides[i][s];
       P3 a = point(C, 0), b = point(C, C.size() - 1);
-      if (a == b) throw ValidationError(facet_field(i), std::string("has a side collapsed to a point (") + side_name(s) + ")",
-                                        "give facets with four proper sides (degenerate patches are not supported yet)");
+      if (a == b) throw ValidationError(facet_field(i), std::string("has a side whose ends coincide (") + side_name(s) + ": collapsed to a point or closed)",
+                                        "give facets with four sides of distinct ends (degenerate and periodic patches are not supported yet)");
       if (b < a) std::swap(a, b);
       by_ends[{a, b}].push_back({i, s});
     }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "exact/rational.hpp"
 
 #include <gmp.h>
@@ -111,6 +112,11 @@ double to_double(const Rational& x) {
 std::string to_fraction_string(const Rational& x) {
   // Boost's mpq_rational is always canonical (lowest terms, positive denominator).
   return x.str();
+}
+
+std::size_t bit_size(const Rational& x) {
+  auto bits = [](const Integer& z) -> std::size_t { return z == 0 ? 0 : boost::multiprecision::msb(z < 0 ? Integer(-z) : z) + 1; };
+  return std::max(bits(numerator(x)), bits(denominator(x)));
 }
 
 double log2_abs(const Rational& x) {

@@ -26,6 +26,10 @@ double to_double(const Rational& x);
 /// "p/q" in lowest terms, or "p" when q = 1.
 std::string to_fraction_string(const Rational& x);
 
+/// The size of x in bits: the larger of its numerator's and denominator's (0 for 0). Exact
+/// commands check their inputs against a limit on it before the work.
+std::size_t bit_size(const Rational& x);
+
 /// log2|x| (x != 0), to about 50 bits: for reporting error magnitudes and bits lost.
 double log2_abs(const Rational& x);
 
