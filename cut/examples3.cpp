@@ -1,5 +1,3 @@
-#include <algorithm>
-
 #include "cut/examples.hpp"
 #include "spline/errors.hpp"
 #include "spline/factories.hpp"
@@ -40,26 +38,13 @@ CutData3 cut_by(const Solid3<Rational>& S, const std::function<bool(const P3&)>&
   CutData3 C;
   for (std::size_t i = 0; i < S.facets.size(); ++i)
     if (in_b(centre(S.facets[i]))) C.positive.push_back(i);
-  // The loop sides: found by validation without tangents would throw; find them directly.
+  // The loop sides: sides of b facets whose neighbour (the solid's adjacency) is in b-bar.
+  const auto adj = validate_solid(S);
   std::vector<char> b(S.facets.size(), 0);
   for (auto i : C.positive) b[i] = 1;
-  for (std::size_t i = 0; i < S.facets.size(); ++i) {
-    if (!b[i]) continue;
-    for (int s = 0; s < 4; ++s) {
-      const auto side = facet_side(S.facets[i], s);
-      bool shared_with_bbar = false;
-      for (std::size_t j = 0; j < S.facets.size() && !shared_with_bbar; ++j) {
-        if (b[j]) continue;
-        for (int t = 0; t < 4 && !shared_with_bbar; ++t) {
-          const auto o = facet_side(S.facets[j], t);
-          shared_with_bbar = side.points.size() == o.points.size() &&
-                             std::equal(side.points.begin(), side.points.begin() + 3, o.points.end() - 3) &&
-                             std::equal(side.points.end() - 3, side.points.end(), o.points.begin());
-        }
-      }
-      if (shared_with_bbar) C.tangents.push_back({i, s, inward_normal(S.facets[i])});
-    }
-  }
+  for (std::size_t i = 0; i < S.facets.size(); ++i)
+    for (int s = 0; s < 4; ++s)
+      if (b[i] && !b[adj.facet[i][s]]) C.tangents.push_back({i, s, inward_normal(S.facets[i])});
   return C;
 }
 

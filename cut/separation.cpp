@@ -162,13 +162,8 @@ bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool p
     c.result.undecided.push_back({facet, plo, phi});
     return false;
   }
-  std::array<Rational, 3> lo{piece.points[0], piece.points[1], piece.points[2]}, hi = lo;
-  for (std::size_t i = 0; i < piece.size(); ++i)
-    for (int a = 0; a < 3; ++a) {
-      const Rational& x = piece.points[3 * i + a];
-      if (x < lo[a]) lo[a] = x;
-      if (hi[a] < x) hi[a] = x;
-    }
+  const auto box = control_bounds(piece);
+  const std::array<Rational, 3> lo{box[0], box[1], box[2]}, hi{box[3], box[4], box[5]};
   if (box_in_strip3(c, lo, hi)) {
     ++c.result.excluded;
     return true;

@@ -8,6 +8,7 @@
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
+#include "experiments/common.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "io/cut_io.hpp"
@@ -17,12 +18,6 @@
 namespace splinex {
 
 namespace {
-
-std::string fmt3(double x, int p = 3) {
-  std::ostringstream s;
-  s << std::setprecision(p) << x;
-  return s.str();
-}
 
 struct Setting {
   std::string name;
@@ -48,14 +43,14 @@ std::string bits_lost(const std::vector<Rational>& exact, const BSpline<Rational
     mag = std::max(mag, Rational(abs(exact[i])));
   }
   if (err == 0) return "0";
-  return fmt3(std::max(0.0, 53 + log2_abs(err) - log2_abs(mag)));
+  return fmt(std::max(0.0, 53 + log2_abs(err) - log2_abs(mag)));
 }
 
 std::string witness_text(const SeparationResult3& s) {
   if (!s.witness) return s.verdict;
   const auto& w = *s.witness;
   return "violated at (" + to_fraction_string(w.point[0]) + ", " + to_fraction_string(w.point[1]) + ", " + to_fraction_string(w.point[2]) +
-         ") on " + (w.positive_side ? "b" : "b-bar") + ", f* = " + fmt3(to_double(w.value));
+         ") on " + (w.positive_side ? "b" : "b-bar") + ", f* = " + fmt(to_double(w.value));
 }
 
 // The slice y = (y_lo + y_hi)/2 of a box-built solid (axis-parallel quads), normalized: the facets
@@ -110,7 +105,7 @@ std::string slice_svg(const GuideResult3<Rational>& R, const std::string& title)
     if (std::abs(to_double(x[1]) - ylo) < 1e-12)
       o << "<circle cx=\"" << X(to_double(x[0])) << "\" cy=\"" << Y(to_double(x[2])) << "\" r=\"3\" fill=\"#2471a3\"/>\n";
   o << "<text x=\"" << pad << "\" y=\"" << H - 10 << "\" font-size=\"11\" font-family=\"sans-serif\">black: the solid's facets in the slice y = "
-    << fmt3(ym) << " (normalized); red: f* = 0 there (marching squares in double); blue: L* on the front face</text>\n</svg>\n";
+    << fmt(ym) << " (normalized); red: f* = 0 there (marching squares in double); blue: L* on the front face</text>\n</svg>\n";
   return o.str();
 }
 
@@ -162,7 +157,7 @@ void cut3_section(ReportContext& ctx) {
     std::ostringstream k;
     k << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2];
     md << "| " << st.name << " | " << e.solid.facets.size() << " | " << R.loop.size() << " | " << st.why << " (" << k.str() << " used) | "
-       << R.program.n << " x " << R.program.rows.size() << " | " << fmt3(R.seconds) << " | " << proved << " | " << sep_e << " | " << fmt3(t_d)
+       << R.program.n << " x " << R.program.rows.size() << " | " << fmt(R.seconds) << " | " << proved << " | " << sep_e << " | " << fmt(t_d)
        << " | " << bits << " | " << sep_d << " |\n";
     csv << st.name << "," << e.solid.facets.size() << "," << R.loop.size() << "," << R.program.n << "," << R.program.rows.size() << ","
         << R.seconds << "," << proved << ",\"" << sep_e << "\"," << t_d << "," << bits << ",\"" << sep_d << "\"\n";

@@ -12,6 +12,7 @@
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
+#include "experiments/common.hpp"
 #include "experiments/cut_figure.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
@@ -22,12 +23,6 @@
 namespace splinex {
 
 namespace {
-
-std::string fmt(double x, int p = 3) {
-  std::ostringstream s;
-  s << std::setprecision(p) << x;
-  return s.str();
-}
 
 // The guide's zero set near the march: distance of a point to it and the largest curvature, in
 // double at the marched points (a measurement of a picture, said so in the report).
