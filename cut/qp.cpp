@@ -134,6 +134,21 @@ QPSolution solve_qp(const QuadraticProgram<Rational>& qp) {
 }
 
 QPSolution solve_qp(const QuadraticProgram<double>& qp) {
+  // CGAL reads the doubles exactly (Gmpzf): an inf or NaN stops it with a floating-point exception.
+  // A program whose assembly overflowed double (weights like 1e400 round to inf) is refused here,
+  // the one place every double program passes.
+  auto finite = [](double v, const std::string& what) {
+    if (!std::isfinite(v))
+      throw DomainError("program", "has " + what + " beyond double's range (inf or NaN): the data or the weights overflow in double",
+                        "give smaller weights or data, or use --arith exact");
+  };
+  for (double v : qp.D) finite(2 * v, "an objective entry");
+  for (double v : qp.c) finite(v, "a linear term");
+  finite(qp.c0, "its constant term");
+  for (const auto& row : qp.rows) {
+    for (const auto& [i, v] : row.a) finite(v, "a constraint coefficient");
+    finite(row.b, "a constraint bound");
+  }
   CGAL::Quadratic_program<double> p(CGAL::LARGER, false, 0, false, 0);
   for (std::size_t i = 0; i < qp.n; ++i) {
     p.set_c(static_cast<int>(i), qp.c[i]);
