@@ -13,6 +13,7 @@
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
+#include "cut/surface_facet.hpp"
 #include "experiments/cut_figure.hpp"
 #include "experiments/svg_plot.hpp"
 #include "io/cut_io.hpp"
@@ -310,6 +311,178 @@ int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& 
   return 0;
 }
 
+// ---- d = 3: the cutting surface ----------------------------------------------------------------
+
+struct Facet3CliOptions {
+  std::string domain = "auto", weight_boundary = "1", weight_fair = "1", lambda = "1", tangent_delta = "1/20", strip = "1/16";
+  int inner = 3, samples = 4, max_depth = 14;
+  std::string arith = "exact", vtk, out;
+};
+
+SurfaceFacetOptions to_surface_options(const Facet3CliOptions& f) {
+  SurfaceFacetOptions o;
+  o.domain = f.domain;
+  o.inner_knots = f.inner;
+  o.boundary_samples = f.samples;
+  o.weight_boundary = parse_number(f.weight_boundary, "weight-boundary");
+  o.weight_fair = parse_number(f.weight_fair, "weight-fair");
+  o.lambda = parse_number(f.lambda, "lambda-normal");
+  o.tangent_delta = parse_number(f.tangent_delta, "tangent-delta");
+  o.strip = parse_number(f.strip, "strip");
+  o.max_depth = f.max_depth;
+  o.progress = true;
+  validate_surface_options(o);
+  return o;
+}
+
+// The patch between normalized and solid coordinates (exact).
+BSpline<Rational> patch_from_frame(BSpline<Rational> p, const Frame3& f) {
+  for (std::size_t i = 0; i < p.points.size(); ++i) p.points[i] = f.lo[i % 3] + f.scale * p.points[i];
+  return p;
+}
+BSpline<Rational> patch_to_frame(BSpline<Rational> p, const Frame3& f) {
+  for (std::size_t i = 0; i < p.points.size(); ++i) p.points[i] = (p.points[i] - f.lo[i % 3]) / f.scale;
+  return p;
+}
+
+Json point3_json(const std::array<Rational, 3>& x) {
+  return Json::array({to_fraction_string(x[0]), to_fraction_string(x[1]), to_fraction_string(x[2])});
+}
+
+Json surface_validity_json(const SurfaceValidity& v, const Frame3& f) {
+  Json j{{"verdict", v.verdict},
+         {"vertices_interpolated_exactly", v.vertices_exact},
+         {"vertex_error_normalized", q_json(v.vertex_error)},
+         {"boundary_deviation_bound_normalized", q_json(v.boundary_deviation)},
+         {"boundary_meaning", "p interpolates the loop at Omega's vertices; between them |p(e(s)) - L(s)|_inf <= this bound (Bernstein coefficients, exact)"},
+         {"tangents", v.tangents},
+         {"tangents_meaning", "t . (dp/dm) > 0 along every edge of Omega, m its inward normal: the prescribed tangents point into the patch"},
+         {"regular", v.regular},
+         {"injective", v.injective},
+         {"regularity_method", v.regularity_method},
+         {"collision", v.collision},
+         {"collision_pieces", Json{{"certified", v.collision_pieces}, {"in_strip", v.collision_excluded}, {"undecided", v.collision_undecided}}},
+         {"membership_test", v.membership},
+         {"seconds", v.seconds}};
+  if (v.witness) {
+    const auto& w = *v.witness;
+    std::array<Rational, 3> x;
+    for (int c = 0; c < 3; ++c) x[c] = f.lo[c] + f.scale * w.point[c];
+    j["witness"] = Json{{"condition", w.condition},
+                        {"parameters", Json::array({to_fraction_string(w.param[0]), to_fraction_string(w.param[1])})},
+                        {"point", point3_json(x)},
+                        {"detail", w.detail}};
+    if (w.condition == "tangent") j["witness"]["value"] = q_json(w.value);
+  }
+  j["meaning"] = v.verdict == "valid" ? "Section 2's conditions hold: interpolation at the vertices exact, tangents, regularity, injectivity and no collision "
+                                        "outside the strip certified exactly"
+                 : v.verdict == "invalid" ? "a condition fails at the witness, an exact point"
+                                          : "no condition fails at a point found, but some could not be certified (see above)";
+  return j;
+}
+
+template <class T>
+Json surface_json(const CuttingSurface<T>& R, const Frame3& f) {
+  Json dom = Json::array();
+  for (const auto& w : R.domain.vertices) dom.push_back(Json::array({to_fraction_string(w[0]), to_fraction_string(w[1])}));
+  Json j{{"arithmetic", ArithTraits<T>::name()},
+         {"domain", Json{{"method", R.domain.method}, {"vertices", dom}, {"projection_axes", Json::array({R.domain.axes[0], R.domain.axes[1]})}}},
+         {"variables", R.variables},
+         {"equalities", R.equalities},
+         {"inequalities", R.inequalities},
+         {"active_inequalities", R.active_inequalities},
+         {"solver", R.solver},
+         {"kkt", Json{{"holds", R.kkt_holds}, {"failed", R.kkt_failed}}},
+         {"seconds", R.seconds},
+         {"surface", cutting_surface_to_json(patch_from_frame(R.patch, f), R.domain.vertices)}};
+  if (!R.domain.why_not_projection.empty()) j["domain"]["why_not_projection"] = R.domain.why_not_projection;
+  j["kkt"]["meaning"] = ArithTraits<T>::exact
+                            ? (R.kkt_holds ? "proved: the minimizer of the patch program (KKT conditions checked exactly)" : "not proved: " + R.kkt_failed)
+                            : "a double solution: judge it against --arith exact";
+  return j;
+}
+
+int run_facet3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
+  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
+  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
+  const auto o = to_surface_options(fo);
+  validate_cut(S, C);  // typed errors before the first progress line
+  const Frame3 frame = unit_frame(S);
+  const auto Sn = to_frame(S, frame);
+  const auto loop = validate_cut(Sn, C);
+  domain_polygon(loop, o.domain);  // its typed errors too
+  auto run = [&](auto tag) {
+    using T = decltype(tag);
+    std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the patch program (Step 1 and 2)\n";
+    const auto R = cutting_surface<T>(loop, o);
+    std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": certifying the surface\n";
+    const auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch, o);
+    return std::make_pair(R, V);
+  };
+  Json out;
+  std::optional<std::pair<BSpline<Rational>, std::vector<std::array<Rational, 2>>>> drawn;
+  std::string verdict;
+  if (fo.arith == "exact" || fo.arith == "both") {
+    const auto [R, V] = run(Rational());
+    out = surface_json(R, frame);
+    out["validity"] = surface_validity_json(V, frame);
+    drawn = std::make_pair(patch_from_frame(R.patch, frame), R.domain.vertices);
+    verdict = V.verdict;
+    if (fo.arith == "both") {
+      const auto [D, DV] = run(double());
+      Json d = surface_json(D, frame);
+      d["validity"] = surface_validity_json(DV, frame);
+      d["judged_against_exact"] = judged_against_exact(R.coefficients, D.coefficients);
+      d["judged_against_exact"]["meaning"] = "the double patch's control points against the exact minimizer, measured exactly (normalized coordinates)";
+      out = Json{{"exact", out}, {"double", d}};
+    }
+  } else {
+    const auto [D, DV] = run(double());
+    out = surface_json(D, frame);
+    out["validity"] = surface_validity_json(DV, frame);
+    drawn = std::make_pair(patch_from_frame(D.patch, frame), D.domain.vertices);
+    verdict = DV.verdict;
+  }
+  if (!fo.vtk.empty()) {
+    std::filesystem::create_directories(fo.vtk);
+    write_file_atomically((std::filesystem::path(fo.vtk) / "solid.vtk").string(), solid3_vtk(S));
+    write_file_atomically((std::filesystem::path(fo.vtk) / "surface.vtk").string(), surface3_vtk(drawn->first, drawn->second, 40));
+    out["vtk"] = "solid.vtk and surface.vtk written";
+  }
+  if (!fo.out.empty()) {
+    std::filesystem::create_directories(fo.out);
+    write_file_atomically((std::filesystem::path(fo.out) / "surface.json").string(), cutting_surface_to_json(drawn->first, drawn->second).dump(1) + "\n");
+    if (verdict == "valid") {
+      const auto sp = split_by_surface(S, C.positive);
+      const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
+                       {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
+      write_file_atomically((std::filesystem::path(fo.out) / "split.json").string(), parts.dump(1) + "\n");
+      out["split"] = Json{{"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()}, {"file", "split.json"}};
+    } else {
+      out["split"] = "not written: the surface is not certified valid";
+    }
+  }
+  std::cout << out.dump() << "\n";
+  return 0;
+}
+
+int run_certify3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
+  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
+  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
+  const auto doc = cutting_surface_from_json(read_json_file(surface_file, ctx.read_limits), ctx.limits);
+  const auto o = to_surface_options(fo);
+  const Frame3 frame = unit_frame(S);
+  const auto Sn = to_frame(S, frame);
+  const auto loop = validate_cut(Sn, C);
+  DomainPolygon D;
+  D.method = "given";
+  D.vertices = doc.domain;
+  D.axes = projection_axes(loop);
+  const auto V = certify_cutting_surface(Sn, loop, D, patch_to_frame(doc.patch, frame), o);
+  std::cout << surface_validity_json(V, frame).dump() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 Commands add_cut(CLI::App& app) {
@@ -347,13 +520,32 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--control-points", fo->control_points, "control points of the fitted cubic")->check(CLI::Range(4, 1000))->capture_default_str();
   fc->add_option("--step", fo->step, "marching step, normalized units")->check(CLI::Range(1e-6, 0.5))->capture_default_str();
   fc->add_option("--svg", fo->guide.svg, "write the figure (guide, samples, cutting curve) here");
-  fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder");
+  fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder; solid3d: "
+                                   "surface.json and, when valid, split.json");
+  auto f3 = std::make_shared<Facet3CliOptions>();
+  fc->add_option("--domain", f3->domain, "solid3d: Omega by auto (projection, else circle), projection or circle")
+      ->check(CLI::IsMember({"auto", "projection", "circle"}))
+      ->capture_default_str();
+  fc->add_option("--patch-inner-knots", f3->inner, "solid3d: uniform inner knots per direction of the bicubic patch")->check(CLI::Range(0, 15))->capture_default_str();
+  fc->add_option("--boundary-samples", f3->samples, "solid3d: samples of Eq. 7 per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
+  fc->add_option("--weight-boundary", f3->weight_boundary, "solid3d: weight of Eq. 7 (the paper: 1)")->capture_default_str();
+  fc->add_option("--weight-fair", f3->weight_fair, "solid3d: weight of the thin-plate energy (the paper: 1)")->capture_default_str();
+  fc->add_option("--lambda-normal", f3->lambda, "solid3d: lambda of Eq. 7, the tangent-plane term")->capture_default_str();
+  fc->add_option("--tangent-delta", f3->tangent_delta, "solid3d: t . dp/dm >= this at the boundary samples")->capture_default_str();
+  fc->add_option("--max-depth", f3->max_depth, "solid3d: halvings of one piece in the certificates")->check(CLI::Range(0, 40))->capture_default_str();
+  fc->add_option("--vtk", f3->vtk, "solid3d: write solid.vtk and surface.vtk (the trimmed patch) into this folder");
+  add_arith_option(fc, f3->arith, "solid3d: exact (KKT exactly), double (Eigen), or both (and the double judged exactly)")
+      ->check(CLI::IsMember({"exact", "double", "both"}));
 
   auto co = std::make_shared<CertifyCliOptions>();
   auto* ce = cut->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
   ce->add_option("solid", co->solid, "solid document")->required();
   ce->add_option("cut", co->cut, "cutting data document")->required();
-  ce->add_option("curve", co->curve, "the cutting curve (a spline document: a polynomial curve in R^2, from the first cut point to the second)")->required();
+  ce->add_option("curve", co->curve, "the cutting curve (a spline document: a polynomial curve in R^2, from the first cut point to the second); "
+                                     "solid3d: a cutting_surface document")->required();
+  auto c3 = std::make_shared<Facet3CliOptions>();
+  ce->add_option("--strip", c3->strip, "solid3d: no collision check within this max-norm distance of the loop (normalized units)")->capture_default_str();
+  ce->add_option("--max-depth", c3->max_depth, "solid3d: halvings of one piece")->check(CLI::Range(0, 40))->capture_default_str();
   auto cso = std::make_shared<CertifyCliOptions>();
   auto* sp = cut->add_subcommand("split", "split the solid along a cutting curve certified valid: the two sub-solids' facets");
   sp->add_option("solid", cso->solid, "solid document")->required();
@@ -433,7 +625,14 @@ Commands add_cut(CLI::App& app) {
              std::cout << out.dump() << "\n";
              return 0;
            }},
-          {fc, [fo](const Context& ctx) {
+          {fc, [fo, f3](const Context& ctx) {
+             if (solid_document_type(read_json_file(fo->guide.solid, ctx.read_limits)) == "solid3d") {
+               Facet3CliOptions o = *f3;
+               o.strip = fo->guide.strip;
+               o.out = fo->out;
+               return run_facet3(o, fo->guide.solid, fo->guide.cut, ctx);
+             }
+             if (f3->arith != "exact" || !f3->vtk.empty()) throw UsageError(f3->vtk.empty() ? "arith" : "vtk", "is for solid3d documents", "leave it out for a solid2d");
              const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);
              const auto C = cut2_from_json(read_json_file(fo->guide.cut, ctx.read_limits));
              const GuideOptions o = to_guide_options(fo->guide);
@@ -479,7 +678,8 @@ Commands add_cut(CLI::App& app) {
              std::cout << out.dump() << "\n";
              return 0;
            }},
-          {ce, [co](const Context& ctx) {
+          {ce, [co, c3](const Context& ctx) {
+             if (solid_document_type(read_json_file(co->solid, ctx.read_limits)) == "solid3d") return run_certify3(*c3, co->solid, co->cut, co->curve, ctx);
              const auto [S, C, curve] = read_curve_input(*co, ctx);
              std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
              return 0;

@@ -33,14 +33,8 @@ Local<T> local_basis(const std::vector<T>& U, std::size_t n, const T& x) {
   return {s - kDegree, ders[0], ders[1]};
 }
 
-// A row of the basis at a point: value, d/dx and d/dy of every non-zero phi_i (sparse).
 template <class T>
-struct BasisRow {
-  std::vector<std::pair<std::size_t, T>> v, dx, dy;
-};
-
-template <class T>
-BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y) {
+BasisRow<T> basis_row_impl(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y) {
   const auto bx = local_basis(Ux, n, x), by = local_basis(Uy, ny, y);
   BasisRow<T> r;
   for (int b = 0; b <= kDegree; ++b)
@@ -279,7 +273,7 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
     for (int e = 0; e < 2; ++e) {
       const auto& c = R.cut.ends[e];
       const auto x = point_of(facets[c.facet], from_q<T>(c.param));
-      const auto row = basis_row(U, n, Uy, ny, x[0], x[1]);
+      const auto row = basis_row_impl(U, n, Uy, ny, x[0], x[1]);
       const auto nr = normal_at(R.cut, e);
       const T nx = from_q<T>(nr[0]), ny = from_q<T>(nr[1]);
       add_outer(qp, row.v, li);
@@ -295,7 +289,7 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
       for (std::size_t j = i + 1; j < N; ++j) qp.d(i, j) = qp.d(j, i);
     for (const auto& s : ordered) {
       const auto x = point_of(facets[s.facet], from_q<T>(s.param));
-      const auto row = basis_row(U, n, Uy, ny, x[0], x[1]);
+      const auto row = basis_row_impl(U, n, Uy, ny, x[0], x[1]);
       typename QuadraticProgram<T>::Row r;
       r.a = row.v;
       r.at_least = s.positive;
@@ -343,6 +337,15 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
 
 template GuideResult<Rational> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
 template GuideResult<double> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
+template <class T>
+BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y) {
+  return basis_row_impl(Ux, n, Uy, ny, x, y);
+}
+template BasisRow<Rational> basis_row(const std::vector<Rational>&, std::size_t, const std::vector<Rational>&, std::size_t, const Rational&,
+                                      const Rational&);
+template BasisRow<double> basis_row(const std::vector<double>&, std::size_t, const std::vector<double>&, std::size_t, const double&,
+                                    const double&);
+
 template std::vector<Rational> regularization_matrix(const std::vector<Rational>&);
 template std::vector<double> regularization_matrix(const std::vector<double>&);
 template std::vector<Rational> regularization_matrix(const std::vector<Rational>&, const std::vector<Rational>&);

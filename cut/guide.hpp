@@ -87,6 +87,15 @@ void check_exact_sizes(const Solid2<Rational>& solid, const CutData2<Rational>& 
 template <class T>
 GuideResult<T> guide_curve(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const GuideOptions& options = {});
 
+/// A row of the bicubic basis at a point (x, y): value, d/dx and d/dy of every non-zero basis
+/// function (sparse; index x fastest, n basis functions in x).
+template <class T>
+struct BasisRow {
+  std::vector<std::pair<std::size_t, T>> v, dx, dy;
+};
+template <class T>
+BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y);
+
 /// The tensor-product cubic space of the guide: clamped knots on [0, 1] with k uniform inner knots.
 std::vector<Rational> guide_knots(int inner_knots);
 

@@ -1,5 +1,6 @@
 #include "io/cut_io.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -158,6 +159,84 @@ std::string solid3_vtk(const Solid3<Rational>& S) {
   std::ostringstream o;
   o << "# vtk DataFile Version 3.0\nsplinex solid3d facets (tessellated in double)\nASCII\nDATASET POLYDATA\nPOINTS " << np << " double\n"
     << pts.str() << "POLYGONS " << nq << " " << 5 * nq << "\n" << polys.str();
+  return o.str();
+}
+
+CuttingSurfaceDoc cutting_surface_from_json(const Json& doc, const Limits& limits) {
+  if (!doc.is_object() || !doc.contains("type") || doc["type"] != "cutting_surface")
+    throw ParseError("type", "must be \"cutting_surface\"", "give {\"type\": \"cutting_surface\", \"patch\": {...}, \"domain\": [[u, v], ...]}");
+  only_fields(doc, {"type", "patch", "domain", "description"}, "", "use type, patch, domain (and description)");
+  if (!doc.contains("patch")) throw ParseError("patch", "is missing", "give the patch as a spline document");
+  if (!doc.contains("domain") || !doc["domain"].is_array() || doc["domain"].size() < 3)
+    throw ParseError("domain", "must be an array of 3 or more [u, v] vertices", "give Omega's vertices, one per loop side");
+  if (doc["domain"].size() > 100000) throw SizeLimitError("domain", "has more than 100000 vertices", "give fewer");
+  CuttingSurfaceDoc d;
+  d.patch = spline_from_json(doc["patch"], limits, "patch");
+  if (d.patch.dim() != 2 || d.patch.q != 3 || d.patch.is_rational())
+    throw ParseError("patch", "must be a polynomial surface in R^3 (2 parameters, 3 coordinates, no weights)", "give a tensor-product B-spline surface");
+  for (std::size_t k = 0; k < doc["domain"].size(); ++k) {
+    const auto& v = doc["domain"][k];
+    const std::string f = "domain[" + std::to_string(k) + "]";
+    if (!v.is_array() || v.size() != 2) throw ParseError(f, "must be [u, v]", "give two numbers");
+    d.domain.push_back({json_number(v[0], f + "[0]"), json_number(v[1], f + "[1]")});
+  }
+  return d;
+}
+
+Json cutting_surface_to_json(const BSpline<Rational>& patch, const std::vector<std::array<Rational, 2>>& domain) {
+  Json v = Json::array();
+  for (const auto& w : domain) v.push_back(Json::array({to_fraction_string(w[0]), to_fraction_string(w[1])}));
+  return Json{{"type", "cutting_surface"}, {"patch", spline_to_json(patch)}, {"domain", v}};
+}
+
+std::string surface3_vtk(const BSpline<Rational>& patch, const std::vector<std::array<Rational, 2>>& domain, int n) {
+  const auto D = convert<double>(patch, [](const Rational& x) { return to_double(x); });
+  std::vector<std::array<double, 2>> poly;
+  for (const auto& w : domain) poly.push_back({to_double(w[0]), to_double(w[1])});
+  auto inside = [&](double u, double v) {  // crossing number (display only)
+    bool in = false;
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+      if ((poly[i][1] > v) != (poly[j][1] > v) && u < (poly[j][0] - poly[i][0]) * (v - poly[i][1]) / (poly[j][1] - poly[i][1]) + poly[i][0]) in = !in;
+    return in;
+  };
+  double lo[2] = {poly[0][0], poly[0][1]}, hi[2] = {poly[0][0], poly[0][1]};
+  for (const auto& p : poly)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  std::ostringstream pts, polys, lines;
+  pts << std::setprecision(17);
+  std::size_t np = 0, nq = 0;
+  std::vector<long> id((n + 1) * (n + 1), -1);
+  auto point = [&](double u, double v) {
+    const auto p = evaluate(D, std::vector<double>{u, v});
+    pts << p[0] << " " << p[1] << " " << p[2] << "\n";
+    return np++;
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double u = lo[0] + (hi[0] - lo[0]) * i / n, v = lo[1] + (hi[1] - lo[1]) * j / n;
+      if (inside(u, v)) id[i + (n + 1) * j] = static_cast<long>(point(u, v));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const long a = id[i + (n + 1) * j], b = id[i + 1 + (n + 1) * j], c = id[i + 1 + (n + 1) * (j + 1)], d = id[i + (n + 1) * (j + 1)];
+      if (a < 0 || b < 0 || c < 0 || d < 0) continue;
+      polys << "4 " << a << " " << b << " " << c << " " << d << "\n";
+      ++nq;
+    }
+  constexpr int m = 16;
+  const std::size_t first = np;
+  for (std::size_t e = 0; e < poly.size(); ++e)
+    for (int k = 0; k < m; ++k) {
+      const auto &a = poly[e], &b = poly[(e + 1) % poly.size()];
+      point(a[0] + (b[0] - a[0]) * k / m, a[1] + (b[1] - a[1]) * k / m);
+    }
+  const std::size_t nl = np - first;
+  lines << nl + 1;
+  for (std::size_t k = 0; k < nl; ++k) lines << " " << first + k;
+  lines << " " << first << "\n";
+  std::ostringstream o;
+  o << "# vtk DataFile Version 3.0\nsplinex cutting surface (trimmed patch, tessellated in double)\nASCII\nDATASET POLYDATA\nPOINTS " << np << " double\n"
+    << pts.str() << "POLYGONS " << nq << " " << 5 * nq << "\n" << polys.str() << "LINES 1 " << nl + 2 << "\n" << lines.str();
   return o.str();
 }
 

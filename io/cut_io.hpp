@@ -31,6 +31,20 @@ Json cut3_to_json(const CutData3& C);
 std::string solid3_vtk(const Solid3<Rational>& S);
 std::string guide3_vtk(const BSpline<Rational>& f, const std::array<Rational, 3>& lo, const Rational& scale, int n);
 
+/// A cutting surface: {"type": "cutting_surface", "patch": <spline document: a polynomial surface in
+/// R^3>, "domain": [[u, v], ...] (Omega, counter-clockwise, vertex j <-> loop side j's start)} in the
+/// solid's coordinates. Read exactly; the domain's shape is checked by certify_cutting_surface.
+struct CuttingSurfaceDoc {
+  BSpline<Rational> patch;
+  std::vector<std::array<Rational, 2>> domain;
+};
+CuttingSurfaceDoc cutting_surface_from_json(const Json& doc, const Limits& limits = {});
+Json cutting_surface_to_json(const BSpline<Rational>& patch, const std::vector<std::array<Rational, 2>>& domain);
+
+/// The trimmed patch for ParaView: the cells of an n x n grid of Omega's bounding box whose four
+/// corners lie in Omega, as quadrilaterals (POLYDATA, in double), and the boundary p(dOmega) as a line.
+std::string surface3_vtk(const BSpline<Rational>& patch, const std::vector<std::array<Rational, 2>>& domain, int n);
+
 /// The "type" of a solid document ("solid2d" or "solid3d"); ParseError otherwise.
 std::string solid_document_type(const Json& doc);
 

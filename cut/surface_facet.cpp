@@ -1,0 +1,852 @@
+#include "cut/surface_facet.hpp"
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/intersections.h>
+#include <mpfr.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <chrono>
+#include <deque>
+#include <iostream>
+
+#include "compose/compose.hpp"
+#include "cut/guide.hpp"
+#include "cut/qp.hpp"
+#include "exact/linear_solve.hpp"
+#include "spline/bezier.hpp"
+#include "spline/errors.hpp"
+#include "spline/evaluate.hpp"
+#include "spline/factories.hpp"
+#include "spline/hodograph.hpp"
+#include "spline/tensor_bernstein.hpp"
+
+namespace splinex {
+
+namespace {
+
+using P2 = std::array<Rational, 2>;
+using P3 = std::array<Rational, 3>;
+using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
+using detail::Bern;
+
+K::Point_2 cg(const P2& p) { return K::Point_2(CGAL::Gmpq(p[0].backend().data()), CGAL::Gmpq(p[1].backend().data())); }
+
+std::vector<K::Point_2> cg_polygon(const std::vector<P2>& v) {
+  std::vector<K::Point_2> r;
+  for (const auto& p : v) r.push_back(cg(p));
+  return r;
+}
+
+Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
+Rational max_abs3(const P3& a) { return std::max(rabs(a[0]), std::max(rabs(a[1]), rabs(a[2]))); }
+
+// ---- Step 1 --------------------------------------------------------------------------------------
+
+// The point (1/2 + cos(a) / 2, 1/2 + sin(a) / 2), a = 2 pi (phi + 1/(2n)), each coordinate rounded to
+// a multiple of 2^-11 (MPFR at 160 bits, not double). Small common denominators keep the patch
+// program's exact numbers short (points exactly on the circle had 100-bit denominators, and the
+// exact KKT system took minutes).
+P2 circle_point(const Rational& phi, std::size_t n) {
+  mpfr_t a, c, sn;
+  mpfr_inits2(160, a, c, sn, static_cast<mpfr_ptr>(nullptr));
+  const Rational f = phi + Rational(1, static_cast<long>(2 * n));
+  mpfr_set_q(a, f.backend().data(), MPFR_RNDN);
+  mpfr_const_pi(c, MPFR_RNDN);
+  mpfr_mul(a, a, c, MPFR_RNDN);
+  mpfr_mul_2ui(a, a, 1, MPFR_RNDN);  // 2 pi f
+  mpfr_sin_cos(sn, c, a, MPFR_RNDN);
+  P2 r;
+  mpfr_ptr v[2] = {c, sn};
+  for (int k = 0; k < 2; ++k) {
+    mpfr_mul_2ui(v[k], v[k], 10, MPFR_RNDN);
+    mpfr_round(v[k], v[k]);
+    mpz_t z;
+    mpz_init(z);
+    mpfr_get_z(z, v[k], MPFR_RNDN);
+    Rational q;
+    mpq_set_z(q.backend().data(), z);
+    mpz_clear(z);
+    r[k] = Rational(1, 2) + q / 2048;
+  }
+  mpfr_clears(a, c, sn, static_cast<mpfr_ptr>(nullptr));
+  return r;
+}
+
+// An approximation of |d| (relative error far below 2^-60), only used to place the circle's vertices.
+Rational approximate_length(const P3& d) {
+  mpfr_t a, b;
+  mpfr_inits2(128, a, b, static_cast<mpfr_ptr>(nullptr));
+  const Rational s = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  mpfr_set_q(a, s.backend().data(), MPFR_RNDN);
+  mpfr_sqrt(a, a, MPFR_RNDN);
+  mpfr_mul_2ui(a, a, 64, MPFR_RNDN);
+  mpz_t z;
+  mpz_init(z);
+  mpfr_get_z(z, a, MPFR_RNDN);
+  Rational r;
+  mpq_set_z(r.backend().data(), z);
+  mpz_clear(z);
+  mpfr_clears(a, b, static_cast<mpfr_ptr>(nullptr));
+  return r / Rational(boost::multiprecision::mpz_int(1) << 64);
+}
+
+bool simple_polygon(const std::vector<P2>& v, std::string& why) {
+  for (std::size_t j = 0; j < v.size(); ++j)
+    if (v[j] == v[(j + 1) % v.size()]) {
+      why = "loop side " + std::to_string(j) + " collapses to a point in the projection";
+      return false;
+    }
+  const auto poly = cg_polygon(v);
+  if (!CGAL::is_simple_2(poly.begin(), poly.end(), K())) {
+    why = "the projected loop intersects itself";
+    return false;
+  }
+  return true;
+}
+
+// ---- Step 2 --------------------------------------------------------------------------------------
+
+template <class T>
+T from_q(const Rational& x) {
+  return ArithTraits<T>::from_rational(x);
+}
+
+// x rounded to a multiple of 2^-20 (exactly, to nearest): the loop sides' unit normals carry
+// 80-bit denominators from the exact inverse square root, all different; summed into the program
+// they made its numbers thousands of bits long. The normal term only needs the direction.
+Rational dyadic20(const Rational& x) {
+  const Rational y = x * (1 << 20);
+  boost::multiprecision::mpz_int q = numerator(y) / denominator(y);  // toward zero
+  Rational r(q);
+  if (y - r >= Rational(1, 2)) r += 1;
+  else if (r - y > Rational(1, 2)) r -= 1;
+  return r / (1 << 20);
+}
+
+template <class T>
+void add_outer(QuadraticProgram<T>& qp, const std::vector<std::pair<std::size_t, T>>& a, const T& w) {
+  for (const auto& [i, vi] : a)
+    for (const auto& [j, vj] : a) qp.d(i, j) += w * vi * vj;
+}
+
+Rational dot(const std::vector<std::pair<std::size_t, Rational>>& a, const std::vector<Rational>& x) {
+  Rational s(0);
+  for (const auto& [i, v] : a) s += v * x[i];
+  return s;
+}
+
+// ---- certificates --------------------------------------------------------------------------------
+
+bool box_meets_polygon(const P2& lo, const P2& hi, const std::vector<K::Point_2>& poly) {
+  const K::Iso_rectangle_2 box(cg(lo), cg(hi));
+  for (std::size_t j = 0; j < poly.size(); ++j)
+    if (CGAL::do_intersect(K::Segment_2(poly[j], poly[(j + 1) % poly.size()]), box)) return true;
+  return CGAL::bounded_side_2(poly.begin(), poly.end(), cg(lo), K()) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
+bool in_polygon(const P2& w, const std::vector<K::Point_2>& poly) {
+  return CGAL::bounded_side_2(poly.begin(), poly.end(), cg(w), K()) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
+bool in_strip(const std::vector<LoopSide3>& loop, const P3& x, const Rational& strip) {
+  for (const auto& L : loop)
+    if (within_segment(x, L.start, L.end, strip)) return true;
+  return false;
+}
+
+bool box_in_strip(const std::vector<LoopSide3>& loop, const std::array<Rational, 6>& b, const Rational& strip) {
+  for (const auto& L : loop) {
+    bool all = true;
+    for (int m = 0; m < 8 && all; ++m)
+      all = within_segment(P3{(m & 1) ? b[3] : b[0], (m & 2) ? b[4] : b[1], (m & 4) ? b[5] : b[2]}, L.start, L.end, strip);
+    if (all) return true;
+  }
+  return false;
+}
+
+P3 eval3(const BSpline<Rational>& S, const P2& w) {
+  const auto v = evaluate(S, std::vector<Rational>{w[0], w[1]});
+  return {v[0], v[1], v[2]};
+}
+
+Bern<Rational> scaled(Bern<Rational> b, const Rational& s) {
+  for (auto& c : b.c) c *= s;
+  return b;
+}
+
+// The piece of the patch (extract_bezier) whose box holds w.
+const BezierPiece<Rational>& piece_at(const std::vector<BezierPiece<Rational>>& pieces, const P2& w) {
+  for (const auto& p : pieces)
+    if (p.box[0].first <= w[0] && w[0] <= p.box[0].second && p.box[1].first <= w[1] && w[1] <= p.box[1].second) return p;
+  throw std::logic_error("piece_at: outside the patch");
+}
+
+// The edge W0 -> W1 cut at the patch's knot lines: the parameters s in [0, 1] of the crossings.
+std::vector<Rational> edge_breaks(const P2& W0, const P2& W1, const std::vector<Rational>& knots) {
+  std::vector<Rational> s{Rational(0), Rational(1)};
+  for (int d = 0; d < 2; ++d) {
+    const Rational e = W1[d] - W0[d];
+    if (e == 0) continue;
+    for (const auto& k : knots) {
+      const Rational t = (k - W0[d]) / e;
+      if (t > 0 && t < 1) s.push_back(t);
+    }
+  }
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
+
+struct Triangle {
+  P3 a, b, c;
+};
+
+P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+Rational dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+std::optional<std::vector<Triangle>> planar_quads(const Solid3<Rational>& S, std::string& why) {
+  std::vector<Triangle> t;
+  for (std::size_t i = 0; i < S.facets.size(); ++i) {
+    const auto& F = S.facets[i];
+    if (F.degrees != std::vector<int>{1, 1} || F.count(0) != 2 || F.count(1) != 2) {
+      why = "facets[" + std::to_string(i) + "] is not a bilinear quadrilateral";
+      return std::nullopt;
+    }
+    auto P = [&](std::size_t k) { return P3{F.points[3 * k], F.points[3 * k + 1], F.points[3 * k + 2]}; };
+    const P3 a = P(0), b = P(1), d = P(2), c = P(3);  // P00, P10, P01, P11
+    const P3 n = cross(sub(b, a), sub(d, a));
+    if (dot3(n, sub(c, a)) != 0) {
+      why = "facets[" + std::to_string(i) + "] is not planar";
+      return std::nullopt;
+    }
+    // convex: the corners a b c d turn the same way as n
+    const std::array<P3, 4> q{a, b, c, d};
+    for (int k = 0; k < 4; ++k)
+      if (!(dot3(cross(sub(q[(k + 1) % 4], q[k]), sub(q[(k + 2) % 4], q[(k + 1) % 4])), n) > 0)) {
+        why = "facets[" + std::to_string(i) + "] is not a convex quadrilateral";
+        return std::nullopt;
+      }
+    t.push_back({a, b, c});
+    t.push_back({a, c, d});
+  }
+  return t;
+}
+
+// Exact ray parity. 0: inside, 1: outside, 2: on the boundary, -1: degenerate ray.
+int parity(const std::vector<Triangle>& tris, const P3& x, const P3& r) {
+  std::size_t hits = 0;
+  for (const auto& T : tris) {
+    const P3 e1 = sub(T.b, T.a), e2 = sub(T.c, T.a), s = sub(x, T.a);
+    const P3 h = cross(r, e2);
+    const Rational det = dot3(e1, h);
+    if (det == 0) {
+      const P3 n = cross(e1, e2);
+      if (dot3(s, n) != 0) continue;  // parallel, off the plane
+      // x in the triangle's plane: on the triangle (barycentric by areas) or a degenerate ray
+      const Rational A = dot3(n, n);
+      const Rational beta = dot3(cross(s, e2), n) / A, gamma = dot3(cross(e1, s), n) / A;
+      if (beta >= 0 && gamma >= 0 && beta + gamma <= 1) return 2;
+      return -1;
+    }
+    const Rational beta = dot3(s, h) / det;
+    const P3 q = cross(s, e1);
+    const Rational gamma = dot3(r, q) / det, t = dot3(e2, q) / det;
+    const bool closed = beta >= 0 && gamma >= 0 && beta + gamma <= 1;
+    if (t == 0 && closed) return 2;
+    if (t > 0 && closed) {
+      if (beta == 0 || gamma == 0 || beta + gamma == 1) return -1;
+      ++hits;
+    }
+  }
+  return hits % 2 ? 0 : 1;
+}
+
+}  // namespace
+
+// ---- Step 1 --------------------------------------------------------------------------------------
+
+std::array<Rational, 3> newell_normal(const std::vector<LoopSide3>& loop) {
+  const std::size_t n = loop.size();
+  P3 N{Rational(0), Rational(0), Rational(0)};
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto &a = loop[j].start, &b = loop[(j + 1) % n].start;
+    N[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    N[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    N[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return N;
+}
+
+std::array<int, 2> projection_axes(const std::vector<LoopSide3>& loop) {
+  const P3 N = newell_normal(loop);
+  int ax = 0;
+  for (int k = 1; k < 3; ++k)
+    if (rabs(N[k]) > rabs(N[ax])) ax = k;
+  std::array<int, 2> a{(ax + 1) % 3, (ax + 2) % 3};
+  if (N[ax] < 0) std::swap(a[0], a[1]);
+  return a;
+}
+
+DomainPolygon domain_polygon(const std::vector<LoopSide3>& loop, const std::string& method) {
+  const std::size_t n = loop.size();
+  if (n < 3) throw DomainError("cut", "the loop has " + std::to_string(n) + " sides; a cutting surface needs at least 3", "choose b so that the loop has 3 or more sides");
+  if (method != "auto" && method != "projection" && method != "circle")
+    throw UsageError("domain", "'" + method + "' is not a domain method", "give auto, projection or circle");
+  DomainPolygon D;
+  const P3 N = newell_normal(loop);
+  D.axes = projection_axes(loop);
+  const int ax = 3 - D.axes[0] - D.axes[1];
+  if (method != "circle") {
+    std::vector<P2> q;
+    for (const auto& L : loop) q.push_back({L.start[D.axes[0]], L.start[D.axes[1]]});
+    P2 lo = q[0], hi = q[0];
+    for (const auto& p : q)
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const Rational ext = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    std::string why;
+    if (N[ax] == 0 || ext == 0) {
+      why = "the loop's Newell normal is zero (the loop encloses no area in any projection)";
+    } else {
+      for (auto& p : q)
+        for (int k = 0; k < 2; ++k) p[k] = (p[k] - lo[k]) / ext + (ext - (hi[k] - lo[k])) / (2 * ext);
+      if (simple_polygon(q, why)) {
+        D.method = "projection";
+        D.vertices = q;
+        return D;
+      }
+    }
+    if (method == "projection")
+      throw DomainError("domain", "the projection of the loop is not a simple polygon: " + why, "give --domain circle or auto");
+    D.why_not_projection = why;
+  }
+  // the circle: vertices at angles proportional to arc length, exactly on the circle
+  std::vector<Rational> len;
+  Rational total(0);
+  for (const auto& L : loop) len.push_back(approximate_length(sub(L.end, L.start))), total += len.back();
+  Rational cum(0);
+  for (std::size_t j = 0; j < n; ++j) {
+    D.vertices.push_back(circle_point(cum / total, n));
+    cum += len[j];
+  }
+  std::string why;
+  if (!simple_polygon(D.vertices, why))
+    throw DomainError("cut", "the circle's vertices (on a 2^-11 grid) do not form a simple polygon: " + why, "merge very short loop sides");
+  D.method = "circle";
+  return D;
+}
+
+void validate_surface_options(const SurfaceFacetOptions& o) {
+  if (o.inner_knots < 0 || o.inner_knots > 15)
+    throw UsageError("patch-inner-knots", "must be in 0..15 (the exact KKT system is dense: 3 (k+4)^2 unknowns)", "give 0..15 (the paper: 3)");
+  if (o.boundary_samples < 1 || o.boundary_samples > 1000) throw UsageError("boundary-samples", "must be in 1..1000", "give e.g. 4");
+  if (!(o.weight_boundary > 0)) throw UsageError("weight-boundary", "must be > 0", "give e.g. 1");
+  if (o.weight_fair < 0) throw UsageError("weight-fair", "must be >= 0", "give e.g. 1");
+  if (o.lambda < 0) throw UsageError("lambda", "must be >= 0", "give e.g. 1");
+  if (o.tangent_delta < 0) throw UsageError("tangent-delta", "must be >= 0", "give e.g. 1/20");
+  if (!(o.strip > 0)) throw UsageError("strip", "must be > 0", "give e.g. 1/16");
+  if (o.max_depth < 0 || o.max_depth > 40) throw UsageError("max-depth", "must be in 0..40", "give e.g. 14");
+  if (o.domain != "auto" && o.domain != "projection" && o.domain != "circle")
+    throw UsageError("domain", "'" + o.domain + "' is not a domain method", "give auto, projection or circle");
+}
+
+// ---- Step 2 --------------------------------------------------------------------------------------
+
+template <class T>
+CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
+  validate_surface_options(o);
+  const auto t0 = std::chrono::steady_clock::now();
+  CuttingSurface<T> R;
+  R.domain = domain_polygon(loop, o.domain);
+  const auto& W = R.domain.vertices;
+  const std::size_t ns = loop.size();
+  const auto Uq = guide_knots(o.inner_knots);
+  std::vector<T> U;
+  for (const auto& k : Uq) U.push_back(from_q<T>(k));
+  const std::size_t n = Uq.size() - 4, N = n * n, nv = 3 * N;
+  QuadraticProgram<T> qp;
+  qp.n = nv;
+  qp.D.assign(nv * nv, T(0));
+  qp.c.assign(nv, T(0));
+  const auto M = regularization_matrix(U, U);
+  const T wf = from_q<T>(o.weight_fair);
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j) qp.d(c * N + i, c * N + j) += wf * M[i * N + j];
+  const int m = o.boundary_samples;
+  const T omega = from_q<T>(o.weight_boundary / Rational(static_cast<long>(ns) * m));
+  const T lam = from_q<T>(o.lambda);
+  using Row = typename QuadraticProgram<T>::Row;
+  std::vector<Row> eq, ineq;
+  for (std::size_t j = 0; j < ns; ++j) {
+    const P2 &W0 = W[j], &W1 = W[(j + 1) % ns];
+    const P2 e{W1[0] - W0[0], W1[1] - W0[1]};
+    const Rational em = std::max(rabs(e[0]), rabs(e[1]));
+    const P2 inward{-e[1] / em, e[0] / em};
+    const auto& L = loop[j];
+    // equality: the vertex
+    {
+      const auto row = basis_row(U, n, U, n, from_q<T>(W0[0]), from_q<T>(W0[1]));
+      for (std::size_t c = 0; c < 3; ++c) {
+        Row r;
+        for (const auto& [i, v] : row.v) r.a.emplace_back(c * N + i, v);
+        r.b = from_q<T>(L.start[c]);
+        eq.push_back(r);
+      }
+    }
+    for (int k = 0; k < m; ++k) {
+      const Rational s(2 * k + 1, 2 * m);
+      const P2 w{W0[0] + s * e[0], W0[1] + s * e[1]};
+      const auto row = basis_row(U, n, U, n, from_q<T>(w[0]), from_q<T>(w[1]));
+      for (std::size_t c = 0; c < 3; ++c) {
+        const T Lc = from_q<T>(L.start[c] + s * (L.end[c] - L.start[c]));
+        for (const auto& [i, vi] : row.v) {
+          for (const auto& [i2, v2] : row.v) qp.d(c * N + i, c * N + i2) += omega * vi * v2;
+          qp.c[c * N + i] += T(-2) * omega * Lc * vi;
+        }
+        qp.c0 += omega * Lc * Lc;
+      }
+      std::vector<std::pair<std::size_t, T>> au, av, at;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const T nc = from_q<T>(dyadic20(L.normal[c])), tc = from_q<T>(L.tangent[c]);
+        for (std::size_t q = 0; q < row.v.size(); ++q) {
+          const std::size_t i = row.v[q].first;
+          au.emplace_back(c * N + i, nc * row.dx[q].second);
+          av.emplace_back(c * N + i, nc * row.dy[q].second);
+          at.emplace_back(c * N + i, tc * (row.dx[q].second * from_q<T>(inward[0]) + row.dy[q].second * from_q<T>(inward[1])));
+        }
+      }
+      add_outer(qp, au, T(omega * lam));
+      add_outer(qp, av, T(omega * lam));
+      Row r;
+      r.a = at;
+      r.b = from_q<T>(o.tangent_delta);
+      ineq.push_back(r);
+    }
+  }
+  R.variables = nv, R.equalities = eq.size(), R.inequalities = ineq.size();
+  if (o.progress)
+    std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": assembled " << nv << " variables, " << eq.size() << " equalities, " << ineq.size()
+              << " inequalities (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s); solving\n";
+  // the full program: each equality as a pair of rows, then the inequalities
+  for (const auto& r : eq) {
+    qp.rows.push_back(r);
+    Row le = r;
+    le.at_least = false;
+    qp.rows.push_back(le);
+  }
+  for (const auto& r : ineq) qp.rows.push_back(r);
+
+  // A primal active-set method on exact (or double) KKT systems: the equalities and a working set
+  // of inequalities held as equalities, [2D A^T; A 0] [x; mu] = [-c; b]. A violated inequality
+  // joins the working set (the most violated first), a working row whose multiplier -mu is
+  // negative leaves it; at most `active_set_steps` steps, then CGAL's QP solver on the whole
+  // program. Whatever solves it, the KKT conditions of the full program are checked exactly below.
+  const auto exact_qp = [&] {
+    if constexpr (std::is_same_v<T, Rational>) return qp;
+    else return exact_program(qp);
+  }();
+  const std::size_t ne = eq.size();
+  auto solve_kkt = [&](const std::vector<std::size_t>& work, std::vector<Rational>& x, std::vector<Rational>& mu) {
+    std::vector<const Row*> rows;
+    for (const auto& r : eq) rows.push_back(&r);
+    for (auto w : work) rows.push_back(&ineq[w]);
+    const std::size_t nr = rows.size(), nk = nv + nr;
+    x.clear(), mu.clear();
+    if constexpr (std::is_same_v<T, Rational>) {
+      std::vector<Rational> A(nk * nk, Rational(0)), B(nk, Rational(0));
+      for (std::size_t i = 0; i < nv; ++i) {
+        for (std::size_t j = 0; j < nv; ++j) A[i * nk + j] = 2 * qp.d(i, j);
+        B[i] = -qp.c[i];
+      }
+      for (std::size_t r = 0; r < nr; ++r) {
+        for (const auto& [i, v] : rows[r]->a) A[(nv + r) * nk + i] = v, A[i * nk + nv + r] = v;
+        B[nv + r] = rows[r]->b;
+      }
+      const auto X = solve_linear_exact(A, nk, B, 1);
+      if (!X) return false;
+      x.assign(X->begin(), X->begin() + nv);
+      mu.assign(X->begin() + nv, X->end());
+      return true;
+    } else {
+      Eigen::MatrixXd A = Eigen::MatrixXd::Zero(nk, nk);
+      Eigen::VectorXd B = Eigen::VectorXd::Zero(nk);
+      for (std::size_t i = 0; i < nv; ++i) {
+        for (std::size_t j = 0; j < nv; ++j) A(i, j) = 2 * qp.d(i, j);
+        B(i) = -qp.c[i];
+      }
+      for (std::size_t r = 0; r < nr; ++r) {
+        for (const auto& [i, v] : rows[r]->a) A(nv + r, i) = v, A(i, nv + r) = v;
+        B(nv + r) = rows[r]->b;
+      }
+      Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+      if (!lu.isInvertible()) return false;
+      const Eigen::VectorXd X = lu.solve(B);
+      for (std::size_t i = 0; i < nk; ++i)
+        if (!std::isfinite(X(i))) return false;
+      for (std::size_t i = 0; i < nv; ++i) x.push_back(exact_from_double(X(i)));
+      for (std::size_t r = 0; r < nr; ++r) mu.push_back(exact_from_double(X(nv + r)));
+      return true;
+    }
+  };
+  std::vector<std::size_t> work;
+  std::vector<Rational> x, mu;
+  if (!solve_kkt(work, x, mu))
+    throw DomainError("patch-inner-knots",
+                      "the interpolation conditions at the loop's " + std::to_string(ns) + " vertices are singular for " +
+                          std::to_string(o.inner_knots) + " inner knots (too few basis functions for the vertices)",
+                      "raise --patch-inner-knots");
+  const std::string kind = std::is_same_v<T, Rational> ? "exact (FLINT, Dixon p-adic solves)" : "double (Eigen FullPivLU)";
+  bool optimal = false;
+  int steps = 0;
+  for (; steps <= o.active_set_steps; ++steps) {
+    // a working row with a negative multiplier (y = -mu < 0) leaves
+    std::size_t drop = work.size();
+    for (std::size_t k = 0; k < work.size(); ++k)
+      if (mu[ne + k] > 0 && (drop == work.size() || mu[ne + k] > mu[ne + drop])) drop = k;
+    if (drop < work.size()) {
+      work.erase(work.begin() + static_cast<long>(drop));
+    } else {
+      std::size_t add = ineq.size();
+      Rational worst(0);
+      for (std::size_t r = 0; r < ineq.size(); ++r) {
+        if (std::find(work.begin(), work.end(), r) != work.end()) continue;
+        const auto& row = exact_qp.rows[2 * ne + r];
+        const Rational gap = row.b - dot(row.a, x);
+        if (gap > worst) worst = gap, add = r;
+      }
+      if (add == ineq.size()) {
+        optimal = true;
+        break;
+      }
+      work.push_back(add);
+    }
+    if (o.progress && steps % 10 == 9)
+      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": active set step " << steps + 1 << ", " << work.size() << " tangent rows active\n";
+    std::vector<Rational> x2, mu2;
+    if (!solve_kkt(work, x2, mu2)) break;  // dependent rows: leave it to CGAL
+    x = std::move(x2), mu = std::move(mu2);
+  }
+  QPSolution sol;
+  if (optimal) {
+    R.solver = (work.empty() ? "KKT system of the equality-constrained program, " : "active set (" + std::to_string(steps) + " steps) on KKT systems, ") + kind;
+    sol.status = QPStatus::optimal;
+    sol.x = x;
+    sol.y.assign(qp.rows.size(), Rational(0));
+    // 2 D x + c = -A^T mu = sum_r y_r s_r a_r: an equality's >= row takes -mu, its <= row +mu;
+    // a working inequality (a >= row) takes -mu
+    for (std::size_t r = 0; r < ne; ++r) {
+      if (mu[r] < 0) sol.y[2 * r] = -mu[r];
+      else sol.y[2 * r + 1] = mu[r];
+    }
+    for (std::size_t k = 0; k < work.size(); ++k) sol.y[2 * ne + work[k]] = -mu[ne + k];
+  } else {
+    if (o.progress) std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the active set did not finish; CGAL's QP solver on the whole program\n";
+    sol = solve_qp(qp);
+    R.solver = std::string("CGAL's QP solver ") + (std::is_same_v<T, Rational> ? "(exact, Gmpz)" : "on doubles (Gmpzf)") +
+               " after the active set did not finish";
+    if (sol.status != QPStatus::optimal)
+      throw DomainError("tangent-delta", "the patch program is " + to_string(sol.status) + ": no patch with t . dp/dm >= tangent_delta at every boundary sample",
+                        "lower --tangent-delta or raise --patch-inner-knots");
+    x = sol.x;
+  }
+  const auto kkt = check_kkt(exact_qp, sol);
+  R.kkt_holds = kkt.holds;
+  R.kkt_failed = kkt.failed;
+  R.active_inequalities = 0;
+  for (std::size_t r = 0; r < ineq.size(); ++r)
+    if (dot(exact_qp.rows[2 * ne + r].a, x) == exact_qp.rows[2 * ne + r].b) ++R.active_inequalities;
+  R.coefficients = x;
+  std::vector<Rational> pts(3 * N);
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < N; ++i) pts[3 * i + c] = x[c * N + i];
+  R.patch = make_spline<Rational>({3, 3}, {Uq, Uq}, 3, pts);
+  R.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return R;
+}
+
+template CuttingSurface<Rational> cutting_surface(const std::vector<LoopSide3>&, const SurfaceFacetOptions&);
+template CuttingSurface<double> cutting_surface(const std::vector<LoopSide3>&, const SurfaceFacetOptions&);
+
+// ---- certificates --------------------------------------------------------------------------------
+
+std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3& x) {
+  std::string why;
+  const auto tris = planar_quads(solid, why);
+  if (!tris) return std::nullopt;
+  static const std::array<P3, 6> rays{P3{Rational(1), Rational(17, 4099), Rational(29, 8191)},
+                                      P3{Rational(-31, 7919), Rational(1), Rational(13, 6007)},
+                                      P3{Rational(19, 5003), Rational(-23, 9001), Rational(1)},
+                                      P3{Rational(-1), Rational(37, 7901), Rational(-41, 8839)},
+                                      P3{Rational(43, 9973), Rational(-1), Rational(-47, 9967)},
+                                      P3{Rational(-53, 9949), Rational(59, 9941), Rational(-1)}};
+  for (const auto& r : rays) {
+    const int p = parity(*tris, x, r);
+    if (p == 0) return Membership::inside;
+    if (p == 1) return Membership::outside;
+    if (p == 2) return Membership::boundary;
+  }
+  return std::nullopt;
+}
+
+SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
+                                        const BSpline<Rational>& patch, const SurfaceFacetOptions& o) {
+  validate_surface_options(o);
+  const auto t0 = std::chrono::steady_clock::now();
+  SurfaceValidity V;
+  const auto& W = domain.vertices;
+  const std::size_t ns = loop.size();
+  if (W.size() != ns) throw UsageError("domain", "has " + std::to_string(W.size()) + " vertices for " + std::to_string(ns) + " loop sides", "give one vertex per loop side");
+  if (patch.dim() != 2 || patch.q != 3 || patch.is_rational())
+    throw UsageError("patch", "must be a polynomial surface in R^3", "give a tensor-product B-spline surface with 3 coordinates");
+  for (const auto& w : W)
+    if (!(w[0] >= patch.domain_lo(0) && w[0] <= patch.domain_hi(0) && w[1] >= patch.domain_lo(1) && w[1] <= patch.domain_hi(1)))
+      throw DomainError("domain", "a vertex of Omega lies outside the patch's parameter domain", "give Omega inside the patch's domain");
+  const auto poly = cg_polygon(W);
+  if (!CGAL::is_simple_2(poly.begin(), poly.end(), K()) || CGAL::orientation_2(poly.begin(), poly.end(), K()) != CGAL::COUNTERCLOCKWISE)
+    throw DomainError("domain", "Omega is not a simple counter-clockwise polygon", "give its vertices counter-clockwise without self-intersection");
+  const auto pieces = extract_bezier(patch);
+  std::vector<Rational> knots_all;
+  for (int d = 0; d < 2; ++d)
+    for (const auto& k : patch.knots[d]) knots_all.push_back(k);
+  bool undecided = false;
+
+  auto progress = [&](const std::string& what) {
+    if (o.progress)
+      std::cerr << "[cut facet] " << what << " (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s)\n";
+  };
+  progress("certificate: vertices, boundary and tangents");
+  // vertices
+  V.vertices_exact = true;
+  for (std::size_t j = 0; j < ns; ++j) {
+    const Rational e = max_abs3(sub(eval3(patch, W[j]), loop[j].start));
+    if (e > 0) V.vertices_exact = false;
+    V.vertex_error = std::max(V.vertex_error, e);
+  }
+
+  // boundary deviation and tangents, edge by edge, piece by piece
+  V.tangents = "certified";
+  for (std::size_t j = 0; j < ns && !V.witness; ++j) {
+    const P2 &W0 = W[j], &W1 = W[(j + 1) % ns];
+    const P2 e{W1[0] - W0[0], W1[1] - W0[1]};
+    const Rational em = std::max(rabs(e[0]), rabs(e[1]));
+    const P2 inward{-e[1] / em, e[0] / em};
+    const auto& L = loop[j];
+    const auto br = edge_breaks(W0, W1, knots_all);
+    for (std::size_t b = 0; b + 1 < br.size() && !V.witness; ++b) {
+      const Rational s0 = br[b], s1 = br[b + 1];
+      const P2 a{W0[0] + s0 * e[0], W0[1] + s0 * e[1]}, c{W0[0] + s1 * e[0], W0[1] + s1 * e[1]};
+      const auto& cell = piece_at(pieces, {(a[0] + c[0]) / 2, (a[1] + c[1]) / 2});
+      const auto seg = bezier<Rational>({1}, 2, {a[0], a[1], c[0], c[1]});
+      const auto pc = compose_bezier(cell.spline, seg);
+      const int p = pc.degrees[0];
+      for (int k = 0; k <= p; ++k) {
+        const Rational s = s0 + (s1 - s0) * Rational(k, p);
+        for (int cc = 0; cc < 3; ++cc)
+          V.boundary_deviation = std::max(V.boundary_deviation, rabs(pc.points[3 * k + cc] - (L.start[cc] + s * (L.end[cc] - L.start[cc]))));
+      }
+      // g(s) = t . (p_u m_u + p_v m_v) along the piece
+      const auto du = compose_bezier(hodograph(cell.spline, 0), seg), dv = compose_bezier(hodograph(cell.spline, 1), seg);
+      if (du.degrees != dv.degrees) throw std::logic_error("certify_cutting_surface: derivative degrees differ");
+      Bern<Rational> g;
+      g.deg = du.degrees;
+      g.c.assign(du.count(0), Rational(0));
+      for (std::size_t k = 0; k < g.c.size(); ++k)
+        for (int cc = 0; cc < 3; ++cc) g.c[k] += L.tangent[cc] * (du.points[3 * k + cc] * inward[0] + dv.points[3 * k + cc] * inward[1]);
+      // halving queue on [lo, hi] of the local parameter
+      std::deque<std::tuple<Bern<Rational>, Rational, Rational, int>> q;
+      q.emplace_back(g, Rational(0), Rational(1), 0);
+      while (!q.empty()) {
+        auto [h, lo, hi, depth] = q.front();
+        q.pop_front();
+        if (detail::bern_sign(h) > 0) continue;
+        const Rational mid = detail::bern_value(h, std::vector<Rational>{Rational(1, 2)});
+        if (!(mid > 0)) {
+          const Rational tau = (lo + hi) / 2, s = s0 + (s1 - s0) * tau;
+          const P2 w{W0[0] + s * e[0], W0[1] + s * e[1]};
+          V.tangents = "violated";
+          V.witness = SurfaceValidity::Witness{"tangent", w, eval3(patch, w), mid,
+                                               "t . (dp/dm) <= 0 on loop side " + std::to_string(j) + ": the prescribed tangent does not point into the patch"};
+          break;
+        }
+        if (depth >= o.max_depth) {
+          V.tangents = "undecided";
+          continue;
+        }
+        auto [h1, h2] = detail::bern_split(h, 0, Rational(1, 2));
+        q.emplace_back(h1, lo, (lo + hi) / 2, depth + 1);
+        q.emplace_back(h2, (lo + hi) / 2, hi, depth + 1);
+      }
+    }
+  }
+  if (V.tangents == "undecided") undecided = true;
+
+  progress("certificate: regularity and injectivity");
+  // regularity and injectivity: the projection's Jacobian
+  P2 blo = W[0], bhi = W[0];
+  for (const auto& w : W)
+    for (int k = 0; k < 2; ++k) blo[k] = std::min(blo[k], w[k]), bhi[k] = std::max(bhi[k], w[k]);
+  const int a0 = domain.axes[0], a1 = domain.axes[1];
+  struct Cell {
+    Bern<Rational> A, Q, det;
+    P2 lo, hi;
+  };
+  std::vector<Cell> cells;
+  for (const auto& pc : pieces) {
+    const P2 lo{pc.box[0].first, pc.box[1].first}, hi{pc.box[0].second, pc.box[1].second};
+    if (!(lo[0] < bhi[0] && blo[0] < hi[0] && lo[1] < bhi[1] && blo[1] < hi[1])) continue;
+    const Rational hu = hi[0] - lo[0], hv = hi[1] - lo[1];
+    const auto X = detail::bern_coordinate(pc.spline, a0), Y = detail::bern_coordinate(pc.spline, a1);
+    const auto A = scaled(detail::bern_derivative(X, 0), 1 / hu), B1 = scaled(detail::bern_derivative(X, 1), 1 / hv);
+    const auto B2 = scaled(detail::bern_derivative(Y, 0), 1 / hu), C = scaled(detail::bern_derivative(Y, 1), 1 / hv);
+    const auto AC = detail::bern_product(A, C);
+    const auto S = detail::bern_combine(B1, B2, false);
+    Cell cl;
+    cl.A = A;
+    cl.Q = detail::bern_combine(scaled(AC, Rational(4)), detail::bern_product(S, S), true);
+    cl.det = detail::bern_combine(AC, detail::bern_product(B1, B2), true);
+    // restricted to the bounding box of Omega
+    const P2 rlo{std::max(lo[0], blo[0]), std::max(lo[1], blo[1])}, rhi{std::min(hi[0], bhi[0]), std::min(hi[1], bhi[1])};
+    for (int d = 0; d < 2; ++d) {
+      const Rational h = hi[d] - lo[d], fa = (rlo[d] - lo[d]) / h, fc = (rhi[d] - lo[d]) / h;
+      if (fa > 0 || fc < 1) {
+        cl.A = detail::bern_restrict(cl.A, d, fa, fc);
+        cl.Q = detail::bern_restrict(cl.Q, d, fa, fc);
+        cl.det = detail::bern_restrict(cl.det, d, fa, fc);
+      }
+    }
+    cl.lo = rlo, cl.hi = rhi;
+    cells.push_back(cl);
+  }
+  auto certify_cells = [&](bool monotone) {
+    std::deque<std::tuple<Cell, int>> q;
+    for (const auto& c : cells) q.emplace_back(c, 0);
+    std::size_t examined = 0;
+    while (!q.empty()) {
+      auto [c, depth] = q.front();
+      q.pop_front();
+      if (++examined > o.max_pieces) return false;
+      if (!monotone && !box_meets_polygon(c.lo, c.hi, poly)) continue;
+      if (monotone ? (detail::bern_sign(c.A) > 0 && detail::bern_sign(c.Q) > 0) : detail::bern_sign(c.det) > 0) continue;
+      const std::vector<Rational> half{Rational(1, 2), Rational(1, 2)};
+      if (monotone ? (!(detail::bern_value(c.A, half) > 0) || !(detail::bern_value(c.Q, half) > 0)) : !(detail::bern_value(c.det, half) > 0)) return false;
+      if (depth >= o.max_depth) return false;
+      const int d = depth % 2;
+      const Rational mid = (c.lo[d] + c.hi[d]) / 2;
+      auto [A1, A2] = detail::bern_split(c.A, d, Rational(1, 2));
+      auto [Q1, Q2] = detail::bern_split(c.Q, d, Rational(1, 2));
+      auto [D1, D2] = detail::bern_split(c.det, d, Rational(1, 2));
+      Cell l{A1, Q1, D1, c.lo, c.hi}, r{A2, Q2, D2, c.lo, c.hi};
+      l.hi[d] = mid, r.lo[d] = mid;
+      q.emplace_back(l, depth + 1);
+      q.emplace_back(r, depth + 1);
+    }
+    return true;
+  };
+  const std::string axes = std::string("xyz").substr(a0, 1) + std::string("xyz").substr(a1, 1);
+  if (certify_cells(true)) {
+    V.regular = V.injective = "proved";
+    V.regularity_method = "P = (" + axes + ") of p has DP + DP^T positive definite on the bounding box of Omega (Bernstein signs): P is a monotone map "
+                          "on a convex set, so injective, and p's normal has a non-zero " + std::string("xyz").substr(3 - a0 - a1, 1) + " component";
+  } else if (certify_cells(false)) {
+    V.regular = "proved";
+    V.injective = "undecided";
+    V.regularity_method = "det DP > 0 on Omega for P = (" + axes + ") of p (Bernstein signs); the monotone criterion for injectivity does not hold";
+    undecided = true;
+  } else {
+    V.regular = V.injective = "undecided";
+    V.regularity_method = "neither DP + DP^T positive definite nor det DP > 0 could be certified for P = (" + axes + ") of p";
+    undecided = true;
+  }
+
+  progress("certificate: collision");
+  // collision
+  std::string why;
+  const bool membership = planar_quads(solid, why).has_value();
+  V.membership = membership ? "exact ray parity (planar convex quadrilateral facets)" : "not available: " + why;
+  struct FacetBox {
+    std::size_t facet;
+    std::array<Rational, 6> box;
+  };
+  std::vector<FacetBox> fboxes;
+  for (std::size_t i = 0; i < solid.facets.size(); ++i)
+    for (const auto& bz : extract_bezier(solid.facets[i])) fboxes.push_back({i, control_bounds(bz.spline)});
+  bool collided = false, col_undecided = false;
+  if (!V.witness) {
+    std::deque<std::pair<BSpline<Rational>, int>> q;
+    for (const auto& pc : pieces) q.emplace_back(pc.spline, 0);
+    std::size_t examined = 0;
+    while (!q.empty()) {
+      auto [pc, depth] = q.front();
+      q.pop_front();
+      const P2 lo{pc.domain_lo(0), pc.domain_lo(1)}, hi{pc.domain_hi(0), pc.domain_hi(1)};
+      if (!box_meets_polygon(lo, hi, poly)) continue;
+      if (++examined > o.max_pieces) {
+        ++V.collision_undecided;
+        col_undecided = true;
+        continue;
+      }
+      const auto box = control_bounds(pc);
+      if (box_in_strip(loop, box, o.strip)) {
+        ++V.collision_excluded;
+        continue;
+      }
+      bool meets = false;
+      for (const auto& fb : fboxes)
+        if (box[0] <= fb.box[3] && fb.box[0] <= box[3] && box[1] <= fb.box[4] && fb.box[1] <= box[4] && box[2] <= fb.box[5] && fb.box[2] <= box[5]) {
+          meets = true;
+          break;
+        }
+      if (!meets) {
+        ++V.collision_pieces;
+        continue;
+      }
+      if (membership) {
+        const P2 w{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
+        if (in_polygon(w, poly)) {
+          const P3 x = eval3(patch, w);
+          if (!in_strip(loop, x, o.strip)) {
+            const auto mb = point_in_solid(solid, x);
+            if (mb && *mb != Membership::inside) {
+              V.witness = SurfaceValidity::Witness{"collision", w, x, Rational(0),
+                                                   *mb == Membership::outside ? "p(w) lies outside the solid (exact ray parity): the surface crosses the boundary"
+                                                                              : "p(w) lies on a facet, away from the loop"};
+              collided = true;
+              break;
+            }
+          }
+        }
+      }
+      if (depth >= o.max_depth) {
+        ++V.collision_undecided;
+        col_undecided = true;
+        continue;
+      }
+      const int d = (hi[0] - lo[0] >= hi[1] - lo[1]) ? 0 : 1;
+      auto [l, r] = split_at(pc, d, Rational((lo[d] + hi[d]) / 2));
+      q.emplace_back(std::move(l), depth + 1);
+      q.emplace_back(std::move(r), depth + 1);
+    }
+  }
+  V.collision = collided ? "violated" : col_undecided ? "undecided" : V.witness ? "not examined (another condition failed)" : "none outside the strip (certified)";
+  if (col_undecided) undecided = true;
+  if (V.witness) V.verdict = "invalid";
+  else if (undecided || !V.vertices_exact) V.verdict = "undecided";
+  else V.verdict = "valid";
+  V.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return V;
+}
+
+SurfaceSplit split_by_surface(const Solid3<Rational>& solid, const std::vector<std::size_t>& positive) {
+  SurfaceSplit s;
+  std::vector<char> b(solid.facets.size(), 0);
+  for (auto i : positive) b.at(i) = 1;
+  for (std::size_t i = 0; i < solid.facets.size(); ++i) (b[i] ? s.part1 : s.part2).push_back(i);
+  return s;
+}
+
+}  // namespace splinex

@@ -1,0 +1,149 @@
+// The cutting surface of papers/004 Section 4 (d = 3): a trimmed bicubic tensor-product patch
+// p: Omega -> R^3, Omega a polygon in [0, 1]^2 whose edges correspond to the loop's sides, and the
+// exact certificate of its validity (Section 2's conditions).
+//
+// Step 1, the domain polygon (Omega):
+//   projection  the loop's vertices projected along the axis of the largest component of the loop's
+//               Newell normal (a parallel projection onto a coordinate plane: exact), oriented
+//               counter-clockwise and scaled uniformly into [0, 1]^2; used when the result is a
+//               simple polygon (CGAL's is_simple_2 on exact rationals) with no collapsed side.
+//   circle      the fallback: the vertices on the circle of radius 1/2 about (1/2, 1/2), at angles
+//               proportional to the loop's arc length (cos and sin by MPFR, not double), each
+//               coordinate rounded to a multiple of 2^-11 (small denominators keep the exact program
+//               short), joined by straight edges (the paper's curved polygon is not built); checked
+//               simple like the projection.
+//   The QP of Eq. 5 (edge lengths from turning angles) is not built: its cos/sin are not rational.
+//
+// Step 2, the control points: the quadratic initial solution of the paper (the weight of Eq. 6 set
+// to zero) minimizes
+//   w_bnd * mean over boundary samples of (|p(t) - L(t)|^2 + lambda (p_u . n)^2 + lambda (p_v . n)^2)
+//   + w_fair * (thin-plate energy of each coordinate over [0, 1]^2)
+// (Eq. 7 with its integral replaced by the mean over `boundary_samples` points per edge; n the loop
+// side's unit normal, LoopSide3::normal, rounded to a multiple of 2^-20) subject to p(W_j) = L_j at every vertex (equalities) and
+// t . (dp/dm) >= tangent_delta at the boundary samples (inequalities: the prescribed tangent t
+// points into the patch; m the edge's inward normal in Omega, scaled to max-norm 1). Solved by a
+// primal active-set method whose steps are KKT systems (exact: FLINT's Dixon solver; double:
+// Eigen's LU), the tangent rows joining and leaving the working set; CGAL's QP solver on the whole
+// program if it does not finish. Either way the KKT conditions of the full program are checked
+// exactly (for a double solution they hold only approximately, and the check says which fails).
+//
+// Certificates (exact, on the patch as its exact rational control points define it):
+//   vertices     p(W_j) = L_j exactly (or the largest error, for a double patch);
+//   boundary     an upper bound of max |p(e_j(s)) - L_j(s)|_inf along every edge (Bernstein
+//                coefficients of the composition p o e_j minus the side); the sides are interpolated
+//                at the vertices only, so this is a measured deviation, not a zero;
+//   tangents     t . (dp/dm) > 0 along every edge (Bernstein signs of the composed derivatives,
+//                halving; an exact point with <= 0 is a witness of violation);
+//   regular and  the projection P of Step 1 applied to p has a Jacobian whose symmetric part is
+//   injective    positive definite on the bounding box of Omega (a monotone map on a convex set is
+//                injective, and p's normal has a non-zero component along the projection axis):
+//                Bernstein signs of dP1/du and 4 dP1/du dP2/dv - (dP1/dv + dP2/du)^2. If that fails,
+//                det DP > 0 on Omega proves regularity alone and injectivity stays undecided;
+//   collision    no point of p(Omega) outside the strip around the loop (max-norm distance <= strip)
+//                lies on a facet: control boxes of patch pieces against those of the facets' Bezier
+//                pieces, patch pieces halved; a patch point outside the solid (exact ray parity,
+//                for solids of planar convex quadrilateral facets) is a witness of collision.
+// The verdict: valid when the vertices are exact and the other four are certified, invalid with a
+// witness, else undecided.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cut/solid3.hpp"
+#include "spline/bspline.hpp"
+
+namespace splinex {
+
+struct SurfaceFacetOptions {
+  std::string domain = "auto";  // "auto" (projection, else circle), "projection", "circle"
+  int inner_knots = 3;          // uniform inner knots per direction (the paper: 3)
+  int boundary_samples = 4;     // samples of Eq. 7 per edge (edge parameters (2i+1)/(2 m))
+  Rational weight_boundary{1};  // the paper's standard weights (10, 1, 1): the second and third
+  Rational weight_fair{1};
+  Rational lambda{1};           // lambda of Eq. 7
+  Rational tangent_delta{1, 20};
+  int active_set_steps = 300;   // then CGAL's QP solver
+  // certificates
+  Rational strip{1, 16};
+  int max_depth = 14;                // halvings of one piece
+  std::size_t max_pieces = 200000;   // pieces examined per certificate
+  bool progress = false;             // phase lines on stderr
+};
+
+/// The checks of the options (typed errors naming the option), before any work.
+void validate_surface_options(const SurfaceFacetOptions& o);
+
+struct DomainPolygon {
+  std::string method;                             // "projection" or "circle"
+  std::string why_not_projection;                 // when the circle was used
+  std::vector<std::array<Rational, 2>> vertices;  // counter-clockwise; vertex j <-> loop side j's start
+  std::array<int, 2> axes{0, 1};                  // the coordinates the projection keeps (P = (x_a0, x_a1))
+};
+
+/// The loop's Newell normal (twice its vector area), exactly, and the projection Step 1 uses: the
+/// two coordinates other than the normal's largest component, ordered so that the projected loop
+/// runs counter-clockwise.
+std::array<Rational, 3> newell_normal(const std::vector<LoopSide3>& loop);
+std::array<int, 2> projection_axes(const std::vector<LoopSide3>& loop);
+
+/// Step 1 for the loop (normalized coordinates; sides in cycle order).
+DomainPolygon domain_polygon(const std::vector<LoopSide3>& loop, const std::string& method = "auto");
+
+template <class T>
+struct CuttingSurface {
+  DomainPolygon domain;
+  BSpline<Rational> patch;             // exact control points (double: the doubles' exact values); normalized coordinates
+  std::vector<Rational> coefficients;  // the program's minimizer (double: of the rounded program)
+  std::string solver;                  // which solve gave it
+  bool kkt_holds = false;              // the full program's KKT conditions, checked exactly
+  std::string kkt_failed;
+  std::size_t variables = 0, equalities = 0, inequalities = 0, active_inequalities = 0;
+  double seconds = 0;
+};
+
+/// Step 2. solid and loop normalized (GuideResult3's solid and loop, or to_frame + validate_cut).
+template <class T>
+CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& options = {});
+
+struct SurfaceValidity {
+  std::string verdict;  // "valid", "invalid", "undecided"
+  bool vertices_exact = false;
+  Rational vertex_error{0};        // max |p(W_j) - L_j|_inf
+  Rational boundary_deviation{0};  // upper bound of max |p(e_j(s)) - L_j(s)|_inf
+  std::string tangents;            // "certified", "violated", "undecided"
+  std::string regular, injective;  // "proved", "undecided"
+  std::string regularity_method;
+  std::string collision;  // "none outside the strip (certified)", "violated", "undecided"
+  std::size_t collision_pieces = 0, collision_excluded = 0, collision_undecided = 0;
+  std::string membership;  // how the witness test decides inside/outside, or why it cannot
+  struct Witness {
+    std::string condition;
+    std::array<Rational, 2> param;  // in Omega
+    std::array<Rational, 3> point;  // p there (normalized)
+    Rational value{0};              // t . dp/dm for a tangent witness
+    std::string detail;
+  };
+  std::optional<Witness> witness;
+  double seconds = 0;
+};
+
+/// The certificates above, exactly. solid and loop normalized.
+SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
+                                        const BSpline<Rational>& patch, const SurfaceFacetOptions& options = {});
+
+/// Whether x lies inside the solid, outside, or on its boundary, exactly, for solids whose facets
+/// are planar convex quadrilaterals (bilinear with coplanar corners): ray parity with rational rays,
+/// a ray through an edge or a vertex replaced by the next. nullopt for other solids.
+enum class Membership { inside, outside, boundary };
+std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const std::array<Rational, 3>& x);
+
+/// The two sub-solids of a split along a valid cutting surface: facet lists (b with the patch,
+/// b-bar with the patch reversed). The patch is trimmed (Omega), so the parts are not Solid3's.
+struct SurfaceSplit {
+  std::vector<std::size_t> part1, part2;  // facets of b, of b-bar
+};
+SurfaceSplit split_by_surface(const Solid3<Rational>& solid, const std::vector<std::size_t>& positive);
+
+}  // namespace splinex
