@@ -255,10 +255,7 @@ Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3
   return j;
 }
 
-int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& ctx) {
-  const auto S = solid3_from_json(solid_doc, ctx.limits);
-  const auto C = cut3_from_json(read_json_file(go.cut, ctx.read_limits));
-  if (!go.svg.empty()) throw UsageError("svg", "is for solid2d documents", "give --vtk DIR for a solid3d");
+GuideOptions3 to_guide3_options(const GuideCliOptions& go) {
   GuideOptions3 o;
   const GuideOptions b = to_guide_options(go);
   // the 2D defaults of --inner-knots, --max-inner-knots and --samples give way to the 3D ones
@@ -269,6 +266,14 @@ int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& 
   if (go.max_size_opt && go.max_size_opt->count()) o.base.max_size = go.max_size;
   o.inner_knots = {-1, go.inner_y, go.inner_z};
   o.loop_samples = go.loop_samples;
+  return o;
+}
+
+int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& ctx) {
+  const auto S = solid3_from_json(solid_doc, ctx.limits);
+  const auto C = cut3_from_json(read_json_file(go.cut, ctx.read_limits));
+  if (!go.svg.empty()) throw UsageError("svg", "is for solid2d documents", "give --vtk DIR for a solid3d");
+  const GuideOptions3 o = to_guide3_options(go);
   validate_cut(S, C);  // every typed error before the first progress line
   validate_guide_options(o, S.facets.size());
   if (go.arith != "double") check_exact_sizes(S, C, o.base);
@@ -317,6 +322,9 @@ struct Facet3CliOptions {
   std::string domain = "auto", weight_boundary = "1", weight_fair = "1", lambda = "1", tangent_delta = "1/20", strip = "1/16";
   int inner = 3, samples = 4, max_depth = 14;
   std::string arith = "exact", vtk, out;
+  bool guided = false;
+  double weight_guide = 10;
+  int guide_grid = 16, guide_iterations = 30;
 };
 
 SurfaceFacetOptions to_surface_options(const Facet3CliOptions& f) {
@@ -402,7 +410,19 @@ Json surface_json(const CuttingSurface<T>& R, const Frame3& f) {
   return j;
 }
 
-int run_facet3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
+Json guided_json(const GuidedResult& g, const GuideOptions3& o, const std::string& guide_status) {
+  return Json{{"guide", guide_status},
+              {"guide_inner_knots", Json::array({o.inner_knots[0] < 0 ? o.base.inner_knots : o.inner_knots[0], o.inner_knots[1], o.inner_knots[2]})},
+              {"iterations", g.iterations},
+              {"samples", g.samples},
+              {"objective", Json{{"before", g.objective_before}, {"after", g.objective_after}}},
+              {"max_abs_f_on_samples", Json{{"before", g.max_abs_f_before}, {"after", g.max_abs_f_after}}},
+              {"seconds", g.seconds},
+              {"meaning", "Eq. 6 (weight 10: the paper's) added and minimized by Gauss-Newton in double from the initial patch, then projected exactly onto "
+                          "the vertex equalities; the validity above is decided exactly on that patch"}};
+}
+
+int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
   const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
   const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
   const auto o = to_surface_options(fo);
@@ -411,37 +431,81 @@ int run_facet3(const Facet3CliOptions& fo, const std::string& solid_file, const 
   const auto Sn = to_frame(S, frame);
   const auto loop = validate_cut(Sn, C);
   domain_polygon(loop, o.domain);  // its typed errors too
+  GuidedOptions gopt;
+  gopt.weight_guide = fo.weight_guide, gopt.grid = fo.guide_grid, gopt.iterations = fo.guide_iterations;
+  const GuideOptions3 g3 = to_guide3_options(gco);
+  std::optional<BSpline<double>> guide;
+  std::string guide_status;
+  if (fo.guided) {
+    validate_guide_options(g3, S.facets.size());
+    if (fo.arith != "double") check_exact_sizes(S, C, g3.base);
+    validate_guided_options(gopt);
+    std::cerr << "[cut facet] the guiding surface (RDCP, " << (fo.arith == "double" ? "double" : "exact") << ")\n";
+    auto to_d = [](const BSpline<Rational>& f) { return convert<double>(f, [](const Rational& x) { return to_double(x); }); };
+    if (fo.arith == "double") {
+      const auto G = guide_surface<double>(S, C, g3);
+      guide_status = "double, " + to_string(G.status);
+      if (G.status == QPStatus::optimal) guide = to_d(G.f_exact);
+    } else {
+      const auto G = guide_surface<Rational>(S, C, g3);
+      guide_status = "exact, " + to_string(G.status);
+      if (G.status == QPStatus::optimal) guide = to_d(G.f_exact);
+    }
+    if (!guide)
+      throw DomainError("guide", "RDCP is " + guide_status + " for the guided refinement", "raise --max-inner-knots, lower --delta, or leave --guided out");
+  }
   auto run = [&](auto tag) {
     using T = decltype(tag);
     std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the patch program (Step 1 and 2)\n";
     const auto R = cutting_surface<T>(loop, o);
     std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": certifying the surface\n";
-    const auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch, o);
-    return std::make_pair(R, V);
+    auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch, o);
+    std::optional<std::pair<GuidedResult, SurfaceValidity>> refined;
+    if (guide) {
+      CuttingSurface<Rational> init;
+      init.domain = R.domain, init.patch = R.patch, init.coefficients = R.coefficients, init.program = R.program, init.equalities = R.equalities;
+      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the guided refinement (Eq. 6, Gauss-Newton in double)\n";
+      const auto G = refine_with_guide(init, *guide, gopt);
+      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": certifying the refined surface\n";
+      refined = std::make_pair(G, certify_cutting_surface(Sn, loop, R.domain, G.patch, o));
+    }
+    return std::make_tuple(R, V, refined);
+  };
+  // the initial patch's validity, and the refined patch's as the result when --guided
+  auto add = [&](Json& j, const auto& R, const SurfaceValidity& V, const auto& refined, std::string& verdict, auto& drawn) {
+    j["validity"] = surface_validity_json(V, frame);
+    verdict = V.verdict;
+    drawn = std::make_pair(patch_from_frame(R.patch, frame), R.domain.vertices);
+    if (refined) {
+      j["initial_validity"] = j["validity"];
+      j["validity"] = surface_validity_json(refined->second, frame);
+      j["guided"] = guided_json(refined->first, g3, guide_status);
+      j["surface"] = cutting_surface_to_json(patch_from_frame(refined->first.patch, frame), R.domain.vertices);
+      verdict = refined->second.verdict;
+      drawn = std::make_pair(patch_from_frame(refined->first.patch, frame), R.domain.vertices);
+    }
   };
   Json out;
   std::optional<std::pair<BSpline<Rational>, std::vector<std::array<Rational, 2>>>> drawn;
   std::string verdict;
   if (fo.arith == "exact" || fo.arith == "both") {
-    const auto [R, V] = run(Rational());
+    const auto [R, V, refined] = run(Rational());
     out = surface_json(R, frame);
-    out["validity"] = surface_validity_json(V, frame);
-    drawn = std::make_pair(patch_from_frame(R.patch, frame), R.domain.vertices);
-    verdict = V.verdict;
+    add(out, R, V, refined, verdict, drawn);
     if (fo.arith == "both") {
-      const auto [D, DV] = run(double());
+      const auto [D, DV, drefined] = run(double());
       Json d = surface_json(D, frame);
-      d["validity"] = surface_validity_json(DV, frame);
+      std::string dverdict;
+      decltype(drawn) ddrawn;
+      add(d, D, DV, drefined, dverdict, ddrawn);
       d["judged_against_exact"] = judged_against_exact(R.coefficients, D.coefficients);
-      d["judged_against_exact"]["meaning"] = "the double patch's control points against the exact minimizer, measured exactly (normalized coordinates)";
+      d["judged_against_exact"]["meaning"] = "the double initial patch's control points against the exact minimizer, measured exactly (normalized coordinates)";
       out = Json{{"exact", out}, {"double", d}};
     }
   } else {
-    const auto [D, DV] = run(double());
+    const auto [D, DV, refined] = run(double());
     out = surface_json(D, frame);
-    out["validity"] = surface_validity_json(DV, frame);
-    drawn = std::make_pair(patch_from_frame(D.patch, frame), D.domain.vertices);
-    verdict = DV.verdict;
+    add(out, D, DV, refined, verdict, drawn);
   }
   if (!fo.vtk.empty()) {
     std::filesystem::create_directories(fo.vtk);
@@ -534,6 +598,12 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--tangent-delta", f3->tangent_delta, "solid3d: t . dp/dm >= this at the boundary samples")->capture_default_str();
   fc->add_option("--max-depth", f3->max_depth, "solid3d: halvings of one piece in the certificates")->check(CLI::Range(0, 40))->capture_default_str();
   fc->add_option("--vtk", f3->vtk, "solid3d: write solid.vtk and surface.vtk (the trimmed patch) into this folder");
+  fc->add_flag("--guided", f3->guided, "solid3d: find the guiding surface (RDCP, the guide options) and refine the patch by Eq. 6 (Gauss-Newton in double)");
+  fc->add_option("--weight-guide", f3->weight_guide, "solid3d --guided: the weight of Eq. 6 (the paper: 10)")->capture_default_str();
+  fc->add_option("--guide-grid", f3->guide_grid, "solid3d --guided: n x n samples of Eq. 6 over Omega's bounding box")->check(CLI::Range(2, 200))->capture_default_str();
+  fc->add_option("--guide-iterations", f3->guide_iterations, "solid3d --guided: Gauss-Newton steps at most")->check(CLI::Range(0, 1000))->capture_default_str();
+  fc->add_option("--inner-knots-z", fo->guide.inner_z, "solid3d --guided: the guide's inner knots in z (-1: as in x)")->check(CLI::Range(-1, 1000))->capture_default_str();
+  fc->add_option("--loop-samples", fo->guide.loop_samples, "solid3d --guided: points of L* per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
   add_arith_option(fc, f3->arith, "solid3d: exact (KKT exactly), double (Eigen), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
 
@@ -630,7 +700,7 @@ Commands add_cut(CLI::App& app) {
                Facet3CliOptions o = *f3;
                o.strip = fo->guide.strip;
                o.out = fo->out;
-               return run_facet3(o, fo->guide.solid, fo->guide.cut, ctx);
+               return run_facet3(o, fo->guide, fo->guide.solid, fo->guide.cut, ctx);
              }
              if (f3->arith != "exact" || !f3->vtk.empty()) throw UsageError(f3->vtk.empty() ? "arith" : "vtk", "is for solid3d documents", "leave it out for a solid2d");
              const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);

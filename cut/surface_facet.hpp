@@ -51,6 +51,7 @@
 #include <string>
 #include <vector>
 
+#include "cut/qp.hpp"
 #include "cut/solid3.hpp"
 #include "spline/bspline.hpp"
 
@@ -100,12 +101,40 @@ struct CuttingSurface {
   bool kkt_holds = false;              // the full program's KKT conditions, checked exactly
   std::string kkt_failed;
   std::size_t variables = 0, equalities = 0, inequalities = 0, active_inequalities = 0;
+  QuadraticProgram<Rational> program;  // exactly (double: its doubles' values); rows: each equality as a >= and a <= row, then the tangent rows
   double seconds = 0;
 };
 
 /// Step 2. solid and loop normalized (GuideResult3's solid and loop, or to_frame + validate_cut).
 template <class T>
 CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& options = {});
+
+/// The nonlinear step of Step 2: the first term of the objective, Eq. 6, w_guide times the mean of
+/// omega(t) f*(p(t))^2 over the grid points t of Omega (omega: the distance to the boundary of Omega
+/// over its largest value, so 0 on the boundary and 1 at the most central sample), added to the
+/// quadratic program's objective, minimized from the initial solution by Gauss-Newton steps in
+/// double with the vertex equalities and the tangent rows active at the start held as equalities
+/// (each step an Eigen LU on the KKT system; steps halved until the objective decreases). The
+/// paper uses Matlab's fmincon here. The final doubles, which interpolate the vertices only within
+/// rounding, are projected exactly onto the vertex equalities (the least change, solved exactly);
+/// every certificate is then decided exactly on that patch.
+struct GuidedOptions {
+  double weight_guide = 10;  // the paper's standard weights (10, 1, 1): the first
+  int grid = 16;             // grid x grid points over Omega's bounding box (those in Omega)
+  int iterations = 30;
+};
+struct GuidedResult {
+  BSpline<Rational> patch;
+  int iterations = 0;
+  double objective_before = 0, objective_after = 0;
+  double max_abs_f_before = 0, max_abs_f_after = 0;  // max |f*(p(t))| over the samples
+  std::size_t samples = 0;
+  double seconds = 0;
+};
+void validate_guided_options(const GuidedOptions& options);
+/// f: the guide on [0,1]^3 (normalized coordinates); points p(t) outside [0,1]^3 are clamped into it
+/// for f*'s evaluation.
+GuidedResult refine_with_guide(const CuttingSurface<Rational>& initial, const BSpline<double>& f, const GuidedOptions& options = {});
 
 struct SurfaceValidity {
   std::string verdict;  // "valid", "invalid", "undecided"
