@@ -76,7 +76,7 @@ Solid3<Rational> box_solid(const std::vector<Rational>& xs, const std::vector<Ra
   return S;
 }
 
-std::vector<std::string> cut_example3_names() { return {"tower", "cube", "slotted", "maiden"}; }
+std::vector<std::string> cut_example3_names() { return {"tower", "cube", "slotted", "maiden", "vase"}; }
 
 CutExample3 cut_example3(const std::string& name) {
   CutExample3 e;
@@ -117,6 +117,17 @@ CutExample3 cut_example3(const std::string& name) {
       const Rational& x = c[0];
       const Rational w = x < Rational(1, 2) ? q(2) : x < Rational(5, 2) ? q(13, 4) : x < Rational(9, 2) ? q(3, 4) : q(2);
       return c[2] > w;
+    });
+  } else if (name == "vase") {
+    e.description =
+        "a cube-shaped vase [0,5]^2 x [0,4] with the cavity [2,3]^2 x [1,4] open at the top (modelled on Figure 12's vase), b: the "
+        "facets above z = 2 on the outside, the rim and the whole cavity; the loop runs around the outer walls at z = 2, above the "
+        "cavity's floor (z = 1), so the plane of the loop cuts through the cavity: a valid cutting surface must bend below it";
+    const auto g = grid({q(0), q(2), q(3), q(5)});
+    e.solid = box_solid(g, g, grid({q(0), q(1), q(2), q(4)}), [](std::size_t i, std::size_t j, std::size_t k) { return !(i == 1 && j == 1 && k >= 1); });
+    e.cut = cut_by(e.solid, [](const P3& c) {
+      const bool cavity = c[0] >= 2 && c[0] <= 3 && c[1] >= 2 && c[1] <= 3 && c[2] >= 1;
+      return c[2] > 2 || cavity;
     });
   } else {
     std::string names;
