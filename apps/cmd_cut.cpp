@@ -430,7 +430,7 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
   const Frame3 frame = unit_frame(S);
   const auto Sn = to_frame(S, frame);
   const auto loop = validate_cut(Sn, C);
-  domain_polygon(loop, o.domain);  // its typed errors too
+  check_patch_program(loop, o);  // Step 1's and the interpolation conditions' typed errors too
   GuidedOptions gopt;
   gopt.weight_guide = fo.weight_guide, gopt.grid = fo.guide_grid, gopt.iterations = fo.guide_iterations;
   const GuideOptions3 g3 = to_guide3_options(gco);
@@ -451,8 +451,7 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
       guide_status = "exact, " + to_string(G.status);
       if (G.status == QPStatus::optimal) guide = to_d(G.f_exact);
     }
-    if (!guide)
-      throw DomainError("guide", "RDCP is " + guide_status + " for the guided refinement", "raise --max-inner-knots, lower --delta, or leave --guided out");
+    // RDCP infeasible is a result (printed below), not an error: the progress lines are out already
   }
   auto run = [&](auto tag) {
     using T = decltype(tag);
@@ -507,6 +506,10 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
     out = surface_json(D, frame);
     add(out, D, DV, refined, verdict, drawn);
   }
+  if (fo.guided && !guide)
+    out["guided"] = Json{{"guide", guide_status},
+                         {"meaning", "no refinement: RDCP has no minimizer at these settings (raise --max-inner-knots, lower --delta or widen --strip); "
+                                     "the surface and validity above are the initial patch's"}};
   if (!fo.vtk.empty()) {
     std::filesystem::create_directories(fo.vtk);
     write_file_atomically((std::filesystem::path(fo.vtk) / "solid.vtk").string(), solid3_vtk(S));

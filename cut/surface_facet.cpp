@@ -356,6 +356,24 @@ void validate_surface_options(const SurfaceFacetOptions& o) {
 
 // ---- Step 2 --------------------------------------------------------------------------------------
 
+void check_patch_program(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
+  validate_surface_options(o);
+  const auto D = domain_polygon(loop, o.domain);
+  const auto U = guide_knots(o.inner_knots);
+  const std::size_t n = U.size() - 4, N = n * n, ns = D.vertices.size();
+  if (ns > N)
+    throw DomainError("patch-inner-knots", "the loop has " + std::to_string(ns) + " vertices, more than the patch's " + std::to_string(N) + " control points",
+                      "raise --patch-inner-knots");
+  std::vector<Rational> A(ns * N, Rational(0));
+  for (std::size_t j = 0; j < ns; ++j)
+    for (const auto& [i, v] : basis_row(U, n, U, n, D.vertices[j][0], D.vertices[j][1]).v) A[j * N + i] = v;
+  if (exact_rank(A, ns, N) < ns)
+    throw DomainError("patch-inner-knots",
+                      "the interpolation conditions at the loop's " + std::to_string(ns) + " vertices are dependent for " + std::to_string(o.inner_knots) +
+                          " inner knots (too few basis functions around some vertices)",
+                      "raise --patch-inner-knots");
+}
+
 template <class T>
 CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
   validate_surface_options(o);

@@ -105,6 +105,10 @@ struct CuttingSurface {
   double seconds = 0;
 };
 
+/// Before any work: the options, Step 1, and the vertex interpolation conditions' rank (exact), so
+/// that a singular program is a typed error before the first progress line.
+void check_patch_program(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& options);
+
 /// Step 2. solid and loop normalized (GuideResult3's solid and loop, or to_frame + validate_cut).
 template <class T>
 CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& options = {});

@@ -2,6 +2,8 @@
 
 #include <flint/fmpq.h>
 #include <flint/fmpq_mat.h>
+#include <flint/fmpz_mat.h>
+#include <flint/fmpz_vec.h>
 
 #include <stdexcept>
 
@@ -36,6 +38,22 @@ std::optional<std::vector<Rational>> solve_linear_exact(const std::vector<Ration
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < k; ++j) fmpq_get_mpq(X[i * k + j].backend().data(), fmpq_mat_entry(x.m, i, j));
   return X;
+}
+
+std::size_t exact_rank(const std::vector<Rational>& A, std::size_t r, std::size_t c) {
+  if (A.size() != r * c) throw std::logic_error("exact_rank: sizes");
+  if (r == 0 || c == 0) return 0;
+  Mat a(r, c);
+  fill(a, A, r, c);
+  // every row times its denominators' lcm: the same rank, in integers
+  fmpz_mat_t z;
+  fmpz_mat_init(z, static_cast<slong>(r), static_cast<slong>(c));
+  fmpz* den = _fmpz_vec_init(static_cast<slong>(r));
+  fmpq_mat_get_fmpz_mat_rowwise(z, den, a.m);
+  const slong k = fmpz_mat_rank(z);
+  _fmpz_vec_clear(den, static_cast<slong>(r));
+  fmpz_mat_clear(z);
+  return static_cast<std::size_t>(k);
 }
 
 }  // namespace splinex

@@ -14,4 +14,7 @@ namespace splinex {
 std::optional<std::vector<Rational>> solve_linear_exact(const std::vector<Rational>& A, std::size_t n, const std::vector<Rational>& B,
                                                         std::size_t k);
 
+/// The rank of the r x c matrix A (row-major), exactly (FLINT).
+std::size_t exact_rank(const std::vector<Rational>& A, std::size_t r, std::size_t c);
+
 }  // namespace splinex

@@ -147,7 +147,7 @@ NO_OPTION_MUTATION = {"cut-guide-3d"}
 
 def command_for(rng, docs, kinds=KINDS):
     """(argv after the program, document bytes or None, kind)"""
-    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel", "solid2d", "cut2d", "solid3d", "cut3d"))]
+    curves = [n for n in docs if not n.startswith(("domain", "hybrid", "bad_loops", "bad_hybrid", "vmodel", "solid2d", "cut2d", "solid3d", "cut3d", "cutting_surface"))]
     models = [n for n in docs if n.startswith("vmodel")]
     surfaces = [n for n in docs if n.startswith(("sphere", "paraboloid", "saddle", "plane", "roof", "surface"))]
     doc_name = rng.choice(curves)
@@ -262,6 +262,17 @@ def command_for(rng, docs, kinds=KINDS):
         else:
             doc, extra_files["SECOND"] = cut, solid
             argv = ["cut", "guide"] + opts + ["SECOND", "DOC"]
+        r = rng.random()
+        if r < 0.3:  # the cutting surface: Step 1, Step 2, the certificates (sometimes guided)
+            argv[1] = "facet"
+            argv = [a for i, a in enumerate(argv) if a not in ("--arith",) and not (i > 0 and argv[i - 1] == "--arith")]
+            argv[2:2] = ["--arith", rng.choice(["exact", "double", "both"]), "--patch-inner-knots", rng.choice(["0", "1", "3"])]
+            if rng.random() < 0.3:
+                argv[2:2] = ["--guided", "--weight-guide", rng.choice(["10", "1000"])]
+        elif r < 0.45:  # a given cutting surface, mutated
+            extra_files = {"SECOND": solid, "THIRD": cut}
+            doc = docs["cutting_surface_tower.json"]
+            argv = ["cut", "certify", "SECOND", "THIRD", "DOC"]
     elif kind in ("cut-guide", "cut-guide-3d"):
         # A solid and its cutting data (tests/data/solid2d_*, cut2d_*): one of them is DOC (mutated).
         name = rng.choice([n for n in docs if n.startswith("solid2d")])
