@@ -13,6 +13,9 @@ Commands add_report(CLI::App& app) {
   c->add_flag("--full", o->full, "the long sweep (larger cases, more precisions)");
   c->add_option("--peers", o->peers_dir, "include the peers' judged results from this folder (scripts/run.sh peers writes "
                                          "results/peers)");
+  std::string names;
+  for (const auto& n : report_section_names()) names += (names.empty() ? "" : ", ") + n;
+  c->add_option("--sections", o->sections, "only these sections (comma-separated), for splitting the run: " + names)->delimiter(',');
   return {{c, [o](const Context&) { return run_report(*o); }}};
 }
 

@@ -13,6 +13,7 @@
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
+#include "cut/surface_facet.hpp"
 
 using namespace splinex;
 
@@ -75,6 +76,30 @@ int main(int argc, char** argv) {
       for (auto _ : st) benchmark::DoNotOptimize(certify_separation(R.solid, R.loop, e.cut.positive, R.f_exact, options3().base.strip));
     })->Unit(benchmark::kMillisecond)->Iterations(1);
   }
+  // d = 3: the cutting surface's initial patch (Step 1 and 2) exactly and in double, and its
+  // certificates, on the slotted block (projection domain) and the maiden (circle domain, active set).
+  const std::vector<std::string> surfaces{"slotted", "maiden"};
+  for (const auto& c : surfaces) {
+    auto loop_of = [c] {
+      const auto e = cut_example3(c);
+      return validate_cut(to_frame(e.solid, unit_frame(e.solid)), e.cut);
+    };
+    benchmark::RegisterBenchmark(("cut3/patch/exact/" + c).c_str(), [loop_of](benchmark::State& st) {
+      const auto loop = loop_of();
+      for (auto _ : st) benchmark::DoNotOptimize(cutting_surface<Rational>(loop));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("cut3/patch/double/" + c).c_str(), [loop_of](benchmark::State& st) {
+      const auto loop = loop_of();
+      for (auto _ : st) benchmark::DoNotOptimize(cutting_surface<double>(loop));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("cut3/certificates/exact/" + c).c_str(), [c, loop_of](benchmark::State& st) {
+      const auto e = cut_example3(c);
+      const auto Sn = to_frame(e.solid, unit_frame(e.solid));
+      const auto loop = loop_of();
+      const auto R = cutting_surface<Rational>(loop);
+      for (auto _ : st) benchmark::DoNotOptimize(certify_cutting_surface(Sn, loop, R.domain, R.patch));
+    })->Unit(benchmark::kMillisecond)->Iterations(1);
+  }
   benchmark::Initialize(&argc, argv);
   RatioReporter rep;
   benchmark::RunSpecifiedBenchmarks(&rep);
@@ -95,6 +120,15 @@ int main(int argc, char** argv) {
               << std::setw(14) << t("guide/double") << std::setprecision(2) << std::setw(14)
               << (t("guide/double") > 0 ? t("guide/exact") / t("guide/double") : 0.0) << std::setprecision(1) << std::setw(13)
               << t("separation/exact") << "\n";
+  }
+  std::cout << "\nCutting surfaces, the initial patch (3 inner knots, 147 variables): ms\n"
+            << "case      patch exact  patch double  exact/double  certificates (exact)\n";
+  for (const auto& c : surfaces) {
+    const auto t = [&](const std::string& a) { return rep.ns["cut3/" + a + "/" + c]; };
+    std::cout << std::left << std::setw(9) << c << std::right << std::fixed << std::setprecision(1) << std::setw(12) << t("patch/exact")
+              << std::setw(14) << t("patch/double") << std::setprecision(2) << std::setw(14)
+              << (t("patch/double") > 0 ? t("patch/exact") / t("patch/double") : 0.0) << std::setprecision(1) << std::setw(22)
+              << t("certificates/exact") << "\n";
   }
   return 0;
 }

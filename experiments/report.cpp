@@ -3,7 +3,9 @@
 // complete.
 #include "experiments/report.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -46,6 +48,14 @@ constexpr Section kSections[] = {
     hybrid_section,           elevation_accuracy_section, vrep_section, vrep_boolean_section, vrep_ssi_section, vrep_teapot_section, solve_section, cut_section, cut3_section, peers_section, proofs_section,
 };
 
+// The sections' names, in kSections' order.
+const char* const kSectionNames[] = {
+    "crosscheck",       "composition-orders", "teapot-stars", "tolerance", "algorithm2-stars", "untrim-tolerance", "checkerboard",
+    "curved-untrim",    "hybrid",             "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve",
+    "cut",              "cut3",               "peers",        "proofs",
+};
+static_assert(std::size(kSectionNames) == std::size(kSections), "one name per section");
+
 // report.md's parts in the order they are read.
 const char* const kDocument[] = {
     "crosscheck.intro", "proofs",         "crosscheck.figures", "composition-orders", "teapot-stars",
@@ -55,10 +65,24 @@ const char* const kDocument[] = {
 
 }  // namespace
 
+std::vector<std::string> report_section_names() { return {std::begin(kSectionNames), std::end(kSectionNames)}; }
+
 int run_report(const ReportOptions& opt) {
   namespace fs = std::filesystem;
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
+  std::vector<char> chosen(std::size(kSections), opt.sections.empty() ? 1 : 0);
+  for (const auto& name : opt.sections) {
+    const auto it = std::find(std::begin(kSectionNames), std::end(kSectionNames), name);
+    if (it == std::end(kSectionNames)) {
+      std::string all;
+      for (const char* n : kSectionNames) all += (all.empty() ? "" : ", ") + std::string(n);
+      throw UsageError("sections", "'" + name + "' is not a section", "give some of " + all);
+    }
+    chosen[static_cast<std::size_t>(it - std::begin(kSectionNames))] = 1;
+  }
+  if (chosen[1] && !chosen[0])
+    throw UsageError("sections", "composition-orders draws from the crosscheck suite's seeded stream", "give crosscheck with it");
   // The peers' folder is checked before minutes of work, not after.
   if (!opt.peers_dir.empty()) {
     if (!fs::is_directory(opt.peers_dir))
@@ -84,11 +108,13 @@ int run_report(const ReportOptions& opt) {
                       std::cerr << "[report " << std::fixed << std::setprecision(1)
                                 << std::chrono::duration<double>(clock::now() - t_start).count() << "s] " << s << std::endl;
                     }};
-  for (Section section : kSections) section(ctx);
+  for (std::size_t k = 0; k < std::size(kSections); ++k)
+    if (chosen[k]) kSections[k](ctx);
 
   ctx.progress("writing " + opt.out_dir);
   std::string md;
-  for (const char* part : kDocument) md += ctx.markdown.at(part);
+  for (const char* part : kDocument)
+    if (opt.sections.empty() || ctx.markdown.count(part)) md += ctx.markdown.at(part);
   write_file_atomically(opt.out_dir + "/report.md", md);
   {
     std::ostringstream mf;

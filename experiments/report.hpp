@@ -2,6 +2,7 @@
 // JSON and SVG figures.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace splinex {
 
@@ -9,7 +10,15 @@ struct ReportOptions {
   std::string out_dir = "results";
   bool full = false;  // the long sweep: larger cases, more precisions, longer refinements
   std::string peers_dir;  // the peers' judged results (scripts/run.sh peers); empty: not included
+  /// Only these sections (names as in report_section_names()), in the report's order; empty: all.
+  /// A part of the report lets a test run split the report over the cores; every section computes
+  /// the same numbers alone as in the whole run (composition-orders shares crosscheck's seeded
+  /// stream, so it needs crosscheck with it).
+  std::vector<std::string> sections;
 };
+
+/// The sections' names in the order they run.
+std::vector<std::string> report_section_names();
 
 /// Returns the process exit status (0 when every proof held and every run finished).
 int run_report(const ReportOptions& options);
