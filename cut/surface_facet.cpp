@@ -758,10 +758,7 @@ GuidedResult refine_with_guide(const CuttingSurface<Rational>& init, const BSpli
 
 // ---- certificates --------------------------------------------------------------------------------
 
-std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3& x) {
-  std::string why;
-  const auto tris = planar_quads(solid, why);
-  if (!tris) return std::nullopt;
+static std::optional<Membership> membership_of(const std::vector<Triangle>& tris, const P3& x) {
   static const std::array<P3, 6> rays{P3{Rational(1), Rational(17, 4099), Rational(29, 8191)},
                                       P3{Rational(-31, 7919), Rational(1), Rational(13, 6007)},
                                       P3{Rational(19, 5003), Rational(-23, 9001), Rational(1)},
@@ -769,12 +766,19 @@ std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3
                                       P3{Rational(43, 9973), Rational(-1), Rational(-47, 9967)},
                                       P3{Rational(-53, 9949), Rational(59, 9941), Rational(-1)}};
   for (const auto& r : rays) {
-    const int p = parity(*tris, x, r);
+    const int p = parity(tris, x, r);
     if (p == 0) return Membership::inside;
     if (p == 1) return Membership::outside;
     if (p == 2) return Membership::boundary;
   }
   return std::nullopt;
+}
+
+std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3& x) {
+  std::string why;
+  const auto tris = planar_quads(solid, why);
+  if (!tris) return std::nullopt;
+  return membership_of(*tris, x);
 }
 
 SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
@@ -950,7 +954,8 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
   progress("certificate: collision");
   // collision
   std::string why;
-  const bool membership = planar_quads(solid, why).has_value();
+  const auto triangles = planar_quads(solid, why);
+  const bool membership = triangles.has_value();
   V.membership = membership ? "exact ray parity (planar convex quadrilateral facets)" : "not available: " + why;
   struct FacetBox {
     std::size_t facet;
@@ -994,7 +999,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
         if (in_polygon(w, poly)) {
           const P3 x = eval3(patch, w);
           if (!in_strip(loop, x, o.strip)) {
-            const auto mb = point_in_solid(solid, x);
+            const auto mb = membership_of(*triangles, x);
             if (mb && *mb != Membership::inside) {
               V.witness = SurfaceValidity::Witness{"collision", w, x, Rational(0),
                                                    *mb == Membership::outside ? "p(w) lies outside the solid (exact ray parity): the surface crosses the boundary"
