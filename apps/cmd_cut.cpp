@@ -53,21 +53,9 @@ Json separation_json(const SeparationResult& s) {
 
 // The double guide's coefficients against the exact minimizer, measured exactly.
 Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
-  Rational err(0), mag(0);
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    const Rational e = abs(rounded[i] - exact[i]), m = abs(exact[i]);
-    if (err < e) err = e;
-    if (mag < m) mag = m;
-  }
-  Json cmp{{"max_abs_error", q_json(err)}};
-  if (mag > 0 && err > 0) {
-    const double rel = to_double(err / mag);
-    cmp["max_rel_error"] = rel;
-    cmp["bits_lost"] = std::max(0.0, 53 + std::log2(rel));
-  } else {
-    cmp["max_rel_error"] = 0.0;
-    cmp["bits_lost"] = 0.0;
-  }
+  const auto e = coefficient_error(exact, rounded);
+  Json cmp{{"max_abs_error", q_json(e.max_abs_error)}, {"bits_lost", e.bits_lost}};
+  cmp["max_rel_error"] = e.max_abs > 0 && e.max_abs_error > 0 ? to_double(Rational(e.max_abs_error / e.max_abs)) : 0.0;
   cmp["meaning"] = "the double guide's coefficients against the exact minimizer (Lemma 1: unique), measured exactly";
   return cmp;
 }

@@ -337,6 +337,18 @@ GuideResult<T> guide_curve(const Solid2<Rational>& solid_in, const CutData2<Rati
 
 template GuideResult<Rational> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
 template GuideResult<double> guide_curve(const Solid2<Rational>&, const CutData2<Rational>&, const GuideOptions&);
+CoefficientError coefficient_error(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
+  if (exact.size() != rounded.size()) throw std::logic_error("coefficient_error: sizes differ");
+  CoefficientError e;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const Rational d = abs(rounded[i] - exact[i]), m = abs(exact[i]);
+    if (e.max_abs_error < d) e.max_abs_error = d;
+    if (e.max_abs < m) e.max_abs = m;
+  }
+  if (e.max_abs_error > 0 && e.max_abs > 0) e.bits_lost = std::max(0.0, 53 + log2_abs(e.max_abs_error) - log2_abs(e.max_abs));
+  return e;
+}
+
 template <class T>
 BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y) {
   return basis_row_impl(Ux, n, Uy, ny, x, y);

@@ -96,6 +96,15 @@ struct BasisRow {
 template <class T>
 BasisRow<T> basis_row(const std::vector<T>& Ux, std::size_t n, const std::vector<T>& Uy, std::size_t ny, const T& x, const T& y);
 
+/// A double run's coefficients against the exact run's, measured exactly: the largest absolute
+/// error, the largest exact coefficient in magnitude, and the bits lost of double's 53:
+/// max(0, 53 + log2(max_abs_error / max_abs)) (0 when the error is 0).
+struct CoefficientError {
+  Rational max_abs_error{0}, max_abs{0};
+  double bits_lost = 0;
+};
+CoefficientError coefficient_error(const std::vector<Rational>& exact, const std::vector<Rational>& rounded);
+
 /// The tensor-product cubic space of the guide: clamped knots on [0, 1] with k uniform inner knots.
 std::vector<Rational> guide_knots(int inner_knots);
 

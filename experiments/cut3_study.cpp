@@ -38,13 +38,8 @@ GuideOptions3 options_of(const Setting& s) {
 }
 
 std::string bits_lost(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
-  Rational err(0), mag(0);
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    err = std::max(err, Rational(abs(rounded[i] - exact[i])));
-    mag = std::max(mag, Rational(abs(exact[i])));
-  }
-  if (err == 0) return "0";
-  return fmt(std::max(0.0, 53 + log2_abs(err) - log2_abs(mag)));
+  const auto e = coefficient_error(exact, rounded);
+  return e.max_abs_error == 0 ? "0" : fmt(e.bits_lost);
 }
 
 std::string witness_text(const SeparationResult3& s) {

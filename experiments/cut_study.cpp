@@ -108,13 +108,8 @@ void cut_section(ReportContext& ctx) {
       const auto& fq = D.f_exact;
       sep_d = certify_separation(D.solid, D.cut, fq, o.strip).verdict;
       if (R.status == QPStatus::optimal) {
-        Rational err(0), mag(0);
-        for (std::size_t i = 0; i < R.coefficients.size(); ++i) {
-          const Rational d = abs(fq.points[i] - R.coefficients[i]), m = abs(R.coefficients[i]);
-          if (err < d) err = d;
-          if (mag < m) mag = m;
-        }
-        bits = err == 0 ? "0" : fmt(std::max(0.0, 53 + log2_abs(err) - log2_abs(mag)), 3);
+        const auto ce = coefficient_error(R.coefficients, fq.points);
+        bits = ce.max_abs_error == 0 ? "0" : fmt(ce.bits_lost, 3);
       }
     }
     const auto pap = paper.count(name) ? paper.at(name) : "-";
