@@ -4,6 +4,7 @@
 
 #include "cut/examples.hpp"
 #include "cut/surface_facet.hpp"
+#include "exact/linear_solve.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
@@ -218,4 +219,19 @@ TEST_CASE("cut surface: bad options and bad surfaces get typed errors", "[cut]")
   auto shorter = D;
   shorter.vertices.pop_back();
   CHECK_THROWS_AS(certify_cutting_surface(cube.solid, cube.loop, shorter, R.patch), UsageError);
+}
+
+TEST_CASE("exact linear solves and ranks (FLINT) against hand results", "[cut]") {
+  // [2 1; 1 3] x = [1; 2]: x = (1/5, 3/5) by Cramer's rule (det 5)
+  const auto X = solve_linear_exact({q(2), q(1), q(1), q(3)}, 2, {q(1), q(2)}, 1);
+  REQUIRE(X);
+  CHECK(*X == std::vector<Rational>{q(1, 5), q(3, 5)});
+  // two right-hand sides, rational entries: [1/2 0; 0 1/3] X = [1 2; 3 4] gives [2 4; 9 12]
+  const auto Y = solve_linear_exact({q(1, 2), q(0), q(0), q(1, 3)}, 2, {q(1), q(2), q(3), q(4)}, 2);
+  REQUIRE(Y);
+  CHECK(*Y == std::vector<Rational>{q(2), q(4), q(9), q(12)});
+  CHECK_FALSE(solve_linear_exact({q(1), q(2), q(2), q(4)}, 2, {q(1), q(1)}, 1));
+  CHECK(exact_rank({q(1), q(2), q(3), q(2), q(4), q(6)}, 2, 3) == 1);
+  CHECK(exact_rank({q(1, 3), q(2), q(3), q(2), q(4, 7), q(6)}, 2, 3) == 2);
+  CHECK(exact_rank({q(0), q(0), q(0), q(0)}, 2, 2) == 0);
 }
