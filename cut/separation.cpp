@@ -138,24 +138,6 @@ struct Ctx3 {
   std::size_t examined = 0;
 };
 
-bool box_in_strip3(const Ctx3& c, const std::array<Rational, 3>& lo, const std::array<Rational, 3>& hi) {
-  for (const auto& L : c.loop) {
-    bool all = true;
-    for (int m = 0; m < 8 && all; ++m) {
-      const std::array<Rational, 3> x{(m & 1) ? hi[0] : lo[0], (m & 2) ? hi[1] : lo[1], (m & 4) ? hi[2] : lo[2]};
-      all = within_segment(x, L.start, L.end, c.strip);
-    }
-    if (all) return true;
-  }
-  return false;
-}
-
-bool point_in_strip3(const Ctx3& c, const std::array<Rational, 3>& x) {
-  for (const auto& L : c.loop)
-    if (within_segment(x, L.start, L.end, c.strip)) return true;
-  return false;
-}
-
 bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool positive, int depth) {
   const std::array<Rational, 2> plo{piece.domain_lo(0), piece.domain_lo(1)}, phi{piece.domain_hi(0), piece.domain_hi(1)};
   if (++c.examined > c.options.max_pieces) {
@@ -164,7 +146,7 @@ bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool p
   }
   const auto box = control_bounds(piece);
   const std::array<Rational, 3> lo{box[0], box[1], box[2]}, hi{box[3], box[4], box[5]};
-  if (box_in_strip3(c, lo, hi)) {
+  if (box_in_loop_strip(c.loop, lo, hi, c.strip)) {
     ++c.result.excluded;
     return true;
   }
@@ -192,7 +174,7 @@ bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool p
     const std::array<Rational, 2> s = m == 4 ? mid : std::array<Rational, 2>{(m & 1) ? phi[0] : plo[0], (m & 2) ? phi[1] : plo[1]};
     const auto p = evaluate(piece, std::vector<Rational>{s[0], s[1]});
     const std::array<Rational, 3> x{p[0], p[1], p[2]};
-    if (point_in_strip3(c, x)) continue;
+    if (in_loop_strip(c.loop, x, c.strip)) continue;
     const Rational v = evaluate(c.f, std::vector<Rational>{x[0], x[1], x[2]})[0];
     if (positive ? !(v > 0) : !(v < 0)) {
       c.result.witness = SeparationWitness3{facet, s, x, v, positive};

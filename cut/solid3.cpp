@@ -383,4 +383,20 @@ bool within_segment(const P3& x, const P3& a, const P3& b, const Rational& r) {
   return lo <= hi;
 }
 
+bool in_loop_strip(const std::vector<LoopSide3>& loop, const P3& x, const Rational& r) {
+  for (const auto& L : loop)
+    if (within_segment(x, L.start, L.end, r)) return true;
+  return false;
+}
+
+bool box_in_loop_strip(const std::vector<LoopSide3>& loop, const P3& lo, const P3& hi, const Rational& r) {
+  for (const auto& L : loop) {
+    bool all = true;
+    for (int m = 0; m < 8 && all; ++m)
+      all = within_segment(P3{(m & 1) ? hi[0] : lo[0], (m & 2) ? hi[1] : lo[1], (m & 4) ? hi[2] : lo[2]}, L.start, L.end, r);
+    if (all) return true;
+  }
+  return false;
+}
+
 }  // namespace splinex

@@ -84,4 +84,10 @@ Solid3<Rational> to_frame(const Solid3<Rational>& S, const Frame3& f);
 /// The max-norm distance from x to the segment [a, b] is <= r (exact).
 bool within_segment(const std::array<Rational, 3>& x, const std::array<Rational, 3>& a, const std::array<Rational, 3>& b, const Rational& r);
 
+/// x lies in the strip around the loop: within max-norm distance r of some loop side (exact).
+bool in_loop_strip(const std::vector<LoopSide3>& loop, const std::array<Rational, 3>& x, const Rational& r);
+/// The box [lo, hi] lies in the strip of one loop side: all its corners do (the distance to a
+/// segment is convex, so the corners decide).
+bool box_in_loop_strip(const std::vector<LoopSide3>& loop, const std::array<Rational, 3>& lo, const std::array<Rational, 3>& hi, const Rational& r);
+
 }  // namespace splinex

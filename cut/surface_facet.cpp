@@ -78,8 +78,8 @@ P2 circle_point(const Rational& phi, std::size_t n) {
 
 // An approximation of |d| (relative error far below 2^-60), only used to place the circle's vertices.
 Rational approximate_length(const P3& d) {
-  mpfr_t a, b;
-  mpfr_inits2(128, a, b, static_cast<mpfr_ptr>(nullptr));
+  mpfr_t a;
+  mpfr_init2(a, 128);
   const Rational s = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   mpfr_set_q(a, s.backend().data(), MPFR_RNDN);
   mpfr_sqrt(a, a, MPFR_RNDN);
@@ -90,7 +90,7 @@ Rational approximate_length(const P3& d) {
   Rational r;
   mpq_set_z(r.backend().data(), z);
   mpz_clear(z);
-  mpfr_clears(a, b, static_cast<mpfr_ptr>(nullptr));
+  mpfr_clear(a);
   return r / Rational(boost::multiprecision::mpz_int(1) << 64);
 }
 
@@ -150,22 +150,6 @@ bool box_meets_polygon(const P2& lo, const P2& hi, const std::vector<K::Point_2>
 
 bool in_polygon(const P2& w, const std::vector<K::Point_2>& poly) {
   return CGAL::bounded_side_2(poly.begin(), poly.end(), cg(w), K()) != CGAL::ON_UNBOUNDED_SIDE;
-}
-
-bool in_strip(const std::vector<LoopSide3>& loop, const P3& x, const Rational& strip) {
-  for (const auto& L : loop)
-    if (within_segment(x, L.start, L.end, strip)) return true;
-  return false;
-}
-
-bool box_in_strip(const std::vector<LoopSide3>& loop, const std::array<Rational, 6>& b, const Rational& strip) {
-  for (const auto& L : loop) {
-    bool all = true;
-    for (int m = 0; m < 8 && all; ++m)
-      all = within_segment(P3{(m & 1) ? b[3] : b[0], (m & 2) ? b[4] : b[1], (m & 4) ? b[5] : b[2]}, L.start, L.end, strip);
-    if (all) return true;
-  }
-  return false;
 }
 
 P3 eval3(const BSpline<Rational>& S, const P2& w) {
@@ -980,7 +964,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
         continue;
       }
       const auto box = control_bounds(pc);
-      if (box_in_strip(loop, box, o.strip)) {
+      if (box_in_loop_strip(loop, {box[0], box[1], box[2]}, {box[3], box[4], box[5]}, o.strip)) {
         ++V.collision_excluded;
         continue;
       }
@@ -998,7 +982,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
         const P2 w{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
         if (in_polygon(w, poly)) {
           const P3 x = eval3(patch, w);
-          if (!in_strip(loop, x, o.strip)) {
+          if (!in_loop_strip(loop, x, o.strip)) {
             const auto mb = membership_of(*triangles, x);
             if (mb && *mb != Membership::inside) {
               V.witness = SurfaceValidity::Witness{"collision", w, x, Rational(0),
