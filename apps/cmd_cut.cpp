@@ -419,6 +419,10 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
   const auto Sn = to_frame(S, frame);
   const auto loop = validate_cut(Sn, C);
   check_patch_program(loop, o);  // Step 1's and the interpolation conditions' typed errors too
+  if (fo.arith != "exact")  // the double program is assembled from these weights' doubles
+    for (const auto& [name, w] : {std::pair<const char*, const Rational*>{"weight-boundary", &o.weight_boundary}, {"weight-fair", &o.weight_fair},
+                                  {"lambda-normal", &o.lambda}, {"tangent-delta", &o.tangent_delta}})
+      if (!std::isfinite(to_double(*w))) throw UsageError(name, "is beyond double's range", "give a smaller number, or --arith exact");
   GuidedOptions gopt;
   gopt.weight_guide = fo.weight_guide, gopt.grid = fo.guide_grid, gopt.iterations = fo.guide_iterations;
   const GuideOptions3 g3 = to_guide3_options(gco);
