@@ -311,7 +311,7 @@ struct Facet3CliOptions {
   int inner = 3, samples = 4, max_depth = 14;
   std::string arith = "exact", vtk, out;
   bool guided = false;
-  double weight_guide = 10;
+  std::string weight_guide = "10";
   int guide_grid = 16, guide_iterations = 30;
 };
 
@@ -392,22 +392,24 @@ Json surface_json(const CuttingSurface<T>& R, const Frame3& f) {
          {"seconds", R.seconds},
          {"surface", cutting_surface_to_json(patch_from_frame(R.patch, f), R.domain.vertices)}};
   if (!R.domain.why_not_projection.empty()) j["domain"]["why_not_projection"] = R.domain.why_not_projection;
+  if (!R.domain.why_not_qp.empty()) j["domain"]["why_not_qp"] = R.domain.why_not_qp;
   j["kkt"]["meaning"] = ArithTraits<T>::exact
                             ? (R.kkt_holds ? "proved: the minimizer of the patch program (KKT conditions checked exactly)" : "not proved: " + R.kkt_failed)
                             : "a double solution: judge it against --arith exact";
   return j;
 }
 
-Json guided_json(const GuidedResult& g, const GuideOptions3& o, const std::string& guide_status) {
+Json guided_json(const GuidedResult& g, double weight, const GuideOptions3& o, const std::string& guide_status) {
   return Json{{"guide", guide_status},
+              {"weight", weight},
               {"guide_inner_knots", Json::array({o.inner_knots[0] < 0 ? o.base.inner_knots : o.inner_knots[0], o.inner_knots[1], o.inner_knots[2]})},
               {"iterations", g.iterations},
               {"samples", g.samples},
               {"objective", Json{{"before", g.objective_before}, {"after", g.objective_after}}},
               {"max_abs_f_on_samples", Json{{"before", g.max_abs_f_before}, {"after", g.max_abs_f_after}}},
               {"seconds", g.seconds},
-              {"meaning", "Eq. 6 (weight 10: the paper's) added and minimized by Gauss-Newton in double from the initial patch, then projected exactly onto "
-                          "the vertex equalities; the validity above is decided exactly on that patch"}};
+              {"meaning", "Eq. 6 (at this weight; the paper's is 10) added and minimized by Gauss-Newton in double from the initial patch, then projected "
+                          "exactly onto the vertex equalities; the validity above is decided exactly on that patch"}};
 }
 
 int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
@@ -424,7 +426,17 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
                                   {"lambda-normal", &o.lambda}, {"tangent-delta", &o.tangent_delta}})
       if (!std::isfinite(to_double(*w))) throw UsageError(name, "is beyond double's range", "give a smaller number, or --arith exact");
   GuidedOptions gopt;
-  gopt.weight_guide = fo.weight_guide, gopt.grid = fo.guide_grid, gopt.iterations = fo.guide_iterations;
+  gopt.grid = fo.guide_grid, gopt.iterations = fo.guide_iterations;
+  // --weight-guide W, or auto: the sweep 10, 10^2, ..., 10^6 until the refined patch is valid
+  std::vector<double> weights;
+  if (fo.weight_guide == "auto") {
+    weights = {10, 1e2, 1e3, 1e4, 1e5, 1e6};
+  } else {
+    const double w = to_double(parse_number(fo.weight_guide, "weight-guide"));
+    if (!std::isfinite(w)) throw UsageError("weight-guide", "is beyond double's range", "give a smaller number, or auto");
+    weights = {w};
+  }
+  gopt.weight_guide = weights.front();
   const GuideOptions3 g3 = to_guide3_options(gco);
   std::optional<BSpline<double>> guide;
   std::string guide_status;
@@ -451,14 +463,12 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
     const auto R = cutting_surface<T>(loop, o);
     std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": certifying the surface\n";
     auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch, o);
-    std::optional<std::pair<GuidedResult, SurfaceValidity>> refined;
+    std::optional<std::vector<GuidedStep>> refined;
     if (guide) {
       CuttingSurface<Rational> init;
       init.domain = R.domain, init.patch = R.patch, init.coefficients = R.coefficients, init.program = R.program, init.equalities = R.equalities;
-      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the guided refinement (Eq. 6, Gauss-Newton in double)\n";
-      const auto G = refine_with_guide(init, *guide, gopt);
-      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": certifying the refined surface\n";
-      refined = std::make_pair(G, certify_cutting_surface(Sn, loop, R.domain, G.patch, o));
+      std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the guided refinement (Eq. 6, Gauss-Newton in double), certified\n";
+      refined = refine_with_guide_sweep(Sn, loop, init, *guide, gopt, weights, o);
     }
     return std::make_tuple(R, V, refined);
   };
@@ -468,12 +478,21 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
     verdict = V.verdict;
     drawn = std::make_pair(patch_from_frame(R.patch, frame), R.domain.vertices);
     if (refined) {
+      const GuidedStep& last = refined->back();
       j["initial_validity"] = j["validity"];
-      j["validity"] = surface_validity_json(refined->second, frame);
-      j["guided"] = guided_json(refined->first, g3, guide_status);
-      j["surface"] = cutting_surface_to_json(patch_from_frame(refined->first.patch, frame), R.domain.vertices);
-      verdict = refined->second.verdict;
-      drawn = std::make_pair(patch_from_frame(refined->first.patch, frame), R.domain.vertices);
+      j["validity"] = surface_validity_json(last.validity, frame);
+      j["guided"] = guided_json(last.result, last.weight, g3, guide_status);
+      if (fo.weight_guide == "auto") {
+        Json sweep = Json::array();
+        for (const auto& st : *refined)
+          sweep.push_back(Json{{"weight", st.weight}, {"max_abs_f_after", st.result.max_abs_f_after}, {"verdict", st.validity.verdict}});
+        j["guided"]["weight_sweep"] = sweep;
+        j["guided"]["weight_meaning"] = "--weight-guide auto: Eq. 6's weight 10, 10^2, ..., 10^6 in turn, each from the initial patch, until the refined patch is "
+                                        "certified valid; the last one run is the result";
+      }
+      j["surface"] = cutting_surface_to_json(patch_from_frame(last.result.patch, frame), R.domain.vertices);
+      verdict = last.validity.verdict;
+      drawn = std::make_pair(patch_from_frame(last.result.patch, frame), R.domain.vertices);
     }
   };
   Json out;
@@ -553,7 +572,7 @@ Commands add_cut(CLI::App& app) {
   };
   auto eo = std::make_shared<ExampleOptions>();
   auto* ex = cut->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
-  ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: cube, slotted, maiden")->required();
+  ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: tower, cube, slotted, maiden, vase, twisted-vase")->required();
   ex->add_option("--out", eo->out, "folder to write into")->capture_default_str();
 
   auto go = std::make_shared<GuideCliOptions>();
@@ -582,8 +601,8 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder; solid3d: "
                                    "surface.json and, when valid, split.json");
   auto f3 = std::make_shared<Facet3CliOptions>();
-  fc->add_option("--domain", f3->domain, "solid3d: Omega by auto (projection, else circle), projection or circle")
-      ->check(CLI::IsMember({"auto", "projection", "circle"}))
+  fc->add_option("--domain", f3->domain, "solid3d: Omega by auto (projection, else Eq. 5's qp, else circle), projection, qp or circle")
+      ->check(CLI::IsMember({"auto", "projection", "qp", "circle"}))
       ->capture_default_str();
   fc->add_option("--patch-inner-knots", f3->inner, "solid3d: uniform inner knots per direction of the bicubic patch")->check(CLI::Range(0, 15))->capture_default_str();
   fc->add_option("--boundary-samples", f3->samples, "solid3d: samples of Eq. 7 per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -594,7 +613,9 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--max-depth", f3->max_depth, "solid3d: halvings of one piece in the certificates")->check(CLI::Range(0, 40))->capture_default_str();
   fc->add_option("--vtk", f3->vtk, "solid3d: write solid.vtk and surface.vtk (the trimmed patch) into this folder");
   fc->add_flag("--guided", f3->guided, "solid3d: find the guiding surface (RDCP, the guide options) and refine the patch by Eq. 6 (Gauss-Newton in double)");
-  fc->add_option("--weight-guide", f3->weight_guide, "solid3d --guided: the weight of Eq. 6 (the paper: 10)")->capture_default_str();
+  fc->add_option("--weight-guide", f3->weight_guide,
+                 "solid3d --guided: the weight of Eq. 6 (the paper: 10), or auto: 10, 10^2, ..., 10^6 in turn until the refined patch is certified valid")
+      ->capture_default_str();
   fc->add_option("--guide-grid", f3->guide_grid, "solid3d --guided: n x n samples of Eq. 6 over Omega's bounding box")->check(CLI::Range(2, 200))->capture_default_str();
   fc->add_option("--guide-iterations", f3->guide_iterations, "solid3d --guided: Gauss-Newton steps at most")->check(CLI::Range(0, 1000))->capture_default_str();
   fc->add_option("--inner-knots-z", fo->guide.inner_z, "solid3d --guided: the guide's inner knots in z (-1: as in x)")->check(CLI::Range(-1, 1000))->capture_default_str();

@@ -76,7 +76,7 @@ Solid3<Rational> box_solid(const std::vector<Rational>& xs, const std::vector<Ra
   return S;
 }
 
-std::vector<std::string> cut_example3_names() { return {"tower", "cube", "slotted", "maiden", "vase"}; }
+std::vector<std::string> cut_example3_names() { return {"tower", "cube", "slotted", "maiden", "vase", "twisted-vase"}; }
 
 CutExample3 cut_example3(const std::string& name) {
   CutExample3 e;
@@ -129,6 +129,37 @@ CutExample3 cut_example3(const std::string& name) {
       const bool cavity = c[0] >= 2 && c[0] <= 3 && c[1] >= 2 && c[1] <= 3 && c[2] >= 1;
       return c[2] > 2 || cavity;
     });
+  } else if (name == "twisted-vase") {
+    e = cut_example3("vase");
+    e.name = name;
+    e.description =
+        "the vase with every vertex moved by the polynomial map (x + (y - 5/2)(z - 2)/20, y - (x - 5/2)(z - 2)/20, z + (x - 5/2)(y - 5/2)/10) "
+        "and its faces the bilinear patches through the moved corners (modelled on Figure 1's vase: non-planar faces, and a non-planar "
+        "loop, a saddle from z = 11/8 to 21/8 at the corners); b as for the vase; each loop side's tangent is the b facet's inward "
+        "normal at the side's midpoint";
+    auto phi = [](const P3& p) {
+      const Rational &x = p[0], &y = p[1], &z = p[2];
+      return P3{x + (y - q(5, 2)) * (z - 2) / 20, y - (x - q(5, 2)) * (z - 2) / 20, z + (x - q(5, 2)) * (y - q(5, 2)) / 10};
+    };
+    for (auto& F : e.solid.facets)
+      for (std::size_t i = 0; i < 4; ++i) {
+        const P3 m = phi({F.points[3 * i], F.points[3 * i + 1], F.points[3 * i + 2]});
+        for (int k = 0; k < 3; ++k) F.points[3 * i + k] = m[k];
+      }
+    for (auto& t : e.cut.tangents) {
+      // the midpoint of the side in the facet's domain [0,1]^2 (sides 0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0)
+      static const Rational mid[4][2] = {{q(1, 2), q(0)}, {q(1), q(1, 2)}, {q(1, 2), q(1)}, {q(0), q(1, 2)}};
+      const auto& F = e.solid.facets[t.facet];
+      const Rational u = mid[t.side][0], v = mid[t.side][1];
+      P3 Fu, Fv;
+      // F = (1-u)(1-v) P00 + u (1-v) P10 + (1-u) v P01 + u v P11, control points in the order P00, P10, P01, P11
+      for (int k = 0; k < 3; ++k) {
+        const Rational &p00 = F.points[k], &p10 = F.points[3 + k], &p01 = F.points[6 + k], &p11 = F.points[9 + k];
+        Fu[k] = (1 - v) * (p10 - p00) + v * (p11 - p01);
+        Fv[k] = (1 - u) * (p01 - p00) + u * (p11 - p10);
+      }
+      t.tangent = {-(Fu[1] * Fv[2] - Fu[2] * Fv[1]), -(Fu[2] * Fv[0] - Fu[0] * Fv[2]), -(Fu[0] * Fv[1] - Fu[1] * Fv[0])};
+    }
   } else {
     std::string names;
     for (const auto& n : cut_example3_names()) names += (names.empty() ? "" : ", ") + n;

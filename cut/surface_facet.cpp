@@ -12,6 +12,7 @@
 #include <chrono>
 #include <deque>
 #include <iostream>
+#include <optional>
 
 #include "compose/compose.hpp"
 #include "cut/guide.hpp"
@@ -43,6 +44,9 @@ std::vector<K::Point_2> cg_polygon(const std::vector<P2>& v) {
 
 Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 Rational max_abs3(const P3& a) { return std::max(rabs(a[0]), std::max(rabs(a[1]), rabs(a[2]))); }
+P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+Rational dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // ---- Step 1 --------------------------------------------------------------------------------------
 
@@ -94,6 +98,52 @@ Rational approximate_length(const P3& d) {
   return r / Rational(boost::multiprecision::mpz_int(1) << 64);
 }
 
+// x rounded to the nearest multiple of 2^-bits, exactly (MPFR at the precision x needs: no double).
+Rational round_to_grid(const mpfr_t x, unsigned bits) {
+  mpfr_t y;
+  mpfr_init2(y, mpfr_get_prec(x));
+  mpfr_mul_2ui(y, x, bits, MPFR_RNDN);
+  mpfr_round(y, y);
+  mpz_t z;
+  mpz_init(z);
+  mpfr_get_z(z, y, MPFR_RNDN);
+  Rational r;
+  mpq_set_z(r.backend().data(), z);
+  mpz_clear(z);
+  mpfr_clear(y);
+  return r / Rational(boost::multiprecision::mpz_int(1) << bits);
+}
+
+// The exact unit vector (1 - t^2, 2 t) / (1 + t^2), t = tan(phi / 2) rounded to a multiple of 2^-12,
+// for |phi| <= pi / 2 (|t| <= 1); other angles through phi -/+ pi and the opposite vector. A
+// rational point exactly on the unit circle, within about 2^-12 rad of the direction phi.
+P2 rational_direction(const mpfr_t phi_in) {
+  mpfr_t phi, pi, h;
+  mpfr_inits2(160, phi, pi, h, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set(phi, phi_in, MPFR_RNDN);
+  mpfr_const_pi(pi, MPFR_RNDN);
+  // phi into (-pi, pi]
+  mpfr_mul_2ui(h, pi, 1, MPFR_RNDN);
+  mpfr_remainder(phi, phi, h, MPFR_RNDN);
+  bool flip = false;
+  mpfr_div_2ui(h, pi, 1, MPFR_RNDN);
+  if (mpfr_cmpabs(phi, h) > 0) {
+    flip = true;
+    if (mpfr_sgn(phi) > 0)
+      mpfr_sub(phi, phi, pi, MPFR_RNDN);
+    else
+      mpfr_add(phi, phi, pi, MPFR_RNDN);
+  }
+  mpfr_div_2ui(phi, phi, 1, MPFR_RNDN);
+  mpfr_tan(h, phi, MPFR_RNDN);
+  const Rational t = round_to_grid(h, 12);
+  mpfr_clears(phi, pi, h, static_cast<mpfr_ptr>(nullptr));
+  const Rational d = 1 + t * t;
+  P2 u{(1 - t * t) / d, 2 * t / d};
+  if (flip) u = {Rational(-u[0]), Rational(-u[1])};
+  return u;
+}
+
 bool simple_polygon(const std::vector<P2>& v, std::string& why) {
   for (std::size_t j = 0; j < v.size(); ++j)
     if (v[j] == v[(j + 1) % v.size()]) {
@@ -106,6 +156,174 @@ bool simple_polygon(const std::vector<P2>& v, std::string& why) {
     return false;
   }
   return true;
+}
+
+// Uniform scaling of the points into [0, 1]^2, centred; false when they span nothing.
+bool into_unit_square(std::vector<P2>& q) {
+  P2 lo = q[0], hi = q[0];
+  for (const auto& p : q)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const Rational ext = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if (ext == 0) return false;
+  for (auto& p : q)
+    for (int k = 0; k < 2; ++k) p[k] = (p[k] - lo[k]) / ext + (ext - (hi[k] - lo[k])) / (2 * ext);
+  return true;
+}
+
+// Eq. 5 of papers/004. The turning angle at vertex j (from side j-1 to side j) is
+// theta_j = atan2((d_{j-1} x d_j) . N / |N|, d_{j-1} . d_j), N the loop's Newell normal: the turn seen
+// along N (a turn about an axis in the loop's mean plane, like the maiden's wave, counts 0). The
+// alpha_j = theta_j 2 pi / sum theta (the sum must be positive), and side j's direction is
+// phi_j = alpha_1 + ... + alpha_j, taken as the exact rational unit vector u_j within 2^-12 rad
+// (rational_direction). With l_j the side's length (to 2^-64) and y_j = x_j / l_j, Eq. 5 is
+//   min sum (y_j - 1)^2  subject to  sum y_j l_j u_j = 0,
+// whose solution is y = 1 - B^T (B B^T)^-1 B 1, B = [l_j u_j] (2 x n), exactly. Every x_j must be
+// positive. The vertices are the partial sums of x_j u_j (a closed polygon, exactly), scaled
+// uniformly into [0, 1]^2 and rounded to multiples of 2^-11 (short numbers for the patch program,
+// as for the circle), then checked simple and counter-clockwise.
+std::optional<std::vector<P2>> eq5_polygon(const std::vector<LoopSide3>& loop, std::string& why) {
+  const std::size_t n = loop.size();
+  const P3 N = newell_normal(loop);
+  const Rational NN = dot3(N, N);
+  if (NN == 0) {
+    why = "the loop's Newell normal is zero";
+    return std::nullopt;
+  }
+  mpfr_t nn, s, c, th, sum, tw, a;
+  mpfr_inits2(160, nn, s, c, th, sum, tw, a, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_q(nn, NN.backend().data(), MPFR_RNDN);
+  mpfr_sqrt(nn, nn, MPFR_RNDN);
+  std::vector<Rational> sq(n), cq(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const P3 din = sub(loop[(j + n - 1) % n].end, loop[(j + n - 1) % n].start), dout = sub(loop[j].end, loop[j].start);
+    sq[j] = dot3(cross(din, dout), N);
+    cq[j] = dot3(din, dout);
+  }
+  // theta_j = atan2(sq_j / |N|, cq_j); sum them
+  std::vector<__mpfr_struct> theta(n);
+  mpfr_set_ui(sum, 0, MPFR_RNDN);
+  for (std::size_t j = 0; j < n; ++j) {
+    mpfr_init2(&theta[j], 160);
+    mpfr_set_q(s, sq[j].backend().data(), MPFR_RNDN);
+    mpfr_div(s, s, nn, MPFR_RNDN);
+    mpfr_set_q(c, cq[j].backend().data(), MPFR_RNDN);
+    mpfr_atan2(&theta[j], s, c, MPFR_RNDN);
+    mpfr_add(sum, sum, &theta[j], MPFR_RNDN);
+  }
+  std::optional<std::vector<P2>> result;
+  std::vector<P2> u(n);
+  mpfr_const_pi(tw, MPFR_RNDN);
+  mpfr_mul_2ui(tw, tw, 1, MPFR_RNDN);
+  mpfr_div_2ui(a, tw, 1, MPFR_RNDN);  // pi
+  if (mpfr_cmp(sum, a) <= 0) {
+    why = "the loop's turning angles seen along its Newell normal sum to " + std::to_string(mpfr_get_d(sum, MPFR_RNDN)) + " (not near 2 pi)";
+  } else {
+    // phi_0 = 0, phi_j = phi_{j-1} + alpha_j
+    mpfr_set_ui(a, 0, MPFR_RNDN);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j > 0) {
+        mpfr_mul(th, &theta[j], tw, MPFR_RNDN);
+        mpfr_div(th, th, sum, MPFR_RNDN);
+        mpfr_add(a, a, th, MPFR_RNDN);
+      }
+      u[j] = rational_direction(a);
+    }
+  }
+  for (auto& t : theta) mpfr_clear(&t);
+  mpfr_clears(nn, s, c, th, sum, tw, a, static_cast<mpfr_ptr>(nullptr));
+  if (!why.empty()) return std::nullopt;
+  std::vector<Rational> len(n);
+  for (std::size_t j = 0; j < n; ++j) len[j] = approximate_length(sub(loop[j].end, loop[j].start));
+  // G = B B^T, r = B 1
+  Rational g00(0), g01(0), g11(0), r0(0), r1(0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Rational b0 = len[j] * u[j][0], b1 = len[j] * u[j][1];
+    g00 += b0 * b0, g01 += b0 * b1, g11 += b1 * b1, r0 += b0, r1 += b1;
+  }
+  const Rational det = g00 * g11 - g01 * g01;
+  if (det == 0) {
+    why = "the sides' directions of Eq. 5 are all parallel";
+    return std::nullopt;
+  }
+  const Rational m0 = (g11 * r0 - g01 * r1) / det, m1 = (g00 * r1 - g01 * r0) / det;
+  std::vector<P2> v(n);
+  v[0] = {Rational(0), Rational(0)};
+  for (std::size_t j = 0; j < n; ++j) {
+    const Rational y = 1 - (len[j] * u[j][0] * m0 + len[j] * u[j][1] * m1);
+    if (!(y > 0)) {
+      why = "Eq. 5 gives side " + std::to_string(j) + " the length factor " + std::to_string(to_double(y)) + " <= 0";
+      return std::nullopt;
+    }
+    if (j + 1 < n) v[j + 1] = {v[j][0] + y * len[j] * u[j][0], v[j][1] + y * len[j] * u[j][1]};
+  }
+  if (!into_unit_square(v)) {
+    why = "Eq. 5's polygon spans nothing";
+    return std::nullopt;
+  }
+  for (auto& p : v)
+    for (int k = 0; k < 2; ++k) {
+      mpfr_t x;
+      mpfr_init2(x, 256);
+      mpfr_set_q(x, p[k].backend().data(), MPFR_RNDN);
+      p[k] = round_to_grid(x, 11);
+      mpfr_clear(x);
+    }
+  if (!simple_polygon(v, why)) {
+    why = "Eq. 5's polygon (vertices on the 2^-11 grid) is not simple: " + why;
+    return std::nullopt;
+  }
+  Rational area(0);
+  for (std::size_t j = 0; j < n; ++j) area += v[j][0] * v[(j + 1) % n][1] - v[(j + 1) % n][0] * v[j][1];
+  if (!(area > 0)) {
+    why = "Eq. 5's polygon runs clockwise";
+    return std::nullopt;
+  }
+  return v;
+}
+
+// The 2 x 2 matrix M of the regularity certificate: P = M (x_a0, x_a1). Any invertible M keeps the
+// argument (M P p injective implies p injective; D(M P p) non-singular implies Dp of rank 2), and the
+// monotone criterion needs M P p to look like the identity of Omega: M is the least-squares linear
+// fit of Omega's vertices to the loop's projected vertices (both centred), scaled to max entry 1 and
+// rounded to multiples of 2^-16. The identity when the fit is not invertible, or when Omega is the
+// projection itself (the fit is then a multiple of the identity).
+std::array<Rational, 4> projection_alignment(const std::vector<LoopSide3>& loop, const DomainPolygon& D) {
+  const std::array<Rational, 4> id{Rational(1), Rational(0), Rational(0), Rational(1)};
+  const std::size_t n = loop.size();
+  if (D.vertices.size() != n || n == 0) return id;
+  std::vector<P2> q(n);
+  P2 qc{Rational(0), Rational(0)}, wc{Rational(0), Rational(0)};
+  for (std::size_t j = 0; j < n; ++j) {
+    q[j] = {loop[j].start[D.axes[0]], loop[j].start[D.axes[1]]};
+    for (int k = 0; k < 2; ++k) qc[k] += q[j][k] / n, wc[k] += D.vertices[j][k] / n;
+  }
+  Rational sqq[2][2] = {{Rational(0), Rational(0)}, {Rational(0), Rational(0)}}, swq[2][2] = {{Rational(0), Rational(0)}, {Rational(0), Rational(0)}};
+  for (std::size_t j = 0; j < n; ++j)
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        sqq[a][b] += (q[j][a] - qc[a]) * (q[j][b] - qc[b]);
+        swq[a][b] += (D.vertices[j][a] - wc[a]) * (q[j][b] - qc[b]);
+      }
+  const Rational det = sqq[0][0] * sqq[1][1] - sqq[0][1] * sqq[1][0];
+  if (det == 0) return id;
+  // M = swq sqq^-1
+  const Rational i00 = sqq[1][1] / det, i01 = -sqq[0][1] / det, i10 = -sqq[1][0] / det, i11 = sqq[0][0] / det;
+  std::array<Rational, 4> M{swq[0][0] * i00 + swq[0][1] * i10, swq[0][0] * i01 + swq[0][1] * i11, swq[1][0] * i00 + swq[1][1] * i10,
+                            swq[1][0] * i01 + swq[1][1] * i11};
+  if (M[1] == 0 && M[2] == 0 && M[0] == M[3] && M[0] > 0) return id;
+  Rational mx(0);
+  for (const auto& m : M) mx = std::max(mx, rabs(m));
+  if (mx == 0) return id;
+  for (auto& m : M) {
+    mpfr_t x;
+    mpfr_init2(x, 256);
+    const Rational r = m / mx;
+    mpfr_set_q(x, r.backend().data(), MPFR_RNDN);
+    m = round_to_grid(x, 16);
+    mpfr_clear(x);
+  }
+  if (!(M[0] * M[3] - M[1] * M[2] != 0)) return id;
+  return M;
 }
 
 // ---- Step 2 --------------------------------------------------------------------------------------
@@ -169,6 +387,181 @@ const BezierPiece<Rational>& piece_at(const std::vector<BezierPiece<Rational>>& 
   throw std::logic_error("piece_at: outside the patch");
 }
 
+// Injectivity and regularity by a grid of cells (the fallback when no single projection works, as
+// for surfaces that turn through 90 degrees, like the maiden's wave). At level m every Bezier piece
+// is cut into 2^m x 2^m cells, numbered (I, J) over the whole patch. Then
+//   (a) on every window of 3 x 3 cells that holds a cell meeting Omega, F = A p is a monotone map:
+//       A (2 x 3) the left inverse of Dp at the window's centre, rounded (any fixed A keeps the
+//       argument), and the symmetric part of DF = A Dp positive definite on each of its 9 cells
+//       (Bernstein signs of A_0 p_u and 4 (A_0 p_u)(A_1 p_v) - (A_0 p_v + A_1 p_u)^2). The window is a
+//       rectangle, so F is injective on it and DF non-singular: p is injective and regular there;
+//   (b) any two cells meeting Omega whose indices differ by 3 or more in I or J have disjoint boxes
+//       of Bernstein coefficients (the convex hulls of their images).
+// Two parameters of Omega whose cells differ by at most 2 in I and J share a window (a); all other
+// pairs are separated by (b). So p is injective on Omega and regular there. Levels are tried until
+// both hold or the cells exceed max_cells.
+struct GridCertificate {
+  bool proved = false;
+  int level = -1;
+  std::size_t cells = 0, windows = 0;
+  std::string why;  // the last level's failure
+};
+
+GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& pieces, const std::vector<K::Point_2>& poly, int max_level,
+                                 std::size_t max_cells) {
+  GridCertificate R;
+  // the pieces' columns and rows
+  std::vector<Rational> us, vs;
+  for (const auto& pc : pieces) us.push_back(pc.box[0].first), vs.push_back(pc.box[1].first);
+  std::sort(us.begin(), us.end());
+  us.erase(std::unique(us.begin(), us.end()), us.end());
+  std::sort(vs.begin(), vs.end());
+  vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+  // Every coordinate times the common denominator L of all the pieces' control points: a positive
+  // factor changes no sign and no order, and the integers it leaves (with the small denominators
+  // of the dyadic splits) spare the gcds of exact patches' long fractions (minutes -> seconds).
+  Rational L(1);
+  {
+    boost::multiprecision::mpz_int l(1);
+    for (const auto& pc : pieces)
+      for (const auto& x : pc.spline.points) {
+        const boost::multiprecision::mpz_int d = boost::multiprecision::denominator(x);
+        if (d != 1) mpz_lcm(l.backend().data(), l.backend().data(), d.backend().data());
+      }
+    L = Rational(l);
+  }
+  struct Cell {
+    bool meets = false, built = false;
+    P2 lo, hi;
+    const BezierPiece<Rational>* piece = nullptr;
+    int i = 0, j = 0;  // the sub-cell within the piece
+    std::array<Bern<Rational>, 3> pu, pv;
+    std::array<std::pair<Rational, Rational>, 3> box;
+  };
+  for (int m = 0; m <= max_level; ++m) {
+    const long k = 1L << m, GI = static_cast<long>(us.size()) * k, GJ = static_cast<long>(vs.size()) * k;
+    if (GI < 3 || GJ < 3) continue;
+    if (static_cast<std::size_t>(GI * GJ) > max_cells) {
+      if (R.why.empty()) R.why = "the grid would exceed " + std::to_string(max_cells) + " cells";
+      break;
+    }
+    R.level = m;
+    std::vector<Cell> cells(static_cast<std::size_t>(GI * GJ));
+    auto at = [&](long I, long J) -> Cell& { return cells[static_cast<std::size_t>(J * GI + I)]; };
+    for (const auto& pc : pieces) {
+      const long pi = std::lower_bound(us.begin(), us.end(), pc.box[0].first) - us.begin();
+      const long pj = std::lower_bound(vs.begin(), vs.end(), pc.box[1].first) - vs.begin();
+      const Rational hu = (pc.box[0].second - pc.box[0].first) / k, hv = (pc.box[1].second - pc.box[1].first) / k;
+      for (long i = 0; i < k; ++i)
+        for (long j = 0; j < k; ++j) {
+          Cell& c = at(pi * k + i, pj * k + j);
+          c.piece = &pc;
+          c.i = static_cast<int>(i), c.j = static_cast<int>(j);
+          c.lo = {pc.box[0].first + hu * i, pc.box[1].first + hv * j};
+          c.hi = {c.lo[0] + hu, c.lo[1] + hv};
+          c.meets = box_meets_polygon(c.lo, c.hi, poly);
+        }
+    }
+    auto build = [&](Cell& c) {
+      if (c.built) return;
+      c.built = true;
+      const Rational a0(c.i, k), a1(c.i + 1, k), b0(c.j, k), b1(c.j + 1, k);
+      const Rational hu = c.hi[0] - c.lo[0], hv = c.hi[1] - c.lo[1];
+      for (int d = 0; d < 3; ++d) {
+        auto X = scaled(detail::bern_coordinate(c.piece->spline, d), L);
+        if (k > 1) X = detail::bern_restrict(detail::bern_restrict(X, 0, a0, a1), 1, b0, b1);
+        const auto [lo, hi] = detail::bern_range(X);
+        c.box[d] = {lo, hi};
+        c.pu[d] = scaled(detail::bern_derivative(X, 0), 1 / hu);
+        c.pv[d] = scaled(detail::bern_derivative(X, 1), 1 / hv);
+      }
+    };
+    R.cells = 0;
+    for (auto& c : cells)
+      if (c.meets) ++R.cells;
+    // (a) the windows
+    bool ok = true;
+    R.windows = 0;
+    for (long I = 0; ok && I + 2 < GI; ++I)
+      for (long J = 0; ok && J + 2 < GJ; ++J) {
+        bool any = false;
+        for (long a = 0; a < 3; ++a)
+          for (long b = 0; b < 3; ++b) any = any || at(I + a, J + b).meets;
+        if (!any) continue;
+        ++R.windows;
+        Cell& mid = at(I + 1, J + 1);
+        build(mid);
+        const std::vector<Rational> half{Rational(1, 2), Rational(1, 2)};
+        P3 u, v;
+        for (int d = 0; d < 3; ++d) u[d] = detail::bern_value(mid.pu[d], half), v[d] = detail::bern_value(mid.pv[d], half);
+        const Rational g00 = dot3(u, u), g01 = dot3(u, v), g11 = dot3(v, v), det = g00 * g11 - g01 * g01;
+        if (det == 0) {
+          ok = false;
+          R.why = "p_u x p_v = 0 at the centre of the window at cell (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ")";
+          break;
+        }
+        // A = G^-1 [u^T; v^T], rounded to 20 bits relative to its largest entry
+        std::array<Rational, 6> A;
+        for (int d = 0; d < 3; ++d) A[d] = (g11 * u[d] - g01 * v[d]) / det, A[3 + d] = (g00 * v[d] - g01 * u[d]) / det;
+        Rational mx(0);
+        for (const auto& x : A) mx = std::max(mx, rabs(x));
+        for (auto& x : A) {
+          mpfr_t t;
+          mpfr_init2(t, 256);
+          const Rational r = x / mx;
+          mpfr_set_q(t, r.backend().data(), MPFR_RNDN);
+          x = round_to_grid(t, 20);
+          mpfr_clear(t);
+        }
+        for (long a = 0; ok && a < 3; ++a)
+          for (long b = 0; ok && b < 3; ++b) {
+            Cell& c = at(I + a, J + b);
+            build(c);
+            auto row = [&](int r, const std::array<Bern<Rational>, 3>& w) {
+              Bern<Rational> s = scaled(w[0], A[3 * r]);
+              s = detail::bern_combine(s, scaled(w[1], A[3 * r + 1]), false);
+              return detail::bern_combine(s, scaled(w[2], A[3 * r + 2]), false);
+            };
+            const auto fa = row(0, c.pu), fb1 = row(0, c.pv), fb2 = row(1, c.pu), fc = row(1, c.pv);
+            const auto S = detail::bern_combine(fb1, fb2, false);
+            const auto Q = detail::bern_combine(scaled(detail::bern_product(fa, fc), Rational(4)), detail::bern_product(S, S), true);
+            if (!(detail::bern_sign(fa) > 0 && detail::bern_sign(Q) > 0)) {
+              ok = false;
+              R.why = "the window at cell (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ") is not certified monotone";
+            }
+          }
+      }
+    if (!ok) continue;
+    // (b) far cells: disjoint boxes (sweep over the x extent)
+    std::vector<std::pair<long, long>> meet;
+    for (long I = 0; I < GI; ++I)
+      for (long J = 0; J < GJ; ++J)
+        if (at(I, J).meets) build(at(I, J)), meet.emplace_back(I, J);
+    std::sort(meet.begin(), meet.end(), [&](const auto& x, const auto& y) { return at(x.first, x.second).box[0].first < at(y.first, y.second).box[0].first; });
+    for (std::size_t x = 0; ok && x < meet.size(); ++x) {
+      const Cell& c1 = at(meet[x].first, meet[x].second);
+      for (std::size_t y = x + 1; y < meet.size(); ++y) {
+        const Cell& c2 = at(meet[y].first, meet[y].second);
+        if (c1.box[0].second < c2.box[0].first) break;
+        if (std::abs(meet[x].first - meet[y].first) < 3 && std::abs(meet[x].second - meet[y].second) < 3) continue;
+        if (c1.box[1].second < c2.box[1].first || c2.box[1].second < c1.box[1].first || c1.box[2].second < c2.box[2].first ||
+            c2.box[2].second < c1.box[2].first)
+          continue;
+        ok = false;
+        R.why = "the boxes of the far cells (" + std::to_string(meet[x].first) + ", " + std::to_string(meet[x].second) + ") and (" +
+                std::to_string(meet[y].first) + ", " + std::to_string(meet[y].second) + ") meet";
+        break;
+      }
+    }
+    if (ok) {
+      R.proved = true;
+      R.why.clear();
+      return R;
+    }
+  }
+  return R;
+}
+
 // The edge W0 -> W1 cut at the patch's knot lines: the parameters s in [0, 1] of the crossings.
 std::vector<Rational> edge_breaks(const P2& W0, const P2& W1, const std::vector<Rational>& knots) {
   std::vector<Rational> s{Rational(0), Rational(1)};
@@ -189,12 +582,22 @@ struct Triangle {
   P3 a, b, c;
 };
 
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-Rational dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-std::optional<std::vector<Triangle>> planar_quads(const Solid3<Rational>& S, std::string& why) {
-  std::vector<Triangle> t;
+// A non-planar bilinear facet B(u, v) = a + b u + c v + d u v on [0, 1]^2. Its corners are not
+// coplanar, so b, c, d are independent and B is injective: a ray's crossings are the solutions.
+struct Bilinear {
+  P3 a, b, c, d;
+};
+
+// The facets for exact ray parity: planar convex quadrilaterals as two triangles, non-planar
+// bilinear quadrilaterals as themselves.
+struct MembershipModel {
+  std::vector<Triangle> triangles;
+  std::vector<Bilinear> bilinears;
+};
+
+std::optional<MembershipModel> membership_model(const Solid3<Rational>& S, std::string& why) {
+  MembershipModel M;
   for (std::size_t i = 0; i < S.facets.size(); ++i) {
     const auto& F = S.facets[i];
     if (F.degrees != std::vector<int>{1, 1} || F.count(0) != 2 || F.count(1) != 2) {
@@ -205,26 +608,105 @@ std::optional<std::vector<Triangle>> planar_quads(const Solid3<Rational>& S, std
     const P3 a = P(0), b = P(1), d = P(2), c = P(3);  // P00, P10, P01, P11
     const P3 n = cross(sub(b, a), sub(d, a));
     if (dot3(n, sub(c, a)) != 0) {
-      why = "facets[" + std::to_string(i) + "] is not planar";
-      return std::nullopt;
+      // B = a + (b - a) u + (d - a) v + (c - b - d + a) u v
+      M.bilinears.push_back({a, sub(b, a), sub(d, a), sub(sub(c, b), sub(d, a))});
+      continue;
     }
     // convex: the corners a b c d turn the same way as n
     const std::array<P3, 4> q{a, b, c, d};
     for (int k = 0; k < 4; ++k)
       if (!(dot3(cross(sub(q[(k + 1) % 4], q[k]), sub(q[(k + 2) % 4], q[(k + 1) % 4])), n) > 0)) {
-        why = "facets[" + std::to_string(i) + "] is not a convex quadrilateral";
+        why = "facets[" + std::to_string(i) + "] is a planar quadrilateral that is not convex";
         return std::nullopt;
       }
-    t.push_back({a, b, c});
-    t.push_back({a, c, d});
+    M.triangles.push_back({a, b, c});
+    M.triangles.push_back({a, c, d});
   }
-  return t;
+  return M;
+}
+
+// A quadratic irrational p + s sqrt(D), D >= 0 rational, and its exact sign.
+struct QuadIrr {
+  Rational p, s;
+};
+int sgn(const Rational& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+int sign_of(const QuadIrr& x, const Rational& D) {
+  const int sp = sgn(x.p), ss = D == 0 ? 0 : sgn(x.s);
+  if (ss == 0) return sp;
+  if (sp == 0 || sp == ss) return ss;
+  const Rational l = x.p * x.p, r = x.s * x.s * D;
+  return l > r ? sp : l < r ? ss : 0;
+}
+QuadIrr mul(const QuadIrr& x, const QuadIrr& y, const Rational& D) { return {x.p * y.p + x.s * y.s * D, x.p * y.s + x.s * y.p}; }
+QuadIrr lin(const Rational& k0, const Rational& k1, const QuadIrr& u) { return {k0 + k1 * u.p, k1 * u.s}; }  // k0 + k1 u
+
+// The ray x + t r (t > 0) against a non-planar bilinear facet: adds its crossings to hits; 2 when x
+// lies on the facet, -1 when the ray is degenerate for it (through its border, tangent, or along a
+// ruling), else 0. With n1, n2 spanning the plane normal to r, the two equations (B - x) . n_k = 0
+// are bilinear, A_k + B_k u + C_k v + D_k u v = 0; eliminating v leaves the quadratic
+// (A1 + B1 u)(C2 + D2 u) - (A2 + B2 u)(C1 + D1 u) = 0, whose roots are exact quadratic irrationals.
+int bilinear_crossings(const Bilinear& F, const P3& x, const P3& r, std::size_t& hits) {
+  int ax = 0;
+  for (int k = 1; k < 3; ++k)
+    if (rabs(r[k]) < rabs(r[ax])) ax = k;
+  P3 e{Rational(0), Rational(0), Rational(0)};
+  e[ax] = 1;
+  const P3 n1 = cross(r, e), n2 = cross(r, n1);
+  const P3 ax0 = sub(F.a, x);
+  const Rational A1 = dot3(ax0, n1), B1 = dot3(F.b, n1), C1 = dot3(F.c, n1), D1 = dot3(F.d, n1);
+  const Rational A2 = dot3(ax0, n2), B2 = dot3(F.b, n2), C2 = dot3(F.c, n2), D2 = dot3(F.d, n2);
+  const Rational al = B1 * D2 - B2 * D1, be = A1 * D2 + B1 * C2 - A2 * D1 - B2 * C1, ga = A1 * C2 - A2 * C1;
+  std::vector<QuadIrr> roots;
+  Rational D(0);
+  if (al == 0) {
+    if (be == 0) return ga == 0 ? -1 : 0;
+    roots.push_back({-ga / be, Rational(0)});
+  } else {
+    D = be * be - 4 * al * ga;
+    if (D < 0) return 0;
+    const QuadIrr u0{-be / (2 * al), Rational(0)};
+    if (D == 0) {  // tangent: degenerate when the touching point is on the facet
+      const bool in = u0.p >= 0 && u0.p <= 1;
+      return in ? -1 : 0;
+    }
+    roots.push_back({-be / (2 * al), 1 / (2 * al)});
+    roots.push_back({-be / (2 * al), -1 / (2 * al)});
+  }
+  const Rational re = dot3(F.a, r) - dot3(x, r), rb = dot3(F.b, r), rc = dot3(F.c, r), rd = dot3(F.d, r);
+  for (const auto& u : roots) {
+    const int su0 = sign_of(u, D), su1 = sign_of(lin(Rational(1), Rational(-1), u), D);
+    if (su0 < 0 || su1 < 0) continue;
+    // v = num / den from the first equation, else the second
+    QuadIrr num = lin(-A1, -B1, u), den = lin(C1, D1, u);
+    if (sign_of(den, D) == 0) {
+      if (sign_of(num, D) != 0) continue;  // the first equation has no v: no crossing
+      num = lin(-A2, -B2, u), den = lin(C2, D2, u);
+      if (sign_of(den, D) == 0) return -1;  // a whole segment u = u* solves both
+    }
+    const int sd = sign_of(den, D);
+    const int sv0 = sign_of(num, D) * sd;
+    const int sv1 = sign_of(QuadIrr{den.p - num.p, den.s - num.s}, D) * sd;
+    if (sv0 < 0 || sv1 < 0) continue;
+    // t has the sign of (B(u, v) - x) . r; times den: (re + rb u) den + (rc + rd u) num
+    const QuadIrr td1 = mul(lin(re, rb, u), den, D), td2 = mul(lin(rc, rd, u), num, D);
+    const int st = sign_of(QuadIrr{td1.p + td2.p, td1.s + td2.s}, D) * sd;
+    if (st == 0) return 2;
+    if (st > 0) {
+      if (su0 == 0 || su1 == 0 || sv0 == 0 || sv1 == 0) return -1;
+      ++hits;
+    }
+  }
+  return 0;
 }
 
 // Exact ray parity. 0: inside, 1: outside, 2: on the boundary, -1: degenerate ray.
-int parity(const std::vector<Triangle>& tris, const P3& x, const P3& r) {
+int parity(const MembershipModel& model, const P3& x, const P3& r) {
   std::size_t hits = 0;
-  for (const auto& T : tris) {
+  for (const auto& B : model.bilinears) {
+    const int c = bilinear_crossings(B, x, r, hits);
+    if (c != 0) return c;
+  }
+  for (const auto& T : model.triangles) {
     const P3 e1 = sub(T.b, T.a), e2 = sub(T.c, T.a), s = sub(x, T.a);
     const P3 h = cross(r, e2);
     const Rational det = dot3(e1, h);
@@ -279,13 +761,13 @@ std::array<int, 2> projection_axes(const std::vector<LoopSide3>& loop) {
 DomainPolygon domain_polygon(const std::vector<LoopSide3>& loop, const std::string& method) {
   const std::size_t n = loop.size();
   if (n < 3) throw DomainError("cut", "the loop has " + std::to_string(n) + " sides; a cutting surface needs at least 3", "choose b so that the loop has 3 or more sides");
-  if (method != "auto" && method != "projection" && method != "circle")
-    throw UsageError("domain", "'" + method + "' is not a domain method", "give auto, projection or circle");
+  if (method != "auto" && method != "projection" && method != "qp" && method != "circle")
+    throw UsageError("domain", "'" + method + "' is not a domain method", "give auto, projection, qp or circle");
   DomainPolygon D;
   const P3 N = newell_normal(loop);
   D.axes = projection_axes(loop);
   const int ax = 3 - D.axes[0] - D.axes[1];
-  if (method != "circle") {
+  if (method == "auto" || method == "projection") {
     std::vector<P2> q;
     for (const auto& L : loop) q.push_back({L.start[D.axes[0]], L.start[D.axes[1]]});
     P2 lo = q[0], hi = q[0];
@@ -305,8 +787,18 @@ DomainPolygon domain_polygon(const std::vector<LoopSide3>& loop, const std::stri
       }
     }
     if (method == "projection")
-      throw DomainError("domain", "the projection of the loop is not a simple polygon: " + why, "give --domain circle or auto");
+      throw DomainError("domain", "the projection of the loop is not a simple polygon: " + why, "give --domain qp, circle or auto");
     D.why_not_projection = why;
+  }
+  if (method == "auto" || method == "qp") {
+    std::string why;
+    if (auto q = eq5_polygon(loop, why)) {
+      D.method = "qp";
+      D.vertices = std::move(*q);
+      return D;
+    }
+    if (method == "qp") throw DomainError("domain", "the polygon of Eq. 5 failed: " + why, "give --domain circle or auto");
+    D.why_not_qp = why;
   }
   // the circle: vertices at angles proportional to arc length, exactly on the circle
   std::vector<Rational> len;
@@ -334,27 +826,51 @@ void validate_surface_options(const SurfaceFacetOptions& o) {
   if (o.tangent_delta < 0) throw UsageError("tangent-delta", "must be >= 0", "give e.g. 1/20");
   if (!(o.strip > 0)) throw UsageError("strip", "must be > 0", "give e.g. 1/16");
   if (o.max_depth < 0 || o.max_depth > 40) throw UsageError("max-depth", "must be in 0..40", "give e.g. 14");
-  if (o.domain != "auto" && o.domain != "projection" && o.domain != "circle")
-    throw UsageError("domain", "'" + o.domain + "' is not a domain method", "give auto, projection or circle");
+  if (o.domain != "auto" && o.domain != "projection" && o.domain != "qp" && o.domain != "circle")
+    throw UsageError("domain", "'" + o.domain + "' is not a domain method", "give auto, projection, qp or circle");
 }
 
 // ---- Step 2 --------------------------------------------------------------------------------------
 
-void check_patch_program(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
-  validate_surface_options(o);
-  const auto D = domain_polygon(loop, o.domain);
-  const auto U = guide_knots(o.inner_knots);
+namespace {
+
+// Whether the vertex interpolation conditions p(W_j) = L_j are independent (exact rank).
+bool vertices_independent(const DomainPolygon& D, int inner_knots) {
+  const auto U = guide_knots(inner_knots);
   const std::size_t n = U.size() - 4, N = n * n, ns = D.vertices.size();
-  if (ns > N)
-    throw DomainError("patch-inner-knots", "the loop has " + std::to_string(ns) + " vertices, more than the patch's " + std::to_string(N) + " control points",
-                      "raise --patch-inner-knots");
+  if (ns > N) return false;
   std::vector<Rational> A(ns * N, Rational(0));
   for (std::size_t j = 0; j < ns; ++j)
     for (const auto& [i, v] : basis_row(U, n, U, n, D.vertices[j][0], D.vertices[j][1]).v) A[j * N + i] = v;
-  if (exact_rank(A, ns, N) < ns)
+  return exact_rank(A, ns, N) == ns;
+}
+
+}  // namespace
+
+DomainPolygon patch_domain(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
+  auto D = domain_polygon(loop, o.domain);
+  if (o.domain == "auto" && D.method == "qp" && !vertices_independent(D, o.inner_knots)) {
+    auto C = domain_polygon(loop, "circle");
+    C.why_not_projection = D.why_not_projection;
+    C.why_not_qp = "the interpolation conditions at its " + std::to_string(D.vertices.size()) + " vertices are dependent for " +
+                   std::to_string(o.inner_knots) + " inner knots (raise --patch-inner-knots to use it)";
+    return C;
+  }
+  return D;
+}
+
+void check_patch_program(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& o) {
+  validate_surface_options(o);
+  const auto D = patch_domain(loop, o);
+  const auto U = guide_knots(o.inner_knots);
+  const std::size_t N = (U.size() - 4) * (U.size() - 4), ns = D.vertices.size();
+  if (ns > N)
+    throw DomainError("patch-inner-knots", "the loop has " + std::to_string(ns) + " vertices, more than the patch's " + std::to_string(N) + " control points",
+                      "raise --patch-inner-knots");
+  if (!vertices_independent(D, o.inner_knots))
     throw DomainError("patch-inner-knots",
-                      "the interpolation conditions at the loop's " + std::to_string(ns) + " vertices are dependent for " + std::to_string(o.inner_knots) +
-                          " inner knots (too few basis functions around some vertices)",
+                      "the interpolation conditions at the loop's " + std::to_string(ns) + " vertices (domain " + D.method + ") are dependent for " +
+                          std::to_string(o.inner_knots) + " inner knots (too few basis functions around some vertices)",
                       "raise --patch-inner-knots");
 }
 
@@ -363,7 +879,7 @@ CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const Surf
   validate_surface_options(o);
   const auto t0 = std::chrono::steady_clock::now();
   CuttingSurface<T> R;
-  R.domain = domain_polygon(loop, o.domain);
+  R.domain = patch_domain(loop, o);
   const auto& W = R.domain.vertices;
   const std::size_t ns = loop.size();
   const auto Uq = guide_knots(o.inner_knots);
@@ -742,7 +1258,7 @@ GuidedResult refine_with_guide(const CuttingSurface<Rational>& init, const BSpli
 
 // ---- certificates --------------------------------------------------------------------------------
 
-static std::optional<Membership> membership_of(const std::vector<Triangle>& tris, const P3& x) {
+static std::optional<Membership> membership_of(const MembershipModel& tris, const P3& x) {
   static const std::array<P3, 6> rays{P3{Rational(1), Rational(17, 4099), Rational(29, 8191)},
                                       P3{Rational(-31, 7919), Rational(1), Rational(13, 6007)},
                                       P3{Rational(19, 5003), Rational(-23, 9001), Rational(1)},
@@ -760,9 +1276,9 @@ static std::optional<Membership> membership_of(const std::vector<Triangle>& tris
 
 std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3& x) {
   std::string why;
-  const auto tris = planar_quads(solid, why);
-  if (!tris) return std::nullopt;
-  return membership_of(*tris, x);
+  const auto model = membership_model(solid, why);
+  if (!model) return std::nullopt;
+  return membership_of(*model, x);
 }
 
 SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
@@ -863,6 +1379,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
   for (const auto& w : W)
     for (int k = 0; k < 2; ++k) blo[k] = std::min(blo[k], w[k]), bhi[k] = std::max(bhi[k], w[k]);
   const int a0 = domain.axes[0], a1 = domain.axes[1];
+  const auto M = projection_alignment(loop, domain);
   struct Cell {
     Bern<Rational> A, Q, det;
     P2 lo, hi;
@@ -872,7 +1389,8 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
     const P2 lo{pc.box[0].first, pc.box[1].first}, hi{pc.box[0].second, pc.box[1].second};
     if (!(lo[0] < bhi[0] && blo[0] < hi[0] && lo[1] < bhi[1] && blo[1] < hi[1])) continue;
     const Rational hu = hi[0] - lo[0], hv = hi[1] - lo[1];
-    const auto X = detail::bern_coordinate(pc.spline, a0), Y = detail::bern_coordinate(pc.spline, a1);
+    const auto X0 = detail::bern_coordinate(pc.spline, a0), Y0 = detail::bern_coordinate(pc.spline, a1);
+    const auto X = detail::bern_combine(scaled(X0, M[0]), scaled(Y0, M[1]), false), Y = detail::bern_combine(scaled(X0, M[2]), scaled(Y0, M[3]), false);
     const auto A = scaled(detail::bern_derivative(X, 0), 1 / hu), B1 = scaled(detail::bern_derivative(X, 1), 1 / hv);
     const auto B2 = scaled(detail::bern_derivative(Y, 0), 1 / hu), C = scaled(detail::bern_derivative(Y, 1), 1 / hv);
     const auto AC = detail::bern_product(A, C);
@@ -919,28 +1437,44 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
     }
     return true;
   };
-  const std::string axes = std::string("xyz").substr(a0, 1) + std::string("xyz").substr(a1, 1);
+  const bool aligned = !(M[0] == 1 && M[1] == 0 && M[2] == 0 && M[3] == 1);
+  GridCertificate G;
+  const std::string axes = aligned ? "M (" + std::string("xyz").substr(a0, 1) + std::string("xyz").substr(a1, 1) + "), M = [[" + M[0].str() + ", " + M[1].str() +
+                                         "], [" + M[2].str() + ", " + M[3].str() + "]] the loop's projection fitted to Omega"
+                                   : std::string("xyz").substr(a0, 1) + std::string("xyz").substr(a1, 1);
   if (certify_cells(true)) {
     V.regular = V.injective = "proved";
     V.regularity_method = "P = (" + axes + ") of p has DP + DP^T positive definite on the bounding box of Omega (Bernstein signs): P is a monotone map "
                           "on a convex set, so injective, and p's normal has a non-zero " + std::string("xyz").substr(3 - a0 - a1, 1) + " component";
+  } else if (progress("certificate: regularity and injectivity on a grid of windows"),
+             G = grid_injectivity(pieces, poly, std::min(o.max_depth / 2, 4), std::min<std::size_t>(o.max_pieces, 65536)), G.proved) {
+    V.regular = V.injective = "proved";
+    V.regularity_method = "no single projection is monotone (" + axes + "); on a grid of " + std::to_string(G.cells) + " cells meeting Omega (level " +
+                          std::to_string(G.level) + "), every window of 3 x 3 cells is mapped injectively with a regular Jacobian (A p monotone, A the "
+                          "left inverse of Dp at the window's centre, Bernstein signs), and cells 3 or more apart have disjoint boxes";
   } else if (certify_cells(false)) {
     V.regular = "proved";
     V.injective = "undecided";
-    V.regularity_method = "det DP > 0 on Omega for P = (" + axes + ") of p (Bernstein signs); the monotone criterion for injectivity does not hold";
+    V.regularity_method = "det DP > 0 on Omega for P = (" + axes + ") of p (Bernstein signs); the monotone criterion for injectivity does not hold, "
+                          "nor the grid of windows (" + G.why + ")";
     undecided = true;
   } else {
     V.regular = V.injective = "undecided";
-    V.regularity_method = "neither DP + DP^T positive definite nor det DP > 0 could be certified for P = (" + axes + ") of p";
+    V.regularity_method = "neither DP + DP^T positive definite nor det DP > 0 could be certified for P = (" + axes + ") of p, nor the grid of windows (" +
+                          G.why + ")";
     undecided = true;
   }
 
   progress("certificate: collision");
   // collision
   std::string why;
-  const auto triangles = planar_quads(solid, why);
+  const auto triangles = membership_model(solid, why);
   const bool membership = triangles.has_value();
-  V.membership = membership ? "exact ray parity (planar convex quadrilateral facets)" : "not available: " + why;
+  V.membership = !membership ? "not available: " + why
+                 : triangles->bilinears.empty()
+                     ? "exact ray parity (planar convex quadrilateral facets)"
+                     : "exact ray parity (bilinear quadrilateral facets: planar convex ones as two triangles, the others by the exact quadratic-irrational "
+                       "roots of their ray equations)";
   struct FacetBox {
     std::size_t facet;
     std::array<Rational, 6> box;
@@ -1020,6 +1554,27 @@ SurfaceSplit split_by_surface(const Solid3<Rational>& solid, const std::vector<s
   for (auto i : positive) b.at(i) = 1;
   for (std::size_t i = 0; i < solid.facets.size(); ++i) (b[i] ? s.part1 : s.part2).push_back(i);
   return s;
+}
+
+std::vector<GuidedStep> refine_with_guide_sweep(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const CuttingSurface<Rational>& initial,
+                                                const BSpline<double>& f, const GuidedOptions& base, const std::vector<double>& weights,
+                                                const SurfaceFacetOptions& o) {
+  if (weights.empty()) throw UsageError("weight-guide", "the sweep has no weights", "give at least one weight");
+  std::vector<GuidedStep> steps;
+  for (const double w : weights) {
+    GuidedOptions go = base;
+    go.weight_guide = w;
+    validate_guided_options(go);
+    if (o.progress) std::cerr << "[cut facet] the guided refinement at weight " << w << "\n";
+    GuidedStep st;
+    st.weight = w;
+    st.result = refine_with_guide(initial, f, go);
+    st.validity = certify_cutting_surface(solid, loop, initial.domain, st.result.patch, o);
+    const bool valid = st.validity.verdict == "valid";
+    steps.push_back(std::move(st));
+    if (valid) break;
+  }
+  return steps;
 }
 
 }  // namespace splinex

@@ -7,12 +7,20 @@
 //               Newell normal (a parallel projection onto a coordinate plane: exact), oriented
 //               counter-clockwise and scaled uniformly into [0, 1]^2; used when the result is a
 //               simple polygon (CGAL's is_simple_2 on exact rationals) with no collapsed side.
+//   qp          Eq. 5: edge lengths x_j closest to the loop's side lengths (min sum (x_j / l_j - 1)^2)
+//               along directions turning by the loop's turning angles (seen along its Newell normal,
+//               scaled to sum 2 pi), subject to the polygon closing. cos and sin are not rational, so
+//               each direction is an exact rational unit vector within 2^-12 rad of the angle
+//               (tan of the half angle rounded to a multiple of 2^-12); the closure is then exact and
+//               the least-squares solve (a 2 x 2 system) is exact. Vertices rounded to multiples of
+//               2^-11 after the uniform scaling; used when every x_j > 0 and the polygon is simple
+//               and counter-clockwise.
 //   circle      the fallback: the vertices on the circle of radius 1/2 about (1/2, 1/2), at angles
 //               proportional to the loop's arc length (cos and sin by MPFR, not double), each
 //               coordinate rounded to a multiple of 2^-11 (small denominators keep the exact program
 //               short), joined by straight edges (the paper's curved polygon is not built); checked
 //               simple like the projection.
-//   The QP of Eq. 5 (edge lengths from turning angles) is not built: its cos/sin are not rational.
+//   auto tries projection, then qp, then circle, as the paper does.
 //
 // Step 2, the control points: the quadratic initial solution of the paper (the weight of Eq. 6 set
 // to zero) minimizes
@@ -37,12 +45,15 @@
 //   regular and  the projection P of Step 1 applied to p has a Jacobian whose symmetric part is
 //   injective    positive definite on the bounding box of Omega (a monotone map on a convex set is
 //                injective, and p's normal has a non-zero component along the projection axis):
-//                Bernstein signs of dP1/du and 4 dP1/du dP2/dv - (dP1/dv + dP2/du)^2. If that fails,
-//                det DP > 0 on Omega proves regularity alone and injectivity stays undecided;
+//                Bernstein signs of dP1/du and 4 dP1/du dP2/dv - (dP1/dv + dP2/du)^2 (P composed with
+//                the 2 x 2 fit of the projected loop to Omega). If that fails, a grid of 3 x 3 windows
+//                each mapped monotonically by its own linear map, far cells with disjoint boxes
+//                (grid_injectivity in the source); failing that, det DP > 0 on Omega proves
+//                regularity alone and injectivity stays undecided;
 //   collision    no point of p(Omega) outside the strip around the loop (max-norm distance <= strip)
 //                lies on a facet: control boxes of patch pieces against those of the facets' Bezier
 //                pieces, patch pieces halved; a patch point outside the solid (exact ray parity,
-//                for solids of planar convex quadrilateral facets) is a witness of collision.
+//                for solids of bilinear quadrilateral facets, planar or not) is a witness of collision.
 // The verdict: valid when the vertices are exact and the other four are certified, invalid with a
 // witness, else undecided.
 #pragma once
@@ -58,7 +69,7 @@
 namespace splinex {
 
 struct SurfaceFacetOptions {
-  std::string domain = "auto";  // "auto" (projection, else circle), "projection", "circle"
+  std::string domain = "auto";  // "auto" (projection, else qp, else circle), "projection", "qp", "circle"
   int inner_knots = 3;          // uniform inner knots per direction (the paper: 3)
   int boundary_samples = 4;     // samples of Eq. 7 per edge (edge parameters (2i+1)/(2 m))
   Rational weight_boundary{1};  // the paper's standard weights (10, 1, 1): the second and third
@@ -77,8 +88,9 @@ struct SurfaceFacetOptions {
 void validate_surface_options(const SurfaceFacetOptions& o);
 
 struct DomainPolygon {
-  std::string method;                             // "projection" or "circle"
-  std::string why_not_projection;                 // when the circle was used
+  std::string method;                             // "projection", "qp" (Eq. 5) or "circle"
+  std::string why_not_projection;                 // when another method was used
+  std::string why_not_qp;                         // when the circle was used
   std::vector<std::array<Rational, 2>> vertices;  // counter-clockwise; vertex j <-> loop side j's start
   std::array<int, 2> axes{0, 1};                  // the coordinates the projection keeps (P = (x_a0, x_a1))
 };
@@ -104,6 +116,12 @@ struct CuttingSurface {
   QuadraticProgram<Rational> program;  // exactly (double: its doubles' values); rows: each equality as a >= and a <= row, then the tangent rows
   double seconds = 0;
 };
+
+/// The domain Step 2 uses: domain_polygon(loop, options.domain), except that under "auto" a qp
+/// polygon whose vertex interpolation conditions are dependent for options.inner_knots (many
+/// vertices on a line, like the maiden's unfolded wave) gives way to the circle, with why_not_qp
+/// saying so.
+DomainPolygon patch_domain(const std::vector<LoopSide3>& loop, const SurfaceFacetOptions& options);
 
 /// Before any work: the options, Step 1, and the vertex interpolation conditions' rank (exact), so
 /// that a singular program is a typed error before the first progress line.
@@ -166,9 +184,26 @@ struct SurfaceValidity {
 SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
                                         const BSpline<Rational>& patch, const SurfaceFacetOptions& options = {});
 
+/// Eq. 6's weight chosen automatically: refine_with_guide from the initial patch with each weight in
+/// turn (smallest first; each run starts from the initial patch, so the steps are independent), the
+/// result certified exactly, until one is valid. The paper's weight 10 is too weak for loops whose
+/// plane cuts the solid (the vase needs about 10^5 at thin-plate weight 1). Returns every step run;
+/// the last is the valid one, or the last weight's when none is.
+struct GuidedStep {
+  double weight = 0;
+  GuidedResult result;
+  SurfaceValidity validity;
+};
+std::vector<GuidedStep> refine_with_guide_sweep(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const CuttingSurface<Rational>& initial,
+                                                const BSpline<double>& f, const GuidedOptions& base, const std::vector<double>& weights,
+                                                const SurfaceFacetOptions& options = {});
+
 /// Whether x lies inside the solid, outside, or on its boundary, exactly, for solids whose facets
-/// are planar convex quadrilaterals (bilinear with coplanar corners): ray parity with rational rays,
-/// a ray through an edge or a vertex replaced by the next. nullopt for other solids.
+/// are bilinear quadrilaterals: ray parity with rational rays; planar convex facets as two
+/// triangles, non-planar ones (injective hyperbolic paraboloids) by the roots of the quadratic their
+/// ray equations leave, signs decided on exact quadratic irrationals p + s sqrt(D); a ray through an
+/// edge, a vertex or tangent to a facet is replaced by the next. nullopt for other solids (other
+/// degrees, planar non-convex quadrilaterals).
 enum class Membership { inside, outside, boundary };
 std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const std::array<Rational, 3>& x);
 

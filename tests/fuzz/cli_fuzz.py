@@ -266,9 +266,10 @@ def command_for(rng, docs, kinds=KINDS):
         if r < 0.3:  # the cutting surface: Step 1, Step 2, the certificates (sometimes guided)
             argv[1] = "facet"
             argv = [a for i, a in enumerate(argv) if a not in ("--arith",) and not (i > 0 and argv[i - 1] == "--arith")]
-            argv[2:2] = ["--arith", rng.choice(["exact", "double", "both"]), "--patch-inner-knots", rng.choice(["0", "1", "3"])]
+            argv[2:2] = ["--arith", rng.choice(["exact", "double", "both"]), "--patch-inner-knots", rng.choice(["0", "1", "3"]),
+                         "--domain", rng.choice(["auto", "projection", "qp", "circle"])]
             if rng.random() < 0.3:
-                argv[2:2] = ["--guided", "--weight-guide", rng.choice(["10", "1000"])]
+                argv[2:2] = ["--guided", "--weight-guide", rng.choice(["10", "1000", "auto"])]
         elif r < 0.45:  # a given cutting surface, mutated
             extra_files = {"SECOND": solid, "THIRD": cut}
             doc = docs["cutting_surface_tower.json"]
