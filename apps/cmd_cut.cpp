@@ -561,10 +561,42 @@ int run_certify3(const Facet3CliOptions& fo, const std::string& solid_file, cons
   return 0;
 }
 
+// cut split on a solid3d: the given surface certified (as cut certify), then the parts written.
+int run_split3(const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const std::string& out_dir, const Context& ctx) {
+  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
+  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
+  const auto surface_doc = read_json_file(surface_file, ctx.read_limits);
+  const auto doc = cutting_surface_from_json(surface_doc, ctx.limits);
+  const Frame3 frame = unit_frame(S);
+  const auto Sn = to_frame(S, frame);
+  const auto loop = validate_cut(Sn, C);
+  DomainPolygon D;
+  D.method = "given";
+  D.vertices = doc.domain;
+  D.axes = projection_axes(loop);
+  const auto V = certify_cutting_surface(Sn, loop, D, patch_to_frame(doc.patch, frame));
+  if (V.verdict != "valid")
+    throw DomainError("surface", "is not certified valid (" + V.verdict + ": tangents " + V.tangents + ", regular " + V.regular + ", injective " + V.injective +
+                                     ", collision " + V.collision + ")",
+                      "run cut certify to see why; split along a valid cutting surface");
+  const auto sp = split_by_surface(S, C.positive);
+  std::filesystem::create_directories(out_dir);
+  write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), cutting_surface_to_json(doc.patch, doc.domain).dump(1) + "\n");
+  const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
+                   {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
+  const std::string file = (std::filesystem::path(out_dir) / "split.json").string();
+  write_file_atomically(file, parts.dump(1) + "\n");
+  std::cout << Json{{"split", file}, {"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()}, {"verdict", V.verdict},
+                    {"meaning", "the surface certified valid (cut certify), the parts as facet lists with the trimmed patch (not solids: the patch is trimmed)"}}
+                   .dump()
+            << "\n";
+  return 0;
+}
+
 }  // namespace
 
 Commands add_cut(CLI::App& app) {
-  auto* cut = app.add_subcommand("cut", "cutting curves and surfaces for isogeometric segmentation (papers/004): example, guide (d = 2 and 3), facet, certify, split (d = 2)");
+  auto* cut = app.add_subcommand("cut", "cutting curves and surfaces for isogeometric segmentation (papers/004): example, guide, facet, certify, split (d = 2 and 3)");
   cut->require_subcommand(1);
 
   struct ExampleOptions {
@@ -633,11 +665,11 @@ Commands add_cut(CLI::App& app) {
   ce->add_option("--strip", c3->strip, "solid3d: no collision check within this max-norm distance of the loop (normalized units)")->capture_default_str();
   ce->add_option("--max-depth", c3->max_depth, "solid3d: halvings of one piece")->check(CLI::Range(0, 40))->capture_default_str();
   auto cso = std::make_shared<CertifyCliOptions>();
-  auto* sp = cut->add_subcommand("split", "split the solid along a cutting curve certified valid: the two sub-solids' facets");
+  auto* sp = cut->add_subcommand("split", "split the solid along a cutting curve (solid3d: surface) certified valid: the two sub-solids' facets");
   sp->add_option("solid", cso->solid, "solid document")->required();
   sp->add_option("cut", cso->cut, "cutting data document")->required();
-  sp->add_option("curve", cso->curve, "the cutting curve (spline document)")->required();
-  sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json")->required();
+  sp->add_option("curve", cso->curve, "the cutting curve (spline document); solid3d: a cutting_surface document")->required();
+  sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json (solid3d: split.json and surface.json)")->required();
 
   return {{ex, [eo](const Context&) {
              Json s, c;
@@ -771,6 +803,7 @@ Commands add_cut(CLI::App& app) {
              return 0;
            }},
           {sp, [cso](const Context& ctx) {
+             if (solid_document_type(read_json_file(cso->solid, ctx.read_limits)) == "solid3d") return run_split3(cso->solid, cso->cut, cso->curve, cso->out, ctx);
              const auto [S, C, curve] = read_curve_input(*cso, ctx);
              const auto v = certify_cutting_curve(S, C, curve);
              if (v.verdict != "valid")

@@ -87,7 +87,7 @@ void put_enclosure(Json& j, const char* exact_key, const Rational& lo, const Rat
   }
   j["lower"] = to_fraction_string(lo);
   j["upper"] = to_fraction_string(hi);
-  if (approx) j["approximately"] = {to_double(lo), to_double(hi)};
+  if (approx) j["approximately"] = {approx_json(to_double(lo)), approx_json(to_double(hi))};
 }
 
 BSpline<Rational> read_spline(const std::string& path, const std::string& field, const Context& ctx) {
@@ -689,7 +689,7 @@ Commands add_vrep(CLI::App& app) {
              for (const auto& e : r.value) {
                if (e.exact()) value.push_back(to_fraction_string(e.lo));
                else value.push_back({to_fraction_string(e.lo), to_fraction_string(e.hi)});
-               approx.push_back(to_double(e.lo));
+               approx.push_back(approx_json(to_double(e.lo)));
              }
              if (!r.singular) {
                out["value"] = value;

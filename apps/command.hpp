@@ -42,6 +42,7 @@ Commands add_vrep(CLI::App& app);  // vrep construct, vrep certify
 Commands add_project(CLI::App& app);  // project --point (solve/projection.hpp)
 Commands add_contact(CLI::App& app);  // contact (solve/contact.hpp)
 Commands add_cut(CLI::App& app);  // cut example, cut guide (cut/)
+Commands add_sweep(CLI::App& app);  // sweep plan, run, merge, single (experiments/sweep.hpp)
 
 /// A surface argument: a spline document's path (- for stdin), or teapot:body|handle|spout|lid
 /// (the merged surfaces of the Utah teapot).

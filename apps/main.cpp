@@ -31,7 +31,7 @@ std::string one_line(std::string s) {
 constexpr sx::app::Commands (*command_list[])(CLI::App&) = {
     sx::app::add_eval,  sx::app::add_operations, sx::app::add_compose, sx::app::add_crosscheck,
     sx::app::add_prove, sx::app::add_report,     sx::app::add_untrim,  sx::app::add_hybrid, sx::app::add_verify, sx::app::add_vrep,
-    sx::app::add_project, sx::app::add_contact, sx::app::add_cut,
+    sx::app::add_project, sx::app::add_contact, sx::app::add_cut, sx::app::add_sweep,
 };
 
 }  // namespace

@@ -73,9 +73,9 @@ double ErrorStat::bits_lost(int precision) const {
 
 Json ErrorStat::to_json(int precision) const {
   Json j;
-  j["max_abs_error"] = abs();
+  j["max_abs_error"] = approx_json(abs());
   j["max_abs_error_exact"] = to_fraction_string(max_abs);
-  j["max_rel_error"] = rel();
+  j["max_rel_error"] = approx_json(rel());
   j["bits_lost"] = bits_lost(precision);
   j["compared"] = count;
   return j;

@@ -50,6 +50,22 @@ Rational dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2
 
 // ---- Step 1 --------------------------------------------------------------------------------------
 
+// x rounded to the nearest multiple of 2^-bits, exactly (MPFR at the precision x needs: no double).
+Rational round_to_grid(const mpfr_t x, unsigned bits) {
+  mpfr_t y;
+  mpfr_init2(y, mpfr_get_prec(x));
+  mpfr_mul_2ui(y, x, bits, MPFR_RNDN);
+  mpfr_round(y, y);
+  mpz_t z;
+  mpz_init(z);
+  mpfr_get_z(z, y, MPFR_RNDN);
+  Rational r;
+  mpq_set_z(r.backend().data(), z);
+  mpz_clear(z);
+  mpfr_clear(y);
+  return r / Rational(boost::multiprecision::mpz_int(1) << bits);
+}
+
 // The point (1/2 + cos(a) / 2, 1/2 + sin(a) / 2), a = 2 pi (phi + 1/(2n)), each coordinate rounded to
 // a multiple of 2^-11 (MPFR at 160 bits, not double). Small common denominators keep the patch
 // program's exact numbers short (points exactly on the circle had 100-bit denominators, and the
@@ -66,15 +82,8 @@ P2 circle_point(const Rational& phi, std::size_t n) {
   P2 r;
   mpfr_ptr v[2] = {c, sn};
   for (int k = 0; k < 2; ++k) {
-    mpfr_mul_2ui(v[k], v[k], 10, MPFR_RNDN);
-    mpfr_round(v[k], v[k]);
-    mpz_t z;
-    mpz_init(z);
-    mpfr_get_z(z, v[k], MPFR_RNDN);
-    Rational q;
-    mpq_set_z(q.backend().data(), z);
-    mpz_clear(z);
-    r[k] = Rational(1, 2) + q / 2048;
+    mpfr_div_2ui(v[k], v[k], 1, MPFR_RNDN);  // cos / 2, sin / 2 (exact)
+    r[k] = Rational(1, 2) + round_to_grid(v[k], 11);
   }
   mpfr_clears(a, c, sn, static_cast<mpfr_ptr>(nullptr));
   return r;
@@ -87,31 +96,9 @@ Rational approximate_length(const P3& d) {
   const Rational s = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   mpfr_set_q(a, s.backend().data(), MPFR_RNDN);
   mpfr_sqrt(a, a, MPFR_RNDN);
-  mpfr_mul_2ui(a, a, 64, MPFR_RNDN);
-  mpz_t z;
-  mpz_init(z);
-  mpfr_get_z(z, a, MPFR_RNDN);
-  Rational r;
-  mpq_set_z(r.backend().data(), z);
-  mpz_clear(z);
+  const Rational r = round_to_grid(a, 64);
   mpfr_clear(a);
-  return r / Rational(boost::multiprecision::mpz_int(1) << 64);
-}
-
-// x rounded to the nearest multiple of 2^-bits, exactly (MPFR at the precision x needs: no double).
-Rational round_to_grid(const mpfr_t x, unsigned bits) {
-  mpfr_t y;
-  mpfr_init2(y, mpfr_get_prec(x));
-  mpfr_mul_2ui(y, x, bits, MPFR_RNDN);
-  mpfr_round(y, y);
-  mpz_t z;
-  mpz_init(z);
-  mpfr_get_z(z, y, MPFR_RNDN);
-  Rational r;
-  mpq_set_z(r.backend().data(), z);
-  mpz_clear(z);
-  mpfr_clear(y);
-  return r / Rational(boost::multiprecision::mpz_int(1) << bits);
+  return r;
 }
 
 // The exact unit vector (1 - t^2, 2 t) / (1 + t^2), t = tan(phi / 2) rounded to a multiple of 2^-12,

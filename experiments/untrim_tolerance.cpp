@@ -87,6 +87,46 @@ struct Row {
   Rational deviation{0}, gap{0}, overlap{0};
 };
 
+nlohmann::json row_json(const Row& r) {
+  return {{"m", r.m},
+          {"arith", r.arith},
+          {"eps", r.eps},
+          {"skipped", r.skipped},
+          {"why", r.why},
+          {"tiles", r.tiles},
+          {"trapezoids", r.trapezoids},
+          {"max_chain", r.max_chain},
+          {"control_points", r.control_points},
+          {"samples", r.samples},
+          {"deg_x", r.deg_x},
+          {"deg_l", r.deg_l},
+          {"seconds", r.seconds},
+          {"deviation", to_fraction_string(r.deviation)},
+          {"gap", to_fraction_string(r.gap)},
+          {"overlap", to_fraction_string(r.overlap)}};
+}
+
+Row row_from_json(const nlohmann::json& j) {
+  Row r;
+  r.m = j.at("m").get<int>();
+  r.arith = j.at("arith").get<std::string>();
+  r.eps = j.at("eps").get<double>();
+  r.skipped = j.at("skipped").get<bool>();
+  r.why = j.at("why").get<std::string>();
+  r.tiles = j.at("tiles").get<std::size_t>();
+  r.trapezoids = j.at("trapezoids").get<std::size_t>();
+  r.max_chain = j.at("max_chain").get<std::size_t>();
+  r.control_points = j.at("control_points").get<std::size_t>();
+  r.samples = j.at("samples").get<std::size_t>();
+  r.deg_x = j.at("deg_x").get<int>();
+  r.deg_l = j.at("deg_l").get<int>();
+  r.seconds = j.at("seconds").get<double>();
+  r.deviation = parse_number(j.at("deviation").get<std::string>(), "deviation");
+  r.gap = parse_number(j.at("gap").get<std::string>(), "gap");
+  r.overlap = parse_number(j.at("overlap").get<std::string>(), "overlap");
+  return r;
+}
+
 template <class A>
 Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, const UntrimToleranceOptions& opt) {
   using clock = std::chrono::steady_clock;
@@ -181,41 +221,72 @@ UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir)
   return o;
 }
 
-std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::function<void(const std::string&)>& progress,
-                                 bool& ok) {
+std::vector<UntrimCase> untrim_tolerance_cases(const UntrimToleranceOptions& opt) {
+  const int p = 3;
+  std::vector<UntrimCase> cases;
+  for (int m = 1; m <= p + 1; ++m)
+    for (const auto& run : opt.runs)
+      for (double eps : opt.eps)
+        if (!(eps < run.min_eps || m > run.max_m)) cases.push_back({m, run.bits, eps});
+  return cases;
+}
+
+nlohmann::json untrim_tolerance_case(const UntrimCase& c, const UntrimToleranceOptions& opt) {
   const int p = 3;
   const Rational u0(1, 2);
   // S: the parabola case of the issue-3 surface study (experiments/common.hpp).
   const BSpline<Rational> S = parabola_trimming_inner();
-  std::vector<Row> rows;
-  for (int m = 1; m <= p + 1; ++m) {
-    const auto T = spline_from<Rational>({p, 1}, {knots_with(p, u0, m), {0, 0, 1, 1}}, 2, [](const std::vector<std::size_t>& ij) {
-      const std::size_t i = ij[0], j = ij[1];
-      return std::vector<Rational>{Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4),
-                                   Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3)};
-    });
-    for (const auto& run : opt.runs)
-      for (double eps : opt.eps) {
-        if (eps < run.min_eps || m > run.max_m) continue;
-        const int bits = run.bits;
-        progress("untrimming tolerance: m = " + std::to_string(m) + ", " +
-                 (bits == 0 ? std::string("double") : "mpfr:" + std::to_string(bits)) + ", eps " + g(eps));
-        Row r;
-        if (bits == 0) {
-          r = measure<double>(T, S, eps, opt);
-        } else {
-          Mpfr::Precision prec(bits);
-          r = measure<Mpfr>(T, S, eps, opt);
-        }
-        r.m = m;
-        rows.push_back(std::move(r));
-        // Long sweeps: every finished row is on disk at once (the final CSV replaces this file).
-        std::ofstream partial(opt.out_dir + "/untrim_tolerance.partial.csv", std::ios::app);
-        partial << std::setprecision(17) << rows.back().m << "," << rows.back().arith << "," << rows.back().eps << ","
-                << rows.back().control_points << "," << rows.back().seconds << "," << to_double(rows.back().deviation) << ","
-                << to_double(rows.back().gap) << "," << to_double(rows.back().overlap) << "," << rows.back().skipped << "\n";
-      }
+  const auto T = spline_from<Rational>({p, 1}, {knots_with(p, u0, c.m), {0, 0, 1, 1}}, 2, [](const std::vector<std::size_t>& ij) {
+    const std::size_t i = ij[0], j = ij[1];
+    return std::vector<Rational>{Rational(static_cast<long>((i * i + 3 * j) % 7) - 3, 4), Rational(static_cast<long>((3 * i + j * j + 1) % 5), 3)};
+  });
+  Row r;
+  if (c.bits == 0) {
+    r = measure<double>(T, S, c.eps, opt);
+  } else {
+    Mpfr::Precision prec(c.bits);
+    r = measure<Mpfr>(T, S, c.eps, opt);
   }
+  r.m = c.m;
+  return row_json(r);
+}
+
+nlohmann::json untrim_tolerance_options_json(const UntrimToleranceOptions& o) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& r : o.runs) runs.push_back({{"bits", r.bits}, {"min_eps", r.min_eps}, {"max_m", r.max_m}});
+  return {{"eps", o.eps}, {"runs", runs}, {"max_boundary_samples", o.max_boundary_samples}, {"max_control_points", o.max_control_points}};
+}
+
+UntrimToleranceOptions untrim_tolerance_options_from_json(const nlohmann::json& j) {
+  UntrimToleranceOptions o;
+  o.eps = j.at("eps").get<std::vector<double>>();
+  o.runs.clear();
+  for (const auto& r : j.at("runs")) o.runs.push_back({r.at("bits").get<int>(), r.at("min_eps").get<double>(), r.at("max_m").get<int>()});
+  o.max_boundary_samples = j.at("max_boundary_samples").get<std::size_t>();
+  o.max_control_points = j.at("max_control_points").get<std::size_t>();
+  return o;
+}
+
+std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::function<void(const std::string&)>& progress,
+                                 bool& ok) {
+  std::vector<nlohmann::json> rows;
+  for (const auto& c : untrim_tolerance_cases(opt)) {
+    progress("untrimming tolerance: m = " + std::to_string(c.m) + ", " + (c.bits == 0 ? std::string("double") : "mpfr:" + std::to_string(c.bits)) +
+             ", eps " + g(c.eps));
+    rows.push_back(untrim_tolerance_case(c, opt));
+    const Row r = row_from_json(rows.back());
+    // Long sweeps: every finished row is on disk at once (the final CSV replaces this file).
+    std::ofstream partial(opt.out_dir + "/untrim_tolerance.partial.csv", std::ios::app);
+    partial << std::setprecision(17) << r.m << "," << r.arith << "," << r.eps << "," << r.control_points << "," << r.seconds << ","
+            << to_double(r.deviation) << "," << to_double(r.gap) << "," << to_double(r.overlap) << "," << r.skipped << "\n";
+  }
+  return untrim_tolerance_merge(rows, opt, ok);
+}
+
+std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, const UntrimToleranceOptions& opt, bool& ok) {
+  const int p = 3;
+  std::vector<Row> rows;
+  for (const auto& j : row_docs) rows.push_back(row_from_json(j));
   // CSV.
   std::ostringstream csv;
   csv << "multiplicity,arith,eps,tiles,trapezoids,max_chain_vertices,degree_x,degree_l,control_points,seconds,samples,"

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace splinex {
 
 /// One arithmetic of the sweep: bits 0 is double, else MPFR at that precision; run for the
@@ -37,6 +39,28 @@ struct UntrimToleranceOptions {
 };
 
 UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir);
+
+/// One unit of the sweep: multiplicity m, arithmetic (bits 0: double, else MPFR), tolerance.
+struct UntrimCase {
+  int m = 1, bits = 0;
+  double eps = 1e-2;
+};
+
+/// The sweep's cases in the order of its table: m = 1..4, then the runs, then eps.
+std::vector<UntrimCase> untrim_tolerance_cases(const UntrimToleranceOptions& options);
+
+/// One case measured (Algorithm 2 in that arithmetic, judged exactly): its row as JSON, the exact
+/// numbers as fractions and the doubles at 17 digits, so that a row written by one process and read
+/// by another (sweep run / sweep merge) is the same row.
+nlohmann::json untrim_tolerance_case(const UntrimCase& c, const UntrimToleranceOptions& options);
+
+/// The rows (in the order of untrim_tolerance_cases) turned into untrim_tolerance.csv, .svg,
+/// _cost.svg and .md in options.out_dir, the slopes fitted; returns the Markdown section. ok as below.
+std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& rows, const UntrimToleranceOptions& options, bool& ok);
+
+/// The options as JSON and back (the sweep's plan carries them to every job and to the merge).
+nlohmann::json untrim_tolerance_options_json(const UntrimToleranceOptions& options);
+UntrimToleranceOptions untrim_tolerance_options_from_json(const nlohmann::json& j);
 
 /// Writes untrim_tolerance.csv, untrim_tolerance.svg, untrim_tolerance_cost.svg and
 /// untrim_tolerance.md into out_dir; returns the Markdown section. ok is false when the slope fitted

@@ -1,3 +1,4 @@
+#include <cmath>
 #include "io/json_io.hpp"
 
 #include <cstdint>
@@ -151,6 +152,12 @@ Json read_json(std::istream& in, const std::string& source, const ReadLimits& li
   if (!ok && sax.size_limit) throw SizeLimitError(source, sax.error, "");
   if (!ok) throw ParseError(source, "malformed JSON: " + sax.error, "fix the JSON syntax");
   return std::move(sax.root);  // a member: without the move, the whole tree would be copied
+}
+
+Json approx_json(double x) {
+  if (std::isfinite(x)) return x;
+  if (std::isnan(x)) return "not a number";
+  return x > 0 ? "+inf: beyond double's range (see the exact value)" : "-inf: beyond double's range (see the exact value)";
 }
 
 Json read_json_file(const std::string& path, const ReadLimits& limits) {

@@ -43,6 +43,10 @@ int json_int(const Json& j, const std::string& field, int lo, int hi);
 /// The spline document read exactly and validated (validate() rules; unknown fields rejected).
 BSpline<Rational> spline_from_json(const Json& doc, const Limits& limits = {}, const std::string& where = "");
 
+/// A double for a JSON field beside an exact value: the number when finite, else a string saying
+/// it is beyond double's range (JSON has no inf or nan; nlohmann would write null).
+Json approx_json(double x);
+
 /// Comma-separated numbers, each read exactly ("0.5,1/3,2e-1").
 std::vector<Rational> parse_number_list(const std::string& text, const std::string& field);
 

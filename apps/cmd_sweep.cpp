@@ -1,0 +1,105 @@
+// splinex sweep plan|run|merge|single: long sweeps as independent jobs (experiments/sweep.hpp).
+#include <iostream>
+#include <memory>
+
+#include "apps/command.hpp"
+#include "experiments/sweep.hpp"
+#include "spline/errors.hpp"
+
+namespace splinex::app {
+
+namespace {
+
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
+  const auto slash = s.find('/');
+  auto num = [&](const std::string& t) -> long {
+    char* end = nullptr;
+    const long v = std::strtol(t.c_str(), &end, 10);
+    if (t.empty() || end != t.c_str() + t.size() || v < 0 || v > 1000000) return -1;
+    return v;
+  };
+  const long i = slash == std::string::npos ? -1 : num(s.substr(0, slash)), n = slash == std::string::npos ? -1 : num(s.substr(slash + 1));
+  if (i < 0 || n < 1 || i >= n) throw UsageError("shard", "'" + s + "' is not I/N with 0 <= I < N", "give e.g. 0/4 (the first of four shards)");
+  return {static_cast<std::size_t>(i), static_cast<std::size_t>(n)};
+}
+
+}  // namespace
+
+Commands add_sweep(CLI::App& app) {
+  auto* sw = app.add_subcommand("sweep", "long sweeps as independent jobs: plan them, run shards anywhere (GNU parallel, Slurm arrays), merge");
+  sw->require_subcommand(1);
+
+  auto po = std::make_shared<SweepPlanOptions>();
+  auto pname = std::make_shared<std::string>();
+  auto* pl = sw->add_subcommand("plan", "write the sweep's jobs, one JSON line each (the command and the output file), to stdout");
+  pl->add_option("name", *pname, "the sweep: untrim-tolerance")->required();
+  pl->add_flag("--full", po->full, "the long sweep (report --full's options)");
+  pl->add_option("--eps", po->eps, "untrim-tolerance: comma-separated tolerances instead of the defaults");
+  pl->add_option("--runs", po->runs, "untrim-tolerance: comma-separated bits:min_eps:max_m (bits 0: double) instead of the defaults");
+
+  struct RunOptions {
+    std::string jobs, dir = "sweep", shard = "0/1", only;
+    bool quiet = false;
+  };
+  auto ro = std::make_shared<RunOptions>();
+  auto* rn = sw->add_subcommand("run", "run shard I of N of a plan's jobs (job k when k mod N = I); finished jobs are skipped, so a run resumes");
+  rn->add_option("--jobs", ro->jobs, "the plan (jobs.jsonl)")->required();
+  rn->add_option("--dir", ro->dir, "folder of the jobs' outputs")->capture_default_str();
+  rn->add_option("--shard", ro->shard, "I/N")->capture_default_str();
+  rn->add_option("--only", ro->only, "run only the job with this id");
+  rn->add_flag("--quiet", ro->quiet, "no progress on stderr");
+
+  struct MergeOptions {
+    std::string jobs, dir, out;
+  };
+  auto mo = std::make_shared<MergeOptions>();
+  auto* mg = sw->add_subcommand("merge", "check that every job finished, merge the outputs, refit and redraw (the single run's files)");
+  mg->add_option("--jobs", mo->jobs, "the plan (jobs.jsonl)")->required();
+  mg->add_option("dir", mo->dir, "folder of the jobs' outputs")->required();
+  mg->add_option("--out", mo->out, "folder for the merged files (default: DIR)");
+
+  auto so = std::make_shared<SweepPlanOptions>();
+  auto sname = std::make_shared<std::string>();
+  auto sout = std::make_shared<std::string>();
+  auto* sg = sw->add_subcommand("single", "the sweep in one process, as the report runs it (the reference for the merge)");
+  sg->add_option("name", *sname, "the sweep: untrim-tolerance")->required();
+  sg->add_flag("--full", so->full, "the long sweep");
+  sg->add_option("--eps", so->eps, "as for plan");
+  sg->add_option("--runs", so->runs, "as for plan");
+  sg->add_option("--out", *sout, "folder for the files")->required();
+
+  return {{pl, [po, pname](const Context&) {
+             for (const auto& j : sweep_plan(*pname, *po)) std::cout << sweep_job_json(j).dump() << "\n";
+             return 0;
+           }},
+          {rn, [ro](const Context&) {
+             auto jobs = read_sweep_jobs(ro->jobs);
+             auto [i, n] = parse_shard(ro->shard);
+             if (!ro->only.empty()) {
+               std::vector<SweepJob> one;
+               for (const auto& j : jobs)
+                 if (j.id == ro->only) one.push_back(j);
+               if (one.empty()) throw UsageError("only", "'" + ro->only + "' is no job of the plan", "give an id from the jobs file");
+               jobs = one, i = 0, n = 1;
+             }
+             const auto st = sweep_run(jobs, ro->dir, i, n, !ro->quiet);
+             std::cout << Json{{"shard", std::to_string(i) + "/" + std::to_string(n)}, {"jobs_in_shard", st.in_shard}, {"run", st.run}, {"skipped", st.skipped}, {"dir", ro->dir}}.dump()
+                       << "\n";
+             return 0;
+           }},
+          {mg, [mo](const Context&) {
+             const auto jobs = read_sweep_jobs(mo->jobs);
+             bool ok = true;
+             sweep_merge(jobs, mo->dir, mo->out.empty() ? mo->dir : mo->out, ok);
+             std::cout << Json{{"jobs", jobs.size()}, {"merged_into", mo->out.empty() ? mo->dir : mo->out}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
+             return ok ? 0 : 1;
+           }},
+          {sg, [so, sname, sout](const Context&) {
+             bool ok = true;
+             sweep_single(*sname, *so, *sout, ok, [](const std::string& s) { std::cerr << "[sweep single] " << s << "\n"; });
+             std::cout << Json{{"out", *sout}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
+             return ok ? 0 : 1;
+           }}};
+}
+
+}  // namespace splinex::app

@@ -1,0 +1,233 @@
+#include "experiments/sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "experiments/svg_plot.hpp"
+#include "experiments/untrim_tolerance.hpp"
+#include "spline/errors.hpp"
+
+namespace splinex {
+
+namespace {
+
+using Json = nlohmann::json;
+
+std::string eps_text(double e) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", e);
+  return b;
+}
+
+// A positive finite double from decimal text (the nearest double, as a literal in the source is).
+double positive_double(const std::string& text, const std::string& field) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || !(v > 0))
+    throw UsageError(field, "'" + text + "' is not a positive number", "give e.g. 1e-3");
+  return v;
+}
+
+int int_in(const std::string& text, const std::string& field, int lo, int hi) {
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size() || v < lo || v > hi)
+    throw UsageError(field, "'" + text + "' is not an integer in " + std::to_string(lo) + ".." + std::to_string(hi), "give one in that range");
+  return static_cast<int>(v);
+}
+
+std::vector<std::string> split(const std::string& s, char c) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, c)) out.push_back(cur);
+  if (!s.empty() && s.back() == c) out.push_back("");
+  return out;
+}
+
+UntrimToleranceOptions untrim_options(const SweepPlanOptions& o) {
+  UntrimToleranceOptions u = o.full ? full_untrim_tolerance_options("") : UntrimToleranceOptions{};
+  if (!o.eps.empty()) {
+    u.eps.clear();
+    for (const auto& t : split(o.eps, ',')) u.eps.push_back(positive_double(t, "eps"));
+    if (u.eps.size() > 100) throw UsageError("eps", "has more than 100 tolerances", "give fewer");
+  }
+  if (!o.runs.empty()) {
+    u.runs.clear();
+    for (const auto& t : split(o.runs, ',')) {
+      const auto f = split(t, ':');
+      if (f.size() != 3) throw UsageError("runs", "'" + t + "' is not bits:min_eps:max_m", "give e.g. 0:1e-6:4 (double) or 113:1e-5:1 (MPFR)");
+      const int bits = int_in(f[0], "runs", 0, 4096);
+      if (bits == 1) throw UsageError("runs", "1 bit is no MPFR precision", "give 0 (double) or 2..4096 bits");
+      u.runs.push_back({bits, positive_double(f[1], "runs"), int_in(f[2], "runs", 1, 4)});
+    }
+    if (u.runs.size() > 20) throw UsageError("runs", "has more than 20 runs", "give fewer");
+  }
+  return u;
+}
+
+}  // namespace
+
+std::vector<std::string> sweep_names() { return {"untrim-tolerance"}; }
+
+std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options) {
+  if (name != "untrim-tolerance") {
+    std::string names;
+    for (const auto& n : sweep_names()) names += (names.empty() ? "" : ", ") + n;
+    throw UsageError("sweep", "'" + name + "' is not a sweep that can be planned", "give one of " + names);
+  }
+  const auto u = untrim_options(options);
+  const Json plan = untrim_tolerance_options_json(u);
+  std::vector<SweepJob> jobs;
+  for (const auto& c : untrim_tolerance_cases(u)) {
+    SweepJob j;
+    j.sweep = name;
+    j.id = "m" + std::to_string(c.m) + "-" + (c.bits == 0 ? std::string("double") : "mpfr" + std::to_string(c.bits)) + "-eps" + eps_text(c.eps);
+    j.params = {{"m", c.m}, {"bits", c.bits}, {"eps", c.eps}};
+    j.plan = plan;
+    j.output = name + "/" + j.id + ".json";
+    jobs.push_back(std::move(j));
+  }
+  return jobs;
+}
+
+Json sweep_job_json(const SweepJob& j) {
+  return {{"sweep", j.sweep}, {"id", j.id}, {"params", j.params}, {"plan", j.plan}, {"output", j.output},
+          {"command", Json::array({"splinex", "sweep", "run", "--jobs", "JOBS.jsonl", "--only", j.id, "--dir", "DIR"})}};
+}
+
+SweepJob sweep_job_from_json(const Json& j, const std::string& where) {
+  if (!j.is_object()) throw ParseError(where, "is not a JSON object", "give one job per line, as sweep plan writes them");
+  SweepJob s;
+  for (const char* f : {"sweep", "id", "output"})
+    if (!j.contains(f) || !j[f].is_string()) throw ParseError(where + "." + f, "is missing or not a string", "give the job as sweep plan writes it");
+  for (const char* f : {"params", "plan"})
+    if (!j.contains(f) || !j[f].is_object()) throw ParseError(where + "." + f, "is missing or not an object", "give the job as sweep plan writes it");
+  s.sweep = j["sweep"].get<std::string>(), s.id = j["id"].get<std::string>(), s.output = j["output"].get<std::string>();
+  s.params = j["params"], s.plan = j["plan"];
+  const auto names = sweep_names();
+  if (std::find(names.begin(), names.end(), s.sweep) == names.end()) throw ParseError(where + ".sweep", "'" + s.sweep + "' is not a sweep", "give a job of sweep plan");
+  const std::filesystem::path out(s.output);
+  if (s.output.empty() || out.is_absolute() || s.output.find("..") != std::string::npos)
+    throw ParseError(where + ".output", "'" + s.output + "' is not a relative path inside the run's folder", "give the job as sweep plan writes it");
+  return s;
+}
+
+std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ParseError("jobs", "cannot read '" + path + "'", "give the file sweep plan wrote");
+  std::vector<SweepJob> jobs;
+  std::set<std::string> ids;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const std::string where = "jobs line " + std::to_string(n);
+    Json j;
+    try {
+      j = Json::parse(line);
+    } catch (const Json::parse_error& e) {
+      throw ParseError(where, "is not JSON", "give one job per line, as sweep plan writes them");
+    }
+    auto s = sweep_job_from_json(j, where);
+    if (!ids.insert(s.id).second) throw ParseError(where + ".id", "'" + s.id + "' appears twice", "give each job once");
+    if (!jobs.empty() && (s.sweep != jobs.front().sweep || s.plan != jobs.front().plan))
+      throw ParseError(where, "belongs to another sweep or plan than line 1", "give the lines of one sweep plan");
+    jobs.push_back(std::move(s));
+    if (jobs.size() > 1000000) throw SizeLimitError("jobs", "has more than 1000000 jobs", "split the plan");
+  }
+  if (jobs.empty()) throw ParseError("jobs", "'" + path + "' has no jobs", "give the file sweep plan wrote");
+  return jobs;
+}
+
+Json sweep_run_job(const SweepJob& job) {
+  // untrim-tolerance (the only sweep so far; sweep_job_from_json refuses others)
+  const auto u = untrim_tolerance_options_from_json(job.plan);
+  UntrimCase c;
+  c.m = job.params.at("m").get<int>(), c.bits = job.params.at("bits").get<int>(), c.eps = job.params.at("eps").get<double>();
+  return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"result", untrim_tolerance_case(c, u)}};
+}
+
+SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress) {
+  if (shards == 0 || shard >= shards) throw UsageError("shard", std::to_string(shard) + "/" + std::to_string(shards) + " is no shard", "give I/N with 0 <= I < N");
+  SweepRunStats st;
+  for (std::size_t k = 0; k < jobs.size(); ++k)
+    if (k % shards == shard) ++st.in_shard;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    if (k % shards != shard) continue;
+    const auto& job = jobs[k];
+    const std::filesystem::path out = std::filesystem::path(dir) / job.output;
+    ++done;
+    if (std::filesystem::exists(out)) {
+      ++st.skipped;
+      if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
+      continue;
+    }
+    const auto r = sweep_run_job(job);
+    std::filesystem::create_directories(out.parent_path());
+    write_file_atomically(out.string(), r.dump() + "\n");
+    ++st.run;
+    if (progress) {
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double left = el / static_cast<double>(st.run) * static_cast<double>(st.in_shard - done);
+      std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << " (shard " << shard << "/" << shards << "): elapsed "
+                << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
+    }
+  }
+  return st;
+}
+
+std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir, bool& ok) {
+  std::vector<Json> rows;
+  std::vector<std::string> missing;
+  for (const auto& job : jobs) {
+    const std::filesystem::path p = std::filesystem::path(dir) / job.output;
+    std::ifstream in(p);
+    if (!in) {
+      missing.push_back(job.id);
+      continue;
+    }
+    Json r;
+    try {
+      in >> r;
+    } catch (const Json::parse_error&) {
+      throw ParseError(job.output, "is not a job result (not JSON)", "delete it and run the job again (sweep run skips only finished jobs)");
+    }
+    if (!r.is_object() || r.value("id", std::string()) != job.id || !r.contains("result"))
+      throw ParseError(job.output, "is not the result of job " + job.id, "delete it and run the job again");
+    rows.push_back(r["result"]);
+  }
+  if (!missing.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < missing.size() && k < 10; ++k) list += (k ? ", " : "") + missing[k];
+    if (missing.size() > 10) list += " and " + std::to_string(missing.size() - 10) + " more";
+    throw DomainError("jobs", std::to_string(missing.size()) + " of " + std::to_string(jobs.size()) + " jobs have no output in '" + dir + "': " + list,
+                      "run sweep run for their shards (finished jobs are skipped)");
+  }
+  auto u = untrim_tolerance_options_from_json(jobs.front().plan);
+  u.out_dir = out_dir;
+  std::filesystem::create_directories(out_dir);
+  return untrim_tolerance_merge(rows, u, ok);
+}
+
+std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
+                         const std::function<void(const std::string&)>& progress) {
+  sweep_plan(name, options);  // the name's and the options' errors
+  auto u = untrim_options(options);
+  u.out_dir = out_dir;
+  std::filesystem::create_directories(out_dir);
+  return run_untrim_tolerance(u, progress, ok);
+}
+
+}  // namespace splinex

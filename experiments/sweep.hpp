@@ -1,0 +1,64 @@
+// Sweeps as independent jobs (issue 21): a sweep's plan is a list of jobs, one JSON line each
+// (jobs.jsonl), that any engine can run in any order and on any machine: `splinex sweep run` (a
+// shard I of N, in one process), GNU parallel or xargs over the shards, a Slurm array. Every job
+// writes one JSON file (atomically, so an interrupted run resumes by skipping the files that are
+// there); `splinex sweep merge` checks that all are there, reads them in the plan's order and
+// produces the same CSV, figures and Markdown as the single-process run (the report's section),
+// timings aside, whatever the sharding.
+//
+// Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps).
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace splinex {
+
+struct SweepJob {
+  std::string sweep;       // the sweep's name
+  std::string id;          // unique within the plan
+  nlohmann::json params;   // what the job computes
+  nlohmann::json plan;     // the plan's options (the same on every line; the merge reads them)
+  std::string output;      // relative to the run's folder
+};
+
+/// The names of the sweeps that can be planned.
+std::vector<std::string> sweep_names();
+
+/// The options a plan takes, as given on the command line.
+struct SweepPlanOptions {
+  bool full = false;        // the long sweep (the report's --full)
+  std::string eps;          // comma-separated tolerances, replacing the default list
+  std::string runs;         // comma-separated bits:min_eps:max_m (bits 0: double), replacing the default runs
+};
+
+std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options);
+
+/// One line of jobs.jsonl and back (typed errors naming the field).
+nlohmann::json sweep_job_json(const SweepJob& job);
+SweepJob sweep_job_from_json(const nlohmann::json& j, const std::string& where);
+/// Reads a jobs.jsonl file: every line a job, ids unique, one sweep and one plan for all.
+std::vector<SweepJob> read_sweep_jobs(const std::string& path);
+
+/// Runs one job: its result document (the merge's input).
+nlohmann::json sweep_run_job(const SweepJob& job);
+
+/// Runs the jobs of shard `shard` of `shards` (job k when k % shards == shard) into dir, skipping
+/// jobs whose output exists (resumption); progress on stderr. Returns the number of jobs run.
+struct SweepRunStats {
+  std::size_t run = 0, skipped = 0, in_shard = 0;
+};
+SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress = true);
+
+/// The merge: every job's output read from dir (a missing one is a typed error naming the jobs),
+/// then the sweep's files written into out_dir. Returns the Markdown; ok false when the sweep's own
+/// checks fail (as in the report).
+std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir, bool& ok);
+
+/// The single-process run of a plan (what the report does), into out_dir.
+std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
+                         const std::function<void(const std::string&)>& progress);
+
+}  // namespace splinex
