@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # splinex from zero: install what is missing (Debian 12, as root), configure, build, then run
 #   scripts/run.sh test      the default test suite through ctest (what CI runs)
+#   scripts/run.sh long [ctest flags]  the long label (hours: the full report, the proofs, the CLI
+#                            fuzzer, the Slurm test), e.g. scripts/run.sh long -R slurm
 #   scripts/run.sh report    the main job: build/bin/splinex report --out results
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
 #   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
@@ -16,6 +18,8 @@ extra_packages=()
 [[ $what == bench ]] && extra_packages=(libsisl-dev libocct-foundation-dev libocct-modeling-data-dev)
 # The peers whose results `verify` judges (scripts/peers/): SciPy, the Octave NURBS toolbox, OpenCASCADE.
 [[ $what == peers ]] && extra_packages=(python3-scipy octave-nurbs libocct-foundation-dev libocct-modeling-data-dev)
+# The long label: a local Slurm and GNU parallel for the sweeps' test (tests/slurm/slurm_sweep.sh).
+[[ $what == long ]] && extra_packages=(slurm-wlm munge parallel)
 
 packages=(g++ cmake ninja-build pkg-config libgmp-dev libmpfr-dev libmpfi-dev libboost-dev libcgal-dev
           libflint-dev libeigen3-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev python3
@@ -37,6 +41,10 @@ case "$what" in
     cmake --preset default >&2
     cmake --build --preset default
     ctest --preset default ;;
+  long)
+    cmake --preset default >&2
+    cmake --build --preset default
+    ctest --test-dir build -L long "${@:2}" ;;
   report)
     cmake --preset default >&2
     cmake --build --preset default --target splinex
@@ -72,5 +80,5 @@ case "$what" in
     PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_octave.py results/peers "${2:-200}"
     PYTHONPATH=build/python /usr/bin/python3 scripts/peers/judge_occt.py results/peers "${2:-200}" build/bin/occt_peer
     build/bin/splinex report --out results --peers results/peers ;;
-  *) echo "usage: scripts/run.sh [test|report|sanitize|fuzz [N]|bench [benchmark flags]|peers [cases]]" >&2; exit 2 ;;
+  *) echo "usage: scripts/run.sh [test|long [ctest flags]|report|sanitize|fuzz [N]|bench [benchmark flags]|peers [cases]]" >&2; exit 2 ;;
 esac
