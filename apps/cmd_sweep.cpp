@@ -40,6 +40,7 @@ Commands add_sweep(CLI::App& app) {
   struct RunOptions {
     std::string jobs, dir = "sweep", shard = "0/1", only;
     bool quiet = false;
+    int threads = 1;
   };
   auto ro = std::make_shared<RunOptions>();
   auto* rn = sw->add_subcommand("run", "run shard I of N of a plan's jobs (job k when k mod N = I); finished jobs are skipped, so a run resumes");
@@ -48,6 +49,7 @@ Commands add_sweep(CLI::App& app) {
   rn->add_option("--shard", ro->shard, "I/N")->capture_default_str();
   rn->add_option("--only", ro->only, "run only the job with this id");
   rn->add_flag("--quiet", ro->quiet, "no progress on stderr");
+  rn->add_option("--threads", ro->threads, "jobs run at once in this process (the outputs do not depend on it)")->check(CLI::Range(1, 1024))->capture_default_str();
 
   struct MergeOptions {
     std::string jobs, dir, out;
@@ -82,7 +84,7 @@ Commands add_sweep(CLI::App& app) {
                if (one.empty()) throw UsageError("only", "'" + ro->only + "' is no job of the plan", "give an id from the jobs file");
                jobs = one, i = 0, n = 1;
              }
-             const auto st = sweep_run(jobs, ro->dir, i, n, !ro->quiet);
+             const auto st = sweep_run(jobs, ro->dir, i, n, !ro->quiet, static_cast<std::size_t>(ro->threads));
              std::cout << Json{{"shard", std::to_string(i) + "/" + std::to_string(n)}, {"jobs_in_shard", st.in_shard}, {"run", st.run}, {"skipped", st.skipped}, {"dir", ro->dir}}.dump()
                        << "\n";
              return 0;

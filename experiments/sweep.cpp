@@ -1,6 +1,10 @@
 #include "experiments/sweep.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -90,7 +94,9 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
   for (const auto& c : untrim_tolerance_cases(u)) {
     SweepJob j;
     j.sweep = name;
-    j.id = "m" + std::to_string(c.m) + "-" + (c.bits == 0 ? std::string("double") : "mpfr" + std::to_string(c.bits)) + "-eps" + eps_text(c.eps);
+    std::ostringstream id;  // e.g. m2-mpfr113-eps1e-05
+    id << "m" << c.m << "-" << (c.bits == 0 ? std::string("double") : "mpfr" + std::to_string(c.bits)) << "-eps" << eps_text(c.eps);
+    j.id = id.str();
     j.params = {{"m", c.m}, {"bits", c.bits}, {"eps", c.eps}};
     j.plan = plan;
     j.output = name + "/" + j.id + ".json";
@@ -157,34 +163,60 @@ Json sweep_run_job(const SweepJob& job) {
   return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"result", untrim_tolerance_case(c, u)}};
 }
 
-SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress) {
+SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress,
+                        std::size_t threads) {
   if (shards == 0 || shard >= shards) throw UsageError("shard", std::to_string(shard) + "/" + std::to_string(shards) + " is no shard", "give I/N with 0 <= I < N");
-  SweepRunStats st;
+  if (threads == 0 || threads > 1024) throw UsageError("threads", std::to_string(threads) + " is outside 1..1024", "give e.g. the number of cores");
+  std::vector<std::size_t> mine;
   for (std::size_t k = 0; k < jobs.size(); ++k)
-    if (k % shards == shard) ++st.in_shard;
+    if (k % shards == shard) mine.push_back(k);
+  SweepRunStats st;
+  st.in_shard = mine.size();
   const auto t0 = std::chrono::steady_clock::now();
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;  // st, progress lines, the first error
   std::size_t done = 0;
-  for (std::size_t k = 0; k < jobs.size(); ++k) {
-    if (k % shards != shard) continue;
-    const auto& job = jobs[k];
-    const std::filesystem::path out = std::filesystem::path(dir) / job.output;
-    ++done;
-    if (std::filesystem::exists(out)) {
-      ++st.skipped;
-      if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
-      continue;
+  std::exception_ptr error;
+  auto worker = [&] {
+    for (;;) {
+      {
+        std::lock_guard<std::mutex> g(lock);
+        if (error) return;
+      }
+      const std::size_t slot = next++;
+      if (slot >= mine.size()) return;
+      const auto& job = jobs[mine[slot]];
+      const std::filesystem::path out = std::filesystem::path(dir) / job.output;
+      if (std::filesystem::exists(out)) {
+        std::lock_guard<std::mutex> g(lock);
+        ++st.skipped, ++done;
+        if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
+        continue;
+      }
+      try {
+        const auto r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
+        std::filesystem::create_directories(out.parent_path());
+        write_file_atomically(out.string(), r.dump() + "\n");
+      } catch (...) {
+        std::lock_guard<std::mutex> g(lock);
+        if (!error) error = std::current_exception();
+        return;
+      }
+      std::lock_guard<std::mutex> g(lock);
+      ++st.run, ++done;
+      if (progress) {
+        const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double left = el / static_cast<double>(st.run) * static_cast<double>(st.in_shard - done);
+        std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << " (shard " << shard << "/" << shards << "): elapsed "
+                  << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
+      }
     }
-    const auto r = sweep_run_job(job);
-    std::filesystem::create_directories(out.parent_path());
-    write_file_atomically(out.string(), r.dump() + "\n");
-    ++st.run;
-    if (progress) {
-      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const double left = el / static_cast<double>(st.run) * static_cast<double>(st.in_shard - done);
-      std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << " (shard " << shard << "/" << shards << "): elapsed "
-                << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
-    }
-  }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads && t < mine.size(); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   return st;
 }
 

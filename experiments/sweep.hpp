@@ -46,11 +46,14 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path);
 nlohmann::json sweep_run_job(const SweepJob& job);
 
 /// Runs the jobs of shard `shard` of `shards` (job k when k % shards == shard) into dir, skipping
-/// jobs whose output exists (resumption); progress on stderr. Returns the number of jobs run.
+/// jobs whose output exists (resumption), on `threads` threads of this process (each job is
+/// deterministic and MPFR's precision is per thread, so the outputs do not depend on the threads);
+/// progress on stderr. Returns the counts.
 struct SweepRunStats {
   std::size_t run = 0, skipped = 0, in_shard = 0;
 };
-SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress = true);
+SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress = true,
+                        std::size_t threads = 1);
 
 /// The merge: every job's output read from dir (a missing one is a typed error naming the jobs),
 /// then the sweep's files written into out_dir. Returns the Markdown; ok false when the sweep's own

@@ -1,5 +1,6 @@
 #!/bin/sh
-# Issue 21: a small untrimming tolerance sweep (15 jobs, its slope checks pass) planned as jobs, run in 1, 2 and 3 shards, merged;
+# Issue 21: a small untrimming tolerance sweep (15 jobs, its slope checks pass) planned as jobs, run in 1, 2 and 3 shards
+# (xargs -P) and on 2 threads of one process, merged;
 # each merge must equal the single-process run (the report's code path) byte for byte, timings
 # aside (the CSV's seconds column and the seconds in the Markdown's cost line). Then resumption
 # (a second run skips every job) and a missing job (the merge names it, exit 2).
@@ -32,6 +33,11 @@ for n in 1 2 3; do
   untimed "$W/merged$n" > "$W/merged$n.txt"
   cmp "$W/single.txt" "$W/merged$n.txt"
 done
+# two threads in one process: the same merge
+$CLI sweep run --jobs "$W/jobs.jsonl" --threads 2 --dir "$W/threads" --quiet > /dev/null
+$CLI sweep merge --jobs "$W/jobs.jsonl" "$W/threads" --out "$W/merged_threads" > /dev/null
+untimed "$W/merged_threads" > "$W/merged_threads.txt"
+cmp "$W/single.txt" "$W/merged_threads.txt"
 # resumption: everything is there, nothing runs
 $CLI sweep run --jobs "$W/jobs.jsonl" --dir "$W/jobs3" --quiet | grep -q '"run":0,"shard":"0/1","skipped":15'
 # a missing job is named by the merge
@@ -42,4 +48,4 @@ rc=$?
 set -e
 test $rc -eq 2
 grep -q "^splinex: error: jobs: 1 of 15 jobs have no output in .*: m2-double-eps0.001" "$W/missing.txt"
-echo "sweep: 1, 2 and 3 shards merged identical to the single run (timings aside); resumption and a missing job checked"
+echo "sweep: 1, 2 and 3 shards and 2 threads merged identical to the single run (timings aside); resumption and a missing job checked"
