@@ -20,13 +20,6 @@ void print_text(const ProofReport& r) {
   if (r.refuted()) std::cout << "  counterexample: " << r.counterexample << "\n";
 }
 
-Json to_json(const ProofReport& r) {
-  return {{"name", r.name}, {"identity", r.identity}, {"degree_bound", r.degree_bound}, {"cases", r.cases},
-          {"cells", r.cells}, {"points", r.points}, {"verdict", r.verdict_key()},
-          {"expected", r.expect_proved ? "holds" : "refuted"}, {"as_expected", r.as_expected()},
-          {"structures", r.structures}, {"undecided", r.undecided}, {"counterexample", r.counterexample}};
-}
-
 }  // namespace
 
 Commands add_prove(CLI::App& app) {
@@ -53,7 +46,7 @@ Commands add_prove(CLI::App& app) {
              Json j = Json::array();
              for (const auto& r : run_proofs(o->names, static_cast<std::size_t>(o->cases))) {
                all = all && r.as_expected();
-               if (o->json) j.push_back(to_json(r));
+               if (o->json) j.push_back(proof_report_json(r));
                else print_text(r);
              }
              if (o->json) std::cout << j.dump(2) << "\n";

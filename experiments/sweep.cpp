@@ -17,6 +17,7 @@
 
 #include "experiments/svg_plot.hpp"
 #include "experiments/untrim_tolerance.hpp"
+#include "proofs/suite.hpp"
 #include "spline/errors.hpp"
 
 namespace splinex {
@@ -78,16 +79,58 @@ UntrimToleranceOptions untrim_options(const SweepPlanOptions& o) {
   return u;
 }
 
+std::size_t proof_cases(const SweepPlanOptions& o) {
+  const long n = o.cases == 0 ? 200 : o.cases;
+  if (n < 1 || n > 100000) throw UsageError("cases", std::to_string(n) + " is outside [1, 100000]", "give --cases N with 1 <= N <= 100000");
+  return static_cast<std::size_t>(n);
+}
+
+// The proofs' merged files: proofs.json (what `splinex prove --json --cases N` prints) and proofs.md.
+std::string merge_proofs(const std::vector<Json>& rows, std::size_t cases, const std::string& out_dir, bool& ok) {
+  Json all = Json::array();
+  std::ostringstream md;
+  md << "# The named proofs on " << cases << " random exact cases each\n\n| proof | verdict | expected | cases | cells | points |\n|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    all.push_back(r);
+    ok = ok && r.at("as_expected").get<bool>();
+    md << "| " << r.at("name").get<std::string>() << " | " << r.at("verdict").get<std::string>() << (r.at("as_expected").get<bool>() ? "" : " (NOT AS EXPECTED)")
+       << " | " << r.at("expected").get<std::string>() << " | " << r.at("cases").get<std::size_t>() << " | " << r.at("cells").get<std::size_t>() << " | "
+       << r.at("points").get<std::size_t>() << " |\n";
+  }
+  write_file_atomically(out_dir + "/proofs.json", all.dump(2) + "\n");
+  write_file_atomically(out_dir + "/proofs.md", md.str());
+  return md.str();
+}
+
+void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
+  if (o.full || !o.eps.empty() || !o.runs.empty())
+    throw UsageError("sweep", "--full, --eps and --runs are options of untrim-tolerance, not of " + name, "give --cases for proofs");
+}
+
 }  // namespace
 
-std::vector<std::string> sweep_names() { return {"untrim-tolerance"}; }
+std::vector<std::string> sweep_names() { return {"untrim-tolerance", "proofs"}; }
 
 std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options) {
-  if (name != "untrim-tolerance") {
-    std::string names;
-    for (const auto& n : sweep_names()) names += (names.empty() ? "" : ", ") + n;
-    throw UsageError("sweep", "'" + name + "' is not a sweep that can be planned", "give one of " + names);
+  const auto names = sweep_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw UsageError("sweep", "'" + name + "' is not a sweep that can be planned", "give one of " + list);
   }
+  if (name == "proofs") {
+    no_untrim_options(options, name);
+    const std::size_t cases = proof_cases(options);
+    std::vector<SweepJob> jobs;
+    for (const auto& e : proof_registry()) {
+      SweepJob j;
+      j.sweep = name, j.id = e.name, j.params = {{"name", e.name}}, j.plan = {{"cases", cases}};
+      j.output = name + "/" + e.name + ".json";
+      jobs.push_back(std::move(j));
+    }
+    return jobs;
+  }
+  if (options.cases != 0) throw UsageError("cases", "is an option of proofs, not of " + name, "give --eps and --runs for untrim-tolerance");
   const auto u = untrim_options(options);
   const Json plan = untrim_tolerance_options_json(u);
   std::vector<SweepJob> jobs;
@@ -156,7 +199,13 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
 }
 
 Json sweep_run_job(const SweepJob& job) {
-  // untrim-tolerance (the only sweep so far; sweep_job_from_json refuses others)
+  if (job.sweep == "proofs") {
+    const auto name = job.params.at("name").get<std::string>();
+    const auto cases = job.plan.at("cases").get<std::size_t>();
+    const auto r = run_proofs({name}, cases);
+    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"result", proof_report_json(r.at(0))}};
+  }
+  // untrim-tolerance
   const auto u = untrim_tolerance_options_from_json(job.plan);
   UntrimCase c;
   c.m = job.params.at("m").get<int>(), c.bits = job.params.at("bits").get<int>(), c.eps = job.params.at("eps").get<double>();
@@ -247,15 +296,26 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
     throw DomainError("jobs", std::to_string(missing.size()) + " of " + std::to_string(jobs.size()) + " jobs have no output in '" + dir + "': " + list,
                       "run sweep run for their shards (finished jobs are skipped)");
   }
+  std::filesystem::create_directories(out_dir);
+  if (jobs.front().sweep == "proofs") return merge_proofs(rows, jobs.front().plan.at("cases").get<std::size_t>(), out_dir, ok);
   auto u = untrim_tolerance_options_from_json(jobs.front().plan);
   u.out_dir = out_dir;
-  std::filesystem::create_directories(out_dir);
   return untrim_tolerance_merge(rows, u, ok);
 }
 
 std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
                          const std::function<void(const std::string&)>& progress) {
   sweep_plan(name, options);  // the name's and the options' errors
+  if (name == "proofs") {
+    const std::size_t cases = proof_cases(options);
+    std::vector<Json> rows;
+    for (const auto& e : proof_registry()) {
+      progress("proof " + e.name);
+      rows.push_back(proof_report_json(e.run(cases)));
+    }
+    std::filesystem::create_directories(out_dir);
+    return merge_proofs(rows, cases, out_dir, ok);
+  }
   auto u = untrim_options(options);
   u.out_dir = out_dir;
   std::filesystem::create_directories(out_dir);

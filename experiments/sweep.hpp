@@ -6,7 +6,8 @@
 // produces the same CSV, figures and Markdown as the single-process run (the report's section),
 // timings aside, whatever the sharding.
 //
-// Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps).
+// Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps) and
+// proofs (every named proof of `splinex prove` on N cases, one job per proof).
 #pragma once
 #include <functional>
 #include <string>
@@ -32,6 +33,7 @@ struct SweepPlanOptions {
   bool full = false;        // the long sweep (the report's --full)
   std::string eps;          // comma-separated tolerances, replacing the default list
   std::string runs;         // comma-separated bits:min_eps:max_m (bits 0: double), replacing the default runs
+  long cases = 0;           // proofs: random exact cases per proof (0: 200, the long label's)
 };
 
 std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options);

@@ -170,4 +170,11 @@ std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::
   return out;
 }
 
+nlohmann::json proof_report_json(const ProofReport& r) {
+  return {{"name", r.name}, {"identity", r.identity}, {"degree_bound", r.degree_bound}, {"cases", r.cases},
+          {"cells", r.cells}, {"points", r.points}, {"verdict", r.verdict_key()},
+          {"expected", r.expect_proved ? "holds" : "refuted"}, {"as_expected", r.as_expected()},
+          {"structures", r.structures}, {"undecided", r.undecided}, {"counterexample", r.counterexample}};
+}
+
 }  // namespace splinex

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "proofs/identity.hpp"
 
 namespace splinex {
@@ -95,5 +97,8 @@ class ScopedPlantedHybridBug {
 
 /// Runs the named proofs (all when `names` is empty); unknown names throw UsageError.
 std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases = 12);
+
+/// The report as `splinex prove --json` prints it (no timings: the same on any machine).
+nlohmann::json proof_report_json(const ProofReport& r);
 
 }  // namespace splinex
