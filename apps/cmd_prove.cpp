@@ -1,5 +1,7 @@
 // splinex prove: the exact proofs by identity (proofs/), as text or JSON.
+#include <algorithm>
 #include <iostream>
+#include <thread>
 #include <memory>
 
 #include "apps/command.hpp"
@@ -27,6 +29,7 @@ Commands add_prove(CLI::App& app) {
     std::vector<std::string> names;
     bool json = false, list = false;
     long cases = 12;
+    int jobs = 0;  // 0: every core
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("prove", "run the exact proofs (proof by identity)");
@@ -34,6 +37,9 @@ Commands add_prove(CLI::App& app) {
   c->add_flag("--json", o->json, "JSON output");
   c->add_option("--cases", o->cases, "random exact cases per proof")->capture_default_str();
   c->add_flag("--list", o->list, "list the proof names");
+  c->add_option("--jobs", o->jobs, "proofs run at once on threads (default 0: every core); the output does not depend on it")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
   return {{c, [o](const Context&) {
              if (o->list) {
                for (const auto& e : proof_registry()) std::cout << e.name << "\t" << e.identity << "\n";
@@ -44,7 +50,8 @@ Commands add_prove(CLI::App& app) {
                                 "give --cases N with 1 <= N <= 100000");
              bool all = true;
              Json j = Json::array();
-             for (const auto& r : run_proofs(o->names, static_cast<std::size_t>(o->cases))) {
+             const std::size_t threads = o->jobs > 0 ? static_cast<std::size_t>(o->jobs) : std::max(1u, std::thread::hardware_concurrency());
+             for (const auto& r : run_proofs(o->names, static_cast<std::size_t>(o->cases), threads)) {
                all = all && r.as_expected();
                if (o->json) j.push_back(proof_report_json(r));
                else print_text(r);

@@ -2,9 +2,13 @@
 // `splinex prove --list`), the seed of each proof's cases, the accumulator of identity checks, and
 // the planted-bug seams the trust tests use.
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <random>
 #include <stdexcept>
+#include <thread>
 
 #include "fixtures/random_spline.hpp"
 #include "proofs/suite.hpp"
@@ -151,22 +155,42 @@ const std::vector<ProofEntry>& proof_registry() {
   return registry;
 }
 
-std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases) {
-  std::vector<ProofReport> out;
+std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases, std::size_t threads) {
   const auto& reg = proof_registry();
+  std::vector<const ProofEntry*> todo;
   if (names.empty()) {
-    for (const auto& e : reg) out.push_back(e.run(cases));
-    return out;
-  }
-  for (const auto& n : names) {
-    auto it = std::find_if(reg.begin(), reg.end(), [&](const ProofEntry& e) { return e.name == n; });
-    if (it == reg.end()) {
-      std::string all;
-      for (const auto& e : reg) all += (all.empty() ? "" : ", ") + e.name;
-      throw UsageError("prove", "unknown proof \"" + n + "\"", "use one of: " + all);
+    for (const auto& e : reg) todo.push_back(&e);
+  } else {
+    for (const auto& n : names) {
+      auto it = std::find_if(reg.begin(), reg.end(), [&](const ProofEntry& e) { return e.name == n; });
+      if (it == reg.end()) {
+        std::string all;
+        for (const auto& e : reg) all += (all.empty() ? "" : ", ") + e.name;
+        throw UsageError("prove", "unknown proof \"" + n + "\"", "use one of: " + all);
+      }
+      todo.push_back(&*it);
     }
-    out.push_back(it->run(cases));
   }
+  std::vector<ProofReport> out(todo.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  std::exception_ptr error;
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < todo.size();) {
+      try {
+        out[k] = todo[k]->run(cases);
+      } catch (...) {
+        std::lock_guard<std::mutex> g(lock);
+        if (!error) error = std::current_exception();
+        next = todo.size();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads && t < todo.size(); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   return out;
 }
 
