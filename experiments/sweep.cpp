@@ -107,6 +107,22 @@ void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
     throw UsageError("sweep", "--full, --eps and --runs are options of untrim-tolerance, not of " + name, "give --cases for proofs");
 }
 
+// An existing output of `job`: its result, after checking that it is this job's under this plan
+// (a folder reused for another plan must not be merged or skipped silently).
+Json read_result(const SweepJob& job, const std::filesystem::path& p) {
+  std::ifstream in(p);
+  Json r;
+  try {
+    in >> r;
+  } catch (const Json::parse_error&) {
+    throw ParseError(job.output, "is not a job result (not JSON)", "delete it and run the job again (sweep run skips only finished jobs)");
+  }
+  if (!r.is_object() || r.value("id", std::string()) != job.id || !r.contains("result") || !r.contains("plan") || r["plan"] != job.plan ||
+      r.value("params", Json()) != job.params)
+    throw ParseError(job.output, "is not the result of job " + job.id + " under this plan", "give another --dir, or delete the folder's results of the other plan");
+  return r;
+}
+
 }  // namespace
 
 std::vector<std::string> sweep_names() { return {"untrim-tolerance", "proofs"}; }
@@ -203,13 +219,13 @@ Json sweep_run_job(const SweepJob& job) {
     const auto name = job.params.at("name").get<std::string>();
     const auto cases = job.plan.at("cases").get<std::size_t>();
     const auto r = run_proofs({name}, cases);
-    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"result", proof_report_json(r.at(0))}};
+    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", proof_report_json(r.at(0))}};
   }
   // untrim-tolerance
   const auto u = untrim_tolerance_options_from_json(job.plan);
   UntrimCase c;
   c.m = job.params.at("m").get<int>(), c.bits = job.params.at("bits").get<int>(), c.eps = job.params.at("eps").get<double>();
-  return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"result", untrim_tolerance_case(c, u)}};
+  return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", untrim_tolerance_case(c, u)}};
 }
 
 SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress,
@@ -237,6 +253,13 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
       const auto& job = jobs[mine[slot]];
       const std::filesystem::path out = std::filesystem::path(dir) / job.output;
       if (std::filesystem::exists(out)) {
+        try {
+          read_result(job, out);
+        } catch (...) {
+          std::lock_guard<std::mutex> g(lock);
+          if (!error) error = std::current_exception();
+          return;
+        }
         std::lock_guard<std::mutex> g(lock);
         ++st.skipped, ++done;
         if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
@@ -274,20 +297,11 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
   std::vector<std::string> missing;
   for (const auto& job : jobs) {
     const std::filesystem::path p = std::filesystem::path(dir) / job.output;
-    std::ifstream in(p);
-    if (!in) {
+    if (!std::filesystem::exists(p)) {
       missing.push_back(job.id);
       continue;
     }
-    Json r;
-    try {
-      in >> r;
-    } catch (const Json::parse_error&) {
-      throw ParseError(job.output, "is not a job result (not JSON)", "delete it and run the job again (sweep run skips only finished jobs)");
-    }
-    if (!r.is_object() || r.value("id", std::string()) != job.id || !r.contains("result"))
-      throw ParseError(job.output, "is not the result of job " + job.id, "delete it and run the job again");
-    rows.push_back(r["result"]);
+    rows.push_back(read_result(job, p)["result"]);
   }
   if (!missing.empty()) {
     std::string list;

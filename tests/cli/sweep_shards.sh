@@ -40,6 +40,14 @@ untimed "$W/merged_threads" > "$W/merged_threads.txt"
 cmp "$W/single.txt" "$W/merged_threads.txt"
 # resumption: everything is there, nothing runs
 $CLI sweep run --jobs "$W/jobs.jsonl" --dir "$W/jobs3" --quiet | grep -q '"run":0,"shard":"0/1","skipped":15'
+# a folder of another plan is refused, not skipped or merged silently
+$CLI sweep plan untrim-tolerance --eps 1e-2 --runs 0:1e-2:1 > "$W/other.jsonl"
+set +e
+$CLI sweep run --jobs "$W/other.jsonl" --dir "$W/jobs3" --quiet > /dev/null 2> "$W/other.txt"
+rc=$?
+set -e
+test $rc -eq 2
+grep -q "^splinex: error: untrim-tolerance/m1-double-eps0.01.json: is not the result of job m1-double-eps0.01 under this plan" "$W/other.txt"
 # a missing job is named by the merge
 rm "$W/jobs2/untrim-tolerance/m2-double-eps0.001.json"
 set +e
