@@ -13,10 +13,11 @@
 
 #include "spline/errors.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
+// Address and thread sanitizers reserve terabytes of shadow address space: no RLIMIT_AS under them.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define SPLINEX_ASAN 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
 #define SPLINEX_ASAN 1
 #endif
 #endif
@@ -97,7 +98,7 @@ MemoryBudget set_memory_budget(std::size_t bytes) {
   MemoryBudget& b = budget_state();
   b = MemoryBudget{bytes, false, ""};
 #ifdef SPLINEX_ASAN
-  b.note = "not enforced under AddressSanitizer (it reserves terabytes of shadow address space)";
+  b.note = "not enforced under AddressSanitizer or ThreadSanitizer (they reserve terabytes of shadow address space)";
 #else
   rlimit rl{};
   if (getrlimit(RLIMIT_AS, &rl) != 0) {
