@@ -412,6 +412,15 @@ Json guided_json(const GuidedResult& g, double weight, const GuideOptions3& o, c
                           "exactly onto the vertex equalities; the validity above is decided exactly on that patch"}};
 }
 
+// The two parts of a valid surface's split, as facet lists, into dir/split.json.
+SurfaceSplit write_surface_split(const Solid3<Rational>& S, const CutData3& C, const std::string& dir) {
+  const auto sp = split_by_surface(S, C.positive);
+  const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
+                   {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
+  write_file_atomically((std::filesystem::path(dir) / "split.json").string(), parts.dump(1) + "\n");
+  return sp;
+}
+
 int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
   const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
   const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
@@ -531,10 +540,7 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
     std::filesystem::create_directories(fo.out);
     write_file_atomically((std::filesystem::path(fo.out) / "surface.json").string(), cutting_surface_to_json(drawn->first, drawn->second).dump(1) + "\n");
     if (verdict == "valid") {
-      const auto sp = split_by_surface(S, C.positive);
-      const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
-                       {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
-      write_file_atomically((std::filesystem::path(fo.out) / "split.json").string(), parts.dump(1) + "\n");
+      const auto sp = write_surface_split(S, C, fo.out);
       out["split"] = Json{{"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()}, {"file", "split.json"}};
     } else {
       out["split"] = "not written: the surface is not certified valid";
@@ -544,49 +550,53 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
   return 0;
 }
 
-int run_certify3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
-  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
-  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
-  const auto doc = cutting_surface_from_json(read_json_file(surface_file, ctx.read_limits), ctx.limits);
-  const auto o = to_surface_options(fo);
-  const Frame3 frame = unit_frame(S);
-  const auto Sn = to_frame(S, frame);
-  const auto loop = validate_cut(Sn, C);
+// A given cutting_surface document with its solid and cutting data (cut certify, cut split).
+struct GivenSurface {
+  Solid3<Rational> solid;
+  CutData3 cut;
+  CuttingSurfaceDoc surface;
+};
+
+GivenSurface read_given_surface(const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
+  GivenSurface g;
+  g.solid = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
+  g.cut = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
+  g.surface = cutting_surface_from_json(read_json_file(surface_file, ctx.read_limits), ctx.limits);
+  return g;
+}
+
+// Section 2's conditions for the given surface, decided exactly in the normalized frame.
+SurfaceValidity certify_given_surface(const GivenSurface& g, const Frame3& frame, const SurfaceFacetOptions& o) {
+  const auto Sn = to_frame(g.solid, frame);
+  const auto loop = validate_cut(Sn, g.cut);
   DomainPolygon D;
   D.method = "given";
-  D.vertices = doc.domain;
+  D.vertices = g.surface.domain;
   D.axes = projection_axes(loop);
-  const auto V = certify_cutting_surface(Sn, loop, D, patch_to_frame(doc.patch, frame), o);
-  std::cout << surface_validity_json(V, frame).dump() << "\n";
+  return certify_cutting_surface(Sn, loop, D, patch_to_frame(g.surface.patch, frame), o);
+}
+
+int run_certify3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
+  const auto g = read_given_surface(solid_file, cut_file, surface_file, ctx);
+  const auto o = to_surface_options(fo);
+  const Frame3 frame = unit_frame(g.solid);
+  std::cout << surface_validity_json(certify_given_surface(g, frame, o), frame).dump() << "\n";
   return 0;
 }
 
 // cut split on a solid3d: the given surface certified (as cut certify), then the parts written.
 int run_split3(const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const std::string& out_dir, const Context& ctx) {
-  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
-  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
-  const auto surface_doc = read_json_file(surface_file, ctx.read_limits);
-  const auto doc = cutting_surface_from_json(surface_doc, ctx.limits);
-  const Frame3 frame = unit_frame(S);
-  const auto Sn = to_frame(S, frame);
-  const auto loop = validate_cut(Sn, C);
-  DomainPolygon D;
-  D.method = "given";
-  D.vertices = doc.domain;
-  D.axes = projection_axes(loop);
-  const auto V = certify_cutting_surface(Sn, loop, D, patch_to_frame(doc.patch, frame));
+  const auto g = read_given_surface(solid_file, cut_file, surface_file, ctx);
+  const auto V = certify_given_surface(g, unit_frame(g.solid), SurfaceFacetOptions{});
   if (V.verdict != "valid")
     throw DomainError("surface", "is not certified valid (" + V.verdict + ": tangents " + V.tangents + ", regular " + V.regular + ", injective " + V.injective +
                                      ", collision " + V.collision + ")",
                       "run cut certify to see why; split along a valid cutting surface");
-  const auto sp = split_by_surface(S, C.positive);
   std::filesystem::create_directories(out_dir);
-  write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), cutting_surface_to_json(doc.patch, doc.domain).dump(1) + "\n");
-  const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
-                   {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
-  const std::string file = (std::filesystem::path(out_dir) / "split.json").string();
-  write_file_atomically(file, parts.dump(1) + "\n");
-  std::cout << Json{{"split", file}, {"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()}, {"verdict", V.verdict},
+  write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), cutting_surface_to_json(g.surface.patch, g.surface.domain).dump(1) + "\n");
+  const auto sp = write_surface_split(g.solid, g.cut, out_dir);
+  std::cout << Json{{"split", (std::filesystem::path(out_dir) / "split.json").string()}, {"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()},
+                    {"verdict", V.verdict},
                     {"meaning", "the surface certified valid (cut certify), the parts as facet lists with the trimmed patch (not solids: the patch is trimmed)"}}
                    .dump()
             << "\n";

@@ -101,6 +101,17 @@ Rational approximate_length(const P3& d) {
   return r;
 }
 
+// q rounded to the nearest multiple of 2^-bits (through MPFR at 256 bits: the callers' q are at most
+// 1 in magnitude).
+Rational round_to_grid(const Rational& q, unsigned bits) {
+  mpfr_t x;
+  mpfr_init2(x, 256);
+  mpfr_set_q(x, q.backend().data(), MPFR_RNDN);
+  const Rational r = round_to_grid(x, bits);
+  mpfr_clear(x);
+  return r;
+}
+
 // The exact unit vector (1 - t^2, 2 t) / (1 + t^2), t = tan(phi / 2) rounded to a multiple of 2^-12,
 // for |phi| <= pi / 2 (|t| <= 1); other angles through phi -/+ pi and the opposite vector. A
 // rational point exactly on the unit circle, within about 2^-12 rad of the direction phi.
@@ -248,13 +259,7 @@ std::optional<std::vector<P2>> eq5_polygon(const std::vector<LoopSide3>& loop, s
     return std::nullopt;
   }
   for (auto& p : v)
-    for (int k = 0; k < 2; ++k) {
-      mpfr_t x;
-      mpfr_init2(x, 256);
-      mpfr_set_q(x, p[k].backend().data(), MPFR_RNDN);
-      p[k] = round_to_grid(x, 11);
-      mpfr_clear(x);
-    }
+    for (int k = 0; k < 2; ++k) p[k] = round_to_grid(p[k], 11);
   if (!simple_polygon(v, why)) {
     why = "Eq. 5's polygon (vertices on the 2^-11 grid) is not simple: " + why;
     return std::nullopt;
@@ -301,14 +306,7 @@ std::array<Rational, 4> projection_alignment(const std::vector<LoopSide3>& loop,
   Rational mx(0);
   for (const auto& m : M) mx = std::max(mx, rabs(m));
   if (mx == 0) return id;
-  for (auto& m : M) {
-    mpfr_t x;
-    mpfr_init2(x, 256);
-    const Rational r = m / mx;
-    mpfr_set_q(x, r.backend().data(), MPFR_RNDN);
-    m = round_to_grid(x, 16);
-    mpfr_clear(x);
-  }
+  for (auto& m : M) m = round_to_grid(Rational(m / mx), 16);
   if (!(M[0] * M[3] - M[1] * M[2] != 0)) return id;
   return M;
 }
@@ -492,14 +490,7 @@ GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& piece
         for (int d = 0; d < 3; ++d) A[d] = (g11 * u[d] - g01 * v[d]) / det, A[3 + d] = (g00 * v[d] - g01 * u[d]) / det;
         Rational mx(0);
         for (const auto& x : A) mx = std::max(mx, rabs(x));
-        for (auto& x : A) {
-          mpfr_t t;
-          mpfr_init2(t, 256);
-          const Rational r = x / mx;
-          mpfr_set_q(t, r.backend().data(), MPFR_RNDN);
-          x = round_to_grid(t, 20);
-          mpfr_clear(t);
-        }
+        for (auto& x : A) x = round_to_grid(Rational(x / mx), 20);
         for (long a = 0; ok && a < 3; ++a)
           for (long b = 0; ok && b < 3; ++b) {
             Cell& c = at(I + a, J + b);
