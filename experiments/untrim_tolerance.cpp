@@ -83,7 +83,7 @@ struct Row {
   std::string why;
   std::size_t tiles = 0, trapezoids = 0, max_chain = 0, control_points = 0, samples = 0;
   int deg_x = 0, deg_l = 0;
-  double seconds = 0;
+  double cpu_seconds = 0;  // the composition's CPU time on the job's thread
   Rational deviation{0}, gap{0}, overlap{0};
 };
 
@@ -100,7 +100,7 @@ nlohmann::json row_json(const Row& r) {
           {"samples", r.samples},
           {"deg_x", r.deg_x},
           {"deg_l", r.deg_l},
-          {"seconds", r.seconds},
+          {"cpu_seconds", r.cpu_seconds},
           {"deviation", to_fraction_string(r.deviation)},
           {"gap", to_fraction_string(r.gap)},
           {"overlap", to_fraction_string(r.overlap)}};
@@ -120,7 +120,7 @@ Row row_from_json(const nlohmann::json& j) {
   r.samples = j.at("samples").get<std::size_t>();
   r.deg_x = j.at("deg_x").get<int>();
   r.deg_l = j.at("deg_l").get<int>();
-  r.seconds = j.at("seconds").get<double>();
+  r.cpu_seconds = j.at("cpu_seconds").get<double>();
   r.deviation = parse_number(j.at("deviation").get<std::string>(), "deviation");
   r.gap = parse_number(j.at("gap").get<std::string>(), "gap");
   r.overlap = parse_number(j.at("overlap").get<std::string>(), "overlap");
@@ -129,7 +129,6 @@ Row row_from_json(const nlohmann::json& j) {
 
 template <class A>
 Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, const UntrimToleranceOptions& opt) {
-  using clock = std::chrono::steady_clock;
   Row row;
   row.arith = ArithTraits<A>::name();
   row.eps = eps;
@@ -141,7 +140,7 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
   to.grid = 8;
   Limits lim;
   lim.max_control_points = opt.max_control_points;
-  const auto c0 = clock::now();
+  const double c0 = thread_cpu_seconds();
   TensorComposition<A> C;
   try {
     C = compose_tensor(Ta, Sa, to, lim);
@@ -150,7 +149,7 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
     row.why = e.what();
     return row;
   }
-  row.seconds = std::chrono::duration<double>(clock::now() - c0).count();
+  row.cpu_seconds = thread_cpu_seconds() - c0;
   row.tiles = C.tiles.size();
   row.trapezoids = C.trapezoids;
   // Exact tiles, the union per inner piece (CGAL), gap and overlap.
@@ -277,7 +276,7 @@ std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::f
     const Row r = row_from_json(rows.back());
     // Long sweeps: every finished row is on disk at once (the final CSV replaces this file).
     std::ofstream partial(opt.out_dir + "/untrim_tolerance.partial.csv", std::ios::app);
-    partial << std::setprecision(17) << r.m << "," << r.arith << "," << r.eps << "," << r.control_points << "," << r.seconds << ","
+    partial << std::setprecision(17) << r.m << "," << r.arith << "," << r.eps << "," << r.control_points << "," << r.cpu_seconds << ","
             << to_double(r.deviation) << "," << to_double(r.gap) << "," << to_double(r.overlap) << "," << r.skipped << "\n";
   }
   return untrim_tolerance_merge(rows, opt, ok);
@@ -289,12 +288,12 @@ std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, 
   for (const auto& j : row_docs) rows.push_back(row_from_json(j));
   // CSV.
   std::ostringstream csv;
-  csv << "multiplicity,arith,eps,tiles,trapezoids,max_chain_vertices,degree_x,degree_l,control_points,seconds,samples,"
+  csv << "multiplicity,arith,eps,tiles,trapezoids,max_chain_vertices,degree_x,degree_l,control_points,cpu_seconds,samples,"
          "max_abs_deviation,gap_area,overlap_area,skipped\n"
       << std::setprecision(17);
   for (const auto& r : rows)
     csv << r.m << "," << r.arith << "," << r.eps << "," << r.tiles << "," << r.trapezoids << "," << r.max_chain << ","
-        << r.deg_x << "," << r.deg_l << "," << r.control_points << "," << r.seconds << "," << r.samples << ","
+        << r.deg_x << "," << r.deg_l << "," << r.control_points << "," << r.cpu_seconds << "," << r.samples << ","
         << to_double(r.deviation) << "," << to_double(r.gap) << "," << to_double(r.overlap) << ","
         << (r.skipped ? "\"" + r.why + "\"" : std::string()) << "\n";
   // Slopes, plot series.
@@ -405,12 +404,14 @@ std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, 
   if (first && lastrow)
     md << "Cost (m = 1, " << ariths.front() << "): eps " << g(first->eps) << ": " << first->tiles << " tiles of degree ("
        << first->deg_x << ", " << first->deg_l << "), " << first->max_chain << " chain vertices at most, "
-       << first->control_points << " control points, " << g(first->seconds) << " s; eps " << g(lastrow->eps) << ": "
+       << first->control_points << " control points, " << g(first->cpu_seconds) << " s; eps " << g(lastrow->eps) << ": "
        << lastrow->tiles << " tiles, " << lastrow->max_chain << " chain vertices, " << lastrow->control_points
-       << " control points, " << g(lastrow->seconds) << " s. Control points grow like eps^" << g(loglog_slope(cp_pts))
+       << " control points, " << g(lastrow->cpu_seconds) << " s. Control points grow like eps^" << g(loglog_slope(cp_pts))
        << " (a polyline within eps of a curved trimming curve needs ~eps^(-1/2) chords, each a Bezier piece of every "
           "tile along it).\n\n";
-  md << "Data: `untrim_tolerance.csv`; figures: `untrim_tolerance.svg`, `untrim_tolerance_cost.svg`.\n\n"
+  md << "Times are the CPU time of the composition on the job's thread (they do not depend on other jobs running "
+        "beside it), not the exact measurement that follows it.\n\n"
+     << "Data: `untrim_tolerance.csv`; figures: `untrim_tolerance.svg`, `untrim_tolerance_cost.svg`.\n\n"
      << "![untrimming tolerance](untrim_tolerance.svg)\n\n![untrimming cost](untrim_tolerance_cost.svg)\n";
   write_file_atomically(opt.out_dir + "/untrim_tolerance.md", "# Untrimming tolerance study\n" + md.str());
   return md.str();

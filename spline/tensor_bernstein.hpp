@@ -43,6 +43,39 @@ inline std::size_t tensor_stride(const std::vector<int>& deg, int l) {
   return s;
 }
 
+/// Offsets in a coefficient array of degrees `into` of the multi-indices of an array of degrees
+/// `deg` (direction 0 fastest): the flat index of idx in `into` for every flat index of `deg`.
+inline std::vector<std::size_t> tensor_offsets(const std::vector<int>& deg, const std::vector<int>& into) {
+  std::vector<std::size_t> off(tensor_size(deg));
+  std::vector<int> idx(deg.size());
+  for (std::size_t i = 0; i < off.size(); ++i) {
+    unflatten(i, deg, idx);
+    std::size_t K = 0, st = 1;
+    for (std::size_t l = 0; l < deg.size(); ++l) {
+      K += static_cast<std::size_t>(idx[l]) * st;
+      st *= static_cast<std::size_t>(into[l]) + 1;
+    }
+    off[i] = K;
+  }
+  return off;
+}
+
+/// prod_l C(deg_l, idx_l) for every flat index of an array of degrees deg, as T (each C(n, k)
+/// computed once per call; the products are formed in the order of the directions).
+template <class T>
+std::vector<T> tensor_binomials(const std::vector<int>& deg) {
+  std::vector<std::vector<T>> rows(deg.size());
+  for (std::size_t l = 0; l < deg.size(); ++l)
+    for (int i = 0; i <= deg[l]; ++i) rows[l].push_back(binomial<T>(deg[l], i));
+  std::vector<T> out(tensor_size(deg), T(1));
+  std::vector<int> idx(deg.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    unflatten(i, deg, idx);
+    for (std::size_t l = 0; l < deg.size(); ++l) out[i] *= rows[l][idx[l]];
+  }
+  return out;
+}
+
 template <class T>
 Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   const std::size_t k = f.deg.size();
@@ -54,37 +87,23 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   /// by binom(a+b, K).
   auto scaled = [&](const Bern<T>& p) {
     std::vector<T> s(p.c);
-    std::vector<int> idx(k);
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      unflatten(i, p.deg, idx);
-      T b(1);
-      for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(p.deg[l], idx[l]);
-      s[i] *= b;
-    }
+    const std::vector<T> b = tensor_binomials<T>(p.deg);
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] *= b[i];
     return s;
   };
   const std::vector<T> fs = scaled(f), gs = scaled(g);
-  std::vector<int> fi(k), gi(k);
-  std::vector<std::size_t> hstride(k);
-  std::size_t st = 1;
-  for (std::size_t l = 0; l < k; ++l) { hstride[l] = st; st *= h.deg[l] + 1; }
+  const std::vector<std::size_t> fo = tensor_offsets(f.deg, h.deg), go = tensor_offsets(g.deg, h.deg);
+  T t(0);  // one scratch product: t = fs[a]; t *= gs[b] rounds as fs[a] * gs[b] does
   for (std::size_t a = 0; a < fs.size(); ++a) {
     if (fs[a] == T(0)) continue;
-    unflatten(a, f.deg, fi);
     for (std::size_t b = 0; b < gs.size(); ++b) {
-      unflatten(b, g.deg, gi);
-      std::size_t K = 0;
-      for (std::size_t l = 0; l < k; ++l) K += (fi[l] + gi[l]) * hstride[l];
-      h.c[K] += fs[a] * gs[b];
+      t = fs[a];
+      t *= gs[b];
+      h.c[fo[a] + go[b]] += t;
     }
   }
-  std::vector<int> hi(k);
-  for (std::size_t i = 0; i < h.c.size(); ++i) {
-    unflatten(i, h.deg, hi);
-    T b(1);
-    for (std::size_t l = 0; l < k; ++l) b *= binomial<T>(h.deg[l], hi[l]);
-    h.c[i] /= b;
-  }
+  const std::vector<T> hb = tensor_binomials<T>(h.deg);
+  for (std::size_t i = 0; i < h.c.size(); ++i) h.c[i] /= hb[i];
   return h;
 }
 

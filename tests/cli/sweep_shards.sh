@@ -2,7 +2,7 @@
 # Issue 21: a small untrimming tolerance sweep (15 jobs, its slope checks pass) planned as jobs, run in 1, 2 and 3 shards
 # (xargs -P) and on 2 threads of one process, merged;
 # each merge must equal the single-process run (the report's code path) byte for byte, timings
-# aside (the CSV's seconds column and the seconds in the Markdown's cost line). Then resumption
+# aside (the CSV's cpu_seconds column and the seconds in the Markdown's cost line). Then resumption
 # (a second run skips every job) and a missing job (the merge names it, exit 2).
 set -eu
 CLI=$1
