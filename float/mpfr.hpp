@@ -88,6 +88,10 @@ static_assert(Arithmetic<Mpfr>, "Mpfr must model the arithmetic concept (spline/
 /// An Mpfr keeps its precision on assignment: no scratch values across calls (spline/arith.hpp).
 template <>
 inline constexpr bool reusable_scratch<Mpfr> = false;
+template <>
+inline int cache_precision_key<Mpfr>() {
+  return static_cast<int>(Mpfr::current_bits());
+}
 
 template <>
 struct ArithTraits<Mpfr> {

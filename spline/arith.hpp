@@ -54,6 +54,14 @@ struct ArithTraits;  // specialized per arithmetic; see above
 template <class T>
 inline constexpr bool reusable_scratch = true;
 
+/// A key for values of T cached across calls on one thread: 0 where a value means the same at
+/// every call; MPFR (float/mpfr.hpp) gives the current precision, so a cache made at 53 bits is
+/// not handed to a call running at 256.
+template <class T>
+inline int cache_precision_key() {
+  return 0;
+}
+
 /// 0 and 1 made once: assigning them (`x = zero_value<T>()`) reuses x's storage, where `x = T(0)`
 /// makes a temporary and, for GMP through Boost, hands x the temporary's fresh allocation. Both
 /// are exact at any precision, so the MPFR precision rule above does not concern them.

@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cstddef>
+#include <map>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -45,35 +46,50 @@ inline std::size_t tensor_stride(const std::vector<int>& deg, int l) {
 
 /// Offsets in a coefficient array of degrees `into` of the multi-indices of an array of degrees
 /// `deg` (direction 0 fastest): the flat index of idx in `into` for every flat index of `deg`.
+/// Built direction by direction (no division per entry).
 inline std::vector<std::size_t> tensor_offsets(const std::vector<int>& deg, const std::vector<int>& into) {
   std::vector<std::size_t> off(tensor_size(deg));
-  std::vector<int> idx(deg.size());
-  for (std::size_t i = 0; i < off.size(); ++i) {
-    unflatten(i, deg, idx);
-    std::size_t K = 0, st = 1;
-    for (std::size_t l = 0; l < deg.size(); ++l) {
-      K += static_cast<std::size_t>(idx[l]) * st;
-      st *= static_cast<std::size_t>(into[l]) + 1;
-    }
-    off[i] = K;
+  off[0] = 0;
+  std::size_t n = 1, stride = 1;
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    for (std::size_t j = static_cast<std::size_t>(deg[l]); j-- > 0;)  // j = deg_l, ..., 1; j = 0 keeps off[i]
+      for (std::size_t i = 0; i < n; ++i) off[(j + 1) * n + i] = off[i] + (j + 1) * stride;
+    n *= static_cast<std::size_t>(deg[l]) + 1;
+    stride *= static_cast<std::size_t>(into[l]) + 1;
   }
   return off;
 }
 
-/// prod_l C(deg_l, idx_l) for every flat index of an array of degrees deg, as T (each C(n, k)
-/// computed once per call; the products are formed in the order of the directions).
+/// prod_l C(deg_l, idx_l) for every flat index of an array of degrees deg, as T: the products
+/// 1 * C(deg_0, idx_0) * C(deg_1, idx_1) * ... formed in the order of the directions.
 template <class T>
 std::vector<T> tensor_binomials(const std::vector<int>& deg) {
-  std::vector<std::vector<T>> rows(deg.size());
-  for (std::size_t l = 0; l < deg.size(); ++l)
-    for (int i = 0; i <= deg[l]; ++i) rows[l].push_back(binomial<T>(deg[l], i));
   std::vector<T> out(tensor_size(deg), T(1));
-  std::vector<int> idx(deg.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    unflatten(i, deg, idx);
-    for (std::size_t l = 0; l < deg.size(); ++l) out[i] *= rows[l][idx[l]];
+  std::size_t n = 1;
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    const std::vector<T> row = binomial_row<T>(deg[l]);
+    for (std::size_t j = row.size(); j-- > 0;)  // high j first: out[i] (j = 0) is overwritten last
+      for (std::size_t i = 0; i < n; ++i) {
+        T v = out[i];
+        v *= row[j];
+        out[j * n + i] = std::move(v);
+      }
+    n *= row.size();
   }
   return out;
+}
+
+/// tensor_binomials, kept per thread for the degrees a thread has asked for (keyed also by the
+/// precision, since an MPFR value keeps the precision it was made with). Composition asks for the
+/// same few degree vectors millions of times; the cache holds at most 256 of them.
+template <class T>
+const std::vector<T>& cached_tensor_binomials(const std::vector<int>& deg) {
+  thread_local std::map<std::pair<int, std::vector<int>>, std::vector<T>> cache;
+  std::pair<int, std::vector<int>> key{cache_precision_key<T>(), deg};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  if (cache.size() >= 256) cache.clear();
+  return cache.emplace(std::move(key), tensor_binomials<T>(deg)).first->second;
 }
 
 template <class T>
@@ -87,7 +103,7 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
   /// by binom(a+b, K).
   auto scaled = [&](const Bern<T>& p) {
     std::vector<T> s(p.c);
-    const std::vector<T> b = tensor_binomials<T>(p.deg);
+    const std::vector<T>& b = cached_tensor_binomials<T>(p.deg);
     for (std::size_t i = 0; i < s.size(); ++i) s[i] *= b[i];
     return s;
   };
@@ -102,7 +118,7 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
       h.c[fo[a] + go[b]] += t;
     }
   }
-  const std::vector<T> hb = tensor_binomials<T>(h.deg);
+  const std::vector<T>& hb = cached_tensor_binomials<T>(h.deg);
   for (std::size_t i = 0; i < h.c.size(); ++i) h.c[i] /= hb[i];
   return h;
 }

@@ -11,6 +11,7 @@
 #include "spline/hodograph.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/kernel.hpp"
+#include "spline/tensor_bernstein.hpp"
 
 using namespace splinex;
 using test::spline;
@@ -340,4 +341,43 @@ TEST_CASE("binomial coefficients: the integer path equals Pascal's triangle exac
       if (want < two53) REQUIRE(d == want);
       else REQUIRE(abs(d - want) <= want * Rational(want < two63 ? 1 : 2 * k + 2) / two53);
     }
+}
+
+TEST_CASE("binomial rows and tensor tables equal the entry-by-entry definitions, bit for bit") {
+  // binomial_row(n)[i] is binomial(n, i) in every arithmetic (the rows feed Bernstein products,
+  // whose float results must not change with the faster tables), also past n = 62.
+  for (int n = 0; n <= 70; ++n) {
+    const auto rq = splinex::detail::binomial_row<Rational>(n);
+    const auto rd = splinex::detail::binomial_row<double>(n);
+    REQUIRE(rq.size() == static_cast<std::size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) {
+      REQUIRE(rq[static_cast<std::size_t>(i)] == splinex::detail::binomial<Rational>(n, i));
+      REQUIRE(rd[static_cast<std::size_t>(i)] == splinex::detail::binomial<double>(n, i));
+    }
+  }
+  {
+    Mpfr::Precision prec(24);  // below the values' size: the rounding must be the same
+    const auto rm = splinex::detail::binomial_row<Mpfr>(40);
+    for (int i = 0; i <= 40; ++i) REQUIRE(rm[static_cast<std::size_t>(i)] == splinex::detail::binomial<Mpfr>(40, i));
+  }
+  // Tables against unflatten: products in the order of the directions, offsets into larger arrays.
+  for (const std::vector<int>& deg : {std::vector<int>{0}, {5}, {3, 0}, {2, 4}, {1, 3, 2}, {0, 0, 0}, {12, 7}}) {
+    std::vector<int> into(deg.size());
+    for (std::size_t l = 0; l < deg.size(); ++l) into[l] = deg[l] + static_cast<int>(l) + 1;
+    const auto tb = splinex::detail::tensor_binomials<double>(deg);
+    const auto off = splinex::detail::tensor_offsets(deg, into);
+    std::vector<int> idx(deg.size());
+    REQUIRE(tb.size() == splinex::detail::tensor_size(deg));
+    for (std::size_t i = 0; i < tb.size(); ++i) {
+      splinex::detail::unflatten(i, deg, idx);
+      double b = 1;
+      std::size_t K = 0;
+      for (std::size_t l = 0; l < deg.size(); ++l) {
+        b *= splinex::detail::binomial<double>(deg[l], idx[l]);
+        K += static_cast<std::size_t>(idx[l]) * splinex::detail::tensor_stride(into, static_cast<int>(l));
+      }
+      REQUIRE(tb[i] == b);
+      REQUIRE(off[i] == K);
+    }
+  }
 }
