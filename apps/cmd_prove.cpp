@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "spline/parallel.hpp"
 #include "proofs/suite.hpp"
 
 namespace splinex::app {
@@ -50,7 +51,7 @@ Commands add_prove(CLI::App& app) {
                                 "give --cases N with 1 <= N <= 100000");
              bool all = true;
              Json j = Json::array();
-             const std::size_t threads = o->jobs > 0 ? static_cast<std::size_t>(o->jobs) : std::max(1u, std::thread::hardware_concurrency());
+             const std::size_t threads = o->jobs > 0 ? static_cast<std::size_t>(o->jobs) : hardware_threads();
              for (const auto& r : run_proofs(o->names, static_cast<std::size_t>(o->cases), threads)) {
                all = all && r.as_expected();
                if (o->json) j.push_back(proof_report_json(r));

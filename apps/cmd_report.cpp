@@ -16,6 +16,11 @@ Commands add_report(CLI::App& app) {
   std::string names;
   for (const auto& n : report_section_names()) names += (names.empty() ? "" : ", ") + n;
   c->add_option("--sections", o->sections, "only these sections (comma-separated), for splitting the run: " + names)->delimiter(',');
+  c->add_option("--jobs", o->jobs,
+                 "sections run at once on threads (default 0: every core); the results do not depend on it, only the "
+                 "order of the progress lines and the times do")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
   return {{c, [o](const Context&) { return run_report(*o); }}};
 }
 

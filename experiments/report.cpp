@@ -8,14 +8,20 @@
 #include <iterator>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
 
+#include "experiments/common.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "proofs/suite.hpp"
 #include "spline/errors.hpp"
+#include "spline/parallel.hpp"
 
 namespace splinex {
 
@@ -55,6 +61,15 @@ const char* const kSectionNames[] = {
     "cut",              "cut3",               "peers",        "proofs",
 };
 static_assert(std::size(kSectionNames) == std::size(kSections), "one name per section");
+
+// A section's rough cost in the test run (seconds on the development machine), so that the
+// longest start first when sections run on threads; unlisted sections count 1. Only the order of
+// the work depends on it, never a result.
+double section_weight(std::size_t k) {
+  static const std::map<std::string, double> w{{"cut3", 270}, {"vrep-teapot", 90}, {"crosscheck", 80}, {"proofs", 45}, {"untrim-tolerance", 40}, {"hybrid", 9}};
+  const auto it = w.find(kSectionNames[k]);
+  return it == w.end() ? 1.0 : it->second;
+}
 
 // report.md's parts in the order they are read.
 const char* const kDocument[] = {
@@ -104,12 +119,42 @@ int run_report(const ReportOptions& opt) {
   fs::remove(manifest + ".tmp");
   write_file_atomically(manifest, "{\"status\": \"incomplete\", \"note\": \"a run started here and has not finished; "
                                   "files in this folder may be from it or from an older run\"}\n");
-  ReportContext ctx{opt, [&](const std::string& s) {
-                      std::cerr << "[report " << std::fixed << std::setprecision(1)
-                                << std::chrono::duration<double>(clock::now() - t_start).count() << "s] " << s << std::endl;
-                    }};
+  std::mutex progress_lock;
+  const std::function<void(const std::string&)> progress = [&](const std::string& s) {
+    std::lock_guard<std::mutex> g(progress_lock);
+    std::cerr << "[report " << std::fixed << std::setprecision(1) << std::chrono::duration<double>(clock::now() - t_start).count()
+              << "s] " << s << std::endl;
+  };
+  // The tasks: every chosen section alone, but crosscheck and composition-orders together (one
+  // seeded stream, in this order). Longest first where known, so two cores finish together.
+  std::vector<std::vector<std::size_t>> tasks;
   for (std::size_t k = 0; k < std::size(kSections); ++k)
-    if (chosen[k]) kSections[k](ctx);
+    if (chosen[k]) {
+      if (k == 1 && chosen[0]) tasks.front().push_back(k);
+      else tasks.push_back({k});
+    }
+  std::stable_sort(tasks.begin(), tasks.end(), [](const auto& a, const auto& b) { return section_weight(a.front()) > section_weight(b.front()); });
+  std::vector<std::unique_ptr<ReportContext>> contexts(tasks.size());
+  const std::size_t threads = opt.jobs > 0 ? opt.jobs : hardware_threads();
+  if (threads > 1) progress("sections on " + std::to_string(std::min(threads, tasks.size())) + " threads");
+  parallel_for(tasks.size(), threads, [&](std::size_t t) {
+    contexts[t] = std::make_unique<ReportContext>(opt, progress);
+    for (std::size_t k : tasks[t]) {
+      const auto s0 = clock::now();
+      kSections[k](*contexts[t]);
+      progress(std::string("section ") + kSectionNames[k] + " finished in " +
+               fmt(std::chrono::duration<double>(clock::now() - s0).count(), 4) + " s");
+    }
+  });
+  // One context as if the sections had run in one thread, in their order.
+  ReportContext ctx{opt, progress};
+  for (auto& c : contexts) {
+    for (auto& [part, text] : c->markdown) ctx.markdown[part] = std::move(text);
+    ctx.ok = ctx.ok && c->ok;
+    ctx.crosschecks += c->crosschecks;
+    ctx.float_structures_match = ctx.float_structures_match && c->float_structures_match;
+    ctx.proofs_as_expected = ctx.proofs_as_expected && c->proofs_as_expected;
+  }
 
   ctx.progress("writing " + opt.out_dir);
   std::string md;

@@ -1,6 +1,7 @@
 // `splinex report`: the crosscheck suite over bundled cases, written to DIR as report.md, CSV,
 // JSON and SVG figures.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,11 @@ struct ReportOptions {
   /// the same numbers alone as in the whole run (composition-orders shares crosscheck's seeded
   /// stream, so it needs crosscheck with it).
   std::vector<std::string> sections;
+  /// Sections run at once on threads (0: every core). Each section (crosscheck with
+  /// composition-orders, which draw from one seeded stream) computes in a context of its own, and
+  /// the contexts are merged in the sections' order, so the files and report.md do not depend on
+  /// it (times aside).
+  std::size_t jobs = 0;
 };
 
 /// The sections' names in the order they run.

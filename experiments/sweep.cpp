@@ -1,10 +1,8 @@
 #include "experiments/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <mutex>
-#include <thread>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +17,7 @@
 #include "experiments/untrim_tolerance.hpp"
 #include "proofs/suite.hpp"
 #include "spline/errors.hpp"
+#include "spline/parallel.hpp"
 
 namespace splinex {
 
@@ -238,57 +237,30 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
   SweepRunStats st;
   st.in_shard = mine.size();
   const auto t0 = std::chrono::steady_clock::now();
-  std::atomic<std::size_t> next{0};
-  std::mutex lock;  // st, progress lines, the first error
+  std::mutex lock;  // st and the progress lines
   std::size_t done = 0;
-  std::exception_ptr error;
-  auto worker = [&] {
-    for (;;) {
-      {
-        std::lock_guard<std::mutex> g(lock);
-        if (error) return;
-      }
-      const std::size_t slot = next++;
-      if (slot >= mine.size()) return;
-      const auto& job = jobs[mine[slot]];
-      const std::filesystem::path out = std::filesystem::path(dir) / job.output;
-      if (std::filesystem::exists(out)) {
-        try {
-          read_result(job, out);
-        } catch (...) {
-          std::lock_guard<std::mutex> g(lock);
-          if (!error) error = std::current_exception();
-          return;
-        }
-        std::lock_guard<std::mutex> g(lock);
-        ++st.skipped, ++done;
-        if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
-        continue;
-      }
-      try {
-        const auto r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
-        std::filesystem::create_directories(out.parent_path());
-        write_file_atomically(out.string(), r.dump() + "\n");
-      } catch (...) {
-        std::lock_guard<std::mutex> g(lock);
-        if (!error) error = std::current_exception();
-        return;
-      }
+  parallel_for(mine.size(), threads, [&](std::size_t slot) {
+    const auto& job = jobs[mine[slot]];
+    const std::filesystem::path out = std::filesystem::path(dir) / job.output;
+    if (std::filesystem::exists(out)) {
+      read_result(job, out);  // a result of another plan is an error, not a finished job
       std::lock_guard<std::mutex> g(lock);
-      ++st.run, ++done;
-      if (progress) {
-        const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const double left = el / static_cast<double>(st.run) * static_cast<double>(st.in_shard - done);
-        std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << " (shard " << shard << "/" << shards << "): elapsed "
-                  << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
-      }
+      ++st.skipped, ++done;
+      if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
+      return;
     }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads && t < mine.size(); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+    const auto r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
+    std::filesystem::create_directories(out.parent_path());
+    write_file_atomically(out.string(), r.dump() + "\n");
+    std::lock_guard<std::mutex> g(lock);
+    ++st.run, ++done;
+    if (progress) {
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double left = el / static_cast<double>(st.run) * static_cast<double>(st.in_shard - done);
+      std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << " (shard " << shard << "/" << shards << "): elapsed "
+                << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
+    }
+  });
   return st;
 }
 

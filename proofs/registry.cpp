@@ -2,17 +2,15 @@
 // `splinex prove --list`), the seed of each proof's cases, the accumulator of identity checks, and
 // the planted-bug seams the trust tests use.
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <map>
-#include <mutex>
 #include <random>
 #include <stdexcept>
-#include <thread>
 
 #include "fixtures/random_spline.hpp"
 #include "proofs/suite.hpp"
 #include "proofs/suite_detail.hpp"
+#include "spline/parallel.hpp"
 
 namespace splinex {
 
@@ -172,25 +170,7 @@ std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::
     }
   }
   std::vector<ProofReport> out(todo.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex lock;
-  std::exception_ptr error;
-  auto worker = [&] {
-    for (std::size_t k; (k = next++) < todo.size();) {
-      try {
-        out[k] = todo[k]->run(cases);
-      } catch (...) {
-        std::lock_guard<std::mutex> g(lock);
-        if (!error) error = std::current_exception();
-        next = todo.size();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads && t < todo.size(); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  parallel_for(todo.size(), threads, [&](std::size_t k) { out[k] = todo[k]->run(cases); });
   return out;
 }
 

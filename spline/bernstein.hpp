@@ -2,6 +2,7 @@
 // (The NURBS Book, Section 1.3).
 #pragma once
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -39,20 +40,22 @@ T binomial(int n, int k) {
 }
 
 /// C(n, 0), ..., C(n, n) as T, equal to binomial<T>(n, i) each: by C(n, i + 1) = C(n, i) (n - i) /
-/// (i + 1) in 128-bit integers while the values fit in a long (always for n <= 62), else
-/// binomial<T>. One row costs n integer steps instead of n gcd loops.
+/// (i + 1) in integers while the values fit in a long (always for n <= 62; with g = gcd(C(n, i),
+/// i + 1), (i + 1) / g divides n - i, so nothing exceeds the next value), else binomial<T>. One row
+/// costs n integer steps instead of n gcd loops.
 template <class T>
 std::vector<T> binomial_row(int n) {
   std::vector<T> row;
   row.reserve(static_cast<std::size_t>(n) + 1);
-  unsigned __int128 r = 1;
+  unsigned long long r = 1;
   bool fits = true;
   for (int i = 0; i <= n; ++i) {
     if (fits) row.push_back(T(static_cast<long>(r)));
     else row.push_back(binomial<T>(n, i));
     if (fits && i < n) {
-      r = r * static_cast<unsigned>(n - i) / static_cast<unsigned>(i + 1);
-      fits = r <= static_cast<unsigned __int128>(std::numeric_limits<long>::max());
+      const unsigned long long d = static_cast<unsigned long long>(i) + 1, g = std::gcd(r, d);
+      fits = !__builtin_mul_overflow(r / g, static_cast<unsigned long long>(n - i) / (d / g), &r) &&
+             r <= static_cast<unsigned long long>(std::numeric_limits<long>::max());
     }
   }
   return row;
