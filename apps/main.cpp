@@ -50,6 +50,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-control-points", ctx.limits.max_control_points, "size limit per result spline (1 .. 10^9)")
       ->check(CLI::Range(1.0, 1e9))
       ->capture_default_str();
+  app.add_option("--max-total-control-points", ctx.limits.max_total_control_points,
+                 "size limit summed over the splines one command returns, e.g. untrimming's tiles (1 .. 10^10)")
+      ->check(CLI::Range(1.0, 1e10))
+      ->capture_default_str();
   app.add_option("--max-degree", ctx.limits.max_degree, "degree limit per direction (0 .. 10^8)")
       ->check(CLI::Range(0.0, 1e8))
       ->capture_default_str();

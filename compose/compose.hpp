@@ -48,6 +48,12 @@ template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options = {},
                    const Limits& limits = {});
 
+/// The least number of control points compose(outer, inner) returns, prod_l (segments_l D_l + 1)
+/// (C^0 joins at S's breakpoints; joins where T(S) may jump add one each), computed from the knots
+/// and degrees alone, before any work. SizeLimitError when it or a degree is above `limits`.
+template <class T>
+std::size_t compose_least_size(const BSpline<T>& outer, const BSpline<T>& inner, const Limits& limits = {});
+
 /// The homogeneous composition: a polynomial Bezier piece with q+1 coordinates (w*T(S), w) when S
 /// or T is rational (the weight is not required to be positive: trimmed patches evaluated only
 /// inside their region may have non-positive weights elsewhere), q coordinates otherwise.

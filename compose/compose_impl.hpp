@@ -271,25 +271,32 @@ BSpline<T> compose_bezier(const BSpline<T>& outer, const BSpline<T>& inner, Comp
 }
 
 template <class T>
+std::size_t compose_least_size(const BSpline<T>& outer, const BSpline<T>& inner, const Limits& limits) {
+  detail::check_composable(outer, inner);
+  const std::vector<int> D = composed_degrees(outer, inner);
+  std::size_t least = 1;
+  for (int l = 0; l < inner.dim(); ++l) {
+    limits.check_degree(D[l], "inner");
+    const std::size_t segs = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l)).size() - 1;
+    least = checked_product(least, checked_product(segs, static_cast<std::size_t>(D[l]), limits, "inner") + 1, limits,
+                            "inner");
+  }
+  return least;
+}
+
+template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options,
                    const Limits& limits) {
   detail::check_composable(outer, inner);
   const int k = inner.dim(), n = outer.dim();
   const std::vector<int> D = composed_degrees(outer, inner);
   for (int l = 0; l < k; ++l) limits.check_degree(D[l], "inner");
-  // Before any work: the result has at least prod_l (segments_l * D_l + 1) control points (C^0
-  // joins; C^-1 joins add one each, counted once the joins are known, before the result is
-  // allocated), and both extractions are bounded.
-  {
-    std::size_t least = 1;
-    for (int l = 0; l < k; ++l) {
-      const std::size_t segs = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l)).size() - 1;
-      least = checked_product(least, checked_product(segs, static_cast<std::size_t>(D[l]), limits, "inner") + 1, limits,
-                              "inner");
-    }
-    bezier_pieces_size(outer, limits);
-    bezier_pieces_size(inner, limits);
-  }
+  // Before any work: the result's least size is within the limit (C^-1 joins add one each,
+  // counted once the joins are known, before the result is allocated), and both extractions are
+  // bounded.
+  compose_least_size(outer, inner, limits);
+  bezier_pieces_size(outer, limits);
+  bezier_pieces_size(inner, limits);
   const auto outer_pieces = extract_bezier(outer, limits);
   const auto inner_pieces = extract_bezier(inner, limits);
   std::vector<std::vector<T>> outer_breaks(n);  // per direction

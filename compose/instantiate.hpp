@@ -8,6 +8,7 @@
   template BSpline<T> compose_bezier(const BSpline<T>&, const BSpline<T>&, CompositionMethod, const Limits&);     \
   template std::vector<T> evaluate_bezier_anywhere(const BSpline<T>&, const std::vector<T>&);                    \
   template BSpline<T> compose(const BSpline<T>&, const BSpline<T>&, const CompositionOptions&, const Limits&);    \
+  template std::size_t compose_least_size(const BSpline<T>&, const BSpline<T>&, const Limits&);                  \
   template Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>&, const BSpline<T>&, CompositionMethod,      \
                                                      const Limits&);                                               \
   template std::vector<T> evaluate_patch(const TrimmedPatch<T>&, const std::vector<T>&);                          \

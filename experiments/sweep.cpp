@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <exception>
 #include <mutex>
+#include <new>
+#include <utility>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -249,7 +251,19 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
       if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
       return;
     }
-    const auto r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
+    Json r;
+    try {
+      r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
+    } catch (const std::exception& e) {
+      // One job's failure (memory, a limit, a bug) does not cost the others their hours: it is
+      // reported now, leaves no output (a rerun retries it) and fails the run at the end.
+      const std::string why = dynamic_cast<const std::bad_alloc*>(&e) ? std::string("out of memory") : std::string(e.what());
+      std::lock_guard<std::mutex> g(lock);
+      ++done;
+      st.failed.emplace_back(job.id, why);
+      if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": FAILED: " << why << "\n";
+      return;
+    }
     std::filesystem::create_directories(out.parent_path());
     write_file_atomically(out.string(), r.dump() + "\n");
     std::lock_guard<std::mutex> g(lock);
@@ -261,6 +275,15 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
                 << eps_text(el) << " s, about " << eps_text(left) << " s left\n";
     }
   });
+  if (!st.failed.empty()) {
+    std::sort(st.failed.begin(), st.failed.end());
+    std::string list;
+    for (std::size_t k = 0; k < st.failed.size() && k < 5; ++k) list += (k ? "; " : "") + st.failed[k].first + " (" + st.failed[k].second + ")";
+    if (st.failed.size() > 5) list += " and " + std::to_string(st.failed.size() - 5) + " more";
+    throw DomainError("jobs", std::to_string(st.failed.size()) + " of " + std::to_string(st.in_shard) + " jobs of shard " +
+                                  std::to_string(shard) + "/" + std::to_string(shards) + " failed (the others finished): " + list,
+                      "mend the cause (e.g. fewer --threads for memory) and run sweep run again: finished jobs are skipped");
+  }
   return st;
 }
 

@@ -50,9 +50,12 @@ nlohmann::json sweep_run_job(const SweepJob& job);
 /// Runs the jobs of shard `shard` of `shards` (job k when k % shards == shard) into dir, skipping
 /// jobs whose output exists (resumption), on `threads` threads of this process (each job is
 /// deterministic and MPFR's precision is per thread, so the outputs do not depend on the threads);
-/// progress on stderr. Returns the counts.
+/// progress on stderr. Returns the counts. A job that throws is reported on stderr at once and
+/// leaves no output; the others go on, and the run then throws DomainError naming the failed jobs
+/// (a rerun retries only them).
 struct SweepRunStats {
   std::size_t run = 0, skipped = 0, in_shard = 0;
+  std::vector<std::pair<std::string, std::string>> failed;  // job id, why
 };
 SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& dir, std::size_t shard, std::size_t shards, bool progress = true,
                         std::size_t threads = 1);

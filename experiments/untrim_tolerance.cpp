@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <mutex>
 #include <sstream>
 
 #include "exact/rational.hpp"
@@ -16,6 +17,7 @@
 #include "float/mpfr.hpp"
 #include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
+#include "spline/parallel.hpp"
 #include "untrim/algorithm2.hpp"
 #include "untrim/polygon.hpp"
 
@@ -139,7 +141,8 @@ Row measure(const BSpline<Rational>& T, const BSpline<Rational>& S, double eps, 
   to.eps = eps;
   to.grid = 8;
   Limits lim;
-  lim.max_control_points = opt.max_control_points;
+  lim.max_control_points = opt.max_control_points;        // no tile alone above the sum's limit
+  lim.max_total_control_points = opt.max_control_points;  // summed over the tiles, before composing
   const double c0 = thread_cpu_seconds();
   TensorComposition<A> C;
   try {
@@ -215,8 +218,10 @@ UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir)
   UntrimToleranceOptions o;
   o.out_dir = out_dir;
   o.eps = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
-  o.runs = {{0, 1e-12, 4}, {53, 1e-6, 4}, {113, 1e-7, 4}, {256, 1e-7, 4}};
-  o.max_control_points = 50'000'000;
+  // Double down to 1e-12 (130M control points, about 25 min a job); MPFR down to 1e-11 (33M, about
+  // 20 min a job at 53 bits): at 1e-12 an MPFR job takes over an hour and 9 GiB or more.
+  o.runs = {{0, 1e-12, 4}, {53, 1e-11, 4}, {113, 1e-11, 4}, {256, 1e-11, 4}};
+  o.max_control_points = 150'000'000;
   return o;
 }
 
@@ -267,18 +272,28 @@ UntrimToleranceOptions untrim_tolerance_options_from_json(const nlohmann::json& 
 }
 
 std::string run_untrim_tolerance(const UntrimToleranceOptions& opt, const std::function<void(const std::string&)>& progress,
-                                 bool& ok) {
-  std::vector<nlohmann::json> rows;
-  for (const auto& c : untrim_tolerance_cases(opt)) {
-    progress("untrimming tolerance: m = " + std::to_string(c.m) + ", " + (c.bits == 0 ? std::string("double") : "mpfr:" + std::to_string(c.bits)) +
-             ", eps " + g(c.eps));
-    rows.push_back(untrim_tolerance_case(c, opt));
-    const Row r = row_from_json(rows.back());
-    // Long sweeps: every finished row is on disk at once (the final CSV replaces this file).
+                                 bool& ok, std::size_t threads) {
+  const auto cases = untrim_tolerance_cases(opt);
+  std::vector<nlohmann::json> rows(cases.size());
+  std::mutex lock;  // the progress callback and the partial file
+  // Each case is deterministic and MPFR's precision is per thread: the rows do not depend on the
+  // threads; they are merged in the cases' order.
+  parallel_for(cases.size(), threads == 0 ? hardware_threads() : threads, [&](std::size_t k) {
+    const auto& c = cases[k];
+    {
+      std::lock_guard<std::mutex> hold(lock);
+      progress("untrimming tolerance: m = " + std::to_string(c.m) + ", " +
+               (c.bits == 0 ? std::string("double") : "mpfr:" + std::to_string(c.bits)) + ", eps " + g(c.eps));
+    }
+    rows[k] = untrim_tolerance_case(c, opt);
+    const Row r = row_from_json(rows[k]);
+    // Long sweeps: every finished row is on disk at once, in the order rows finish (the final CSV
+    // replaces this file).
+    std::lock_guard<std::mutex> hold(lock);
     std::ofstream partial(opt.out_dir + "/untrim_tolerance.partial.csv", std::ios::app);
     partial << std::setprecision(17) << r.m << "," << r.arith << "," << r.eps << "," << r.control_points << "," << r.cpu_seconds << ","
             << to_double(r.deviation) << "," << to_double(r.gap) << "," << to_double(r.overlap) << "," << r.skipped << "\n";
-  }
+  });
   return untrim_tolerance_merge(rows, opt, ok);
 }
 
@@ -421,7 +436,8 @@ void untrim_tolerance_section(ReportContext& ctx) {
   UntrimToleranceOptions options;
   options.out_dir = ctx.options.out_dir;
   if (ctx.options.full) options = full_untrim_tolerance_options(ctx.options.out_dir);
-  ctx.markdown["untrim-tolerance"] = run_untrim_tolerance(options, ctx.progress, ctx.ok);
+  // The section's cases on the report's threads (the full sweep is hours of independent cases).
+  ctx.markdown["untrim-tolerance"] = run_untrim_tolerance(options, ctx.progress, ctx.ok, ctx.options.jobs);
 }
 
 }  // namespace splinex

@@ -35,7 +35,7 @@ struct UntrimToleranceOptions {
   std::vector<double> eps{1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
   std::vector<UntrimRun> runs{{0, 1e-6, 4}, {113, 1e-5, 1}};
   std::size_t max_boundary_samples = 400;  // per tile chain (every k-th vertex/midpoint beyond it)
-  std::size_t max_control_points = 20'000'000;  // per tile; larger cases are recorded as skipped
+  std::size_t max_control_points = 20'000'000;  // summed over a case's tiles (checked before composing); larger cases are recorded as skipped
 };
 
 UntrimToleranceOptions full_untrim_tolerance_options(const std::string& out_dir);
@@ -66,7 +66,9 @@ UntrimToleranceOptions untrim_tolerance_options_from_json(const nlohmann::json& 
 /// untrim_tolerance.md into out_dir; returns the Markdown section. ok is false when the slope fitted
 /// at the highest precision misses p - m + 1 (0 for m = p + 1) by more than 0.3, or a gap or
 /// overlap of positive area appears.
+/// The cases run on `threads` threads (0: every core); the files do not depend on it (times aside).
 std::string run_untrim_tolerance(const UntrimToleranceOptions& options,
-                                 const std::function<void(const std::string&)>& progress, bool& ok);
+                                 const std::function<void(const std::string&)>& progress, bool& ok,
+                                 std::size_t threads = 1);
 
 }  // namespace splinex

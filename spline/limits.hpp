@@ -10,6 +10,9 @@ namespace splinex {
 struct Limits {
   std::size_t max_control_points = 10'000'000;  // per spline, all directions multiplied
   int max_degree = 100;                         // per direction
+  /// Summed over the splines one operation returns (untrimming: every tile's net), so that many
+  /// splines each under max_control_points cannot together exhaust memory.
+  std::size_t max_total_control_points = 50'000'000;
 
   void check_count(std::size_t count, const std::string& what) const {
     if (count > max_control_points)
@@ -18,6 +21,14 @@ struct Limits {
                                " control points, above the limit of " +
                                std::to_string(max_control_points),
                            "ask for less, or raise the limit with --max-control-points");
+  }
+  void check_total(std::size_t count, const std::string& what) const {
+    if (count > max_total_control_points)
+      throw SizeLimitError(what,
+                           "the results would have at least " + std::to_string(count) +
+                               " control points together, above the limit of " +
+                               std::to_string(max_total_control_points),
+                           "ask for less (e.g. a larger tolerance), or raise the limit with --max-total-control-points");
   }
   void check_degree(long degree, const std::string& what) const {
     if (degree > max_degree)

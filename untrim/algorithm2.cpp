@@ -156,15 +156,27 @@ TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& i
       TensorTile<T> tt;
       tt.patch = static_cast<std::size_t>(tile.label);
       tt.Q = tile_spline(tile);
-      CompositionOptions co;
-      co.method = options.trimmed.method;
-      co.expand = true;
-      // The patch is polynomial (homogeneous if rational): compose its Bezier form with Q.
-      tt.R = {compose(C.patches[tt.patch].patch.net, tt.Q, co, limits), C.patches[tt.patch].patch.weighted};
       tt.area = tile_area(tile);
       tt.tile = std::move(tile);
       R.tiles.push_back(std::move(tt));
     }
+  }
+  // Every tile is known: before composing any, the tiles' nets together must fit the limit.
+  const std::string what = R.curved_boundaries > 0 ? "eps" : "inner";  // what makes the tiles many
+  std::size_t least = 0;
+  for (const auto& tt : R.tiles) {
+    least += compose_least_size(C.patches[tt.patch].patch.net, tt.Q, limits);
+    limits.check_total(least, what);
+  }
+  CompositionOptions co;
+  co.method = options.trimmed.method;
+  co.expand = true;
+  std::size_t total = 0;
+  for (auto& tt : R.tiles) {
+    // The patch is polynomial (homogeneous if rational): compose its Bezier form with Q.
+    tt.R = {compose(C.patches[tt.patch].patch.net, tt.Q, co, limits), C.patches[tt.patch].patch.weighted};
+    total += tt.R.net.size();
+    limits.check_total(total, what);
   }
   return R;
 }

@@ -59,6 +59,9 @@ struct TensorComposition {
   std::vector<T> evaluate_tile(std::size_t k, const std::vector<T>& xl) const;
 };
 
+/// Size: every tile's net within limits.max_control_points, and all of them together within
+/// limits.max_total_control_points, checked on their least sizes once the tiles are known, before
+/// any is composed (SizeLimitError naming eps when polylines made the tiles).
 template <class T>
 TensorComposition<T> compose_tensor(const BSpline<T>& outer, const BSpline<T>& inner, const TensorOptions& options = {},
                                     const Limits& limits = {});

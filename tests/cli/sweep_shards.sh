@@ -3,7 +3,8 @@
 # (xargs -P) and on 2 threads of one process, merged;
 # each merge must equal the single-process run (the report's code path) byte for byte, timings
 # aside (the CSV's cpu_seconds column and the seconds in the Markdown's cost line). Then resumption
-# (a second run skips every job) and a missing job (the merge names it, exit 2).
+# (a second run skips every job), a missing job (the merge names it, exit 2) and a failing job (the
+# others finish; a rerun retries it).
 set -eu
 CLI=$1
 W=$2
@@ -56,4 +57,22 @@ rc=$?
 set -e
 test $rc -eq 2
 grep -q "^splinex: error: jobs: 1 of 15 jobs have no output in .*: m2-double-eps0.001" "$W/missing.txt"
-echo "sweep: 1, 2 and 3 shards and 2 threads merged identical to the single run (timings aside); resumption and a missing job checked"
+# a failing job does not stop the others: it is named on stderr at once and at the end (exit 2),
+# leaves no output, and a rerun of the plan retries only it
+sed 's/"params":{"bits":0,"eps":0.01,"m":2}/"params":{"bits":0,"eps":0.01,"m":9}/' "$W/jobs.jsonl" > "$W/bad.jsonl"
+test "$(cmp "$W/jobs.jsonl" "$W/bad.jsonl" | wc -l)" -eq 1
+set +e
+$CLI sweep run --jobs "$W/bad.jsonl" --threads 2 --dir "$W/failing" > /dev/null 2> "$W/failing.txt"
+rc=$?
+set -e
+test $rc -eq 2
+grep -q '^\[sweep\] [0-9]*/15 m2-double-eps0.01: FAILED: ' "$W/failing.txt"
+grep -q "^splinex: error: jobs: 1 of 15 jobs of shard 0/1 failed (the others finished): m2-double-eps0.01 (" "$W/failing.txt"
+test "$(ls "$W/failing/untrim-tolerance" | wc -l)" -eq 14
+$CLI sweep run --jobs "$W/jobs.jsonl" --dir "$W/failing" --quiet | grep -q '"run":1,"shard":"0/1","skipped":14'
+rc=0
+$CLI sweep merge --jobs "$W/jobs.jsonl" "$W/failing" --out "$W/merged_failing" > /dev/null || rc=$?
+test $rc -eq $rc_single
+untimed "$W/merged_failing" > "$W/merged_failing.txt"
+cmp "$W/single.txt" "$W/merged_failing.txt"
+echo "sweep: 1, 2 and 3 shards and 2 threads merged identical to the single run (timings aside); resumption, a missing and a failing job checked"

@@ -163,6 +163,43 @@ TEST_CASE("Algorithm 2: curved trimming needs a tolerance, with polylines the er
   CHECK(worst < Rational(1, 1000));  // T is C^1 / C^0 at the crossed knots; within eps the error is tiny
 }
 
+TEST_CASE("Algorithm 2: the tiles' nets together are within max_total_control_points, checked before composing") {
+  const auto T = outer_surface();
+  const auto S = bezier_from<Rational>({2, 1}, 2, [](const std::vector<std::size_t>& ij) {
+    const long i = static_cast<long>(ij[0]), j = static_cast<long>(ij[1]);
+    return std::vector<Rational>{Rational(1, 10) + Rational(2, 5) * i + (i == 1 ? Rational(1, 10) : Rational(0)) + Rational(j, 10),
+                                 Rational(1, 10) + Rational(7, 10) * j + Rational(i, 20)};
+  });
+  TensorOptions o;
+  o.boundary = TrimBoundary::polyline;
+  o.eps = 1e-3;
+  o.grid = 4;
+  const auto A = compose_tensor(T, S, o);
+  REQUIRE(A.tiles.size() > 1);
+  std::size_t total = 0, least = 0, largest = 0;
+  for (const auto& t : A.tiles) {
+    total += t.R.net.size();
+    largest = std::max(largest, t.R.net.size());
+    least += compose_least_size(A.trimmed.patches[t.patch].patch.net, t.Q);
+  }
+  // Each tile is one polynomial patch composed with a C^0 Coons tile: no join may jump, so the
+  // bound before the work is the exact size.
+  CHECK(least == total);
+  Limits at;
+  at.max_total_control_points = total;
+  CHECK(compose_tensor(T, S, o, at).tiles.size() == A.tiles.size());
+  Limits below = at;
+  below.max_total_control_points = total - 1;
+  below.max_control_points = largest;  // every tile alone fits: only the sum is refused
+  try {
+    compose_tensor(T, S, o, below);
+    FAIL("no SizeLimitError");
+  } catch (const SizeLimitError& e) {
+    CHECK(e.field() == "eps");
+    CHECK(std::string(e.what()).find(std::to_string(total)) != std::string::npos);  // the bound reached: all tiles
+  }
+}
+
 namespace {
 TrimmedDomain holed_domain() {
   // A quadrilateral with a triangular hole in [0, 2] x [0, 1] (the hole touches no edge).
