@@ -32,9 +32,10 @@ Commands add_sweep(CLI::App& app) {
   auto po = std::make_shared<SweepPlanOptions>();
   auto pname = std::make_shared<std::string>();
   auto* pl = sw->add_subcommand("plan", "write the sweep's jobs, one JSON line each (the command and the output file), to stdout");
-  pl->add_option("name", *pname, "the sweep: untrim-tolerance or proofs")->required();
+  pl->add_option("name", *pname, "the sweep: untrim-tolerance, proofs or report")->required();
   pl->add_option("--cases", po->cases, "proofs: random exact cases per proof (default 200)");
   pl->add_flag("--full", po->full, "the long sweep (report --full's options)");
+  pl->add_option("--sections", po->sections, "report: comma-separated sections (default: all), one job each");
   pl->add_option("--eps", po->eps, "untrim-tolerance: comma-separated tolerances instead of the defaults");
   pl->add_option("--runs", po->runs, "untrim-tolerance: comma-separated bits:min_eps:max_m (bits 0: double) instead of the defaults");
 
@@ -65,11 +66,12 @@ Commands add_sweep(CLI::App& app) {
   auto sname = std::make_shared<std::string>();
   auto sout = std::make_shared<std::string>();
   auto* sg = sw->add_subcommand("single", "the sweep in one process, as the report runs it (the reference for the merge)");
-  sg->add_option("name", *sname, "the sweep: untrim-tolerance or proofs")->required();
+  sg->add_option("name", *sname, "the sweep: untrim-tolerance, proofs or report")->required();
   sg->add_option("--cases", so->cases, "as for plan");
   sg->add_flag("--full", so->full, "the long sweep");
   sg->add_option("--eps", so->eps, "as for plan");
   sg->add_option("--runs", so->runs, "as for plan");
+  sg->add_option("--sections", so->sections, "as for plan");
   sg->add_option("--out", *sout, "folder for the files")->required();
 
   return {{pl, [po, pname](const Context&) {

@@ -326,7 +326,9 @@ void crosscheck_section(ReportContext& ctx) {
   }
   md << "\n## Time (whole suite, wall clock; Google Benchmark in `bench/` for real timings)\n\n| arith | exact s | float s | exact/float |\n|---|---|---|---|\n";
   for (auto [a, t] : tsum) md << "| " << a << " | " << fmt(t.first) << " | " << fmt(t.second) << " | " << fmt1(t.first / t.second) << " |\n";
-  md << "\nRaw data: `crosscheck.csv`, `crosscheck.json`. Regenerate with `build/bin/splinex report --out " << opt.out_dir << "`.\n";
+  // No folder in the text: the same words wherever the report (or a sweep job of it) was written.
+  md << "\nRaw data: `crosscheck.csv`, `crosscheck.json` in this folder. Regenerate with "
+        "`build/bin/splinex report --sections crosscheck --out DIR`.\n";
   ctx.markdown["crosscheck.tables"] = md.str();
 }
 

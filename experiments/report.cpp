@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "experiments/common.hpp"
@@ -78,16 +79,11 @@ const char* const kDocument[] = {
     "hybrid",           "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve", "cut", "cut3", "peers",            "crosscheck.tables",
 };
 
-}  // namespace
-
-std::vector<std::string> report_section_names() { return {std::begin(kSectionNames), std::end(kSectionNames)}; }
-
-int run_report(const ReportOptions& opt) {
-  namespace fs = std::filesystem;
-  using clock = std::chrono::steady_clock;
-  const auto t_start = clock::now();
-  std::vector<char> chosen(std::size(kSections), opt.sections.empty() ? 1 : 0);
-  for (const auto& name : opt.sections) {
+// Which sections run (every one when none is named); typed errors for unknown names and for
+// composition-orders without crosscheck.
+std::vector<char> chosen_sections(const std::vector<std::string>& sections) {
+  std::vector<char> chosen(std::size(kSections), sections.empty() ? 1 : 0);
+  for (const auto& name : sections) {
     const auto it = std::find(std::begin(kSectionNames), std::end(kSectionNames), name);
     if (it == std::end(kSectionNames)) {
       std::string all;
@@ -98,6 +94,80 @@ int run_report(const ReportOptions& opt) {
   }
   if (chosen[1] && !chosen[0])
     throw UsageError("sections", "composition-orders draws from the crosscheck suite's seeded stream", "give crosscheck with it");
+  return chosen;
+}
+
+// The tasks: every chosen section alone, but crosscheck and composition-orders together (one
+// seeded stream, in this order). Longest first where known, so that cores finish together.
+std::vector<std::vector<std::size_t>> report_task_list(const std::vector<char>& chosen) {
+  std::vector<std::vector<std::size_t>> tasks;
+  for (std::size_t k = 0; k < std::size(kSections); ++k)
+    if (chosen[k]) {
+      if (k == 1 && chosen[0]) tasks.front().push_back(k);
+      else tasks.push_back({k});
+    }
+  std::stable_sort(tasks.begin(), tasks.end(), [](const auto& a, const auto& b) { return section_weight(a.front()) > section_weight(b.front()); });
+  return tasks;
+}
+
+// Runs one task's sections in a context of its own.
+void run_task(const std::vector<std::size_t>& task, ReportContext& ctx) {
+  for (std::size_t k : task) {
+    const auto s0 = std::chrono::steady_clock::now();
+    kSections[k](ctx);
+    ctx.progress(std::string("section ") + kSectionNames[k] + " finished in " +
+                 fmt(std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count(), 4) + " s");
+  }
+}
+
+// Adds a task's context into the whole run's (the sections write distinct parts).
+void absorb(ReportContext& into, ReportContext& c) {
+  for (auto& [part, text] : c.markdown) into.markdown[part] = std::move(text);
+  into.ok = into.ok && c.ok;
+  into.crosschecks += c.crosschecks;
+  into.float_structures_match = into.float_structures_match && c.float_structures_match;
+  into.proofs_as_expected = into.proofs_as_expected && c.proofs_as_expected;
+}
+
+// report.md from the parts in reading order, and the manifest marked complete; the exit status.
+int write_report(const ReportOptions& opt, ReportContext& ctx) {
+  namespace fs = std::filesystem;
+  const std::string manifest = opt.out_dir + "/MANIFEST.json";
+  ctx.progress("writing " + opt.out_dir);
+  std::string md;
+  for (const char* part : kDocument)
+    if (opt.sections.empty() || ctx.markdown.count(part)) md += ctx.markdown.at(part);
+  write_file_atomically(opt.out_dir + "/report.md", md);
+  {
+    std::ostringstream mf;
+    mf << "{\"status\": \"complete\", \"files\": [";
+    bool first = true;
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(opt.out_dir))
+      if (e.is_regular_file() && e.path().filename() != "MANIFEST.json") names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    for (const auto& n : names) {
+      mf << (first ? "" : ", ") << "\"" << n << "\"";
+      first = false;
+    }
+    mf << "]}\n";
+    write_file_atomically(manifest, mf.str());
+  }
+  ctx.progress(std::string("done: ") + std::to_string(ctx.crosschecks) + " crosschecks, proofs " +
+               (ctx.proofs_as_expected ? "all verdicts as expected" : "UNEXPECTED VERDICT") +
+               (ctx.float_structures_match ? "" : ", some float runs differ in structure (see report.md)"));
+  return ctx.ok ? 0 : 1;
+}
+
+}  // namespace
+
+std::vector<std::string> report_section_names() { return {std::begin(kSectionNames), std::end(kSectionNames)}; }
+
+int run_report(const ReportOptions& opt) {
+  namespace fs = std::filesystem;
+  using clock = std::chrono::steady_clock;
+  const auto t_start = clock::now();
+  const auto chosen = chosen_sections(opt.sections);
   // The peers' folder is checked before minutes of work, not after.
   if (!opt.peers_dir.empty()) {
     if (!fs::is_directory(opt.peers_dir))
@@ -125,61 +195,72 @@ int run_report(const ReportOptions& opt) {
     std::cerr << "[report " << std::fixed << std::setprecision(1) << std::chrono::duration<double>(clock::now() - t_start).count()
               << "s] " << s << std::endl;
   };
-  // The tasks: every chosen section alone, but crosscheck and composition-orders together (one
-  // seeded stream, in this order). Longest first where known, so two cores finish together.
-  std::vector<std::vector<std::size_t>> tasks;
-  for (std::size_t k = 0; k < std::size(kSections); ++k)
-    if (chosen[k]) {
-      if (k == 1 && chosen[0]) tasks.front().push_back(k);
-      else tasks.push_back({k});
-    }
-  std::stable_sort(tasks.begin(), tasks.end(), [](const auto& a, const auto& b) { return section_weight(a.front()) > section_weight(b.front()); });
+  const auto tasks = report_task_list(chosen);
   std::vector<std::unique_ptr<ReportContext>> contexts(tasks.size());
   const std::size_t threads = opt.jobs > 0 ? opt.jobs : hardware_threads();
   if (threads > 1) progress("sections on " + std::to_string(std::min(threads, tasks.size())) + " threads");
   parallel_for(tasks.size(), threads, [&](std::size_t t) {
     contexts[t] = std::make_unique<ReportContext>(opt, progress);
-    for (std::size_t k : tasks[t]) {
-      const auto s0 = clock::now();
-      kSections[k](*contexts[t]);
-      progress(std::string("section ") + kSectionNames[k] + " finished in " +
-               fmt(std::chrono::duration<double>(clock::now() - s0).count(), 4) + " s");
-    }
+    run_task(tasks[t], *contexts[t]);
   });
   // One context as if the sections had run in one thread, in their order.
   ReportContext ctx{opt, progress};
-  for (auto& c : contexts) {
-    for (auto& [part, text] : c->markdown) ctx.markdown[part] = std::move(text);
-    ctx.ok = ctx.ok && c->ok;
-    ctx.crosschecks += c->crosschecks;
-    ctx.float_structures_match = ctx.float_structures_match && c->float_structures_match;
-    ctx.proofs_as_expected = ctx.proofs_as_expected && c->proofs_as_expected;
-  }
-
-  ctx.progress("writing " + opt.out_dir);
-  std::string md;
-  for (const char* part : kDocument)
-    if (opt.sections.empty() || ctx.markdown.count(part)) md += ctx.markdown.at(part);
-  write_file_atomically(opt.out_dir + "/report.md", md);
-  {
-    std::ostringstream mf;
-    mf << "{\"status\": \"complete\", \"files\": [";
-    bool first = true;
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(opt.out_dir))
-      if (e.is_regular_file() && e.path().filename() != "MANIFEST.json") names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    for (const auto& n : names) {
-      mf << (first ? "" : ", ") << "\"" << n << "\"";
-      first = false;
-    }
-    mf << "]}\n";
-    write_file_atomically(manifest, mf.str());
-  }
-  ctx.progress(std::string("done: ") + std::to_string(ctx.crosschecks) + " crosschecks, proofs " +
-               (ctx.proofs_as_expected ? "all verdicts as expected" : "UNEXPECTED VERDICT") +
-               (ctx.float_structures_match ? "" : ", some float runs differ in structure (see report.md)"));
-  return ctx.ok ? 0 : 1;
+  for (auto& c : contexts) absorb(ctx, *c);
+  return write_report(opt, ctx);
 }
 
+std::vector<std::vector<std::string>> report_tasks(const std::vector<std::string>& sections) {
+  std::vector<std::vector<std::string>> out;
+  for (const auto& t : report_task_list(chosen_sections(sections))) {
+    out.emplace_back();
+    for (std::size_t k : t) out.back().push_back(kSectionNames[k]);
+  }
+  return out;
+}
+
+nlohmann::json run_report_task(const ReportOptions& opt, const std::vector<std::string>& task,
+                               const std::function<void(const std::string&)>& progress) {
+  const auto tasks = report_tasks(task);
+  if (tasks.size() != 1 || tasks.front() != task)
+    throw UsageError("sections", "are not one task of the report (a section alone, or crosscheck with composition-orders)",
+                     "give the sections of one line of sweep plan report");
+  std::filesystem::create_directories(opt.out_dir);
+  ReportContext ctx{opt, progress};
+  run_task(report_task_list(chosen_sections(task)).front(), ctx);
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(opt.out_dir))
+    if (e.is_regular_file()) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  return {{"markdown", ctx.markdown}, {"ok", ctx.ok}, {"crosschecks", ctx.crosschecks},
+          {"float_structures_match", ctx.float_structures_match}, {"proofs_as_expected", ctx.proofs_as_expected},
+          {"files", files}};
+}
+
+int merge_report_tasks(const ReportOptions& opt, const std::vector<nlohmann::json>& results,
+                       const std::vector<std::string>& task_dirs, const std::function<void(const std::string&)>& progress) {
+  namespace fs = std::filesystem;
+  fs::create_directories(opt.out_dir);
+  ReportContext ctx{opt, progress};
+  std::set<std::string> seen;
+  for (std::size_t t = 0; t < results.size(); ++t) {
+    const auto& r = results[t];
+    for (const auto& f : r.at("files")) {
+      const std::string name = f.get<std::string>();
+      if (!seen.insert(name).second)
+        throw DomainError("jobs", "two tasks wrote " + name, "give the jobs of one sweep plan report");
+      const fs::path from = fs::path(task_dirs[t]) / name;
+      if (!fs::is_regular_file(from))
+        throw DomainError("jobs", from.string() + " is missing (its task's result names it)", "run that task again: delete its .json and rerun sweep run");
+      fs::copy_file(from, fs::path(opt.out_dir) / name, fs::copy_options::overwrite_existing);
+    }
+    ReportContext c{opt, progress};
+    c.markdown = r.at("markdown").get<std::map<std::string, std::string>>();
+    c.ok = r.at("ok").get<bool>();
+    c.crosschecks = r.at("crosschecks").get<std::size_t>();
+    c.float_structures_match = r.at("float_structures_match").get<bool>();
+    c.proofs_as_expected = r.at("proofs_as_expected").get<bool>();
+    absorb(ctx, c);
+  }
+  return write_report(opt, ctx);
+}
 }  // namespace splinex

@@ -2,8 +2,11 @@
 // JSON and SVG figures.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace splinex {
 
@@ -28,5 +31,19 @@ std::vector<std::string> report_section_names();
 
 /// Returns the process exit status (0 when every proof held and every run finished).
 int run_report(const ReportOptions& options);
+
+/// The report as independent tasks (the `report` sweep, issue 21): every chosen section alone,
+/// crosscheck with composition-orders (one seeded stream), longest first. Empty: all sections.
+std::vector<std::vector<std::string>> report_tasks(const std::vector<std::string>& sections);
+
+/// One task's sections run into options.out_dir (a folder of its own); the result names its
+/// markdown parts, its checks and the files it wrote.
+nlohmann::json run_report_task(const ReportOptions& options, const std::vector<std::string>& task,
+                               const std::function<void(const std::string&)>& progress);
+
+/// The tasks' results (their files in task_dirs) merged into options.out_dir: the files copied,
+/// report.md and MANIFEST.json written as run_report writes them. Returns the exit status.
+int merge_report_tasks(const ReportOptions& options, const std::vector<nlohmann::json>& results,
+                       const std::vector<std::string>& task_dirs, const std::function<void(const std::string&)>& progress);
 
 }  // namespace splinex

@@ -12,9 +12,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
+#include "experiments/report.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/untrim_tolerance.hpp"
 #include "proofs/suite.hpp"
@@ -80,6 +82,22 @@ UntrimToleranceOptions untrim_options(const SweepPlanOptions& o) {
   return u;
 }
 
+// The report sweep's sections: the named ones (comma-separated), or every section.
+std::vector<std::string> report_sections(const SweepPlanOptions& o) {
+  if (o.sections.empty()) return report_section_names();
+  const auto names = split(o.sections, ',');
+  report_tasks(names);  // unknown names and composition-orders alone are typed errors
+  std::vector<std::string> ordered;  // in the report's order, each once
+  for (const auto& n : report_section_names())
+    if (std::find(names.begin(), names.end(), n) != names.end()) ordered.push_back(n);
+  return ordered;
+}
+
+// The folder a report task writes its files into, beside its result.
+std::string report_task_dir(const SweepJob& job, const std::string& dir) {
+  return (std::filesystem::path(dir) / "report" / job.id).string();
+}
+
 std::size_t proof_cases(const SweepPlanOptions& o) {
   const long n = o.cases == 0 ? 200 : o.cases;
   if (n < 1 || n > 100000) throw UsageError("cases", std::to_string(n) + " is outside [1, 100000]", "give --cases N with 1 <= N <= 100000");
@@ -104,6 +122,7 @@ std::string merge_proofs(const std::vector<Json>& rows, std::size_t cases, const
 }
 
 void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
+  if (!o.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
   if (o.full || !o.eps.empty() || !o.runs.empty())
     throw UsageError("sweep", "--full, --eps and --runs are options of untrim-tolerance, not of " + name, "give --cases for proofs");
 }
@@ -126,7 +145,7 @@ Json read_result(const SweepJob& job, const std::filesystem::path& p) {
 
 }  // namespace
 
-std::vector<std::string> sweep_names() { return {"untrim-tolerance", "proofs"}; }
+std::vector<std::string> sweep_names() { return {"untrim-tolerance", "proofs", "report"}; }
 
 std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options) {
   const auto names = sweep_names();
@@ -147,6 +166,23 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     }
     return jobs;
   }
+  if (name == "report") {
+    if (options.cases != 0 || !options.eps.empty() || !options.runs.empty())
+      throw UsageError("sweep", "--cases, --eps and --runs are not options of report", "give --full and --sections");
+    const auto sections = report_sections(options);
+    std::vector<SweepJob> jobs;
+    for (const auto& task : report_tasks(sections)) {
+      SweepJob j;
+      j.sweep = name;
+      for (const auto& t : task) j.id += (j.id.empty() ? "" : "+") + t;
+      j.params = {{"sections", task}};
+      j.plan = {{"full", options.full}, {"sections", sections}};
+      j.output = name + "/" + j.id + ".json";
+      jobs.push_back(std::move(j));
+    }
+    return jobs;
+  }
+  if (!options.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
   if (options.cases != 0) throw UsageError("cases", "is an option of proofs, not of " + name, "give --eps and --runs for untrim-tolerance");
   const auto u = untrim_options(options);
   const Json plan = untrim_tolerance_options_json(u);
@@ -215,7 +251,20 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
   return jobs;
 }
 
-Json sweep_run_job(const SweepJob& job) {
+Json sweep_run_job(const SweepJob& job, const std::string& dir, const std::function<void(const std::string&)>& progress) {
+  if (job.sweep == "report") {
+    ReportOptions o;
+    o.out_dir = report_task_dir(job, dir);
+    o.full = job.plan.at("full").get<bool>();
+    o.sections = job.plan.at("sections").get<std::vector<std::string>>();
+    o.jobs = 1;  // one job, one core: the engines run jobs side by side
+    const auto task = job.params.at("sections").get<std::vector<std::string>>();
+    std::filesystem::remove_all(o.out_dir);  // the files of an interrupted attempt
+    const auto r = run_report_task(o, task, [&](const std::string& s) {
+      if (progress) progress("[" + job.id + "] " + s);
+    });
+    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", r}};
+  }
   if (job.sweep == "proofs") {
     const auto name = job.params.at("name").get<std::string>();
     const auto cases = job.plan.at("cases").get<std::size_t>();
@@ -241,6 +290,11 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
   const auto t0 = std::chrono::steady_clock::now();
   std::mutex lock;  // st and the progress lines
   std::size_t done = 0;
+  const std::function<void(const std::string&)> job_progress = [&](const std::string& line) {
+    if (!progress) return;
+    std::lock_guard<std::mutex> g(lock);
+    std::cerr << line << "\n";
+  };
   parallel_for(mine.size(), threads, [&](std::size_t slot) {
     const auto& job = jobs[mine[slot]];
     const std::filesystem::path out = std::filesystem::path(dir) / job.output;
@@ -253,7 +307,7 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
     }
     Json r;
     try {
-      r = sweep_run_job(job);  // deterministic: the same result on any thread, process or machine
+      r = sweep_run_job(job, dir, job_progress);  // deterministic: the same result on any thread, process or machine
     } catch (const std::exception& e) {
       // One job's failure (memory, a limit, a bug) does not cost the others their hours: it is
       // reported now, leaves no output (a rerun retries it) and fails the run at the end.
@@ -306,6 +360,17 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
                       "run sweep run for their shards (finished jobs are skipped)");
   }
   std::filesystem::create_directories(out_dir);
+  if (jobs.front().sweep == "report") {
+    ReportOptions o;
+    o.out_dir = out_dir;
+    o.full = jobs.front().plan.at("full").get<bool>();
+    o.sections = jobs.front().plan.at("sections").get<std::vector<std::string>>();
+    std::vector<std::string> dirs;
+    for (const auto& job : jobs) dirs.push_back(report_task_dir(job, dir));
+    ok = merge_report_tasks(o, rows, dirs, [](const std::string& s) { std::cerr << "[sweep merge] " << s << "\n"; }) == 0;
+    std::ifstream in(out_dir + "/report.md");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
   if (jobs.front().sweep == "proofs") return merge_proofs(rows, jobs.front().plan.at("cases").get<std::size_t>(), out_dir, ok);
   auto u = untrim_tolerance_options_from_json(jobs.front().plan);
   u.out_dir = out_dir;
@@ -315,6 +380,16 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
 std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
                          const std::function<void(const std::string&)>& progress) {
   sweep_plan(name, options);  // the name's and the options' errors
+  if (name == "report") {
+    ReportOptions o;
+    o.out_dir = out_dir;
+    o.full = options.full;
+    o.sections = report_sections(options);
+    o.jobs = 1;
+    ok = run_report(o) == 0;
+    std::ifstream in(out_dir + "/report.md");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
   if (name == "proofs") {
     const std::size_t cases = proof_cases(options);
     std::vector<Json> rows;

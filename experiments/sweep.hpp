@@ -6,8 +6,11 @@
 // produces the same CSV, figures and Markdown as the single-process run (the report's section),
 // timings aside, whatever the sharding.
 //
-// Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps) and
-// proofs (every named proof of `splinex prove` on N cases, one job per proof).
+// Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps),
+// proofs (every named proof of `splinex prove` on N cases, one job per proof) and report (the
+// report's sections as jobs: the crosscheck suite, the teapot stars, the composition tolerance
+// study and every other section; crosscheck with composition-orders is one job, as they share a
+// seeded stream; the merge writes the folder `splinex report` writes).
 #pragma once
 #include <functional>
 #include <string>
@@ -34,6 +37,7 @@ struct SweepPlanOptions {
   std::string eps;          // comma-separated tolerances, replacing the default list
   std::string runs;         // comma-separated bits:min_eps:max_m (bits 0: double), replacing the default runs
   long cases = 0;           // proofs: random exact cases per proof (0: 200, the long label's)
+  std::string sections;     // report: comma-separated sections (empty: all)
 };
 
 std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions& options);
@@ -44,8 +48,10 @@ SweepJob sweep_job_from_json(const nlohmann::json& j, const std::string& where);
 /// Reads a jobs.jsonl file: every line a job, ids unique, one sweep and one plan for all.
 std::vector<SweepJob> read_sweep_jobs(const std::string& path);
 
-/// Runs one job: its result document (the merge's input).
-nlohmann::json sweep_run_job(const SweepJob& job);
+/// Runs one job: its result document (the merge's input). Jobs that write files (report) write
+/// them under dir/report/ID. progress (may be empty) receives the job's own progress lines.
+nlohmann::json sweep_run_job(const SweepJob& job, const std::string& dir,
+                             const std::function<void(const std::string&)>& progress = {});
 
 /// Runs the jobs of shard `shard` of `shards` (job k when k % shards == shard) into dir, skipping
 /// jobs whose output exists (resumption), on `threads` threads of this process (each job is
