@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -99,9 +100,22 @@ std::string report_task_dir(const SweepJob& job, const std::string& dir) {
 }
 
 std::size_t proof_cases(const SweepPlanOptions& o) {
-  const long n = o.cases == 0 ? 200 : o.cases;
+  const long n = o.cases.value_or(200);
   if (n < 1 || n > 100000) throw UsageError("cases", std::to_string(n) + " is outside [1, 100000]", "give --cases N with 1 <= N <= 100000");
   return static_cast<std::size_t>(n);
+}
+
+std::size_t proof_cases_per_job(const SweepPlanOptions& o) {
+  const long k = o.cases_per_job.value_or(25);
+  if (k < 1 || k > 100000)
+    throw UsageError("cases-per-job", std::to_string(k) + " is outside [1, 100000]", "give --cases-per-job K with 1 <= K <= 100000");
+  return static_cast<std::size_t>(k);
+}
+
+const ProofEntry& proof_entry(const std::string& name) {
+  for (const auto& e : proof_registry())
+    if (e.name == name) return e;
+  throw UsageError("jobs", "'" + name + "' is not a proof of this splinex", "plan the sweep again with this splinex");
 }
 
 // The proofs' merged files: proofs.json (what `splinex prove --json --cases N` prints) and proofs.md.
@@ -125,6 +139,11 @@ void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
   if (!o.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
   if (o.full || !o.eps.empty() || !o.runs.empty())
     throw UsageError("sweep", "--full, --eps and --runs are options of untrim-tolerance, not of " + name, "give --cases for proofs");
+}
+
+void no_proof_options(const SweepPlanOptions& o, const std::string& name) {
+  if (o.cases) throw UsageError("cases", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
+  if (o.cases_per_job) throw UsageError("cases-per-job", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
 }
 
 // An existing output of `job`: its result, after checking that it is this job's under this plan
@@ -157,18 +176,28 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
   if (name == "proofs") {
     no_untrim_options(options, name);
     const std::size_t cases = proof_cases(options);
+    const std::size_t per_job = proof_cases_per_job(options);
     std::vector<SweepJob> jobs;
     for (const auto& e : proof_registry()) {
-      SweepJob j;
-      j.sweep = name, j.id = e.name, j.params = {{"name", e.name}}, j.plan = {{"cases", cases}};
-      j.output = name + "/" + e.name + ".json";
-      jobs.push_back(std::move(j));
+      // ranges [first, first + count) of the proof's cases; one job when they all fit (or the
+      // proof's cases are its own)
+      const std::size_t step = e.fixed_cases ? cases : per_job;
+      for (std::size_t first = 0; first < cases; first += step) {
+        const std::size_t count = std::min(step, cases - first);
+        SweepJob j;
+        j.sweep = name;
+        j.id = count == cases ? e.name : e.name + ".cases" + std::to_string(first) + "-" + std::to_string(first + count - 1);
+        j.params = {{"name", e.name}, {"first", first}, {"count", count}};
+        j.plan = {{"cases", cases}, {"cases_per_job", per_job}};
+        j.output = name + "/" + j.id + ".json";
+        jobs.push_back(std::move(j));
+      }
     }
     return jobs;
   }
   if (name == "report") {
-    if (options.cases != 0 || !options.eps.empty() || !options.runs.empty())
-      throw UsageError("sweep", "--cases, --eps and --runs are not options of report", "give --full and --sections");
+    if (options.cases || options.cases_per_job || !options.eps.empty() || !options.runs.empty())
+      throw UsageError("sweep", "--cases, --cases-per-job, --eps and --runs are not options of report", "give --full and --sections");
     const auto sections = report_sections(options);
     std::vector<SweepJob> jobs;
     for (const auto& task : report_tasks(sections)) {
@@ -183,7 +212,7 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     return jobs;
   }
   if (!options.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
-  if (options.cases != 0) throw UsageError("cases", "is an option of proofs, not of " + name, "give --eps and --runs for untrim-tolerance");
+  no_proof_options(options, name);
   const auto u = untrim_options(options);
   const Json plan = untrim_tolerance_options_json(u);
   std::vector<SweepJob> jobs;
@@ -266,10 +295,9 @@ Json sweep_run_job(const SweepJob& job, const std::string& dir, const std::funct
     return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", r}};
   }
   if (job.sweep == "proofs") {
-    const auto name = job.params.at("name").get<std::string>();
-    const auto cases = job.plan.at("cases").get<std::size_t>();
-    const auto r = run_proofs({name}, cases);
-    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", proof_report_json(r.at(0))}};
+    const auto& e = proof_entry(job.params.at("name").get<std::string>());
+    const auto r = e.run_range(job.params.at("first").get<std::size_t>(), job.params.at("count").get<std::size_t>());
+    return {{"sweep", job.sweep}, {"id", job.id}, {"params", job.params}, {"plan", job.plan}, {"result", proof_range_json(r)}};
   }
   // untrim-tolerance
   const auto u = untrim_tolerance_options_from_json(job.plan);
@@ -371,7 +399,27 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
     std::ifstream in(out_dir + "/report.md");
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
-  if (jobs.front().sweep == "proofs") return merge_proofs(rows, jobs.front().plan.at("cases").get<std::size_t>(), out_dir, ok);
+  if (jobs.front().sweep == "proofs") {
+    // every proof's ranges in case order, merged into its report; the proofs in the registry's
+    // order (as prove --json lists them), whatever the order of the lines in jobs.jsonl
+    std::map<std::string, std::vector<std::pair<std::size_t, ProofReport>>> ranges;
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+      const auto& e = proof_entry(jobs[k].params.at("name").get<std::string>());
+      ranges[e.name].emplace_back(jobs[k].params.at("first").get<std::size_t>(), proof_range_from_json(e, rows[k]));
+    }
+    std::vector<Json> reports;
+    for (const auto& e : proof_registry()) {
+      auto it = ranges.find(e.name);
+      if (it == ranges.end()) continue;
+      std::sort(it->second.begin(), it->second.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      try {
+        reports.push_back(proof_report_json(merge_proof_ranges(e, it->second)));
+      } catch (const std::logic_error& x) {
+        throw DomainError("jobs", x.what(), "plan the sweep again with sweep plan proofs");
+      }
+    }
+    return merge_proofs(reports, jobs.front().plan.at("cases").get<std::size_t>(), out_dir, ok);
+  }
   auto u = untrim_tolerance_options_from_json(jobs.front().plan);
   u.out_dir = out_dir;
   return untrim_tolerance_merge(rows, u, ok);

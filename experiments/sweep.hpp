@@ -7,12 +7,15 @@
 // timings aside, whatever the sharding.
 //
 // Built: untrim-tolerance (the untrimming tolerance sweep: multiplicity x arithmetic x eps),
-// proofs (every named proof of `splinex prove` on N cases, one job per proof) and report (the
+// proofs (every named proof of `splinex prove` on N cases, in ranges of K cases per job: every
+// case draws from a stream of its own, so a range runs alone; teapot-merge, whose cases are its
+// four surfaces, is one job) and report (the
 // report's sections as jobs: the crosscheck suite, the teapot stars, the composition tolerance
 // study and every other section; crosscheck with composition-orders is one job, as they share a
 // seeded stream; the merge writes the folder `splinex report` writes).
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,7 +39,8 @@ struct SweepPlanOptions {
   bool full = false;        // the long sweep (the report's --full)
   std::string eps;          // comma-separated tolerances, replacing the default list
   std::string runs;         // comma-separated bits:min_eps:max_m (bits 0: double), replacing the default runs
-  long cases = 0;           // proofs: random exact cases per proof (0: 200, the long label's)
+  std::optional<long> cases;          // proofs: random exact cases per proof (unset: 200, the long label's)
+  std::optional<long> cases_per_job;  // proofs: cases of one proof per job (unset: 25); ranges of one proof merge exactly
   std::string sections;     // report: comma-separated sections (empty: all)
 };
 

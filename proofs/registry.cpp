@@ -20,7 +20,9 @@ namespace {
 
 // The seed of every proof's random cases (the numbers are historical: the proofs were numbered
 // as they were written). A seed must never change: the counts and verdicts `splinex prove` prints
-// depend on it, and scripts/behaviour_snapshot.py pins them.
+// depend on it, and scripts/behaviour_snapshot.py pins them. Case i of a proof draws from
+// case_stream(seed, i), its own stream, so that a range of cases runs alone (issue 21: the proofs
+// sweep splits a proof's cases into jobs); until then one stream ran through all cases.
 const std::map<std::string, std::uint64_t>& seed_table() {
   static const std::map<std::string, std::uint64_t> seeds{
       {"knot-insertion-boehm", 101},
@@ -52,6 +54,15 @@ const std::map<std::string, std::uint64_t>& seed_table() {
       {"hybrid-salvi-elevation", 143},
   };
   return seeds;
+}
+
+// Case i's generator: the proof's seed and the case number through std::seed_seq, whose
+// algorithm the standard fixes (the same cases on every platform and library).
+std::mt19937_64 case_stream(std::uint64_t seed, std::size_t i) {
+  const std::uint64_t n = i;
+  std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(n),
+                  static_cast<std::uint32_t>(n >> 32)};
+  return std::mt19937_64(s);
 }
 
 PlantedBug& planted_bug() {
@@ -111,23 +122,28 @@ ProofEntry entry(std::string name, std::string identity, std::string bound, Case
   ProofEntry e;
   e.name = name;
   e.identity = identity;
-  e.run = [=](std::size_t cases) {
+  e.expect_proved = options.expect_proved;
+  e.sampled = options.sampled;
+  e.run_range = [=](std::size_t first, std::size_t count) {
     Accumulator acc;
     acc.rep.name = name;
     acc.rep.identity = identity;
     acc.rep.expect_proved = options.expect_proved;
     acc.rep.sampled = options.sampled;
-    std::mt19937_64 rng(seed);
-    for (std::size_t i = 0; i < cases; ++i) {
+    for (std::size_t i = first; i < first + count; ++i) {
+      std::mt19937_64 rng = case_stream(seed, i);
       const StructuredCase c = structured_case(rng);
       if (options.uses_case) acc.structures(c.structures);
       fn(c.spline, rng, acc, i);
       ++acc.rep.cases;
     }
-    if (cases == 0) acc.rep.undecided = "no case was run (--cases 0)";
-    else if (acc.rep.points == 0) acc.rep.undecided = "nothing was compared";
-    acc.rep.degree_bound = bound + ", largest used: " + std::to_string(acc.max_bound);
+    acc.rep.largest_degree = acc.max_bound;
     return acc.rep;
+  };
+  e.finish = [bound](ProofReport& r) {
+    if (r.cases == 0) r.undecided = "no case was run (--cases 0)";
+    else if (r.points == 0) r.undecided = "nothing was compared";
+    r.degree_bound = bound + ", largest used: " + std::to_string(r.largest_degree);
   };
   return e;
 }
@@ -172,6 +188,56 @@ std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::
   std::vector<ProofReport> out(todo.size());
   parallel_for(todo.size(), threads, [&](std::size_t k) { out[k] = todo[k]->run(cases); });
   return out;
+}
+
+ProofReport merge_proof_ranges(const ProofEntry& e, const std::vector<std::pair<std::size_t, ProofReport>>& ranges) {
+  if (ranges.empty()) throw std::logic_error("merge_proof_ranges: no range of " + e.name);
+  ProofReport r = ranges.front().second;
+  if (ranges.front().first != 0) throw std::logic_error("merge_proof_ranges: " + e.name + " does not start at case 0");
+  std::size_t next = r.cases;
+  for (std::size_t k = 1; k < ranges.size(); ++k) {
+    const auto& [first, p] = ranges[k];
+    if (e.fixed_cases || first != next)
+      throw std::logic_error("merge_proof_ranges: " + e.name + " has a gap or an overlap at case " + std::to_string(first));
+    next += p.cases;
+    r.cases += p.cases;
+    r.points += p.points;
+    r.cells += p.cells;
+    if (r.holds && !p.holds) {  // the first counterexample in case order, as one run finds it
+      r.holds = false;
+      r.counterexample = p.counterexample;
+    }
+    if (r.undecided.empty()) r.undecided = p.undecided;
+    for (const auto& t : p.structures)
+      if (std::find(r.structures.begin(), r.structures.end(), t) == r.structures.end()) r.structures.push_back(t);
+    r.largest_degree = std::max(r.largest_degree, p.largest_degree);
+  }
+  e.finish(r);
+  return r;
+}
+
+nlohmann::json proof_range_json(const ProofReport& r) {
+  return {{"name", r.name}, {"cases", r.cases}, {"points", r.points}, {"cells", r.cells}, {"holds", r.holds},
+          {"counterexample", r.counterexample}, {"undecided", r.undecided}, {"structures", r.structures},
+          {"largest_degree", r.largest_degree}};
+}
+
+ProofReport proof_range_from_json(const ProofEntry& e, const nlohmann::json& j) {
+  if (j.at("name").get<std::string>() != e.name) throw std::logic_error("proof_range_from_json: not a range of " + e.name);
+  ProofReport r;
+  r.name = e.name;
+  r.identity = e.identity;
+  r.expect_proved = e.expect_proved;
+  r.sampled = e.sampled;
+  r.cases = j.at("cases").get<std::size_t>();
+  r.points = j.at("points").get<std::size_t>();
+  r.cells = j.at("cells").get<std::size_t>();
+  r.holds = j.at("holds").get<bool>();
+  r.counterexample = j.at("counterexample").get<std::string>();
+  r.undecided = j.at("undecided").get<std::string>();
+  r.structures = j.at("structures").get<std::vector<std::string>>();
+  r.largest_degree = j.at("largest_degree").get<int>();
+  return r;
 }
 
 nlohmann::json proof_report_json(const ProofReport& r) {

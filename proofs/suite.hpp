@@ -26,6 +26,7 @@ struct ProofReport {
   std::string undecided;       // non-empty: nothing (or not everything) could be decided, and why
   std::string counterexample;  // first failing case, exact
   std::vector<std::string> structures;  // input structures the cases contained (structured generator)
+  int largest_degree = 0;      // the largest degree bound an identity check of the cases used
   /// A claim from a paper that splinex shows false (e.g. hybrid-thm-3.2 as stated) is expected to
   /// be refuted: the run succeeds when every verdict is the expected one.
   bool expect_proved = true;
@@ -58,8 +59,34 @@ struct ProofReport {
 struct ProofEntry {
   std::string name;
   std::string identity;
-  std::function<ProofReport(std::size_t cases)> run;
+  /// Cases first .. first + count - 1. Every case draws from a stream of its own (the proof's seed
+  /// and the case number), so any range runs alone, on any machine: the sweep's ranges of cases.
+  /// The report is raw: ranges merge (merge_proof_ranges), then `finish` gives the last words.
+  std::function<ProofReport(std::size_t first, std::size_t count)> run_range;
+  /// The last words of the report of all cases: undecided when no case ran or nothing was
+  /// compared; the degree bound with the largest degree used.
+  std::function<void(ProofReport&)> finish;
+  /// The proof's cases are its own, not drawn (teapot-merge: the four teapot surfaces): it runs
+  /// them all whatever the count, as one range.
+  bool fixed_cases = false;
+  bool expect_proved = true;  // as in ProofReport
+  bool sampled = false;       // as in ProofReport
+
+  /// Cases 0 .. cases - 1, finished.
+  ProofReport run(std::size_t cases) const {
+    ProofReport r = run_range(0, cases);
+    finish(r);
+    return r;
+  }
 };
+
+/// The raw reports of consecutive ranges of one proof, in order from case 0, as one finished report:
+/// equal to e.run(total cases). A gap or an overlap between the ranges is a std::logic_error.
+ProofReport merge_proof_ranges(const ProofEntry& e, const std::vector<std::pair<std::size_t, ProofReport>>& ranges);
+
+/// A raw range report as JSON and back (the proofs sweep's job results; exact counts, no timings).
+nlohmann::json proof_range_json(const ProofReport& r);
+ProofReport proof_range_from_json(const ProofEntry& e, const nlohmann::json& j);
 
 const std::vector<ProofEntry>& proof_registry();
 

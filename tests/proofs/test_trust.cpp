@@ -254,3 +254,45 @@ TEST_CASE("the structured generator reaches the edges of the input space") {
                         "shifted domain", "coordinates ~1e30", "coordinates ~1e-30", "rational", "weights 1e-6..1e6"})
     CHECK(std::find(seen.begin(), seen.end(), std::string(t)) != seen.end());
 }
+
+TEST_CASE("ranges of a proof's cases, run apart and merged, equal the whole run (the proofs sweep)") {
+  const auto entry_of = [](const std::string& name) -> const ProofEntry& {
+    for (const auto& e : proof_registry())
+      if (e.name == name) return e;
+    FAIL("no proof " << name);
+    throw;
+  };
+  // a proved, a refuted (expected) and a sampled proof; each range through its JSON, as a job's result
+  for (const char* name : {"knot-insertion-boehm", "hybrid-thm-3.2", "compose-trimmed"}) {
+    const auto& e = entry_of(name);
+    const auto whole = e.run(5);
+    std::vector<std::pair<std::size_t, ProofReport>> ranges;
+    for (const auto& [first, count] : std::vector<std::pair<std::size_t, std::size_t>>{{0, 2}, {2, 1}, {3, 2}})
+      ranges.emplace_back(first, proof_range_from_json(e, proof_range_json(e.run_range(first, count))));
+    INFO(name);
+    CHECK(proof_report_json(merge_proof_ranges(e, ranges)) == proof_report_json(whole));
+    // a case runs alone: case 3 from its own range equals case 3 of the ranges above
+    CHECK(proof_range_json(e.run_range(3, 1)).at("points") ==
+          proof_range_json(e.run_range(3, 2)).at("points").get<std::size_t>() - proof_range_json(e.run_range(4, 1)).at("points").get<std::size_t>());
+  }
+  // the first counterexample in case order wins, also when an earlier range holds
+  ProofEntry e;
+  e.name = "synthetic";
+  e.finish = [](ProofReport& r) { r.degree_bound = "largest used: " + std::to_string(r.largest_degree); };
+  ProofReport a, b, c;
+  a.cases = 3, a.points = 10, a.largest_degree = 2, a.structures = {"x"};
+  b.cases = 2, b.points = 4, b.holds = false, b.counterexample = "case 3: wrong", b.structures = {"y", "x"};
+  c.cases = 2, c.points = 5, c.holds = false, c.counterexample = "case 6: also wrong", c.largest_degree = 7, c.undecided = "case 5: empty";
+  const auto m = merge_proof_ranges(e, {{0, a}, {3, b}, {5, c}});
+  CHECK(m.cases == 7);
+  CHECK(m.points == 19);
+  CHECK_FALSE(m.holds);
+  CHECK(m.counterexample == "case 3: wrong");
+  CHECK(m.undecided == "case 5: empty");
+  CHECK(m.structures == std::vector<std::string>{"x", "y"});
+  CHECK(m.degree_bound == "largest used: 7");
+  // a gap, an overlap or a start after case 0 is no merge
+  CHECK_THROWS_AS(merge_proof_ranges(e, {{0, a}, {4, b}}), std::logic_error);
+  CHECK_THROWS_AS(merge_proof_ranges(e, {{0, a}, {2, b}}), std::logic_error);
+  CHECK_THROWS_AS(merge_proof_ranges(e, {{1, a}}), std::logic_error);
+}
