@@ -63,11 +63,15 @@ const char* const kSectionNames[] = {
 };
 static_assert(std::size(kSectionNames) == std::size(kSections), "one name per section");
 
-// A section's rough cost in the test run (seconds on the development machine), so that the
-// longest start first when sections run on threads; unlisted sections count 1. Only the order of
-// the work depends on it, never a result.
+// A section's cost in seconds, measured (the "section ... finished in" lines of `splinex report
+// --jobs 1` on the 2-core development machine, 2026-12-05, with a sweep running beside it), so
+// that the longest start first when sections run on threads or as sweep jobs; unlisted sections
+// count 1. Only the order of the work depends on it, never a result.
 double section_weight(std::size_t k) {
-  static const std::map<std::string, double> w{{"cut3", 270}, {"vrep-teapot", 90}, {"crosscheck", 80}, {"proofs", 45}, {"untrim-tolerance", 40}, {"hybrid", 9}};
+  static const std::map<std::string, double> w{
+      {"cut3", 249},         {"cut", 134},   {"proofs", 44}, {"vrep-teapot", 29},      {"crosscheck", 26}, {"teapot-stars", 25},
+      {"solve", 23},         {"vrep-boolean", 23},           {"tolerance", 20},        {"algorithm2-stars", 15}, {"hybrid", 9.5},
+      {"vrep-ssi", 8.9},     {"untrim-tolerance", 5.7},      {"elevation-accuracy", 3.9}, {"vrep", 1.9},    {"checkerboard", 1.3}};
   const auto it = w.find(kSectionNames[k]);
   return it == w.end() ? 1.0 : it->second;
 }

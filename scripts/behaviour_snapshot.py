@@ -4,6 +4,7 @@
     scripts/behaviour_snapshot.py BUILD_DIR OUT_DIR [--no-report]
     scripts/behaviour_snapshot.py --diff A B
     scripts/behaviour_snapshot.py --remask BUILD_DIR OUT_DIR
+    scripts/behaviour_snapshot.py --diff-reports A B
 
 A snapshot holds, one file per item, the exit status, standard output and standard error of
   - every command-line test registered with CTest (except the `long` label and the report),
@@ -18,8 +19,11 @@ coordinates. Absolute paths of the source and build trees become $SRC and $BUILD
 
 --diff compares two snapshots and lists every file that differs (exit 1) or prints "identical".
 --remask BUILD_DIR OUT_DIR applies the masks again to the raw outputs a snapshot keeps in raw/.
+--diff-reports A B compares two report folders (e.g. `splinex report` and the merge of
+`splinex sweep plan report`) file by file with the same masks, and prints the differing lines.
 """
 import csv
+import difflib
 import io
 import json
 import os
@@ -48,7 +52,7 @@ def mask_times(text: str) -> str:
     text = re.sub(r"\[report [0-9.]+s\]", "[report <t>s]", text)
     text = re.sub(r"\bratio " + NUMBER, "ratio <t>", text)
     text = re.sub(r'("[a-z_]*seconds[a-z_]*"\s*:\s*)[-+0-9.eE]+', r"\1<t>", text)
-    text = re.sub(r"\b\d+(\.\d+)? ms\b", "<t> ms", text)
+    text = re.sub(r"\b\d+(\.\d+)?(e[-+]?\d+)? ms\b", "<t> ms", text)
     return text
 
 
@@ -57,7 +61,8 @@ def mask_csv(text: str) -> str:
         return text
     rows = list(csv.reader(io.StringIO(text)))
     header = rows[0]
-    timed = [i for i, h in enumerate(header) if "seconds" in h or h.endswith("_time") or h == "time"]
+    timed = [i for i, h in enumerate(header)
+             if "seconds" in h or h.endswith("_time") or h == "time" or h.endswith("_s") or h.startswith("ms_")]
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(header)
@@ -68,7 +73,8 @@ def mask_csv(text: str) -> str:
 
 def timed_column(header: str) -> bool:
     h = header.strip()
-    return h.endswith(" s") or h == "time" or "seconds" in h or "/float" in h or "/double" in h or "ratio" in h
+    return (h.endswith(" s") or h in ("s", "ms") or "(s)" in h or " s " in h or h == "exact / double" or h == "time" or "seconds" in h or "/float" in h or "/double" in h
+            or "ratio" in h)
 
 
 def mask_report_md(text: str) -> str:
@@ -189,8 +195,39 @@ def diff(a: Path, b: Path) -> int:
     return 1 if bad else 0
 
 
+def masked_report_file(f: Path, folder: Path) -> str:
+    text = f.read_text(errors="replace").replace(str(folder.resolve()), "$OUT").replace(str(folder), "$OUT")
+    if f.suffix == ".csv":
+        return mask_csv(text)
+    if f.name == "report.md":
+        return mask_report_md(text)
+    if f.name in TIMED_SVGS:
+        return mask_svg_with_times(text)
+    return mask_times(text)
+
+
+def diff_reports(a: Path, b: Path) -> int:
+    fa = {f.name for f in a.iterdir() if f.is_file()}
+    fb = {f.name for f in b.iterdir() if f.is_file()}
+    bad = [f"{n} (only in {a})" for n in sorted(fa - fb)] + [f"{n} (only in {b})" for n in sorted(fb - fa)]
+    for n in sorted(fa & fb):
+        ta, tb = masked_report_file(a / n, a), masked_report_file(b / n, b)
+        if ta != tb:
+            bad.append(n)
+            lines = [l for l in difflib.unified_diff(ta.splitlines(), tb.splitlines(), lineterm="") if l[:1] in "+-"]
+            for l in lines[:6]:
+                print("  " + l[:200])
+    for line in bad:
+        print("differs:", line)
+    if not bad:
+        print(f"identical, times aside: {len(fa)} files")
+    return 1 if bad else 0
+
+
 def main():
     args = sys.argv[1:]
+    if len(args) == 3 and args[0] == "--diff-reports":
+        sys.exit(diff_reports(Path(args[1]), Path(args[2])))
     if len(args) == 3 and args[0] == "--diff":
         sys.exit(diff(Path(args[1]), Path(args[2])))
     if len(args) == 3 and args[0] == "--remask":  # re-apply the masks to a snapshot's raw outputs
