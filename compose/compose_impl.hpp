@@ -274,9 +274,9 @@ template <class T>
 std::size_t compose_least_size(const BSpline<T>& outer, const BSpline<T>& inner, const Limits& limits) {
   detail::check_composable(outer, inner);
   const std::vector<int> D = composed_degrees(outer, inner);
+  for (int l = 0; l < inner.dim(); ++l) limits.check_degree(D[l], "inner");  // every degree before any size
   std::size_t least = 1;
   for (int l = 0; l < inner.dim(); ++l) {
-    limits.check_degree(D[l], "inner");
     const std::size_t segs = breakpoints(inner.knots[l], inner.degrees[l], inner.count(l)).size() - 1;
     least = checked_product(least, checked_product(segs, static_cast<std::size_t>(D[l]), limits, "inner") + 1, limits,
                             "inner");
@@ -287,14 +287,12 @@ std::size_t compose_least_size(const BSpline<T>& outer, const BSpline<T>& inner,
 template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options,
                    const Limits& limits) {
-  detail::check_composable(outer, inner);
+  // Before any work: the pair is composable, the composed degrees and the result's least size are
+  // within the limits (C^-1 joins add one each, counted once the joins are known, before the
+  // result is allocated), and both extractions are bounded.
+  compose_least_size(outer, inner, limits);
   const int k = inner.dim(), n = outer.dim();
   const std::vector<int> D = composed_degrees(outer, inner);
-  for (int l = 0; l < k; ++l) limits.check_degree(D[l], "inner");
-  // Before any work: the result's least size is within the limit (C^-1 joins add one each,
-  // counted once the joins are known, before the result is allocated), and both extractions are
-  // bounded.
-  compose_least_size(outer, inner, limits);
   bezier_pieces_size(outer, limits);
   bezier_pieces_size(inner, limits);
   const auto outer_pieces = extract_bezier(outer, limits);
