@@ -97,14 +97,12 @@ Commands add_sweep(CLI::App& app) {
            }},
           {mg, [mo](const Context&) {
              const auto jobs = read_sweep_jobs(mo->jobs);
-             bool ok = true;
-             sweep_merge(jobs, mo->dir, mo->out.empty() ? mo->dir : mo->out, ok);
+             const bool ok = sweep_merge(jobs, mo->dir, mo->out.empty() ? mo->dir : mo->out);
              std::cout << Json{{"jobs", jobs.size()}, {"merged_into", mo->out.empty() ? mo->dir : mo->out}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
              return ok ? 0 : 1;
            }},
           {sg, [so, sname, sout](const Context&) {
-             bool ok = true;
-             sweep_single(*sname, *so, *sout, ok, [](const std::string& s) { std::cerr << "[sweep single] " << s << "\n"; });
+             const bool ok = sweep_single(*sname, *so, *sout, [](const std::string& s) { std::cerr << "[sweep single] " << s << "\n"; });
              std::cout << Json{{"out", *sout}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
              return ok ? 0 : 1;
            }}};

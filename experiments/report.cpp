@@ -224,13 +224,16 @@ std::vector<std::vector<std::string>> report_tasks(const std::vector<std::string
 
 nlohmann::json run_report_task(const ReportOptions& opt, const std::vector<std::string>& task,
                                const std::function<void(const std::string&)>& progress) {
-  const auto tasks = report_tasks(task);
-  if (tasks.size() != 1 || tasks.front() != task)
+  const auto tasks = report_task_list(chosen_sections(task));
+  std::vector<std::string> names;
+  if (tasks.size() == 1)
+    for (std::size_t k : tasks.front()) names.push_back(kSectionNames[k]);
+  if (names != task)
     throw UsageError("sections", "are not one task of the report (a section alone, or crosscheck with composition-orders)",
                      "give the sections of one line of sweep plan report");
   std::filesystem::create_directories(opt.out_dir);
   ReportContext ctx{opt, progress};
-  run_task(report_task_list(chosen_sections(task)).front(), ctx);
+  run_task(tasks.front(), ctx);
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(opt.out_dir))
     if (e.is_regular_file()) files.push_back(e.path().filename().string());

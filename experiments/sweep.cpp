@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -94,6 +93,17 @@ std::vector<std::string> report_sections(const SweepPlanOptions& o) {
   return ordered;
 }
 
+// The report's options for a sweep of it: sections alone, on one core (the engines run the jobs
+// side by side).
+ReportOptions report_options(const std::string& out_dir, bool full, std::vector<std::string> sections) {
+  ReportOptions o;
+  o.out_dir = out_dir;
+  o.full = full;
+  o.sections = std::move(sections);
+  o.jobs = 1;
+  return o;
+}
+
 // The folder a report task writes its files into, beside its result.
 std::string report_task_dir(const SweepJob& job, const std::string& dir) {
   return (std::filesystem::path(dir) / "report" / job.id).string();
@@ -113,13 +123,14 @@ std::size_t proof_cases_per_job(const SweepPlanOptions& o) {
 }
 
 const ProofEntry& proof_entry(const std::string& name) {
-  for (const auto& e : proof_registry())
-    if (e.name == name) return e;
+  if (const ProofEntry* e = find_proof(name)) return *e;
   throw UsageError("jobs", "'" + name + "' is not a proof of this splinex", "plan the sweep again with this splinex");
 }
 
-// The proofs' merged files: proofs.json (what `splinex prove --json --cases N` prints) and proofs.md.
-std::string merge_proofs(const std::vector<Json>& rows, std::size_t cases, const std::string& out_dir, bool& ok) {
+// The proofs' merged files: proofs.json (what `splinex prove --json --cases N` prints) and proofs.md;
+// true when every verdict is as expected.
+bool merge_proofs(const std::vector<Json>& rows, std::size_t cases, const std::string& out_dir) {
+  bool ok = true;
   Json all = Json::array();
   std::ostringstream md;
   md << "# The named proofs on " << cases << " random exact cases each\n\n| proof | verdict | expected | cases | cells | points |\n|---|---|---|---|---|---|\n";
@@ -132,11 +143,15 @@ std::string merge_proofs(const std::vector<Json>& rows, std::size_t cases, const
   }
   write_file_atomically(out_dir + "/proofs.json", all.dump(2) + "\n");
   write_file_atomically(out_dir + "/proofs.md", md.str());
-  return md.str();
+  return ok;
+}
+
+void no_report_options(const SweepPlanOptions& o, const std::string& name) {
+  if (!o.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
 }
 
 void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
-  if (!o.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
+  no_report_options(o, name);
   if (o.full || !o.eps.empty() || !o.runs.empty())
     throw UsageError("sweep", "--full, --eps and --runs are options of untrim-tolerance, not of " + name, "give --cases for proofs");
 }
@@ -211,7 +226,7 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     }
     return jobs;
   }
-  if (!options.sections.empty()) throw UsageError("sections", "is an option of report, not of " + name, "give it to sweep plan report");
+  no_report_options(options, name);
   no_proof_options(options, name);
   const auto u = untrim_options(options);
   const Json plan = untrim_tolerance_options_json(u);
@@ -282,11 +297,7 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
 
 Json sweep_run_job(const SweepJob& job, const std::string& dir, const std::function<void(const std::string&)>& progress) {
   if (job.sweep == "report") {
-    ReportOptions o;
-    o.out_dir = report_task_dir(job, dir);
-    o.full = job.plan.at("full").get<bool>();
-    o.sections = job.plan.at("sections").get<std::vector<std::string>>();
-    o.jobs = 1;  // one job, one core: the engines run jobs side by side
+    const auto o = report_options(report_task_dir(job, dir), job.plan.at("full").get<bool>(), job.plan.at("sections").get<std::vector<std::string>>());
     const auto task = job.params.at("sections").get<std::vector<std::string>>();
     std::filesystem::remove_all(o.out_dir);  // the files of an interrupted attempt
     const auto r = run_report_task(o, task, [&](const std::string& s) {
@@ -369,7 +380,7 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
   return st;
 }
 
-std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir, bool& ok) {
+bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir) {
   std::vector<Json> rows;
   std::vector<std::string> missing;
   for (const auto& job : jobs) {
@@ -389,15 +400,10 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
   }
   std::filesystem::create_directories(out_dir);
   if (jobs.front().sweep == "report") {
-    ReportOptions o;
-    o.out_dir = out_dir;
-    o.full = jobs.front().plan.at("full").get<bool>();
-    o.sections = jobs.front().plan.at("sections").get<std::vector<std::string>>();
+    const auto o = report_options(out_dir, jobs.front().plan.at("full").get<bool>(), jobs.front().plan.at("sections").get<std::vector<std::string>>());
     std::vector<std::string> dirs;
     for (const auto& job : jobs) dirs.push_back(report_task_dir(job, dir));
-    ok = merge_report_tasks(o, rows, dirs, [](const std::string& s) { std::cerr << "[sweep merge] " << s << "\n"; }) == 0;
-    std::ifstream in(out_dir + "/report.md");
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return merge_report_tasks(o, rows, dirs, [](const std::string& s) { std::cerr << "[sweep merge] " << s << "\n"; }) == 0;
   }
   if (jobs.front().sweep == "proofs") {
     // every proof's ranges in case order, merged into its report; the proofs in the registry's
@@ -418,25 +424,20 @@ std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& di
         throw DomainError("jobs", x.what(), "plan the sweep again with sweep plan proofs");
       }
     }
-    return merge_proofs(reports, jobs.front().plan.at("cases").get<std::size_t>(), out_dir, ok);
+    return merge_proofs(reports, jobs.front().plan.at("cases").get<std::size_t>(), out_dir);
   }
   auto u = untrim_tolerance_options_from_json(jobs.front().plan);
   u.out_dir = out_dir;
-  return untrim_tolerance_merge(rows, u, ok);
+  bool ok = true;
+  untrim_tolerance_merge(rows, u, ok);
+  return ok;
 }
 
-std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
-                         const std::function<void(const std::string&)>& progress) {
+bool sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir,
+                  const std::function<void(const std::string&)>& progress) {
   sweep_plan(name, options);  // the name's and the options' errors
   if (name == "report") {
-    ReportOptions o;
-    o.out_dir = out_dir;
-    o.full = options.full;
-    o.sections = report_sections(options);
-    o.jobs = 1;
-    ok = run_report(o) == 0;
-    std::ifstream in(out_dir + "/report.md");
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return run_report(report_options(out_dir, options.full, report_sections(options))) == 0;
   }
   if (name == "proofs") {
     const std::size_t cases = proof_cases(options);
@@ -446,12 +447,14 @@ std::string sweep_single(const std::string& name, const SweepPlanOptions& option
       rows.push_back(proof_report_json(e.run(cases)));
     }
     std::filesystem::create_directories(out_dir);
-    return merge_proofs(rows, cases, out_dir, ok);
+    return merge_proofs(rows, cases, out_dir);
   }
   auto u = untrim_options(options);
   u.out_dir = out_dir;
   std::filesystem::create_directories(out_dir);
-  return run_untrim_tolerance(u, progress, ok);
+  bool ok = true;
+  run_untrim_tolerance(u, progress, ok);
+  return ok;
 }
 
 }  // namespace splinex

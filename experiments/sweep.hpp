@@ -71,12 +71,12 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
                         std::size_t threads = 1);
 
 /// The merge: every job's output read from dir (a missing one is a typed error naming the jobs),
-/// then the sweep's files written into out_dir. Returns the Markdown; ok false when the sweep's own
-/// checks fail (as in the report).
-std::string sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir, bool& ok);
+/// then the sweep's files written into out_dir. Returns false when the sweep's own checks fail (as
+/// in the report: a proof not as expected, gaps in untrimming), true otherwise.
+bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir);
 
-/// The single-process run of a plan (what the report does), into out_dir.
-std::string sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir, bool& ok,
-                         const std::function<void(const std::string&)>& progress);
+/// The single-process run of a plan (what the report does), into out_dir; returns as sweep_merge.
+bool sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir,
+                  const std::function<void(const std::string&)>& progress);
 
 }  // namespace splinex

@@ -169,6 +169,12 @@ const std::vector<ProofEntry>& proof_registry() {
   return registry;
 }
 
+const ProofEntry* find_proof(const std::string& name) {
+  for (const auto& e : proof_registry())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
 std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases, std::size_t threads) {
   const auto& reg = proof_registry();
   std::vector<const ProofEntry*> todo;
@@ -176,13 +182,13 @@ std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::
     for (const auto& e : reg) todo.push_back(&e);
   } else {
     for (const auto& n : names) {
-      auto it = std::find_if(reg.begin(), reg.end(), [&](const ProofEntry& e) { return e.name == n; });
-      if (it == reg.end()) {
+      const ProofEntry* e = find_proof(n);
+      if (!e) {
         std::string all;
-        for (const auto& e : reg) all += (all.empty() ? "" : ", ") + e.name;
+        for (const auto& x : reg) all += (all.empty() ? "" : ", ") + x.name;
         throw UsageError("prove", "unknown proof \"" + n + "\"", "use one of: " + all);
       }
-      todo.push_back(&*it);
+      todo.push_back(e);
     }
   }
   std::vector<ProofReport> out(todo.size());

@@ -122,10 +122,13 @@ class ScopedPlantedHybridBug {
 };
 }  // namespace proof_detail
 
-/// Runs the named proofs (all when `names` is empty); unknown names throw UsageError.
+/// The registry's entry named `name`, or nullptr when this splinex has no such proof.
+const ProofEntry* find_proof(const std::string& name);
+
 /// The named proofs (all when names is empty), in the order given (the registry's for all), each
 /// on `cases` cases from its own seeded stream; `threads` run at once (the reports do not depend on
-/// it: every proof is deterministic and the proofs share no mutable state).
+/// it: every proof is deterministic and the proofs share no mutable state). An unknown name throws
+/// UsageError listing the proofs.
 std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::size_t cases = 12, std::size_t threads = 1);
 
 /// The report as `splinex prove --json` prints it (no timings: the same on any machine).
