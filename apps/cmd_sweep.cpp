@@ -13,10 +13,10 @@ namespace {
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
   const auto slash = s.find('/');
   auto num = [&](const std::string& t) -> long {
-    char* end = nullptr;
-    const long v = std::strtol(t.c_str(), &end, 10);
-    if (t.empty() || end != t.c_str() + t.size() || v < 0 || v > 1000000) return -1;
-    return v;
+    // digits only: no sign, no blanks (strtol would skip leading ones and not trailing ones)
+    if (t.empty() || t.size() > 7 || t.find_first_not_of("0123456789") != std::string::npos) return -1;
+    const long v = std::stol(t);
+    return v > 1000000 ? -1 : v;
   };
   const long i = slash == std::string::npos ? -1 : num(s.substr(0, slash)), n = slash == std::string::npos ? -1 : num(s.substr(slash + 1));
   if (i < 0 || n < 1 || i >= n) throw UsageError("shard", "'" + s + "' is not I/N with 0 <= I < N", "give e.g. 0/4 (the first of four shards)");

@@ -29,6 +29,8 @@ namespace {
 
 using Json = nlohmann::json;
 
+constexpr std::size_t kMaxSweepJobs = 1000000;  // lines of one jobs.jsonl, and jobs of one plan
+
 std::string eps_text(double e) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", e);
@@ -161,6 +163,40 @@ void no_proof_options(const SweepPlanOptions& o, const std::string& name) {
   if (o.cases_per_job) throw UsageError("cases-per-job", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
 }
 
+// The options that give a plan (the inverse of sweep_plan on its plan documents): re-planning with
+// them must give the same plan, which read_sweep_jobs checks.
+SweepPlanOptions plan_options(const std::string& sweep, const Json& plan) {
+  SweepPlanOptions o;
+  const auto join = [](const std::vector<std::string>& v) {
+    std::string t;
+    for (const auto& x : v) t += (t.empty() ? "" : ",") + x;
+    return t;
+  };
+  const auto exact = [](double v) {  // decimal text that strtod reads back as v
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  if (sweep == "proofs") {
+    o.cases = plan.at("cases").get<long>();
+    o.cases_per_job = plan.at("cases_per_job").get<long>();
+  } else if (sweep == "report") {
+    o.full = plan.at("full").get<bool>();
+    o.sections = join(plan.at("sections").get<std::vector<std::string>>());
+    if (o.sections.empty()) throw ParseError("sections", "is empty", "plan the sweep again");
+  } else {
+    const auto u = untrim_tolerance_options_from_json(plan);
+    const auto full = full_untrim_tolerance_options("");
+    o.full = u.max_control_points == full.max_control_points && u.max_boundary_samples == full.max_boundary_samples;
+    std::vector<std::string> eps, runs;
+    for (double e : u.eps) eps.push_back(exact(e));
+    for (const auto& r : u.runs) runs.push_back(std::to_string(r.bits) + ":" + exact(r.min_eps) + ":" + std::to_string(r.max_m));
+    o.eps = join(eps), o.runs = join(runs);
+    if (o.eps.empty() || o.runs.empty()) throw ParseError("plan", "has no tolerances or no runs", "plan the sweep again");
+  }
+  return o;
+}
+
 // An existing output of `job`: its result, after checking that it is this job's under this plan
 // (a folder reused for another plan must not be merged or skipped silently).
 Json read_result(const SweepJob& job, const std::filesystem::path& p) {
@@ -192,6 +228,12 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     no_untrim_options(options, name);
     const std::size_t cases = proof_cases(options);
     const std::size_t per_job = proof_cases_per_job(options);
+    std::size_t count = 0;  // the jobs, counted before they are made
+    for (const auto& e : proof_registry()) count += e.fixed_cases ? 1 : (cases + per_job - 1) / per_job;
+    if (count > kMaxSweepJobs)
+      throw SizeLimitError("cases-per-job", std::to_string(cases) + " cases in ranges of " + std::to_string(per_job) + " make " + std::to_string(count) +
+                                                " jobs, more than " + std::to_string(kMaxSweepJobs),
+                           "give a larger --cases-per-job");
     std::vector<SweepJob> jobs;
     for (const auto& e : proof_registry()) {
       // ranges [first, first + count) of the proof's cases; one job when they all fit (or the
@@ -271,6 +313,7 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ParseError("jobs", "cannot read '" + path + "'", "give the file sweep plan wrote");
   std::vector<SweepJob> jobs;
+  std::vector<std::size_t> line_of;  // the line of every job, for the errors
   std::set<std::string> ids;
   std::string line;
   std::size_t n = 0;
@@ -289,9 +332,31 @@ std::vector<SweepJob> read_sweep_jobs(const std::string& path) {
     if (!jobs.empty() && (s.sweep != jobs.front().sweep || s.plan != jobs.front().plan))
       throw ParseError(where, "belongs to another sweep or plan than line 1", "give the lines of one sweep plan");
     jobs.push_back(std::move(s));
-    if (jobs.size() > 1000000) throw SizeLimitError("jobs", "has more than 1000000 jobs", "split the plan");
+    line_of.push_back(n);
+    if (jobs.size() > kMaxSweepJobs) throw SizeLimitError("jobs", "has more than " + std::to_string(kMaxSweepJobs) + " jobs", "split the plan");
   }
   if (jobs.empty()) throw ParseError("jobs", "'" + path + "' has no jobs", "give the file sweep plan wrote");
+  // Every line must be a job that sweep plan writes for its plan, exactly: a hand-edited or foreign
+  // line (an id naming a folder outside DIR, a range of 10^12 cases, a proof this splinex lacks) is
+  // an error before any work, not a job that runs.
+  std::vector<SweepJob> planned;
+  try {
+    planned = sweep_plan(jobs.front().sweep, plan_options(jobs.front().sweep, jobs.front().plan));
+  } catch (const Error& e) {
+    throw ParseError("jobs line 1.plan", std::string("is not a plan that this splinex writes: ") + e.what(), "plan the sweep again with this splinex");
+  } catch (const Json::exception& e) {
+    throw ParseError("jobs line 1.plan", std::string("is not a plan that this splinex writes: ") + e.what(), "plan the sweep again with this splinex");
+  }
+  if (planned.empty() || planned.front().plan != jobs.front().plan)
+    throw ParseError("jobs line 1.plan", "is not a plan that this splinex writes", "plan the sweep again with this splinex");
+  std::map<std::string, const SweepJob*> by_id;
+  for (const auto& j : planned) by_id.emplace(j.id, &j);
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    const auto it = by_id.find(jobs[k].id);
+    if (it == by_id.end() || it->second->params != jobs[k].params || it->second->output != jobs[k].output)
+      throw ParseError("jobs line " + std::to_string(line_of[k]), "'" + jobs[k].id + "' is not a job of its plan (sweep plan does not write it so)",
+                       "give the lines sweep plan wrote, unedited, or plan the sweep again");
+  }
   return jobs;
 }
 
@@ -344,12 +409,14 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
       if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": done before, skipped\n";
       return;
     }
-    Json r;
     try {
-      r = sweep_run_job(job, dir, job_progress);  // deterministic: the same result on any thread, process or machine
+      const Json r = sweep_run_job(job, dir, job_progress);  // deterministic: the same result on any thread, process or machine
+      std::filesystem::create_directories(out.parent_path());
+      write_file_atomically(out.string(), r.dump() + "\n");
     } catch (const std::exception& e) {
-      // One job's failure (memory, a limit, a bug) does not cost the others their hours: it is
-      // reported now, leaves no output (a rerun retries it) and fails the run at the end.
+      // One job's failure (memory, a limit, its output not writable, a bug) does not cost the
+      // others their hours: it is reported now, leaves no output (a rerun retries it) and fails
+      // the run at the end.
       const std::string why = dynamic_cast<const std::bad_alloc*>(&e) ? std::string("out of memory") : std::string(e.what());
       std::lock_guard<std::mutex> g(lock);
       ++done;
@@ -357,8 +424,6 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
       if (progress) std::cerr << "[sweep] " << done << "/" << st.in_shard << " " << job.id << ": FAILED: " << why << "\n";
       return;
     }
-    std::filesystem::create_directories(out.parent_path());
-    write_file_atomically(out.string(), r.dump() + "\n");
     std::lock_guard<std::mutex> g(lock);
     ++st.run, ++done;
     if (progress) {

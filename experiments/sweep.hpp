@@ -49,7 +49,9 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
 /// One line of jobs.jsonl and back (typed errors naming the field).
 nlohmann::json sweep_job_json(const SweepJob& job);
 SweepJob sweep_job_from_json(const nlohmann::json& j, const std::string& where);
-/// Reads a jobs.jsonl file: every line a job, ids unique, one sweep and one plan for all.
+/// Reads a jobs.jsonl file: every line a job, ids unique, one sweep and one plan for all, and every
+/// line a job that sweep_plan writes for that plan (same id, params and output), checked by
+/// planning again: an edited or foreign line is a ParseError naming it, before any work.
 std::vector<SweepJob> read_sweep_jobs(const std::string& path);
 
 /// Runs one job: its result document (the merge's input). Jobs that write files (report) write
