@@ -23,6 +23,7 @@
 #include "vrep/regularity.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/trivariate.hpp"
+#include "vrep/validate.hpp"
 
 namespace splinex::app {
 
@@ -266,17 +267,19 @@ Json gluing_json(const TrimmedGluing<T>& G, const TrimmedModel<T>& M, double sec
 }
 
 /// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
-/// regularity verdict.
-template <class F>
-Json info_of(const VModel<F>& M, int levels, const Limits& limits) {
+/// regularity verdict (computed by the validation, vrep/validate.hpp), and the model's validity.
+Json info_of(const VModel<Rational>& M, const ValidityReport& v) {
   Json doc = vmodel_to_json(M);
   Json cells = Json::array();
-  for (std::size_t c = 0; c < M.cells.size(); ++c) {
-    const auto rep = certify_regularity(M.trivariates[M.cells[c].trivariates.front()], levels, limits);
-    cells.push_back({{"name", M.cells[c].name}, {"neighbours", M.neighbours_of_cell(c)}, {"regularity", report_to_json(rep)}});
-  }
+  for (std::size_t c = 0; c < M.cells.size(); ++c)
+    cells.push_back({{"name", M.cells[c].name}, {"neighbours", M.neighbours_of_cell(c)}, {"regularity", report_to_json(v.regularity.at(c))}});
   const Json& t = doc["topology"];
-  return Json{{"counts", t["counts"]}, {"euler_characteristic", t["euler_characteristic"]}, {"invariants", t["invariants"]}, {"cells", cells}};
+  Json validity{{"verdict", v.verdict()}, {"decided", v.decided()}, {"cells", v.cells}, {"cell_pairs_with_overlapping_boxes", v.pairs_tested}};
+  if (!v.undecided.empty()) validity["undecided"] = v.undecided;
+  if (!v.not_checked.empty()) validity["not_checked"] = v.not_checked;
+  if (!v.degenerate.empty()) validity["degenerate_cells"] = v.degenerate;
+  return Json{{"counts", t["counts"]}, {"euler_characteristic", t["euler_characteristic"]}, {"invariants", t["invariants"]}, {"cells", cells},
+              {"validity", validity}};
 }
 
 }  // namespace
@@ -356,8 +359,8 @@ Commands add_vrep(CLI::App& app) {
   auto eo = std::make_shared<ExportOptions>();
   auto* exp = v->add_subcommand("export", "the V-model for ParaView: Bezier hexahedra (VTK cell type 79, rational weights)");
   exp->add_option("files", eo->files, "a V-model document (or trivariates, glued exactly)")->required();
-  exp->add_option("--vtk", eo->vtk, "the .vtu file to write (Bezier hexahedra for ParaView)");
-  exp->add_option("--svg", eo->svg, "an SVG figure: the cells exploded, flat-shaded");
+  exp->add_option("--vtk", eo->vtk, "the .vtu file to write (Bezier hexahedra for ParaView)")->check(output_file());
+  exp->add_option("--svg", eo->svg, "an SVG figure: the cells exploded, flat-shaded")->check(output_file());
   exp->add_option("--explode", eo->explode, "--svg: how far cells move apart (0: not at all)")->check(CLI::Range(0.0, 5.0))->capture_default_str();
   exp->add_flag("--mark-singular", eo->singular, "--svg: mark sampled boundary points where det J = 0 exactly");
 
@@ -416,8 +419,14 @@ Commands add_vrep(CLI::App& app) {
     return all;
   };
   // The exact V-model of documents: glued, with their attributes; an "implicit" region is checked
-  // against the cells (vrep/trimmed.hpp: check_region) and refused when it does not describe them.
-  auto model_of = [](const VModelCells& all, const Context& ctx) {
+  // against the cells (vrep/trimmed.hpp: check_region) and refused when it does not describe them;
+  // then validated (vrep/validate.hpp: a proved defect is a typed error naming the cells).
+  struct ReadModel {
+    VModel<Rational> model;
+    std::optional<Region<Rational>> region;
+    ValidityReport validity;
+  };
+  auto model_of = [](const VModelCells& all, const Context& ctx, int levels) {
     auto M = glue(all.trivariates, Rational(0), all.names, ctx.limits);
     apply_attributes(M, all, ctx.limits);
     if (all.region) {
@@ -426,29 +435,35 @@ Commands add_vrep(CLI::App& app) {
         throw ValidationError("vmodel.implicit", "does not describe the cells: " + fails.front() + (fails.size() > 1 ? " (and " + std::to_string(fails.size() - 1) + " more)" : ""),
                               "remove \"implicit\" or give the model's exact region");
     }
-    return std::make_pair(std::move(M), all.region);
+    ValidityOptions vo;
+    vo.levels = levels;
+    auto validity = validate_vmodel(M, "vmodel", vo, ctx.limits);
+    return ReadModel{std::move(M), all.region, std::move(validity)};
   };
-  auto model_and_region = [read_cells, model_of](const std::vector<std::string>& files, const Context& ctx) {
-    return model_of(read_cells(files, ctx), ctx);
+  auto read_model = [read_cells, model_of](const std::vector<std::string>& files, const Context& ctx, int levels = 6) {
+    return model_of(read_cells(files, ctx), ctx, levels);
   };
-  auto exact_model = [model_and_region](const std::vector<std::string>& files, const Context& ctx) { return model_and_region(files, ctx).first; };
+  auto exact_model = [read_model](const std::vector<std::string>& files, const Context& ctx) { return read_model(files, ctx).model; };
   // A Boolean operand: a trimmed V-model document as it is, a V-model with its region ("implicit",
   // or the half-spaces of convex planar cells), or the V-model alone (no region: planar cuts only).
   struct Operand {
     std::optional<VModel<Rational>> model;
     std::optional<TrimmedModel<Rational>> trimmed;
+    ValidityReport validity;
   };
   auto operand = [model_of](const std::string& file, const Context& ctx) {
     Operand o;
     const Json doc = read_json_file(file, ctx.read_limits);
     if (doc.is_object() && doc.contains("type") && doc["type"] == "trimmed_vmodel") {
       o.trimmed = trimmed_from_json(doc, ctx.limits, file);
+      o.validity = validate_trimmed(*o.trimmed, file, {}, ctx.limits);
       return o;
     }
-    auto [M, region] = model_of(vmodel_cells_from_json(doc, ctx.limits, "vmodel"), ctx);
-    if (!region) region = planar_region(M);
-    if (region) o.trimmed = as_trimmed(M, *region);
-    o.model = std::move(M);
+    auto r = model_of(vmodel_cells_from_json(doc, ctx.limits, "vmodel"), ctx, 6);
+    if (!r.region) r.region = planar_region(r.model);
+    if (r.region) o.trimmed = as_trimmed(r.model, *r.region);
+    o.model = std::move(r.model);
+    o.validity = std::move(r.validity);
     return o;
   };
   struct TopologyCli {
@@ -472,8 +487,8 @@ Commands add_vrep(CLI::App& app) {
                                          "from trivariates without an implicit form (certified in exact arithmetic)");
   tp->add_option("--arith", tpo->arith, "exact (certified) or double")->check(CLI::IsMember({"exact", "double"}))->capture_default_str();
   tp->add_option("--boxes", tpo->boxes, "subdivision boxes per cell")->check(CLI::Range(1, 1000000))->capture_default_str();
-  tp->add_option("--svg", tpo->svg, "write an exploded view (exact run only) to this SVG file");
-  tp->add_option("--vtk", tpo->vtk, "write the cells' boxes as hexahedra (legacy VTK, exact run only) to this file");
+  tp->add_option("--svg", tpo->svg, "write an exploded view (exact run only) to this SVG file")->check(output_file());
+  tp->add_option("--vtk", tpo->vtk, "write the cells' boxes as hexahedra (legacy VTK, exact run only) to this file")->check(output_file());
   struct SsiCli {
     std::string a, b, step = "1/16", tolerance = "1e-12", svg, obj;
     int grid = 48;
@@ -487,8 +502,8 @@ Commands add_vrep(CLI::App& app) {
   ssi->add_option("--tolerance", so->tolerance, "Newton stops at |S1 - S2| <= tolerance")->capture_default_str();
   ssi->add_option("--grid", so->grid, "seed cells per direction of each surface")->check(CLI::Range(1, 128))->capture_default_str();
   ssi->add_flag("--judge", so->judge, "judge every point and segment midpoint exactly: gap |S1 - S2| and a Krawczyk certificate of the true intersection nearby");
-  ssi->add_option("--svg", so->svg, "write the branches in both parameter planes to this SVG file");
-  ssi->add_option("--obj", so->obj, "write the branches as 3D polylines to this OBJ file");
+  ssi->add_option("--svg", so->svg, "write the branches in both parameter planes to this SVG file")->check(output_file());
+  ssi->add_option("--obj", so->obj, "write the branches as 3D polylines to this OBJ file")->check(output_file());
   struct BlendCli {
     std::string a, b, at, attribute;
     int k = 1, bits = 128;
@@ -550,6 +565,7 @@ Commands add_vrep(CLI::App& app) {
                throw ValidationError(tco->file, "is not a trimmed V-model document (type \"trimmed_vmodel\")",
                                      "give the output of vrep boolean with trimmed cells; a V-model's own topology is in vrep info");
              const auto M = trimmed_from_json(doc, ctx.limits, tco->file);
+             const auto validity = validate_trimmed(M, tco->file, {}, ctx.limits);
              Json cells = Json::array();
              const char* status[] = {"curve", "collapsed", "on_trimming_surface", "undecided"};
              for (std::size_t k = 0; k < M.cells.size(); ++k) {
@@ -627,6 +643,7 @@ Commands add_vrep(CLI::App& app) {
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
              Json out_doc{{"cells", cells}, {"model_euler", model}};
+             if (!validity.decided()) out_doc["validity"] = validity.verdict();
              if (tco->glue) {
                TrimmedGlueOptions go;
                go.max_boxes = std::max<std::size_t>(512, tco->boxes);
@@ -766,12 +783,16 @@ Commands add_vrep(CLI::App& app) {
              std::cout << j.dump() << "\n";
              return 0;
            }},
-          {glue_cmd, [go, read_cells, exact_model](const Context& ctx) {
+          {glue_cmd, [go, read_cells, read_model](const Context& ctx) {
              if (go->eps.empty()) {
-               std::cout << vmodel_to_json(exact_model(go->files, ctx)).dump() << "\n";
+               const auto r = read_model(go->files, ctx);
+               Json doc = vmodel_to_json(r.model);
+               doc["topology"]["validity"] = r.validity.verdict();  // for the reader; ignored on input
+               std::cout << doc.dump() << "\n";
                return 0;
              }
              const auto all = read_cells(go->files, ctx);
+             validate_cells(all.trivariates, all.names, "vmodel", {}, ctx.limits);  // the exact cells, before rounding
              const double eps = to_double(parse_number(go->eps, "eps"));
              if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
              std::vector<BSpline<double>> d;
@@ -779,16 +800,24 @@ Commands add_vrep(CLI::App& app) {
              std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
              return 0;
            }},
-          {exp, [eo, exact_model, operand](const Context& ctx) {
+          {exp, [eo, read_model, operand](const Context& ctx) {
              if (eo->vtk.empty() && eo->svg.empty()) throw UsageError("vtk", "vrep export needs --vtk or --svg", "give --vtk FILE.vtu or --svg FILE.svg");
              std::optional<Operand> O;
              if (eo->files.size() == 1) O = operand(eo->files.front(), ctx);
-             auto write = [](const std::string& path, const std::string& field, const std::string& text) {
+             std::optional<VModel<Rational>> glued;
+             ValidityReport validity;
+             if (O) validity = O->validity;
+             else {
+               auto r = read_model(eo->files, ctx);
+               glued = std::move(r.model);
+               validity = std::move(r.validity);
+             }
+             auto write = [&validity](const std::string& path, const std::string& field, const std::string& text) {
                std::ofstream out(path);
                if (!out) throw UsageError(field, "cannot write " + path, "give a writable file path");
                out << text;
                if (!out) throw UsageError(field, "writing " + path + " failed", "check the disk space and the path");
-               std::cerr << "splinex vrep export: wrote " << path << "\n";
+               std::cerr << "splinex vrep export: wrote " << path << (validity.decided() ? std::string() : " (model validity " + validity.verdict() + ")") << "\n";
              };
              if (O && !O->model) {  // a trimmed V-model: its cells sampled on parameter voxels (a figure)
                const auto& T = *O->trimmed;
@@ -796,7 +825,7 @@ Commands add_vrep(CLI::App& app) {
                if (!eo->svg.empty()) write(eo->svg, "svg", trimmed_svg(T, eo->explode, "trimmed V-model: " + std::to_string(T.cells.size()) + " cells"));
                return 0;
              }
-             const auto M = O ? *O->model : exact_model(eo->files, ctx);
+             const auto& M = O ? *O->model : *glued;
              if (!eo->vtk.empty()) write(eo->vtk, "vtk", vmodel_to_vtu(M));
              if (!eo->svg.empty()) write(eo->svg, "svg", vmodel_svg(M, eo->explode, "V-model: " + std::to_string(M.cells.size()) + " cells", eo->singular));
              return 0;
@@ -893,6 +922,7 @@ Commands add_vrep(CLI::App& app) {
                }
              Json out{{"cells", cells}};
              put_enclosure(out, "volume", lo, hi, true);
+             if (!O.validity.decided()) out["validity"] = O.validity.verdict();
              if (!volo->field.empty()) {
                // Per cell that has the field: its integral (exact or a certified enclosure); the
                // model's sum when every cell has it.
@@ -971,7 +1001,9 @@ Commands add_vrep(CLI::App& app) {
              if (in_cells) {
                Json cells = Json::array();
                for (std::size_t c : *in_cells) cells.push_back({{"cell", c}, {"name", O.model->cells[c].name}});
-               std::cout << Json{{"inside", !cells.empty()}, {"cells", cells}}.dump() << "\n";
+               Json out{{"inside", !cells.empty()}, {"cells", cells}};
+               if (!O.validity.decided()) out["validity"] = O.validity.verdict();
+               std::cout << out.dump() << "\n";
                return 0;
              }
              if (!O.trimmed)
@@ -981,11 +1013,13 @@ Commands add_vrep(CLI::App& app) {
              Json out{{"truth", t == Truth::in ? "inside" : t == Truth::out ? "outside" : "on a surface"}};
              if (t != Truth::mixed) out["inside"] = t == Truth::in;
              else out["note"] = "x lies on the zero set of a polynomial that decides it: the boundary, or inside where two pieces touch";
+             if (!O.validity.decided()) out["validity"] = O.validity.verdict();
              std::cout << out.dump() << "\n";
              return 0;
            }},
-          {info, [io, exact_model](const Context& ctx) {
-             std::cout << info_of(exact_model(io->files, ctx), io->levels, ctx.limits).dump(2) << "\n";
+          {info, [io, read_model](const Context& ctx) {
+             const auto r = read_model(io->files, ctx, io->levels);
+             std::cout << info_of(r.model, r.validity).dump(2) << "\n";
              return 0;
            }},
           {ev, [vo, exact_model](const Context& ctx) {

@@ -14,6 +14,7 @@
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean.hpp"
+#include "vrep/boolean_junctions.hpp"  // vrep_detail::find_corner_junctions
 #include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
 #include "vrep/trivariate_impl.hpp"  // vrep_detail::greville
 #include "vrep/vmodel_impl.hpp"      // vrep_detail::magnitude, centre_of
@@ -603,6 +604,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
         junctions.insert({origin[faces[i].cell], origin[faces[j].cell]});
         if (first_junction.empty()) first_junction = faces[i].text + " overlaps " + faces[j].text + " without being glued to it";
       }
+    if (junctions.empty()) find_corner_junctions(M, origin, names, eps, junctions, first_junction);
     if (!junctions.empty()) {
       bool grew = false;
       // The planes of a source cell's tiling: its splitting planes and its own face planes (two

@@ -574,3 +574,35 @@ TEST_CASE("vrep distance blend: attributes at points, fields on affine cells eva
   attach_field(N, 0, "f", test::affine_field(V, {R(1), R(0), R(0)}, R(0)));
   CHECK_THROWS_AS(attribute_at(N, {R(1), R(1, 2), R(1, 2)}, "f"), DomainError);
 }
+
+TEST_CASE("vrep boolean: partial edge contacts are glued like partial face contacts (issue 47, vrep 1)") {
+  // Two boxes touching along the segment x = y = 1, 1/2 <= z <= 1 (part of an edge of each): the
+  // union's point set has Euler characteristic 1 + 1 - 1 = 1 (two balls glued along a segment).
+  const auto A = box({0, 0, 0}, {1, 1, 1}), B = box({1, 1, R(1, 2)}, {2, 2, 2});
+  BooleanStats<R> stats;
+  const auto U = boolean_op(A, B, BooleanOp::unite, R(0), Blend::sum_clipped, {}, &stats);
+  check_ok(U, 1);
+  CHECK(stats.rounds == 2);  // the contact found, both cells cut at the other's planes
+  CHECK(volume(U) == R(1) + R(3, 2));
+  // The segment is one V-curve of both pieces that touch there.
+  const auto p = point_at(U, {1, 1, R(1, 2)}), q = point_at(U, {1, 1, 1});
+  CHECK(U.cells_of_curve(curve_between(U, p, q)).size() == 2);
+  // A whole common edge needs no cut; boxes apart are not touched.
+  const auto W = boolean_op(A, box({1, 1, 0}, {2, 2, 1}), BooleanOp::unite, R(0), Blend::sum_clipped, {}, &stats);
+  check_ok(W, 1);
+  CHECK(stats.rounds == 1);
+  check_ok(boolean_op(A, box({2, 2, 2}, {3, 3, 3}), BooleanOp::unite), 2);
+  // A parallelepiped touching A at one point where an edge of each crosses the other's: the planar
+  // path cannot cut A there (a plane that is no parameter plane) and says so, no longer returning
+  // the two cells unglued (chi 2).
+  BSpline<R> P = box_cells<R>({0, 0, 0}, {1, 1, 1})[0];
+  const std::array<std::array<R, 3>, 3> e{{{0, 1, -1}, {0, 1, 1}, {1, 1, 1}}};
+  for (int i = 0; i < 8; ++i)
+    for (int c = 0; c < 3; ++c) {
+      R x = c == 2 ? R(3, 2) : R(1, 2);
+      for (int d = 0; d < 3; ++d)
+        if ((i >> d) & 1) x += e[d][c];
+      P.points[3 * i + c] = x;
+    }
+  CHECK_THROWS_AS(boolean_op(A, glue<R>({P}), BooleanOp::unite), NotPlanarError);
+}
