@@ -41,6 +41,12 @@ Json critical_json(const CriticalPoint<T>& c) {
                                          : "none: undecided";
   }
   if (c.exact && !c.unique && c.where != "corner") j["certificate"] = "exact root, multiplicity not decided (its box stays undecided)";
+  if (!c.along.empty()) {
+    // A segment of critical points: the distance is constant along it (an equation vanished).
+    j["parameters"] = box_json(c.lo, c.hi);
+    j["certificate"] = std::string("the distance is constant along the segment (an equation vanishes identically); ") +
+                       (c.collapsed ? "the segment is one point in space (exact)" : "its points are distinct points at the same distance, or undecided");
+  }
   return j;
 }
 
@@ -66,9 +72,11 @@ Json projection_json(const ProjectionResult<T>& r) {
   Json all = Json::array();
   for (const auto& c : r.critical) all.push_back(critical_json(c));
   out["critical_points"] = all;
-  Json und = Json::array();
+  Json und = Json::array(), und_closest = Json::array();
   for (const auto& c : r.undecided) und.push_back(critical_json(c));
+  for (std::size_t i : r.undecided_closest) und_closest.push_back(critical_json(r.undecided[i]));
   out["undecided"] = und;
+  out["undecided_closest"] = und_closest;
   out["boxes"] = r.boxes;
   std::string verdict;
   if (!ArithTraits<T>::exact)
@@ -77,7 +85,8 @@ Json projection_json(const ProjectionResult<T>& r) {
     verdict = std::string("certified: the closest point is in the first box of \"closest\"") +
               (r.complete ? ", and every critical point is listed" : "; some critical points stay undecided (farther away)");
   else
-    verdict = "not certified: " + std::to_string(r.closest.size()) + " candidates (or undecided boxes) may be the closest; the distance is enclosed";
+    verdict = "not certified: " + r.reason + " (" + std::to_string(r.closest.size()) + " candidates in \"closest\", " +
+              std::to_string(r.undecided_closest.size()) + " boxes in \"undecided_closest\"); the distance is enclosed";
   out["verdict"] = verdict;
   return out;
 }
@@ -93,6 +102,7 @@ Json contact_point_json(const ContactPoint<T>& p) {
     j["parameters"] = point_to_json(p.lo);
   else
     j["parameters"] = box_json(p.lo, p.hi);
+  if (!p.along.empty()) j["parameters"] = box_json(p.lo, p.hi);
   j["certificate"] = !ArithTraits<T>::exact ? "none (double)"
                      : p.where == "intersection" ? (p.exact ? "exact common point" : "Krawczyk: one common point of S1 - S2 = 0 (one parameter fixed) in the box")
                      : p.where == "corner-corner" ? "corners of the strata"
@@ -101,20 +111,26 @@ Json contact_point_json(const ContactPoint<T>& p) {
                      : p.exact ? "exact root, multiplicity not decided"
                      : p.unique ? "Krawczyk: exactly one simple root in the box"
                                 : "none: undecided";
+  if (!p.along.empty())
+    j["certificate"] = std::string("the distance is constant along the segment of parameters (an equation vanishes identically); ") +
+                       (p.collapsed ? "the segment is one pair of points in space (exact)" : "its pairs are distinct pairs at the same distance, or undecided");
   return j;
 }
 
 template <class T>
 Json contact_json(const ContactResult<T>& r) {
   Json out = distance_summary<T>(r);
-  out["intersecting"] = r.intersecting;
-  Json closest = Json::array(), pts = Json::array(), und = Json::array();
+  // "undecided": no common point was found, but the minimum's enclosure reaches 0.
+  out["intersecting"] = r.intersecting ? Json(true) : r.intersection_undecided ? Json("undecided") : Json(false);
+  Json closest = Json::array(), pts = Json::array(), und = Json::array(), und_closest = Json::array();
   for (std::size_t i : r.closest) closest.push_back(contact_point_json(r.points[i]));
   for (const auto& p : r.points) pts.push_back(contact_point_json(p));
   for (const auto& p : r.undecided) und.push_back(contact_point_json(p));
+  for (std::size_t i : r.undecided_closest) und_closest.push_back(contact_point_json(r.undecided[i]));
   out["closest"] = closest;
   out["stationary_pairs"] = pts;
   out["undecided"] = und;
+  out["undecided_closest"] = und_closest;
   out["strata_pairs"] = Json{{"all", r.strata_pairs}, {"solved", r.pairs_solved}, {"skipped", r.pairs_skipped}};
   out["boxes"] = r.boxes;
   if (r.intersecting && (!r.extremes.empty() || r.extremes_complete)) {
@@ -133,14 +149,17 @@ Json contact_json(const ContactResult<T>& r) {
   }
   std::string verdict;
   if (!ArithTraits<T>::exact)
-    verdict = "not certified: the subdivision ran in " + ArithTraits<T>::name();
+    verdict = std::string("not certified: the subdivision ran in ") + ArithTraits<T>::name() +
+              (r.intersecting ? "; a common point was found (in double)" : r.intersection_undecided ? "; whether the surfaces meet is undecided" : "");
   else if (r.intersecting)
     verdict = "certified: the surfaces intersect (a common point is certified), the minimum distance is 0";
   else if (r.closest_certified)
     verdict = "certified: the closest pair of points is in \"closest\" (one entry per pair of parameters giving them), the minimum distance is "
               "enclosed in \"distance2\"";
   else
-    verdict = "not certified: " + std::to_string(r.closest.size()) + " pairs (or undecided boxes) may be the closest; the minimum distance is enclosed";
+    verdict = "not certified: " + r.reason + " (" + std::to_string(r.closest.size()) + " pairs in \"closest\", " +
+              std::to_string(r.undecided_closest.size()) + " boxes in \"undecided_closest\"); the minimum distance is enclosed" +
+              (r.intersection_undecided ? ", and whether the surfaces meet is undecided" : "");
   out["verdict"] = verdict;
   return out;
 }
@@ -215,8 +234,8 @@ Commands add_project(CLI::App& app) {
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))
       ->capture_default_str();
   c->add_option("--steps", o->steps, "--curve: tracing steps in t between critical values")->check(CLI::Range(2, 100000))->capture_default_str();
-  c->add_option("--svg", o->svg, "--curve: write the parameter-domain and top-view figure here");
-  c->add_option("--obj", o->obj, "--curve: write the curve, the surface's boundary and the projection as OBJ polylines here");
+  c->add_option("--svg", o->svg, "--curve: write the parameter-domain and top-view figure here")->check(output_file());
+  c->add_option("--obj", o->obj, "--curve: write the curve, the surface's boundary and the projection as OBJ polylines here")->check(output_file());
   c->add_option("--max-depth", o->max_depth, "halvings per direction before a box is undecided")->check(CLI::Range(1, 200))->capture_default_str();
   c->add_option("--max-boxes", o->max_boxes, "solver boxes per system before the rest is undecided (ten times this in all)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000000)))

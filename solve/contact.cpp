@@ -126,33 +126,48 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
   const T tau = size2 / T(static_cast<long>(1) << 32);       // 2^-32 of the squared size
   const T tau_away = size2 / T(static_cast<long>(1) << 16);  // 2^-16 of it: a distance of 2^-8 of the size
 
-  // U: the corners' closest pair, exactly.
+  // U: the smallest squared distance found so far (branch and bound). In a float arithmetic the
+  // search's U comes from round-to-nearest values; `Uout`, the one reported, only from outward
+  // enclosures (the same in exact arithmetic). Every box lowers them: its points are real pairs.
   struct Job {
     std::size_t a, b;
     T lower;
   };
   std::vector<Job> jobs;
-  T U(-1);
+  T U(0), Uout(0);
+  bool haveU = false, haveUout = false;
+  const auto offer = [&](const T& search, const T& reported) {
+    if (!haveU || search < U) U = search, haveU = true;
+    if (!haveUout || reported < Uout) Uout = reported, haveUout = true;
+  };
   struct Found {
     ContactPoint<T> p;
-    long a = -1, b = -1;  // the strata it came from (-1: corner-corner)
+    long a = -1, b = -1;  // the strata it came from (-1: corner-corner, or a reduced pair)
   };
   std::vector<Found> found;
   std::vector<ContactPoint<T>> undecided;
+  const auto point_pair = [&](const Stratum<T>& a, const Stratum<T>& b, ContactPoint<T>& p) {
+    p.lo = p.hi = params(a, b, {});
+    p.exact = true;
+    p.p1 = stratum_point(a, {}, 0);
+    p.p2 = stratum_point(b, {}, 0);
+    if constexpr (ArithTraits<T>::exact) {
+      T d2(0);
+      for (int c = 0; c < 3; ++c) d2 += (p.p1[c] - p.p2[c]) * (p.p1[c] - p.p2[c]);
+      p.d2_lo = p.d2_hi = d2;
+    } else {
+      std::tie(p.d2_lo, p.d2_hi) = distance2_enclosure(a, b, pair_system(a, b), {}, {});
+    }
+    offer(p.d2_hi, p.d2_hi);
+  };
   for (std::size_t i = 0; i < A.size(); ++i)
     for (std::size_t j = 0; j < B.size(); ++j) {
       if (A[i].k + B[j].k == 0) {  // two points (corners, or a corner and the point)
         ContactPoint<T> p;
         p.where = A[i].where + "-" + B[j].where;
         p.strata = A[i].label + " / " + B[j].label;
-        p.lo = p.hi = params(A[i], B[j], {});
-        p.exact = p.unique = true;
-        p.p1 = stratum_point(A[i], {}, 0);
-        p.p2 = stratum_point(B[j], {}, 0);
-        T d2(0);
-        for (int c = 0; c < 3; ++c) d2 += (p.p1[c] - p.p2[c]) * (p.p1[c] - p.p2[c]);
-        p.d2_lo = p.d2_hi = d2;
-        if (U < T(0) || d2 < U) U = d2;
+        point_pair(A[i], B[j], p);
+        p.unique = true;
         found.push_back({std::move(p), -1, -1});
       } else {
         jobs.push_back({i, j, hull_distance2(A[i], B[j])});
@@ -163,31 +178,78 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
   const auto started = std::chrono::steady_clock::now();
   auto last = started;
   std::size_t done = 0;
-  for (const auto& job : jobs) {
-    ++done;
-    if (options.progress && std::chrono::steady_clock::now() - last > std::chrono::seconds(2)) {
-      last = std::chrono::steady_clock::now();
-      std::ostringstream line;
-      line << std::fixed << std::setprecision(1) << std::chrono::duration<double>(last - started).count() << " s: pairs of strata " << done << "/"
-           << jobs.size() << " (" << out.pairs_solved << " solved, " << out.pairs_skipped << " skipped), " << out.boxes << " boxes";
-      if (minimum && !(U < T(0))) line << ", smallest d^2 so far <= " << std::setprecision(6) << to_double(ArithTraits<T>::to_rational(U));
-      options.progress(line.str());
-    }
-    if (out.intersecting) break;
-    if (minimum && (U < job.lower || (!(tau < U) && A[job.a].k + B[job.b].k < 3))) {
-      ++out.pairs_skipped;  // farther than the minimum, or too few unknowns to certify a common point
-      continue;
-    }
-    const Stratum<T>& a = A[job.a];
-    const Stratum<T>& b = B[job.b];
-    const PairSystem<T> sys = pair_system(a, b);
+  std::vector<const Job*> deferred;
+  // One pair of strata; `full`: without the stop near contact. Returns true when the pair came
+  // within tau without a certified common point: it is then searched in full after the others
+  // (nothing of it is kept now), unless a common point is certified elsewhere first.
+  const auto run = [&](const Job& job, bool full) -> bool {
+    Stratum<T> a = A[job.a], b = B[job.b];
+    PairSystem<T> sys = pair_system(a, b);
+    // An equation that vanishes identically is a distance constant along its unknown on the whole
+    // pair of strata (it is W^3 / 2 times the derivative): the minimum and the critical points
+    // are those of the face at the unknown's lower end, times its range (a pole, a collapsed edge,
+    // a point on an axis of revolution). Only where every equation of a piece vanishes (the point
+    // at a centre of the surface) is the pair degenerate.
+    std::vector<int> along_a, along_b;
     bool degenerate = false;
-    for (const auto& g : sys.equations) {
-      bool z = true;
-      for (const auto& x : g.c) z = z && x == T(0);
-      degenerate = degenerate || z;
+    for (bool first = true; a.k + b.k > 0; first = false) {
+      std::size_t zeros = 0, last_zero = 0;
+      for (std::size_t i = 0; i < sys.equations.size(); ++i) {
+        bool z = true;
+        for (const auto& x : sys.equations[i].c) z = z && x == T(0);
+        if (z) ++zeros, last_zero = i;
+      }
+      if (zeros == 0) break;
+      if (first && zeros == sys.n && a.where == "interior" && (b.k == 0 || b.where == "interior")) {
+        degenerate = true;
+        break;
+      }
+      const bool in_a = last_zero < static_cast<std::size_t>(a.k);
+      Stratum<T>& s = in_a ? a : b;
+      const int v = static_cast<int>(in_a ? last_zero : last_zero - a.k);
+      int d = 0;
+      while (s.var[d] != v) ++d;
+      (in_a ? along_a : along_b).push_back(d);
+      const std::string where = s.where, label = s.label;
+      s = stratum_face(s, d, 0);
+      s.where = where;
+      s.label = label;
+      sys = pair_system(a, b);
     }
-    const std::string where = a.where + "-" + b.where, label = a.label + " / " + b.label;
+    const bool reduced = !along_a.empty() || !along_b.empty();
+    const std::string where = a.where + "-" + b.where;
+    const std::string label = a.label + " / " + b.label +
+                              (reduced ? ": the distance is constant along " + std::to_string(along_a.size() + along_b.size()) +
+                                             " of the parameters (an equation vanishes identically), its critical points form segments"
+                                       : "");
+    // The reduced pair's parameters widened back to the segments along which the distance is
+    // constant, and whether each segment is one point in space.
+    const auto widen = [&](ContactPoint<T>& p) {
+      p.along.clear();
+      for (int d : along_a) {
+        p.along.push_back(d);
+        p.lo[d] = A[job.a].lo[d];
+        p.hi[d] = A[job.a].hi[d];
+      }
+      for (int d : along_b) {
+        p.along.push_back(a.dims + d);
+        p.lo[a.dims + d] = B[job.b].lo[d];
+        p.hi[a.dims + d] = B[job.b].hi[d];
+      }
+      if (p.exact && !p.along.empty()) {
+        std::vector<T> ua(p.lo.begin(), p.lo.begin() + a.dims), ub(p.lo.begin() + a.dims, p.lo.end());
+        p.collapsed = constant_along(A[job.a], along_a, ua) && constant_along(B[job.b], along_b, ub);
+      }
+    };
+    if (a.k + b.k == 0) {  // reduced to a pair of points
+      ContactPoint<T> p;
+      p.where = where;
+      p.strata = label;
+      point_pair(a, b, p);
+      widen(p);
+      found.push_back({std::move(p), -1, -1});
+      return false;
+    }
     // The whole search's budget: max_boxes for ten systems; past it the pairs are left undecided whole.
     const bool over_budget = out.boxes >= options.max_boxes * 10;
     if (degenerate || over_budget) {
@@ -197,16 +259,17 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       u.degenerate = degenerate;
       u.lo = params(a, b, sys.lo);
       u.hi = params(a, b, sys.hi);
-      std::tie(u.d2_lo, u.d2_hi) = distance2_range(sys, sys.lo, sys.hi);
-      round_enclosure(u.d2_lo, u.d2_hi);
+      std::tie(u.d2_lo, u.d2_hi) = distance2_enclosure(a, b, sys, sys.lo, sys.hi);
       u.p1 = stratum_point(a, sys.lo, 0);
       u.p2 = stratum_point(b, sys.lo, static_cast<std::size_t>(a.k));
-      if (U < T(0) || u.d2_hi < U) U = u.d2_hi;
+      widen(u);
+      offer(u.d2_hi, u.d2_hi);
       undecided.push_back(std::move(u));
-      continue;
+      return false;
     }
     // Branch and bound: boxes whose distance is surely above U are not searched; every box lowers U.
     std::vector<T> near_lo, near_hi;
+    bool stop_near = !full;
     Pruning<T> pr;
     pr.aux = {sys.W, sys.D[0], sys.D[1], sys.D[2]};
     pr.discard = [&](const detail::Bern<T>* aux, std::size_t, const std::vector<T>& lo, const std::vector<T>& hi) {
@@ -220,6 +283,7 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
           if (m >> l & 1) i += g.deg[l] * detail::tensor_stride(g.deg, static_cast<int>(l));
         return g.c[i];
       };
+      std::size_t best = 0;
       for (std::size_t m = 0; m < (std::size_t(1) << nv); ++m) {
         T d2(0);
         for (int c = 1; c <= 3; ++c) {
@@ -228,17 +292,27 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
         }
         const T w = corner(aux[0], m);
         d2 = d2 / (w * w);
-        if (d2 < high) high = d2;
+        if (d2 < high) high = d2, best = m;
       }
-      if (high < U) U = high;
+      if (!haveU || high < U) {
+        T reported = high;
+        if constexpr (!ArithTraits<T>::exact) {
+          // Round to nearest: the reported bound is the corner's distance enclosed exactly.
+          std::vector<T> x(nv);
+          for (std::size_t l = 0; l < nv; ++l) x[l] = best >> l & 1 ? hi[l] : lo[l];
+          reported = distance2_enclosure(a, b, sys, x, x).second;
+        }
+        offer(high, reported);
+      }
       // Within tau of each other the surfaces probably meet along a curve, where Eq. 4 has no
       // isolated solutions and the search would not end: the first such box is kept for the
-      // common-point certificate below, and this pair's search stops.
-      if (!(tau < high) && near_lo.empty()) {
+      // common-point certificate below, and this pair's search stops (it is searched again in
+      // full when no common point is certified: surfaces that nearly touch).
+      if (stop_near && !(tau < high) && near_lo.empty()) {
         near_lo = lo;
         near_hi = hi;
       }
-      return U < low || !near_lo.empty();
+      return U < low || (stop_near && !near_lo.empty());
     };
     // Away from contact: boxes whose points are surely within 2^-8 of the model's size of each
     // other are skipped (shallower penetrations are not searched).
@@ -248,44 +322,73 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       return !(tau_away < distance2_bounds(aux + 1, aux[0]).second);
     };
     const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, minimum ? &pr : search == Search::away_from_contact ? &away : nullptr);
-    ++out.pairs_solved;
     out.boxes += r.boxes;
+    if (!near_lo.empty()) {
+      std::vector<T> lo4, hi4;
+      if (!certify_common_point(a, b, sys, near_lo, near_hi, lo4, hi4)) return true;  // they may only come close (2^-20 apart)
+      out.intersecting = true;
+      out.common_lo = lo4;
+      out.common_hi = hi4;
+    }
+    ++out.pairs_solved;
     const auto add = [&](const RootBox<T>& root, bool as_root) {
       ContactPoint<T> p;
       p.where = where;
       p.strata = label;
       p.exact = as_root && root.exact;
-      p.unique = as_root && root.unique;
+      p.unique = as_root && root.unique && !reduced;
       const std::vector<T>& xl = p.exact ? root.point : root.lo;
       const std::vector<T>& xh = p.exact ? root.point : root.hi;
       p.lo = params(a, b, xl);
       p.hi = params(a, b, xh);
-      if (p.exact) {
+      if (p.exact)
         p.d2_lo = p.d2_hi = distance2_at(sys, root.point);
-      } else {
-        std::tie(p.d2_lo, p.d2_hi) = distance2_range(sys, xl, xh);
-        round_enclosure(p.d2_lo, p.d2_hi);
-      }
+      else
+        std::tie(p.d2_lo, p.d2_hi) = distance2_enclosure(a, b, sys, xl, xh);
       std::vector<T> at = xl;
       for (std::size_t l = 0; l < xl.size(); ++l) at[l] = (xl[l] + xh[l]) / T(2);
       p.p1 = stratum_point(a, at, 0);
       p.p2 = stratum_point(b, at, static_cast<std::size_t>(a.k));
-      if (as_root && (U < T(0) || p.d2_hi < U)) U = p.d2_hi;
+      widen(p);
+      // Undecided boxes too: every point of a box is a pair of points of the strata, so the
+      // box's upper bound bounds the minimum (a candidate above it cannot be the closest).
+      offer(p.d2_hi, p.d2_hi);
       if (as_root)
-        found.push_back({std::move(p), static_cast<long>(job.a), static_cast<long>(job.b)});
+        found.push_back({std::move(p), reduced ? -1L : static_cast<long>(job.a), reduced ? -1L : static_cast<long>(job.b)});
       else
         undecided.push_back(std::move(p));
     };
     for (const auto& root : r.roots) add(root, true);
     for (const auto& box : r.undecided) add(box, false);
-    if (!near_lo.empty()) {
-      std::vector<T> lo4, hi4;
-      if (certify_common_point(a, b, sys, near_lo, near_hi, lo4, hi4)) {
-        out.intersecting = true;
-        out.common_lo = lo4;
-        out.common_hi = hi4;
-      }
+    return false;
+  };
+  for (const auto& job : jobs) {
+    ++done;
+    if (options.progress && std::chrono::steady_clock::now() - last > std::chrono::seconds(2)) {
+      last = std::chrono::steady_clock::now();
+      std::ostringstream line;
+      line << std::fixed << std::setprecision(1) << std::chrono::duration<double>(last - started).count() << " s: pairs of strata " << done << "/"
+           << jobs.size() << " (" << out.pairs_solved << " solved, " << out.pairs_skipped << " skipped), " << out.boxes << " boxes";
+      if (minimum && haveU) line << ", smallest d^2 so far <= " << std::setprecision(6) << to_double(ArithTraits<T>::to_rational(U));
+      options.progress(line.str());
     }
+    if (out.intersecting) break;
+    if (minimum && haveU && U < job.lower) {
+      ++out.pairs_skipped;  // farther than the minimum
+      continue;
+    }
+    if (run(job, false)) deferred.push_back(&job);
+  }
+  // Pairs that came within tau of each other with no common point certified: searched in full
+  // (surfaces that nearly touch); where they do meet along a curve, the budget leaves boxes
+  // undecided. Not needed once a common point is certified (the minimum is then 0).
+  for (const Job* job : deferred) {
+    if (out.intersecting) break;
+    if (minimum && haveU && U < job->lower) {
+      ++out.pairs_skipped;
+      continue;
+    }
+    run(*job, true);
   }
 
   // Merge: exact pairs by equality, boxes that overlap into one entry.
@@ -346,9 +449,9 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
   }
   // Only what can matter to the minimum (everything when all stationary pairs are asked for).
   for (auto& p : kept)
-    if (!minimum || !(U < p.d2_lo)) out.points.push_back(std::move(p));
+    if (!minimum || !(Uout < p.d2_lo)) out.points.push_back(std::move(p));
   for (auto& u : undecided)
-    if (!minimum || !(U < u.d2_lo)) out.undecided.push_back(std::move(u));
+    if (!minimum || !(Uout < u.d2_lo)) out.undecided.push_back(std::move(u));
   std::stable_sort(out.points.begin(), out.points.end(), [](const auto& x, const auto& y) { return x.d2_lo < y.d2_lo; });
 
   for (const auto& p : out.points)
@@ -357,11 +460,21 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       out.common_lo = p.lo;
       out.common_hi = p.hi;
     }
+  // A box whose (outward) enclosure has upper bound 0: every point of it is a common point.
+  if (minimum && !out.intersecting && haveUout && !(T(0) < Uout))
+    for (const auto* L : {&out.points, &out.undecided})
+      for (const auto& p : *L)
+        if (!out.intersecting && !(T(0) < p.d2_hi)) {
+          out.intersecting = true;
+          out.common_lo = p.lo;
+          out.common_hi = p.hi;
+        }
   if (minimum && out.intersecting) {
     out.distance2_lo = out.distance2_hi = T(0);
     ContactPoint<T> c;
     c.where = "intersection";
-    c.strata = "a common point of the surfaces (S1 - S2 = 0 certified)";
+    c.strata = ArithTraits<T>::exact ? "a common point of the surfaces (S1 - S2 = 0 certified)"
+                                     : "a common point of the surfaces (S1 - S2 = 0 found in " + ArithTraits<T>::name() + ", not certified)";
     c.lo = out.common_lo;
     c.hi = out.common_hi;
     c.exact = out.common_lo == out.common_hi;
@@ -370,32 +483,53 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     out.points.insert(out.points.begin(), c);
     out.closest = {0};
     out.closest_certified = ArithTraits<T>::exact;
+    if (!out.closest_certified) out.reason = "the subdivision ran in " + ArithTraits<T>::name();
     return out;
   }
-  out.distance2_hi = U;
-  out.distance2_lo = U;
+  out.distance2_hi = Uout;
+  out.distance2_lo = Uout;
   for (const auto& p : out.points)
     if (p.d2_lo < out.distance2_lo) out.distance2_lo = p.d2_lo;
-  bool undecided_below = false;
-  for (const auto& u : out.undecided) {
+  for (const auto& u : out.undecided)
     if (u.d2_lo < out.distance2_lo) out.distance2_lo = u.d2_lo;
-    undecided_below = undecided_below || !(U < u.d2_lo);
-  }
+  // A candidate whose lower bound is above the smallest upper bound (of any candidate or box) is
+  // not the closest; an undecided box below it may hold the closest pair.
   for (std::size_t i = 0; i < out.points.size(); ++i)
     if (!(out.distance2_hi < out.points[i].d2_lo)) out.closest.push_back(i);
-  const bool within_tau = minimum && !(tau < U);
+  for (std::size_t i = 0; i < out.undecided.size(); ++i)
+    if (!(out.distance2_hi < out.undecided[i].d2_lo)) out.undecided_closest.push_back(i);
   // One closest pair: one candidate, or several exact ones that are the same points in space (a
-  // seam or a collapsed edge maps several parameters to one point).
-  bool one = out.closest.size() == 1 && (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact);
+  // seam or a collapsed edge maps several parameters to one point); a segment of equidistant
+  // critical points is one pair only when it is one point in space.
+  const auto single = [](const ContactPoint<T>& p) { return p.along.empty() || p.collapsed; };
+  bool one = out.closest.size() == 1 && (out.points[out.closest[0]].unique || out.points[out.closest[0]].exact) &&
+             single(out.points[out.closest[0]]);
   if (out.closest.size() > 1) {
     const auto& f = out.points[out.closest[0]];
     one = true;
     for (std::size_t i : out.closest) {
       const auto& p = out.points[i];
-      one = one && p.exact && f.exact && p.d2_lo == f.d2_lo && p.p1 == f.p1 && p.p2 == f.p2;
+      one = one && p.exact && f.exact && single(p) && p.d2_lo == f.d2_lo && p.p1 == f.p1 && p.p2 == f.p2;
     }
   }
-  out.closest_certified = ArithTraits<T>::exact && one && !undecided_below && !within_tau;
+  out.closest_certified = ArithTraits<T>::exact && one && out.undecided_closest.empty();
+  if (minimum && !(T(0) < out.distance2_lo)) out.intersection_undecided = true;
+  // Why not certified, in words.
+  if (!ArithTraits<T>::exact) {
+    out.reason = "the subdivision ran in " + ArithTraits<T>::name();
+  } else if (!out.undecided_closest.empty()) {
+    out.reason = std::to_string(out.undecided_closest.size()) + " undecided box(es) may hold the closest " + (B[0].dims == 0 ? "point" : "pair") +
+                 (out.closest.empty() ? std::string(", closer than every certified candidate") : std::string(""));
+  } else if (out.closest.empty()) {
+    out.reason = "no candidate below the smallest upper bound was found (the search was cut short)";
+  } else if (!one) {
+    bool segment = false;
+    for (std::size_t i : out.closest) segment = segment || !single(out.points[i]);
+    out.reason = segment ? "the distance is constant along a segment of critical points that is not one point in space: the closest pair is not unique"
+                 : out.closest.size() > 1
+                     ? std::to_string(out.closest.size()) + " candidates' distance enclosures overlap: the closest is not decided (or not unique)"
+                     : "the closest candidate's box is not certified to hold one simple stationary pair";
+  }
   return out;
 }
 

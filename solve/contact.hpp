@@ -50,6 +50,12 @@ struct ContactPoint {
   int side1 = 0, side2 = 0;  // extremes: the sign of (p2 - p1).(S_u x S_v) and of (p1 - p2).(S_r x S_t) at the box's centre
   T d2_lo, d2_hi;         // |S1 - S2|^2 over the box
   std::vector<T> p1, p2;  // the points (at lo when exact, else at the box's centre)
+  /// Parameters (indices into (u, v, r, t)) along which the distance is constant on the strata (an
+  /// equation vanished identically): the entry is the segment [lo, hi] in them, each of its
+  /// parameters a stationary pair of the same distance; `collapsed`: the segment is one point in
+  /// space (a pole, a collapsed edge; decided exactly).
+  std::vector<int> along;
+  bool collapsed = false;
 };
 
 template <class T>
@@ -57,9 +63,12 @@ struct ContactResult {
   std::vector<ContactPoint<T>> points;     // stationary pairs that can matter to the minimum, by d2_lo
   std::vector<ContactPoint<T>> undecided;  // boxes left open
   std::vector<std::size_t> closest;        // pairs whose distance can be the smallest
+  std::vector<std::size_t> undecided_closest;  // undecided boxes that may hold a pair as close (or closer)
   bool closest_certified = false;          // one such pair and no undecided box below it
+  std::string reason;                      // when not certified: why, in words
   T distance2_lo, distance2_hi;            // the minimum squared distance, enclosed
   bool intersecting = false;               // a common point is certified: the minimum is exactly 0
+  bool intersection_undecided = false;     // not intersecting, but the enclosure of the minimum reaches 0
   std::vector<T> common_lo, common_hi;     // its (u, v, r, t) box
   std::size_t strata_pairs = 0, pairs_solved = 0, pairs_skipped = 0, boxes = 0;
   /// Intersecting surfaces: the stationary pairs away from the intersection (the paper's extreme

@@ -283,12 +283,19 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
             auto& pts = dir < 0 ? down : up;
             std::array<double, 2> p = start, prev = start;
             const double target = dir < 0 ? tlo : thi;
+            // Steps shrink toward the target (t_k = target - (target - ts)(1 - k/steps)^2): a
+            // branch ending in a fold behaves like sqrt(t* - t), and uniform steps jumped over
+            // its last part. The predictor is the secant scaled to the step.
+            double t_prev = ts, dt_prev = 0;
             for (int k = 1; k <= options.steps; ++k) {
-              const double t = ts + (target - ts) * k / options.steps;
-              std::array<double, 2> guess = {2 * p[0] - prev[0], 2 * p[1] - prev[1]};
-              if (k == 1) guess = p;
+              const double r = 1.0 - static_cast<double>(k) / options.steps;
+              const double t = target - (target - ts) * r * r, dt = t - t_prev;
+              std::array<double, 2> guess = p;
+              if (k > 1 && dt_prev != 0)
+                for (int i = 0; i < 2; ++i) guess[i] = p[i] + (p[i] - prev[i]) * (dt / dt_prev);
               bool ok = false;
-              for (int it = 0; it < 30; ++it) {
+              double last_step = INFINITY;
+              for (int it = 0; it < 40; ++it) {
                 const std::vector<double> at{guess[0], guess[1], t};
                 Eigen::Vector2d f(detail::bern_value(Fd[0], at), detail::bern_value(Fd[1], at));
                 Eigen::Matrix2d J;
@@ -298,11 +305,18 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
                 if (!d.allFinite()) break;
                 guess[0] -= d(0);
                 guess[1] -= d(1);
-                if (d.lpNorm<Eigen::Infinity>() < 1e-15) {
+                const double step = d.lpNorm<Eigen::Infinity>();
+                // Converged: a step at double's resolution, or (near a fold, where J is nearly
+                // singular and rounding noise keeps the steps above it) steps that stopped
+                // shrinking at a small size.
+                if (step < 1e-15 || (step < 1e-9 && step >= last_step / 2)) {
                   ok = true;
                   break;
                 }
+                last_step = step;
               }
+              t_prev = t;
+              dt_prev = dt;
               if (!ok || guess[0] < -1e-9 || guess[0] > 1 + 1e-9 || guess[1] < -1e-9 || guess[1] > 1 + 1e-9) {
                 lost = true;
                 break;

@@ -37,18 +37,22 @@ ProjectionResult<T> project_point(const BSpline<T>& S, const std::vector<T>& P, 
     c.d2_lo = p.d2_lo;
     c.d2_hi = p.d2_hi;
     c.point = p.p1;
+    c.along = p.along;
+    c.collapsed = p.collapsed;
     return c;
   };
   ProjectionResult<T> out;
   for (const auto& p : all.points) out.critical.push_back(convert(p));
   for (const auto& p : all.undecided) out.undecided.push_back(convert(p));
   out.closest = all.closest;
+  out.undecided_closest = all.undecided_closest;
   out.closest_certified = all.closest_certified;
+  out.reason = all.reason;
   out.distance2_lo = all.distance2_lo;
   out.distance2_hi = all.distance2_hi;
   out.boxes = all.boxes;
   out.complete = out.undecided.empty();
-  for (const auto& c : out.critical) out.complete = out.complete && (c.unique || c.exact) && !c.merged;
+  for (const auto& c : out.critical) out.complete = out.complete && (c.unique || c.exact) && !c.merged && (c.along.empty() || c.collapsed);
   return out;
 }
 

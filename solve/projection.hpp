@@ -39,14 +39,18 @@ struct CriticalPoint {
   bool merged = false;   // boxes from two sides of a knot line that overlap: one point, or two very close ones
   T d2_lo, d2_hi;        // |S - P|^2 over the box, enclosed (equal when exact)
   std::vector<T> point;  // S at the exact point, else at the box's centre
+  std::vector<int> along;  // parameters along which the distance is constant (a segment of critical points, [lo, hi] in them)
+  bool collapsed = false;  // that segment is one point in space (a pole)
 };
 
 template <class T>
 struct ProjectionResult {
   std::vector<CriticalPoint<T>> critical;   // the candidates, ordered by d2_lo
   std::vector<CriticalPoint<T>> undecided;  // boxes the solver left open (multiple roots, limits)
-  std::vector<std::size_t> closest;         // candidates whose distance can be the smallest
+  std::vector<std::size_t> closest;         // candidates whose distance can be the smallest (none above an undecided box's upper bound)
+  std::vector<std::size_t> undecided_closest;  // undecided boxes that may hold a point as close (or closer)
   bool closest_certified = false;           // exactly one such candidate and no undecided box below it
+  std::string reason;                       // when not certified: why, in words
   T distance2_lo, distance2_hi;             // the smallest squared distance, enclosed
   std::size_t boxes = 0;                    // solver boxes examined
   bool complete = false;                    // every stratum solved without undecided boxes

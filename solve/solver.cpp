@@ -337,8 +337,11 @@ Rational round_to_dyadic(const Rational& x, int bits, bool down) {
 template <class T>
 void round_enclosure(T& lo, T& hi) {
   if constexpr (std::is_same_v<T, Rational>) {
-    // 72 significant bits, from the exact exponent (values beyond double's range too).
-    const auto bits = [](const T& x) { return x == 0 ? 200 : static_cast<int>(72 - exponent_of(x)); };
+    // 72 significant bits, from the exact exponent (values beyond double's range too), and finer
+    // where the enclosure is narrower: rounding adds at most a quarter of its width (feet whose
+    // d^2 differ by 2e-25 at d^2 = 1/2 stay apart).
+    const int narrow = lo < hi ? static_cast<int>(2 - exponent_of(T(hi - lo))) : 0;
+    const auto bits = [&](const T& x) { return x == 0 ? std::max(200, narrow) : std::max(static_cast<int>(72 - exponent_of(x)), narrow); };
     const bool nonnegative = !(lo < 0);
     lo = round_to_dyadic(lo, bits(lo), true);
     hi = round_to_dyadic(hi, bits(hi), false);
@@ -564,20 +567,39 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       b[l] = (chi[l] - lo[l]) / width0[l];
     }
     const Node<T> H = restrict_node(root, a, b);
-    const auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
+    auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
     if (K.outcome == KrawczykResult<T>::excluded) continue;
+    Node<T> G = H;  // the box the test speaks of
+    if (K.outcome == KrawczykResult<T>::unknown && !out.budget_exhausted) {
+      // Epsilon-inflation (Rump): a root 1e-25 from a face of the hull (just beside a split line)
+      // is never inside K(X) of so small a hull; the hull widened by its width on each side
+      // (within the system's box) can hold it well inside.
+      std::vector<T> a2(n), b2(n);
+      for (std::size_t l = 0; l < n; ++l) {
+        const T w = b[l] - a[l];
+        a2[l] = tmax(T(a[l] - w), T(0));
+        b2[l] = tmin(T(b[l] + w), T(1));
+      }
+      Node<T> H2 = restrict_node(root, a2, b2);
+      const auto K2 = krawczyk(H2.f, n, false);
+      if (K2.outcome == KrawczykResult<T>::excluded) continue;
+      if (K2.outcome == KrawczykResult<T>::unique) {
+        K = K2;
+        G = std::move(H2);
+      }
+    }
     if (K.outcome == KrawczykResult<T>::unique) {
-      const Node<T> R = refine(H, K.lo, K.hi, width0, options.refine_bits);
+      const Node<T> R = refine(G, K.lo, K.hi, width0, options.refine_bits);
       // A certified root already found in the hull is this one; one that may straddle it is
       // left undecided.
       bool same = false, unclear = false;
       for (const auto& r : out.roots) {
         if (r.exact) {  // a known exact root: the hull's one root if the hull holds it
-          same = same || box_inside(r.point, r.point, H.lo, H.hi);
+          same = same || box_inside(r.point, r.point, G.lo, G.hi);
           continue;
         }
-        if (!boxes_touch(r.lo, r.hi, H.lo, H.hi)) continue;
-        if (box_inside(r.lo, r.hi, H.lo, H.hi))
+        if (!boxes_touch(r.lo, r.hi, G.lo, G.hi)) continue;
+        if (box_inside(r.lo, r.hi, G.lo, G.hi))
           same = true;
         else
           unclear = true;

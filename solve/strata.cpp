@@ -1,9 +1,15 @@
 // Strata and stationary-distance systems (solve/strata.hpp), for Rational and double.
 #include "solve/strata.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
 #include "exact/rational.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
+#include "float/rounding.hpp"
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
 
@@ -76,7 +82,114 @@ Stratum<T> fix_side(const Stratum<T>& base, int d, int side) {
   return s;
 }
 
+/// The stratum with its coefficients taken exactly as rationals (every float is one).
+template <class T>
+Stratum<Rational> exact_stratum(const Stratum<T>& s) {
+  const auto conv = [](const Bern<T>& b) {
+    Bern<Rational> o;
+    o.deg = b.deg;
+    o.c.reserve(b.c.size());
+    for (const auto& x : b.c) o.c.push_back(ArithTraits<T>::to_rational(x));
+    return o;
+  };
+  Stratum<Rational> r;
+  r.dims = s.dims;
+  r.k = s.k;
+  for (int c = 0; c < 3; ++c) r.X[c] = conv(s.X[c]);
+  r.W = conv(s.W);
+  r.rational = s.rational;
+  for (int d = 0; d < 2; ++d) {
+    r.var[d] = s.var[d];
+    r.lo[d] = ArithTraits<T>::to_rational(s.lo[d]);
+    r.hi[d] = ArithTraits<T>::to_rational(s.hi[d]);
+  }
+  return r;
+}
+
+/// The difference's numerators D = X_A W_B - X_B W_A and its denominator W = W_A W_B in the
+/// kA + kB unknowns of the pair.
+template <class T>
+void difference_forms(const Stratum<T>& A, const Stratum<T>& B, Bern<T> (&D)[3], Bern<T>& W) {
+  const std::size_t n = static_cast<std::size_t>(A.k + B.k), oa = 0, ob = static_cast<std::size_t>(A.k);
+  const Bern<T> WA = lift(A.W, oa, n), WB = lift(B.W, ob, n);
+  for (int c = 0; c < 3; ++c) {
+    const Bern<T> P = detail::bern_product(lift(A.X[c], oa, n), WB), Q = detail::bern_product(lift(B.X[c], ob, n), WA);
+    std::vector<int> target(n);
+    for (std::size_t l = 0; l < n; ++l) target[l] = std::max(P.deg[l], Q.deg[l]);
+    D[c] = detail::bern_sub(elevate(P, target), elevate(Q, target));
+  }
+  W = detail::bern_product(WA, WB);
+}
+
+template <class T>
+T next_toward(const T& y, bool up) {
+  if constexpr (std::is_same_v<T, double>) {
+    return std::nextafter(y, up ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+  } else if constexpr (std::is_same_v<T, Mpfr>) {
+    Mpfr z = y;
+    if (up)
+      mpfr_nextabove(z.get());
+    else
+      mpfr_nextbelow(z.get());
+    return z;
+  } else {
+    return y;
+  }
+}
+
 }  // namespace
+
+template <class T>
+T round_directed(const Rational& x, bool up) {
+  if constexpr (ArithTraits<T>::exact) {
+    (void)up;
+    return ArithTraits<T>::from_rational(x);
+  } else {
+    T y = ArithTraits<T>::from_rational(x);
+    if (!is_finite_value(y)) {
+      // Beyond the format's range: infinity on its own side, the largest finite value on the other.
+      const bool positive = 0 < x;
+      if (positive == up) return y;
+      T big = next_toward(y, !up);
+      return big;
+    }
+    const Rational r = ArithTraits<T>::to_rational(y);
+    if (up && r < x) y = next_toward(y, true);
+    if (!up && x < r) y = next_toward(y, false);
+    return y;
+  }
+}
+
+template <class T>
+Stratum<T> stratum_face(const Stratum<T>& s, int d, int side) {
+  return fix_side(s, d, side);
+}
+
+template <class T>
+bool constant_along(const Stratum<T>& A, const std::vector<int>& dirs, const std::vector<T>& uv) {
+  if constexpr (!ArithTraits<T>::exact) {
+    (void)A;
+    (void)dirs;
+    (void)uv;
+    return false;
+  } else {
+    Bern<T> X[3] = {A.X[0], A.X[1], A.X[2]}, W = A.W;
+    for (int v = A.k - 1; v >= 0; --v) {
+      int d = 0;
+      while (d < A.dims && A.var[d] != v) ++d;
+      if (d == A.dims || std::find(dirs.begin(), dirs.end(), d) != dirs.end()) continue;
+      const T t = (uv[d] - A.lo[d]) / (A.hi[d] - A.lo[d]);
+      for (auto& g : X) g = detail::bern_fix(g, v, t);
+      if (A.rational) W = detail::bern_fix(W, v, t);
+    }
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t i = 0; i < X[c].c.size(); ++i) {
+        const T& wi = W.c.size() == 1 ? W.c[0] : W.c[i];
+        if (!(X[c].c[i] * W.c[0] == X[c].c[0] * wi)) return false;
+      }
+    return true;
+  }
+}
 
 template <class T>
 void require_surface(const BSpline<T>& S, const std::string& name, const Limits& limits, int degree_factor) {
@@ -302,6 +415,59 @@ std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& 
   return {lo, hi};
 }
 
+namespace {
+
+/// The bounds of distance2_bounds over [a, b] (local coordinates of the system's box, la <= lb).
+template <class T>
+std::pair<T, T> bounds_on_box(Bern<T> (&D)[3], Bern<T>& W, const std::vector<T>& la, const std::vector<T>& lb) {
+  const std::size_t n = la.size();
+  for (std::size_t l = 0; l < n; ++l)
+    if (la[l] < lb[l]) {
+      for (auto& g : D) g = detail::bern_restrict(g, static_cast<int>(l), la[l], lb[l]);
+      W = detail::bern_restrict(W, static_cast<int>(l), la[l], lb[l]);
+    }
+  for (std::size_t l = n; l-- > 0;)
+    if (!(la[l] < lb[l])) {
+      for (auto& g : D) g = detail::bern_fix(g, static_cast<int>(l), la[l]);
+      W = detail::bern_fix(W, static_cast<int>(l), la[l]);
+    }
+  return distance2_bounds(D, W);
+}
+
+}  // namespace
+
+template <class T>
+std::pair<T, T> distance2_enclosure(const Stratum<T>& A, const Stratum<T>& B, const PairSystem<T>& sys, const std::vector<T>& a,
+                                    const std::vector<T>& b) {
+  if constexpr (ArithTraits<T>::exact) {
+    (void)A;
+    (void)B;
+    auto r = distance2_range(sys, a, b);
+    round_enclosure(r.first, r.second);
+    return r;
+  } else {
+    // Round-to-nearest de Casteljau on |D|^2 can give a negative or inverted range (a point on the
+    // surface: [5.9e-32, -9.9e-17]); the exact rational value of the float data cannot.
+    const Stratum<Rational> EA = exact_stratum(A), EB = exact_stratum(B);
+    Bern<Rational> D[3], W;
+    difference_forms(EA, EB, D, W);
+    const std::size_t n = sys.n;
+    std::vector<Rational> la(n), lb(n);
+    for (std::size_t l = 0; l < n; ++l) {
+      const Rational lo = ArithTraits<T>::to_rational(sys.lo[l]), w = ArithTraits<T>::to_rational(sys.hi[l]) - lo;
+      la[l] = (ArithTraits<T>::to_rational(a[l]) - lo) / w;
+      lb[l] = (ArithTraits<T>::to_rational(b[l]) - lo) / w;
+      if (la[l] < 0) la[l] = 0;
+      if (lb[l] > 1) lb[l] = 1;
+      if (lb[l] < la[l]) lb[l] = la[l];
+    }
+    const auto [lo, hi] = bounds_on_box(D, W, la, lb);
+    T tlo = round_directed<T>(lo, false), thi = round_directed<T>(hi, true);
+    if (tlo < T(0)) tlo = T(0);
+    return {tlo, thi};
+  }
+}
+
 template <class T>
 T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
   std::vector<T> t(sys.n);
@@ -320,7 +486,12 @@ T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
   template std::vector<T> stratum_point(const Stratum<T>&, const std::vector<T>&, std::size_t);                          \
   template std::pair<T, T> distance2_bounds(const Bern<T>*, const Bern<T>&);                                            \
   template std::pair<T, T> distance2_range(const PairSystem<T>&, const std::vector<T>&, const std::vector<T>&);          \
-  template T distance2_at(const PairSystem<T>&, const std::vector<T>&);
+  template T distance2_at(const PairSystem<T>&, const std::vector<T>&);                                                 \
+  template std::pair<T, T> distance2_enclosure(const Stratum<T>&, const Stratum<T>&, const PairSystem<T>&, const std::vector<T>&, \
+                                               const std::vector<T>&);                                                  \
+  template T round_directed<T>(const Rational&, bool);                                                                   \
+  template Stratum<T> stratum_face(const Stratum<T>&, int, int);                                                         \
+  template bool constant_along(const Stratum<T>&, const std::vector<int>&, const std::vector<T>&);
 SPLINEX_STRATA(Rational)
 SPLINEX_STRATA(double)
 SPLINEX_STRATA(Mpfr)

@@ -55,6 +55,11 @@ std::vector<Stratum<T>> surface_strata(const BSpline<T>& S, const Limits& limits
 template <class T>
 std::vector<Stratum<T>> curve_strata(const BSpline<T>& C, const Limits& limits);
 
+/// The stratum s with its object parameter d fixed at its lower (side 0) or upper (side 1) end:
+/// one free parameter fewer (a piece's edge, an edge's end).
+template <class T>
+Stratum<T> stratum_face(const Stratum<T>& s, int d, int side);
+
 /// A point as a stratum with no free parameter.
 template <class T>
 Stratum<T> point_stratum(const std::vector<T>& P);
@@ -107,6 +112,25 @@ std::pair<T, T> distance2_bounds(const Bern<T>* D, const Bern<T>& W);
 /// range, the tighter of each.
 template <class T>
 std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& a, const std::vector<T>& b);
+
+/// The squared distance of the strata A and B (their system sys) over the sub-box [a, b] (a <= b,
+/// sides of width 0 allowed), enclosed and rounded outward: Rational, distance2_range widened to
+/// 72 bits; a float arithmetic, computed exactly from the strata's (float) coefficients taken as
+/// rationals (D and W only: no rounding error, no inverted or negative interval) and rounded
+/// outward to T. Holds |S_A - S_B|^2 at every point of the box.
+template <class T>
+std::pair<T, T> distance2_enclosure(const Stratum<T>& A, const Stratum<T>& B, const PairSystem<T>& sys, const std::vector<T>& a,
+                                    const std::vector<T>& b);
+
+/// x rounded to T downward (up = false) or upward: the nearest T on that side (exact for Rational).
+template <class T>
+T round_directed(const Rational& x, bool up);
+
+/// Whether the stratum's point does not move along its object parameters `dirs` when the others
+/// are fixed at uv (the object's parameters): the segment of parameters maps to one point in
+/// space (a collapsed edge, a pole). Exact arithmetic only (false in a float one).
+template <class T>
+bool constant_along(const Stratum<T>& A, const std::vector<int>& dirs, const std::vector<T>& uv);
 
 /// D2 / WW at the point x of the system's box, exactly.
 template <class T>

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "exact/rational.hpp"
 #include "float/rounding.hpp"
@@ -101,4 +103,43 @@ TEST_CASE("contact: refusals, and the same subdivision in double", "[solve]") {
   const auto d = surface_distance(round_spline<double>(paraboloid()), round_spline<double>(plane(R(-1))));
   CHECK_FALSE(d.closest_certified);
   CHECK(std::abs(d.distance2_hi - 1.0) < 1e-12);
+}
+
+// Issue 47 (reproducers in tests/data/repro/solver): double enclosures, nearly touching surfaces.
+namespace {
+
+BSpline<R> repro(const std::string& name) {
+  const std::string file = __FILE__;
+  std::ifstream in(file.substr(0, file.rfind('/')) + "/../data/repro/solver/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return test::spline(text.str());
+}
+
+}  // namespace
+
+TEST_CASE("contact in double: intersecting surfaces are never 'not intersecting' with a negative distance", "[solve]") {
+  // A bicubic surface cut by the plane z = 1/16 (exact arithmetic certifies a common point). In
+  // double a round-to-nearest |D|^2 went below 0 (-1.49e-16) and became the minimum.
+  const auto d = surface_distance(round_spline<double>(repro("bicubic2.json")), round_spline<double>(repro("cut_plane.json")));
+  CHECK(0 <= d.distance2_lo);
+  CHECK(d.distance2_lo <= d.distance2_hi);
+  CHECK((d.intersecting || d.intersection_undecided));
+  for (const auto& p : d.points) CHECK((0 <= p.d2_lo && p.d2_lo <= p.d2_hi));
+  for (const auto& p : d.undecided) CHECK((0 <= p.d2_lo && p.d2_lo <= p.d2_hi));
+  CHECK_FALSE(d.closest_certified);
+}
+
+TEST_CASE("contact: surfaces 2^-20 apart end in a certified pair, not in an empty verdict", "[solve]") {
+  // The paraboloid's vertex over a plane 2^-20 below it: within 2^-16 of the model's size the
+  // search looked for a common point, found none, and stopped with nothing listed.
+  const auto d = surface_distance(repro("paraboloid.json"), repro("pl_m2e20.json"));
+  const R d2 = R(1) / R(boost::multiprecision::mpz_int(1) << 40);
+  CHECK_FALSE(d.intersecting);
+  CHECK_FALSE(d.intersection_undecided);
+  CHECK(d.distance2_lo == d2);
+  CHECK(d.distance2_hi == d2);
+  REQUIRE(d.closest.size() == 1);
+  CHECK(d.closest_certified);
+  CHECK(d.points[d.closest[0]].p1 == std::vector<R>{R(0), R(0), R(0)});
 }

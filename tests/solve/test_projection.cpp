@@ -4,7 +4,12 @@
 // sampling; refusals.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
 #include "exact/rational.hpp"
+#include "float/rounding.hpp"
 #include "solve/curve_projection.hpp"
 #include "solve/projection.hpp"
 #include "spline/kernel.hpp"
@@ -190,4 +195,118 @@ TEST_CASE("curve projection: a fold (turning point) and branches that end on the
   CHECK(turning == 1);
   CHECK(left);
   CHECK(right);
+}
+
+// Issue 47 (reproducers in tests/data/repro/solver): the closest-point verdict, a pole, double.
+namespace {
+
+BSpline<R> repro(const std::string& name) {
+  const std::string file = __FILE__;
+  std::ifstream in(file.substr(0, file.rfind('/')) + "/../data/repro/solver/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return test::spline(text.str());
+}
+
+}  // namespace
+
+TEST_CASE("projection: no candidate that an undecided box may beat is named closest", "[solve]") {
+  // z = x^2, the point 10^-25 off the axis at height 3/4: the feet near (+-1/2, 1/2, 1/4) at
+  // d^2 = 1/2 -+ 10^-25 lie 10^-25 from split lines (found by inflating the cluster's hull), the
+  // ridge point (0, 1/2, 0) at d^2 >= 9/16 is critical but farther.
+  const R e = R(1) / R(boost::multiprecision::pow(boost::multiprecision::mpz_int(10), 25));
+  const auto S = repro("pcyl.json");
+  const std::vector<R> P{e, R(1, 2), R(3, 4)};
+  const auto p = project_point<R>(S, P);
+  REQUIRE(p.closest_certified);
+  REQUIRE(p.closest.size() == 1);
+  CHECK(R(0) < p.critical[p.closest[0]].point[0]);  // the foot at x > 0, nearer to P
+  CHECK(p.distance2_lo <= R(1, 2) - e);
+  CHECK(R(1, 2) - e <= p.distance2_hi);
+  CHECK(p.distance2_hi < R(1, 2));
+  // With a budget of 40 boxes per system the feet stay in undecided boxes (d^2 <= 3/4 + ...)
+  // while the edges u = +-1 have certified critical points at d^2 = 17/16: the planted bug (an
+  // undecided box's upper bound not lowering the bound of the minimum) names them closest.
+  SolveOptions small;
+  small.max_boxes = 40;
+  const auto q = project_point<R>(S, P, small);
+  CHECK_FALSE(q.closest_certified);
+  REQUIRE_FALSE(q.undecided.empty());
+  R best_box = q.undecided[0].d2_hi;
+  for (const auto& u : q.undecided)
+    if (u.d2_hi < best_box) best_box = u.d2_hi;
+  CHECK(best_box < R(17, 16));
+  for (std::size_t i : q.closest) CHECK_FALSE(best_box < q.critical[i].d2_lo);
+  CHECK_FALSE(q.undecided_closest.empty());
+  CHECK(q.reason.find("undecided") != std::string::npos);
+}
+
+TEST_CASE("projection: the pole of a surface of revolution is answered", "[solve]") {
+  // The sphere octant with its pole edge collapsed; from (0, 0, 2) on the axis the distance does
+  // not depend on the longitude (that equation vanishes identically): the pole at d^2 = 1.
+  const auto p = project_point<R>(repro("octant.json"), {R(0), R(0), R(2)});
+  REQUIRE_FALSE(p.closest.empty());
+  CHECK(p.distance2_lo == 1);
+  CHECK(p.distance2_hi == 1);
+  for (std::size_t i : p.closest) {
+    CHECK(p.critical[i].point == std::vector<R>{R(0), R(0), R(1)});
+    CHECK((p.critical[i].along.empty() || p.critical[i].collapsed));
+  }
+  CHECK(p.closest_certified);
+}
+
+TEST_CASE("projection in double: enclosures outward, never inverted or negative", "[solve]") {
+  // (-10/7, -6/7, 8/49) lies on the saddle z = (x^2 - y^2)/8; rounded to double it is within
+  // 1e-16 of it. Each enclosure must hold the exact squared distance of the double data at its
+  // box's centre (a round-to-nearest |D|^2 gave [5.9e-32, -9.9e-17]).
+  const auto S = round_spline<double>(repro("saddle.json"));
+  const std::vector<double> P{-10.0 / 7, -6.0 / 7, 8.0 / 49};
+  const auto p = project_point<double>(S, P);
+  const auto check = [&](const CriticalPoint<double>& c) {
+    CHECK(0 <= c.d2_lo);
+    CHECK(c.d2_lo <= c.d2_hi);
+    std::vector<R> uv(2);
+    for (int d = 0; d < 2; ++d) uv[d] = (exact_from_double(c.lo[d]) + exact_from_double(c.hi[d])) / 2;
+    BSpline<R> Se;
+    Se.degrees = S.degrees;
+    Se.q = S.q;
+    for (const auto& kv : S.knots) {
+      Se.knots.emplace_back();
+      for (double x : kv) Se.knots.back().push_back(exact_from_double(x));
+    }
+    for (double x : S.points) Se.points.push_back(exact_from_double(x));
+    const auto x = evaluate(Se, uv);
+    R d2(0);
+    for (int k = 0; k < 3; ++k) d2 += (x[k] - exact_from_double(P[k])) * (x[k] - exact_from_double(P[k]));
+    CHECK(exact_from_double(c.d2_lo) <= d2);
+    CHECK(d2 <= exact_from_double(c.d2_hi));
+  };
+  for (const auto& c : p.critical) check(c);
+  for (const auto& c : p.undecided) check(c);
+  CHECK(0 <= p.distance2_lo);
+  CHECK(p.distance2_lo <= p.distance2_hi);
+  CHECK(p.distance2_hi < 1e-20);
+}
+
+TEST_CASE("curve projection: a generic case with two folds is certified (traced joins agree)", "[solve]") {
+  // The line from (-1, 1/7, 3/2) to (1, 2/7, 3/2) over z = x^2 + y^2: the solution curve turns
+  // back twice in t. Uniform tracing steps
+  // (and an absolute stopping test that the rounding noise near a fold never meets) lost the
+  // branches there: "the traced joins do not agree" although every count was right.
+  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [["-1", "-1", "1", "1"]], "points": [["-1", "1/7", "3/2"], ["1", "2/7", "3/2"]]})");
+  const auto r = project_curve(C, repro("paraboloid.json"));
+  CHECK(r.certified_counts);
+  CHECK(r.consistent);
+  std::size_t turning = 0;
+  for (const auto& p : r.special)
+    if (p.kind == "turning point") {
+      ++turning;
+      CHECK(p.branches == 2);
+    }
+  CHECK(turning == 2);
+  // Two feet born at one fold and dying at the other (a loop in (u, v, t)), and two short
+  // segments entering and leaving through the surface's boundary (slices 0 2 3 2 3 2 0).
+  CHECK(r.loops == 1);
+  CHECK(r.segments == 2);
+  CHECK(r.max_cosine < 1e-9);
 }
