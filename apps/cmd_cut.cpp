@@ -47,7 +47,7 @@ Json separation_json(const SeparationResult& s) {
   j["undecided"] = u;
   j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
                  : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : "some boundary pieces stay undecided (listed); no violation was found";
+                                           : s.reason;
   return j;
 }
 
@@ -143,12 +143,7 @@ Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& 
   j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
   j["positive_definite"] = R.positive_definite;
   if (R.status == QPStatus::optimal) {
-    const bool proved = R.kkt.holds && R.positive_definite;
-    j["verdict"] = ArithTraits<T>::exact
-                       ? (proved ? "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)"
-                                 : "not proved: " + R.kkt.failed)
-                       : std::string("the exact minimizer of the program assembled in double (KKT ") + (R.kkt.holds ? "holds" : "fails") +
-                             "), rounded to double: judge it against --arith exact";
+    j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
     j["objective"] = q_json(R.solution.objective);
     j["value_at_ends"] = Json::array({q_json(R.value_at_ends[0]), q_json(R.value_at_ends[1])});
     j["gradient_error_squared_at_ends"] = Json::array({q_json(R.gradient_error2[0]), q_json(R.gradient_error2[1])});
@@ -201,7 +196,7 @@ Json separation3_json(const SeparationResult3& s) {
   j["undecided"] = u;
   j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip around the loop, decided exactly"
                  : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : "some boundary pieces stay undecided (listed); no violation was found";
+                                           : s.reason;
   return j;
 }
 
@@ -222,11 +217,7 @@ Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3
   j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
   j["positive_definite"] = R.positive_definite;
   if (R.status == QPStatus::optimal) {
-    const bool proved = R.kkt.holds && R.positive_definite;
-    j["verdict"] = ArithTraits<T>::exact
-                       ? (proved ? "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)" : "not proved: " + R.kkt.failed)
-                       : std::string("the exact minimizer of the program assembled in double (KKT ") + (R.kkt.holds ? "holds" : "fails") +
-                             "), rounded to double: judge it against --arith exact";
+    j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
     j["objective"] = q_json(R.solution.objective);
     j["max_abs_value_on_loop_samples"] = q_json(R.max_abs_value_on_loop);
     j["max_gradient_error_squared_on_loop_samples"] = q_json(R.max_gradient_error2);
@@ -615,17 +606,17 @@ Commands add_cut(CLI::App& app) {
   auto eo = std::make_shared<ExampleOptions>();
   auto* ex = cut->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
   ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: tower, cube, slotted, maiden, vase, twisted-vase")->required();
-  ex->add_option("--out", eo->out, "folder to write into")->capture_default_str();
+  ex->add_option("--out", eo->out, "folder to write into")->check(output_folder())->capture_default_str();
 
   auto go = std::make_shared<GuideCliOptions>();
   auto* g = cut->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
   add_guide_options(g, *go);
   g->add_option("--inner-knots-z", go->inner_z, "solid3d: inner knots in z, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
   g->add_option("--loop-samples", go->loop_samples, "solid3d: points of L* per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
-  g->add_option("--vtk", go->vtk, "solid3d: write solid.vtk (the facets) and guide.vtk (f* on a 33^3 grid, contour it at 0 in ParaView) into this folder");
+  g->add_option("--vtk", go->vtk, "solid3d: write solid.vtk (the facets) and guide.vtk (f* on a 33^3 grid, contour it at 0 in ParaView) into this folder")->check(output_folder());
   add_arith_option(g, go->arith, "exact (the QP exactly, KKT checked), double (assembled in double), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
-  g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here");
+  g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here")->check(output_file());
 
   struct FacetCliOptions {
     GuideCliOptions guide;
@@ -639,9 +630,9 @@ Commands add_cut(CLI::App& app) {
   add_guide_options(fc, fo->guide);
   fc->add_option("--control-points", fo->control_points, "control points of the fitted cubic")->check(CLI::Range(4, 1000))->capture_default_str();
   fc->add_option("--step", fo->step, "marching step, normalized units")->check(CLI::Range(1e-6, 0.5))->capture_default_str();
-  fc->add_option("--svg", fo->guide.svg, "write the figure (guide, samples, cutting curve) here");
+  fc->add_option("--svg", fo->guide.svg, "write the figure (guide, samples, cutting curve) here")->check(output_file());
   fc->add_option("--out", fo->out, "write curve.json, part1.solid.json (b side) and part2.solid.json (b-bar side) into this folder; solid3d: "
-                                   "surface.json and, when valid, split.json");
+                                   "surface.json and, when valid, split.json")->check(output_folder());
   auto f3 = std::make_shared<Facet3CliOptions>();
   fc->add_option("--domain", f3->domain, "solid3d: Omega by auto (projection, else Eq. 5's qp, else circle), projection, qp or circle")
       ->check(CLI::IsMember({"auto", "projection", "qp", "circle"}))
@@ -653,7 +644,7 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--lambda-normal", f3->lambda, "solid3d: lambda of Eq. 7, the tangent-plane term")->capture_default_str();
   fc->add_option("--tangent-delta", f3->tangent_delta, "solid3d: t . dp/dm >= this at the boundary samples")->capture_default_str();
   fc->add_option("--max-depth", f3->max_depth, "solid3d: halvings of one piece in the certificates")->check(CLI::Range(0, 40))->capture_default_str();
-  fc->add_option("--vtk", f3->vtk, "solid3d: write solid.vtk and surface.vtk (the trimmed patch) into this folder");
+  fc->add_option("--vtk", f3->vtk, "solid3d: write solid.vtk and surface.vtk (the trimmed patch) into this folder")->check(output_folder());
   fc->add_flag("--guided", f3->guided, "solid3d: find the guiding surface (RDCP, the guide options) and refine the patch by Eq. 6 (Gauss-Newton in double)");
   fc->add_option("--weight-guide", f3->weight_guide,
                  "solid3d --guided: the weight of Eq. 6 (the paper: 10), or auto: 10, 10^2, ..., 10^6 in turn until the refined patch is certified valid")
@@ -679,7 +670,7 @@ Commands add_cut(CLI::App& app) {
   sp->add_option("solid", cso->solid, "solid document")->required();
   sp->add_option("cut", cso->cut, "cutting data document")->required();
   sp->add_option("curve", cso->curve, "the cutting curve (spline document); solid3d: a cutting_surface document")->required();
-  sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json (solid3d: split.json and surface.json)")->required();
+  sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json (solid3d: split.json and surface.json)")->check(output_folder())->required();
 
   return {{ex, [eo](const Context&) {
              Json s, c;

@@ -105,6 +105,24 @@ struct CoefficientError {
 };
 CoefficientError coefficient_error(const std::vector<Rational>& exact, const std::vector<Rational>& rounded);
 
+/// The verdict on RDCP's minimizer (d = 2 and 3). Exact runs: "proved: ..." only when the program
+/// has constraint rows (samples of b* or b-bar*), its KKT conditions hold exactly and its
+/// objective is positive definite (Lemma 1); otherwise "undecided: <why>" (no rows: nothing keeps f*
+/// off the boundary, every sample lay in the strip) or "not proved: <the failed condition>".
+/// Double runs: what the double program's exact minimizer is, never "proved".
+inline std::string guide_verdict(bool exact, const QuadraticProgram<Rational>& program, const KKTCheck& kkt, bool pd) {
+  const std::string empty = "undecided: the program has no constraint rows (every sample of b* and b-bar* lies in the strip), so nothing keeps f* "
+                            "positive on b or negative on b-bar: narrow --strip or add --samples";
+  if (!exact)
+    return program.rows.empty() ? empty
+                                : std::string("the exact minimizer of the program assembled in double (KKT ") + (kkt.holds ? "holds" : "fails") +
+                                      "), rounded to double: judge it against --arith exact";
+  if (!kkt.holds) return "not proved: " + (kkt.failed.empty() ? std::string("the KKT conditions do not hold") : kkt.failed);
+  if (!pd) return "not proved: the objective's matrix is not positive definite (the minimizer need not be unique)";
+  if (program.rows.empty()) return empty;
+  return "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)";
+}
+
 /// The tensor-product cubic space of the guide: clamped knots on [0, 1] with k uniform inner knots.
 std::vector<Rational> guide_knots(int inner_knots);
 

@@ -1,5 +1,7 @@
 #include "cut/separation.hpp"
 
+#include <type_traits>
+
 #include "compose/compose.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
@@ -19,6 +21,24 @@ struct Ctx {
   SeparationResult result;
   std::size_t examined = 0;
 };
+
+// The verdict: a witness refutes; "certified" needs every piece decided and at least one certified
+// (pieces all in the strip: nothing was checked).
+template <class Result>
+void decide(Result& r) {
+  if (r.witness) {
+    r.verdict = "violated";
+  } else if (!r.undecided.empty()) {
+    r.verdict = "undecided";
+    r.reason = std::to_string(r.undecided.size()) + " boundary piece(s) left undecided at the subdivision budget (listed); no violation was found";
+  } else if (r.pieces == 0) {
+    r.verdict = "undecided";
+    r.reason = "nothing was checked: every boundary piece lies in the strip around the " + std::string(std::is_same_v<Result, SeparationResult> ? "cut points" : "loop") +
+               " (" + std::to_string(r.excluded) + " excluded); narrow the strip";
+  } else {
+    r.verdict = "certified";
+  }
+}
 
 Rational absq(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 
@@ -119,9 +139,7 @@ SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData
     }
     if (!go) break;
   }
-  if (c.result.witness) c.result.verdict = "violated";
-  else if (!c.result.undecided.empty()) c.result.verdict = "undecided";
-  else c.result.verdict = "certified";
+  decide(c.result);
   return c.result;
 }
 
@@ -204,9 +222,7 @@ SeparationResult3 certify_separation(const Solid3<Rational>& solid, const std::v
         go = false;
         break;
       }
-  if (c.result.witness) c.result.verdict = "violated";
-  else if (!c.result.undecided.empty()) c.result.verdict = "undecided";
-  else c.result.verdict = "certified";
+  decide(c.result);
   return c.result;
 }
 

@@ -1,6 +1,8 @@
 #include "cut/solid.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <sstream>
 
 #include "spline/bernstein.hpp"
 #include "spline/bezier.hpp"
@@ -72,6 +74,11 @@ void validate_solid(const Solid2<Rational>& S) {
     if (F.q != 2) throw ValidationError(f, "has " + std::to_string(F.q) + " coordinates", "give planar curves (2 coordinates)");
     if (F.is_rational()) throw ValidationError(f, "is rational", "give polynomial facets (rational facets are not supported yet)");
     if (F.degrees[0] < 1) throw ValidationError(f, "has degree 0", "give curves of degree >= 1 (a loop of facets must be continuous)");
+    bool one_point = true;
+    for (std::size_t j = 1; j < F.size() && one_point; ++j) one_point = F.points[2 * j] == F.points[0] && F.points[2 * j + 1] == F.points[1];
+    if (one_point)
+      throw ValidationError(f, "is a single point (" + to_fraction_string(F.points[0]) + ", " + to_fraction_string(F.points[1]) + "): a facet of zero length",
+                            "remove the facet (let its neighbours meet there), or give it distinct control points");
     if (!is_clamped(F.knots[0], F.degrees[0], F.count(0)))
       throw ValidationError(f + ".knots", "is not clamped", "clamp the knot vector (end knots of multiplicity degree + 1) so the facet starts and ends at control points");
     // An inner knot of multiplicity degree + 1 (C^-1) may be a jump: the loop must be continuous.
@@ -87,10 +94,411 @@ void validate_solid(const Solid2<Rational>& S) {
       throw ValidationError(facet_field(i), "ends where " + facet_field(j) + " does not start",
                             "order the facets along the boundary so each ends exactly where the next starts (the last where the first starts)");
   }
+  check_simple_loop(S);
   const Rational a = signed_area(S);
   if (a == 0) throw ValidationError("facets", "enclose zero signed area", "give a loop around a solid");
   if (a < 0) throw ValidationError("facets", "run clockwise (signed area " + to_fraction_string(a) + ")",
                                    "list the facets counter-clockwise (the solid on the left), or reverse the loop");
+}
+
+// ---- The loop is simple (papers/004 Section 2: the boundary of a solid) --------------------------
+//
+// Exact throughout. The facets' Bezier pieces become elements, each injective: its control polygon
+// is monotone in some direction d (d . (P_{i+1} - P_i) >= 0, one > 0: d . C' > 0 inside the piece),
+// else it is halved. Pairs of elements whose boxes meet (a bounding-volume tree: near-linear for
+// loops that do not pile up) are decided by
+//  - boxes or convex hulls of the control points strictly separated (separating axis): disjoint;
+//  - loop neighbours (the end of one is the start of the other, V): a line through V with the one's
+//    control points strictly on one side and the other's on the other (V excepted): they meet at V only;
+//  - two straight elements (control points collinear, monotone: the curve is the segment P_0 P_p):
+//    exact segment intersection, so straight-sided loops are decided exactly, whatever the sizes;
+//  - a crossing: B monotone along its chord d is a graph over the d axis inside its strip (the hull's
+//    extent across d); A inside B's open slab (0 < d . (x - B_0) < d . d) with its ends strictly on
+//    the two sides of the strip must cross B (intermediate values): an intersection, proved;
+//  - otherwise the larger element is halved. At the depth or work budget (curves touching
+//    tangentially, or closer than 2^-depth of their size) the loop is refused: it could not be
+//    proved simple.
+
+namespace {
+
+using P2 = std::array<Rational, 2>;
+
+P2 sub(const P2& a, const P2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+P2 perp(const P2& a) { return {Rational(-a[1]), a[0]}; }
+bool is_zero(const P2& a) { return a[0] == 0 && a[1] == 0; }
+
+struct LoopElem {
+  std::vector<P2> p;          // Bezier control points
+  Rational a, b;              // loop parameter: Bezier piece k of the loop covers [k, k + 1]
+  std::size_t facet = 0;
+  Rational s0, s1;            // the facet's parameters
+  P2 lo, hi;                  // the control points' box
+  bool straight = false;      // collinear and monotone along P_p - P_0: the curve is that segment
+  int depth = 0;
+};
+
+// d . (P_{i+1} - P_i) >= 0 for all i and > 0 for one.
+bool monotone_along(const std::vector<P2>& p, const P2& d) {
+  bool some = false;
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    const Rational s = dot(d, sub(p[i + 1], p[i]));
+    if (s < 0) return false;
+    if (s > 0) some = true;
+  }
+  return some;
+}
+
+bool injective(const std::vector<P2>& p) {
+  if (monotone_along(p, sub(p.back(), p.front()))) return true;
+  for (std::size_t i = 0; i + 1 < p.size(); ++i)
+    if (monotone_along(p, sub(p[i + 1], p[i]))) return true;
+  return false;
+}
+
+void finish(LoopElem& e) {
+  e.lo = e.hi = e.p[0];
+  for (const auto& x : e.p)
+    for (int a = 0; a < 2; ++a) {
+      if (x[a] < e.lo[a]) e.lo[a] = x[a];
+      if (e.hi[a] < x[a]) e.hi[a] = x[a];
+    }
+  const P2 d = sub(e.p.back(), e.p.front());
+  e.straight = monotone_along(e.p, d);
+  for (std::size_t i = 1; e.straight && i + 1 < e.p.size(); ++i) e.straight = cross(d, sub(e.p[i], e.p[0])) == 0;
+}
+
+// de Casteljau at 1/2.
+std::pair<LoopElem, LoopElem> halves(const LoopElem& e) {
+  std::vector<P2> w = e.p;
+  LoopElem l, r;
+  const std::size_t n = w.size();
+  l.p.resize(n), r.p.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    l.p[k] = w[0];
+    r.p[n - 1 - k] = w[n - 1 - k];
+    for (std::size_t i = 0; i + 1 < n - k; ++i) w[i] = {(w[i][0] + w[i + 1][0]) / 2, (w[i][1] + w[i + 1][1]) / 2};
+  }
+  const Rational am = (e.a + e.b) / 2, sm = (e.s0 + e.s1) / 2;
+  l.a = e.a, l.b = am, r.a = am, r.b = e.b;
+  l.s0 = e.s0, l.s1 = sm, r.s0 = sm, r.s1 = e.s1;
+  l.facet = r.facet = e.facet;
+  l.depth = r.depth = e.depth + 1;
+  finish(l), finish(r);
+  return {std::move(l), std::move(r)};
+}
+
+Rational extent(const LoopElem& e) {
+  Rational w = e.hi[0] - e.lo[0], h = e.hi[1] - e.lo[1];
+  return w < h ? h : w;
+}
+
+bool boxes_meet(const LoopElem& A, const LoopElem& B) {
+  for (int a = 0; a < 2; ++a)
+    if (A.hi[a] < B.lo[a] || B.hi[a] < A.lo[a]) return false;
+  return true;
+}
+
+// The convex hulls of the control points strictly apart: an axis perpendicular to a difference of
+// two of the points (the separating axis theorem: edge normals suffice, the box test covers the
+// collinear case).
+bool hulls_apart(const LoopElem& A, const LoopElem& B) {
+  std::vector<const P2*> all;
+  for (const auto& x : A.p) all.push_back(&x);
+  for (const auto& x : B.p) all.push_back(&x);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      const P2 n = perp(sub(*all[j], *all[i]));
+      if (is_zero(n)) continue;
+      Rational amin = dot(n, A.p[0]), amax = amin, bmin = dot(n, B.p[0]), bmax = bmin;
+      for (const auto& x : A.p) {
+        const Rational v = dot(n, x);
+        if (v < amin) amin = v;
+        if (amax < v) amax = v;
+      }
+      for (const auto& x : B.p) {
+        const Rational v = dot(n, x);
+        if (v < bmin) bmin = v;
+        if (bmax < v) bmax = v;
+      }
+      if (amax < bmin || bmax < amin) return true;
+    }
+  return false;
+}
+
+// A ends at V where B starts: a line through V with A's control points (V excepted) on one side,
+// its first strictly, and B's on the other, its last strictly. The feasible normals form a cone
+// whose boundary rays are perpendicular to one of the vectors; the sum of two boundary rays lies
+// inside it, unless the cone is a half-plane (all vectors on one ray), when that ray is inside.
+bool meet_only_at_vertex(const LoopElem& A, const LoopElem& B) {
+  const P2& V = B.p.front();
+  std::vector<P2> w;  // n . w >= 0 wanted for all; strictly for the first two
+  w.push_back(sub(V, A.p.front()));
+  w.push_back(sub(B.p.back(), V));
+  for (std::size_t i = 1; i + 1 < A.p.size(); ++i) w.push_back(sub(V, A.p[i]));
+  for (std::size_t j = 1; j + 1 < B.p.size(); ++j) w.push_back(sub(B.p[j], V));
+  if (is_zero(w[0]) || is_zero(w[1])) return false;
+  auto holds = [&](const P2& n, bool strict) {
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const Rational s = dot(n, w[k]);
+      if (s < 0 || (strict && k < 2 && s == 0)) return false;
+    }
+    return true;
+  };
+  std::vector<P2> rays;
+  for (const auto& v : w) {
+    if (is_zero(v)) continue;
+    for (const P2& n : {v, perp(v), P2{v[1], Rational(-v[0])}})  // v itself: the cone is a half-plane (a straight continuation)
+      if (holds(n, false)) {
+        if (holds(n, true)) return true;
+        rays.push_back(n);
+      }
+  }
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    for (std::size_t j = i + 1; j < rays.size(); ++j)
+      if (holds({rays[i][0] + rays[j][0], rays[i][1] + rays[j][1]}, true)) return true;
+  return false;
+}
+
+int orient(const P2& a, const P2& b, const P2& c) {
+  const Rational v = cross(sub(b, a), sub(c, a));
+  return v > 0 ? 1 : v < 0 ? -1 : 0;
+}
+bool on_segment(const P2& a, const P2& b, const P2& x) {  // x collinear with a, b
+  for (int k = 0; k < 2; ++k) {
+    const Rational& lo = a[k] < b[k] ? a[k] : b[k];
+    const Rational& hi = a[k] < b[k] ? b[k] : a[k];
+    if (x[k] < lo || hi < x[k]) return false;
+  }
+  return true;
+}
+
+// Closed segments ab and cd: a common point, exactly, or none.
+std::optional<P2> segments_meet(const P2& a, const P2& b, const P2& c, const P2& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) {
+    const P2 r = sub(b, a), s = sub(d, c);
+    const Rational t = cross(sub(c, a), s) / cross(r, s);
+    return P2{a[0] + t * r[0], a[1] + t * r[1]};
+  }
+  if (o1 == 0 && on_segment(a, b, c)) return c;
+  if (o2 == 0 && on_segment(a, b, d)) return d;
+  if (o3 == 0 && on_segment(c, d, a)) return a;
+  if (o4 == 0 && on_segment(c, d, b)) return b;
+  return std::nullopt;
+}
+
+// A crosses B (see above): proved by the intermediate value theorem.
+bool crosses(const LoopElem& A, const LoopElem& B) {
+  const P2& B0 = B.p.front();
+  const P2 d = sub(B.p.back(), B0);
+  if (!monotone_along(B.p, d)) return false;
+  const P2 n = perp(d);
+  Rational wlo(0), whi(0);
+  for (const auto& x : B.p) {
+    const Rational v = dot(n, sub(x, B0));
+    if (v < wlo) wlo = v;
+    if (whi < v) whi = v;
+  }
+  const Rational dd = dot(d, d);
+  for (const auto& x : A.p) {
+    const Rational t = dot(d, sub(x, B0));
+    if (!(0 < t && t < dd)) return false;
+  }
+  const Rational s0 = dot(n, sub(A.p.front(), B0)), s1 = dot(n, sub(A.p.back(), B0));
+  return (s0 < wlo && whi < s1) || (s1 < wlo && whi < s0);
+}
+
+std::string point_text(const P2& x, bool exact) {
+  if (exact) return "(" + to_fraction_string(x[0]) + ", " + to_fraction_string(x[1]) + ")";
+  std::ostringstream o;
+  o << "(" << to_double(x[0]) << ", " << to_double(x[1]) << ")";
+  return o.str();
+}
+std::string range_text(const LoopElem& e) {
+  std::ostringstream o;
+  o << to_double(e.s0) << " .. " << to_double(e.s1);
+  return o.str();
+}
+
+// "facets[i]: crosses facets[j] at (x, y) (parameters a .. b of the one, c .. d of the other)"; `at`
+// says where: an exact point, or the box of the element that crosses.
+[[noreturn]] void not_simple(const LoopElem& A, const LoopElem& B, const std::string& how, const std::string& at) {
+  const LoopElem& first = A.facet < B.facet || (A.facet == B.facet && A.s0 < B.s0) ? A : B;
+  const LoopElem& second = &first == &A ? B : A;
+  const bool self = first.facet == second.facet;
+  throw ValidationError(facet_field(first.facet),
+                        how + " " + (self ? std::string("itself") : facet_field(second.facet)) + " " + at + " (parameters " + range_text(first) +
+                            (self ? " and " : " of the one, " + range_text(second) + " of the other") + (self ? range_text(second) : std::string()) +
+                            "): the loop is not simple",
+                        "give a simple closed loop: facets meet only where one ends and the next starts");
+}
+std::string at_point(const P2& x) { return "at " + point_text(x, true); }
+std::string within_box(const LoopElem& e) {
+  std::ostringstream o;
+  o << "within [" << to_double(e.lo[0]) << ", " << to_double(e.hi[0]) << "] x [" << to_double(e.lo[1]) << ", " << to_double(e.hi[1]) << "]";
+  return o.str();
+}
+
+struct LoopChecker {
+  const SimpleLoopOptions& options;
+  Rational length;  // the loop parameter's period: the number of Bezier pieces
+  std::size_t tests = 0;
+
+  bool follows(const LoopElem& A, const LoopElem& B) const { return A.b == B.a || (A.b == length && B.a == 0); }
+
+  [[noreturn]] void undecided(const LoopElem& A, const LoopElem& B, const std::string& why) const {
+    const LoopElem& first = A.facet <= B.facet ? A : B;
+    const LoopElem& second = A.facet <= B.facet ? B : A;
+    throw ValidationError(facet_field(first.facet),
+                          "could not be proved apart from " + (first.facet == second.facet ? std::string("itself") : facet_field(second.facet)) + " near " +
+                              point_text(first.p.front(), false) + " (" + why + "): the loop is not certified simple",
+                          "make facets that do not touch apart by more than 2^-" + std::to_string(options.max_depth) +
+                              " of their size, and avoid cusps at vertices; facets touching elsewhere than at shared vertices are not a simple loop");
+  }
+
+  // Decides one pair of elements; throws when they meet elsewhere than at a shared vertex.
+  void resolve(const LoopElem& A0, const LoopElem& B0) {
+    std::vector<std::pair<LoopElem, LoopElem>> todo{{A0, B0}};
+    while (!todo.empty()) {
+      auto [A, B] = std::move(todo.back());
+      todo.pop_back();
+      if (++tests > options.max_tests) undecided(A, B, "the work budget of " + std::to_string(options.max_tests) + " tests is spent");
+      if (!boxes_meet(A, B)) continue;
+      const bool ab = follows(A, B), ba = follows(B, A);
+      if (ab != ba) {
+        const LoopElem& first = ab ? A : B;
+        const LoopElem& second = ab ? B : A;
+        if (meet_only_at_vertex(first, second)) continue;
+        if (first.straight && second.straight)  // both from V along the same ray
+          not_simple(first, second, "turns back along", at_point(second.p.front()));
+      } else if (!ab) {
+        if (hulls_apart(A, B)) continue;
+        if (A.straight && B.straight) {
+          if (const auto x = segments_meet(A.p.front(), A.p.back(), B.p.front(), B.p.back())) not_simple(A, B, "meets", at_point(*x));
+          continue;
+        }
+        if (A.straight || B.straight) {  // an end point of the other exactly on the segment: they touch
+          const LoopElem& seg = A.straight ? A : B;
+          const LoopElem& other = A.straight ? B : A;
+          for (const P2* x : {&other.p.front(), &other.p.back()})
+            if (orient(seg.p.front(), seg.p.back(), *x) == 0 && on_segment(seg.p.front(), seg.p.back(), *x)) not_simple(A, B, "meets", at_point(*x));
+        }
+        if (crosses(A, B)) not_simple(A, B, "crosses", within_box(A));
+        if (crosses(B, A)) not_simple(A, B, "crosses", within_box(B));
+      }
+      const bool a_can = A.depth < options.max_depth, b_can = B.depth < options.max_depth;
+      if (!a_can && !b_can) undecided(A, B, "no decision after " + std::to_string(options.max_depth) + " halvings");
+      const Rational sa = extent(A), sb = extent(B);
+      if (a_can && (!b_can || !(sa < sb))) {
+        auto [l, r] = halves(A);
+        todo.push_back({std::move(l), B});
+        todo.push_back({std::move(r), std::move(B)});
+      } else {
+        auto [l, r] = halves(B);
+        todo.push_back({A, std::move(l)});
+        todo.push_back({std::move(A), std::move(r)});
+      }
+    }
+  }
+};
+
+// A bounding-volume tree over the elements' boxes (median splits on the larger side).
+struct BoxTree {
+  struct Node {
+    P2 lo, hi;
+    std::size_t begin = 0, end = 0;
+    int left = -1, right = -1;
+  };
+  const std::vector<LoopElem>& elems;
+  std::vector<std::size_t> order;
+  std::vector<Node> nodes;
+
+  explicit BoxTree(const std::vector<LoopElem>& e) : elems(e), order(e.size()) {
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (!e.empty()) build(0, e.size());
+  }
+  int build(std::size_t begin, std::size_t end) {
+    Node nd;
+    nd.begin = begin, nd.end = end;
+    nd.lo = elems[order[begin]].lo, nd.hi = elems[order[begin]].hi;
+    for (std::size_t k = begin; k < end; ++k)
+      for (int a = 0; a < 2; ++a) {
+        if (elems[order[k]].lo[a] < nd.lo[a]) nd.lo[a] = elems[order[k]].lo[a];
+        if (nd.hi[a] < elems[order[k]].hi[a]) nd.hi[a] = elems[order[k]].hi[a];
+      }
+    const int id = static_cast<int>(nodes.size());
+    nodes.push_back(nd);
+    if (end - begin > 8) {
+      const int axis = nd.hi[0] - nd.lo[0] < nd.hi[1] - nd.lo[1] ? 1 : 0;
+      const std::size_t mid = begin + (end - begin) / 2;
+      std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end, [&](std::size_t i, std::size_t j) {
+        return elems[i].lo[axis] + elems[i].hi[axis] < elems[j].lo[axis] + elems[j].hi[axis];
+      });
+      const int l = build(begin, mid), r = build(mid, end);
+      nodes[id].left = l, nodes[id].right = r;
+    }
+    return id;
+  }
+  // Calls f(j) for every element j > i whose box meets element i's.
+  template <class F>
+  void query(std::size_t i, F&& f) const {
+    const LoopElem& e = elems[i];
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+      const Node& nd = nodes[stack.back()];
+      stack.pop_back();
+      if (nd.hi[0] < e.lo[0] || e.hi[0] < nd.lo[0] || nd.hi[1] < e.lo[1] || e.hi[1] < nd.lo[1]) continue;
+      if (nd.left < 0) {
+        for (std::size_t k = nd.begin; k < nd.end; ++k)
+          if (order[k] > i && boxes_meet(e, elems[order[k]])) f(order[k]);
+      } else {
+        stack.push_back(nd.left), stack.push_back(nd.right);
+      }
+    }
+  }
+};
+
+// The facets' Bezier pieces as injective elements (zero-length pieces refused).
+std::vector<LoopElem> loop_elements(const Solid2<Rational>& S, const SimpleLoopOptions& o, Rational& length) {
+  std::vector<LoopElem> out;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < S.facets.size(); ++i)
+    for (const auto& piece : extract_bezier(S.facets[i])) {
+      LoopElem e;
+      for (std::size_t j = 0; j < piece.spline.size(); ++j) e.p.push_back({piece.spline.points[2 * j], piece.spline.points[2 * j + 1]});
+      e.a = Rational(k), e.b = Rational(k + 1), ++k;
+      e.facet = i, e.s0 = piece.box[0].first, e.s1 = piece.box[0].second;
+      finish(e);
+      if (e.lo == e.hi)
+        throw ValidationError(facet_field(i), "has a piece of zero length on parameters [" + to_fraction_string(e.s0) + ", " + to_fraction_string(e.s1) +
+                                                  "] (all its control points are " + point_text(e.p[0], true) + ")",
+                              "remove the repeated control points or knots, so every piece of the facet is a curve");
+      std::vector<LoopElem> todo{std::move(e)};
+      while (!todo.empty()) {
+        LoopElem x = std::move(todo.back());
+        todo.pop_back();
+        if (injective(x.p)) {
+          out.push_back(std::move(x));
+          continue;
+        }
+        if (x.depth >= o.max_depth)
+          throw ValidationError(facet_field(i), "turns back on itself (a cusp, its direction reversing) near parameter " + to_fraction_string(x.s0) + ": the loop is not simple",
+                                "give facets whose direction does not reverse");
+        auto [l, r] = halves(x);
+        todo.push_back(std::move(r)), todo.push_back(std::move(l));
+      }
+    }
+  length = Rational(k);
+  return out;
+}
+
+}  // namespace
+
+void check_simple_loop(const Solid2<Rational>& S, const SimpleLoopOptions& options) {
+  LoopChecker c{options, Rational(0)};
+  const std::vector<LoopElem> elems = loop_elements(S, options, c.length);
+  const BoxTree tree(elems);
+  for (std::size_t i = 0; i < elems.size(); ++i) tree.query(i, [&](std::size_t j) { c.resolve(elems[i], elems[j]); });
 }
 
 Rational signed_area(const Solid2<Rational>& S) {

@@ -36,9 +36,23 @@ struct CutData2 {
 
 /// Checks the solid: at least two facets; each a polynomial clamped curve of degree >= 1 in R^2;
 /// each facet's end point equals the next one's start point exactly (the last joins the first);
-/// the loop's exact signed area is positive (counter-clockwise: the solid on the left).
-/// ValidationError names the field and the fix. The loop is not checked for self-intersection.
+/// no facet is a single point; the loop is simple (check_simple_loop); the loop's exact signed area
+/// is positive (counter-clockwise: the solid on the left). ValidationError names the field and the fix.
 void validate_solid(const Solid2<Rational>& S);
+
+/// The loop of facets is simple: facets meet only where one ends and the next starts, and no
+/// facet meets itself. Decided exactly: straight pieces by exact segment intersection; curved
+/// ones by exact separation of their control polygons' convex hulls with subdivision, a crossing
+/// proved by the intermediate value theorem (see solid.cpp). Near-linear in the number of pieces
+/// when they do not pile up (a bounding-volume tree finds the pairs whose boxes meet). Throws
+/// ValidationError naming the facets and the point when the loop is not simple, or when it could
+/// not be decided within the budget (curves touching tangentially or closer than 2^-max_depth of
+/// their size, a cusp at a vertex): then the loop is refused as not certified simple.
+struct SimpleLoopOptions {
+  int max_depth = 40;                // halvings of one Bezier piece
+  std::size_t max_tests = 2000000;   // pair tests in all
+};
+void check_simple_loop(const Solid2<Rational>& S, const SimpleLoopOptions& options = {});
 
 /// Checks the cutting data against the solid: facets and parameters in range, two distinct points,
 /// non-zero tangents pointing strictly into the solid (exact orientation tests against the facets'

@@ -3,6 +3,8 @@
 // double, and certified separation (including a guide that must fail).
 #include <catch2/catch.hpp>
 
+#include <chrono>
+
 #include "cut/curve_facet.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
@@ -329,4 +331,177 @@ TEST_CASE("cut: an invalid cutting curve is refuted at an exact point outside th
   const auto vc = certify_cutting_curve(e.solid, cut, cusp);
   CHECK(vc.regular == "violated");
   CHECK(vc.singular_s == q(1, 2));
+}
+
+namespace {
+// A solid from Bezier facets given by their control points (degree = points - 1, domain [0, 1]).
+Solid2<Rational> bezier_solid(const std::vector<std::vector<std::array<Rational, 2>>>& facets) {
+  Solid2<Rational> S;
+  for (const auto& f : facets) {
+    const int p = static_cast<int>(f.size()) - 1;
+    std::vector<Rational> pts;
+    for (const auto& x : f) pts.push_back(x[0]), pts.push_back(x[1]);
+    S.facets.push_back(make_spline<Rational>({p}, {clamped_knots<Rational>(p, q(0), q(1))}, 2, pts));
+  }
+  return S;
+}
+Solid2<Rational> polygon_solid(const std::vector<std::array<Rational, 2>>& v) {
+  std::vector<std::vector<std::array<Rational, 2>>> f;
+  for (std::size_t i = 0; i < v.size(); ++i) f.push_back({v[i], v[(i + 1) % v.size()]});
+  return bezier_solid(f);
+}
+// Rational points on the unit circle, counter-clockwise: ((1 - u^2), 2u) / (1 + u^2) for u = k/m,
+// |k| <= 4m (the angle 2 atan(u) within about 0.84 pi of 0).
+std::vector<std::array<Rational, 2>> circle_points(long m) {
+  std::vector<std::array<Rational, 2>> v;
+  for (long k = -4 * m; k <= 4 * m; ++k) {
+    const Rational u(k, m), d = 1 + u * u;
+    v.push_back({Rational((1 - u * u) / d), Rational(2 * u / d)});
+  }
+  return v;
+}
+}  // namespace
+
+TEST_CASE("cut: facet loops are checked exactly: self-intersections, figure eights and zero-length facets are typed errors", "[cut]") {
+  using P = std::array<Rational, 2>;
+  CHECK_NOTHROW(check_simple_loop(cut_example("square").solid));
+  for (const auto& name : cut_example_names()) {
+    INFO(name);
+    CHECK_NOTHROW(validate_solid(cut_example(name).solid));
+  }
+  // Collinear neighbours (a straight continuation) and a loop of two facets are simple.
+  CHECK_NOTHROW(validate_solid(polygon_solid({P{q(0), q(0)}, P{q(1), q(0)}, P{q(2), q(0)}, P{q(2), q(2)}, P{q(0), q(2)}, P{q(0), q(1)}})));
+  CHECK_NOTHROW(validate_solid(bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(2), q(4)}, P{q(0), q(0)}}})));
+  CHECK_THROWS_WITH(check_simple_loop(bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(0), q(0)}}})), Catch::Contains("turns back along"));
+  // The figure eight of positive signed area (4): straight facets 0 and 2 cross at (8/3, 1), exactly.
+  const auto eight = polygon_solid({P{q(0), q(-1)}, P{q(4), q(2)}, P{q(4), q(0)}, P{q(0), q(3)}});
+  CHECK(signed_area(eight) == q(4));
+  CHECK_THROWS_WITH(validate_solid(eight), Catch::Contains("facets[0]: meets facets[2] at (8/3, 1)") && Catch::Contains("not simple"));
+  // A vertex on a facet that is not its neighbour (area 4 > 0): a pinch, exactly.
+  const auto pinch = polygon_solid({P{q(0), q(0)}, P{q(4), q(0)}, P{q(4), q(2)}, P{q(2), q(0)}, P{q(0), q(2)}});
+  CHECK(signed_area(pinch) > 0);
+  CHECK_THROWS_WITH(validate_solid(pinch), Catch::Contains("facets[0]: meets facets[") && Catch::Contains("] at (2, 0)"));
+  // A facet turning back along its predecessor (area 4 > 0).
+  const auto back = polygon_solid({P{q(0), q(0)}, P{q(4), q(0)}, P{q(2), q(0)}, P{q(2), q(2)}, P{q(0), q(2)}});
+  CHECK_THROWS_WITH(validate_solid(back), Catch::Contains("facets[0]: turns back along facets[1] at (4, 0)"));
+  // A quadratic top facet dipping below the bottom (crossings at x = 4/3 and 8/3, parameters 1/3 and
+  // 2/3: never a subdivision point): proved crossing by the intermediate value theorem. Area 4 > 0.
+  const auto dip = bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(4), q(4)}}, {P{q(4), q(4)}, P{q(2), q(-5)}, P{q(0), q(4)}},
+                                 {P{q(0), q(4)}, P{q(0), q(0)}}});
+  CHECK(signed_area(dip) == q(4));
+  CHECK_THROWS_WITH(validate_solid(dip), Catch::Contains("facets[0]: crosses facets[2] within [") && Catch::Contains("not simple"));
+  // A cubic facet with a loop of its own (it crosses itself at parameters (7 -+ sqrt 21) / 14).
+  const auto curl = bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(-2), q(6)}, P{q(6), q(6)}, P{q(0), q(0)}}});
+  CHECK_THROWS_WITH(validate_solid(curl), Catch::Contains("facets[1]: crosses itself within ["));
+  // Touching tangentially at a point no halving reaches (the top quadratic touches y = 0 at t = 2/5):
+  // no exact decision; refused as not certified simple, naming the facets.
+  const auto kiss = bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(4), q(4)}}, {P{q(4), q(4)}, P{q(2), q(-6)}, P{q(0), q(9)}},
+                                  {P{q(0), q(9)}, P{q(0), q(0)}}});
+  CHECK_THROWS_WITH(validate_solid(kiss), Catch::Contains("facets[0]: could not be proved apart from facets[2]") && Catch::Contains("not certified simple"));
+  // The same quadratic lifted by 1/1000 is decided: apart.
+  const Rational up(1, 1000);
+  const auto lifted = bezier_solid({{P{q(0), q(0)}, P{q(4), q(0)}}, {P{q(4), q(0)}, P{q(4), q(4) + up}}, {P{q(4), q(4) + up}, P{q(2), q(-6) + up}, P{q(0), q(9) + up}},
+                                    {P{q(0), q(9) + up}, P{q(0), q(0)}}});
+  CHECK_NOTHROW(validate_solid(lifted));
+  // A facet that is a single point, and a facet with a zero-length piece inside (C^-1 knots).
+  auto point = cut_example("L").solid;
+  point.facets.push_back(make_spline<Rational>({1}, {clamped_knots<Rational>(1, q(0), q(1))}, 2, {q(0), q(0), q(0), q(0)}));
+  CHECK_THROWS_WITH(validate_solid(point), Catch::Contains("facets[6]: is a single point (0, 0)"));
+  auto stall = cut_example("square").solid;
+  stall.facets[1] = make_spline<Rational>({1}, {{q(0), q(0), q(1, 3), q(1, 3), q(2, 3), q(2, 3), q(1), q(1)}}, 2,
+                                          {q(1), q(0), q(1), q(1, 2), q(1), q(1, 2), q(1), q(1, 2), q(1), q(1, 2), q(1), q(1)});
+  CHECK_THROWS_WITH(validate_solid(stall), Catch::Contains("facets[1]: has a piece of zero length on parameters [1/3, 2/3]"));
+}
+
+TEST_CASE("cut: the loop check is near-linear: thousands of straight and curved facets", "[cut]") {
+  using P = std::array<Rational, 2>;
+  // 4001 exact points on the circle as a polygon; then the same arcs as quadratics (control point:
+  // the tangents' intersection, rational), 1001 of them.
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto v = circle_points(500);
+  CHECK_NOTHROW(validate_solid(polygon_solid(v)));
+  const auto w = circle_points(125);
+  std::vector<std::vector<P>> arcs;
+  for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+    // tangent lines at a and b: x . a = 1, x . b = 1 (unit circle): intersection by Cramer
+    const P& a = w[i];
+    const P& b = w[i + 1];
+    const Rational det = a[0] * b[1] - a[1] * b[0];
+    arcs.push_back({a, P{Rational((b[1] - a[1]) / det), Rational((a[0] - b[0]) / det)}, b});
+  }
+  arcs.push_back({w.back(), w.front()});
+  CHECK_NOTHROW(validate_solid(bezier_solid(arcs)));
+  // A zigzag of 4000 long edges whose boxes all overlap in x (a sweep in x alone would be quadratic).
+  std::vector<P> z;
+  for (long i = 0; i < 2000; ++i) z.push_back({q(0), q(i)}), z.push_back({q(1000), Rational(i) + q(1, 2)});
+  z.push_back({q(1001), q(2000)}), z.push_back({q(-1), q(2000)});
+  CHECK_NOTHROW(validate_solid(polygon_solid(z)));
+  // One vertex pushed across the far side: a crossing found among thousands of pieces.
+  auto bad = v;
+  bad[2000] = P{q(-2), q(0)};
+  CHECK_THROWS_WITH(validate_solid(polygon_solid(bad)), Catch::Contains("not simple"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(seconds);
+  CHECK(seconds < 60);
+}
+
+TEST_CASE("cut: a forged KKT point with a negative multiplier is refused, and no rows is never proved", "[cut]") {
+  // minimize x^2 - x subject to x >= 0: the minimizer is 1/2 (row inactive, multiplier 0). The forged
+  // candidate x = 0 with multiplier -1 is feasible, complementary (the row is active) and stationary
+  // (2x - 1 = -1 = y), so only the sign of the multiplier refutes it.
+  QuadraticProgram<Rational> p;
+  p.n = 1;
+  p.D = {q(1)};
+  p.c = {q(-1)};
+  p.rows.push_back({{{0, q(1)}}, q(0), true});
+  const auto s = solve_qp(p);
+  REQUIRE(s.status == QPStatus::optimal);
+  CHECK(s.x[0] == q(1, 2));
+  CHECK(check_kkt(p, s).holds);
+  CHECK(guide_verdict(true, p, check_kkt(p, s), positive_definite(p)).rfind("proved: ", 0) == 0);
+  QPSolution forged;
+  forged.status = QPStatus::optimal;
+  forged.x = {q(0)};
+  forged.y = {q(-1)};
+  const auto k = check_kkt(p, forged);
+  CHECK_FALSE(k.holds);
+  CHECK(k.failed.find("negative") != std::string::npos);
+  CHECK(guide_verdict(true, p, k, positive_definite(p)).rfind("not proved: ", 0) == 0);
+  // Not positive definite: never "proved", and the reason is said.
+  auto semi = p;
+  semi.D = {q(0)};
+  semi.c = {q(1)};
+  QPSolution at0{QPStatus::optimal, {q(0)}, {q(1)}, q(0)};
+  REQUIRE(check_kkt(semi, at0).holds);
+  CHECK(guide_verdict(true, semi, check_kkt(semi, at0), positive_definite(semi)) ==
+        "not proved: the objective's matrix is not positive definite (the minimizer need not be unique)");
+  // No constraint rows: the unconstrained minimizer is exact, but nothing was checked against b*
+  // and b-bar*: undecided, in either arithmetic.
+  auto none = p;
+  none.rows.clear();
+  const auto sn = solve_qp(none);
+  REQUIRE(check_kkt(none, sn).holds);
+  CHECK(guide_verdict(true, none, check_kkt(none, sn), true).rfind("undecided: the program has no constraint rows", 0) == 0);
+  CHECK(guide_verdict(false, none, check_kkt(none, sn), true).rfind("undecided: ", 0) == 0);
+}
+
+TEST_CASE("cut: a strip over the whole boundary leaves RDCP without rows and the separation undecided", "[cut]") {
+  const auto e = cut_example("L");
+  GuideOptions o;
+  o.strip = q(10);
+  const auto R = guide_curve<Rational>(e.solid, e.cut, o);
+  REQUIRE(R.status == QPStatus::optimal);
+  CHECK(R.program.rows.empty());
+  CHECK(R.samples_positive + R.samples_negative == 0);
+  CHECK(guide_verdict(true, R.program, R.kkt, R.positive_definite).rfind("undecided: ", 0) == 0);
+  const auto sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
+  CHECK(sep.pieces == 0);
+  CHECK(sep.excluded > 0);
+  CHECK(sep.verdict == "undecided");
+  CHECK(sep.reason.find("nothing was checked") != std::string::npos);
+  // With the default strip the same guide's check certifies pieces.
+  const auto R2 = guide_curve<Rational>(e.solid, e.cut, GuideOptions{});
+  const auto sep2 = certify_separation(R2.solid, R2.cut, R2.f_exact, GuideOptions{}.strip);
+  CHECK(sep2.verdict == "certified");
+  CHECK(sep2.pieces > 0);
 }
