@@ -9,7 +9,7 @@ namespace splinex::app {
 Commands add_report(CLI::App& app) {
   auto o = std::make_shared<ReportOptions>();
   auto* c = app.add_subcommand("report", "the main job: crosscheck suite, figures, report.md");
-  c->add_option("--out", o->out_dir, "output folder")->capture_default_str();
+  c->add_option("--out", o->out_dir, "output folder")->check(output_folder())->capture_default_str();
   c->add_flag("--full", o->full, "the long sweep (larger cases, more precisions)");
   c->add_option("--peers", o->peers_dir, "include the peers' judged results from this folder (scripts/run.sh peers writes "
                                          "results/peers)");

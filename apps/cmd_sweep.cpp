@@ -48,7 +48,7 @@ Commands add_sweep(CLI::App& app) {
   auto ro = std::make_shared<RunOptions>();
   auto* rn = sw->add_subcommand("run", "run shard I of N of a plan's jobs (job k when k mod N = I); finished jobs are skipped, so a run resumes");
   rn->add_option("--jobs", ro->jobs, "the plan (jobs.jsonl)")->required();
-  rn->add_option("--dir", ro->dir, "folder of the jobs' outputs")->capture_default_str();
+  rn->add_option("--dir", ro->dir, "folder of the jobs' outputs")->check(output_folder())->capture_default_str();
   rn->add_option("--shard", ro->shard, "I/N")->capture_default_str();
   rn->add_option("--only", ro->only, "run only the job with this id");
   rn->add_flag("--quiet", ro->quiet, "no progress on stderr");
@@ -61,7 +61,7 @@ Commands add_sweep(CLI::App& app) {
   auto* mg = sw->add_subcommand("merge", "check that every job finished, merge the outputs, refit and redraw (the single run's files)");
   mg->add_option("--jobs", mo->jobs, "the plan (jobs.jsonl)")->required();
   mg->add_option("dir", mo->dir, "folder of the jobs' outputs")->required();
-  mg->add_option("--out", mo->out, "folder for the merged files (default: DIR)");
+  mg->add_option("--out", mo->out, "folder for the merged files (default: DIR)")->check(output_folder());
 
   auto so = std::make_shared<SweepPlanOptions>();
   auto sname = std::make_shared<std::string>();
@@ -74,7 +74,7 @@ Commands add_sweep(CLI::App& app) {
   sg->add_option("--eps", so->eps, "as for plan");
   sg->add_option("--runs", so->runs, "as for plan");
   sg->add_option("--sections", so->sections, "as for plan");
-  sg->add_option("--out", *sout, "folder for the files")->required();
+  sg->add_option("--out", *sout, "folder for the files")->check(output_folder())->required();
 
   return {{pl, [po, pname](const Context&) {
              for (const auto& j : sweep_plan(*pname, *po)) std::cout << sweep_job_json(j).dump() << "\n";

@@ -14,28 +14,6 @@ namespace splinex::app {
 
 namespace {
 
-/// The candidate's splines: one spline document, {"splines": [...]} or {"pieces": [{"spline": ...}]}.
-std::vector<BSpline<Rational>> candidate_splines(const Json& doc, const Limits& limits) {
-  std::vector<BSpline<Rational>> out;
-  if (doc.is_object() && doc.contains("splines")) {
-    if (!doc["splines"].is_array()) throw ValidationError("candidate.splines", "is not an array", "give a list of spline documents");
-    for (std::size_t i = 0; i < doc["splines"].size(); ++i)
-      out.push_back(spline_from_json(doc["splines"][i], limits, "candidate.splines[" + std::to_string(i) + "]"));
-  } else if (doc.is_object() && doc.contains("pieces")) {
-    if (!doc["pieces"].is_array()) throw ValidationError("candidate.pieces", "is not an array", "give a list of pieces");
-    for (std::size_t i = 0; i < doc["pieces"].size(); ++i) {
-      const std::string where = "candidate.pieces[" + std::to_string(i) + "]";
-      const Json& pc = doc["pieces"][i];
-      if (!pc.is_object() || !pc.contains("spline"))
-        throw ValidationError(where, "has no \"spline\"", "give each piece as {\"box\": ..., \"spline\": {...}}");
-      out.push_back(spline_from_json(pc["spline"], limits, where + ".spline"));
-    }
-  } else {
-    out.push_back(spline_from_json(doc, limits, "candidate"));
-  }
-  return out;
-}
-
 std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::string& field) {
   if (!doc.contains(field) || !doc[field].is_array())
     throw ValidationError("candidate." + field, "is missing or not an array", "give \"at\" and \"values\" as lists of points");
@@ -137,7 +115,7 @@ Commands add_verify(CLI::App& app) {
                  // T(S) as one spline: the symbolic and interpolation methods give the same exact result.
                  CompositionOptions co;
                  co.expand = o->expand;
-                 rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+                 rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, verify_candidate_splines(cand, ctx.limits), vo, ctx.limits);
                }
                std::cout << rep.to_json().dump(2) << "\n";
                return verdict_status(rep, o->max_bits);
@@ -180,7 +158,7 @@ Commands add_verify(CLI::App& app) {
                if (o->operation == "elevate") op.elevate_method = op.insert_method == "a54" ? "auto" : op.insert_method;
                if (kind == "insert-knots" && op.knots.empty())
                  throw UsageError("knots", o->operation + " needs --knots", "add --knots \"k1,k2,...\"");
-               rep = verify(make_op(kind, op), S, candidate_splines(cand, ctx.limits), vo, ctx.limits);
+               rep = verify(make_op(kind, op), S, verify_candidate_splines(cand, ctx.limits), vo, ctx.limits);
              }
              std::cout << rep.to_json().dump(2) << "\n";
              return verdict_status(rep, o->max_bits);

@@ -10,9 +10,19 @@
 
 #include "crosscheck/operations.hpp"
 #include "io/json_io.hpp"
+#include "io/output_path.hpp"
 #include "spline/limits.hpp"
 
 namespace splinex::app {
+
+/// CLI11 checks for options that name an output file or folder: a bad path is refused while the
+/// options are read, before any work (`splinex: error: options: --obj: . is a folder, not a file`).
+inline CLI::Validator output_file() {
+  return CLI::Validator([](std::string& s) { return output_file_problem(s); }, "FILE");
+}
+inline CLI::Validator output_folder() {
+  return CLI::Validator([](std::string& s) { return output_folder_problem(s); }, "DIR");
+}
 
 /// What a command sees when it runs: the global limits (--max-control-points, --max-degree).
 struct Context {

@@ -57,6 +57,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-degree", ctx.limits.max_degree, "degree limit per direction (0 .. 10^8)")
       ->check(CLI::Range(0.0, 1e8))
       ->capture_default_str();
+  app.add_option("--max-input-bits", ctx.limits.max_input_bits,
+                 "the longest number (numerator or denominator, bits) of a model read by V-rep, cut or hybrid, checked "
+                 "when it is read (64 .. 10^7)")
+      ->check(CLI::Range(64.0, 1e7))
+      ->capture_default_str();
   sx::app::Commands commands;
   for (auto add : command_list)
     for (auto& c : add(app)) commands.push_back(std::move(c));

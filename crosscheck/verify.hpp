@@ -77,6 +77,10 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
                             const Limits& limits = {});
 
 /// The exact result of `op` on `input` against the candidate.
+/// A candidate document's splines, as `splinex verify` and the Python module read it: one spline
+/// document, {"splines": [...]} or {"pieces": [{"spline": ...}, ...]} (extract-bezier's output).
+std::vector<BSpline<Rational>> verify_candidate_splines(const Json& doc, const Limits& limits = {});
+
 VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const std::vector<BSpline<Rational>>& candidate,
                     const VerifyOptions& options = {}, const Limits& limits = {});
 

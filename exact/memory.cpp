@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
+#include <atomic>
 #include <new>
 
 #include "spline/errors.hpp"
@@ -26,19 +28,47 @@ namespace splinex {
 
 namespace {
 
+// Headroom for unwinding. Destructors run while a std::bad_alloc unwinds, and some of them allocate
+// (nlohmann's json destroys a large tree through a std::vector stack, inside a noexcept destructor:
+// a failure there is std::terminate, an abort instead of the typed line). So the budget keeps a
+// headroom below the hard limit, and the first failed allocation raises the soft limit by it
+// before throwing: the work stops at the budget, the unwinding has memory to finish.
+std::atomic<std::size_t> unwind_headroom{0};
+std::atomic<bool> headroom_released{false};
+
+void release_headroom() {
+#ifndef SPLINEX_ASAN
+  if (headroom_released.exchange(true)) return;
+  rlimit rl{};
+  if (getrlimit(RLIMIT_AS, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY) return;
+  rlim_t raised = rl.rlim_cur + static_cast<rlim_t>(unwind_headroom.load());
+  if (rl.rlim_max != RLIM_INFINITY && raised > rl.rlim_max) raised = rl.rlim_max;
+  rl.rlim_cur = raised;
+  setrlimit(RLIMIT_AS, &rl);
+#endif
+}
+
+[[noreturn]] void out_of_memory() {
+  release_headroom();
+  throw std::bad_alloc();
+}
+
+// operator new's handler: the same headroom, then the exception (not a retry: the work stops).
+void new_handler() { out_of_memory(); }
+
 void* throwing_malloc(std::size_t n) {
   void* p = std::malloc(n == 0 ? 1 : n);
-  if (!p) throw std::bad_alloc();
+  if (!p) out_of_memory();
   return p;
 }
 void* throwing_calloc(std::size_t k, std::size_t n) {
   void* p = std::calloc(k == 0 ? 1 : k, n == 0 ? 1 : n);
-  if (!p) throw std::bad_alloc();
+  if (!p) out_of_memory();
   return p;
 }
 void* throwing_realloc(void* old, std::size_t n) {
   void* p = std::realloc(old, n == 0 ? 1 : n);
-  if (!p) throw std::bad_alloc();  // `old` stays valid and owned by its GMP/FLINT value
+  if (!p) out_of_memory();  // `old` stays valid and owned by its GMP/FLINT value
   return p;
 }
 // GMP's signatures carry the old size.
@@ -54,6 +84,7 @@ MemoryBudget& budget_state() {
 }  // namespace
 
 void install_throwing_allocators() {
+  std::set_new_handler(new_handler);
   mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
   __flint_set_memory_functions(throwing_malloc, throwing_calloc, throwing_realloc, std::free);
 }
@@ -105,8 +136,15 @@ MemoryBudget set_memory_budget(std::size_t bytes) {
     b.note = std::string("getrlimit failed: ") + std::strerror(errno);
     return b;
   }
+  // The headroom (an eighth of the budget, 16 MiB to 256 MiB) is kept below the hard limit, so it can
+  // be released when the budget runs out (release_headroom); under an external cap (ulimit -v) the
+  // budget shrinks by it instead.
+  const std::size_t headroom = std::min<std::size_t>(std::max<std::size_t>(bytes / 8, std::size_t(16) << 20), std::size_t(256) << 20);
   rlim_t want = static_cast<rlim_t>(bytes);
-  if (rl.rlim_max != RLIM_INFINITY && want > rl.rlim_max) want = rl.rlim_max;
+  if (rl.rlim_max != RLIM_INFINITY && want + headroom > rl.rlim_max)
+    want = rl.rlim_max > 2 * headroom ? rl.rlim_max - headroom : rl.rlim_max / 2;
+  unwind_headroom = headroom;
+  headroom_released = false;
   rl.rlim_cur = want;
   if (setrlimit(RLIMIT_AS, &rl) != 0) {
     b.note = std::string("setrlimit failed: ") + std::strerror(errno);

@@ -2,6 +2,7 @@
 // assembled from their parts in the order it is read, and a manifest that only a finished run marks
 // complete.
 #include "experiments/report.hpp"
+#include "io/output_path.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -180,7 +181,7 @@ int run_report(const ReportOptions& opt) {
         !fs::exists(fs::path(opt.peers_dir) / "occt.md"))
       throw UsageError("peers", opt.peers_dir + " holds no scipy.md, octave.md or occt.md", "run scripts/run.sh peers first");
   }
-  fs::create_directories(opt.out_dir);
+  prepare_output_folder(opt.out_dir, "out");
   // A manifest marked incomplete first: an interrupted run (Ctrl-C) leaves it so, and its files
   // cannot pass for a finished report. Writing it also probes that the folder is writable before
   // minutes of work.

@@ -110,6 +110,8 @@ std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& s
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {
+  if (path.empty()) throw UsageError("output", "the file name is empty", "give a file name");
+  if (std::filesystem::is_directory(path)) throw UsageError(path, "is a folder, not a file", "give a file name");
   const std::string tmp = path + ".tmp";
   {
     std::ofstream f(tmp, std::ios::binary);

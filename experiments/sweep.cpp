@@ -19,6 +19,7 @@
 #include "experiments/report.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/untrim_tolerance.hpp"
+#include "io/output_path.hpp"
 #include "proofs/suite.hpp"
 #include "spline/errors.hpp"
 #include "spline/parallel.hpp"
@@ -386,6 +387,7 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
                         std::size_t threads) {
   if (shards == 0 || shard >= shards) throw UsageError("shard", std::to_string(shard) + "/" + std::to_string(shards) + " is no shard", "give I/N with 0 <= I < N");
   if (threads == 0 || threads > 1024) throw UsageError("threads", std::to_string(threads) + " is outside 1..1024", "give e.g. the number of cores");
+  prepare_output_folder(dir, "dir");
   std::vector<std::size_t> mine;
   for (std::size_t k = 0; k < jobs.size(); ++k)
     if (k % shards == shard) mine.push_back(k);
@@ -446,6 +448,7 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
 }
 
 bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir) {
+  prepare_output_folder(out_dir, "out");
   std::vector<Json> rows;
   std::vector<std::string> missing;
   for (const auto& job : jobs) {
@@ -501,6 +504,7 @@ bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, cons
 bool sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir,
                   const std::function<void(const std::string&)>& progress) {
   sweep_plan(name, options);  // the name's and the options' errors
+  prepare_output_folder(out_dir, "out");  // before the work, not after it
   if (name == "report") {
     return run_report(report_options(out_dir, options.full, report_sections(options))) == 0;
   }

@@ -21,6 +21,7 @@ void only_fields(const Json& doc, std::initializer_list<const char*> names, cons
 }  // namespace
 
 Solid2<Rational> solid2_from_json(const Json& doc, const Limits& limits) {
+  check_document_bits(doc, "solid", limits);
   if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"solid2d\", \"facets\": [...]}");
   if (!doc.contains("type") || doc["type"] != "solid2d") throw ParseError("type", "must be \"solid2d\"", "set \"type\": \"solid2d\"");
   only_fields(doc, {"type", "facets", "description"}, "", "use type, facets (and description)");
@@ -77,6 +78,7 @@ std::string solid_document_type(const Json& doc) {
 }
 
 Solid3<Rational> solid3_from_json(const Json& doc, const Limits& limits) {
+  check_document_bits(doc, "solid", limits);
   if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"solid3d\", \"facets\": [...]}");
   if (!doc.contains("type") || doc["type"] != "solid3d") throw ParseError("type", "must be \"solid3d\"", "set \"type\": \"solid3d\"");
   only_fields(doc, {"type", "facets", "description"}, "", "use type, facets (and description)");
@@ -163,6 +165,7 @@ std::string solid3_vtk(const Solid3<Rational>& S) {
 }
 
 CuttingSurfaceDoc cutting_surface_from_json(const Json& doc, const Limits& limits) {
+  check_document_bits(doc, "surface", limits);
   if (!doc.is_object() || !doc.contains("type") || doc["type"] != "cutting_surface")
     throw ParseError("type", "must be \"cutting_surface\"", "give {\"type\": \"cutting_surface\", \"patch\": {...}, \"domain\": [[u, v], ...]}");
   only_fields(doc, {"type", "patch", "domain", "description"}, "", "use type, patch, domain (and description)");

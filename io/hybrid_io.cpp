@@ -7,6 +7,7 @@
 namespace splinex {
 
 HybridPatch<Rational> hybrid_from_json(const Json& doc, const Limits& limits) {
+  check_document_bits(doc, "patch", limits);
   if (!doc.is_object()) throw ParseError("document", "is not an object", "give {\"type\": \"hybrid_patch\", ...}");
   static const std::set<std::string> known{"type", "domain", "degree", "sides", "ribbon_factor"};
   for (auto it = doc.begin(); it != doc.end(); ++it)

@@ -1,6 +1,8 @@
 #include <cmath>
 #include "io/json_io.hpp"
 
+#include <cctype>
+
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -175,6 +177,29 @@ Rational json_number(const Json& j, const std::string& field) {
   if (j.is_number_unsigned()) return Rational(j.get<std::uint64_t>());
   if (!j.is_string()) throw ParseError(field, "is not a number", "write a number or a string holding one");
   return parse_number(j.get<std::string>(), field);
+}
+
+void check_document_bits(const Json& doc, const std::string& where, const Limits& limits) {
+  if (doc.is_object()) {
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+      if (it.key() != "summary" && it.key() != "topology")  // what a command wrote about the model, not read as input
+        check_document_bits(it.value(), where + "." + it.key(), limits);
+  } else if (doc.is_array()) {
+    for (std::size_t i = 0; i < doc.size(); ++i) check_document_bits(doc[i], where + "[" + std::to_string(i) + "]", limits);
+  } else if (doc.is_number_integer()) {
+    limits.check_bits(64, where);  // within 64 bits: under any useful limit
+  } else if (doc.is_string()) {
+    const std::string& t = doc.get_ref<const std::string&>();
+    // Names and labels are strings too: only a text that reads as a number is one.
+    if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '+' || t[0] == '.')) return;
+    Rational x;
+    try {
+      x = parse_number(t, where);
+    } catch (const ParseError&) {
+      return;
+    }
+    limits.check_bits(bit_size(x), where);
+  }
 }
 
 int json_int(const Json& j, const std::string& field, int lo, int hi) {

@@ -37,6 +37,12 @@ Json read_json_file(const std::string& path, const ReadLimits& limits = {});  //
 
 /// A number field (string or number text) read exactly.
 Rational json_number(const Json& j, const std::string& field);
+/// Every number of a model document (any text that reads as one) within limits.max_input_bits;
+/// SizeLimitError naming its path otherwise. The readers of the exact subdivision engines' models
+/// (V-rep, cutting, the hybrid patch) call it before anything else, since their work grows with
+/// the length of the numbers and no box budget bounds that.
+void check_document_bits(const Json& doc, const std::string& where, const Limits& limits);
+
 /// A non-negative integer field (e.g. a degree), range-checked.
 int json_int(const Json& j, const std::string& field, int lo, int hi);
 

@@ -72,6 +72,7 @@ Json region_to_json(const Region<T>& R) {
 }
 
 TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, const std::string& where) {
+  check_document_bits(doc, where, limits);
   if (!doc.is_object() || !doc.contains("type") || doc["type"] != "trimmed_vmodel")
     throw ValidationError(where, "is not a trimmed V-model document", "give {\"type\": \"trimmed_vmodel\", ...} (vrep boolean writes them)");
   for (auto it = doc.begin(); it != doc.end(); ++it)
@@ -106,7 +107,11 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
     M.trivariates.push_back(spline_from_json(c["trivariate"], limits, w + ".trivariate"));
     x.trim = c.contains("trim") ? region_from_json(c["trim"], w + ".trim") : region_and<Rational>({});
     x.name = c.contains("name") && c["name"].is_string() ? c["name"].get<std::string>() : "cell " + std::to_string(i);
-    x.category = c.contains("category") && c["category"].is_string() ? c["category"].get<std::string>() : std::string();
+    if (c.contains("category") && (!c["category"].is_string() ||
+                                   (c["category"] != "A" && c["category"] != "B" && c["category"] != "both" && c["category"] != "")))
+      throw ValidationError(w + ".category", c["category"].dump() + " is not a category",
+                            "give \"A\", \"B\", \"both\" or \"\" (the operand the cell comes from)");
+    x.category = c.contains("category") ? c["category"].get<std::string>() : std::string();
     // The status is recomputed by whoever needs it (vrep volume); a given one is not trusted.
     x.status = Truth::mixed;
     if (c.contains("inherited")) {

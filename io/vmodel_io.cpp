@@ -10,6 +10,7 @@
 namespace splinex {
 
 VModelCells vmodel_cells_from_json(const Json& doc, const Limits& limits, const std::string& where) {
+  check_document_bits(doc, where, limits);
   VModelCells out;
   if (!doc.is_object()) throw ValidationError(where, "is not a JSON object", "give a V-model or trivariate document");
   if (doc.contains("type") && doc["type"] == "trimmed_vmodel")

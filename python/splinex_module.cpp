@@ -7,6 +7,9 @@
 //   E = splinex.elevate(S, by=1)                  # exact, Fractions
 //   rep = splinex.verify("elevate", S, my_float_result, by=1)
 //   assert rep.bits_lost < 4 and rep.structure != "different"
+#include <algorithm>
+#include <limits>
+
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -39,22 +42,54 @@ py::object fraction(const Rational& x) {
   return F(to_fraction_string(x));
 }
 
+/// A Python int (not a bool) in [lo, hi], or a ValidationError naming the field (never pybind11's
+/// untyped "Unable to cast").
+long long int_in_range(const py::handle& v, const std::string& field, long long lo, long long hi) {
+  if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v))
+    throw ValidationError(field, "is not an integer (" + std::string(py::str(v.get_type().attr("__name__"))) + ")",
+                          "give an int in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  const py::int_ lo_py(lo), hi_py(hi);
+  if (v < lo_py || v > hi_py)
+    throw ValidationError(field, std::string(py::str(v)) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                          "give an int in that range");
+  return v.cast<long long>();
+}
+
+/// Documents nest a few levels (a spline: 3), as the CLI's JSON reader: deeper nesting (or a list
+/// that contains itself) is refused before it costs stack.
+constexpr int max_nesting = 64;
+
+Json degrees_json(const py::handle& v, const std::string& field) {
+  if (!py::isinstance<py::list>(v) && !py::isinstance<py::tuple>(v))
+    throw ValidationError(field, "is not a list of degrees", "give e.g. [3] or [2, 3]");
+  Json out = Json::array();
+  std::size_t i = 0;
+  for (auto x : v) {
+    out.push_back(int_in_range(x, field + "[" + std::to_string(i) + "]", 0, std::numeric_limits<int>::max()));
+    if (++i > 3) break;  // the reader refuses more than 3 directions; no need to read a huge list
+  }
+  return out;
+}
+
 /// Python containers of numbers -> the JSON document splinex reads (numbers as exact strings).
-Json to_json_numbers(const py::handle& v, const std::string& field) {
+Json to_json_numbers(const py::handle& v, const std::string& field, int depth = 0) {
+  if (depth > max_nesting)
+    throw ValidationError(field, "nests deeper than " + std::to_string(max_nesting) + " levels (or contains itself)",
+                          "give a document of numbers, lists and dicts as splinex writes them");
   if (py::isinstance<py::dict>(v)) {
     Json out = Json::object();
     for (auto kv : v.cast<py::dict>()) {
       const std::string key = py::str(kv.first);
       out[key] = (key == "type") ? Json(std::string(py::str(kv.second)))
-                 : (key == "degrees") ? Json(kv.second.cast<std::vector<int>>())
-                                      : to_json_numbers(kv.second, field + "." + key);
+                 : (key == "degrees") ? degrees_json(kv.second, field + "." + key)
+                                      : to_json_numbers(kv.second, field + "." + key, depth + 1);
     }
     return out;
   }
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
     Json out = Json::array();
     std::size_t i = 0;
-    for (auto x : v) out.push_back(to_json_numbers(x, field + "[" + std::to_string(i++) + "]"));
+    for (auto x : v) out.push_back(to_json_numbers(x, field + "[" + std::to_string(i++) + "]", depth + 1));
     return out;
   }
   if (py::isinstance<py::bool_>(v)) return Json(v.cast<bool>());  // flags of result documents ("homogeneous")
@@ -112,17 +147,39 @@ py::list fractions_of(const std::vector<Rational>& v) {
   return l;
 }
 
-/// The Operation for `name` from keyword arguments (the CLI's options).
+/// The Operation for `name` from keyword arguments (the CLI's options, range-checked as the CLI
+/// does; an argument the operation does not take is a TypeError, as Python's own functions raise).
 Operation make_operation(const std::string& name, const py::kwargs& kw) {
   Operation op = Operation::parse_kind(name);
-  if (kw.contains("dir")) op.dir = kw["dir"].cast<int>();
+  std::vector<std::string> allowed{"dir"};
+  switch (op.kind) {
+    case Operation::Kind::insert_knots: allowed.push_back("knots"); break;
+    case Operation::Kind::elevate: allowed.push_back("by"); break;
+    case Operation::Kind::derivative: allowed.push_back("order"); break;
+    case Operation::Kind::split: allowed.push_back("at"); break;
+    case Operation::Kind::reparametrize: allowed.push_back("interval"); break;
+    case Operation::Kind::extract_bezier: allowed.clear(); break;
+    default: break;
+  }
+  for (auto kv : kw) {
+    const std::string key = py::str(kv.first);
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::string names;
+      for (const auto& a : allowed) names += (names.empty() ? "" : ", ") + a;
+      throw py::type_error("verify: " + name + " takes no argument '" + key + "'" +
+                           (names.empty() ? std::string(" (it takes none)") : " (it takes " + names + ")"));
+    }
+  }
+  if (kw.contains("dir")) op.dir = static_cast<int>(int_in_range(kw["dir"], "dir", 0, 2));
   switch (op.kind) {
     case Operation::Kind::insert_knots:
       if (!kw.contains("knots")) throw UsageError("knots", "insert-knots needs knots", "pass knots=[...]");
       op.knots = to_rationals(kw["knots"], "knots");
       break;
-    case Operation::Kind::elevate: op.by = kw.contains("by") ? kw["by"].cast<int>() : 1; break;
-    case Operation::Kind::derivative: op.by = kw.contains("order") ? kw["order"].cast<int>() : 1; break;
+    case Operation::Kind::elevate: op.by = kw.contains("by") ? static_cast<int>(int_in_range(kw["by"], "by", 0, 1000000)) : 1; break;
+    case Operation::Kind::derivative:
+      op.by = kw.contains("order") ? static_cast<int>(int_in_range(kw["order"], "order", 1, 1000)) : 1;
+      break;
     case Operation::Kind::split:
       if (!kw.contains("at")) throw UsageError("at", "split needs a parameter", "pass at=...");
       op.at = to_rational(kw["at"], "at");
@@ -140,6 +197,15 @@ Operation make_operation(const std::string& name, const py::kwargs& kw) {
   return op;
 }
 
+/// verify's options, range-checked as the CLI checks --precision and --factor.
+VerifyOptions verify_options(const py::object& precision, const py::object& factor) {
+  VerifyOptions vo;
+  vo.precision = static_cast<int>(int_in_range(precision, "precision", 2, 100000));
+  vo.factor = to_rational(factor, "factor");
+  if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "pass e.g. factor=2");
+  return vo;
+}
+
 /// What verify returns: the report's main numbers as attributes, the whole report as `report`.
 struct PyReport {
   std::string structure;
@@ -155,7 +221,8 @@ PyReport to_py(const VerifyReport& r) {
   p.structure = r.structure;
   const Json j = r.to_json();
   p.bits_lost = r.worst_bits_lost();
-  p.function_upper = fraction(r.function.upper);
+  // Only a certified bound (as the JSON report): None where the functions were not compared.
+  p.function_upper = r.function.certified ? fraction(r.function.upper) : py::none();
   p.function_lower = fraction(r.function.lower);
   p.at = fractions_of(r.function.at);
   p.certified = r.function.certified;
@@ -190,7 +257,8 @@ PYBIND11_MODULE(splinex, m) {
       });
   m.def(
       "structured_case",
-      [](std::uint64_t seed, int max_dim, bool rational, bool discontinuous, bool extreme_values) {
+      [](std::uint64_t seed, const py::object& max_dim_obj, bool rational, bool discontinuous, bool extreme_values) {
+        const int max_dim = static_cast<int>(int_in_range(max_dim_obj, "max_dim", 1, 3));
         std::mt19937_64 rng(seed);
         StructuredOptions so;
         so.max_dim = max_dim;
@@ -235,14 +303,12 @@ PYBIND11_MODULE(splinex, m) {
         py::arg("dir") = 0);
   m.def(
       "verify",
-      [](const std::string& operation, const py::dict& S, const py::object& candidate, int precision, const py::object& factor,
-         const py::kwargs& kw) {
-        VerifyOptions vo;
-        vo.precision = precision;
-        vo.factor = to_rational(factor, "factor");
-        if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "pass e.g. factor=2");
+      [](const std::string& operation, const py::dict& S, const py::object& candidate, const py::object& precision,
+         const py::object& factor, const py::kwargs& kw) {
+        VerifyOptions vo = verify_options(precision, factor);
         const BSpline<Rational> input = to_spline(S, "spline");
         if (operation == "eval") {
+          for (auto kv : kw) throw py::type_error("verify: eval takes no argument '" + std::string(py::str(kv.first)) + "'");
           if (!py::isinstance<py::dict>(candidate) || !candidate.contains("at") || !candidate.contains("values"))
             throw ValidationError("candidate", "an eval candidate is {\"at\": [...], \"values\": [...]}", "give both lists");
           std::vector<std::vector<Rational>> at, values;
@@ -253,8 +319,10 @@ PYBIND11_MODULE(splinex, m) {
           return to_py(verify_values(input, at, values, vo));
         }
         std::vector<BSpline<Rational>> cands;
-        if (py::isinstance<py::dict>(candidate)) {
-          cands.push_back(to_spline(candidate, "candidate"));
+        if (py::isinstance<py::dict>(candidate)) {  // the CLI's candidate documents: a spline, {"splines": ...}, {"pieces": ...}
+          Json doc = to_json_numbers(candidate, "candidate");
+          if (!doc.contains("splines") && !doc.contains("pieces") && !doc.contains("type")) doc["type"] = "bspline";
+          cands = verify_candidate_splines(doc);
         } else {
           std::size_t i = 0;
           for (auto c : candidate) {
@@ -271,12 +339,9 @@ PYBIND11_MODULE(splinex, m) {
       "dir=... selects the direction. Floats are taken as the doubles they are.");
   m.def(
       "verify_compose",
-      [](const py::dict& T, const py::dict& S, const py::object& candidate, const std::string& method, bool expand, int precision,
-         const py::object& factor) {
-        VerifyOptions vo;
-        vo.precision = precision;
-        vo.factor = to_rational(factor, "factor");
-        if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "pass e.g. factor=2");
+      [](const py::dict& T, const py::dict& S, const py::object& candidate, const std::string& method, bool expand,
+         const py::object& precision, const py::object& factor) {
+        VerifyOptions vo = verify_options(precision, factor);
         const auto outer = to_spline(T, "outer"), inner = to_spline(S, "inner");
         if (method == "trimmed") return to_py(verify_trimmed_composition(outer, inner, to_json_numbers(candidate, "candidate"), vo));
         if (method == "tensor") return to_py(verify_tensor_composition(outer, inner, to_json_numbers(candidate, "candidate"), vo));

@@ -130,7 +130,8 @@ def ctest_commands(build: Path):
         cmd = t.get("command", [])
         if not cmd or "long" in labels or Path(cmd[0]).name == "splinex_tests":
             continue
-        if t["name"] in ("cli.report", "cli.report_manifest", "cli.install_find_package", "layering"):
+        if t["name"] in ("cli.report", "cli.report_manifest", "cli.install_find_package", "layering") or \
+                t["name"].startswith("cli.report_part"):
             continue
         if Path(cmd[0]).name == "cli_expect.sh" and "--" in cmd:
             cmd = cmd[cmd.index("--") + 1:]

@@ -150,6 +150,18 @@ void set_from_homogeneous(BSpline<T>& S, std::vector<T>&& H, bool rational) {
   }
 }
 
+namespace detail {
+/// Every operation along one parametric direction checks it first (a direction past the end
+/// would read outside the spline's degrees and knots).
+template <class T>
+void check_direction(const BSpline<T>& S, int d) {
+  if (d < 0 || d >= S.dim())
+    throw UsageError("dir", "direction " + std::to_string(d) + " does not exist in a spline of dimension " +
+                                std::to_string(S.dim()),
+                     "give a direction in [0, " + std::to_string(S.dim() - 1) + "]");
+}
+}  // namespace detail
+
 /// The storage seen from direction d: `before` control points of lower directions per step in d
 /// (contiguous), n = count(d) steps, and `after` such fibres of higher directions.
 struct FibreLayout {
@@ -157,6 +169,7 @@ struct FibreLayout {
 };
 template <class T>
 FibreLayout fibre_layout(const BSpline<T>& S, int d) {
+  detail::check_direction(S, d);
   FibreLayout f;
   for (int e = 0; e < d; ++e) f.before *= S.count(e);
   for (int e = d + 1; e < S.dim(); ++e) f.after *= S.count(e);

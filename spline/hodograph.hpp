@@ -9,6 +9,7 @@ namespace splinex {
 
 template <class T>
 BSpline<T> hodograph(const BSpline<T>& S, int d) {
+  detail::check_direction(S, d);
   if (S.is_rational())
     throw UsageError("spline", "the hodograph of a rational spline is not a B-spline", "use derivative()");
   if (S.degrees[d] == 0) throw UsageError("degrees", "a degree-0 spline has no hodograph here", "elevate first");

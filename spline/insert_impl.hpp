@@ -7,14 +7,6 @@
 namespace splinex {
 namespace detail {
 
-template <class T>
-void check_direction(const BSpline<T>& S, int d) {
-  if (d < 0 || d >= S.dim())
-    throw UsageError("dir", "direction " + std::to_string(d) + " does not exist in a spline of dimension " +
-                                std::to_string(S.dim()),
-                     "give a direction in [0, " + std::to_string(S.dim() - 1) + "]");
-}
-
 /// A5.1 CurveKnotIns on a block of n points of m coordinates: insert x r times into span k where
 /// x already has multiplicity s. Each new point is P_{i-1} + alpha (P_i - P_{i-1}): one
 /// multiplication per coordinate, alpha computed once per point.

@@ -13,6 +13,10 @@ struct Limits {
   /// Summed over the splines one operation returns (untrimming: every tile's net), so that many
   /// splines each under max_control_points cannot together exhaust memory.
   std::size_t max_total_control_points = 50'000'000;
+  /// Bits of any one number (numerator or denominator) of a model read by an exact subdivision
+  /// engine (V-rep, cutting, the hybrid patch): their work grows with the length of the numbers,
+  /// which no box budget bounds, so longer numbers are refused when the model is read.
+  std::size_t max_input_bits = 4096;
 
   void check_count(std::size_t count, const std::string& what) const {
     if (count > max_control_points)
@@ -29,6 +33,13 @@ struct Limits {
                                " control points together, above the limit of " +
                                std::to_string(max_total_control_points),
                            "ask for less (e.g. a larger tolerance), or raise the limit with --max-total-control-points");
+  }
+  void check_bits(std::size_t bits, const std::string& what) const {
+    if (bits > max_input_bits)
+      throw SizeLimitError(what,
+                           "has a number of " + std::to_string(bits) + " bits, over the exact limit of " +
+                               std::to_string(max_input_bits),
+                           "give the number with fewer digits, or raise the limit with --max-input-bits");
   }
   void check_degree(long degree, const std::string& what) const {
     if (degree > max_degree)

@@ -57,6 +57,23 @@ void for_overlapping_pairs(const std::vector<std::pair<R, R>>& V, F&& f) {
   }
 }
 
+/// The number of unordered pairs of V whose closed ranges intersect, counted up to `cap` (the count
+/// stops there): O(n log n), so a caller can choose an algorithm before enumerating the pairs.
+template <class R>
+std::size_t count_overlapping_pairs(const std::vector<std::pair<R, R>>& V, std::size_t cap) {
+  std::vector<std::size_t> iv(V.size());
+  std::iota(iv.begin(), iv.end(), 0);
+  std::sort(iv.begin(), iv.end(), [&](std::size_t x, std::size_t y) { return V[x].first < V[y].first; });
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < iv.size() && count < cap; ++k) {
+    /// Every later interval whose left end is <= this one's right end meets it.
+    const auto end = std::upper_bound(iv.begin() + static_cast<std::ptrdiff_t>(k) + 1, iv.end(), V[iv[k]].second,
+                                      [&](const R& x, std::size_t j) { return x < V[j].first; });
+    count += static_cast<std::size_t>(end - (iv.begin() + static_cast<std::ptrdiff_t>(k) + 1));
+  }
+  return std::min(count, cap);
+}
+
 /// The first pair of loop edges, in the order (loop l, loop m, edge i, edge j) with (l, i) < (m, j),
 /// for which meets(l, i, m, j) holds, among the edges whose x-ranges x[k] meet; id[k] = (loop, edge).
 template <class R, class Meets>

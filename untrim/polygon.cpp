@@ -1,9 +1,14 @@
 #include "untrim/polygon.hpp"
 
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Surface_sweep_2_algorithms.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <CGAL/Simple_cartesian.h>
 
@@ -50,6 +55,63 @@ Rational polygon_union_area(const std::vector<Polygon>& polygons) {
     for (auto h = pw.holes_begin(); h != pw.holes_end(); ++h) a += h->area();  // holes are clockwise
   }
   return rq(a);
+}
+
+namespace {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using Segments = CGAL::Arr_segment_traits_2<EK>;
+
+EK::FT ek(const Rational& x) { return EK::FT(mpq_class(x.backend().data())); }
+
+/// Do any two of the given loops (each simple) meet? A vertex of two loops, or CGAL's sweep finding
+/// an interior intersection of two edges (a crossing, an overlap, or a vertex inside an edge: the
+/// edges of one simple loop share only the vertices of adjacent edges). The sweep stops at the first
+/// one: O(n log n).
+bool loops_meet(const std::vector<Polygon>& loops, const std::vector<std::size_t>& which) {
+  std::vector<std::pair<const Point2<Rational>*, std::size_t>> vertices;
+  for (const std::size_t l : which)
+    for (const auto& v : loops[l]) vertices.emplace_back(&v, l);
+  std::sort(vertices.begin(), vertices.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
+  for (std::size_t k = 1; k < vertices.size(); ++k)
+    if (*vertices[k].first == *vertices[k - 1].first && vertices[k].second != vertices[k - 1].second) return true;
+  std::vector<Segments::Curve_2> curves;
+  for (const std::size_t l : which)
+    for (std::size_t i = 0; i < loops[l].size(); ++i) {
+      const auto &a = loops[l][i], &b = loops[l][(i + 1) % loops[l].size()];
+      curves.emplace_back(EK::Point_2(ek(a[0]), ek(a[1])), EK::Point_2(ek(b[0]), ek(b[1])));
+    }
+  return CGAL::do_curves_intersect(curves.begin(), curves.end());
+}
+
+}  // namespace
+
+std::optional<std::array<std::size_t, 2>> first_meeting_loops(const std::vector<Polygon>& loops) {
+  const std::size_t n = loops.size();
+  std::vector<std::size_t> which(n);
+  std::iota(which.begin(), which.end(), 0);
+  if (n < 2 || !loops_meet(loops, which)) return std::nullopt;
+  // The least m such that loops 0..m meet (monotone in m: bisection), then the least l < m such that
+  // loops 0..l and m meet (monotone in l).
+  std::size_t lo = 1, hi = n - 1;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    which.resize(mid + 1);
+    std::iota(which.begin(), which.end(), 0);
+    if (loops_meet(loops, which)) hi = mid;
+    else lo = mid + 1;
+  }
+  const std::size_t m = lo;
+  std::size_t a = 0, b = m - 1;
+  while (a < b) {
+    const std::size_t mid = a + (b - a) / 2;
+    which.resize(mid + 1);
+    std::iota(which.begin(), which.end(), 0);
+    which.push_back(m);
+    if (loops_meet(loops, which)) b = mid;
+    else a = mid + 1;
+  }
+  return std::array<std::size_t, 2>{a, m};
 }
 
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c) {

@@ -1,6 +1,8 @@
 // Exact polygons in a parameter plane: CGAL's exact polygon area and simplicity test (an
 // independent check of the sweep's tiles), and clipping by half-planes (Sutherland-Hodgman, exact).
 #pragma once
+#include <array>
+#include <optional>
 #include <vector>
 
 #include "exact/rational.hpp"
@@ -23,6 +25,12 @@ bool polygon_is_simple(const Polygon& p);
 /// the area of the domain the exact gap of a tiling. Polygons with fewer than 3 vertices or zero
 /// area are ignored; a non-simple polygon is a std::invalid_argument (CGAL needs simple ones).
 Rational polygon_union_area(const std::vector<Polygon>& polygons);
+/// Loops that meet (share a point), each loop simple: none when they are pairwise disjoint, else
+/// {l, m} with m the least loop that meets an earlier one and l the least loop it meets. By CGAL's
+/// sweep for intersecting segments (Surface_sweep_2, stopping at the first) and a sort of the
+/// vertices, bisected over prefixes of the loops: O(n log^2 n) however many edges overlap in x (an
+/// interval join over x is quadratic for many equal or nested loops).
+std::optional<std::array<std::size_t, 2>> first_meeting_loops(const std::vector<Polygon>& loops);
 Polygon clip_halfplane(const Polygon& p, const Rational& a, const Rational& b, const Rational& c);
 
 /// The region of an inner piece for an affine inner map s_c(r, t) = al[c] + be[c] r + ga[c] t: the

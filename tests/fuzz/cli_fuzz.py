@@ -20,6 +20,7 @@ import json
 import os
 import random
 import resource
+import signal
 import shutil
 import subprocess
 import sys
@@ -336,6 +337,8 @@ def has_null(value, key=None):
 def classify(kind, rc, out, err, timed_out):
     if timed_out:
         return "FAIL-timeout"
+    if rc in (-signal.SIGXCPU, -signal.SIGKILL):
+        return "FAIL-cpu-budget"
     if rc < 0:
         return "FAIL-signal-%d" % -rc
     lines = err.decode(errors="replace").rstrip("\n").split("\n") if err else []
@@ -384,8 +387,14 @@ def main():
     units = {"M": 20, "G": 30}
     cap = int(a.memory[:-1]) << units[a.memory[-1]]
 
+    # The per-case budget is CPU time (RLIMIT_CPU: SIGXCPU at --timeout seconds of CPU), so a case
+    # does not fail because other jobs keep the cores busy; the wall-clock timeout is only a backstop
+    # (ten times the budget) for a process that waits instead of computing.
+    cpu = max(1, int(a.timeout))
+
     def limit():
         resource.setrlimit(resource.RLIMIT_AS, (2 * cap, 2 * cap))
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
 
     counts, failures, t0 = {}, 0, time.time()
     for case in range(a.cases):
@@ -416,7 +425,7 @@ def main():
         timed_out = False
         start = time.time()
         try:
-            p = subprocess.run(cmd, capture_output=True, timeout=a.timeout, preexec_fn=limit)
+            p = subprocess.run(cmd, capture_output=True, timeout=10 * a.timeout, preexec_fn=limit)
             rc, out, err = p.returncode, p.stdout, p.stderr
         except subprocess.TimeoutExpired as e:
             rc, out, err, timed_out = -999, e.stdout or b"", e.stderr or b"", True

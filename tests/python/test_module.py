@@ -85,6 +85,44 @@ def main():
         pass
     else:
         raise AssertionError("a candidate of another dimension was accepted")
+    # Arguments are checked as the CLI checks them (issue 47): types and ranges are ValueErrors naming
+    # the field, an argument the operation does not take is a TypeError, never pybind11's untyped
+    # RuntimeError; nesting is limited, so a list that contains itself is refused, not a crash.
+    R = splinex.reverse(S)
+    def raises(kind, text, f, *a, **kw):
+        try:
+            f(*a, **kw)
+        except kind as e:
+            assert text in str(e), (text, str(e))
+        else:
+            raise AssertionError("no %s for %s" % (kind.__name__, text))
+    raises(ValueError, "precision: -5 is outside [2, 100000]", splinex.verify, "reverse", S, R, precision=-5)
+    raises(ValueError, "precision: is not an integer", splinex.verify, "reverse", S, R, precision=53.5)
+    raises(TypeError, "reverse takes no argument 'bogus'", splinex.verify, "reverse", S, R, bogus=1)
+    raises(TypeError, "eval takes no argument 'by'", splinex.verify, "eval", S, {"at": [[0.5]], "values": [[0, 0]]}, by=1)
+    raises(ValueError, "dir: 3 is outside [0, 2]", splinex.verify, "reverse", S, R, dir=3)
+    raises(ValueError, "dir: direction 1 does not exist", splinex.verify, "reverse", S, R, dir=1)
+    raises(ValueError, "dir: direction 5 does not exist", splinex.elevate, S, 1, 5)
+    raises(ValueError, "order: 0 is outside [1, 1000]", splinex.verify, "derivative", S, R, order=0)
+    raises(ValueError, "max_dim: 0 is outside [1, 3]", splinex.structured_case, 1, max_dim=0)
+    for degrees, text in (([1.5], "degrees[0]: is not an integer"), (["1"], "degrees[0]: is not an integer"),
+                          (1, "degrees: is not a list"), (None, "degrees: is not a list"),
+                          ([2 ** 31], "degrees[0]: 2147483648 is outside")):
+        raises(ValueError, text, splinex.validate, {"degrees": degrees, "knots": [[0, 0, 1, 1]], "points": [[0], [1]]})
+    L = []
+    L.append(L)
+    raises(ValueError, "contains itself", splinex.validate, {"degrees": [1], "knots": [[0, 0, 1, 1]], "points": L})
+    # The CLI's candidate documents: extract-bezier's {"pieces": [{"box": ..., "spline": ...}]} as JSON.
+    pieces = {"pieces": [{"box": [[str(lo), str(hi)] for lo, hi in pc["box"]],
+                          "spline": {k: ([[str(x) for x in r] for r in v] if k in ("knots", "points") else v)
+                                     for k, v in pc["spline"].items()}} for pc in splinex.extract_bezier(S)]}
+    rep = splinex.verify("extract-bezier", S, pieces)
+    assert rep.structure == "equal" and rep.function_upper == 0 and rep.certified, rep.report
+    # Functions not compared (another domain): no certified bound, so function_upper is None.
+    moved = dict(R, knots=[[x + 5 for x in R["knots"][0]]])
+    rep = splinex.verify("reverse", S, moved)
+    assert rep.structure == "different" and rep.function_upper is None and not rep.certified, rep.report
+
     # Compositions: Algorithm 1's trimmed patches from splinex compose in double (argv[1]: the
     # splinex command), read by json as Python floats, judged exactly.
     if len(sys.argv) > 1:

@@ -5,6 +5,7 @@
 #include "spline/kernel.hpp"
 #include "untrim/sweep.hpp"
 #include "untrim/algorithm2.hpp"
+#include "untrim/interval_join.hpp"
 #include "untrim/loops.hpp"
 #include "untrim/polygon.hpp"
 #include "untrim/tile_integrals.hpp"
@@ -279,5 +280,44 @@ TEST_CASE("trimmed domain validation: typed errors naming the loop") {
     validate_domain(TrimmedDomain{{0, 0}, {1, 1}, {{{0, 0}, {1, 0}, {0, 1}}, {{Rational(1, 10), Rational(1, 10)}, {Rational(1, 5), Rational(1, 10)}, {Rational(1, 10), Rational(1, 5)}}}});
   } catch (...) {
     FAIL("a hole inside a loop was rejected");
+  }
+}
+
+// Issue 47: the meeting test was quadratic when many edges overlap in x (16,000 copies of two loops:
+// minutes before the error). Above a pair budget the loops are found by CGAL's sweep, bisected over
+// prefixes; the answer is the first loop that meets an earlier one.
+TEST_CASE("trimmed domain validation: many equal or nested loops in near-linear time") {
+  // 2,000 nested squares (a vertical line crosses every one: 8,000 edges, about 8 10^6 pairs
+  // overlapping in x): pairwise disjoint, so valid as far as meeting goes.
+  TrimmedDomain nested{{0, 0}, {1, 1}, {}};
+  for (int k = 1; k <= 2000; ++k) {
+    const Rational a(k, 4001 * 2), b = 1 - a;
+    nested.loops.push_back({{a, a}, {b, a}, {b, b}, {a, b}});
+  }
+  CHECK(count_overlapping_pairs(std::vector<std::pair<Rational, Rational>>{{0, 1}, {0, 1}, {2, 3}}, 100) == 1);
+  CHECK_FALSE(first_meeting_loops(nested.loops).has_value());
+  // The same with one more square that touches square 700 at its corner from outside (between
+  // squares 699 and 700): found, and named with the least loop it meets.
+  const Rational a7(700, 4001 * 2);
+  auto touching = nested;
+  touching.loops.push_back({{a7 - Rational(1, 100000), a7 - Rational(1, 100000)}, {a7, a7 - Rational(1, 100000)}, {a7, a7}, {a7 - Rational(1, 100000), a7}});
+  const auto t = first_meeting_loops(touching.loops);
+  REQUIRE(t.has_value());
+  CHECK((*t)[0] == 699);
+  CHECK((*t)[1] == 2000);
+  try {
+    validate_domain(touching);
+    FAIL("a loop touching square 700 was accepted");
+  } catch (const Error& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("loops[2000]: meets loops[699]"));
+  }
+  // Copies of one loop: the copy meets the original (overlapping edges, no crossing).
+  TrimmedDomain copies{{0, 0}, {1, 1}, {}};
+  for (int k = 0; k < 3000; ++k) copies.loops.push_back({{Rational(1, 4), Rational(1, 4)}, {Rational(3, 4), Rational(1, 4)}, {Rational(1, 2), Rational(3, 4)}});
+  try {
+    validate_domain(copies);
+    FAIL("copies of a loop were accepted");
+  } catch (const Error& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("loops[1]: meets loops[0]"));
   }
 }
