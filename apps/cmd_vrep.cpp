@@ -643,7 +643,7 @@ Commands add_vrep(CLI::App& app) {
              }
              const Json model = euler_json(model_euler(M, {}, ctx.limits));
              Json out_doc{{"cells", cells}, {"model_euler", model}};
-             if (!validity.decided()) out_doc["validity"] = validity.verdict();
+             if (!validity.complete()) out_doc["validity"] = validity.verdict();
              if (tco->glue) {
                TrimmedGlueOptions go;
                go.max_boxes = std::max<std::size_t>(512, tco->boxes);
@@ -817,7 +817,7 @@ Commands add_vrep(CLI::App& app) {
                if (!out) throw UsageError(field, "cannot write " + path, "give a writable file path");
                out << text;
                if (!out) throw UsageError(field, "writing " + path + " failed", "check the disk space and the path");
-               std::cerr << "splinex vrep export: wrote " << path << (validity.decided() ? std::string() : " (model validity " + validity.verdict() + ")") << "\n";
+               std::cerr << "splinex vrep export: wrote " << path << (validity.complete() ? std::string() : " (model validity " + validity.verdict() + ")") << "\n";
              };
              if (O && !O->model) {  // a trimmed V-model: its cells sampled on parameter voxels (a figure)
                const auto& T = *O->trimmed;
@@ -922,7 +922,7 @@ Commands add_vrep(CLI::App& app) {
                }
              Json out{{"cells", cells}};
              put_enclosure(out, "volume", lo, hi, true);
-             if (!O.validity.decided()) out["validity"] = O.validity.verdict();
+             if (!O.validity.complete()) out["validity"] = O.validity.verdict();
              if (!volo->field.empty()) {
                // Per cell that has the field: its integral (exact or a certified enclosure); the
                // model's sum when every cell has it.
@@ -1002,7 +1002,7 @@ Commands add_vrep(CLI::App& app) {
                Json cells = Json::array();
                for (std::size_t c : *in_cells) cells.push_back({{"cell", c}, {"name", O.model->cells[c].name}});
                Json out{{"inside", !cells.empty()}, {"cells", cells}};
-               if (!O.validity.decided()) out["validity"] = O.validity.verdict();
+               if (!O.validity.complete()) out["validity"] = O.validity.verdict();
                std::cout << out.dump() << "\n";
                return 0;
              }
@@ -1013,7 +1013,7 @@ Commands add_vrep(CLI::App& app) {
              Json out{{"truth", t == Truth::in ? "inside" : t == Truth::out ? "outside" : "on a surface"}};
              if (t != Truth::mixed) out["inside"] = t == Truth::in;
              else out["note"] = "x lies on the zero set of a polynomial that decides it: the boundary, or inside where two pieces touch";
-             if (!O.validity.decided()) out["validity"] = O.validity.verdict();
+             if (!O.validity.complete()) out["validity"] = O.validity.verdict();
              std::cout << out.dump() << "\n";
              return 0;
            }},

@@ -388,6 +388,8 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
         if (i == 0 || rep.function.upper < fe.upper) {
           rep.function = std::move(fe);
           rep.function.method += " (candidate mapped onto the reference's domain)";
+          if (candidate.size() > 1)
+            rep.function.method += " (worst of " + std::to_string(candidate.size()) + " results, result " + std::to_string(i) + ")";
         }
         continue;
       }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <algorithm>
 #include <atomic>
+#include <mutex>
 #include <new>
 
 #include "spline/errors.hpp"
@@ -33,12 +34,15 @@ namespace {
 // a failure there is std::terminate, an abort instead of the typed line). So the budget keeps a
 // headroom below the hard limit, and the first failed allocation raises the soft limit by it
 // before throwing: the work stops at the budget, the unwinding has memory to finish.
+// Every exhaustion releases a headroom (under a lock, before its exception is thrown), so a
+// process that goes on after one (sweep jobs on threads) can unwind the next one too; the soft
+// limit then grows by a headroom per exhaustion, never beyond the hard limit.
 std::atomic<std::size_t> unwind_headroom{0};
-std::atomic<bool> headroom_released{false};
+std::mutex headroom_lock;
 
 void release_headroom() {
 #ifndef SPLINEX_ASAN
-  if (headroom_released.exchange(true)) return;
+  std::lock_guard<std::mutex> g(headroom_lock);
   rlimit rl{};
   if (getrlimit(RLIMIT_AS, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY) return;
   rlim_t raised = rl.rlim_cur + static_cast<rlim_t>(unwind_headroom.load());
@@ -144,7 +148,6 @@ MemoryBudget set_memory_budget(std::size_t bytes) {
   if (rl.rlim_max != RLIM_INFINITY && want + headroom > rl.rlim_max)
     want = rl.rlim_max > 2 * headroom ? rl.rlim_max - headroom : rl.rlim_max / 2;
   unwind_headroom = headroom;
-  headroom_released = false;
   rl.rlim_cur = want;
   if (setrlimit(RLIMIT_AS, &rl) != 0) {
     b.note = std::string("setrlimit failed: ") + std::strerror(errno);

@@ -179,27 +179,108 @@ Rational json_number(const Json& j, const std::string& field) {
   return parse_number(j.get<std::string>(), field);
 }
 
-void check_document_bits(const Json& doc, const std::string& where, const Limits& limits) {
+namespace {
+
+/// The path of a document value, built only for the message of a refusal.
+struct PathStep {
+  const std::string* key = nullptr;
+  std::size_t index = 0;
+};
+std::string path_text(const std::string& where, const std::vector<PathStep>& path) {
+  std::string s = where;
+  for (const auto& p : path) s += p.key ? "." + *p.key : "[" + std::to_string(p.index) + "]";
+  return s;
+}
+
+/// Bounds on the bits of a decimal number text without reading it: value = M 10^e with M of d
+/// digits (the decimal point folded into e), so in lowest terms some part has at least
+/// (|e| - d) log2(10) bits and none more than (d + |e|) log2(10) + 1. False when the text is not of
+/// that form (fractions "p/q" are read exactly).
+bool decimal_bit_bounds(const std::string& t, double& lo, double& hi) {
+  std::size_t i = 0, d = 0;
+  long long e = 0;
+  if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
+  bool point = false;
+  for (; i < t.size(); ++i) {
+    if (std::isdigit(static_cast<unsigned char>(t[i]))) {
+      ++d;
+      if (point) --e;
+    } else if (t[i] == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (d == 0) return false;
+  if (i < t.size()) {
+    if (t[i] != 'e' && t[i] != 'E') return false;
+    const std::string x = t.substr(i + 1);
+    if (x.empty() || x.size() > 9) return false;
+    std::size_t k = 0;
+    long long v = 0;
+    bool neg = false;
+    if (x[k] == '-' || x[k] == '+') neg = x[k++] == '-';
+    if (k == x.size()) return false;
+    for (; k < x.size(); ++k) {
+      if (!std::isdigit(static_cast<unsigned char>(x[k]))) return false;
+      v = 10 * v + (x[k] - '0');
+    }
+    e += neg ? -v : v;
+  }
+  const double log2_10 = 3.3219280948873622;
+  const double ae = static_cast<double>(e < 0 ? -e : e), dd = static_cast<double>(d);
+  lo = (ae - dd) * log2_10;
+  hi = (dd + ae) * log2_10 + 1;
+  return true;
+}
+
+void check_bits_at(const Json& doc, const std::string& where, std::vector<PathStep>& path, const Limits& limits) {
   if (doc.is_object()) {
-    for (auto it = doc.begin(); it != doc.end(); ++it)
-      if (it.key() != "summary" && it.key() != "topology")  // what a command wrote about the model, not read as input
-        check_document_bits(it.value(), where + "." + it.key(), limits);
+    for (auto it = doc.begin(); it != doc.end(); ++it) {
+      // What a command wrote about the model (at its top level) and text fields are not input numbers.
+      const std::string& k = it.key();
+      if ((path.empty() && (k == "summary" || k == "topology")) || k == "name" || k == "label" || k == "type" ||
+          k == "category" || k == "status" || k == "description" || k == "note")
+        continue;
+      path.push_back({&k, 0});
+      check_bits_at(it.value(), where, path, limits);
+      path.pop_back();
+    }
   } else if (doc.is_array()) {
-    for (std::size_t i = 0; i < doc.size(); ++i) check_document_bits(doc[i], where + "[" + std::to_string(i) + "]", limits);
-  } else if (doc.is_number_integer()) {
-    limits.check_bits(64, where);  // within 64 bits: under any useful limit
+    for (std::size_t i = 0; i < doc.size(); ++i) {
+      path.push_back({nullptr, i});
+      check_bits_at(doc[i], where, path, limits);
+      path.pop_back();
+    }
   } else if (doc.is_string()) {
     const std::string& t = doc.get_ref<const std::string&>();
     // Names and labels are strings too: only a text that reads as a number is one.
     if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '+' || t[0] == '.')) return;
+    double lo = 0, hi = 0;
+    if (decimal_bit_bounds(t, lo, hi)) {
+      if (hi <= static_cast<double>(limits.max_input_bits)) return;  // short: no need to read it
+      if (lo > static_cast<double>(limits.max_input_bits))
+        throw SizeLimitError(path_text(where, path),
+                             "has a number of at least " + std::to_string(static_cast<long long>(lo)) + " bits, over the exact limit of " +
+                                 std::to_string(limits.max_input_bits),
+                             "give the number with fewer digits, or raise the limit with --max-input-bits");
+    }
     Rational x;
     try {
       x = parse_number(t, where);
     } catch (const ParseError&) {
-      return;
+      return;  // not a number: the reader names it where a number is needed
     }
-    limits.check_bits(bit_size(x), where);
+    limits.check_bits(bit_size(x), path_text(where, path));
   }
+  // JSON integers fit 64 bits: under any limit (--max-input-bits is at least 64).
+}
+
+}  // namespace
+
+void check_document_bits(const Json& doc, const std::string& where, const Limits& limits) {
+  std::vector<PathStep> path;
+  check_bits_at(doc, where, path, limits);
 }
 
 int json_int(const Json& j, const std::string& field, int lo, int hi) {

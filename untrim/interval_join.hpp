@@ -74,8 +74,10 @@ std::size_t count_overlapping_pairs(const std::vector<std::pair<R, R>>& V, std::
   return std::min(count, cap);
 }
 
-/// The first pair of loop edges, in the order (loop l, loop m, edge i, edge j) with (l, i) < (m, j),
-/// for which meets(l, i, m, j) holds, among the edges whose x-ranges x[k] meet; id[k] = (loop, edge).
+/// The first pair of loop edges (l, m, i, j) with (l, i) < (m, j) for which meets(l, i, m, j) holds,
+/// among the edges whose x-ranges x[k] meet; id[k] = (loop, edge). First: the least loop m that
+/// meets an earlier loop, then the least such l, then the least edge j of m, then i of l (the order
+/// untrim/polygon.hpp's first_meeting_loops finds loops in, for inputs too large for this join).
 template <class R, class Meets>
 std::optional<std::array<std::size_t, 4>> first_meeting_edges(const std::vector<std::pair<R, R>>& x,
                                                               const std::vector<std::pair<std::size_t, std::size_t>>& id,
@@ -88,8 +90,9 @@ std::optional<std::array<std::size_t, 4>> first_meeting_edges(const std::vector<
       std::swap(l, m);
       std::swap(i, j);
     }
-    const std::array<std::size_t, 4> key{l, m, i, j};
-    if ((!first || key < *first) && meets(l, i, m, j)) first = key;
+    const std::array<std::size_t, 4> found{l, m, i, j};
+    const auto key = [](const std::array<std::size_t, 4>& f) { return std::array<std::size_t, 4>{f[1], f[0], f[3], f[2]}; };
+    if ((!first || key(found) < key(*first)) && meets(l, i, m, j)) first = found;
   });
   return first;
 }

@@ -20,7 +20,8 @@
 //  - the glued topology passes check_invariants (vrep/vmodel.hpp).
 // A trimmed V-model (vrep/trimmed.hpp) is valid when its cells' categories are "A", "both", "B" or
 // "", their trivariates satisfy the first rule, and no two cells are the same (trivariate and trim);
-// the overlap of trimmed cells is decided only by disjoint control-point boxes (else undecided).
+// the overlap of trimmed cells is decided only by disjoint control-point boxes (else listed in
+// `not_checked`, and every command then prints the verdict).
 // Exact throughout (Rational); nothing passes through double.
 #pragma once
 #include <string>
@@ -49,6 +50,8 @@ struct ValidityReport {
   std::vector<std::string> undecided;   // what could not be decided, with the reason
   std::vector<std::string> not_checked; // checks the method does not cover for this model
   bool decided() const { return undecided.empty(); }
+  /// Decided and nothing left unchecked: only then may a command leave the verdict out.
+  bool complete() const { return undecided.empty() && not_checked.empty(); }
   /// "valid" or "undecided: <first reason> (and N more)".
   std::string verdict() const;
 };
