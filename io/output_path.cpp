@@ -40,11 +40,6 @@ std::string output_folder_problem(const std::string& dir) {
   return "";
 }
 
-void check_output_file(const std::string& path, const std::string& field) {
-  const std::string why = output_file_problem(path);
-  if (!why.empty()) throw UsageError(field, why, "give a file in a folder that can be written");
-}
-
 void prepare_output_folder(const std::string& dir, const std::string& field) {
   const std::string why = output_folder_problem(dir);
   if (!why.empty()) throw UsageError(field, why, "give a folder that can be written");

@@ -13,9 +13,6 @@ std::string output_file_problem(const std::string& path);
 /// or its nearest existing parent is a writable folder. Nothing is created.
 std::string output_folder_problem(const std::string& dir);
 
-/// UsageError naming `field` when output_file_problem(path) is not empty.
-void check_output_file(const std::string& path, const std::string& field);
-
 /// `dir` exists as a folder (created if missing) and a file can be written into it.
 /// UsageError naming `field` otherwise (empty, a file in the way, no permission).
 void prepare_output_folder(const std::string& dir, const std::string& field);
