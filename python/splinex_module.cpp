@@ -324,6 +324,9 @@ PYBIND11_MODULE(splinex, m) {
           if (!doc.contains("splines") && !doc.contains("pieces") && !doc.contains("type")) doc["type"] = "bspline";
           cands = verify_candidate_splines(doc);
         } else {
+          if (!py::isinstance<py::list>(candidate) && !py::isinstance<py::tuple>(candidate))
+            throw py::type_error("candidate: is a " + std::string(py::str(py::type::of(candidate).attr("__name__"))) +
+                                 ", not a spline document or a list of splines");
           std::size_t i = 0;
           for (auto c : candidate) {
             const std::string where = "candidate[" + std::to_string(i++) + "]";
