@@ -25,6 +25,7 @@ status is 1 if any case failed.
   PYTHONPATH=build/python python3 tests/fuzz/python_fuzz.py --cases 300 --seed 1 --out fuzz-py
 """
 import argparse
+import copy
 import json
 import os
 import random
@@ -94,7 +95,7 @@ def mutate(rng, doc):
             elif op == "grow":
                 value.extend(json.loads(json.dumps(value)) * rng.choice([1, 3, 40]))
             elif op == "nest":
-                v = value
+                v = json.loads(json.dumps(value))
                 for _ in range(rng.choice([2, 70, 300])):
                     v = [v]
                 value[:] = [v]
@@ -113,7 +114,7 @@ def mutate(rng, doc):
             cur = doc
             for p in path[:-1]:
                 cur = cur[p]
-            cur[path[-1]] = rng.choice(EXTREME) if rng.random() < 0.8 else rng.choice(INTS)
+            cur[path[-1]] = copy.deepcopy(rng.choice(EXTREME) if rng.random() < 0.8 else rng.choice(INTS))
     return doc
 
 
