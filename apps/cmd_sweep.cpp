@@ -35,6 +35,7 @@ Commands add_sweep(CLI::App& app) {
   pl->add_option("name", *pname, "the sweep: untrim-tolerance, proofs or report")->required();
   pl->add_option("--cases", po->cases, "proofs: random exact cases per proof (default 200)");
   pl->add_option("--cases-per-job", po->cases_per_job, "proofs: cases of one proof per job (default 25)");
+  pl->add_option("--proofs", po->proofs, "proofs: comma-separated proof names (default: every proof; splinex prove --list)");
   pl->add_flag("--full", po->full, "the long sweep (report --full's options)");
   pl->add_option("--sections", po->sections, "report: comma-separated sections (default: all), one job each");
   pl->add_option("--eps", po->eps, "untrim-tolerance: comma-separated tolerances instead of the defaults");
@@ -70,6 +71,7 @@ Commands add_sweep(CLI::App& app) {
   sg->add_option("name", *sname, "the sweep: untrim-tolerance, proofs or report")->required();
   sg->add_option("--cases", so->cases, "as for plan");
   sg->add_option("--cases-per-job", so->cases_per_job, "as for plan (the single run does not split)");
+  sg->add_option("--proofs", so->proofs, "as for plan");
   sg->add_flag("--full", so->full, "the long sweep");
   sg->add_option("--eps", so->eps, "as for plan");
   sg->add_option("--runs", so->runs, "as for plan");

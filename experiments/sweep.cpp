@@ -125,6 +125,26 @@ std::size_t proof_cases_per_job(const SweepPlanOptions& o) {
   return static_cast<std::size_t>(k);
 }
 
+// The proofs a plan runs, in the registry's order: every one, or those named by --proofs (each
+// known, none twice).
+std::vector<const ProofEntry*> planned_proofs(const SweepPlanOptions& o) {
+  std::vector<const ProofEntry*> out;
+  if (o.proofs.empty()) {
+    for (const auto& e : proof_registry()) out.push_back(&e);
+    return out;
+  }
+  std::vector<std::string> names;
+  std::stringstream ss(o.proofs);
+  for (std::string n; std::getline(ss, n, ',');) {
+    if (!find_proof(n)) throw UsageError("proofs", "'" + n + "' is not a proof", "give names that splinex prove --list prints, separated by commas");
+    if (std::find(names.begin(), names.end(), n) != names.end()) throw UsageError("proofs", "'" + n + "' is named twice", "name each proof once");
+    names.push_back(n);
+  }
+  for (const auto& e : proof_registry())
+    if (std::find(names.begin(), names.end(), e.name) != names.end()) out.push_back(&e);
+  return out;
+}
+
 const ProofEntry& proof_entry(const std::string& name) {
   if (const ProofEntry* e = find_proof(name)) return *e;
   throw UsageError("jobs", "'" + name + "' is not a proof of this splinex", "plan the sweep again with this splinex");
@@ -162,6 +182,7 @@ void no_untrim_options(const SweepPlanOptions& o, const std::string& name) {
 void no_proof_options(const SweepPlanOptions& o, const std::string& name) {
   if (o.cases) throw UsageError("cases", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
   if (o.cases_per_job) throw UsageError("cases-per-job", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
+  if (!o.proofs.empty()) throw UsageError("proofs", "is an option of proofs, not of " + name, "give it to sweep plan proofs");
 }
 
 // The options that give a plan (the inverse of sweep_plan on its plan documents): re-planning with
@@ -181,6 +202,10 @@ SweepPlanOptions plan_options(const std::string& sweep, const Json& plan) {
   if (sweep == "proofs") {
     o.cases = plan.at("cases").get<long>();
     o.cases_per_job = plan.at("cases_per_job").get<long>();
+    if (plan.contains("proofs")) {
+      o.proofs = join(plan.at("proofs").get<std::vector<std::string>>());
+      if (o.proofs.empty()) throw ParseError("proofs", "is empty", "plan the sweep again");
+    }
   } else if (sweep == "report") {
     o.full = plan.at("full").get<bool>();
     o.sections = join(plan.at("sections").get<std::vector<std::string>>());
@@ -229,14 +254,21 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     no_untrim_options(options, name);
     const std::size_t cases = proof_cases(options);
     const std::size_t per_job = proof_cases_per_job(options);
+    const auto proofs = planned_proofs(options);
     std::size_t count = 0;  // the jobs, counted before they are made
-    for (const auto& e : proof_registry()) count += e.fixed_cases ? 1 : (cases + per_job - 1) / per_job;
+    for (const ProofEntry* e : proofs) count += e->fixed_cases ? 1 : (cases + per_job - 1) / per_job;
     if (count > kMaxSweepJobs)
       throw SizeLimitError("cases-per-job", std::to_string(cases) + " cases in ranges of " + std::to_string(per_job) + " make " + std::to_string(count) +
                                                 " jobs, more than " + std::to_string(kMaxSweepJobs),
                            "give a larger --cases-per-job");
     std::vector<SweepJob> jobs;
-    for (const auto& e : proof_registry()) {
+    Json plan = {{"cases", cases}, {"cases_per_job", per_job}};
+    if (!options.proofs.empty()) {  // only when named, so that the plans of every proof stay as they were
+      plan["proofs"] = Json::array();
+      for (const ProofEntry* e : proofs) plan["proofs"].push_back(e->name);
+    }
+    for (const ProofEntry* ep : proofs) {
+      const ProofEntry& e = *ep;
       // ranges [first, first + count) of the proof's cases; one job when they all fit (or the
       // proof's cases are its own)
       const std::size_t step = e.fixed_cases ? cases : per_job;
@@ -246,7 +278,7 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
         j.sweep = name;
         j.id = count == cases ? e.name : e.name + ".cases" + std::to_string(first) + "-" + std::to_string(first + count - 1);
         j.params = {{"name", e.name}, {"first", first}, {"count", count}};
-        j.plan = {{"cases", cases}, {"cases_per_job", per_job}};
+        j.plan = plan;
         j.output = name + "/" + j.id + ".json";
         jobs.push_back(std::move(j));
       }
@@ -254,8 +286,8 @@ std::vector<SweepJob> sweep_plan(const std::string& name, const SweepPlanOptions
     return jobs;
   }
   if (name == "report") {
-    if (options.cases || options.cases_per_job || !options.eps.empty() || !options.runs.empty())
-      throw UsageError("sweep", "--cases, --cases-per-job, --eps and --runs are not options of report", "give --full and --sections");
+    if (options.cases || options.cases_per_job || !options.proofs.empty() || !options.eps.empty() || !options.runs.empty())
+      throw UsageError("sweep", "--cases, --cases-per-job, --proofs, --eps and --runs are not options of report", "give --full and --sections");
     const auto sections = report_sections(options);
     std::vector<SweepJob> jobs;
     for (const auto& task : report_tasks(sections)) {
@@ -511,9 +543,9 @@ bool sweep_single(const std::string& name, const SweepPlanOptions& options, cons
   if (name == "proofs") {
     const std::size_t cases = proof_cases(options);
     std::vector<Json> rows;
-    for (const auto& e : proof_registry()) {
-      progress("proof " + e.name);
-      rows.push_back(proof_report_json(e.run(cases)));
+    for (const ProofEntry* e : planned_proofs(options)) {
+      progress("proof " + e->name);
+      rows.push_back(proof_report_json(e->run(cases)));
     }
     std::filesystem::create_directories(out_dir);
     return merge_proofs(rows, cases, out_dir);

@@ -41,6 +41,7 @@ struct SweepPlanOptions {
   std::string runs;         // comma-separated bits:min_eps:max_m (bits 0: double), replacing the default runs
   std::optional<long> cases;          // proofs: random exact cases per proof (unset: 200, the long label's)
   std::optional<long> cases_per_job;  // proofs: cases of one proof per job (unset: 25); ranges of one proof merge exactly
+  std::string proofs;       // proofs: comma-separated proof names (empty: every proof of the registry)
   std::string sections;     // report: comma-separated sections (empty: all)
 };
 
