@@ -183,15 +183,8 @@ int run_report(const ReportOptions& opt) {
   }
   prepare_output_folder(opt.out_dir, "out");
   // A manifest marked incomplete first: an interrupted run (Ctrl-C) leaves it so, and its files
-  // cannot pass for a finished report. Writing it also probes that the folder is writable before
-  // minutes of work.
+  // cannot pass for a finished report. (prepare_output_folder has checked the folder is writable.)
   const std::string manifest = opt.out_dir + "/MANIFEST.json";
-  {
-    std::ofstream probe(manifest + ".tmp");
-    if (!probe)
-      throw UsageError("out", "cannot write into " + opt.out_dir, "give a writable folder with --out");
-  }
-  fs::remove(manifest + ".tmp");
   write_file_atomically(manifest, "{\"status\": \"incomplete\", \"note\": \"a run started here and has not finished; "
                                   "files in this folder may be from it or from an older run\"}\n");
   std::mutex progress_lock;
