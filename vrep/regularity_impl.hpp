@@ -8,6 +8,7 @@
 #include "spline/errors.hpp"
 #include "spline/knots.hpp"
 #include "vrep/brackets.hpp"
+#include "vrep/planted.hpp"
 #include "vrep/regularity.hpp"
 
 namespace splinex {
@@ -203,7 +204,7 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
     rep.levels = std::max(rep.levels, b.level);
     // The corners: exact values of the (local) numerator.
     std::vector<int> idx(3);
-    int lo_sign = 2, hi_sign = -2;
+    int lo_sign = 2, hi_sign = -2, corner_lo = 2, corner_hi = -2;
     for (std::size_t i = 0; i < b.N.c.size(); ++i) {
       const int s = vrep_detail::sign_of(b.N.c[i]);
       lo_sign = std::min(lo_sign, s);
@@ -212,6 +213,8 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
       bool corner = true;
       for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == b.N.deg[d]);
       if (!corner) continue;
+      corner_lo = std::min(corner_lo, s);
+      corner_hi = std::max(corner_hi, s);
       std::vector<T> x(3);
       for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
       if (s == 0) {
@@ -236,6 +239,8 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
       }
     }
     if (lo_sign == hi_sign && lo_sign == global) continue;  // certified on this box
+    // Planted (tests only): the corners alone "certify" the box.
+    if (vrep_testing::is_planted(vrep_testing::Plant::regularity_corners_only) && corner_lo == corner_hi && corner_lo == global) continue;
     if (b.level >= max_levels || todo.size() + 8 > box_budget) {
       if (!undecided) undecided_at = {(b.lo[0] + b.hi[0]) / T(2), (b.lo[1] + b.hi[1]) / T(2), (b.lo[2] + b.hi[2]) / T(2)};
       undecided = true;
@@ -254,7 +259,8 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
         l.hi[d] = mid;
         r.lo[d] = mid;
         next.push_back(std::move(l));
-        next.push_back(std::move(r));
+        // Planted (tests only): the children on the upper side of u are lost.
+        if (!(d == 0 && vrep_testing::is_planted(vrep_testing::Plant::regularity_drops_upper_u))) next.push_back(std::move(r));
       }
       parts = std::move(next);
     }
@@ -269,7 +275,7 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
     return rep;
   }
   rep.verdict = Regularity::regular;
-  rep.sign = global;
+  rep.sign = vrep_testing::is_planted(vrep_testing::Plant::regularity_sign_flipped) ? -global : global;  // (planted: tests only)
   rep.reason = global > 0 ? "det J > 0: every Bernstein coefficient positive" : "det J < 0: every Bernstein coefficient negative";
   return rep;
 }

@@ -29,6 +29,7 @@
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/box_components.hpp"
+#include "vrep/planted.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
@@ -224,7 +225,8 @@ class EulerRun {
       if (side) lo[vd] = hi[vd];
       else hi[vd] = lo[vd];
       dirs.erase(dirs.begin() + j);
-      return -chi(std::move(G), std::move(dirs), lo, hi, level, strict);
+      const long down = chi(std::move(G), std::move(dirs), lo, hi, level, strict);
+      return vrep_testing::is_planted(vrep_testing::Plant::euler_monotone_sign) ? down : -down;  // (planted: tests only)
     }
     // Halve across the direction halved least so far.
     int j = 0;
@@ -250,7 +252,8 @@ class EulerRun {
     mdirs.erase(mdirs.begin() + j);
     long sum = chi(std::move(A), dirs, lo, hA, level, strict);
     sum += chi(std::move(B), dirs, lB, hi, level, strict);
-    sum += chi(std::move(M), std::move(mdirs), lM, hM, level, strict);
+    if (!vrep_testing::is_planted(vrep_testing::Plant::euler_drops_mid_face))  // (planted: tests only)
+      sum += chi(std::move(M), std::move(mdirs), lM, hM, level, strict);
     return sum;
   }
 

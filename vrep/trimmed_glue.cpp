@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <type_traits>
 
 #include "spline/evaluate.hpp"
 #include "spline/errors.hpp"
@@ -19,6 +20,7 @@
 #include "vrep/box_components.hpp"
 #include "vrep/curve_graph.hpp"
 #include "vrep/freeform.hpp"
+#include "vrep/planted.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
 
@@ -261,7 +263,8 @@ class Gluer {
         }
         return out.halves[centre].unmatched <= sum;
       };
-      if (pa == 1 && pb == 1 && ha.unmatched == hb.unmatched) {
+      // (Planted, tests only: vrep/planted.hpp ignores the piece counts.)
+      if (pa == 1 && pb == 1 && (ha.unmatched == hb.unmatched || vrep_testing::is_planted(vrep_testing::Plant::glue_counts_ignored))) {
         t.decided = true;
         t.pieces = ha.unmatched;
       } else if (pa == 1 && pb > 1 && star_ok(t.b)) {
@@ -346,14 +349,24 @@ class Gluer {
   }
 
   /// The model's region and none of the cells' trims `minus`, over `table`'s surfaces (read as
-  /// `aliased` says).
+  /// `aliased` says), localized to `box` (localized_by_box: where the count reads them).
   template <class Outside, class Flip>
-  Region<T> model_minus(LeafTable<T>& table, const std::vector<const Region<T>*>& minus, const Outside& read_outside, const Flip& flip) const {
-    Region<T> other = aliased(M_.region, table, read_outside, flip);
+  Region<T> model_minus(LeafTable<T>& table, const std::vector<const Region<T>*>& minus, const Outside& read_outside, const Flip& flip,
+                        const std::array<T, 6>& box) const {
+    Region<T> other = aliased(local(M_.region, box), table, read_outside, flip);
     if (minus.empty()) return other;
     std::vector<Region<T>> any;
-    for (const auto* r : minus) any.push_back(aliased(*r, table, read_outside, flip));
+    for (const auto* r : minus) any.push_back(aliased(local(*r, box), table, read_outside, flip));
     return conj(std::move(other), region_not(region_or(std::move(any))));
+  }
+
+  /// A formula of the model (its region, another cell's trim) read on or next to the control-point
+  /// box `box` of a face or a cell: its leaves of strict sign on the box fixed (exact arithmetic),
+  /// so that a count costs what the cell meets, not what the model holds (issue 47: a grid of
+  /// boxes); in double, as it is.
+  static Region<T> local(const Region<T>& R, const std::array<T, 6>& box) {
+    if constexpr (std::is_same_v<T, double>) return R;
+    else return localized_by_box(R, box);
   }
 
   /// The formula on face (d, s) of cell c: its trim and, read just outside the face, the model's
@@ -366,11 +379,17 @@ class Gluer {
   FaceFormula face_formula(std::size_t c, int d, int s, const std::vector<const Region<T>*>& extra, bool model_minus_extra, bool complement) const {
     const auto& cell = M_.cells[c];
     const auto& V = M_.trivariates.at(cell.trivariate);
+    // The model's formulas near the face: the leaves of strict sign on its control-point box
+    // have that sign on and just outside the face (a neighbourhood of a compact set).
+    const auto box = control_bounds(face(V, d, s));
+    const Region<T> region = local(M_.region, box);
+    std::vector<Region<T>> extra_local;
+    for (const auto* r : extra) extra_local.push_back(local(*r, box));
     // Which surfaces vanish on the face: those of all formulas, composed once.
     std::vector<const Poly3<T>*> all;
     collect_leaves(cell.trim, all);
-    collect_leaves(M_.region, all);
-    for (const auto* r : extra) collect_leaves(*r, all);
+    collect_leaves(region, all);
+    for (const auto& r : extra_local) collect_leaves(r, all);
     const auto probe = leaf_pieces(V, all, limits_);
     const T at = s ? V.domain_hi(d) : V.domain_lo(d);
     std::vector<char> vanish(all.size(), 0);
@@ -389,10 +408,10 @@ class Gluer {
     const auto no = [](const Poly3<T>&) { return false; };
     Region<T> formula = aliased(cell.trim, out.table, no, no);
     Region<T> other;
-    if (extra.empty() || model_minus_extra) other = model_minus(out.table, extra, vanishes, no);
+    if (extra.empty() || model_minus_extra) other = model_minus(out.table, extra, vanishes, no, box);
     else {
       std::vector<Region<T>> all_of;
-      for (const auto* r : extra) all_of.push_back(aliased(*r, out.table, vanishes, no));
+      for (const auto& r : extra_local) all_of.push_back(aliased(r, out.table, vanishes, no));
       other = region_and(std::move(all_of));
     }
     out.formula = conj(std::move(formula), complement ? region_not(std::move(other)) : std::move(other));
@@ -429,7 +448,9 @@ class Gluer {
     const auto no = [](const Poly3<T>&) { return false; };
     const auto across = [&](const Poly3<T>& h) { return proportional(g, h) != 0; };
     Region<T> formula = aliased(cell.trim, table, no, no);
-    Region<T> other = pair ? aliased(*pair, table, no, across) : model_minus(table, minus, no, across);
+    // Read inside V only (on both sides of g): localized to V's control-point box.
+    const auto box = control_bounds(V);
+    Region<T> other = pair ? aliased(local(*pair, box), table, no, across) : model_minus(table, minus, no, across, box);
     formula = conj(std::move(formula), complement ? region_not(std::move(other)) : std::move(other));
     std::size_t k = table.g.size();
     for (std::size_t i = 0; i < table.g.size() && k == table.g.size(); ++i)
@@ -632,7 +653,12 @@ TrimmedGluing<T> trimmed_glue(const TrimmedModel<T>& M, const TrimmedGlueOptions
   for (const auto& c : M.cells)
     if (c.trivariate >= M.trivariates.size())
       throw ValidationError("cells[].trivariate", "names no trivariate of the model", "give an index below the number of trivariates");
-  for (const auto& V : M.trivariates) checked_trim_leaves(V, M.region, options.max_boxes, limits);
+  // The model's region as the counts read it near each trivariate (localized to its
+  // control-point box in exact arithmetic; every face's box lies in it).
+  for (const auto& V : M.trivariates) {
+    if constexpr (std::is_same_v<T, double>) checked_trim_leaves(V, M.region, options.max_boxes, limits);
+    else checked_trim_leaves(V, localized_by_box(M.region, control_bounds(V)), options.max_boxes, limits);
+  }
   for (const auto& c : M.cells) checked_trim_leaves(M.trivariates[c.trivariate], c.trim, options.max_boxes, limits);
   return Gluer<T>(M, options, limits).run();
 }

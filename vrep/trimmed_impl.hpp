@@ -12,6 +12,7 @@
 #include "spline/insert.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
+#include "vrep/planted.hpp"
 #include "vrep/trimmed.hpp"
 
 namespace splinex {
@@ -758,9 +759,184 @@ TrimmedModel<T> as_trimmed(const VModel<T>& M, Region<T> region) {
   return out;
 }
 
+namespace vrep_detail {
+
+template <class T>
+bool has_alias(const Region<T>& R) {
+  if (R.kind == Region<T>::leaf) return R.alias >= 0;
+  for (const auto& p : R.parts)
+    if (has_alias(p)) return true;
+  return false;
+}
+
+/// R with the leaves fixed in `fixed` (collect order; mixed: kept) replaced by constants (true: an
+/// all_of without parts, false: an any_of without parts) and the constants folded.
+template <class T>
+Region<T> fold_constants(const Region<T>& R, const std::vector<Truth>& fixed, std::size_t& k) {
+  auto constant = [](bool t) { return t ? region_and<T>({}) : region_or<T>({}); };
+  auto value = [](const Region<T>& x) -> int {  // 1 true, 0 false, -1 not a constant
+    if (x.kind != Region<T>::all_of && x.kind != Region<T>::any_of) return -1;
+    if (!x.parts.empty()) return -1;
+    return x.kind == Region<T>::all_of ? 1 : 0;
+  };
+  switch (R.kind) {
+    case Region<T>::leaf: {
+      const Truth t = fixed[k++];
+      return t == Truth::mixed ? R : constant(t == Truth::in);
+    }
+    case Region<T>::complement: {
+      Region<T> x = fold_constants(R.parts.front(), fixed, k);
+      const int v = value(x);
+      return v < 0 ? region_not(std::move(x)) : constant(v == 0);
+    }
+    case Region<T>::all_of:
+    case Region<T>::any_of: {
+      const bool all = R.kind == Region<T>::all_of;
+      std::vector<Region<T>> kept;
+      bool absorbed = false;  // a false part of an all_of, a true part of an any_of
+      for (const auto& p : R.parts) {
+        Region<T> x = fold_constants(p, fixed, k);  // (every part: k must pass all leaves)
+        const int v = value(x);
+        if (v < 0) kept.push_back(std::move(x));
+        else if (v == (all ? 0 : 1)) absorbed = true;
+      }
+      if (absorbed) return constant(!all);
+      if (kept.size() == 1) return std::move(kept.front());
+      Region<T> out = all ? region_and<T>(std::move(kept)) : region_or<T>(std::move(kept));
+      out.label = R.label;
+      return out;
+    }
+  }
+  return R;
+}
+
+/// Bounds lo <= g <= hi of a polynomial on the box b = {min x, min y, min z, max x, max y, max z}
+/// (interval arithmetic per monomial, exact in exact arithmetic; wider than g's range in general).
+template <class T>
+std::pair<T, T> poly_bounds(const Poly3<T>& g, const std::array<T, 6>& b) {
+  T lo(0), hi(0);
+  for (const auto& [e, c] : g.terms) {
+    T mlo(1), mhi(1);
+    for (int a = 0; a < 3; ++a) {
+      if (e[a] == 0) continue;
+      T plo(1), phi(1);  // x^e on [b[a], b[a + 3]]
+      for (int k = 0; k < e[a]; ++k) {
+        plo *= b[a];
+        phi *= b[a + 3];
+      }
+      if (phi < plo) std::swap(plo, phi);
+      if (e[a] % 2 == 0 && b[a] < T(0) && T(0) < b[a + 3]) plo = T(0);
+      // [mlo, mhi] * [plo, phi]
+      const T p[4] = {mlo * plo, mlo * phi, mhi * plo, mhi * phi};
+      mlo = *std::min_element(p, p + 4);
+      mhi = *std::max_element(p, p + 4);
+    }
+    if (c < T(0)) {
+      lo += c * mhi;
+      hi += c * mlo;
+    } else {
+      lo += c * mlo;
+      hi += c * mhi;
+    }
+  }
+  return {lo, hi};
+}
+
+/// R with every leaf of strict sign on the box b (poly_bounds) replaced by its truth and the
+/// formula folded: the same set on any set of points whose closure lies in the box, and just
+/// outside that set too when it lies in the box's interior or the sign is strict on a
+/// neighbourhood (a strict sign on a compact set holds on a neighbourhood of it). Exact arithmetic
+/// only; regions with alias leaves are returned as they are.
+template <class T>
+Region<T> localized_by_box(const Region<T>& R, const std::array<T, 6>& b) {
+  if (has_alias(R)) return R;
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(R, leaves);
+  std::map<std::map<std::array<int, 3>, T>, Truth> seen;
+  std::vector<Truth> fixed;
+  for (const auto* g : leaves) {
+    auto it = seen.find(g->terms);
+    if (it == seen.end()) {
+      const auto [lo, hi] = poly_bounds(*g, b);
+      it = seen.emplace(g->terms, T(0) < lo ? Truth::in : hi < T(0) ? Truth::out : Truth::mixed).first;
+    }
+    fixed.push_back(it->second);
+  }
+  std::size_t k = 0;
+  return fold_constants(R, fixed, k);
+}
+
+/// The region on one trivariate V (exact arithmetic): every leaf that has one truth on all of V
+/// is replaced by it and the formula folded, where "one truth" is either (a) g > 0 or g < 0 on
+/// V's control-point box (interval bounds; V lies in it by the convex hull property), so g o T
+/// has that strict sign everywhere on the cell, or (b) the composition's Bernstein coefficients
+/// have one weak sign with the same coefficient_truth on every Bezier piece of V, which the
+/// subdivision boxes of a piece keep (their coefficients are convex combinations of the piece's,
+/// and a polynomial that is 0 on a box is 0 on the piece). Either way the leaf's truth on every
+/// part of the cell is the fixed one as a set, so the classification stays sound, and with (b)
+/// alone it is unchanged. Equal leaves are decided once. The localized formula holds the leaves V
+/// meets: the cost of a cell of a model of many cells (a grid of boxes with the union of their
+/// regions, issue 47) is that of its neighbourhood, not of the model. Float arithmetic and regions
+/// with alias leaves (built by trimmed_glue) are returned as they are.
+template <class T>
+Region<T> localized_region(const BSpline<T>& V, const Region<T>& R, const T& eps, const Limits& limits) {
+  if (!(eps == T(0)) || has_alias(R)) return R;
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(R, leaves);
+  if (leaves.empty()) return R;
+  require_jacobian_input(V, limits);
+  require_positive_weights(V);
+  const auto box = control_bounds(V);
+  std::vector<Truth> fixed(leaves.size(), Truth::mixed);
+  std::map<std::map<std::array<int, 3>, T>, Truth> seen;
+  std::vector<std::size_t> open;  // leaves (first of equal ones) the bounds do not decide
+  std::vector<const Poly3<T>*> open_leaves;
+  for (std::size_t l = 0; l < leaves.size(); ++l) {
+    const auto it = seen.find(leaves[l]->terms);
+    if (it != seen.end()) continue;
+    const auto [lo, hi] = poly_bounds(*leaves[l], box);
+    const Truth t = T(0) < lo ? Truth::in : hi < T(0) ? Truth::out : Truth::mixed;
+    seen.emplace(leaves[l]->terms, t);
+    if (t == Truth::mixed) {
+      open.push_back(l);
+      open_leaves.push_back(leaves[l]);
+    }
+  }
+  if (!open.empty()) {
+    const std::size_t per_piece = composed_leaves_size(V, open_leaves, limits);
+    const BezierForm<T> F = bezier_form(V, limits);
+    checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
+    std::vector<Truth> t(open.size(), Truth::mixed);
+    std::vector<char> alive(open.size(), 1);
+    // Planted (tests only, vrep/planted.hpp): the first Bezier piece decides for all.
+    const std::size_t pieces =
+        vrep_testing::is_planted(vrep_testing::Plant::classify_first_piece_only) ? std::min<std::size_t>(1, F.size()) : F.size();
+    for (std::size_t k = 0; k < pieces; ++k) {
+      const auto pc = F.piece(k);
+      for (std::size_t q = 0; q < open.size(); ++q) {
+        if (!alive[q]) continue;
+        const Truth here = coefficient_truth(compose_leaf(*open_leaves[q], pc.spline), eps);
+        if (here == Truth::mixed || (k > 0 && here != t[q])) {
+          alive[q] = 0;
+          t[q] = Truth::mixed;
+          continue;
+        }
+        t[q] = here;
+      }
+    }
+    for (std::size_t q = 0; q < open.size(); ++q) seen[leaves[open[q]]->terms] = t[q];
+  }
+  for (std::size_t l = 0; l < leaves.size(); ++l) fixed[l] = seen.at(leaves[l]->terms);
+  std::size_t k = 0;
+  return fold_constants(R, fixed, k);
+}
+
+}  // namespace vrep_detail
+
 template <class T>
 CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const TrimOptions& options, const T& eps, const Limits& limits) {
-  return vrep_detail::run_trim(V, trim, options.max_boxes, false, eps, limits).cls;
+  // On the region localized to V: a cell of a large model costs what it meets (issue 47).
+  return vrep_detail::run_trim(V, vrep_detail::localized_region(V, trim, eps, limits), options.max_boxes, false, eps, limits).cls;
 }
 
 template <class T>
@@ -898,8 +1074,11 @@ std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, co
     const auto& hs = M.half_surfaces[h];
     if (hs.twin) continue;
     const BSpline<T> S = face(M.trivariates[hs.trivariate], hs.dir, hs.side);
+    const auto box = control_bounds(S);
     bool on = false;
     for (const auto* g : leaves) {
+      // A leaf whose bounds on the face's control-point box exclude 0 does not vanish on it.
+      if (const auto [lo, hi] = poly_bounds(*g, box); T(0) < lo || hi < T(0)) continue;
       bool zero = true;
       for (const auto& pc : extract_bezier(S, limits)) {
         // The face as a degenerate trivariate: g o S vanishes iff every coefficient of W^k g(X/W, ...) does.

@@ -10,6 +10,7 @@
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
+#include "vrep/planted.hpp"
 #include "vrep/trivariate.hpp"
 #include "vrep/vmodel.hpp"
 
@@ -229,7 +230,10 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
         auto& same_loop = loop_index[key];
         for (std::size_t o : same_loop) {
           const auto& other = model.half_surfaces[o];
-          if (!same_surface(face(model.trivariates[other.trivariate], other.dir, other.side), F, eps, limits)) continue;
+          // (Planted, tests only: vrep/planted.hpp twins faces by their loop alone.)
+          if (!vrep_testing::is_planted(vrep_testing::Plant::vmodel_twin_by_loop) &&
+              !same_surface(face(model.trivariates[other.trivariate], other.dir, other.side), F, eps, limits))
+            continue;
           if (other.twin)
             throw ValidationError("trivariates[" + std::to_string(t) + "].face(" + std::to_string(d) + "," + std::to_string(s) + ")", "matches a V-surface that already has two half-V-surfaces (a non-manifold model)",
                                   "glue cells that meet face to face, at most two at a face");
