@@ -41,3 +41,24 @@ cli_test(repro_vrep_category_volume 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.c
 cli_test(repro_vrep_category_classify 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4c_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4c_b.json && ${CLI} vrep boolean union ${RW}/rv4c_a.json ${RW}/rv4c_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' | ${CLI} vrep classify - --at 1/2,1/2,1/2")
 cli_test(repro_vrep_category_boolean 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4b_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4b_b.json && ${CLI} vrep boolean union ${RW}/rv4b_a.json ${RW}/rv4b_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' > ${RW}/rv4b_z.json && ${CLI} vrep boolean union ${RW}/rv4b_z.json ${RW}/rv4b_a.json")
 cli_test(repro_vrep_category_topology 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4t_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4t_b.json && ${CLI} vrep boolean union ${RW}/rv4t_a.json ${RW}/rv4t_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' | ${CLI} vrep topology -")
+
+# 5. A 4x4x4 grid of box primitives with their "implicit" regions glues (was: the union of the 64
+#    regions composed on every cell's subdivision boxes, 12.5M control points, refused): the V-model
+#    of the cube [0,4]^3 (125 V-points, 300 V-curves, 240 V-surfaces, 64 cells, chi 1), valid, and
+#    its volume is 64 exactly. (Catch2: "vmodel: a 4 x 4 x 4 grid of box primitives ...".)
+cli_test(repro_vrep_grid_glue 0 [=["counts":\{"cells":64,"curves":300,"half_surfaces":384,"internal_surfaces":144,"points":125,"surfaces":240\}.*"euler_characteristic":1,.*"validity":"valid"]=] sh -c "mkdir -p ${RW}/rv5grid && cd ${RW}/rv5grid && for i in 0 1 2 3
+do for j in 0 1 2 3
+do for k in 0 1 2 3
+do ${CLI} vrep primitive box --lo=$i,$j,$k --hi=$((i+1)),$((j+1)),$((k+1)) > b$i$j$k.json || exit 1
+done
+done
+done
+${CLI} vrep glue b*.json")
+cli_test(repro_vrep_grid_volume 0 [=["volume":"64"\}$]=] sh -c "mkdir -p ${RW}/rv5gridv && cd ${RW}/rv5gridv && for i in 0 1 2 3
+do for j in 0 1 2 3
+do for k in 0 1 2 3
+do ${CLI} vrep primitive box --lo=$i,$j,$k --hi=$((i+1)),$((j+1)),$((k+1)) > b$i$j$k.json || exit 1
+done
+done
+done
+${CLI} vrep glue b*.json | ${CLI} vrep volume -")
