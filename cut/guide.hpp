@@ -16,10 +16,11 @@
 // the cut points. When RDCP is infeasible the knots are refined dyadically (k -> 2k + 1 inner knots)
 // up to max_inner_knots, as in the paper.
 //
-// Exact: assembled in Rational, solved by CGAL's exact QP solver, the KKT conditions and the
-// positive definiteness of the objective's matrix checked exactly (Lemma 1: then the minimizer is
-// unique and this is it). Double: assembled in double, the rounded program solved by the same
-// solver (exactly, on doubles), the minimizer rounded to double.
+// Exact: assembled in Rational, solved by solve_qp (cut/qp.hpp: a float active set certified
+// exactly, CGAL's exact QP solver only when that fails; GuideResult::solution.method says which),
+// the KKT conditions and the positive definiteness of the objective's matrix checked exactly
+// (Lemma 1: then the minimizer is unique and this is it). Double: assembled in double, the rounded
+// program solved by CGAL's solver on doubles (exactly, Gmpzf), the minimizer rounded to double.
 #pragma once
 #include <string>
 #include <vector>

@@ -10,6 +10,8 @@
 #include "cut/guide.hpp"
 #include "cut/qp.hpp"
 #include "cut/separation.hpp"
+#include "io/cut_io.hpp"
+#include "io/json_io.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
@@ -206,6 +208,10 @@ TEST_CASE("cut: the guiding curve exactly, certified, and in double judged exact
     REQUIRE(R.status == QPStatus::optimal);
     CHECK(R.kkt.holds);
     CHECK(R.positive_definite);
+    // found in floating point and certified exactly (issue 47 item 12), not by CGAL's exact solver
+    CHECK(R.solution.method.rfind("float active set (", 0) == 0);
+    CHECK(R.solution.method.find("certified exactly") != std::string::npos);
+    CHECK(positive_definite_by_congruence(R.program));
     // The sample constraints hold exactly at the sample points.
     for (std::size_t i = 0; i < R.sample_points.size(); ++i) {
       const Rational v = evaluate(R.f, std::vector<Rational>{R.sample_points[i][0], R.sample_points[i][1]})[0];
@@ -471,7 +477,7 @@ TEST_CASE("cut: a forged KKT point with a negative multiplier is refused, and no
   auto semi = p;
   semi.D = {q(0)};
   semi.c = {q(1)};
-  QPSolution at0{QPStatus::optimal, {q(0)}, {q(1)}, q(0)};
+  QPSolution at0{QPStatus::optimal, {q(0)}, {q(1)}, q(0), "by hand"};
   REQUIRE(check_kkt(semi, at0).holds);
   CHECK(guide_verdict(true, semi, check_kkt(semi, at0), positive_definite(semi)) ==
         "not proved: the objective's matrix is not positive definite (the minimizer need not be unique)");
@@ -504,4 +510,31 @@ TEST_CASE("cut: a strip over the whole boundary leaves RDCP without rows and the
   const auto sep2 = certify_separation(R2.solid, R2.cut, R2.f_exact, GuideOptions{}.strip);
   CHECK(sep2.verdict == "certified");
   CHECK(sep2.pieces > 0);
+}
+
+TEST_CASE("cut: the exact guide of the long-number reproducer is certified from the float solve (repro/cut 1)", "[cut]") {
+  // star5_d2 (tests/data/repro/cut): 5 quadratic facets with 6- to 11-digit denominators. CGAL's
+  // exact solver took 131 s on its program (49 variables, 72 rows); the float active set (one row)
+  // certified exactly gives the same verdict. The double run's rounded program has another
+  // minimizer, close to this one.
+  const std::string file = __FILE__;
+  const std::string dir = file.substr(0, file.rfind('/')) + "/../data/repro/cut/";
+  const auto S = solid2_from_json(read_json_file(dir + "star5_d2.solid.json"));
+  const auto C = cut2_from_json(read_json_file(dir + "star5_d2.cut.json"));
+  const GuideOptions o;
+  const auto R = guide_curve<Rational>(S, C, o);
+  REQUIRE(R.status == QPStatus::optimal);
+  INFO(R.solution.method);
+  CHECK(R.solution.method == "float active set (1 active rows), certified exactly");
+  CHECK(R.program.n == 49);
+  CHECK(R.program.rows.size() == 72);
+  CHECK(guide_verdict(true, R.program, R.kkt, R.positive_definite) ==
+        "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)");
+  CHECK(certify_separation(R.solid, R.cut, R.f_exact, o.strip).verdict == "certified");
+  const auto D = guide_curve<double>(S, C, o);
+  REQUIRE(D.status == QPStatus::optimal);
+  CHECK(D.solution.method == "exact solver on the rounded program (CGAL, Gmpzf)");
+  const auto err = coefficient_error(R.coefficients, D.f_exact.points);
+  CHECK(err.max_abs_error > 0);
+  CHECK(err.max_abs_error < err.max_abs * Rational(1, 1 << 20));
 }
