@@ -36,6 +36,8 @@ enum class Plant {
   // vrep/validate.cpp:
   validate_sweep_bound,       // the pair sweep stops at cells starting at or after the current one's start
   validate_corner_in_edge,    // a corner inside another cell's edge is not a non-conforming contact
+  validate_flat_skipped,      // a box with det J = 0 on it passes as decided instead of "flat"
+  validate_interior_zero,     // a zero of det J inside the domain is taken for one on its boundary
 };
 
 /// The plant in force (Plant::none outside tests).

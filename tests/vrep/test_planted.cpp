@@ -48,6 +48,8 @@ const std::pair<const char*, Plant> kPlants[] = {
     {"vmodel_twin_by_loop", Plant::vmodel_twin_by_loop},
     {"validate_sweep_bound", Plant::validate_sweep_bound},
     {"validate_corner_in_edge", Plant::validate_corner_in_edge},
+    {"validate_flat_skipped", Plant::validate_flat_skipped},
+    {"validate_interior_zero", Plant::validate_interior_zero},
 };
 const bool kEnvironmentPlant = [] {
   const char* name = std::getenv("SPLINEX_VREP_PLANT");
@@ -519,5 +521,40 @@ TEST_CASE("vrep planted: validation without the corner-in-edge test accepts a pa
     const auto rep = validate_vmodel(M, "vmodel");  // wrong: accepted
     CHECK(rep.verdict() == "valid");
     CHECK(M.euler_characteristic() == 2);  // and its chi is not the point set's 1
+  }
+}
+
+TEST_CASE("vrep planted: validation that lets a flat cell pass, or an interior zero of det J") {
+  // tests/data/repro/vrep/flat.json: the unit square's trivariate with its top layer on z = 0.
+  BSpline<R> flat = unit_box({0, 0, 0}, {1, 1, 1});
+  for (std::size_t i = 0; i < flat.size(); ++i) flat.points[i * 3 + 2] = R(0);
+  // twisted.json: the top face turned half a turn, det J = (1 - 2w)^2, 0 on the plane w = 1/2,
+  // which the cell maps to the single point (1/2, 1/2, 1/2).
+  BSpline<R> twisted = unit_box({0, 0, 0}, {1, 1, 1});
+  for (std::size_t i = 4; i < 8; ++i) {
+    twisted.points[i * 3] = R(1) - twisted.points[i * 3];
+    twisted.points[i * 3 + 1] = R(1) - twisted.points[i * 3 + 1];
+  }
+  // Independently: neither cell is injective on its interior.
+  CHECK(evaluate(flat, {R(1, 2), R(1, 2), R(1, 4)}) == evaluate(flat, {R(1, 2), R(1, 2), R(3, 4)}));
+  CHECK(evaluate(twisted, {R(1, 4), R(1, 4), R(1, 2)}) == evaluate(twisted, {R(3, 4), R(3, 4), R(1, 2)}));
+  CHECK(det_at(twisted, {R(1, 2), R(1, 2), R(1, 2)}) == 0);
+  CHECK(det_at(flat, {R(1, 2), R(1, 2), R(1, 2)}) == 0);
+  {
+    ScopedPlant off(Plant::none);
+    CHECK_THROWS_WITH(validate_cells({flat}, {"flat"}, "vmodel"), Catch::Contains("is flat"));
+    CHECK_THROWS_WITH(validate_cells({twisted}, {"twisted"}, "vmodel"), Catch::Contains("is not regular inside"));
+  }
+  {
+    ScopedPlant on(Plant::validate_flat_skipped);
+    const auto rep = validate_cells({flat}, {"flat"}, "vmodel");  // wrong: accepted
+    CHECK(rep.decided());
+    CHECK(rep.degenerate.size() == 1);
+  }
+  {
+    ScopedPlant on(Plant::validate_interior_zero);
+    const auto rep = validate_cells({twisted}, {"twisted"}, "vmodel");  // wrong: accepted as degenerate
+    CHECK(rep.decided());
+    CHECK(rep.degenerate.size() == 1);
   }
 }
