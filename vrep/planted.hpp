@@ -26,6 +26,8 @@ enum class Plant {
   classify_first_piece_only,  // a leaf decided on the first Bezier piece is taken as decided on the cell
   // vrep/region_graph.cpp, count_region (the pieces of a face's part):
   region_arc_unchecked,       // a leaf is taken as one arc through a box without counting its boundary roots
+  // vrep/surface_graph.cpp, count_surface (the pieces of a trimming surface's part):
+  surface_shape_unchecked,    // both sides of the surface in a box are taken as contractible without the check
   // vrep/trimmed_euler.cpp:
   euler_monotone_sign,        // chi_c(S n C) = +chi_c(S n C_a) instead of -chi_c(S n C_a)
   euler_drops_mid_face,       // a halved cell's open face between the halves is not counted

@@ -42,6 +42,7 @@ const std::pair<const char*, Plant> kPlants[] = {
     {"classify_skips_plane", Plant::classify_skips_plane},
     {"classify_first_piece_only", Plant::classify_first_piece_only},
     {"region_arc_unchecked", Plant::region_arc_unchecked},
+    {"surface_shape_unchecked", Plant::surface_shape_unchecked},
     {"euler_monotone_sign", Plant::euler_monotone_sign},
     {"euler_drops_mid_face", Plant::euler_drops_mid_face},
     {"glue_counts_ignored", Plant::glue_counts_ignored},
@@ -377,6 +378,50 @@ TEST_CASE("vrep planted: face pieces counted with a leaf taken as one arc withou
     CHECK(z0(G) == 1);  // wrong
     // trimmed_topology cross-checks the exact count against its certified lower bound (points in
     // separate components of the cover) and refuses the wrong count as an internal error.
+    CHECK_THROWS_WITH(trimmed_topology(V, trim, 2048), Catch::Contains("below the certified lower bound (2)"));
+  }
+}
+
+TEST_CASE("vrep planted: trimming-surface pieces counted without checking that the sides are contractible") {
+  // The unit box trimmed to (z - 1/3)(z - 2/3) >= 0: two slabs; the trimming surface bounds the
+  // cell in two planes z = 1/3 and z = 2/3. Independently: the points (1/2, 1/2, 1/3) and
+  // (1/2, 1/2, 2/3) are on it, and the plane z = 1/2 between them is outside the cell.
+  const auto V = unit_box({0, 0, 0}, {1, 1, 1});
+  Poly3<R> g;
+  g.terms[{0, 0, 2}] = R(1);
+  g.terms[{0, 0, 1}] = R(-1);
+  g.terms[{0, 0, 0}] = R(2, 9);
+  const auto trim = region_leaf(g, "two planes");
+  CHECK(poly_at(g, std::vector<R>{R(1, 2), R(1, 2), R(1, 3)}.data()) == 0);
+  CHECK(poly_at(g, std::vector<R>{R(1, 2), R(1, 2), R(2, 3)}.data()) == 0);
+  CHECK(classify_point(trim, {R(1, 5), R(4, 5), R(1, 2)}) == Truth::out);
+  TrimmedModel<R> M = as_trimmed(glue(std::vector<BSpline<R>>{V}), region_and<R>({box_region<R>({0, 0, 0}, {1, 1, 1}), trim}));
+  M.cells[0].trim = trim;
+  TrimmedGlueOptions o;
+  o.max_boxes = 2048;
+  auto surface = [](const TrimmedGluing<R>& G) {
+    for (const auto& h : G.halves)
+      if (h.leaf == 0) return h.boundary;
+    return std::size_t(99);
+  };
+  {
+    ScopedPlant off(Plant::none);
+    const auto t = trimmed_topology(V, trim, 2048);
+    for (const auto& s : t.surfaces)
+      if (s.leaf == 0) {
+        REQUIRE(s.decided);
+        CHECK(s.pieces == 2);
+      }
+    const auto G = trimmed_glue(M, o);
+    CHECK(G.decided);
+    CHECK(surface(G) == 2);
+  }
+  {
+    ScopedPlant on(Plant::surface_shape_unchecked);
+    const auto G = trimmed_glue(M, o);
+    INFO("pieces under the plant: " << surface(G));
+    CHECK(G.decided);
+    CHECK(surface(G) == 1);  // wrong: two planes
     CHECK_THROWS_WITH(trimmed_topology(V, trim, 2048), Catch::Contains("below the certified lower bound (2)"));
   }
 }
