@@ -12,6 +12,7 @@
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "solve/strata.hpp"
+#include "solve/testing.hpp"
 #include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
@@ -105,6 +106,10 @@ template <class T>
 ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::vector<Stratum<T>>& B, const SolveOptions& options,
                                   Search search) {
   const bool minimum = search == Search::minimum;
+  // Planted (solve/testing.hpp): undecided boxes take no part in the closest verdict.
+  const bool ignore_undecided = solve_testing::planted(solve_testing::Plant::closest_ignores_undecided);
+  // Planted: branch and bound prunes a box whose upper bound (not its lower bound) is above U.
+  const bool prune_plant = solve_testing::planted(solve_testing::Plant::contact_prune_wrong_bound);
   ContactResult<T> out;
   out.strata_pairs = A.size() * B.size();
   // The model's size, for the threshold below which an intersection is sought.
@@ -263,7 +268,10 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       u.p1 = stratum_point(a, sys.lo, 0);
       u.p2 = stratum_point(b, sys.lo, static_cast<std::size_t>(a.k));
       widen(u);
-      offer(u.d2_hi, u.d2_hi);
+      if (!ignore_undecided)
+        offer(u.d2_hi, u.d2_hi);
+      else
+        solve_testing::plant_hit();
       undecided.push_back(std::move(u));
       return false;
     }
@@ -312,6 +320,11 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
         near_lo = lo;
         near_hi = hi;
       }
+      if (prune_plant && U < high && !(U < low)) {
+        // Planted (solve/testing.hpp): pruned by its upper bound, although it may hold the minimum.
+        solve_testing::plant_hit();
+        return true;
+      }
       return U < low || (stop_near && !near_lo.empty());
     };
     // Away from contact: boxes whose points are surely within 2^-8 of the model's size of each
@@ -352,7 +365,10 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       widen(p);
       // Undecided boxes too: every point of a box is a pair of points of the strata, so the
       // box's upper bound bounds the minimum (a candidate above it cannot be the closest).
-      offer(p.d2_hi, p.d2_hi);
+      if (as_root || !ignore_undecided)
+        offer(p.d2_hi, p.d2_hi);
+      else
+        solve_testing::plant_hit();
       if (as_root)
         found.push_back({std::move(p), reduced ? -1L : static_cast<long>(job.a), reduced ? -1L : static_cast<long>(job.b)});
       else
@@ -512,7 +528,8 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
       one = one && p.exact && f.exact && single(p) && p.d2_lo == f.d2_lo && p.p1 == f.p1 && p.p2 == f.p2;
     }
   }
-  out.closest_certified = ArithTraits<T>::exact && one && out.undecided_closest.empty();
+  out.closest_certified = ArithTraits<T>::exact && one && (out.undecided_closest.empty() || ignore_undecided);
+  if (ignore_undecided && !out.undecided_closest.empty()) solve_testing::plant_hit();
   if (minimum && !(T(0) < out.distance2_lo)) out.intersection_undecided = true;
   // Why not certified, in words.
   if (!ArithTraits<T>::exact) {

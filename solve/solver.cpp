@@ -6,17 +6,64 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
+#include "solve/testing.hpp"
 #include "spline/errors.hpp"
 
 namespace splinex {
 
+namespace solve_testing {
+
+Plant active_plant = Plant::none;
+std::size_t plant_hits = 0;
+
+namespace {
+constexpr std::pair<Plant, const char*> plant_names[] = {
+    {Plant::none, "none"},
+    {Plant::skip_krawczyk_contraction_merged, "skip_krawczyk_contraction_merged"},
+    {Plant::skip_krawczyk_contraction_known, "skip_krawczyk_contraction_known"},
+    {Plant::closed_interior, "closed_interior"},
+    {Plant::krawczyk_wrong_sign, "krawczyk_wrong_sign"},
+    {Plant::drop_box, "drop_box"},
+    {Plant::closest_ignores_undecided, "closest_ignores_undecided"},
+    {Plant::shrink_enclosure, "shrink_enclosure"},
+    {Plant::contact_prune_wrong_bound, "contact_prune_wrong_bound"},
+    {Plant::curve_counts_unchecked, "curve_counts_unchecked"},
+};
+}  // namespace
+
+std::string plant_name(Plant p) {
+  for (const auto& [q, name] : plant_names)
+    if (q == p) return name;
+  return "unknown";
+}
+
+Plant plant_from_name(const std::string& name) {
+  for (const auto& [q, n] : plant_names)
+    if (name == n) return q;
+  throw std::invalid_argument("no solve plant named '" + name + "'");
+}
+
+ScopedPlant::ScopedPlant(Plant p) : previous_(active_plant), previous_hits_(plant_hits) {
+  active_plant = p;
+  plant_hits = 0;
+}
+ScopedPlant::~ScopedPlant() {
+  active_plant = previous_;
+  plant_hits = previous_hits_;
+}
+
+}  // namespace solve_testing
+
 namespace {
 
 using detail::Bern;
+using solve_testing::Plant;
 
 template <class T>
 double dbl(const T& x) {
@@ -84,6 +131,7 @@ struct KrawczykResult {
   enum Outcome { unknown, excluded, unique } outcome = unknown;
   std::vector<T> lo, hi;  // K(X) (meaningful unless unknown)
   bool contraction = false;  // ||I - Y J(X)||_inf < 1
+  bool inside_closed = false;  // K(X) inside the closed box (meaningful unless unknown)
 };
 
 /// With the centre c (default: the box's centre); c - Y F(c) + (I - Y J(X)) (X - c).
@@ -125,6 +173,9 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
   out.lo.resize(n);
   out.hi.resize(n);
   bool inside_open = true, inside_closed = true, excluded = false;
+  // Test seams (solve/testing.hpp): the closed interior test, and c + Y F(c) for c - Y F(c).
+  const bool closed_plant = solve_testing::planted(Plant::closed_interior), sign_plant = solve_testing::planted(Plant::krawczyk_wrong_sign);
+  bool sound_open = true, sound_closed = true, sound_excluded = false;
   out.contraction = true;
   T reach(0);
   for (int j = 0; j < n; ++j) reach = tmax(reach, tmax(c[j], T(T(1) - c[j])));
@@ -147,14 +198,33 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
     out.lo[i] = mid - rad;
     out.hi[i] = mid + rad;
     out.contraction = out.contraction && sum < T(1);
+    if (sign_plant) {
+      sound_excluded = sound_excluded || out.hi[i] < T(0) || T(1) < out.lo[i];
+      sound_open = sound_open && T(0) < out.lo[i] && out.hi[i] < T(1);
+      sound_closed = sound_closed && !(out.lo[i] < T(0)) && !(T(1) < out.hi[i]);
+      const T wrong = c[i] + yf;
+      out.lo[i] = wrong - rad;
+      out.hi[i] = wrong + rad;
+    }
     excluded = excluded || out.hi[i] < T(0) || T(1) < out.lo[i];
     inside_open = inside_open && T(0) < out.lo[i] && out.hi[i] < T(1);
     inside_closed = inside_closed && !(out.lo[i] < T(0)) && !(T(1) < out.hi[i]);
   }
-  if (excluded)
-    out.outcome = KrawczykResult<T>::excluded;
-  else if (inside_open || (!strict && inside_closed && out.contraction))
-    out.outcome = KrawczykResult<T>::unique;
+  out.inside_closed = inside_closed;
+  const auto outcome = [&](bool exc, bool open, bool closed) {
+    return exc ? KrawczykResult<T>::excluded
+               : open || (!strict && closed && out.contraction) ? KrawczykResult<T>::unique : KrawczykResult<T>::unknown;
+  };
+  out.outcome = outcome(excluded, inside_open, inside_closed);
+  if (closed_plant && !excluded && !inside_open && inside_closed && out.outcome != KrawczykResult<T>::unique) {
+    out.outcome = KrawczykResult<T>::unique;  // planted: K(X) in the closed box taken as in the open one
+    solve_testing::plant_hit();
+  }
+  if (sign_plant) {  // a hit when K(X) moved (it then steers refinement) or the outcome changed
+    bool moved = out.outcome != outcome(sound_excluded, sound_open, sound_closed);
+    for (int i = 0; i < n && !moved; ++i) moved = !(F[i] == T(0));
+    if (moved) solve_testing::plant_hit();
+  }
   return out;
 }
 
@@ -343,9 +413,21 @@ void round_enclosure(T& lo, T& hi) {
     const int narrow = lo < hi ? static_cast<int>(2 - exponent_of(T(hi - lo))) : 0;
     const auto bits = [&](const T& x) { return x == 0 ? std::max(200, narrow) : std::max(static_cast<int>(72 - exponent_of(x)), narrow); };
     const bool nonnegative = !(lo < 0);
-    lo = round_to_dyadic(lo, bits(lo), true);
-    hi = round_to_dyadic(hi, bits(hi), false);
+    const int blo = bits(lo), bhi = bits(hi);
+    lo = round_to_dyadic(lo, blo, true);
+    hi = round_to_dyadic(hi, bhi, false);
     if (nonnegative && lo < 0) lo = 0;
+    if (solve_testing::planted(solve_testing::Plant::shrink_enclosure) && lo < hi) {
+      // Planted: each end moved inward by one unit of its precision (past the unrounded bound).
+      using boost::multiprecision::mpz_int;
+      const auto unit = [](int b) -> Rational { return b >= 0 ? Rational(1) / Rational(mpz_int(1) << b) : Rational(mpz_int(1) << -b); };
+      const T l2 = lo + unit(blo), h2 = hi - unit(bhi);
+      if (!(h2 < l2)) {
+        lo = l2;
+        hi = h2;
+        solve_testing::plant_hit();
+      }
+    }
   } else {
     (void)lo;
     (void)hi;
@@ -417,6 +499,10 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
   while (!stack.empty()) {
     if (out.boxes >= options.max_boxes) {
       out.budget_exhausted = true;
+      if (solve_testing::planted(Plant::drop_box)) {  // planted: the unfinished queue forgotten
+        solve_testing::plant_hit();
+        break;
+      }
       for (auto& N : stack) leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
       break;
     }
@@ -471,7 +557,12 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
           c[l] = (r[l] - x0) / (x1 - x0);
         }
         const Node<T> X = restrict_node(Node<T>{all, lo, hi, 0}, a, b);
-        if (krawczyk(X.f, n, false, c).contraction) {
+        bool contraction = krawczyk(X.f, n, false, c).contraction;
+        if (!contraction && solve_testing::planted(Plant::skip_krawczyk_contraction_known)) {
+          contraction = true;  // planted: the exact root taken as the box's only root without the test
+          solve_testing::plant_hit();
+        }
+        if (contraction) {
           RootBox<T> rb;
           rb.lo = X.lo;
           rb.hi = X.hi;
@@ -567,7 +658,15 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       b[l] = (chi[l] - lo[l]) / width0[l];
     }
     const Node<T> H = restrict_node(root, a, b);
+    // Planted (solve/testing.hpp): K(X) in the closed hull taken as one root without the contraction.
+    const auto skip_contraction = [](KrawczykResult<T>& k) {
+      if (solve_testing::planted(Plant::skip_krawczyk_contraction_merged) && k.outcome == KrawczykResult<T>::unknown && k.inside_closed) {
+        k.outcome = KrawczykResult<T>::unique;
+        solve_testing::plant_hit();
+      }
+    };
     auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
+    skip_contraction(K);
     if (K.outcome == KrawczykResult<T>::excluded) continue;
     Node<T> G = H;  // the box the test speaks of
     if (K.outcome == KrawczykResult<T>::unknown && !out.budget_exhausted) {
@@ -581,7 +680,8 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
         b2[l] = tmin(T(b[l] + w), T(1));
       }
       Node<T> H2 = restrict_node(root, a2, b2);
-      const auto K2 = krawczyk(H2.f, n, false);
+      auto K2 = krawczyk(H2.f, n, false);
+      skip_contraction(K2);
       if (K2.outcome == KrawczykResult<T>::excluded) continue;
       if (K2.outcome == KrawczykResult<T>::unique) {
         K = K2;
@@ -618,6 +718,10 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
       for (std::size_t l = 0; l < n; ++l) c[l] = (u.point[l] - H.lo[l]) / (H.hi[l] - H.lo[l]);
       const auto Kr = krawczyk(H.f, n, false, c);
       u.unique = Kr.contraction;
+      if (!u.unique && solve_testing::planted(Plant::skip_krawczyk_contraction_merged)) {
+        u.unique = true;  // planted: the hull's exact root taken as its only, simple root without the test
+        solve_testing::plant_hit();
+      }
     }
     // An exact root that is not certified simple is a root of unknown multiplicity, and its hull
     // stays undecided (it may hold more). One found before is not listed twice.

@@ -143,3 +143,29 @@ TEST_CASE("contact: surfaces 2^-20 apart end in a certified pair, not in an empt
   CHECK(d.closest_certified);
   CHECK(d.points[d.closest[0]].p1 == std::vector<R>{R(0), R(0), R(0)});
 }
+
+// Issue 47 (planted bugs, tests/solve/test_planted.cpp): the certificates' regression checks.
+TEST_CASE("contact: two wells over a plane, the deeper inside boxes whose corners are all farther", "[solve]") {
+  // z = 1 + h(x) + y^2 over the plane z = 0, h = (x + 1/2)^2 ((x - 1/3)^2 - 1/256): the well at
+  // x = -1/2 (a split point) has d^2 = 1 exactly and is met first; the deeper one near x = 1/3 lies
+  // in boxes whose corners are all farther than 1 (h > 0 at x = 0, 1/4, 1/2, 1): only the boxes'
+  // lower bounds may prune them. The pair at (1/3, 0) has d^2 = (9191/9216)^2, an exact upper
+  // bound of the minimum.
+  const auto S = test::spline(R"({"type": "bspline", "degrees": [4, 2], "knots": [[-1, -1, -1, -1, -1, 1, 1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
+    "points": [["-1", "-1", "22519/9216"], ["-1/2", "-1", "11273/9216"], ["0", "-1", "86537/27648"], ["1/2", "-1", "2551/3072"],
+               ["1", "-1", "3063/1024"], ["-1", "0", "4087/9216"], ["-1/2", "0", "-7159/9216"], ["0", "0", "31241/27648"],
+               ["1/2", "0", "-3593/3072"], ["1", "0", "1015/1024"], ["-1", "1", "22519/9216"], ["-1/2", "1", "11273/9216"],
+               ["0", "1", "86537/27648"], ["1/2", "1", "2551/3072"], ["1", "1", "3063/1024"]]})");
+  REQUIRE(evaluate(S, {R(-1, 2), R(0)}) == std::vector<R>{R(-1, 2), R(0), R(1)});
+  REQUIRE(evaluate(S, {R(1, 3), R(0)}) == std::vector<R>{R(1, 3), R(0), R(9191, 9216)});
+  const R closer = R(9191, 9216) * R(9191, 9216);
+  const auto r = surface_distance(S, plane(R(0)));
+  CHECK_FALSE(r.intersecting);
+  CHECK(r.distance2_lo <= closer);
+  CHECK(r.distance2_hi <= closer);
+  REQUIRE(r.closest_certified);
+  const auto& c = r.points[r.closest[0]];
+  CHECK(c.unique);
+  CHECK(R(1, 4) < c.lo[0]);  // the deeper well, near x = 1/3
+  CHECK(c.hi[0] < R(1, 2));
+}

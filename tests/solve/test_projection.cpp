@@ -310,3 +310,72 @@ TEST_CASE("curve projection: a generic case with two folds is certified (traced 
   CHECK(r.segments == 2);
   CHECK(r.max_cosine < 1e-9);
 }
+
+// Issue 47 (planted bugs, tests/solve/test_planted.cpp): the certificates' regression checks.
+TEST_CASE("projection: every distance enclosure holds the exact squared distance at its box's corners", "[solve]") {
+  // The paraboloid z = x^2 + y^2 and P = (1, 1/3, 0): an irrational foot in a certified box. The
+  // corners of every box are surface points: their exact distances (the spline evaluated by its
+  // basis functions) lie in the box's enclosure, also where the enclosure is tight at a corner.
+  const auto S = quadric_patch(R(1), R(1), R(1));
+  const std::vector<R> P{R(1), R(1, 3), R(0)};
+  const auto p = project_point<R>(S, P);
+  REQUIRE(p.closest_certified);
+  CHECK_FALSE(p.critical[p.closest[0]].exact);
+  std::size_t boxes = 0;
+  for (const auto* list : {&p.critical, &p.undecided})
+    for (const auto& c : *list) {
+      if (c.lo == c.hi) continue;
+      ++boxes;
+      for (std::size_t m = 0; m < 4; ++m) {
+        const std::vector<R> uv{m & 1 ? c.hi[0] : c.lo[0], m & 2 ? c.hi[1] : c.lo[1]};
+        const auto x = evaluate(S, uv);
+        R d2(0);
+        for (int k = 0; k < 3; ++k) d2 += (x[k] - P[k]) * (x[k] - P[k]);
+        CHECK(c.d2_lo <= d2);
+        CHECK(d2 <= c.d2_hi);
+      }
+    }
+  CHECK(boxes > 0);
+  CHECK(p.distance2_lo <= p.distance2_hi);
+}
+
+TEST_CASE("projection: a budget too small to finish names no farther point closest", "[solve]") {
+  // z = x^2 and P = (1/10, 1/2, 3/4) with 10 boxes per system: the foot near (0.58, 1/2) is not
+  // reached in the interior nor on the edges v = 0, 1; the queue left is undecided and keeps the
+  // edge point (1, 1/2, 1) at d^2 = 349/400 from being certified: the surface point
+  // (1/2, 1/2, 1/4) at d^2 = 41/100 beats it (exactly).
+  const auto S = repro("pcyl.json");
+  const std::vector<R> P{R(1, 10), R(1, 2), R(3, 4)};
+  SolveOptions small;
+  small.max_boxes = 10;
+  const auto q = project_point<R>(S, P, small);
+  CHECK_FALSE(q.closest_certified);
+  CHECK_FALSE(q.undecided.empty());
+  const auto x = evaluate(S, {R(1, 2), R(1, 2)});
+  R closer(0);
+  for (int k = 0; k < 3; ++k) closer += (x[k] - P[k]) * (x[k] - P[k]);
+  REQUIRE(closer == R(41, 100));
+  CHECK(q.distance2_lo <= closer);
+  CHECK_FALSE(q.undecided_closest.empty());
+}
+
+TEST_CASE("curve projection: a budget too small to finish is not certified", "[solve]") {
+  // The fold case above with 2 boxes per system: nothing is solved, so no count may be certified;
+  // a slice that were certified would have to count at least the feet found by exact sign
+  // changes of the foot equation 2u^3 + (1 - 2t) u - 1/10 (v = 0) on a grid of u in [-1, 1].
+  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-1, -1, -1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
+    "points": [[-1, -1, 1], [0, -1, -1], [1, -1, 1], [-1, 0, 1], [0, 0, -1], [1, 0, 1], [-1, 1, 1], [0, 1, -1], [1, 1, 1]]})");
+  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 2, 2]], "points": [["1/10", 0, 0], ["1/10", 0, 2]]})");
+  CurveProjectionOptions o;
+  o.solve.max_boxes = 2;
+  const auto r = project_curve(C, S, o);
+  CHECK_FALSE(r.certified_counts);
+  CHECK_FALSE(r.undecided.empty());
+  REQUIRE_FALSE(r.slices.empty());
+  for (const auto& sl : r.slices) {
+    const auto g = [&](const R& u) -> R { return 2 * u * u * u + (1 - 2 * sl.t) * u - R(1, 10); };
+    std::size_t changes = 0;
+    for (int k = -8; k < 8; ++k) changes += g(R(k, 8)) * g(R(k + 1, 8)) < 0;
+    if (sl.certified) CHECK(sl.roots >= changes);
+  }
+}
