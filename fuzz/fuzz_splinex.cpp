@@ -6,11 +6,14 @@
 // answer to bad input and is swallowed; anything else (another exception, a crash, a leak, an
 // ASan/UBSan report, a timeout) is a finding. Exact results are also checked against an
 // independent route where one is cheap (insertion by A5.1 vs A5.4, elevation by A5.9 vs the
-// blossom, evaluation by A2.2 vs de Boor), so a wrong value is a finding too.
+// blossom, evaluation by A2.2 vs de Boor), so a wrong value is a finding too; the certified
+// solver's answers (roots, point projection) are checked exactly against the spline itself.
 //
 // Build and run: bash scripts/run.sh fuzz [EXECUTIONS] (README, reliability).
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -22,6 +25,8 @@
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
 #include "hybrid/hybrid.hpp"
+#include "solve/projection.hpp"
+#include "solve/solver.hpp"
 #include "compose/trimmed_compose.hpp"
 #include "crosscheck/verify.hpp"
 #include "spline/kernel.hpp"
@@ -50,9 +55,144 @@ sx::Rational inside(const sx::BSpline<sx::Rational>& S, int d, std::uint8_t f) {
   return S.domain_lo(d) + (S.domain_hi(d) - S.domain_lo(d)) * sx::Rational(f, 255);
 }
 
+// The certified solver (solve/, issue 47) with exact oracles that do not use its Bernstein forms
+// (tests/solve/test_planted.cpp shows each certificate refuting a planted bug):
+//   curves: the roots of x(t) - c on each Bezier piece (x a coordinate; rational: W x - c W), c =
+//     x(t0) at a sample t0 of the piece, so t0 is a known root: it lies in a reported box; a box
+//     certified to hold one simple root has x - c of opposite signs (or 0) at its ends; an exact
+//     root certified simple has x' != 0 there; no exact root is reported twice;
+//   surfaces (no C^-1 knot line): the projection of a point near a control point: every distance
+//     enclosure holds the exact squared distance at each corner of its box (surface points by the
+//     basis functions), and a certified closest distance is below no sampled surface point (a
+//     grid, and the point at the control point's Greville parameters).
+// The roots of g (Bernstein form standing for the box [lo, hi]), given a known root x0: x0 lies
+// in a reported box, no exact root is reported twice, an exact root certified simple has a
+// non-singular Jacobian J(x) (exactly), a box certified to hold one simple root of a univariate
+// g has f of opposite signs (or 0) at its ends.
+void check_roots(const std::vector<sx::detail::Bern<sx::Rational>>& g, const std::vector<sx::Rational>& lo, const std::vector<sx::Rational>& hi,
+                 const std::vector<sx::Rational>& x0, const sx::SolveOptions& so,
+                 const std::function<sx::Rational(const std::vector<sx::Rational>&)>& det_jacobian,
+                 const std::function<sx::Rational(const sx::Rational&)>& f1) {
+  const auto r = sx::solve_system(g, lo, hi, so);
+  const auto in = [](const std::vector<sx::Rational>& x, const sx::RootBox<sx::Rational>& b) {
+    for (std::size_t l = 0; l < x.size(); ++l)
+      if (x[l] < b.lo[l] || b.hi[l] < x[l]) return b.exact && b.point == x;
+    return true;
+  };
+  bool known = false;
+  for (const auto* list : {&r.roots, &r.undecided})
+    for (const auto& b : *list) known = known || in(x0, b);
+  if (!known) finding("solve: a known root lies outside every reported box");
+  for (std::size_t i = 0; i < r.roots.size(); ++i) {
+    const auto& b = r.roots[i];
+    if (b.unique && b.exact && det_jacobian(b.point) == 0) finding("solve: a multiple root certified simple");
+    if (f1 && b.unique && !b.exact && f1(b.lo[0]) * f1(b.hi[0]) > 0) finding("solve: a box certified to hold one simple root has no sign change");
+    for (std::size_t j = 0; j < i; ++j)
+      if (b.exact && r.roots[j].exact && b.point == r.roots[j].point) finding("solve: an exact root reported twice");
+  }
+}
+
+void run_solve(std::uint8_t arg, const sx::BSpline<sx::Rational>& S, const sx::Limits& L) {
+  using R = sx::Rational;
+  sx::SolveOptions so;
+  so.max_depth = 12;
+  so.max_boxes = std::size_t(8) << (arg % 4);  // small budgets too: the queue left must stay undecided
+  if (S.dim() == 1 && S.degrees[0] >= 1 && S.degrees[0] <= 8 && sx::bezier_pieces_size(S, L) <= 64 * 9) {
+    const int co = (arg / 9) % S.q;
+    const auto pieces = sx::extract_bezier(S, L);
+    for (std::size_t k = 0; k < pieces.size() && k < 8; ++k) {
+      const auto& B = pieces[k].spline;
+      const R lo = pieces[k].box[0].first, hi = pieces[k].box[0].second;
+      const R t0 = lo + (hi - lo) * R(arg % 9, 8);
+      const auto f = [&](const R& t) -> R { return sx::evaluate(B, {t})[co]; };
+      const R c = f(t0);
+      sx::detail::Bern<R> g{{B.degrees[0]}, {}};  // (x - c) W in Bernstein form: the weights are positive
+      bool zero = true;
+      for (std::size_t i = 0; i < B.size(); ++i) {
+        g.c.push_back((B.points[i * B.q + co] - c) * (B.is_rational() ? B.weights[i] : R(1)));
+        zero = zero && g.c.back() == 0;
+      }
+      if (zero) continue;  // x constant on the piece: no isolated roots
+      check_roots({g}, {lo}, {hi}, {t0}, so, [&](const std::vector<R>& t) -> R { return sx::derivative(B, t, {1})[co]; },
+                  [&](const R& t) -> R { return f(t) - c; });
+    }
+    return;
+  }
+  if (S.dim() != 2 || S.q < 3 || S.degrees[0] < 1 || S.degrees[1] < 1 || S.degrees[0] > 3 || S.degrees[1] > 3 || S.size() > 25) return;
+  for (int d = 0; d < 2; ++d)  // at a jump (C^-1) the point evaluated is one side's only
+    for (const auto& x : S.knots[d])
+      if (S.domain_lo(d) < x && x < S.domain_hi(d) && std::count(S.knots[d].begin(), S.knots[d].end(), x) > S.degrees[d]) return;
+  // Inverse evaluation on a Bezier piece: two coordinates (x, y), (x, z) or (y, z) of S(u, v) equal to
+  // those of S(u0, v0) at a sample (u0, v0) of the piece (on its split lines too), in Bernstein form
+  // ((x - c) W for a rational surface).
+  {
+    const auto pieces = sx::extract_bezier(S, L);
+    const auto& piece = pieces[arg % pieces.size()];
+    const auto& B = piece.spline;
+    std::vector<R> lo(2), hi(2), x0(2);
+    for (int d = 0; d < 2; ++d) {
+      lo[d] = piece.box[d].first;
+      hi[d] = piece.box[d].second;
+      x0[d] = lo[d] + (hi[d] - lo[d]) * R((arg >> (3 * d)) % 9, 8);
+    }
+    const auto c = sx::evaluate(B, x0);
+    const int coords[3][2] = {{0, 1}, {0, 2}, {1, 2}}, *co = coords[(arg / 81) % 3];
+    std::vector<sx::detail::Bern<R>> g(2, sx::detail::Bern<R>{{B.degrees[0], B.degrees[1]}, {}});
+    bool zero[2] = {true, true};
+    for (int e = 0; e < 2; ++e)
+      for (std::size_t i = 0; i < B.size(); ++i) {
+        g[e].c.push_back((B.points[i * B.q + co[e]] - c[co[e]]) * (B.is_rational() ? B.weights[i] : R(1)));
+        zero[e] = zero[e] && g[e].c.back() == 0;
+      }
+    if (!zero[0] && !zero[1]) {
+      try {
+        check_roots(g, lo, hi, x0, so,
+                    [&](const std::vector<R>& x) -> R {
+                      const auto du = sx::derivative(B, x, {1, 0}), dv = sx::derivative(B, x, {0, 1});
+                      return du[co[0]] * dv[co[1]] - du[co[1]] * dv[co[0]];
+                    },
+                    {});
+      } catch (const sx::ValidationError&) {
+        // a degenerate system (an equation identically zero after all): not this oracle's business
+      }
+    }
+  }
+  const std::size_t k = arg % S.size();
+  const std::vector<R> P{S.points[k * S.q], S.points[k * S.q + 1], S.points[k * S.q + 2] + R(arg % 16, 16)};
+  const auto p = sx::project_point<R>(S, P, so, L);
+  const auto d2 = [&](const std::vector<R>& uv) -> R {
+    const auto x = sx::evaluate(S, uv);
+    R s(0);
+    for (int c = 0; c < 3; ++c) s += (x[c] - P[c]) * (x[c] - P[c]);
+    return s;
+  };
+  for (const auto* list : {&p.critical, &p.undecided})
+    for (const auto& c : *list)
+      for (int m = 0; m < 4; ++m) {
+        const R v = d2({m & 1 ? c.hi[0] : c.lo[0], m & 2 ? c.hi[1] : c.lo[1]});
+        if (v < c.d2_lo || c.d2_hi < v) finding("project: a distance enclosure misses a point of its box");
+      }
+  if (p.closest_certified) {
+    std::vector<std::vector<R>> samples;
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; j <= 4; ++j)
+        samples.push_back({S.domain_lo(0) + (S.domain_hi(0) - S.domain_lo(0)) * R(i, 4), S.domain_lo(1) + (S.domain_hi(1) - S.domain_lo(1)) * R(j, 4)});
+    std::vector<R> greville(2);  // of control point k: near P
+    const std::size_t idx[2] = {k % S.count(0), k / S.count(0)};
+    for (int d = 0; d < 2; ++d) {
+      for (int m = 1; m <= S.degrees[d]; ++m) greville[d] += S.knots[d][idx[d] + m];
+      greville[d] = std::clamp(R(greville[d] / S.degrees[d]), S.domain_lo(d), S.domain_hi(d));
+    }
+    samples.push_back(greville);
+    const R claimed = p.critical[p.closest[0]].d2_lo;  // the point certified closest
+    for (const auto& uv : samples)
+      if (d2(uv) < p.distance2_lo || d2(uv) < claimed) finding("project: a surface point closer than the certified minimum");
+  }
+}
+
 void run_spline(std::uint8_t op, std::uint8_t arg, const sx::BSpline<sx::Rational>& S, const sx::Limits& L) {
   const int d = arg % S.dim();
-  switch (op % 10) {
+  switch (op % 11) {
     case 0: {  // evaluation: A2.2 against de Boor, exactly
       std::vector<sx::Rational> x;
       for (int k = 0; k < S.dim(); ++k) x.push_back(inside(S, k, static_cast<std::uint8_t>(arg * (k + 7))));
@@ -106,6 +246,7 @@ void run_spline(std::uint8_t op, std::uint8_t arg, const sx::BSpline<sx::Rationa
       if (S.q == S.dim()) (void)sx::compose(S, S, o, L);
       break;
     }
+    case 10: run_solve(arg, S, L); break;
   }
 }
 
