@@ -237,6 +237,24 @@ TEST_CASE("cut planted: a wrong active set is rejected, and solve_qp falls back 
   }
   // Off: the float path certifies.
   CHECK(solve_qp(p).method == "float active set (1 active rows), certified exactly");
+  // Programs the float phase cannot take fall back too, with the reason: D only semidefinite
+  // (minimize x subject to x >= 0), numbers beyond double's range (10^400 (x^2 - x), x >= 0).
+  {
+    auto semi = program(1, {q(0)}, {q(1)});
+    semi.rows.push_back({{{0, q(1)}}, q(0), true});
+    const auto s = solve_qp(semi);
+    REQUIRE(s.status == QPStatus::optimal);
+    CHECK(s.x == std::vector<Rational>{q(0)});
+    CHECK(check_kkt(semi, s).holds);
+    CHECK(s.method == "exact solver (CGAL, Gmpz), after the float solve failed: the objective's matrix is not positive definite in double");
+    const Rational big = Rational(boost::multiprecision::pow(Integer(10), 400));
+    auto huge = program(1, {big}, {Rational(-big)});
+    huge.rows.push_back({{{0, q(1)}}, q(0), true});
+    const auto h = solve_qp(huge);
+    REQUIRE(h.status == QPStatus::optimal);
+    CHECK(h.x == std::vector<Rational>{q(1, 2)});
+    CHECK(h.method == "exact solver (CGAL, Gmpz), after the float solve failed: the objective is beyond double's range");
+  }
 
   // A real RDCP: its float-certified minimizer and CGAL's exact one (forced by planting the empty
   // set, which is wrong here: the L has an active row) are the same rationals (Lemma 1: unique).
