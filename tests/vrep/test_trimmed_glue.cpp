@@ -17,6 +17,7 @@
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
 #include "vrep/vmodel.hpp"
+#include "region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -134,6 +135,40 @@ TEST_CASE("vrep trimmed glue: a box united with a cylinder through it, counted b
   CHECK(S.decided);
   CHECK(S.boundary_v_surfaces == 7);
   CHECK(S.internal_v_surfaces == 0);
+}
+
+TEST_CASE("vrep trimmed glue: two contact halves whose piece counts differ are not one set") {
+  // A region written larger than its cells (documents must not be edited so; this one is built
+  // here): A = [0,1]^3; B's trivariate [1/2,2] x [0,1]^2 trimmed to x >= 1, y <= 1/3; the region
+  // A u [1,2]x[0,1/3]x[0,1] u [1,2]x[2/3,1]x[0,1]. A's face x = 1 has the model on its other side
+  // in 2 pieces, B's surface x = 1 in 1 (against A), and they meet only each other: one set cannot
+  // have 2 and 1 pieces, so the contact is undecided with the reason, and so is the gluing.
+  TrimmedModel<R> M;
+  M.trivariates = {box_cells<R>({0, 0, 0}, {1, 1, 1})[0], box_cells<R>({R(1, 2), 0, 0}, {2, 1, 1})[0]};
+  TrimmedModel<R>::Cell a, b;
+  a.trivariate = 0;
+  a.trim = region_and<R>({});
+  b.trivariate = 1;
+  b.trim = region_and<R>({test::above(0, R(1)), region_not(test::above(1, R(1, 3)))});
+  b.status = Truth::mixed;
+  M.cells = {a, b};
+  M.region = region_or<R>({box_region<R>({0, 0, 0}, {1, 1, 1}), box_region<R>({1, 0, 0}, {2, R(1, 3), 1}), box_region<R>({1, R(2, 3), 0}, {2, 1, 1})});
+  const auto G = trimmed_glue(M, options());
+  std::size_t a_face = 99, b_surface = 99, contacts = 0;
+  for (const auto& h : G.halves) {
+    if (h.cell == 0 && h.dir == 0 && h.side == 1) a_face = h.unmatched;
+    if (h.cell == 1 && h.leaf >= 0 && h.internal > 0) b_surface = h.unmatched;
+  }
+  CHECK(a_face == 2);
+  CHECK(b_surface == 1);
+  for (const auto& t : G.twins)
+    if (t.how.rfind("contact", 0) == 0) {
+      ++contacts;
+      CHECK_FALSE(t.decided);
+      CHECK_THAT(t.undecided_reason, Catch::Contains("2 and 1 pieces"));
+    }
+  CHECK(contacts == 1);
+  CHECK_FALSE(G.decided);
 }
 
 TEST_CASE("vrep trimmed glue: contacts it cannot match are said so, bad input refused") {

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "exact/rational.hpp"
+#include "spline/insert.hpp"
 #include "spline/kernel.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
@@ -279,6 +280,9 @@ TEST_CASE("vmodel: a 4 x 4 x 4 grid of box primitives with the union of their re
   CHECK(classify_cell(box_cells<R>({R(5, 4), R(9, 4), R(13, 4)}, {R(7, 4), R(11, 4), R(15, 4)})[0], *region).kind == CellClass<R>::whole);
   CHECK(classify_cell(box_cells<R>({R(9, 2), R(0), R(0)}, {R(5), R(1), R(1)})[0], *region).kind == CellClass<R>::empty);
   CHECK(classify_cell(box_cells<R>({R(7, 2), R(1, 3), R(1, 3)}, {R(9, 2), R(1), R(1)})[0], *region).kind == CellClass<R>::cut);
+  // The same with a knot at x = 4: the region's surface x = 4 is decided on the first Bezier piece
+  // (x <= 4 holds there) but not on the second, so it stays in the localized formula.
+  CHECK(classify_cell(insert_knot(box_cells<R>({R(7, 2), R(1, 3), R(1, 3)}, {R(9, 2), R(1), R(1)})[0], 0, R(1, 2)), *region).kind == CellClass<R>::cut);
   // A region missing one box does not describe the cells: the check says which.
   std::optional<Region<R>> less;
   for (int b = 0; b < 63; ++b) {
@@ -288,6 +292,23 @@ TEST_CASE("vmodel: a 4 x 4 x 4 grid of box primitives with the union of their re
   const auto fails = check_region(M, *less);
   REQUIRE(fails.size() >= 1);
   CHECK(fails.front().find("cells[63]") != std::string::npos);
+}
+
+TEST_CASE("vmodel: faces with the same four V-curves but different surfaces are not twins") {
+  // [0,1]^3 and a cell on [1,2] x [0,1]^2 whose face x = 1 bulges into x > 1 (biquadratic, middle
+  // control point at x = 3/2; its edges are the box's): the cells share the loop of four V-curves
+  // and nothing else. A u B is two balls glued along a circle: chi 1 + 1 - 0 = 2, no internal face.
+  BSpline<R> bulged;
+  bulged.degrees = {1, 2, 2};
+  bulged.knots = {{0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  bulged.q = 3;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 2; ++i) bulged.points.insert(bulged.points.end(), {i == 1 ? R(2) : (j == 1 && k == 1 ? R(3, 2) : R(1)), R(j, 2), R(k, 2)});
+  CHECK(evaluate(bulged, {R(0), R(1, 2), R(1, 2)})[0] == R(9, 8));
+  const auto M = glue(std::vector<BSpline<R>>{box_cells<R>({0, 0, 0}, {1, 1, 1})[0], bulged});
+  check_model(M, {12, 20, 12, 2, 0, 2});
+  CHECK(M.shared(0, 1) == "curve");
 }
 
 // Validation before use (vrep/validate.hpp; issue 47, reproducers vrep 2-4): proved defects are
