@@ -365,6 +365,18 @@ TEST_CASE("vmodel validation: folding, pinched and flat cells are refused, colla
     for (int j = 0; j < 2; ++j)
       for (int x : {0, 2, 1}) fold.points.insert(fold.points.end(), {R(x), R(j), R(k)});
   CHECK_THAT(refusal({fold}), Catch::Contains("folds: det J changes sign"));
+  // A fold strictly inside one Bezier piece: x(u) cubic with x' = 100 (u - 3/5)(u - 9/10)
+  // (control points 0, 18, 11, 37/3): det J > 0 at every corner of the domain, -9/4 at u = 3/4.
+  BSpline<R> inner;
+  inner.degrees = {3, 1, 1};
+  inner.knots = {{0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+  inner.q = 3;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (const R& x : {R(0), R(18), R(11), R(37, 3)}) inner.points.insert(inner.points.end(), {x, R(j), R(k)});
+  CHECK(derivative(inner, {R(3, 4), R(1, 2), R(1, 2)}, {1, 0, 0})[0] == R(-9, 4));
+  CHECK(certify_regularity(inner).verdict == Regularity::singular);
+  CHECK_THAT(refusal({inner}), Catch::Contains("folds: det J changes sign"));
   // The top face turned half a turn: det J = (1 - 2w)^2, 0 on the plane w = 1/2 (pinched).
   BSpline<R> twist = unit_box({0, 0, 0}, {1, 1, 1});
   for (int i = 4; i < 8; ++i) {
