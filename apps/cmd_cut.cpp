@@ -140,7 +140,7 @@ Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& 
   j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1])})},
                     {"scale", to_fraction_string(R.frame.scale)},
                     {"meaning", "f* lives on [0,1]^2 in normalized coordinates (x - lo) / scale"}};
-  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
+  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
   j["positive_definite"] = R.positive_definite;
   if (R.status == QPStatus::optimal) {
     j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
@@ -214,7 +214,7 @@ Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3
   j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1]), to_fraction_string(R.frame.lo[2])})},
                     {"scale", to_fraction_string(R.frame.scale)},
                     {"meaning", "f* lives on [0,1]^3 in normalized coordinates (x - lo) / scale"}};
-  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}};
+  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
   j["positive_definite"] = R.positive_definite;
   if (R.status == QPStatus::optimal) {
     j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);

@@ -446,9 +446,10 @@ TEST_CASE("cut: the loop check is near-linear: thousands of straight and curved 
   auto bad = v;
   bad[2000] = P{q(-2), q(0)};
   CHECK_THROWS_WITH(validate_solid(polygon_solid(bad)), Catch::Contains("not simple"));
+  // No timed assertion (house rule): a quadratic check shows as this case's time in ctest's log
+  // (and its timeout), printed here for the reader.
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  INFO(seconds);
-  CHECK(seconds < 60);
+  WARN("loop checks of 1001 + 125 arcs + 4002 + 1001 pieces: " << seconds << " s");
 }
 
 TEST_CASE("cut: a forged KKT point with a negative multiplier is refused, and no rows is never proved", "[cut]") {
