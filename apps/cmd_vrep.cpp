@@ -91,6 +91,41 @@ void put_enclosure(Json& j, const char* exact_key, const Rational& lo, const Rat
   if (approx) j["approximately"] = {approx_json(to_double(lo)), approx_json(to_double(hi))};
 }
 
+/// (hi - lo) / lo as a decimal rounded up to two significant digits ("0" when exact, "unbounded"
+/// when lo <= 0 < hi), exactly: never narrower than the enclosure.
+std::string relative_width_text(const Rational& lo, const Rational& hi) {
+  if (lo == hi) return "0";
+  if (!(Rational(0) < lo)) return "unbounded";
+  const Rational x = (hi - lo) / lo;
+  // 10^k <= x < 10^(k+1), then m = ceil(x 10^(1-k)) in [10, 100].
+  int k = 0;
+  Rational p(1);
+  while (!(x < p * 10)) {
+    p *= 10;
+    ++k;
+  }
+  while (x < p) {
+    p /= 10;
+    --k;
+  }
+  const Rational scaled = x * 10 / p;
+  Integer m = numerator(scaled) / denominator(scaled);
+  if (Rational(m) < scaled) m += 1;
+  int e = k - 1;  // x <= m 10^e
+  if (m == 100) {
+    m = 10;
+    ++e;
+  }
+  std::string digits = m.str();
+  if (e >= 0) return digits + std::string(static_cast<std::size_t>(e), '0');
+  const std::size_t point = static_cast<std::size_t>(-e);
+  std::string text = digits.size() <= point ? "0." + std::string(point - digits.size(), '0') + digits
+                                            : digits.substr(0, digits.size() - point) + "." + digits.substr(digits.size() - point);
+  while (text.back() == '0') text.pop_back();
+  if (text.back() == '.') text.pop_back();
+  return text;
+}
+
 BSpline<Rational> read_spline(const std::string& path, const std::string& field, const Context& ctx) {
   return spline_from_json(read_json_file(path, ctx.read_limits), ctx.limits, field);
 }
@@ -380,6 +415,7 @@ Commands add_vrep(CLI::App& app) {
     bool centroid = false;
     std::string field;
     int component = 0;
+    std::string rel_width = "1/100";
   };
   auto bo = std::make_shared<BooleanOptions>();
   bo->boxes = 4096;
@@ -402,7 +438,13 @@ Commands add_vrep(CLI::App& app) {
   auto* vol = v->add_subcommand("volume", "every cell's volume and the model's: exact (polynomial cells) or a certified enclosure (rational)");
   vol->add_option("file", volo->a, "a V-model document")->required();
   vol->add_flag("--centroid", volo->centroid, "also the model's centroid: exact (polynomial cells, no curved cut) or a certified enclosure per coordinate");
-  vol->add_option("--boxes", volo->boxes, "rational cells: the subdivision budget per cell (the enclosure's gap shrinks as 1/boxes)")
+  volo->boxes = 500;
+  vol->add_option("--rel-width", volo->rel_width,
+                  "rational or cut cells: refine adaptively until the enclosure's width is at most this fraction of its lower bound "
+                  "(moments, field integrals: of the volume times the largest |coordinate| or |field value|), or the budget is spent; "
+                  "0: spend the budget")
+      ->capture_default_str();
+  vol->add_option("--boxes", volo->boxes, "the subdivision budget: boxes per cell (in all: this times the cells), spent where the enclosure is widest")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   vol->add_option("--field", volo->field, "also the integral of this attribute field over every cell that has it (F det J over the trimmed domain)");
@@ -902,92 +944,112 @@ Commands add_vrep(CLI::App& app) {
            }},
           {vol, [volo, operand](const Context& ctx) {
              const auto O = operand(volo->a, ctx);
-             Json cells = Json::array();
-             Rational lo(0), hi(0);
-             auto add = [&](std::size_t c, const std::string& name, const VolumeEnclosure<Rational>& e) {
-               lo += e.lower;
-               hi += e.upper;
-               Json j{{"cell", c}, {"name", name}};
-               put_enclosure(j, "volume", e.lower, e.upper, false);
-               if (e.lower != e.upper) j["boxes"] = e.boxes;
-               cells.push_back(j);
-             };
+             const Rational rel = parse_number(volo->rel_width, "rel-width");
+             if (rel < Rational(0)) throw ValidationError("rel-width", "is negative", "give a fraction >= 0 (0: spend the whole budget)");
+             // Every cell in one adaptive run (its widest boxes refined first, over all cells); with
+             // --centroid the moments of x, y, z come from the same run.
+             const Region<Rational> whole = region_and<Rational>({});
+             std::vector<IntegrandCell<Rational>> in;
+             std::vector<std::string> names;
              if (O.model)
-               for (std::size_t c = 0; c < O.model->cells.size(); ++c)
-                 add(c, O.model->cells[c].name, volume_enclosure(O.model->trivariates[O.model->cells[c].trivariates.front()], volo->boxes, ctx.limits));
-             else
-               for (std::size_t c = 0; c < O.trimmed->cells.size(); ++c) {
-                 const auto& x = O.trimmed->cells[c];
-                 add(c, x.name, trimmed_volume(O.trimmed->trivariates[x.trivariate], x.trim, volo->boxes, ctx.limits));
+               for (const auto& cell : O.model->cells) {
+                 in.push_back({&O.model->trivariates[cell.trivariates.front()], &whole, nullptr});
+                 names.push_back(cell.name);
                }
+             else
+               for (const auto& x : O.trimmed->cells) {
+                 in.push_back({&O.trimmed->trivariates[x.trivariate], &x.trim, nullptr});
+                 names.push_back(x.name);
+               }
+             const std::vector<int> xyz{0, 1, 2};
+             // With the centroid, half the width for the volume and the moments: the quotient's
+             // width is then within the target of the model's extent (checked below).
+             const auto R = integral_enclosures(in, volo->centroid ? xyz : std::vector<int>{}, volo->centroid ? Rational(rel / 2) : rel,
+                                                volo->boxes, ctx.limits);
+             // The status is read off the widths reported, not the engine's own test.
+             bool reached = R.total.upper - R.total.lower <= rel * R.total.lower;
+             bool exact = R.total.upper == R.total.lower;
+             Json cells = Json::array();
+             for (std::size_t c = 0; c < in.size(); ++c) {
+               const auto& e = R.volume[c];
+               Json j{{"cell", c}, {"name", names[c]}};
+               put_enclosure(j, "volume", e.lower, e.upper, false);
+               if (e.lower != e.upper) {
+                 j["boxes"] = e.boxes;
+                 j["relative_width"] = relative_width_text(e.lower, e.upper);
+               }
+               cells.push_back(j);
+             }
+             const Rational lo = R.total.lower, hi = R.total.upper;
              Json out{{"cells", cells}};
              put_enclosure(out, "volume", lo, hi, true);
+             Json acc{{"target", to_fraction_string(rel)}, {"boxes", R.total.boxes}, {"relative_width", relative_width_text(lo, hi)}};
              if (!O.validity.complete()) out["validity"] = O.validity.verdict();
              if (!volo->field.empty()) {
                // Per cell that has the field: its integral (exact or a certified enclosure); the
                // model's sum when every cell has it.
-               Json fc = Json::array();
+               std::vector<IntegrandCell<Rational>> fin;
+               std::vector<std::size_t> which;
                std::vector<std::string> missing;
-               Rational il(0), ih(0);
-               auto add_field = [&](std::size_t c, const std::string& name, const BSpline<Rational>& V, const Region<Rational>& trim,
-                                    const std::map<std::string, BSpline<Rational>>& fields) {
+               auto add_field = [&](std::size_t c, const std::map<std::string, BSpline<Rational>>& fields) {
                  const auto it = fields.find(volo->field);
                  if (it == fields.end()) {
-                   missing.push_back(name);
+                   missing.push_back(names[c]);
                    return;
                  }
-                 const auto e = trimmed_field_integral(V, trim, it->second, volo->component, volo->boxes, ctx.limits);
-                 il += e.moment.lower;
-                 ih += e.moment.upper;
-                 Json j{{"cell", c}, {"name", name}};
-                 put_enclosure(j, "integral", e.moment.lower, e.moment.upper, true);
-                 fc.push_back(j);
+                 fin.push_back({in[c].trivariate, in[c].trim, &it->second});
+                 which.push_back(c);
                };
-               if (O.model)
-                 for (std::size_t c = 0; c < O.model->cells.size(); ++c) {
-                   const auto& cell = O.model->cells[c];
-                   add_field(c, cell.name, O.model->trivariates[cell.trivariates.front()], region_and<Rational>({}), cell.attributes.fields);
-                 }
-               else
-                 for (std::size_t c = 0; c < O.trimmed->cells.size(); ++c) {
-                   const auto& x = O.trimmed->cells[c];
-                   add_field(c, x.name, O.trimmed->trivariates[x.trivariate], x.trim, x.fields);
-                 }
-               if (fc.empty())
+               for (std::size_t c = 0; c < in.size(); ++c) add_field(c, O.model ? O.model->cells[c].attributes.fields : O.trimmed->cells[c].fields);
+               if (fin.empty())
                  throw ValidationError("field", "\"" + volo->field + "\" is on no cell of the model", "give the name of an attribute field of its cells");
+               const auto F = integral_enclosures(fin, {volo->component}, rel, volo->boxes, ctx.limits);
+               const auto& fm = F.total_moment[0];
+               reached = reached && fm.upper - fm.lower <= rel * F.total.lower * F.scale[0];
+               exact = exact && fm.upper == fm.lower;
+               Json fc = Json::array();
+               for (std::size_t i = 0; i < fin.size(); ++i) {
+                 Json j{{"cell", which[i]}, {"name", names[which[i]]}};
+                 put_enclosure(j, "integral", F.moment[i][0].lower, F.moment[i][0].upper, true);
+                 fc.push_back(j);
+               }
                Json f{{"name", volo->field}, {"component", volo->component}, {"cells", fc}};
-               if (missing.empty()) put_enclosure(f, "integral", il, ih, true);
+               const auto& t = F.total_moment[0];
+               if (missing.empty()) put_enclosure(f, "integral", t.lower, t.upper, true);
                else f["cells_without"] = missing;
                out["field"] = f;
+               // The integral's width relative to its scale: the volume's lower bound times the
+               // field component's largest |value| (of the control points).
+               acc["field_relative_width"] = relative_width_text(F.total.lower * F.scale[0], F.total.lower * F.scale[0] + (t.upper - t.lower));
              }
              if (volo->centroid) {
-               // The model's centroid: per coordinate the enclosure of sum of moments over the
-               // enclosure of sum of volumes (one subdivision per coordinate gives both).
+               // The model's centroid: per coordinate the enclosure of the summed moments over the
+               // enclosure of the summed volumes (one subdivision gives all).
                Json c = Json::array(), approx = Json::array();
+               const Rational vl = R.total.lower, vh = R.total.upper;
+               if (!(Rational(0) < vl)) throw DomainError("centroid", "needs a volume enclosure away from 0", "raise --boxes");
+               Rational worst(0);
                for (int a = 0; a < 3; ++a) {
-                 Rational ml(0), mh(0), vl(0), vh(0);
-                 auto add_moment = [&](const BSpline<Rational>& V, const Region<Rational>& trim) {
-                   const auto e = trimmed_moment(V, trim, a, volo->boxes, ctx.limits);
-                   ml += e.moment.lower;
-                   mh += e.moment.upper;
-                   vl += e.volume.lower;
-                   vh += e.volume.upper;
-                 };
-                 if (O.model)
-                   for (const auto& cell : O.model->cells) add_moment(O.model->trivariates[cell.trivariates.front()], region_and<Rational>({}));
-                 else
-                   for (const auto& x : O.trimmed->cells) add_moment(O.trimmed->trivariates[x.trivariate], x.trim);
-                 if (!(Rational(0) < vl))
-                   throw DomainError("centroid", "needs a volume enclosure away from 0", "raise --boxes");
+                 const Rational ml = R.total_moment[a].lower, mh = R.total_moment[a].upper;
                  // m / v over m in [ml, mh], v in [vl, vh], v > 0.
                  const Rational lo_c = std::min(ml / vl, ml / vh), hi_c = std::max(mh / vl, mh / vh);
                  if (lo_c == hi_c) c.push_back(to_fraction_string(lo_c));
                  else c.push_back({to_fraction_string(lo_c), to_fraction_string(hi_c)});
                  approx.push_back({to_double(lo_c), to_double(hi_c)});
+                 if (Rational(0) < R.scale[a]) worst = std::max(worst, Rational((hi_c - lo_c) / R.scale[a]));
                }
                out["centroid"] = c;
                out["centroid_approximately"] = approx;
+               // The widest coordinate's width relative to the model's extent (its largest |coordinate|).
+               acc["centroid_relative_width"] = relative_width_text(Rational(1), Rational(1) + worst);
+               reached = reached && worst <= rel;
+               exact = exact && worst == Rational(0);
              }
+             acc["status"] = exact ? "exact"
+                             : reached          ? "target reached"
+                                                : "target not reached: budget of " + std::to_string(volo->boxes) + " boxes per cell (" +
+                                                      std::to_string(R.budget) + " in all) spent; raise --boxes or --rel-width";
+             out["enclosure"] = acc;
              std::cout << out.dump() << "\n";
              return 0;
            }},

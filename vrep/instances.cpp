@@ -9,6 +9,7 @@
 #include "vrep/vmodel_impl.hpp"
 #include "vrep/trivariate_impl.hpp"
 #include "vrep/trimmed_impl.hpp"
+#include "vrep/enclosure_impl.hpp"
 
 namespace splinex {
 
@@ -183,9 +184,10 @@ const char* to_string(Regularity r) {
   template CellClass<T> classify_cell(const BSpline<T>&, const Region<T>&, const TrimOptions&, const T&, const Limits&); \
   template TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>&, const TrimmedModel<T>&, BooleanOp, Blend, const TrimOptions&, \
                                            const T&, const Limits&);                                                 \
-  template VolumeEnclosure<T> trimmed_volume(const BSpline<T>&, const Region<T>&, std::size_t, const Limits&);       \
-  template MomentEnclosure<T> trimmed_moment(const BSpline<T>&, const Region<T>&, int, std::size_t, const Limits&);  \
-  template MomentEnclosure<T> trimmed_field_integral(const BSpline<T>&, const Region<T>&, const BSpline<T>&, int, std::size_t, const Limits&); \
+  template VolumeEnclosure<T> trimmed_volume(const BSpline<T>&, const Region<T>&, std::size_t, const Limits&, const T&);       \
+  template MomentEnclosure<T> trimmed_moment(const BSpline<T>&, const Region<T>&, int, std::size_t, const Limits&, const T&);  \
+  template MomentEnclosure<T> trimmed_field_integral(const BSpline<T>&, const Region<T>&, const BSpline<T>&, int, std::size_t, const Limits&, const T&); \
+  template IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>&, const std::vector<int>&, const T&, std::size_t, const Limits&); \
   template std::vector<std::string> check_region(const VModel<T>&, const Region<T>&, const TrimOptions&, const Limits&);
 
 SPLINEX_INSTANTIATE_TRIMMED(Rational)

@@ -37,8 +37,9 @@
 // Euler characteristic of a trimmed cell and of a model's point set is exact (trimmed_euler,
 // model_euler, below).
 //
-// The volume of a trimmed cell is a certified enclosure: in-boxes contribute the enclosure of their
-// integral of |det J| (exact for polynomial cells), mixed boxes [0, their upper bound], out-boxes 0.
+// The volume of a trimmed cell (and moments, field integrals) is a certified enclosure, refined
+// adaptively where the width is (integral_enclosures, below): in-boxes exact for polynomial cells,
+// cut boxes between the exact volumes of half-spaces around the trimming surface, out-boxes 0.
 #pragma once
 #include <array>
 #include <map>
@@ -178,22 +179,58 @@ template <class T>
 TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>& B, BooleanOp op, Blend blend = Blend::sum_clipped,
                                 const TrimOptions& options = {}, const T& eps = T(0), const Limits& limits = {});
 
-/// Certified volume enclosure of a trimmed cell (see above).
+/// Certified, adaptive enclosures of volumes, moments and field integrals over (trimmed) cells
+/// (vrep/enclosure_impl.hpp has the method). One priority queue of parameter boxes over all the
+/// cells: the box with the widest bounds is halved (exact de Casteljau) until the summed width is
+/// at most rel_width times the summed volumes' lower bound (each moment's: rel_width times that
+/// times its scale, the largest |coordinate| or |field component| of the control points) or the
+/// budget of max_boxes boxes per cell (in all: max_boxes times the cells) is spent; rel_width 0
+/// spends the budget (unless every bound is exact first). Per box: out of the trim 0; in it, exact
+/// for a polynomial cell (the mean of the integrand's Bernstein coefficients), for a rational one
+/// Taylor's formula of W^-p of order 6 with a certified remainder, and Jensen / chord; cut by one
+/// trimming surface that is a graph over two parameter directions, the part's integral through a
+/// certified biquadratic approximation of the graph (within eps, from the composition of the
+/// surface's polynomial with it); other cut boxes between the exact volumes of two half-spaces
+/// around the surface, or between none and all of the box. Each bound is rounded outward to about
+/// 64 significant bits once its numbers pass 128 bits (exact values stay exact). A negatively
+/// oriented cell's volume is the integral's magnitude. A box where det J's numerator changes sign
+/// gives the integral of det J, not of |det J|: give regular trivariates.
 template <class T>
-VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {});
+struct IntegrandCell {
+  const BSpline<T>* trivariate = nullptr;
+  const Region<T>* trim = nullptr;    // nullptr: the whole trivariate
+  const BSpline<T>* field = nullptr;  // the components integrated are this field's (F det J), else point coordinates (X_c det J)
+};
+template <class T>
+struct IntegralEnclosures {
+  std::vector<VolumeEnclosure<T>> volume;               // per cell (boxes: its boxes at the end)
+  std::vector<std::vector<VolumeEnclosure<T>>> moment;  // per cell, per component asked for
+  VolumeEnclosure<T> total;                             // the volumes' sum (boxes: all)
+  std::vector<VolumeEnclosure<T>> total_moment;         // per component, summed over the cells
+  std::vector<T> scale;                                 // per component: the moment's scale (see above)
+  std::size_t budget = 0;                               // the boxes allowed in all
+  bool reached = false;                                 // the widths are within the target (else the budget was spent)
+};
+template <class T>
+IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& cells, const std::vector<int>& components, const T& rel_width,
+                                          std::size_t max_boxes = 4096, const Limits& limits = {});
+
+/// Certified volume enclosure of a trimmed cell (integral_enclosures with one cell; by default
+/// within 1% or the budget).
+template <class T>
+VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {},
+                                  const T& rel_width = T(1) / T(100));
 
 /// The volume and the integral of point coordinate `coordinate` (0..2: x, y, z, the centroid's
 /// numerator; 3..q-1: an attribute coordinate carried by the trivariate) over a trimmed cell, both
-/// certified enclosures from the same subdivision: polynomial cells' in-boxes exactly, other boxes
-/// between Q / W^5's extreme coefficient ratios (Q = X_c N), mixed boxes between none and all; the
-/// budget left after classification splits the boxes whose moment bounds are widest.
+/// certified enclosures from the same subdivision (integral_enclosures: Q = X_c N over W^5).
 template <class T>
 struct MomentEnclosure {
   VolumeEnclosure<T> volume, moment;
 };
 template <class T>
 MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes = 4096,
-                                  const Limits& limits = {});
+                                  const Limits& limits = {}, const T& rel_width = T(1) / T(100));
 
 /// The volume and the integral of a field's component over a trimmed cell (the integrand F det J
 /// over the trimmed parameter region; papers/002 Section 3.1.2's attribute fields), certified as
@@ -202,7 +239,27 @@ MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, in
 /// polynomial trivariate on the cell's parameter domain (rational: DomainError).
 template <class T>
 MomentEnclosure<T> trimmed_field_integral(const BSpline<T>& V, const Region<T>& trim, const BSpline<T>& field, int component = 0,
-                                          std::size_t max_boxes = 4096, const Limits& limits = {});
+                                          std::size_t max_boxes = 4096, const Limits& limits = {}, const T& rel_width = T(1) / T(100));
+
+namespace vrep_testing {
+/// Test seam (tests only; nothing in the program or the library sets it): while a
+/// ScopedEnclosurePlant is alive, integral_enclosures runs an unsound variant, so tests can show
+/// that a wrong enclosure fails to contain the true value. drop_crossing: boxes cut by a trimming
+/// surface count as empty; shrink_last_bit: each cell's upper volume bound is lowered by one unit
+/// in its 64th significant bit. Off: one read of a plain enum per run.
+enum class EnclosurePlant { none, drop_crossing, shrink_last_bit };
+inline EnclosurePlant planted_enclosure = EnclosurePlant::none;
+class ScopedEnclosurePlant {
+ public:
+  explicit ScopedEnclosurePlant(EnclosurePlant p) : previous_(planted_enclosure) { planted_enclosure = p; }
+  ~ScopedEnclosurePlant() { planted_enclosure = previous_; }
+  ScopedEnclosurePlant(const ScopedEnclosurePlant&) = delete;
+  ScopedEnclosurePlant& operator=(const ScopedEnclosurePlant&) = delete;
+
+ private:
+  EnclosurePlant previous_;
+};
+}  // namespace vrep_testing
 
 /// That the model lies in its region: every cell's trivariate classifies `whole` against it (the
 /// cells of a primitive against the primitive's region), and every boundary face lies on the

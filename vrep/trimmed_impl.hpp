@@ -939,25 +939,7 @@ CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const Tri
   return vrep_detail::run_trim(V, vrep_detail::localized_region(V, trim, eps, limits), options.max_boxes, false, eps, limits).cls;
 }
 
-template <class T>
-VolumeEnclosure<T> trimmed_volume(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
-  if (vrep_detail::trivially_true(trim)) return volume_enclosure(V, max_boxes, limits);
-  return vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits).volume;
-}
-
-template <class T>
-MomentEnclosure<T> trimmed_moment(const BSpline<T>& V, const Region<T>& trim, int coordinate, std::size_t max_boxes, const Limits& limits) {
-  if (coordinate < 0) throw ValidationError("coordinate", "is negative", "give 0 <= coordinate < q");
-  const auto r = vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits, coordinate);
-  return {r.volume, r.moment};
-}
-
-template <class T>
-MomentEnclosure<T> trimmed_field_integral(const BSpline<T>& V, const Region<T>& trim, const BSpline<T>& field, int component,
-                                          std::size_t max_boxes, const Limits& limits) {
-  const auto r = vrep_detail::run_trim(V, trim, max_boxes, true, T(0), limits, component, &field);
-  return {r.volume, r.moment};
-}
+// trimmed_volume, trimmed_moment, trimmed_field_integral: vrep/enclosure_impl.hpp.
 
 template <class T>
 TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>& B, BooleanOp op, Blend blend, const TrimOptions& options,

@@ -62,3 +62,15 @@ done
 done
 done
 ${CLI} vrep glue b*.json | ${CLI} vrep volume -")
+
+# 6. Volume enclosures a user can use (issue 47 item 4): refined where the width is until
+#    --rel-width (default 1/100) or the budget (--boxes per cell); the width reached, the boxes and
+#    the status said, "target not reached" with the budget when it was spent first.
+cli_test(repro_vrep_volume_torus_half 0 [=["approximately":\[29\.[5-9][0-9]*,29\.[5-9][0-9]*\],.*"enclosure":\{"boxes":[0-9]+,"relative_width":"0\.0[01][0-9]*","status":"target reached","target":"1/100"\}]=] sh -c "${CLI} vrep primitive torus > ${RW}/rv6_t.json && ${CLI} vrep primitive box --lo=0,-5,-2 --hi=5,5,2 > ${RW}/rv6_b.json && ${CLI} vrep boolean intersect ${RW}/rv6_t.json ${RW}/rv6_b.json | ${CLI} vrep volume -")
+cli_test(repro_vrep_volume_steinmetz 0 [=["approximately":\[5\.[0-9]*,5\.[0-9]*\],.*"status":"target reached","target":"1/20"]=] sh -c "${CLI} vrep primitive cylinder --radius 1 --height 4 --at=0,0,-2 > ${RW}/rv6_z.json && ${CLI} vrep primitive cylinder --radius 1 --height 4 --axis x --at=-2,0,0 > ${RW}/rv6_x.json && ${CLI} vrep boolean intersect ${RW}/rv6_z.json ${RW}/rv6_x.json | ${CLI} vrep volume - --rel-width 1/20")
+cli_test(repro_vrep_volume_budget 0 [=["status":"target not reached: budget of 2 boxes per cell \([0-9]+ in all\) spent]=] sh -c "${CLI} vrep primitive cylinder --radius 1 --height 4 --at=0,0,-2 > ${RW}/rv6b_z.json && ${CLI} vrep primitive cylinder --radius 1 --height 4 --axis x --at=-2,0,0 > ${RW}/rv6b_x.json && ${CLI} vrep boolean intersect ${RW}/rv6b_z.json ${RW}/rv6b_x.json | ${CLI} vrep volume - --boxes 2")
+cli_test(repro_vrep_volume_sphere 0 [=["approximately":\[4\.1[0-9]*,4\.1[0-9]*\],.*"status":"target reached"]=] sh -c "${CLI} vrep primitive sphere | ${CLI} vrep volume -")
+cli_test(repro_vrep_volume_exact 0 [=["enclosure":\{"boxes":1,"relative_width":"0","status":"exact","target":"1/100"\}]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume -")
+cli_test(repro_vrep_volume_centroid 0 [=["centroid_approximately":\[\[0\.42[0-9]*,0\.42[0-9]*\],.*"status":"target reached"]=] sh -c "${CLI} vrep primitive cylinder > ${RW}/rv6c_c.json && ${CLI} vrep primitive box --lo=0,-2,-1 --hi=2,2,3 > ${RW}/rv6c_b.json && ${CLI} vrep boolean intersect ${RW}/rv6c_c.json ${RW}/rv6c_b.json | ${CLI} vrep volume - --centroid")
+cli_test(bad_repro_vrep_volume_rel_width 2 [=[^splinex: error: rel-width: is negative]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume - --rel-width=-1/100")
+cli_test(bad_repro_vrep_volume_rel_width_text 2 [=[^splinex: error: rel-width: ]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume - --rel-width one")

@@ -12,6 +12,7 @@
 #include "vrep/boolean.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
+#include "tests/vrep/trimmed_fixtures.hpp"
 #include "vrep/vmodel.hpp"
 
 using namespace splinex;
@@ -19,14 +20,7 @@ using R = Rational;
 
 namespace {
 
-// pi lies strictly between these (pi = 3.14159265358979...).
-const R pi_lo = R(314159265) / R(100000000), pi_hi = R(314159266) / R(100000000);
-
-TrimmedModel<R> box(std::vector<R> lo, std::vector<R> hi) { return as_trimmed(glue(box_cells<R>(lo, hi)), box_region<R>(lo, hi)); }
-
-TrimmedModel<R> cylinder(const R& r, const R& h, int axis, std::vector<R> at) {
-  return placed_primitive(cylinder_cells<R>(r, h), cylinder_region<R>(r, h), axis, at);
-}
+using namespace trimmed_fixtures;
 
 VolumeEnclosure<R> volume(const TrimmedModel<R>& M, std::size_t boxes = 4096) {
   VolumeEnclosure<R> v;
