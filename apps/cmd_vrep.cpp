@@ -878,10 +878,22 @@ Commands add_vrep(CLI::App& app) {
              const Blend blend = parse_blend(bo->blend);
              TrimOptions topt;
              topt.max_boxes = bo->boxes;
+             // Curved cuts need both models' exact regions; the sphere of seven cells has none.
+             const std::string region_fix =
+                 "curved cuts need both models' exact regions (\"implicit\"): vrep primitive writes one for box, cylinder, cone and "
+                 "torus; the sphere of seven cells has none (its radius is approximate, docs/vrep.md), nor have glued or constructed "
+                 "models of curved cells: place such a model so that every cut is a parameter plane of its cells, or give its region";
              auto need_regions = [&]() {
                if (!A.trimmed || !B.trimmed)
-                 throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region: cells cut along curved surfaces need the models' implicit form",
-                                   "build it with vrep primitive (it writes \"implicit\") or give one");
+                 throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region, and its cells are cut along curved surfaces",
+                                   region_fix);
+             };
+             // A planar cut that is not a parameter plane where an operand has no region.
+             auto no_region = [&](const NotPlanarError& e) {
+               return DomainError(A.trimmed ? "second" : "first",
+                                  "has no exact region, and the Boolean cuts a cell along a surface that is not a parameter plane of its "
+                                  "trivariate (" + e.field() + ")",
+                                  region_fix);
              };
              // Trimmed cells (curved cuts), exactly.
              auto trimmed = [&]() {
@@ -898,9 +910,10 @@ Commands add_vrep(CLI::App& app) {
                try {
                  std::cout << vmodel_to_json(boolean_op(*A.model, *B.model, op, Rational(0), blend, ctx.limits)).dump() << "\n";
                  return 0;
-               } catch (const NotPlanarError&) {
+               } catch (const NotPlanarError& e) {
                  // A cut that is not a parameter plane: trimmed cells, where both regions are known.
-                 if (bo->trim == "never" || !A.trimmed || !B.trimmed) throw;
+                 if (bo->trim == "never") throw;
+                 if (!A.trimmed || !B.trimmed) throw no_region(e);
                }
                return trimmed();
              }
@@ -937,8 +950,9 @@ Commands add_vrep(CLI::App& app) {
              try {
                std::cout << vmodel_to_json(boolean_op(in_double(*A.model, "first"), in_double(*B.model, "second"), op, eps, blend, ctx.limits)).dump() << "\n";
                return 0;
-             } catch (const NotPlanarError&) {
-               if (bo->trim == "never" || !A.trimmed || !B.trimmed) throw;
+             } catch (const NotPlanarError& e) {
+               if (bo->trim == "never") throw;
+               if (!A.trimmed || !B.trimmed) throw no_region(e);
              }
              return trimmed_in_double();
            }},
