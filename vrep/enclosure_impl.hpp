@@ -1164,6 +1164,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     T vlo{0}, vhi{0};
     std::vector<T> mlo, mhi;
     std::size_t boxes = 0;
+    int orientation = 0;  // the sign of det J (of a regular cell): of N's integral over a piece, exactly
   };
   const Region<T> whole = region_and<T>({});
   std::vector<Cell> C(cells.size());
@@ -1237,6 +1238,12 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       b.lt.assign(cell.leaves.size(), Truth::mixed);
       for (const auto* g : cell.leaves) b.G.push_back(scaled(compose_leaf(*g, pc.spline)));
       const Bern<T> N = jacobian_numerator(pc.spline);
+      if (cell.orientation == 0) {
+        // N's mean is its integral over the piece, W^4 > 0: a regular cell's orientation.
+        T sum(0);
+        for (const auto& x : N.c) sum += x;
+        cell.orientation = sum < T(0) ? -1 : T(0) < sum ? 1 : 0;
+      }
       b.N = scaled(N);
       b.W = scaled(homogeneous(pc.spline, 0));
       for (std::size_t k = 0; k < K; ++k)
@@ -1663,7 +1670,10 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
   for (std::size_t c = 0; c < C.size(); ++c) {
     Cell& cell = C[c];
     // Negatively oriented (det J < 0): the volume is the integral's magnitude, the moments flip.
-    if (cell.vhi < T(0) || (cell.vhi == T(0) && cell.vlo < T(0))) {
+    // The orientation is decided exactly (not from the enclosure, which may straddle 0 while
+    // the integral is negative); then the volume is at least 0. Orientation unknown (N's integral
+    // over the first piece 0, so not a regular cell): whichever sign the integral has.
+    auto flip = [&]() {
       std::swap(cell.vlo, cell.vhi);
       cell.vlo = -cell.vlo;
       cell.vhi = -cell.vhi;
@@ -1671,6 +1681,21 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
         std::swap(cell.mlo[k], cell.mhi[k]);
         cell.mlo[k] = -cell.mlo[k];
         cell.mhi[k] = -cell.mhi[k];
+      }
+    };
+    if (cell.orientation < 0) flip();
+    if (cell.orientation != 0) {
+      if (cell.vlo < T(0)) cell.vlo = T(0);
+    } else if (cell.vhi < T(0) || (cell.vhi == T(0) && cell.vlo < T(0))) {
+      flip();
+    } else if (cell.vlo < T(0)) {
+      // The integral's sign undecided: its magnitude and the moments of either sign.
+      cell.vhi = std::max(cell.vhi, T(-cell.vlo));
+      cell.vlo = T(0);
+      for (std::size_t k = 0; k < K; ++k) {
+        const T lo = std::min(cell.mlo[k], T(-cell.mhi[k])), hi = std::max(cell.mhi[k], T(-cell.mlo[k]));
+        cell.mlo[k] = lo;
+        cell.mhi[k] = hi;
       }
     }
     // Sums of exact box integrals can carry thousands of digits: what is not exact is rounded

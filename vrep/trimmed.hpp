@@ -193,8 +193,10 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
 /// surface's polynomial with it); other cut boxes between the exact volumes of two half-spaces
 /// around the surface, or between none and all of the box. Each bound is rounded outward to about
 /// 64 significant bits once its numbers pass 128 bits (exact values stay exact). A negatively
-/// oriented cell's volume is the integral's magnitude. A box where det J's numerator changes sign
-/// gives the integral of det J, not of |det J|: give regular trivariates.
+/// oriented cell's volume is the integral's magnitude (the orientation decided exactly, from the
+/// integral of det J's numerator over the cell's first piece; the volume's lower bound then at
+/// least 0). A box where det J's numerator changes sign gives the integral of det J, not of
+/// |det J|: give regular trivariates.
 template <class T>
 struct IntegrandCell {
   const BSpline<T>* trivariate = nullptr;

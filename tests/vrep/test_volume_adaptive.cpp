@@ -11,6 +11,8 @@
 #include "vrep/trimmed.hpp"
 #include "tests/vrep/trimmed_fixtures.hpp"
 #include "vrep/vmodel.hpp"
+#include "spline/factories.hpp"
+#include "tests/vrep/region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -143,6 +145,32 @@ TEST_CASE("vrep volume adaptive: planted bugs make the enclosures miss the true 
   }
   CHECK(contains(enclose(B, R(1, 100), 64).total, R(1, 3)));
   CHECK(vrep_testing::planted_enclosure == EnclosurePlant::none);
+}
+
+TEST_CASE("vrep volume adaptive: a negatively oriented cell whose enclosure straddles 0 keeps its volume") {
+  // det J < 0 everywhere (x decreasing in s1: x' has Bernstein coefficients -30/11, 27/11, -30/11,
+  // at most -3/22), but N's coefficients take both signs, and two trimming planes leave each box
+  // between none and all: the signed integral's enclosure straddles 0. The volume is the
+  // magnitude, 1/2 * 99/100, and the x-moment -(1/8) * 99/100 (found by an independent review).
+  std::vector<R> points;
+  const R xs[4] = {R(0), R(-10, 11), R(-1, 11), R(-1)};
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 4; ++i) {
+        points.push_back(xs[i]);
+        points.push_back(R(j));
+        points.push_back(R(k));
+      }
+  const auto V = make_spline<R>({3, 1, 1}, {{R(0), R(0), R(0), R(0), R(1), R(1), R(1), R(1)}, {R(0), R(0), R(1), R(1)}, {R(0), R(0), R(1), R(1)}}, 3,
+                                points);
+  const auto trim = region_and<R>({test::above(0, R(-1, 2)), test::above(1, R(1, 100))});
+  for (std::size_t boxes : {1, 2, 8, 64}) {
+    const auto E = integral_enclosures<R>({IntegrandCell<R>{&V, &trim, nullptr}}, {0}, R(1, 100), boxes);
+    INFO(boxes << " boxes: [" << to_double(E.total.lower) << ", " << to_double(E.total.upper) << "]");
+    CHECK(R(0) <= E.total.lower);
+    CHECK(contains(E.total, R(99, 200)));
+    CHECK(contains(E.total_moment[0], R(-99, 800)));
+  }
 }
 
 TEST_CASE("vrep volume adaptive: hostile arguments") {
