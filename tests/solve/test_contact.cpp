@@ -14,6 +14,7 @@
 #include "solve/contact.hpp"
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
+#include "tests/solve/solve_fixtures.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -106,17 +107,7 @@ TEST_CASE("contact: refusals, and the same subdivision in double", "[solve]") {
 }
 
 // Issue 47 (reproducers in tests/data/repro/solver): double enclosures, nearly touching surfaces.
-namespace {
-
-BSpline<R> repro(const std::string& name) {
-  const std::string file = __FILE__;
-  std::ifstream in(file.substr(0, file.rfind('/')) + "/../data/repro/solver/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return test::spline(text.str());
-}
-
-}  // namespace
+using solve_fixtures::repro;
 
 TEST_CASE("contact in double: intersecting surfaces are never 'not intersecting' with a negative distance", "[solve]") {
   // A bicubic surface cut by the plane z = 1/16 (exact arithmetic certifies a common point). In

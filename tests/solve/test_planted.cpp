@@ -36,12 +36,17 @@
 #include "solve/testing.hpp"
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
+#include "tests/solve/solve_fixtures.hpp"
 
 using namespace splinex;
 using R = Rational;
 using detail::Bern;
 using solve_testing::Plant;
 using solve_testing::ScopedPlant;
+using solve_fixtures::bivariate;
+using solve_fixtures::from_roots;
+using solve_fixtures::repro;
+using solve_fixtures::univariate;
 
 namespace {
 
@@ -54,35 +59,7 @@ const bool process_plant = [] {
 
 // ---- exact helpers, independent of the solver ----
 
-R binom(int n, int k) {
-  R r(1);
-  for (int i = 1; i <= k; ++i) r = r * R(n - k + i) / R(i);
-  return r;
-}
-
-/// Power coefficients (t^0, t^1, ...) of prod (t - r_i).
-std::vector<R> from_roots(const std::vector<R>& roots) {
-  std::vector<R> a{R(1)};
-  for (const auto& r : roots) {
-    std::vector<R> b(a.size() + 1, R(0));
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      b[k + 1] += a[k];
-      b[k] -= r * a[k];
-    }
-    a = b;
-  }
-  return a;
-}
-
 /// The Bernstein form on [0, 1] of the power coefficients a.
-Bern<R> univariate(const std::vector<R>& a) {
-  const int n = static_cast<int>(a.size()) - 1;
-  Bern<R> b{{n}, std::vector<R>(n + 1, R(0))};
-  for (int i = 0; i <= n; ++i)
-    for (int k = 0; k <= i; ++k) b.c[i] += binom(i, k) / binom(n, k) * a[k];
-  return b;
-}
-
 /// sum a_k x^k and its derivative, by Horner (not through the Bernstein form).
 R power_value(const std::vector<R>& a, const R& x) {
   R v(0);
@@ -93,17 +70,6 @@ std::vector<R> power_derivative(const std::vector<R>& a) {
   std::vector<R> d;
   for (std::size_t k = 1; k < a.size(); ++k) d.push_back(a[k] * R(static_cast<long>(k)));
   return d;
-}
-
-/// Bernstein form on [0, 1]^2 of degrees (n, m) of sum a[{k, l}] x^k y^l.
-Bern<R> bivariate(int n, int m, const std::map<std::pair<int, int>, R>& a) {
-  Bern<R> b{{n, m}, std::vector<R>((n + 1) * (m + 1), R(0))};
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i)
-      for (const auto& [e, c] : a)
-        if (e.first <= i && e.second <= j)
-          b.c[i + (n + 1) * j] += binom(i, e.first) / binom(n, e.first) * binom(j, e.second) / binom(m, e.second) * c;
-  return b;
 }
 
 bool inside(const std::vector<R>& x, const std::vector<R>& lo, const std::vector<R>& hi) {
@@ -153,14 +119,6 @@ std::size_t feet_at_least(const R& t) {
   std::size_t changes = 0;
   for (int k = -8; k < 8; ++k) changes += g(R(k, 8)) * g(R(k + 1, 8)) < 0;
   return changes;
-}
-
-BSpline<R> repro(const std::string& name) {
-  const std::string file = __FILE__;
-  std::ifstream in(file.substr(0, file.rfind('/')) + "/../data/repro/solver/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return test::spline(text.str());
 }
 
 BSpline<R> plane(const R& z) {  // over [-2, 2]^2
@@ -478,9 +436,8 @@ TEST_CASE("planted: curve projection counts certified without the solver's compl
   // system: nothing is solved. Planted, the slices' counts are certified although they miss feet
   // that the test finds by exact sign changes of the foot equation 2u^3 + (1 - 2t) u - 1/10 = 0
   // (v = 0) on a grid of u in [-1, 1].
-  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-1, -1, -1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
-    "points": [[-1, -1, 1], [0, -1, -1], [1, -1, 1], [-1, 0, 1], [0, 0, -1], [1, 0, 1], [-1, 1, 1], [0, 1, -1], [1, 1, 1]]})");
-  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 2, 2]], "points": [["1/10", 0, 0], ["1/10", 0, 2]]})");
+  const auto S = solve_fixtures::fold_surface();
+  const auto C = solve_fixtures::fold_line();
   CurveProjectionOptions o;
   o.solve.max_boxes = 2;
   const auto refuted = [&](const CurveProjectionResult& r) {

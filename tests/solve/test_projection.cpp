@@ -14,6 +14,7 @@
 #include "solve/projection.hpp"
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
+#include "tests/solve/solve_fixtures.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -176,9 +177,8 @@ TEST_CASE("curve projection: a fold (turning point) and branches that end on the
   // focal height one foot, above it three (the cubic 2x^3 + (1 - 2t) x - 1/10 = 0 gains two roots
   // at a fold), and the outer feet leave the domain at x = -1 (t = 31/20) and x = 1 (t = 29/20):
   // exactly, since 2 + (1 - 2t) (+-1) -+ 1/10 = 0 there.
-  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-1, -1, -1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
-    "points": [[-1, -1, 1], [0, -1, -1], [1, -1, 1], [-1, 0, 1], [0, 0, -1], [1, 0, 1], [-1, 1, 1], [0, 1, -1], [1, 1, 1]]})");
-  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 2, 2]], "points": [["1/10", 0, 0], ["1/10", 0, 2]]})");
+  const auto S = solve_fixtures::fold_surface();
+  const auto C = solve_fixtures::fold_line();
   const auto r = project_curve(C, S);
   CHECK(r.certified_counts);
   CHECK(r.consistent);
@@ -198,17 +198,7 @@ TEST_CASE("curve projection: a fold (turning point) and branches that end on the
 }
 
 // Issue 47 (reproducers in tests/data/repro/solver): the closest-point verdict, a pole, double.
-namespace {
-
-BSpline<R> repro(const std::string& name) {
-  const std::string file = __FILE__;
-  std::ifstream in(file.substr(0, file.rfind('/')) + "/../data/repro/solver/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return test::spline(text.str());
-}
-
-}  // namespace
+using solve_fixtures::repro;
 
 TEST_CASE("projection: no candidate that an undecided box may beat is named closest", "[solve]") {
   // z = x^2, the point 10^-25 off the axis at height 3/4: the feet near (+-1/2, 1/2, 1/4) at
@@ -363,9 +353,8 @@ TEST_CASE("curve projection: a budget too small to finish is not certified", "[s
   // The fold case above with 2 boxes per system: nothing is solved, so no count may be certified;
   // a slice that were certified would have to count at least the feet found by exact sign
   // changes of the foot equation 2u^3 + (1 - 2t) u - 1/10 (v = 0) on a grid of u in [-1, 1].
-  const auto S = test::spline(R"({"type": "bspline", "degrees": [2, 2], "knots": [[-1, -1, -1, 1, 1, 1], [-1, -1, -1, 1, 1, 1]],
-    "points": [[-1, -1, 1], [0, -1, -1], [1, -1, 1], [-1, 0, 1], [0, 0, -1], [1, 0, 1], [-1, 1, 1], [0, 1, -1], [1, 1, 1]]})");
-  const auto C = test::spline(R"({"type": "bspline", "degrees": [1], "knots": [[0, 0, 2, 2]], "points": [["1/10", 0, 0], ["1/10", 0, 2]]})");
+  const auto S = solve_fixtures::fold_surface();
+  const auto C = solve_fixtures::fold_line();
   CurveProjectionOptions o;
   o.solve.max_boxes = 2;
   const auto r = project_curve(C, S, o);

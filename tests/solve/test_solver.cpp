@@ -9,53 +9,16 @@
 
 #include "exact/rational.hpp"
 #include "solve/solver.hpp"
+#include "tests/solve/solve_fixtures.hpp"
 
 using namespace splinex;
 using R = Rational;
 using detail::Bern;
+using solve_fixtures::bivariate;
+using solve_fixtures::from_roots;
+using solve_fixtures::univariate;
 
 namespace {
-
-R binom(int n, int k) {
-  R r(1);
-  for (int i = 1; i <= k; ++i) r = r * R(n - k + i) / R(i);
-  return r;
-}
-
-/// The Bernstein form on [0, 1]^2 of degrees (n, m) of sum a[{k, l}] x^k y^l (for the tests: an
-/// independent conversion, b_ij = sum C(i,k)/C(n,k) C(j,l)/C(m,l) a_kl).
-Bern<R> from_power(int n, int m, const std::map<std::pair<int, int>, R>& a) {
-  Bern<R> b{{n, m}, std::vector<R>((n + 1) * (m + 1), R(0))};
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i)
-      for (const auto& [e, c] : a)
-        if (e.first <= i && e.second <= j)
-          b.c[i + (n + 1) * j] += binom(i, e.first) / binom(n, e.first) * binom(j, e.second) / binom(m, e.second) * c;
-  return b;
-}
-
-/// Univariate: coefficients of t^0, t^1, ...
-Bern<R> univariate(const std::vector<R>& a) {
-  const int n = static_cast<int>(a.size()) - 1;
-  Bern<R> b{{n}, std::vector<R>(n + 1, R(0))};
-  for (int i = 0; i <= n; ++i)
-    for (int k = 0; k <= i; ++k) b.c[i] += binom(i, k) / binom(n, k) * a[k];
-  return b;
-}
-
-/// Power coefficients of prod (t - r_i).
-std::vector<R> from_roots(const std::vector<R>& roots) {
-  std::vector<R> a{R(1)};
-  for (const auto& r : roots) {
-    std::vector<R> b(a.size() + 1, R(0));
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      b[k + 1] += a[k];
-      b[k] -= r * a[k];
-    }
-    a = b;
-  }
-  return a;
-}
 
 std::vector<R> mul(const std::vector<R>& a, const std::vector<R>& b) {
   std::vector<R> c(a.size() + b.size() - 1, R(0));
@@ -127,14 +90,14 @@ TEST_CASE("solver: a double root is exact but not certified unique, roots 2^-40 
 
 TEST_CASE("solver: a circle and a line, rational and irrational intersections", "[solve]") {
   // x^2 + y^2 = 1/2 and x = y on [0, 1]^2: (1/2, 1/2), on the first split in both directions.
-  const auto line = from_power(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
-  const auto c1 = from_power(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 2)}});
+  const auto line = bivariate(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
+  const auto c1 = bivariate(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 2)}});
   const auto s1 = solve_system<R>({c1, line}, {R(0), R(0)}, {R(1), R(1)});
   REQUIRE(s1.roots.size() == 1);
   CHECK(s1.complete());
   CHECK(exact_root(s1, {R(1, 2), R(1, 2)}));
   // x^2 + y^2 = 1/4 and x = y: x = y = 1/(2 sqrt 2), i.e. x^2 = 1/8.
-  const auto c2 = from_power(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 4)}});
+  const auto c2 = bivariate(2, 2, {{{2, 0}, R(1)}, {{0, 2}, R(1)}, {{0, 0}, R(-1, 4)}});
   const auto s2 = solve_system<R>({c2, line}, {R(0), R(0)}, {R(1), R(1)});
   REQUIRE(s2.roots.size() == 1);
   const auto& r = s2.roots[0];
@@ -146,7 +109,7 @@ TEST_CASE("solver: a circle and a line, rational and irrational intersections", 
   }
   // The same circle and line standing for [-1, 1]^2 (x = 2s - 1): both intersection points.
   // In s: (2s-1)^2 + (2t-1)^2 - 1/4 = 4s^2 - 4s + 4t^2 - 4t + 7/4, and 2s - 2t.
-  const auto c3 = from_power(2, 2, {{{2, 0}, R(4)}, {{1, 0}, R(-4)}, {{0, 2}, R(4)}, {{0, 1}, R(-4)}, {{0, 0}, R(7, 4)}});
+  const auto c3 = bivariate(2, 2, {{{2, 0}, R(4)}, {{1, 0}, R(-4)}, {{0, 2}, R(4)}, {{0, 1}, R(-4)}, {{0, 0}, R(7, 4)}});
   const auto s3 = solve_system<R>({c3, line}, {R(-1), R(-1)}, {R(1), R(1)});
   REQUIRE(s3.roots.size() == 2);
   CHECK(s3.complete());
@@ -154,7 +117,7 @@ TEST_CASE("solver: a circle and a line, rational and irrational intersections", 
 }
 
 TEST_CASE("solver: degenerate and malformed systems are refused, a curve of solutions stays undecided", "[solve]") {
-  const auto line = from_power(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
+  const auto line = bivariate(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
   const Bern<R> zero{{1, 1}, std::vector<R>(4, R(0))};
   CHECK_THROWS_AS(solve_system<R>({line, zero}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
   CHECK_THROWS_AS(solve_system<R>({line}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
@@ -223,8 +186,8 @@ TEST_CASE("solver: random rational roots, many on split lines, found exactly onc
     R a = root(), b = root(), cc = root(), d = root();
     while (b == a) b = root();
     while (d == cc) d = root();
-    const auto fx = from_power(2, 0, {{{2, 0}, R(1)}, {{1, 0}, -(a + b)}, {{0, 0}, a * b}});
-    const auto fy = from_power(0, 2, {{{0, 2}, R(1)}, {{0, 1}, -(cc + d)}, {{0, 0}, cc * d}});
+    const auto fx = bivariate(2, 0, {{{2, 0}, R(1)}, {{1, 0}, -(a + b)}, {{0, 0}, a * b}});
+    const auto fy = bivariate(0, 2, {{{0, 2}, R(1)}, {{0, 1}, -(cc + d)}, {{0, 0}, cc * d}});
     const auto s = solve_system<R>({fx, fy}, {R(0), R(0)}, {R(1), R(1)});
     INFO("grid case " << c);
     CHECK(s.complete());
@@ -239,8 +202,8 @@ TEST_CASE("solver: roots on a split line pinned by a linear equation are each re
   // x = 1/2 and (y - 1/4)(y - 3/4) = 0: two roots on the first split line. K(X) of the linear
   // equation is the line itself, a face of both boxes beside it: inside neither open box (a
   // closed test would certify each root twice).
-  const auto f1 = from_power(1, 0, {{{1, 0}, R(1)}, {{0, 0}, R(-1, 2)}});
-  const auto f2 = from_power(0, 2, {{{0, 2}, R(1)}, {{0, 1}, R(-1)}, {{0, 0}, R(3, 16)}});
+  const auto f1 = bivariate(1, 0, {{{1, 0}, R(1)}, {{0, 0}, R(-1, 2)}});
+  const auto f2 = bivariate(0, 2, {{{0, 2}, R(1)}, {{0, 1}, R(-1)}, {{0, 0}, R(3, 16)}});
   for (bool recognise : {true, false}) {
     INFO("recognize_rationals " << recognise);
     SolveOptions o;
