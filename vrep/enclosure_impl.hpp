@@ -1416,7 +1416,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
           coefficient_range(Q, qmin, qmax);
           const T c0 = T(1) / power_of(w0, p), c1 = -T(p) / power_of(w0, p + 1);
           const T r = T(p * (p + 1)) / T(2);
-          const T rlo = r / power_of(std::max(wmax, w0), p + 2), rhi = r / power_of(std::min(wmin, w0), p + 2);
+          const T rhi = r / power_of(std::min(wmin, w0), p + 2);  // f''(xi) / 2 at most this (xi >= wmin)
           T Rlo, Rhi;
           if (!(qmin < T(0)) || !(T(0) < qmax)) {
             // Q of one sign: int_part Q (W - w0)^2 has it, and is at most the box's.
