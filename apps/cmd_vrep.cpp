@@ -236,7 +236,8 @@ struct PrimitiveOptions {
 };
 
 /// A primitive's cells and its exact region (vrep/trimmed.hpp) where it has one: the sphere of
-/// seven cells is approximate, the singular trivariates are not offered for Booleans.
+/// seven cells has its piecewise one for patches of degree <= 4 (sphere_region: leaves of degree
+/// 2 degree <= 8), in exact arithmetic; the singular trivariates are not offered for Booleans.
 template <class F>
 struct Primitive {
   std::vector<BSpline<F>> cells;
@@ -257,7 +258,12 @@ Primitive<F> primitive_cells(const PrimitiveOptions& o) {
             cone_region(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"))};
   if (o.name == "torus") return {torus_cells(num(o.major, "major"), num(o.radius, "radius")), torus_region(num(o.major, "major"), num(o.radius, "radius"))};
   if (o.name == "box") return {box_cells(list(o.lo, "lo"), list(o.hi, "hi")), box_region(list(o.lo, "lo"), list(o.hi, "hi"))};
-  if (o.name == "sphere") return {sphere_cells(num(o.radius, "radius"), o.degree, o.pieces), std::nullopt};
+  if (o.name == "sphere") {
+    auto cells = sphere_cells(num(o.radius, "radius"), o.degree, o.pieces);  // checks degree and pieces
+    // In floating point the rounded region would not describe the rounded cells exactly.
+    if (o.degree > 4 || !ArithTraits<F>::exact) return {std::move(cells), std::nullopt};
+    return {std::move(cells), sphere_region(num(o.radius, "radius"), o.degree, o.pieces)};
+  }
   if (o.name == "singular-cylinder") return {{singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))}, std::nullopt};
   return {{singular_sphere(num(o.radius, "radius"))}, std::nullopt};
 }
@@ -878,11 +884,11 @@ Commands add_vrep(CLI::App& app) {
              const Blend blend = parse_blend(bo->blend);
              TrimOptions topt;
              topt.max_boxes = bo->boxes;
-             // Curved cuts need both models' exact regions; the sphere of seven cells has none.
+             // Curved cuts need both models' exact regions.
              const std::string region_fix =
-                 "curved cuts need both models' exact regions (\"implicit\"): vrep primitive writes one for box, cylinder, cone and "
-                 "torus; the sphere of seven cells has none (its radius is approximate, docs/vrep.md), nor have glued or constructed "
-                 "models of curved cells: place such a model so that every cut is a parameter plane of its cells, or give its region";
+                 "curved cuts need both models' exact regions (\"implicit\"): vrep primitive writes one for box, cylinder, cone, "
+                 "torus and sphere (patch degree <= 4); glued or constructed models of curved cells have none: place such a model so "
+                 "that every cut is a parameter plane of its cells, or give its region";
              auto need_regions = [&]() {
                if (!A.trimmed || !B.trimmed)
                  throw DomainError(A.trimmed ? "second" : "first", "has curved cells and no exact region, and its cells are cut along curved surfaces",

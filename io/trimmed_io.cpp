@@ -11,10 +11,10 @@ namespace {
 Region<Rational> region_at(const Json& j, const std::string& where, int depth, std::size_t& leaves) {
   if (depth > 64) throw SizeLimitError(where, "nests regions deeper than 64 levels", "flatten the formula");
   if (!j.is_object() || j.size() < 1)
-    throw ValidationError(where, "is not a region", "give {\"leaf\": [[c, a, b, e], ...]}, {\"all\": [...]}, {\"any\": [...]} or {\"not\": {...}}");
+    throw ValidationError(where, "is not a region", "give {\"leaf\": [[c, a, b, e], ...]}, {\"all\": [...]}, {\"any\": [...]}, {\"not\": {...}} or {\"cases\": [...]}");
   for (auto it = j.begin(); it != j.end(); ++it)
-    if (it.key() != "leaf" && it.key() != "all" && it.key() != "any" && it.key() != "not" && it.key() != "label")
-      throw ValidationError(where + "." + it.key(), "is not a field of a region", "remove it (fields: leaf, all, any, not, label)");
+    if (it.key() != "leaf" && it.key() != "all" && it.key() != "any" && it.key() != "not" && it.key() != "cases" && it.key() != "label")
+      throw ValidationError(where + "." + it.key(), "is not a field of a region", "remove it (fields: leaf, all, any, not, cases, label)");
   const std::string label = j.contains("label") && j["label"].is_string() ? j["label"].get<std::string>() : std::string();
   if (j.contains("leaf")) {
     if (++leaves > 4096) throw SizeLimitError(where, "has more than 4096 leaves", "give a smaller formula");
@@ -31,8 +31,25 @@ Region<Rational> region_at(const Json& j, const std::string& where, int depth, s
     return region_leaf(std::move(g), label.empty() ? where : label);
   }
   if (j.contains("not")) return region_not(region_at(j["not"], where + ".not", depth + 1, leaves));
+  if (j.contains("cases")) {
+    // [{"piece": region, "then": region}, ...]: pieces that cover space, a formula on each.
+    const Json& c = j["cases"];
+    const std::string w = where + ".cases";
+    if (!c.is_array() || c.empty()) throw ValidationError(w, "is not a non-empty list of cases", "give [{\"piece\": region, \"then\": region}, ...]");
+    std::vector<std::pair<Region<Rational>, Region<Rational>>> cases;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const std::string wk = w + "[" + std::to_string(k) + "]";
+      if (!c[k].is_object() || c[k].size() != 2 || !c[k].contains("piece") || !c[k].contains("then"))
+        throw ValidationError(wk, "is not a case", "give {\"piece\": region, \"then\": region}");
+      Region<Rational> piece = region_at(c[k]["piece"], wk + ".piece", depth + 1, leaves);
+      cases.emplace_back(std::move(piece), region_at(c[k]["then"], wk + ".then", depth + 1, leaves));
+    }
+    Region<Rational> r = region_cases(std::move(cases));
+    r.label = label;
+    return r;
+  }
   const char* key = j.contains("all") ? "all" : "any";
-  if (!j.contains(key)) throw ValidationError(where, "has none of leaf, all, any, not", "give one of them");
+  if (!j.contains(key)) throw ValidationError(where, "has none of leaf, all, any, not, cases", "give one of them");
   const Json& p = j[key];
   if (!p.is_array()) throw ValidationError(where + "." + key, "is not a list of regions", "give [region, ...]");
   std::vector<Region<Rational>> parts;
@@ -62,6 +79,13 @@ Json region_to_json(const Region<T>& R) {
       return out;
     }
     case Region<T>::complement: out["not"] = region_to_json(R.parts.front()); return out;
+    case Region<T>::cases: {
+      Json c = Json::array();
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2)
+        c.push_back({{"piece", region_to_json(R.parts[i])}, {"then", region_to_json(R.parts[i + 1])}});
+      out["cases"] = c;
+      return out;
+    }
     default: {
       Json p = Json::array();
       for (const auto& x : R.parts) p.push_back(region_to_json(x));

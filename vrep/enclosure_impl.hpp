@@ -1214,11 +1214,9 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     cell.power = field ? 4 : 5;
     cell.mlo.assign(K, T(0));
     cell.mhi.assign(K, T(0));
-    const std::size_t per_piece = composed_leaves_size(V, cell.leaves, limits);
-    std::size_t pieces = 1;
-    for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
-    checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");
-    checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
+    // Limits before the work: all leaves composed on one piece; the boxes' compositions are
+    // counted as they are made (a box carries only the leaves that can still change its truth).
+    limits.check_count(composed_leaves_size(V, cell.leaves, limits), "region composed with a piece of the trivariate");
     // The moments' scales: the largest |coordinate| (or |field component|) of the control points.
     for (std::size_t k = 0; k < K; ++k) {
       const BSpline<T>& S = field ? *field : V;
@@ -1236,7 +1234,19 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       Box b;
       b.cell = c;
       b.lt.assign(cell.leaves.size(), Truth::mixed);
-      for (const auto* g : cell.leaves) b.G.push_back(scaled(compose_leaf(*g, pc.spline)));
+      // The planes first (cheap); then only the leaves the formula may still depend on.
+      b.G.resize(cell.leaves.size());
+      PiecePowers<T> powers(pc.spline);
+      for (std::size_t l = 0; l < cell.leaves.size(); ++l)
+        if (cell.leaves[l]->degree() <= 1) {
+          b.G[l] = scaled(compose_leaf(*cell.leaves[l], powers));
+          b.lt[l] = coefficient_truth(b.G[l]);
+          if (b.lt[l] != Truth::mixed) b.G[l] = SBern<T>{};
+        }
+      std::vector<char> live;
+      live_leaves(*cell.trim, b.lt, live);
+      for (std::size_t l = 0; l < cell.leaves.size(); ++l)
+        if (cell.leaves[l]->degree() > 1 && live[l]) b.G[l] = scaled(compose_leaf(*cell.leaves[l], powers));
       const Bern<T> N = jacobian_numerator(pc.spline);
       if (cell.orientation == 0) {
         // N's mean is its integral over the piece, W^4 > 0: a regular cell's orientation.
@@ -1286,18 +1296,27 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
   // gain from it: out, or exact).
   auto evaluate = [&](Box& b) -> bool {
     Cell& cell = C[b.cell];
-    std::size_t open = 0, last_open = 0;
+    // A leaf not carried (empty) is decided, or one the formula no longer depends on (kept mixed).
     for (std::size_t l = 0; l < b.G.size(); ++l) {
-      if (b.lt[l] != Truth::mixed) continue;
+      if (b.lt[l] != Truth::mixed || b.G[l].c.empty()) continue;
       b.lt[l] = coefficient_truth(b.G[l]);
       if (b.lt[l] != Truth::mixed) b.G[l] = SBern<T>{};
-      else {
-        ++open;
-        last_open = l;
-      }
     }
     std::size_t k0 = 0;
     const Truth truth = cell.leaves.empty() ? Truth::in : combine(*cell.trim, b.lt, k0);
+    std::size_t open = 0, last_open = 0;
+    if (truth == Truth::mixed) {
+      std::vector<char> live;
+      live_leaves(*cell.trim, b.lt, live);
+      for (std::size_t l = 0; l < b.G.size(); ++l) {
+        if (b.lt[l] != Truth::mixed || b.G[l].c.empty()) continue;
+        if (!live[l]) b.G[l] = SBern<T>{};
+        else {
+          ++open;
+          last_open = l;
+        }
+      }
+    }
     b.vlo = b.vhi = T(0);
     for (std::size_t k = 0; k < K; ++k) b.mlo[k] = b.mhi[k] = T(0);
     b.key = T(0);
@@ -1518,7 +1537,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
           // Several surfaces (or one the formula does not simply follow): where they vary most.
           T best(-1);
           for (std::size_t l = 0; l < b.G.size(); ++l) {
-            if (b.lt[l] != Truth::mixed) continue;
+            if (b.lt[l] != Truth::mixed || b.G[l].c.empty()) continue;
             T gmin, gmax;
             coefficient_range(b.G[l], gmin, gmax);
             const T scale = std::max(T(-gmin), gmax);
@@ -1580,6 +1599,13 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       cell.mhi[k] = round_dyadic(cell.mhi[k], true, 96, 256);
     }
   };
+  // The leaves' coefficients carried by the boxes in the pool, against the limit.
+  std::size_t carried = 0;
+  auto carried_by = [](const Box& b) {
+    std::size_t n = 0;
+    for (const auto& G : b.G) n += G.c.size();
+    return n;
+  };
   // The two parts of b across b.dir at 1/2 (or at b.at for a parameter plane).
   auto split = [&](Box& b, Box* c) {
     const int dir = b.dir;
@@ -1598,7 +1624,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     }
     auto cut = [&](const SBern<T>& x, SBern<T>& l, SBern<T>& r) { std::tie(l, r) = half ? split_half(x, dir) : split_at(x, dir, t); };
     for (std::size_t l = 0; l < b.G.size(); ++l)
-      if (b.lt[l] == Truth::mixed) cut(b.G[l], c[0].G[l], c[1].G[l]);
+      if (b.lt[l] == Truth::mixed && !b.G[l].c.empty()) cut(b.G[l], c[0].G[l], c[1].G[l]);
     cut(b.N, c[0].N, c[1].N);
     cut(b.W, c[0].W, c[1].W);
     for (std::size_t k = 0; k < K; ++k) cut(b.Q[k], c[0].Q[k], c[1].Q[k]);
@@ -1618,6 +1644,12 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     ++C[b.cell].boxes;
     add_bounds(b, false);
     if (!alive) return;
+    carried += carried_by(b);
+    if (carried > limits.max_control_points)
+      throw SizeLimitError("region composed on the subdivision boxes",
+                           "the boxes would carry " + std::to_string(carried) + " coefficients of the region's leaves, above the limit of " +
+                               std::to_string(limits.max_control_points),
+                           "lower --boxes, or raise the limit with --max-control-points");
     std::size_t slot;
     if (!free_slots.empty()) {
       slot = free_slots.back();
@@ -1653,6 +1685,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     queue.pop();
     Box b = std::move(pool[slot]);
     free_slots.push_back(slot);
+    carried -= carried_by(b);
     add_bounds(b, true);
     --leaves;
     --C[b.cell].boxes;

@@ -24,6 +24,8 @@ enum class Plant {
   classify_skips_plane,       // the second half-space (face u = end) of a cell is not tested
   // vrep/trimmed_impl.hpp, classify_cell's localized region:
   classify_first_piece_only,  // a leaf decided on the first Bezier piece is taken as decided on the cell
+  // vrep/trimmed_impl.hpp, combine (Kleene's reading of a piecewise region, Region::cases):
+  cases_ignore_pieces,        // in where some case's formula is in, whatever its piece (the cover not used)
   // vrep/region_graph.cpp, count_region (the pieces of a face's part):
   region_arc_unchecked,       // a leaf is taken as one arc through a box without counting its boundary roots
   // vrep/surface_graph.cpp, count_surface (the pieces of a trimming surface's part):

@@ -62,12 +62,18 @@ struct Poly3 {
   int degree() const;
 };
 
+/// `cases` is a piecewise formula: parts = {C_1, L_1, C_2, L_2, ...} stands for the union of the
+/// C_i n L_i, where the pieces C_i cover space and overlap only on their boundaries (the writer's
+/// claim: the piecewise surface of the sphere of seven cells, sphere_region). Kleene's logic reads
+/// it through the cover: a box is in where every case has its piece out or its formula in, out
+/// where every case has its piece out or its formula out. A box on which every piece is out
+/// contradicts the cover and is a DomainError (the claim is checked wherever it is tested).
 template <class T>
 struct Region {
-  enum Kind { leaf, all_of, any_of, complement };
+  enum Kind { leaf, all_of, any_of, complement, cases };
   Kind kind = leaf;
   Poly3<T> g;                 // leaf: g >= 0
-  std::vector<Region> parts;  // all_of / any_of: the operands; complement: one
+  std::vector<Region> parts;  // all_of / any_of: the operands; complement: one; cases: piece, formula, piece, ...
   std::string label;          // where it came from ("box", "cylinder: side", ...), for messages
   /// A leaf standing for an earlier distinct leaf of the same formula (its index in collect
   /// order, counting leaves without an alias only), with the opposite sign when `flip`. Built
@@ -89,6 +95,9 @@ template <class T>
 Region<T> region_or(std::vector<Region<T>> parts);
 template <class T>
 Region<T> region_not(Region<T> r);
+/// The piecewise region of (piece, formula) pairs (Region::cases; the pieces must cover space).
+template <class T>
+Region<T> region_cases(std::vector<std::pair<Region<T>, Region<T>>> cases);
 
 /// The exact regions of the primitives of vrep/primitives.hpp (in their standard placement).
 template <class T>
@@ -99,6 +108,16 @@ template <class T>
 Region<T> cone_region(const T& r0, const T& r1, const T& h);
 template <class T>
 Region<T> torus_region(const T& R, const T& r);
+/// The exact point set of the sphere of seven cells (vrep/primitives.hpp: sphere_cells with the same
+/// r, degree and pieces): any_of(the cube [-r/2, r/2]^3, cases over the six faces' cones cut into
+/// the patch's pieces). On the piece of face +z over s in [s_a, s_b], t in [t_a, t_b] (the cone
+/// x - s_a z >= 0, s_b z - x >= 0, y - t_a z >= 0, t_b z - y >= 0) the cell is z P(x/z, y/z) <= r,
+/// P the piece's polynomial of degree `degree` in s and in t; times z^(2 degree) / z (z > 0 there):
+/// the leaf r z^(2 degree - 1) - z^(2 degree) P(x / z, y / z) >= 0, of degree 2 degree (<= 8: degree
+/// 2..4). The other faces by the cube's rotations, as the cells. The cube is the same set again: it
+/// decides the boxes about the centre, where every cone meets.
+template <class T>
+Region<T> sphere_region(const T& r, int degree = 3, int pieces = 4);
 /// The ball |x - c| <= r: the leaf r^2 - |x - c|^2 >= 0 (label "ball").
 template <class T>
 Region<T> ball_region(const std::array<T, 3>& c, const T& r);

@@ -64,6 +64,19 @@ Nnf to_nnf(const Region<T>& R, bool negate, int& next_leaf) {
       n.kind = (R.kind == Region<T>::all_of) != negate ? Nnf::all_of : Nnf::any_of;
       for (const auto& p : R.parts) n.parts.push_back(to_nnf(p, negate, next_leaf));
       return n;
+    case Region<T>::cases: {
+      // The union of piece and formula per case; its complement, the pieces covering space, the
+      // union of piece and not formula (the same closed sets up to the pieces' common boundaries).
+      n.kind = Nnf::any_of;
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
+        Nnf both;
+        both.kind = Nnf::all_of;
+        both.parts.push_back(to_nnf(R.parts[i], false, next_leaf));
+        both.parts.push_back(to_nnf(R.parts[i + 1], negate, next_leaf));
+        n.parts.push_back(std::move(both));
+      }
+      return n;
+    }
   }
   return n;
 }

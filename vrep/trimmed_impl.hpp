@@ -2,6 +2,7 @@
 // vrep/instances.cpp.
 #pragma once
 #include <algorithm>
+#include <map>
 #include <deque>
 #include <iterator>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
 #include "vrep/planted.hpp"
+#include "vrep/primitives_impl.hpp"
 #include "vrep/trimmed.hpp"
 
 namespace splinex {
@@ -61,6 +63,17 @@ Region<T> region_not(Region<T> x) {
   Region<T> r;
   r.kind = Region<T>::complement;
   r.parts.push_back(std::move(x));
+  return r;
+}
+
+template <class T>
+Region<T> region_cases(std::vector<std::pair<Region<T>, Region<T>>> cases) {
+  Region<T> r;
+  r.kind = Region<T>::cases;
+  for (auto& [piece, formula] : cases) {
+    r.parts.push_back(std::move(piece));
+    r.parts.push_back(std::move(formula));
+  }
   return r;
 }
 
@@ -135,8 +148,100 @@ Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k
       for (const auto& p : R.parts) t = std::max(t, combine(p, leaf, k));
       return t;
     }
+    case Region<T>::cases: {
+      // In: every case has its piece out or its formula in; out: its piece out or its formula out.
+      bool in = true, out = true, some_piece = false, some_in = false;
+      const bool planted = vrep_testing::is_planted(vrep_testing::Plant::cases_ignore_pieces);
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
+        const Truth c = combine(R.parts[i], leaf, k), f = combine(R.parts[i + 1], leaf, k);
+        some_in = some_in || f == Truth::in;
+        if (planted) continue;
+        if (c == Truth::out) continue;
+        some_piece = true;
+        in = in && f == Truth::in;
+        out = out && f == Truth::out;
+      }
+      if (planted) return some_in ? Truth::in : Truth::mixed;
+      if (!some_piece && !R.parts.empty())
+        throw DomainError("region" + (R.label.empty() ? std::string() : " (" + R.label + ")"),
+                          "has cases whose pieces do not cover space: a box or point lies in none of them",
+                          "give pieces that cover space (a piecewise region's pieces must)");
+      return in ? Truth::in : out ? Truth::out : Truth::mixed;
+    }
   }
   return Truth::mixed;
+}
+
+/// Which leaves can still change the formula's truth, given their truths on a box (`lt`, collect
+/// order; mixed: open): not a leaf under a part the others decide (a false part of an all_of, a
+/// true part of an any_of, the formula of a case whose piece is out). Marks the open leaves that
+/// can in `marks`; returns the part's value (1 true, 0 false) or -1 (open). A leaf that is not live
+/// may keep any truth Kleene's logic allows it (its last one): the formula's truth does not change.
+template <class T>
+int mark_live(const Region<T>& R, const std::vector<Truth>& lt, std::size_t& k, std::vector<std::size_t>& marks) {
+  auto value = [](Truth t) { return t == Truth::in ? 1 : t == Truth::out ? 0 : -1; };
+  switch (R.kind) {
+    case Region<T>::leaf: {
+      const std::size_t at = R.alias < 0 ? k++ : static_cast<std::size_t>(R.alias);
+      const int v = value(lt[at]);
+      if (v >= 0) return R.flip ? 1 - v : v;
+      marks.push_back(at);
+      return -1;
+    }
+    case Region<T>::complement: {
+      const int v = mark_live(R.parts.front(), lt, k, marks);
+      return v < 0 ? v : 1 - v;
+    }
+    case Region<T>::all_of:
+    case Region<T>::any_of: {
+      const int absorbing = R.kind == Region<T>::all_of ? 0 : 1;
+      const std::size_t first = marks.size();
+      bool open = false, absorbed = false;
+      for (const auto& p : R.parts) {
+        const int v = mark_live(p, lt, k, marks);  // (every part: k must pass all leaves)
+        if (v == absorbing) absorbed = true;
+        else if (v < 0) open = true;
+      }
+      if (absorbed || !open) {
+        marks.resize(first);
+        return absorbed ? absorbing : 1 - absorbing;
+      }
+      return -1;
+    }
+    case Region<T>::cases: {
+      const std::size_t first = marks.size();
+      int common = -2;  // the formulas' common value over the cases whose piece is not out (-1: differ or open)
+      bool any = false;
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
+        const std::size_t before = marks.size();
+        const int c = mark_live(R.parts[i], lt, k, marks);
+        const int f = mark_live(R.parts[i + 1], lt, k, marks);
+        if (c == 0) {
+          marks.resize(before);
+          continue;
+        }
+        any = true;
+        common = common == -2 ? f : common == f ? f : -1;
+      }
+      if (!any || common >= 0) {
+        marks.resize(first);
+        return any ? common : 0;
+      }
+      return -1;
+    }
+  }
+  return -1;
+}
+
+/// The leaves live on a box (mark_live over the whole formula); true when the formula is open.
+template <class T>
+bool live_leaves(const Region<T>& R, const std::vector<Truth>& lt, std::vector<char>& live) {
+  live.assign(lt.size(), 0);
+  std::vector<std::size_t> marks;
+  std::size_t k = 0;
+  const int v = mark_live(R, lt, k, marks);
+  for (std::size_t at : marks) live[at] = 1;
+  return v < 0;
 }
 
 /// Whether the formula, the leaves outside `which` fixed at `fixed`, is decided for every sign
@@ -175,6 +280,17 @@ Truth coefficient_truth(const Bern<T>& G, const T& eps) {
   }
   if (nonpos) return Truth::out;  // also when G = 0 within eps: no interior there
   return nonneg ? Truth::in : Truth::mixed;
+}
+
+/// Whether every Bernstein coefficient is > eps or every one < -eps (then every value is too).
+template <class T>
+bool strictly_signed(const Bern<T>& G, const T& eps) {
+  bool pos = true, neg = true;
+  for (const auto& x : G.c) {
+    pos = pos && eps < x;
+    neg = neg && x < -eps;
+  }
+  return !G.c.empty() && (pos || neg);
 }
 
 /// Positive weights: then the sign of g o T is the sign of the composed numerator W^k g(X/W, ...).
@@ -217,28 +333,158 @@ std::size_t composed_leaves_size(const BSpline<T>& V, const std::vector<const Po
   return per_piece;
 }
 
+/// A tensor polynomial in the scaled Bernstein form with integer coefficients: s_i = c_i prod_d
+/// C(n_d, i_d) times a common positive factor. Products are plain convolutions (no division, no
+/// gcd: the exact composition's cost is integer multiplication, as in fraction-free elimination).
+struct IntTensor {
+  std::array<int, 3> deg{0, 0, 0};
+  std::vector<Integer> c;
+};
+
+inline IntTensor int_product(const IntTensor& a, const IntTensor& b) {
+  IntTensor r;
+  for (int d = 0; d < 3; ++d) r.deg[d] = a.deg[d] + b.deg[d];
+  const std::size_t a0 = a.deg[0] + 1, a1 = a.deg[1] + 1, a2 = a.deg[2] + 1;
+  const std::size_t b0 = b.deg[0] + 1, b1 = b.deg[1] + 1, b2 = b.deg[2] + 1;
+  const std::size_t r0 = r.deg[0] + 1, r1 = r.deg[1] + 1;
+  r.c.assign(r0 * r1 * (r.deg[2] + 1), Integer(0));
+  for (std::size_t i2 = 0; i2 < a2; ++i2)
+    for (std::size_t i1 = 0; i1 < a1; ++i1)
+      for (std::size_t i0 = 0; i0 < a0; ++i0) {
+        const Integer& x = a.c[i0 + a0 * (i1 + a1 * i2)];
+        if (x == 0) continue;
+        for (std::size_t j2 = 0; j2 < b2; ++j2)
+          for (std::size_t j1 = 0; j1 < b1; ++j1) {
+            Integer* out = &r.c[i0 + r0 * ((i1 + j1) + r1 * (i2 + j2))];
+            const Integer* y = &b.c[b0 * (j1 + b1 * j2)];
+            for (std::size_t j0 = 0; j0 < b0; ++j0)
+              mpz_addmul(out[j0].backend().data(), x.backend().data(), y[j0].backend().data());
+          }
+      }
+  return r;
+}
+
+/// prod_d C(deg_d, i_d) for every index of a tensor of degrees deg (first direction fastest).
+inline std::vector<Integer> tensor_binomials(const std::array<int, 3>& deg) {
+  std::array<std::vector<Integer>, 3> row;
+  for (int d = 0; d < 3; ++d) {
+    row[d].push_back(Integer(1));
+    for (int i = 1; i <= deg[d]; ++i) row[d].push_back(row[d].back() * (deg[d] - i + 1) / i);
+  }
+  std::vector<Integer> out;
+  for (int i2 = 0; i2 <= deg[2]; ++i2)
+    for (int i1 = 0; i1 <= deg[1]; ++i1)
+      for (int i0 = 0; i0 <= deg[0]; ++i0) out.push_back(row[0][i0] * row[1][i1] * row[2][i2]);
+  return out;
+}
+
+/// The powers 0..k of a Bezier piece's homogeneous coordinates W, X, Y, Z and their products,
+/// made once per piece and extended as leaves of higher degree ask (a piece's many leaves share
+/// them). In exact arithmetic as integer tensors (IntTensor) over the piece's common denominator.
+template <class T>
+struct PiecePowers {
+  const BSpline<T>* piece = nullptr;
+  std::array<std::vector<Bern<T>>, 4> pw;  // pw[c][i]: coordinate c (0 = W) to the power i
+  // Exact arithmetic: the coordinates times D (the lcm of their denominators) as integer tensors;
+  // products X^a Y^b and Z^c W^d by their exponents.
+  Integer D{1};
+  std::array<IntTensor, 4> base;
+  std::map<std::pair<int, int>, IntTensor> xy, zw;
+  bool integer_ready = false;
+  explicit PiecePowers(const BSpline<T>& p) : piece(&p) {}
+  const Bern<T>& at(int c, int i) {
+    if (pw[c].empty()) pw[c].push_back(Bern<T>{{0, 0, 0}, {T(1)}});
+    while (static_cast<int>(pw[c].size()) <= i) {
+      if (pw[c].size() == 1) pw[c].push_back(homogeneous(*piece, c));
+      else pw[c].push_back(mul(pw[c].back(), pw[c][1]));
+    }
+    return pw[c][static_cast<std::size_t>(i)];
+  }
+  void prepare_integer() {
+    if (integer_ready) return;
+    integer_ready = true;
+    std::array<Bern<T>, 4> h;
+    for (int c = 0; c < 4; ++c) {
+      h[c] = homogeneous(*piece, c);
+      for (const auto& x : h[c].c) mpz_lcm(D.backend().data(), D.backend().data(), boost::multiprecision::denominator(x).backend().data());
+    }
+    for (int c = 0; c < 4; ++c) {
+      for (int d = 0; d < 3; ++d) base[c].deg[d] = h[c].deg[d];
+      const auto binom = tensor_binomials(base[c].deg);
+      for (std::size_t i = 0; i < h[c].c.size(); ++i) {
+        const T v = h[c].c[i] * T(D);
+        base[c].c.push_back(boost::multiprecision::numerator(v) * binom[i]);
+      }
+    }
+  }
+  /// a^i b^j for coordinates a, b (IntTensor; i = j = 0: the constant 1).
+  const IntTensor& pair_power(std::map<std::pair<int, int>, IntTensor>& cache, int a, int b, int i, int j) {
+    const auto key = std::make_pair(i, j);
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+    IntTensor r;
+    r.c = {Integer(1)};
+    if (i > 0) r = pair_power(cache, a, b, i - 1, j), r = int_product(r, base[a]);
+    else if (j > 0) r = pair_power(cache, a, b, i, j - 1), r = int_product(r, base[b]);
+    return cache.emplace(key, std::move(r)).first->second;
+  }
+};
+
 /// W^k g(X / W, Y / W, Z / W) on a Bezier piece (k the degree of g), exact.
 template <class T>
-Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
+Bern<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
   const int k = g.degree();
-  std::array<std::vector<Bern<T>>, 4> pw;  // powers 0..k of W, X, Y, Z
-  for (int c = 0; c < 4; ++c) {
-    const Bern<T> h = homogeneous(piece, c);
-    Bern<T> one{h.deg, std::vector<T>(h.c.size(), T(1))};
-    // the constant 1 in degree 0
-    one.deg = {0, 0, 0};
-    one.c = {T(1)};
-    pw[c].push_back(one);
-    for (int i = 1; i <= k; ++i) pw[c].push_back(mul(pw[c].back(), h));
-  }
   std::vector<int> deg(3);
-  for (int d = 0; d < 3; ++d) deg[d] = k * piece.degrees[d];
+  for (int d = 0; d < 3; ++d) deg[d] = k * P.piece->degrees[d];
   Bern<T> G{deg, std::vector<T>(detail::tensor_size(deg), T(0))};
-  for (const auto& [e, c] : g.terms) {
-    Bern<T> t = mul(mul(pw[1][e[0]], pw[2][e[1]]), mul(pw[3][e[2]], pw[0][k - e[0] - e[1] - e[2]]));
-    for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * t.c[i];
+  if (k == 1) {  // a plane: c0 W + c1 X + c2 Y + c3 Z, no products
+    for (const auto& [e, c] : g.terms) {
+      const int coord = e[0] ? 1 : e[1] ? 2 : e[2] ? 3 : 0;
+      const Bern<T>& h = P.at(coord, 1);
+      for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * h.c[i];
+    }
+    return G;
   }
-  return G;
+  if constexpr (std::is_same_v<T, Rational>) {
+    // Integer tensors: g's coefficients times E (the lcm of their denominators); the terms grouped
+    // by their Z and W exponents, sum c X^a Y^b within a group, one product with Z^c W^d each.
+    P.prepare_integer();
+    Integer E(1);
+    for (const auto& [e, c] : g.terms) mpz_lcm(E.backend().data(), E.backend().data(), boost::multiprecision::denominator(c).backend().data());
+    std::map<std::pair<int, int>, IntTensor> groups;
+    for (const auto& [e, c] : g.terms) {
+      const IntTensor& xy = P.pair_power(P.xy, 1, 2, e[0], e[1]);
+      IntTensor& sum = groups[{e[2], k - e[0] - e[1] - e[2]}];
+      if (sum.c.empty()) {
+        sum.deg = xy.deg;
+        sum.c.assign(xy.c.size(), Integer(0));
+      }
+      const Integer ci = boost::multiprecision::numerator(T(c * T(E)));
+      for (std::size_t i = 0; i < xy.c.size(); ++i) mpz_addmul(sum.c[i].backend().data(), ci.backend().data(), xy.c[i].backend().data());
+    }
+    std::vector<Integer> S(G.c.size(), Integer(0));
+    for (const auto& [zw, sum] : groups) {
+      const IntTensor t = int_product(sum, P.pair_power(P.zw, 3, 0, zw.first, zw.second));
+      for (std::size_t i = 0; i < S.size(); ++i) S[i] += t.c[i];
+    }
+    // Back to the Bernstein coefficients' exact values: S / (prod C(k n_d, i_d) D^k E).
+    const auto binom = tensor_binomials({deg[0], deg[1], deg[2]});
+    Integer scale = E;
+    for (int i = 0; i < k; ++i) scale *= P.D;
+    for (std::size_t i = 0; i < S.size(); ++i) G.c[i] = T(S[i]) / T(binom[i] * scale);
+    return G;
+  } else {
+    for (const auto& [e, c] : g.terms) {
+      const Bern<T> t = mul(mul(P.at(1, e[0]), P.at(2, e[1])), mul(P.at(3, e[2]), P.at(0, k - e[0] - e[1] - e[2])));
+      for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * t.c[i];
+    }
+    return G;
+  }
+}
+template <class T>
+Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
+  PiecePowers<T> P(piece);
+  return compose_leaf(g, P);
 }
 
 /// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
@@ -349,14 +595,13 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   require_positive_weights(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
+  // Limits before the work: all leaves composed on one piece; the boxes' compositions are counted
+  // as they are made (a box carries only the leaves that can still change its truth).
   const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
-  std::size_t pieces = 1;
-  for (int d = 0; d < 3; ++d) pieces = checked_product(pieces, V.knots[d].size(), limits, "trivariate pieces");
-  checked_product(per_piece, pieces, limits, "region composed with the trivariate's pieces");
-  checked_product(per_piece + 1, max_boxes, limits, "region composed on the subdivision boxes");
   if (!field && coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
   struct Box {
-    std::vector<Bern<T>> G;
+    std::vector<Bern<T>> G;   // per leaf: its composition, or empty where it is not carried
+    std::vector<Truth> lt;    // per leaf: its truth on the box (not carried: its last one)
     Bern<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
     std::array<T, 3> lo, hi;  // in the trivariate's parameters
     T vol;                    // share of its piece's unit cube
@@ -365,25 +610,54 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   TrimRun<T> out;
   auto& cls = out.cls;
   bool has_in = false, has_out = false;
+  // The leaves' coefficients carried by the boxes alive, against the limit.
+  std::size_t carried = 0;
+  auto count = [](const Box& b) {
+    std::size_t n = 0;
+    for (const auto& G : b.G) n += G.c.size();
+    return n;
+  };
+  auto take = [&](std::size_t n) {
+    carried += n;
+    if (carried > limits.max_control_points)
+      throw SizeLimitError("region composed on the subdivision boxes",
+                           "the boxes would carry " + std::to_string(carried) + " coefficients of the region's leaves, above the limit of " +
+                               std::to_string(limits.max_control_points),
+                           "lower --boxes, or raise the limit with --max-control-points");
+  };
   auto evaluate = [&](Box& b) {
-    std::vector<Truth> lt;
-    for (const auto& G : b.G) lt.push_back(coefficient_truth(G, eps));
+    for (std::size_t l = 0; l < b.G.size(); ++l)
+      if (!b.G[l].c.empty()) b.lt[l] = coefficient_truth(b.G[l], eps);
     std::size_t k = 0;
-    b.truth = combine(trim, lt, k);
+    b.truth = combine(trim, b.lt, k);
     if (b.truth == Truth::in) has_in = true;
     if (b.truth == Truth::out) has_out = true;
-    if (b.truth != Truth::mixed) return;
-    // Exact witnesses at the corners (the corner coefficients are G's values there).
+    if (b.truth != Truth::mixed) {
+      b.G.clear();  // decided: its leaves are not needed again (an in-box stays in)
+      return;
+    }
+    // Exact witnesses at the corners (the corner coefficients are G's values there; a leaf not
+    // carried has one strict sign on the box, or does not change the formula's truth).
     for (int s = 0; s < 8; ++s) {
-      if (!cls.inside.empty() && !cls.outside.empty()) return;
-      std::vector<Truth> pt;
-      for (const auto& G : b.G) pt.push_back(value_truth(corner(G, s & 1, (s >> 1) & 1, s >> 2), eps));
+      if (!cls.inside.empty() && !cls.outside.empty()) break;
+      std::vector<Truth> pt(b.lt);
+      for (std::size_t l = 0; l < b.G.size(); ++l)
+        if (!b.G[l].c.empty()) pt[l] = value_truth(corner(b.G[l], s & 1, (s >> 1) & 1, s >> 2), eps);
       std::size_t j = 0;
       const Truth t = combine(trim, pt, j);
       if (t == Truth::mixed) continue;
       auto& w = t == Truth::in ? cls.inside : cls.outside;
       if (!w.empty()) continue;
       w = {s & 1 ? b.hi[0] : b.lo[0], (s >> 1) & 1 ? b.hi[1] : b.lo[1], s >> 2 ? b.hi[2] : b.lo[2]};
+    }
+    // Release the leaves that no longer matter on the box and its parts: those the formula does not
+    // depend on any more, and those of one strict sign (every corner value has that sign too).
+    std::vector<char> live;
+    live_leaves(trim, b.lt, live);
+    // (A leaf decided with a zero coefficient keeps its values: a corner may lie on its surface.)
+    for (std::size_t l = 0; l < b.G.size(); ++l) {
+      if (b.G[l].c.empty() || live[l]) continue;
+      if (b.lt[l] == Truth::mixed || strictly_signed(b.G[l], eps)) b.G[l] = Bern<T>{};
     }
   };
   std::deque<Box> todo;
@@ -395,8 +669,10 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
       c[h].hi = b.hi;
       c[h].vol = b.vol / T(2);
       c[h].G.resize(b.G.size());
+      c[h].lt = b.lt;
     }
-    for (std::size_t l = 0; l < b.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
+    for (std::size_t l = 0; l < b.G.size(); ++l)
+      if (!b.G[l].c.empty()) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
     if (want_volume) {
       std::tie(c[0].N, c[1].N) = split_half(b.N, dir);
       std::tie(c[0].W, c[1].W) = split_half(b.W, dir);
@@ -407,12 +683,25 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
     c[1].lo[dir] = mid;
   };
   const BezierForm<T> F = bezier_form(V, limits);
+  limits.check_count(per_piece, "region composed with a piece of the trivariate");
   std::optional<BezierForm<T>> FF;
   if (field && want_volume) FF = bezier_form(refined->second, limits);
   for (std::size_t k = 0; k < F.size(); ++k) {
     const auto pc = F.piece(k);
     Box b;
-    for (const auto* g : leaves) b.G.push_back(compose_leaf(*g, pc.spline));
+    // The planes first (cheap); then only the leaves the formula may still depend on.
+    b.G.resize(leaves.size());
+    b.lt.assign(leaves.size(), Truth::mixed);
+    PiecePowers<T> powers(pc.spline);
+    for (std::size_t l = 0; l < leaves.size(); ++l)
+      if (leaves[l]->degree() <= 1) {
+        b.G[l] = compose_leaf(*leaves[l], powers);
+        b.lt[l] = coefficient_truth(b.G[l], eps);
+      }
+    std::vector<char> live;
+    live_leaves(trim, b.lt, live);
+    for (std::size_t l = 0; l < leaves.size(); ++l)
+      if (leaves[l]->degree() > 1 && live[l]) b.G[l] = compose_leaf(*leaves[l], powers);
     if (want_volume) {
       b.N = jacobian_numerator(pc.spline);
       b.W = homogeneous(pc.spline, 0);
@@ -425,6 +714,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
     }
     b.vol = T(1);
     evaluate(b);
+    take(count(b));
     (b.truth == Truth::mixed ? todo.push_back(std::move(b)) : done.push_back(std::move(b)));
   }
   // Breadth first: halve mixed boxes across their widest parameter side until none is left or
@@ -434,6 +724,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
          (want_volume || !((has_in || !cls.inside.empty()) && (has_out || !cls.outside.empty())))) {
     Box b = std::move(todo.front());
     todo.pop_front();
+    carried -= count(b);
     int dir = 0;
     for (int d = 1; d < 3; ++d)
       if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
@@ -441,6 +732,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
     split_box(b, dir, c);
     for (auto& x : c) {
       evaluate(x);
+      take(count(x));
       (x.truth == Truth::mixed ? todo.push_back(std::move(x)) : done.push_back(std::move(x)));
     }
   }
@@ -499,10 +791,12 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
         }
       }
       Box c[2];
+      carried -= count(b);
       split_box(b, dir, c);
       for (int h = 0; h < 2; ++h) {
         if (b.truth == Truth::in) c[h].truth = Truth::in;  // in stays in
         else evaluate(c[h]);
+        take(count(c[h]));
       }
       all[i] = std::move(c[0]);
       push(i);
@@ -680,6 +974,112 @@ Region<T> torus_region(const T& R, const T& r) {
 }
 
 template <class T>
+Region<T> sphere_region(const T& r, int degree, int pieces) {
+  using namespace vrep_detail;
+  if (!(T(0) < r)) throw ValidationError("radius", "must be positive", "give a positive radius");
+  const CubeSphereWeights W = cube_sphere_weights(degree, pieces);  // checks degree and pieces
+  if (degree > 4)
+    throw ValidationError("degree", "the sphere's exact region needs patches of degree <= 4 (its leaves have degree 2 degree, at most 8)",
+                          "give --degree 2, 3 or 4");
+  auto num = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
+  // The weight function P(u, v) on [0, 1]^2 (s = 2u - 1, t = 2v - 1) and its Bezier pieces.
+  BSpline<Rational> P;
+  P.degrees = {degree, degree};
+  P.knots = {W.knots, W.knots};
+  P.q = 1;
+  const std::size_t n = W.s.size();
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) P.points.push_back(W.P[i][j]);
+  // Univariate polynomials in s (coefficients of s^0, s^1, ...).
+  using Upoly = std::vector<Rational>;
+  auto umul = [](const Upoly& a, const Upoly& b) {
+    Upoly c(a.size() + b.size() - 1, Rational(0));
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t k = 0; k < b.size(); ++k) c[i + k] += a[i] * b[k];
+    return c;
+  };
+  // The Bernstein polynomials of degree p on the parameter interval [ua, ub], in s.
+  auto bernstein_in_s = [&](const Rational& ua, const Rational& ub) {
+    const Rational sa = Rational(2) * ua - Rational(1), sb = Rational(2) * ub - Rational(1), h = sb - sa;
+    const Upoly sigma{Rational(-sa / h), Rational(Rational(1) / h)}, rest{Rational(sb / h), Rational(Rational(-1) / h)};
+    std::vector<Upoly> B;
+    for (int k = 0; k <= degree; ++k) {
+      long choose = 1;
+      for (int e = 0; e < k; ++e) choose = choose * (degree - e) / (e + 1);
+      Upoly b{Rational(choose)};
+      for (int e = 0; e < k; ++e) b = umul(b, sigma);
+      for (int e = k; e < degree; ++e) b = umul(b, rest);
+      B.push_back(std::move(b));
+    }
+    return std::make_pair(std::array<Rational, 2>{sa, sb}, B);
+  };
+  // Face +z: per piece, its cone's four planes and its leaf.
+  struct Piece {
+    std::array<Poly3<T>, 4> planes;
+    Poly3<T> leaf;
+    int i = 0, j = 0;
+  };
+  std::vector<Piece> top;
+  const int p2 = 2 * degree;
+  for (const auto& pc : extract_bezier(P)) {
+    const auto [srange, Bs] = bernstein_in_s(pc.box[0].first, pc.box[0].second);
+    const auto [trange, Bt] = bernstein_in_s(pc.box[1].first, pc.box[1].second);
+    std::vector<std::vector<Rational>> m(degree + 1, std::vector<Rational>(degree + 1, Rational(0)));  // P = sum m[a][b] s^a t^b
+    for (int l = 0; l <= degree; ++l)
+      for (int k = 0; k <= degree; ++k) {
+        const Rational& b = pc.spline.points[static_cast<std::size_t>(k + (degree + 1) * l)];
+        for (int a = 0; a <= degree; ++a)
+          for (int c = 0; c <= degree; ++c) m[a][c] += b * Bs[k][a] * Bt[l][c];
+      }
+    Piece x;
+    x.planes = {poly_linear(T(0), T(1), T(0), num(-srange[0])), poly_linear(T(0), T(-1), T(0), num(srange[1])),
+                poly_linear(T(0), T(0), T(1), num(-trange[0])), poly_linear(T(0), T(0), T(-1), num(trange[1]))};
+    // r z^(2p - 1) - sum m[a][b] x^a y^b z^(2p - a - b) >= 0.
+    x.leaf.terms[{0, 0, p2 - 1}] = r;
+    for (int a = 0; a <= degree; ++a)
+      for (int c = 0; c <= degree; ++c)
+        if (m[a][c] != Rational(0)) x.leaf.terms[{a, c, p2 - a - c}] = num(-m[a][c]);
+    x.i = static_cast<int>(top.size()) % pieces;
+    x.j = static_cast<int>(top.size()) / pieces;
+    top.push_back(std::move(x));
+  }
+  // The faces by the rotations of sphere_cells: x'_a = sign_a x_perm_a, so g'(x') has the exponent
+  // e[perm_a] at a and the sign prod sign_a^e[perm_a].
+  const std::array<std::array<int, 3>, 6> perm{{{0, 1, 2}, {0, 1, 2}, {2, 0, 1}, {2, 0, 1}, {1, 2, 0}, {1, 2, 0}}};
+  const std::array<std::array<int, 3>, 6> sign{{{1, 1, 1}, {1, -1, -1}, {1, 1, 1}, {-1, -1, 1}, {1, 1, 1}, {-1, -1, 1}}};
+  const char* face_name[6] = {"+z", "-z", "+x", "-x", "+y", "-y"};
+  auto rotate = [&](const Poly3<T>& g, int f) {
+    Poly3<T> out;
+    for (const auto& [e, c] : g.terms) {
+      std::array<int, 3> e2{};
+      bool negate = false;
+      for (int a = 0; a < 3; ++a) {
+        e2[a] = e[perm[f][a]];
+        if (sign[f][a] < 0 && e2[a] % 2 == 1) negate = !negate;
+      }
+      out.terms[e2] = negate ? T(-c) : c;
+    }
+    return out;
+  };
+  std::vector<std::pair<Region<T>, Region<T>>> cases;
+  for (int f = 0; f < 6; ++f)
+    for (const auto& x : top) {
+      const std::string where = std::string("sphere: face ") + face_name[f] + " piece (" + std::to_string(x.i) + ", " + std::to_string(x.j) + ")";
+      std::vector<Region<T>> planes;
+      for (const auto& h : x.planes) planes.push_back(region_leaf(rotate(h, f), where + " cone"));
+      cases.emplace_back(region_and(std::move(planes)), region_leaf(rotate(x.leaf, f), where));
+    }
+  Region<T> piecewise = region_cases(std::move(cases));
+  piecewise.label = "sphere: faces";
+  const T c = r / T(2);
+  Region<T> cube = box_region(std::vector<T>{-c, -c, -c}, std::vector<T>{c, c, c});
+  cube.label = "sphere: cube";
+  Region<T> out = region_or<T>({std::move(cube), std::move(piecewise)});
+  out.label = "sphere";
+  return out;
+}
+
+template <class T>
 std::optional<Region<T>> planar_region(const VModel<T>& M, const T& eps) {
   using vrep_detail::poly_linear;
   std::vector<Region<T>> cells;
@@ -806,6 +1206,27 @@ Region<T> fold_constants(const Region<T>& R, const std::vector<Truth>& fixed, st
       out.label = R.label;
       return out;
     }
+    case Region<T>::cases: {
+      // Cases whose piece is out drop; a piece that is all there is leaves its formula; formulas
+      // that are one constant on every piece left are that constant (the pieces cover).
+      std::vector<std::pair<Region<T>, Region<T>>> kept;
+      int common = -2;
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
+        Region<T> c = fold_constants(R.parts[i], fixed, k);
+        Region<T> f = fold_constants(R.parts[i + 1], fixed, k);
+        const int cv = value(c);
+        if (cv == 0) continue;
+        const int fv = value(f);
+        common = common == -2 ? fv : common == fv ? fv : -1;
+        kept.emplace_back(std::move(c), std::move(f));
+      }
+      if (kept.empty()) return constant(false);
+      if (common >= 0) return constant(common == 1);
+      if (kept.size() == 1 && value(kept.front().first) == 1) return std::move(kept.front().second);
+      Region<T> out = region_cases<T>(std::move(kept));
+      out.label = R.label;
+      return out;
+    }
   }
   return R;
 }
@@ -902,6 +1323,21 @@ Region<T> localized_region(const BSpline<T>& V, const Region<T>& R, const T& eps
       open_leaves.push_back(leaves[l]);
     }
   }
+  // (b) for the planes always; for curved leaves only when they are few (a piecewise region's many
+  // pieces are left to the subdivision, which composes a leaf only where it may matter).
+  std::size_t curved = 0;
+  for (const auto* g : open_leaves) curved += g->degree() > 1;
+  if (curved > 16) {
+    std::vector<std::size_t> o;
+    std::vector<const Poly3<T>*> ol;
+    for (std::size_t q = 0; q < open.size(); ++q)
+      if (open_leaves[q]->degree() <= 1) {
+        o.push_back(open[q]);
+        ol.push_back(open_leaves[q]);
+      }
+    open = std::move(o);
+    open_leaves = std::move(ol);
+  }
   if (!open.empty()) {
     const std::size_t per_piece = composed_leaves_size(V, open_leaves, limits);
     const BezierForm<T> F = bezier_form(V, limits);
@@ -913,9 +1349,10 @@ Region<T> localized_region(const BSpline<T>& V, const Region<T>& R, const T& eps
         vrep_testing::is_planted(vrep_testing::Plant::classify_first_piece_only) ? std::min<std::size_t>(1, F.size()) : F.size();
     for (std::size_t k = 0; k < pieces; ++k) {
       const auto pc = F.piece(k);
+      PiecePowers<T> powers(pc.spline);
       for (std::size_t q = 0; q < open.size(); ++q) {
         if (!alive[q]) continue;
-        const Truth here = coefficient_truth(compose_leaf(*open_leaves[q], pc.spline), eps);
+        const Truth here = coefficient_truth(compose_leaf(*open_leaves[q], powers), eps);
         if (here == Truth::mixed || (k > 0 && here != t[q])) {
           alive[q] = 0;
           t[q] = Truth::mixed;
@@ -1056,23 +1493,34 @@ std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, co
     const auto& hs = M.half_surfaces[h];
     if (hs.twin) continue;
     const BSpline<T> S = face(M.trivariates[hs.trivariate], hs.dir, hs.side);
-    const auto box = control_bounds(S);
-    bool on = false;
-    for (const auto* g : leaves) {
-      // A leaf whose bounds on the face's control-point box exclude 0 does not vanish on it.
-      if (const auto [lo, hi] = poly_bounds(*g, box); T(0) < lo || hi < T(0)) continue;
-      bool zero = true;
-      for (const auto& pc : extract_bezier(S, limits)) {
-        // The face as a degenerate trivariate: g o S vanishes iff every coefficient of W^k g(X/W, ...) does.
-        BSpline<T> P = pc.spline;
-        P.degrees.push_back(0);
-        P.knots.push_back({T(0), T(1)});
-        const Bern<T> G = compose_leaf(*g, P);
-        for (const auto& x : G.c) zero = zero && x == T(0);
-        if (!zero) break;
+    // Each Bezier piece of the face on the zero set of some leaf (a piecewise surface, such as the
+    // sphere's patches, has one leaf per piece).
+    bool on = true;
+    std::size_t last = 0;  // the leaf the previous piece lies on: neighbouring pieces' leaves are near it
+    for (const auto& pc : extract_bezier(S, limits)) {
+      const auto box = control_bounds(pc.spline);
+      // The piece as a degenerate trivariate: g o S vanishes iff every coefficient of W^k g(X/W, ...) does.
+      BSpline<T> P = pc.spline;
+      P.degrees.push_back(0);
+      P.knots.push_back({T(0), T(1)});
+      bool here = false;
+      // The piece's corner (its first control point, a point of the face).
+      const T* corner_point = pc.spline.points.data();
+      for (std::size_t q = 0; q < leaves.size() && !here; ++q) {
+        const std::size_t l = (last + q) % leaves.size();
+        const Poly3<T>& g = *leaves[l];
+        // A leaf that is not 0 at the corner, or whose bounds on the piece's control-point box
+        // exclude 0, does not vanish on it.
+        if (!(poly_at(g, corner_point) == T(0))) continue;
+        if (const auto [lo, hi] = poly_bounds(g, box); T(0) < lo || hi < T(0)) continue;
+        const Bern<T> G = compose_leaf(g, P);
+        if (std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); })) {
+          here = true;
+          last = l;
+        }
       }
-      if (zero) {
-        on = true;
+      if (!here) {
+        on = false;
         break;
       }
     }

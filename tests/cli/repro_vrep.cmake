@@ -75,10 +75,16 @@ cli_test(repro_vrep_volume_centroid 0 [=["centroid_approximately":\[\[0\.42[0-9]
 cli_test(bad_repro_vrep_volume_rel_width 2 [=[^splinex: error: rel-width: is negative]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume - --rel-width=-1/100")
 cli_test(bad_repro_vrep_volume_rel_width_text 2 [=[^splinex: error: rel-width: ]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume - --rel-width one")
 
-# 7. The sphere of seven cells in Booleans (issue 47 item 5, in part): it has no exact region (its
-#    radius is approximate), so a cut that is not a parameter plane of its cells is refused naming
-#    the operand and why (before: "cut it as a trimmed cell ... --trim auto", which was the mode
-#    already running); where no cell must be cut (a box around it) it goes.
-cli_test(bad_repro_vrep_boolean_sphere_curved 2 [=[^splinex: error: second: has no exact region, .*the sphere of seven cells has none]=] sh -c "${CLI} vrep primitive box --lo=1/4,-2,-2 --hi=2,2,2 > ${RW}/rv7_b.json && ${CLI} vrep primitive sphere > ${RW}/rv7_s.json && ${CLI} vrep boolean intersect ${RW}/rv7_b.json ${RW}/rv7_s.json")
-cli_test(bad_repro_vrep_boolean_sphere_always 2 [=[^splinex: error: first: has curved cells and no exact region, .*the sphere of seven cells has none]=] sh -c "${CLI} vrep primitive sphere > ${RW}/rv7a_s.json && ${CLI} vrep primitive box > ${RW}/rv7a_b.json && ${CLI} vrep boolean union ${RW}/rv7a_s.json ${RW}/rv7a_b.json --trim always")
+# 7. The sphere of seven cells in Booleans (issue 47 item 5): `vrep primitive sphere` writes its exact
+#    piecewise region (vrep/trimmed.hpp: sphere_region), so cuts through it are trimmed cells. The
+#    reproducer's two cases: the sphere and the half-space z >= 0 (2 pi / 3 = 2.0944 for the round
+#    sphere; the cube sphere's radius is within 1e-4), the sphere and a box apart from it (4.19 + 1);
+#    also a box through it (the cap x >= 1/4 of the round sphere: 81 pi / 192 = 1.3254) and the unit
+#    box minus it (1 - pi / 6 = 0.4764; the cube sphere's octant, within the enclosure).
+cli_test(repro_vrep_boolean_sphere_half 0 [=["approximately":\[2\.09[0-9]*,2\.09[0-9]*\]]=] sh -c "${CLI} vrep primitive sphere > ${RW}/rv7h_s.json && ${CLI} vrep primitive box --lo=-2,-2,0 --hi=2,2,2 > ${RW}/rv7h_b.json && ${CLI} vrep boolean intersect ${RW}/rv7h_s.json ${RW}/rv7h_b.json | ${CLI} vrep volume -")
+cli_test(repro_vrep_boolean_sphere_apart 0 [=["approximately":\[5\.18[0-9]*,5\.19[0-9]*\]]=] sh -c "${CLI} vrep primitive sphere > ${RW}/rv7u_s.json && ${CLI} vrep primitive box --lo=2,2,2 --hi=3,3,3 > ${RW}/rv7u_b.json && ${CLI} vrep boolean union ${RW}/rv7u_s.json ${RW}/rv7u_b.json | ${CLI} vrep volume -")
+cli_test(repro_vrep_boolean_sphere_cap 0 [=["approximately":\[1\.3[12][0-9]*,1\.3[34][0-9]*\].*"status":"target reached"]=] sh -c "${CLI} vrep primitive box --lo=1/4,-2,-2 --hi=2,2,2 > ${RW}/rv7_b.json && ${CLI} vrep primitive sphere > ${RW}/rv7_s.json && ${CLI} vrep boolean intersect ${RW}/rv7_s.json ${RW}/rv7_b.json | ${CLI} vrep volume -")
+cli_test(repro_vrep_boolean_sphere_minus 0 [=["approximately":\[0\.4[5-7][0-9]*,0\.4[7-9][0-9]*\]]=] sh -c "${CLI} vrep primitive sphere > ${RW}/rv7m_s.json && ${CLI} vrep primitive box > ${RW}/rv7m_b.json && ${CLI} vrep boolean subtract ${RW}/rv7m_b.json ${RW}/rv7m_s.json | ${CLI} vrep volume -")
+# A sphere of degree 5 has no exact region (leaves of degree 10 > 8): cuts through it are refused.
+cli_test(bad_repro_vrep_boolean_sphere_degree5 2 [=[^splinex: error: second: has no exact region, .*sphere \(patch degree <= 4\)]=] sh -c "${CLI} vrep primitive box --lo=1/4,-2,-2 --hi=2,2,2 > ${RW}/rv7d_b.json && ${CLI} vrep primitive sphere --degree 5 --pieces 2 > ${RW}/rv7d_s.json && ${CLI} vrep boolean intersect ${RW}/rv7d_b.json ${RW}/rv7d_s.json")
 cli_test(repro_vrep_boolean_sphere_whole 0 [=["approximately":\[4\.18[0-9]*,4\.19[0-9]*\]]=] sh -c "${CLI} vrep primitive sphere > ${RW}/rv7w_s.json && ${CLI} vrep primitive box --lo=-2,-2,-2 --hi=2,2,2 > ${RW}/rv7w_b.json && ${CLI} vrep boolean intersect ${RW}/rv7w_s.json ${RW}/rv7w_b.json | ${CLI} vrep volume -")

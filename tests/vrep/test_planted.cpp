@@ -41,6 +41,7 @@ const std::pair<const char*, Plant> kPlants[] = {
     {"regularity_sign_flipped", Plant::regularity_sign_flipped},
     {"classify_skips_plane", Plant::classify_skips_plane},
     {"classify_first_piece_only", Plant::classify_first_piece_only},
+    {"cases_ignore_pieces", Plant::cases_ignore_pieces},
     {"region_arc_unchecked", Plant::region_arc_unchecked},
     {"surface_shape_unchecked", Plant::surface_shape_unchecked},
     {"euler_monotone_sign", Plant::euler_monotone_sign},

@@ -237,10 +237,20 @@ TEST_CASE("vrep trimmed: regions and trimmed documents read exactly, hostile one
     V.weights[0] = R(-1);
     CHECK_THROWS_AS(classify_cell(V, M.cells[0].trim), Error);
   }
-  // A trivariate too large for the composed leaves is refused before the work.
+  // A trivariate too large for the composed leaves is refused before the work (all leaves on one
+  // piece above the limit); within it, the boxes' carried compositions are counted against it. A
+  // box trimmed by the cylinder: its side (degree 2, 27 coefficients on the box) and two planes.
+  const auto B = trimmed_boolean(box({R(0), R(-2), R(-1)}, {R(2), R(2), R(3)}), Cy, BooleanOp::intersect);
+  REQUIRE(B.cells.size() == 1);
+  const auto& BV = B.trivariates[B.cells[0].trivariate];
   Limits small;
+  small.max_control_points = 30;
+  CHECK_THROWS_WITH(classify_cell(BV, B.cells[0].trim, TrimOptions{}, R(0), small), Catch::Contains("region composed with the trivariate: the result would have 43"));
   small.max_control_points = 1000;
-  CHECK_THROWS_AS(classify_cell(M.trivariates[M.cells[0].trivariate], M.cells[0].trim, TrimOptions{}, R(0), small), SizeLimitError);
+  CHECK(classify_cell(BV, B.cells[0].trim, TrimOptions{}, R(0), small).kind == CellClass<R>::cut);
+  // The volume's boxes spending their whole budget (width 0): the mixed ones along the cylinder
+  // carry more than 1000 coefficients together.
+  CHECK_THROWS_WITH(trimmed_volume(BV, B.cells[0].trim, 900, small, R(0)), Catch::Contains("the boxes would carry"));
 }
 
 TEST_CASE("vrep trimmed: near tangency, exact certifies or refuses where double with a tolerance answers wrongly") {

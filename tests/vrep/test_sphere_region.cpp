@@ -1,0 +1,118 @@
+// The sphere of seven cells in Booleans (issue 47 item 5): its exact region (sphere_region, a
+// piecewise formula of cases over the faces' cones) holds exactly its cells' point set, checked
+// against the cells themselves (points of the cells evaluated exactly, on the patch and scaled in
+// and out), and Booleans with it give volumes that agree with the whole sphere's enclosure by
+// symmetry and inclusion-exclusion. A planted misreading of the cases (in where one case is) is
+// caught by the same checks.
+#include <catch2/catch.hpp>
+
+#include "exact/rational.hpp"
+#include "spline/evaluate.hpp"
+#include "vrep/boolean.hpp"
+#include "vrep/planted.hpp"
+#include "vrep/primitives.hpp"
+#include "vrep/trimmed.hpp"
+#include "vrep/vmodel.hpp"
+#include "tests/vrep/trimmed_fixtures.hpp"
+
+using namespace splinex;
+using R = Rational;
+
+namespace {
+
+using namespace trimmed_fixtures;
+
+TrimmedModel<R> sphere(const R& r, std::vector<R> at = {R(0), R(0), R(0)}) {
+  return placed_primitive(sphere_cells<R>(r), sphere_region<R>(r), 2, at);
+}
+
+IntegralEnclosures<R> enclose(const TrimmedModel<R>& M, const R& rel, std::size_t boxes) {
+  std::vector<IntegrandCell<R>> in;
+  for (const auto& c : M.cells) in.push_back({&M.trivariates[c.trivariate], &c.trim, nullptr});
+  return integral_enclosures(in, {}, rel, boxes);
+}
+
+bool overlap(const VolumeEnclosure<R>& a, const R& lo, const R& hi) { return a.lower <= hi && lo <= a.upper; }
+
+std::vector<R> point(const BSpline<R>& V, const R& u, const R& v, const R& w) {
+  auto x = evaluate(V, std::vector<R>{u, v, w});
+  x.resize(3);
+  return x;
+}
+
+std::vector<R> scaled(std::vector<R> x, const R& f) {
+  for (auto& c : x) c *= f;
+  return x;
+}
+
+}  // namespace
+
+TEST_CASE("vrep sphere region: the cells lie in it, their outer faces on its leaves") {
+  const auto cells = sphere_cells<R>(R(1));
+  const auto fails = check_region(glue(cells), sphere_region<R>(R(1)));
+  for (const auto& f : fails) INFO(f);
+  CHECK(fails.empty());
+}
+
+TEST_CASE("vrep sphere region: points of the patches are on it, scaled in or out they are in or out") {
+  const R r(3, 2);
+  const auto cells = sphere_cells<R>(r);
+  const auto S = sphere_region<R>(r);
+  const R in(999, 1000), out(1001, 1000);
+  // Every face cell; parameters inside pieces, on the pieces' joints, at the patch's corners.
+  const std::vector<R> at{R(0), R(1, 8), R(1, 4), R(1, 3), R(1, 2), R(3, 4), R(1)};
+  std::size_t checked = 0;
+  for (std::size_t f = 1; f < cells.size(); ++f)
+    for (const auto& u : at)
+      for (const auto& v : at) {
+        const auto x = point(cells[f], u, v, R(1));
+        INFO("cell " << f << " at (" << u << ", " << v << ")");
+        CHECK(classify_point(S, x) == Truth::mixed);
+        CHECK(classify_point(S, scaled(x, in)) == Truth::in);
+        CHECK(classify_point(S, scaled(x, out)) == Truth::out);
+        ++checked;
+      }
+  CHECK(checked == 6 * at.size() * at.size());
+  CHECK(classify_point(S, {R(0), R(0), R(0)}) == Truth::in);
+  CHECK(classify_point(S, {r / R(2), r / R(2), r / R(2)}) == Truth::in);  // the cube's corner
+}
+
+TEST_CASE("vrep sphere region: half the sphere is half its volume, a box minus it the rest") {
+  const R r(1);
+  const auto ball = sphere(r);
+  const auto whole = enclose(ball, R(1, 50), 400);
+  // The half x >= 0 (a plane through the centre: the patches' joints s = 0 lie on it).
+  const auto half = trimmed_boolean(ball, box({R(0), R(-2), R(-2)}, {R(2), R(2), R(2)}), BooleanOp::intersect);
+  const auto H = enclose(half, R(1, 50), 400);
+  INFO("sphere [" << to_double(whole.total.lower) << ", " << to_double(whole.total.upper) << "], half [" << to_double(H.total.lower) << ", "
+                  << to_double(H.total.upper) << "]");
+  CHECK(overlap(H.total, whole.total.lower / R(2), whole.total.upper / R(2)));
+  // A box around the sphere minus it: 64 - the sphere's volume (the sphere's leaves on the box).
+  const auto rest = trimmed_boolean(box({R(-2), R(-2), R(-2)}, {R(2), R(2), R(2)}), ball, BooleanOp::subtract);
+  const auto E = enclose(rest, R(1, 50), 400);
+  INFO("box minus sphere [" << to_double(E.total.lower) << ", " << to_double(E.total.upper) << "]");
+  CHECK(overlap(E.total, R(64) - whole.total.upper, R(64) - whole.total.lower));
+  CHECK(E.total.lower > R(0));
+}
+
+TEST_CASE("vrep sphere region: a planted misreading of the cases is caught by the points of the cells") {
+  // Planted: a box or point is in where some case's formula is, whatever its piece. Points just
+  // outside the patches (exact points of the cells, scaled by 1001/1000) must be out.
+  const R r(1);
+  const auto cells = sphere_cells<R>(r);
+  const auto S = sphere_region<R>(r);
+  auto wrong = [&]() {
+    std::size_t n = 0;
+    for (std::size_t f = 1; f < cells.size(); ++f)
+      for (const R& u : {R(1, 8), R(1, 2), R(7, 8)})
+        n += classify_point(S, scaled(point(cells[f], u, u, R(1)), R(1001, 1000))) != Truth::out;
+    return n;
+  };
+  {
+    vrep_testing::ScopedPlant off(vrep_testing::Plant::none);
+    CHECK(wrong() == 0);
+  }
+  vrep_testing::ScopedPlant plant(vrep_testing::Plant::cases_ignore_pieces);
+  CHECK(wrong() > 0);
+}
+
