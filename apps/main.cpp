@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   // Memory exhaustion in GMP, MPFR or FLINT throws std::bad_alloc instead of aborting.
   sx::install_throwing_allocators();
   CLI::App app{"splinex: exact and floating B-spline algorithms, cross-checked exactly"};
+  app.set_version_flag("--version", std::string("splinex ") + SPLINEX_VERSION, "print the version and exit");
   app.require_subcommand(1);
   sx::app::Context ctx;
   std::string max_memory = "auto";
@@ -72,6 +73,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
       return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
       return app.exit(e);
     } catch (const CLI::ParseError& e) {
       // CLI11's own errors (missing, unknown or repeated option, value not in the set, failed

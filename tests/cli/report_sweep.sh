@@ -72,6 +72,6 @@ $CLI sweep plan proofs --sections hybrid > /dev/null 2> "$W/e3.txt"
 r3=$?
 set -e
 test $r1 -eq 2 && grep -q "^splinex: error: sections: composition-orders draws from the crosscheck suite" "$W/e1.txt"
-test $r2 -eq 2 && grep -q "^splinex: error: sweep: --cases, --cases-per-job, --eps and --runs are not options of report" "$W/e2.txt"
+test $r2 -eq 2 && grep -q "^splinex: error: sweep: --cases, --cases-per-job, --proofs, --eps and --runs are not options of report" "$W/e2.txt"
 test $r3 -eq 2 && grep -q "^splinex: error: sections: is an option of report, not of proofs" "$W/e3.txt"
 echo "report sweep merged identical to the report"
