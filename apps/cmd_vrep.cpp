@@ -237,7 +237,8 @@ struct PrimitiveOptions {
 
 /// A primitive's cells and its exact region (vrep/trimmed.hpp) where it has one: the sphere of
 /// seven cells has its piecewise one for patches of degree <= 4 (sphere_region: leaves of degree
-/// 2 degree <= 8), in exact arithmetic; the singular trivariates are not offered for Booleans.
+/// 2 degree <= 8) and at most 11 pieces, in exact arithmetic; the singular trivariates are not
+/// offered for Booleans.
 template <class F>
 struct Primitive {
   std::vector<BSpline<F>> cells;
@@ -260,8 +261,9 @@ Primitive<F> primitive_cells(const PrimitiveOptions& o) {
   if (o.name == "box") return {box_cells(list(o.lo, "lo"), list(o.hi, "hi")), box_region(list(o.lo, "lo"), list(o.hi, "hi"))};
   if (o.name == "sphere") {
     auto cells = sphere_cells(num(o.radius, "radius"), o.degree, o.pieces);  // checks degree and pieces
-    // In floating point the rounded region would not describe the rounded cells exactly.
-    if (o.degree > 4 || !ArithTraits<F>::exact) return {std::move(cells), std::nullopt};
+    // In floating point the rounded region would not describe the rounded cells exactly; above 11
+    // pieces its 30 pieces^2 + 6 leaves pass the documents' 4096.
+    if (o.degree > 4 || o.pieces > 11 || !ArithTraits<F>::exact) return {std::move(cells), std::nullopt};
     return {std::move(cells), sphere_region(num(o.radius, "radius"), o.degree, o.pieces)};
   }
   if (o.name == "singular-cylinder") return {{singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))}, std::nullopt};

@@ -15,6 +15,9 @@ Region<Rational> region_at(const Json& j, const std::string& where, int depth, s
   for (auto it = j.begin(); it != j.end(); ++it)
     if (it.key() != "leaf" && it.key() != "all" && it.key() != "any" && it.key() != "not" && it.key() != "cases" && it.key() != "label")
       throw ValidationError(where + "." + it.key(), "is not a field of a region", "remove it (fields: leaf, all, any, not, cases, label)");
+  int kinds = 0;
+  for (const char* k : {"leaf", "all", "any", "not", "cases"}) kinds += j.contains(k) ? 1 : 0;
+  if (kinds > 1) throw ValidationError(where, "has more than one of leaf, all, any, not, cases", "give one per region object");
   const std::string label = j.contains("label") && j["label"].is_string() ? j["label"].get<std::string>() : std::string();
   if (j.contains("leaf")) {
     if (++leaves > 4096) throw SizeLimitError(where, "has more than 4096 leaves", "give a smaller formula");
@@ -167,6 +170,27 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
     M.cells.push_back(std::move(x));
   }
   M.trivariates.insert(M.trivariates.end(), inherited.begin(), inherited.end());
+  // The cover that piecewise regions (`cases`) claim, at a grid of points over the cells (sampled).
+  std::optional<std::array<Rational, 6>> box;
+  for (const auto& V : M.trivariates) {
+    if (V.q < 3 || V.points.empty()) continue;  // (refused later by the engines that need points in R^3)
+    const auto b = control_bounds(V);
+    if (!box) box = b;
+    for (int d = 0; d < 3; ++d) {
+      (*box)[d] = std::min((*box)[d], b[d]);
+      (*box)[d + 3] = std::max((*box)[d + 3], b[d + 3]);
+    }
+  }
+  auto cover = [&](const Region<Rational>& R, const std::string& field) {
+    if (const auto gap = cases_cover_gap(R, *box, 8))
+      throw ValidationError(field, "has cases whose pieces do not cover the point (" + to_fraction_string((*gap)[0]) + ", " +
+                                       to_fraction_string((*gap)[1]) + ", " + to_fraction_string((*gap)[2]) + ")",
+                            "give pieces that cover space (checked at 729 points over the cells)");
+  };
+  if (box) {
+    cover(M.region, where + ".region");
+    for (std::size_t i = 0; i < M.cells.size(); ++i) cover(M.cells[i].trim, where + ".cells[" + std::to_string(i) + "].trim");
+  }
   return M;
 }
 

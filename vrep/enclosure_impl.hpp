@@ -1192,6 +1192,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
 
   // The checks and the initial boxes: every Bezier piece of every cell.
   std::vector<Box> initial;
+  std::size_t initial_carried = 0;
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const std::string who = cells.size() == 1 ? std::string() : "cells[" + std::to_string(c) + "].";
     if (!cells[c].trivariate) throw ValidationError(who + "trivariate", "is missing", "give the cell's trivariate");
@@ -1247,6 +1248,13 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       live_leaves(*cell.trim, b.lt, live);
       for (std::size_t l = 0; l < cell.leaves.size(); ++l)
         if (cell.leaves[l]->degree() > 1 && live[l]) b.G[l] = scaled(compose_leaf(*cell.leaves[l], powers));
+      // The initial boxes' compositions against the limit, as they are made.
+      for (const auto& G : b.G) initial_carried += G.c.size();
+      if (initial_carried > limits.max_control_points)
+        throw SizeLimitError("region composed on the subdivision boxes",
+                             "the cells' pieces would carry " + std::to_string(initial_carried) +
+                                 " coefficients of the region's leaves, above the limit of " + std::to_string(limits.max_control_points),
+                             "raise the limit with --max-control-points");
       const Bern<T> N = jacobian_numerator(pc.spline);
       if (cell.orientation == 0) {
         // N's mean is its integral over the piece, W^4 > 0: a regular cell's orientation.

@@ -66,8 +66,9 @@ struct Poly3 {
 /// C_i n L_i, where the pieces C_i cover space and overlap only on their boundaries (the writer's
 /// claim: the piecewise surface of the sphere of seven cells, sphere_region). Kleene's logic reads
 /// it through the cover: a box is in where every case has its piece out or its formula in, out
-/// where every case has its piece out or its formula out. A box on which every piece is out
-/// contradicts the cover and is a DomainError (the claim is checked wherever it is tested).
+/// where every case has its piece out or its formula out (no piece at all: out, the union
+/// reading). The cover is checked at a grid of points over the cells when a model's region or a
+/// trimmed document is read (cases_cover_gap: sampled, not proved).
 template <class T>
 struct Region {
   enum Kind { leaf, all_of, any_of, complement, cases };
@@ -108,6 +109,12 @@ template <class T>
 Region<T> cone_region(const T& r0, const T& r1, const T& h);
 template <class T>
 Region<T> torus_region(const T& R, const T& r);
+/// A point of the grid of (n + 1)^3 points over the box (min x, min y, min z, max x, max y, max z)
+/// where every piece of some `cases` node of R is out: a gap in the cover the node claims. The
+/// cover checked at those points only (sampled), not proved.
+template <class T>
+std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::array<T, 6>& box, int n = 8);
+
 /// The exact point set of the sphere of seven cells (vrep/primitives.hpp: sphere_cells with the same
 /// r, degree and pieces): any_of(the cube [-r/2, r/2]^3, cases over the six faces' cones cut into
 /// the patch's pieces). On the piece of face +z over s in [s_a, s_b], t in [t_a, t_b] (the cone

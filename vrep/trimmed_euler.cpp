@@ -45,7 +45,8 @@ using namespace vrep_detail;
 /// The formula in negation normal form: atoms "leaf >= 0" (sign +1) or "leaf <= 0" (sign -1), read
 /// non-strictly (closure) or strictly (interior).
 struct Nnf {
-  enum Kind { atom, all_of, any_of } kind = atom;
+  // by_reading: parts[0] for the closed reading, parts[1] for the strict one (a `cases` region).
+  enum Kind { atom, all_of, any_of, by_reading } kind = atom;
   int leaf = 0, sign = 1;
   std::vector<Nnf> parts;
 };
@@ -65,16 +66,34 @@ Nnf to_nnf(const Region<T>& R, bool negate, int& next_leaf) {
       for (const auto& p : R.parts) n.parts.push_back(to_nnf(p, negate, next_leaf));
       return n;
     case Region<T>::cases: {
-      // The union of piece and formula per case; its complement, the pieces covering space, the
-      // union of piece and not formula (the same closed sets up to the pieces' common boundaries).
-      n.kind = Nnf::any_of;
+      // The pieces covering space: the closed set is the union of piece and formula per case (its
+      // complement's, of piece and not formula); the open set the intersection over the cases of
+      // (outside the piece or inside the formula), which keeps the pieces' common boundaries
+      // where both formulas hold strictly (the union's strict reading would drop them).
+      const int first = next_leaf;
+      Nnf closed, open;
+      closed.kind = Nnf::any_of;
+      open.kind = Nnf::all_of;
       for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
         Nnf both;
         both.kind = Nnf::all_of;
         both.parts.push_back(to_nnf(R.parts[i], false, next_leaf));
         both.parts.push_back(to_nnf(R.parts[i + 1], negate, next_leaf));
-        n.parts.push_back(std::move(both));
+        closed.parts.push_back(std::move(both));
       }
+      const int last = next_leaf;
+      next_leaf = first;
+      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
+        Nnf either;
+        either.kind = Nnf::any_of;
+        either.parts.push_back(to_nnf(R.parts[i], true, next_leaf));
+        either.parts.push_back(to_nnf(R.parts[i + 1], negate, next_leaf));
+        open.parts.push_back(std::move(either));
+      }
+      next_leaf = last;
+      n.kind = Nnf::by_reading;
+      n.parts.push_back(std::move(closed));
+      n.parts.push_back(std::move(open));
       return n;
     }
   }
@@ -118,6 +137,7 @@ Truth atom_truth(const Signs& s, int sign, bool strict) {
 
 Truth eval(const Nnf& n, const std::vector<Signs>& s, bool strict) {
   switch (n.kind) {
+    case Nnf::by_reading: return eval(n.parts[strict ? 1 : 0], s, strict);
     case Nnf::atom: return atom_truth(s[static_cast<std::size_t>(n.leaf)], n.sign, strict);
     case Nnf::all_of: {
       Truth t = Truth::in;
@@ -135,6 +155,7 @@ Truth eval(const Nnf& n, const std::vector<Signs>& s, bool strict) {
 
 /// The leaves of the atoms undecided on the cell.
 void undecided_leaves(const Nnf& n, const std::vector<Signs>& s, bool strict, std::vector<char>& out) {
+  if (n.kind == Nnf::by_reading) return undecided_leaves(n.parts[strict ? 1 : 0], s, strict, out);
   if (n.kind != Nnf::atom) {
     for (const auto& p : n.parts) undecided_leaves(p, s, strict, out);
     return;
@@ -146,6 +167,7 @@ void undecided_leaves(const Nnf& n, const std::vector<Signs>& s, bool strict, st
 /// which its leaf is increasing (mono +1), decreasing (-1) or constant (0; both senses). False
 /// when two atoms disagree or a leaf is not monotone (2).
 bool sense_of(const Nnf& n, const std::vector<Signs>& s, bool strict, const std::vector<int>& mono, int& sense) {
+  if (n.kind == Nnf::by_reading) return sense_of(n.parts[strict ? 1 : 0], s, strict, mono, sense);
   if (n.kind != Nnf::atom) {
     for (const auto& p : n.parts)
       if (!sense_of(p, s, strict, mono, sense)) return false;

@@ -2,6 +2,7 @@
 // vrep/instances.cpp.
 #pragma once
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <deque>
 #include <iterator>
@@ -162,10 +163,9 @@ Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k
         out = out && f == Truth::out;
       }
       if (planted) return some_in ? Truth::in : Truth::mixed;
-      if (!some_piece && !R.parts.empty())
-        throw DomainError("region" + (R.label.empty() ? std::string() : " (" + R.label + ")"),
-                          "has cases whose pieces do not cover space: a box or point lies in none of them",
-                          "give pieces that cover space (a piecewise region's pieces must)");
+      // No piece at all (a sign pattern the pieces' cover rules out, which callers that force
+      // leaves may ask about): the union reading, out.
+      if (!some_piece) return Truth::out;
       return in ? Truth::in : out ? Truth::out : Truth::mixed;
     }
   }
@@ -1479,9 +1479,49 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
 }
 
 template <class T>
+std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::array<T, 6>& box, int n) {
+  if (n < 1) throw ValidationError("samples", "must be at least 1", "give n >= 1");
+  std::vector<const Region<T>*> nodes;
+  std::function<void(const Region<T>&)> walk = [&](const Region<T>& x) {
+    if (x.kind == Region<T>::cases) nodes.push_back(&x);
+    for (const auto& p : x.parts) walk(p);
+  };
+  walk(R);
+  if (nodes.empty()) return std::nullopt;
+  std::vector<T> x(3);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        const int at[3] = {i, j, k};
+        for (int d = 0; d < 3; ++d) x[d] = box[d] + (box[d + 3] - box[d]) * T(at[d]) / T(n);
+        for (const auto* c : nodes) {
+          bool covered = false;
+          for (std::size_t q = 0; q + 1 < c->parts.size() && !covered; q += 2) covered = classify_point(c->parts[q], x) != Truth::out;
+          if (!covered) return x;
+        }
+      }
+  return std::nullopt;
+}
+
+template <class T>
 std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, const TrimOptions& options, const Limits& limits) {
   using namespace vrep_detail;
   std::vector<std::string> fails;
+  // The cover a piecewise region claims, at a grid of points over the cells (sampled).
+  if (!M.trivariates.empty()) {
+    std::array<T, 6> box = control_bounds(M.trivariates.front());
+    for (const auto& V : M.trivariates) {
+      const auto b = control_bounds(V);
+      for (int d = 0; d < 3; ++d) {
+        box[d] = std::min(box[d], b[d]);
+        box[d + 3] = std::max(box[d + 3], b[d + 3]);
+      }
+    }
+    if (const auto gap = cases_cover_gap(R, box, 8))
+      fails.push_back("its cases' pieces do not cover the point (" + ArithTraits<T>::to_string((*gap)[0]) + ", " + ArithTraits<T>::to_string((*gap)[1]) +
+                      ", " + ArithTraits<T>::to_string((*gap)[2]) +
+                      ") (the cover checked at 729 points over the cells)");
+  }
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(R, leaves);
   for (std::size_t c = 0; c < M.cells.size(); ++c) {
