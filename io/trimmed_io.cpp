@@ -171,26 +171,14 @@ TrimmedModel<Rational> trimmed_from_json(const Json& doc, const Limits& limits, 
   }
   M.trivariates.insert(M.trivariates.end(), inherited.begin(), inherited.end());
   // The cover that piecewise regions (`cases`) claim, at a grid of points over the cells (sampled).
-  std::optional<std::array<Rational, 6>> box;
-  for (const auto& V : M.trivariates) {
-    if (V.q < 3 || V.points.empty()) continue;  // (refused later by the engines that need points in R^3)
-    const auto b = control_bounds(V);
-    if (!box) box = b;
-    for (int d = 0; d < 3; ++d) {
-      (*box)[d] = std::min((*box)[d], b[d]);
-      (*box)[d + 3] = std::max((*box)[d + 3], b[d + 3]);
-    }
-  }
   auto cover = [&](const Region<Rational>& R, const std::string& field) {
-    if (const auto gap = cases_cover_gap(R, *box, 8))
+    if (const auto gap = cases_cover_gap(R, M.trivariates, 8))
       throw ValidationError(field, "has cases whose pieces do not cover the point (" + to_fraction_string((*gap)[0]) + ", " +
                                        to_fraction_string((*gap)[1]) + ", " + to_fraction_string((*gap)[2]) + ")",
                             "give pieces that cover space (checked at 729 points over the cells)");
   };
-  if (box) {
-    cover(M.region, where + ".region");
-    for (std::size_t i = 0; i < M.cells.size(); ++i) cover(M.cells[i].trim, where + ".cells[" + std::to_string(i) + "].trim");
-  }
+  cover(M.region, where + ".region");
+  for (std::size_t i = 0; i < M.cells.size(); ++i) cover(M.cells[i].trim, where + ".cells[" + std::to_string(i) + "].trim");
   return M;
 }
 

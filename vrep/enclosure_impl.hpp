@@ -232,15 +232,8 @@ std::pair<SBern<T>, SBern<T>> split_half(const SBern<T>& b, int d) {
   }
 }
 
-/// Integer tables for exact arithmetic: binomials, and their least common multiples.
-inline const std::vector<Integer>& integer_binomials(int n) {
-  thread_local std::map<int, std::vector<Integer>> cache;
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  std::vector<Integer> row(static_cast<std::size_t>(n) + 1);
-  for (int k = 0; k <= n; ++k) mpz_bin_uiui(row[k].backend().data(), static_cast<unsigned long>(n), static_cast<unsigned long>(k));
-  return cache.emplace(n, std::move(row)).first->second;
-}
+/// Integer tables for exact arithmetic (integer_binomials, tensor_binomial_integers: vrep/trimmed_impl.hpp):
+/// the least common multiple of a row of binomials.
 inline const Integer& binomial_lcm(int n) {
   thread_local std::map<int, Integer> cache;
   auto it = cache.find(n);
@@ -250,19 +243,6 @@ inline const Integer& binomial_lcm(int n) {
   return cache.emplace(n, std::move(l)).first->second;
 }
 
-/// prod_l C(deg_l, idx_l) for every flat index (integers), kept per thread.
-inline const std::vector<Integer>& tensor_binomial_integers(const std::vector<int>& deg) {
-  thread_local std::map<std::vector<int>, std::vector<Integer>> cache;
-  auto it = cache.find(deg);
-  if (it != cache.end()) return it->second;
-  std::vector<Integer> out(detail::tensor_size(deg), Integer(1));
-  std::vector<int> idx(deg.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    detail::unflatten(i, deg, idx);
-    for (std::size_t l = 0; l < deg.size(); ++l) out[i] *= integer_binomials(deg[l])[idx[l]];
-  }
-  return cache.emplace(deg, std::move(out)).first->second;
-}
 /// For a product's degrees: L = prod_l lcm_k C(deg_l, k) and the factors L / prod_l C(deg_l, idx_l).
 struct ProductFactors {
   std::vector<Integer> factor;
@@ -1192,7 +1172,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
 
   // The checks and the initial boxes: every Bezier piece of every cell.
   std::vector<Box> initial;
-  std::size_t initial_carried = 0;
+  CarriedCoefficients initial_carried{limits};
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const std::string who = cells.size() == 1 ? std::string() : "cells[" + std::to_string(c) + "].";
     if (!cells[c].trivariate) throw ValidationError(who + "trivariate", "is missing", "give the cell's trivariate");
@@ -1217,7 +1197,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     cell.mhi.assign(K, T(0));
     // Limits before the work: all leaves composed on one piece; the boxes' compositions are
     // counted as they are made (a box carries only the leaves that can still change its truth).
-    limits.check_count(composed_leaves_size(V, cell.leaves, limits), "region composed with a piece of the trivariate");
+    composed_leaves_size(V, cell.leaves, limits);
     // The moments' scales: the largest |coordinate| (or |field component|) of the control points.
     for (std::size_t k = 0; k < K; ++k) {
       const BSpline<T>& S = field ? *field : V;
@@ -1248,13 +1228,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       live_leaves(*cell.trim, b.lt, live);
       for (std::size_t l = 0; l < cell.leaves.size(); ++l)
         if (cell.leaves[l]->degree() > 1 && live[l]) b.G[l] = scaled(compose_leaf(*cell.leaves[l], powers));
-      // The initial boxes' compositions against the limit, as they are made.
-      for (const auto& G : b.G) initial_carried += G.c.size();
-      if (initial_carried > limits.max_control_points)
-        throw SizeLimitError("region composed on the subdivision boxes",
-                             "the cells' pieces would carry " + std::to_string(initial_carried) +
-                                 " coefficients of the region's leaves, above the limit of " + std::to_string(limits.max_control_points),
-                             "raise the limit with --max-control-points");
+      initial_carried.add(CarriedCoefficients::of(b.G), "the cells' pieces");  // as they are made
       const Bern<T> N = jacobian_numerator(pc.spline);
       if (cell.orientation == 0) {
         // N's mean is its integral over the piece, W^4 > 0: a regular cell's orientation.
@@ -1608,12 +1582,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     }
   };
   // The leaves' coefficients carried by the boxes in the pool, against the limit.
-  std::size_t carried = 0;
-  auto carried_by = [](const Box& b) {
-    std::size_t n = 0;
-    for (const auto& G : b.G) n += G.c.size();
-    return n;
-  };
+  CarriedCoefficients carried{limits};
   // The two parts of b across b.dir at 1/2 (or at b.at for a parameter plane).
   auto split = [&](Box& b, Box* c) {
     const int dir = b.dir;
@@ -1652,12 +1621,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     ++C[b.cell].boxes;
     add_bounds(b, false);
     if (!alive) return;
-    carried += carried_by(b);
-    if (carried > limits.max_control_points)
-      throw SizeLimitError("region composed on the subdivision boxes",
-                           "the boxes would carry " + std::to_string(carried) + " coefficients of the region's leaves, above the limit of " +
-                               std::to_string(limits.max_control_points),
-                           "lower --boxes, or raise the limit with --max-control-points");
+    carried.add(CarriedCoefficients::of(b.G));
     std::size_t slot;
     if (!free_slots.empty()) {
       slot = free_slots.back();
@@ -1693,7 +1657,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
     queue.pop();
     Box b = std::move(pool[slot]);
     free_slots.push_back(slot);
-    carried -= carried_by(b);
+    carried.remove(CarriedCoefficients::of(b.G));
     add_bounds(b, true);
     --leaves;
     --C[b.cell].boxes;

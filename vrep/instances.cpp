@@ -174,7 +174,7 @@ const char* to_string(Regularity r) {
   template Region<T> torus_region(const T&, const T&);                                                               \
   template Region<T> ball_region(const std::array<T, 3>&, const T&);                                                 \
   template Region<T> sphere_region(const T&, int, int);                                                                \
-  template std::optional<std::vector<T>> cases_cover_gap(const Region<T>&, const std::array<T, 6>&, int);                  \
+  template std::optional<std::vector<T>> cases_cover_gap(const Region<T>&, const std::vector<BSpline<T>>&, int);                     \
   template Region<T> region_cases(std::vector<std::pair<Region<T>, Region<T>>>);                                       \
   template std::optional<Region<T>> planar_region(const VModel<T>&, const T&);                                       \
   template Region<T> place_region(const Region<T>&, int, const std::vector<T>&);                                     \

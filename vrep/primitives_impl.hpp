@@ -83,6 +83,12 @@ inline CubeSphereWeights cube_sphere_weights(int degree, int pieces) {
   return W;
 }
 
+/// The rotations of the cube taking face +z to the faces +z, -z, +x, -x, +y, -y (det +1): the
+/// signed permutations x'_a = sign_a x_{perm_a}, shared by the sphere's cells and its region.
+/// +z (s, t, 1), -z (s, -t, -1), +x (1, s, t), -x (-1, -s, t), +y (t, 1, s), -y (-t, -1, s).
+inline constexpr std::array<std::array<int, 3>, 6> cube_face_perm{{{0, 1, 2}, {0, 1, 2}, {2, 0, 1}, {2, 0, 1}, {1, 2, 0}, {1, 2, 0}}};
+inline constexpr std::array<std::array<int, 3>, 6> cube_face_sign{{{1, 1, 1}, {1, -1, -1}, {1, 1, 1}, {-1, -1, 1}, {1, 1, 1}, {-1, -1, 1}}};
+
 /// The points' first three coordinates mapped by the signed permutation x'_a = sign_a x_{perm_a}.
 template <class T>
 BSpline<T> rotated(BSpline<T> V, const std::array<int, 3>& perm, const std::array<int, 3>& sign) {
@@ -217,9 +223,7 @@ std::vector<BSpline<T>> sphere_cells(const T& r, int degree, int pieces) {
   std::vector<BSpline<T>> out = box_cells(std::vector<T>{-c, -c, -c}, std::vector<T>{c, c, c});
   // The six faces by rotations of the cube (det +1, so every cell keeps det J > 0):
   // +z (s, t, 1), -z (s, -t, -1), +x (1, s, t), -x (-1, -s, t), +y (t, 1, s), -y (-t, -1, s).
-  const std::array<std::array<int, 3>, 6> perm{{{0, 1, 2}, {0, 1, 2}, {2, 0, 1}, {2, 0, 1}, {1, 2, 0}, {1, 2, 0}}};
-  const std::array<std::array<int, 3>, 6> sign{{{1, 1, 1}, {1, -1, -1}, {1, 1, 1}, {-1, -1, 1}, {1, 1, 1}, {-1, -1, 1}}};
-  for (int f = 0; f < 6; ++f) out.push_back(vrep_detail::rotated(cell, perm[f], sign[f]));
+  for (int f = 0; f < 6; ++f) out.push_back(vrep_detail::rotated(cell, vrep_detail::cube_face_perm[f], vrep_detail::cube_face_sign[f]));
   return out;
 }
 

@@ -109,11 +109,11 @@ template <class T>
 Region<T> cone_region(const T& r0, const T& r1, const T& h);
 template <class T>
 Region<T> torus_region(const T& R, const T& r);
-/// A point of the grid of (n + 1)^3 points over the box (min x, min y, min z, max x, max y, max z)
-/// where every piece of some `cases` node of R is out: a gap in the cover the node claims. The
-/// cover checked at those points only (sampled), not proved.
+/// A point of the grid of (n + 1)^3 points over the box of the cells' control points (those in
+/// R^3) where every piece of some `cases` node of R is out: a gap in the cover the node claims.
+/// The cover checked at those points only (sampled), not proved.
 template <class T>
-std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::array<T, 6>& box, int n = 8);
+std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::vector<BSpline<T>>& cells, int n = 8);
 
 /// The exact point set of the sphere of seven cells (vrep/primitives.hpp: sphere_cells with the same
 /// r, degree and pieces): any_of(the cube [-r/2, r/2]^3, cases over the six faces' cones cut into

@@ -70,27 +70,23 @@ Nnf to_nnf(const Region<T>& R, bool negate, int& next_leaf) {
       // complement's, of piece and not formula); the open set the intersection over the cases of
       // (outside the piece or inside the formula), which keeps the pieces' common boundaries
       // where both formulas hold strictly (the union's strict reading would drop them).
-      const int first = next_leaf;
+      // Each case read twice over the same leaves: piece and formula (closed), not piece or formula (open).
       Nnf closed, open;
       closed.kind = Nnf::any_of;
       open.kind = Nnf::all_of;
       for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
-        Nnf both;
+        const int first = next_leaf;
+        Nnf both, either;
         both.kind = Nnf::all_of;
         both.parts.push_back(to_nnf(R.parts[i], false, next_leaf));
         both.parts.push_back(to_nnf(R.parts[i + 1], negate, next_leaf));
-        closed.parts.push_back(std::move(both));
-      }
-      const int last = next_leaf;
-      next_leaf = first;
-      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
-        Nnf either;
+        next_leaf = first;  // the same leaves again
         either.kind = Nnf::any_of;
         either.parts.push_back(to_nnf(R.parts[i], true, next_leaf));
         either.parts.push_back(to_nnf(R.parts[i + 1], negate, next_leaf));
+        closed.parts.push_back(std::move(both));
         open.parts.push_back(std::move(either));
       }
-      next_leaf = last;
       n.kind = Nnf::by_reading;
       n.parts.push_back(std::move(closed));
       n.parts.push_back(std::move(open));

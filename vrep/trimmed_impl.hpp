@@ -282,6 +282,28 @@ Truth coefficient_truth(const Bern<T>& G, const T& eps) {
   return nonneg ? Truth::in : Truth::mixed;
 }
 
+/// The coefficients of the region's leaves that the subdivision boxes alive carry, against the
+/// limit (counted as they are made: a box carries only the leaves that can still change its truth).
+struct CarriedCoefficients {
+  const Limits& limits;
+  std::size_t n = 0;
+  template <class Leaves>
+  static std::size_t of(const Leaves& G) {
+    std::size_t k = 0;
+    for (const auto& g : G) k += g.c.size();
+    return k;
+  }
+  void add(std::size_t k, const std::string& who = "the boxes") {
+    n += k;
+    if (n > limits.max_control_points)
+      throw SizeLimitError("region composed on the subdivision boxes",
+                           who + " would carry " + std::to_string(n) + " coefficients of the region's leaves, above the limit of " +
+                               std::to_string(limits.max_control_points),
+                           "lower --boxes, or raise the limit with --max-control-points");
+  }
+  void remove(std::size_t k) { n -= k; }
+};
+
 /// Whether every Bernstein coefficient is > eps or every one < -eps (then every value is too).
 template <class T>
 bool strictly_signed(const Bern<T>& G, const T& eps) {
@@ -364,18 +386,28 @@ inline IntTensor int_product(const IntTensor& a, const IntTensor& b) {
   return r;
 }
 
-/// prod_d C(deg_d, i_d) for every index of a tensor of degrees deg (first direction fastest).
-inline std::vector<Integer> tensor_binomials(const std::array<int, 3>& deg) {
-  std::array<std::vector<Integer>, 3> row;
-  for (int d = 0; d < 3; ++d) {
-    row[d].push_back(Integer(1));
-    for (int i = 1; i <= deg[d]; ++i) row[d].push_back(row[d].back() * (deg[d] - i + 1) / i);
+/// Integer tables for exact arithmetic: binomials (kept per thread).
+inline const std::vector<Integer>& integer_binomials(int n) {
+  thread_local std::map<int, std::vector<Integer>> cache;
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  std::vector<Integer> row(static_cast<std::size_t>(n) + 1);
+  for (int k = 0; k <= n; ++k) mpz_bin_uiui(row[k].backend().data(), static_cast<unsigned long>(n), static_cast<unsigned long>(k));
+  return cache.emplace(n, std::move(row)).first->second;
+}
+
+/// prod_l C(deg_l, idx_l) for every flat index (integers), kept per thread.
+inline const std::vector<Integer>& tensor_binomial_integers(const std::vector<int>& deg) {
+  thread_local std::map<std::vector<int>, std::vector<Integer>> cache;
+  auto it = cache.find(deg);
+  if (it != cache.end()) return it->second;
+  std::vector<Integer> out(detail::tensor_size(deg), Integer(1));
+  std::vector<int> idx(deg.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    detail::unflatten(i, deg, idx);
+    for (std::size_t l = 0; l < deg.size(); ++l) out[i] *= integer_binomials(deg[l])[idx[l]];
   }
-  std::vector<Integer> out;
-  for (int i2 = 0; i2 <= deg[2]; ++i2)
-    for (int i1 = 0; i1 <= deg[1]; ++i1)
-      for (int i0 = 0; i0 <= deg[0]; ++i0) out.push_back(row[0][i0] * row[1][i1] * row[2][i2]);
-  return out;
+  return cache.emplace(deg, std::move(out)).first->second;
 }
 
 /// The powers 0..k of a Bezier piece's homogeneous coordinates W, X, Y, Z and their products,
@@ -403,16 +435,16 @@ struct PiecePowers {
   void prepare_integer() {
     if (integer_ready) return;
     integer_ready = true;
-    std::array<Bern<T>, 4> h;
+    std::array<const Bern<T>*, 4> h;
     for (int c = 0; c < 4; ++c) {
-      h[c] = homogeneous(*piece, c);
-      for (const auto& x : h[c].c) mpz_lcm(D.backend().data(), D.backend().data(), boost::multiprecision::denominator(x).backend().data());
+      h[c] = &at(c, 1);
+      for (const auto& x : h[c]->c) mpz_lcm(D.backend().data(), D.backend().data(), boost::multiprecision::denominator(x).backend().data());
     }
     for (int c = 0; c < 4; ++c) {
-      for (int d = 0; d < 3; ++d) base[c].deg[d] = h[c].deg[d];
-      const auto binom = tensor_binomials(base[c].deg);
-      for (std::size_t i = 0; i < h[c].c.size(); ++i) {
-        const T v = h[c].c[i] * T(D);
+      for (int d = 0; d < 3; ++d) base[c].deg[d] = h[c]->deg[d];
+      const auto& binom = tensor_binomial_integers({base[c].deg[0], base[c].deg[1], base[c].deg[2]});
+      for (std::size_t i = 0; i < h[c]->c.size(); ++i) {
+        const T v = h[c]->c[i] * T(D);
         base[c].c.push_back(boost::multiprecision::numerator(v) * binom[i]);
       }
     }
@@ -468,7 +500,7 @@ Bern<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
       for (std::size_t i = 0; i < S.size(); ++i) S[i] += t.c[i];
     }
     // Back to the Bernstein coefficients' exact values: S / (prod C(k n_d, i_d) D^k E).
-    const auto binom = tensor_binomials({deg[0], deg[1], deg[2]});
+    const auto& binom = tensor_binomial_integers(deg);
     Integer scale = E;
     for (int i = 0; i < k; ++i) scale *= P.D;
     for (std::size_t i = 0; i < S.size(); ++i) G.c[i] = T(S[i]) / T(binom[i] * scale);
@@ -610,21 +642,9 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   TrimRun<T> out;
   auto& cls = out.cls;
   bool has_in = false, has_out = false;
-  // The leaves' coefficients carried by the boxes alive, against the limit.
-  std::size_t carried = 0;
-  auto count = [](const Box& b) {
-    std::size_t n = 0;
-    for (const auto& G : b.G) n += G.c.size();
-    return n;
-  };
-  auto take = [&](std::size_t n) {
-    carried += n;
-    if (carried > limits.max_control_points)
-      throw SizeLimitError("region composed on the subdivision boxes",
-                           "the boxes would carry " + std::to_string(carried) + " coefficients of the region's leaves, above the limit of " +
-                               std::to_string(limits.max_control_points),
-                           "lower --boxes, or raise the limit with --max-control-points");
-  };
+  CarriedCoefficients carried{limits};
+  auto count = [](const Box& b) { return CarriedCoefficients::of(b.G); };
+  auto take = [&](std::size_t n) { carried.add(n); };
   auto evaluate = [&](Box& b) {
     for (std::size_t l = 0; l < b.G.size(); ++l)
       if (!b.G[l].c.empty()) b.lt[l] = coefficient_truth(b.G[l], eps);
@@ -683,7 +703,6 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
     c[1].lo[dir] = mid;
   };
   const BezierForm<T> F = bezier_form(V, limits);
-  limits.check_count(per_piece, "region composed with a piece of the trivariate");
   std::optional<BezierForm<T>> FF;
   if (field && want_volume) FF = bezier_form(refined->second, limits);
   for (std::size_t k = 0; k < F.size(); ++k) {
@@ -724,7 +743,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
          (want_volume || !((has_in || !cls.inside.empty()) && (has_out || !cls.outside.empty())))) {
     Box b = std::move(todo.front());
     todo.pop_front();
-    carried -= count(b);
+    carried.remove(count(b));
     int dir = 0;
     for (int d = 1; d < 3; ++d)
       if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
@@ -791,7 +810,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
         }
       }
       Box c[2];
-      carried -= count(b);
+      carried.remove(count(b));
       split_box(b, dir, c);
       for (int h = 0; h < 2; ++h) {
         if (b.truth == Truth::in) c[h].truth = Truth::in;  // in stays in
@@ -1004,9 +1023,7 @@ Region<T> sphere_region(const T& r, int degree, int pieces) {
     const Upoly sigma{Rational(-sa / h), Rational(Rational(1) / h)}, rest{Rational(sb / h), Rational(Rational(-1) / h)};
     std::vector<Upoly> B;
     for (int k = 0; k <= degree; ++k) {
-      long choose = 1;
-      for (int e = 0; e < k; ++e) choose = choose * (degree - e) / (e + 1);
-      Upoly b{Rational(choose)};
+      Upoly b{Rational(integer_binomials(degree)[static_cast<std::size_t>(k)])};
       for (int e = 0; e < k; ++e) b = umul(b, sigma);
       for (int e = k; e < degree; ++e) b = umul(b, rest);
       B.push_back(std::move(b));
@@ -1045,8 +1062,8 @@ Region<T> sphere_region(const T& r, int degree, int pieces) {
   }
   // The faces by the rotations of sphere_cells: x'_a = sign_a x_perm_a, so g'(x') has the exponent
   // e[perm_a] at a and the sign prod sign_a^e[perm_a].
-  const std::array<std::array<int, 3>, 6> perm{{{0, 1, 2}, {0, 1, 2}, {2, 0, 1}, {2, 0, 1}, {1, 2, 0}, {1, 2, 0}}};
-  const std::array<std::array<int, 3>, 6> sign{{{1, 1, 1}, {1, -1, -1}, {1, 1, 1}, {-1, -1, 1}, {1, 1, 1}, {-1, -1, 1}}};
+  const auto& perm = cube_face_perm;
+  const auto& sign = cube_face_sign;
   const char* face_name[6] = {"+z", "-z", "+x", "-x", "+y", "-y"};
   auto rotate = [&](const Poly3<T>& g, int f) {
     Poly3<T> out;
@@ -1479,7 +1496,7 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
 }
 
 template <class T>
-std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::array<T, 6>& box, int n) {
+std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::vector<BSpline<T>>& cells, int n) {
   if (n < 1) throw ValidationError("samples", "must be at least 1", "give n >= 1");
   std::vector<const Region<T>*> nodes;
   std::function<void(const Region<T>&)> walk = [&](const Region<T>& x) {
@@ -1487,7 +1504,19 @@ std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::arr
     for (const auto& p : x.parts) walk(p);
   };
   walk(R);
-  if (nodes.empty()) return std::nullopt;
+  // The box of the cells' control points (those in R^3).
+  std::optional<std::array<T, 6>> bounds;
+  for (const auto& V : cells) {
+    if (V.q < 3 || V.points.empty()) continue;
+    const auto b = control_bounds(V);
+    if (!bounds) bounds = b;
+    for (int d = 0; d < 3; ++d) {
+      (*bounds)[d] = std::min((*bounds)[d], b[d]);
+      (*bounds)[d + 3] = std::max((*bounds)[d + 3], b[d + 3]);
+    }
+  }
+  if (nodes.empty() || !bounds) return std::nullopt;
+  const auto& box = *bounds;
   std::vector<T> x(3);
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
@@ -1508,20 +1537,9 @@ std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, co
   using namespace vrep_detail;
   std::vector<std::string> fails;
   // The cover a piecewise region claims, at a grid of points over the cells (sampled).
-  if (!M.trivariates.empty()) {
-    std::array<T, 6> box = control_bounds(M.trivariates.front());
-    for (const auto& V : M.trivariates) {
-      const auto b = control_bounds(V);
-      for (int d = 0; d < 3; ++d) {
-        box[d] = std::min(box[d], b[d]);
-        box[d + 3] = std::max(box[d + 3], b[d + 3]);
-      }
-    }
-    if (const auto gap = cases_cover_gap(R, box, 8))
-      fails.push_back("its cases' pieces do not cover the point (" + ArithTraits<T>::to_string((*gap)[0]) + ", " + ArithTraits<T>::to_string((*gap)[1]) +
-                      ", " + ArithTraits<T>::to_string((*gap)[2]) +
-                      ") (the cover checked at 729 points over the cells)");
-  }
+  if (const auto gap = cases_cover_gap(R, M.trivariates, 8))
+    fails.push_back("its cases' pieces do not cover the point (" + ArithTraits<T>::to_string((*gap)[0]) + ", " + ArithTraits<T>::to_string((*gap)[1]) +
+                    ", " + ArithTraits<T>::to_string((*gap)[2]) + ") (the cover checked at 729 points over the cells)");
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(R, leaves);
   for (std::size_t c = 0; c < M.cells.size(); ++c) {
