@@ -16,7 +16,9 @@ Commands add_crosscheck(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
   c->add_option("operation", o->op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
-  c->add_option("--float", o->float_arith, "double, mpfr:BITS, or flint (exact: must agree exactly)")->capture_default_str();
+  // --arith as every other command; --float, its old name, still read.
+  c->add_option("--arith,--float", o->float_arith, "the arithmetic compared with exact: double, mpfr:BITS or flint (flint must agree exactly)")
+      ->capture_default_str();
   c->add_option("--grid", o->grid, "evaluation points per direction (0: 65/17/7 by dimension; at most 10000)")
       ->check(CLI::Range(0, 10000));
   c->add_option("--dir", o->op_options.dir, "parametric direction");
@@ -33,7 +35,7 @@ Commands add_crosscheck(CLI::App& app) {
              if (o->op == "elevate") op.elevate_method = m == "blossom" ? "blossom" : m == "a59" ? "a59" : "auto";
              if (o->op == "insert-knots" && o->op_options.knots.empty())
                throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
-             const auto rep = crosscheck(make_op(o->op, op), S, ArithSpec::parse(o->float_arith, "float"), o->grid, ctx.limits);
+             const auto rep = crosscheck(make_op(o->op, op), S, ArithSpec::parse(o->float_arith, "arith"), o->grid, ctx.limits);
              std::cout << rep.to_json().dump(2) << "\n";
              return 0;
            }}};

@@ -17,48 +17,14 @@
 #include "experiments/cut_figure.hpp"
 #include "experiments/svg_plot.hpp"
 #include "io/cut_io.hpp"
+#include "cut/io/documents.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex::app {
 
 namespace {
 
-// An exact value and its double (or, beyond double's range, log2 of its magnitude).
-Json q_json(const Rational& x) {
-  Json j{{"exact", to_fraction_string(x)}};
-  const double d = to_double(x);
-  if (std::isfinite(d)) j["approx"] = d;
-  else j["log2_abs"] = log2_abs(x);
-  return j;
-}
-
-Json separation_json(const SeparationResult& s) {
-  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
-  if (s.witness) {
-    const auto& w = *s.witness;
-    j["witness"] = Json{{"facet", w.facet},
-                        {"parameter", to_fraction_string(w.param)},
-                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1])})},
-                        {"value", q_json(w.value)},
-                        {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
-  }
-  Json u = Json::array();
-  for (const auto& o : s.undecided) u.push_back(Json{{"facet", o.facet}, {"parameters", Json::array({to_fraction_string(o.lo), to_fraction_string(o.hi)})}});
-  j["undecided"] = u;
-  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
-                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : s.reason;
-  return j;
-}
-
-// The double guide's coefficients against the exact minimizer, measured exactly.
-Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
-  const auto e = coefficient_error(exact, rounded);
-  Json cmp{{"max_abs_error", q_json(e.max_abs_error)}, {"bits_lost", e.bits_lost}};
-  cmp["max_rel_error"] = e.max_abs > 0 && e.max_abs_error > 0 ? to_double(Rational(e.max_abs_error / e.max_abs)) : 0.0;
-  cmp["meaning"] = "the double guide's coefficients against the exact minimizer (Lemma 1: unique), measured exactly";
-  return cmp;
-}
+using namespace splinex::cut;  // the documents of cut/io/documents.hpp
 
 struct GuideCliOptions {
   std::string solid, cut, arith = "exact", svg, vtk, delta = "1/20", strip = "1/16", li = "1", lt = "1", lr = "1/100";
@@ -109,57 +75,6 @@ void check_cutting_curve_shape(const BSpline<Rational>& C) {
   if (!is_clamped(C.knots[0], C.degrees[0], C.count(0))) throw ValidationError("curve.knots", "is not clamped", "clamp the knot vector");
 }
 
-Json validity_json(const ValidityResult& v) {
-  Json j{{"verdict", v.verdict},
-         {"boundary_interpolation", v.interpolates},
-         {"tangent_conditions", v.tangents},
-         {"regular", v.regular},
-         {"injective", v.injective},
-         {"no_collision", v.inside},
-         {"pairs_examined", v.pairs}};
-  if (v.singular_s) j["singular_at"] = to_fraction_string(*v.singular_s);
-  if (v.witness) {
-    j["witness"] = Json{{"parameter", to_fraction_string(*v.witness_s)},
-                        {"point", Json::array({to_fraction_string((*v.witness)[0]), to_fraction_string((*v.witness)[1])})},
-                        {"meaning", v.witness_meaning}};
-  }
-  j["meaning"] = "each condition decided exactly (certified or violated, with a witness) or undecided at the subdivision budget";
-  return j;
-}
-
-template <class T>
-Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& sep) {
-  Json j;
-  j["arithmetic"] = ArithTraits<T>::name();
-  j["status"] = to_string(R.status);
-  j["inner_knots"] = Json::array({R.inner_knots, R.inner_knots_y});
-  j["inner_knots_tried"] = R.tried;
-  j["variables"] = R.program.n;
-  j["rows"] = R.program.rows.size();
-  j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}};
-  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1])})},
-                    {"scale", to_fraction_string(R.frame.scale)},
-                    {"meaning", "f* lives on [0,1]^2 in normalized coordinates (x - lo) / scale"}};
-  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
-  j["positive_definite"] = R.positive_definite;
-  if (R.status == QPStatus::optimal) {
-    j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
-    j["objective"] = q_json(R.solution.objective);
-    j["value_at_ends"] = Json::array({q_json(R.value_at_ends[0]), q_json(R.value_at_ends[1])});
-    j["gradient_error_squared_at_ends"] = Json::array({q_json(R.gradient_error2[0]), q_json(R.gradient_error2[1])});
-    j["guide"] = spline_to_json(R.f);
-  } else {
-    j["verdict"] = R.status == QPStatus::infeasible
-                       ? std::string("infeasible up to ") + std::to_string(R.inner_knots) + " inner knots (Farkas certificate " +
-                             (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
-                             (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") + ": raise --max-inner-knots, lower --delta, or widen --strip"
-                       : "unbounded";
-  }
-  if (sep) j["separation"] = separation_json(*sep);
-  j["seconds"] = R.seconds;
-  return j;
-}
-
 struct CertifyCliOptions {
   std::string solid, cut, curve, out;
 };
@@ -176,62 +91,6 @@ CurveInput read_curve_input(const CertifyCliOptions& o, const Context& ctx) {
   auto curve = spline_from_json(read_json_file(o.curve, ctx.read_limits), ctx.limits, "curve");
   check_cutting_curve_shape(curve);
   return {std::move(S), std::move(C), std::move(curve)};
-}
-
-Json separation3_json(const SeparationResult3& s) {
-  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
-  if (s.witness) {
-    const auto& w = *s.witness;
-    j["witness"] = Json{{"facet", w.facet},
-                        {"parameters", Json::array({to_fraction_string(w.param[0]), to_fraction_string(w.param[1])})},
-                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1]), to_fraction_string(w.point[2])})},
-                        {"value", q_json(w.value)},
-                        {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
-  }
-  Json u = Json::array();
-  for (const auto& o : s.undecided)
-    u.push_back(Json{{"facet", o.facet},
-                     {"parameters", Json::array({Json::array({to_fraction_string(o.lo[0]), to_fraction_string(o.hi[0])}),
-                                                 Json::array({to_fraction_string(o.lo[1]), to_fraction_string(o.hi[1])})})}});
-  j["undecided"] = u;
-  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip around the loop, decided exactly"
-                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : s.reason;
-  return j;
-}
-
-template <class T>
-Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3>& sep) {
-  Json j;
-  j["arithmetic"] = ArithTraits<T>::name();
-  j["status"] = to_string(R.status);
-  j["inner_knots"] = R.inner_knots;
-  j["inner_knots_tried"] = R.tried;
-  j["variables"] = R.program.n;
-  j["rows"] = R.program.rows.size();
-  j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}, {"loop", R.loop_points.size()}};
-  j["loop_sides"] = R.loop.size();
-  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1]), to_fraction_string(R.frame.lo[2])})},
-                    {"scale", to_fraction_string(R.frame.scale)},
-                    {"meaning", "f* lives on [0,1]^3 in normalized coordinates (x - lo) / scale"}};
-  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
-  j["positive_definite"] = R.positive_definite;
-  if (R.status == QPStatus::optimal) {
-    j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
-    j["objective"] = q_json(R.solution.objective);
-    j["max_abs_value_on_loop_samples"] = q_json(R.max_abs_value_on_loop);
-    j["max_gradient_error_squared_on_loop_samples"] = q_json(R.max_gradient_error2);
-    j["guide"] = spline_to_json(R.f);
-  } else {
-    j["verdict"] = R.status == QPStatus::infeasible
-                       ? std::string("infeasible (Farkas certificate ") + (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
-                             (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") +
-                             ": raise --max-inner-knots, lower --delta, or widen --strip"
-                       : "unbounded";
-  }
-  if (sep) j["separation"] = separation3_json(*sep);
-  j["seconds"] = R.seconds;
-  return j;
 }
 
 GuideOptions3 to_guide3_options(const GuideCliOptions& go) {
@@ -320,87 +179,6 @@ SurfaceFacetOptions to_surface_options(const Facet3CliOptions& f) {
   o.progress = true;
   validate_surface_options(o);
   return o;
-}
-
-// The patch between normalized and solid coordinates (exact).
-BSpline<Rational> patch_from_frame(BSpline<Rational> p, const Frame3& f) {
-  for (std::size_t i = 0; i < p.points.size(); ++i) p.points[i] = f.lo[i % 3] + f.scale * p.points[i];
-  return p;
-}
-BSpline<Rational> patch_to_frame(BSpline<Rational> p, const Frame3& f) {
-  for (std::size_t i = 0; i < p.points.size(); ++i) p.points[i] = (p.points[i] - f.lo[i % 3]) / f.scale;
-  return p;
-}
-
-Json point3_json(const std::array<Rational, 3>& x) {
-  return Json::array({to_fraction_string(x[0]), to_fraction_string(x[1]), to_fraction_string(x[2])});
-}
-
-Json surface_validity_json(const SurfaceValidity& v, const Frame3& f) {
-  Json j{{"verdict", v.verdict},
-         {"vertices_interpolated_exactly", v.vertices_exact},
-         {"vertex_error_normalized", q_json(v.vertex_error)},
-         {"boundary_deviation_bound_normalized", q_json(v.boundary_deviation)},
-         {"boundary_meaning", "p interpolates the loop at Omega's vertices; between them |p(e(s)) - L(s)|_inf <= this bound (Bernstein coefficients, exact)"},
-         {"tangents", v.tangents},
-         {"tangents_meaning", "t . (dp/dm) > 0 along every edge of Omega, m its inward normal: the prescribed tangents point into the patch"},
-         {"regular", v.regular},
-         {"injective", v.injective},
-         {"regularity_method", v.regularity_method},
-         {"collision", v.collision},
-         {"collision_pieces", Json{{"certified", v.collision_pieces}, {"in_strip", v.collision_excluded}, {"undecided", v.collision_undecided}}},
-         {"membership_test", v.membership},
-         {"seconds", v.seconds}};
-  if (v.witness) {
-    const auto& w = *v.witness;
-    std::array<Rational, 3> x;
-    for (int c = 0; c < 3; ++c) x[c] = f.lo[c] + f.scale * w.point[c];
-    j["witness"] = Json{{"condition", w.condition},
-                        {"parameters", Json::array({to_fraction_string(w.param[0]), to_fraction_string(w.param[1])})},
-                        {"point", point3_json(x)},
-                        {"detail", w.detail}};
-    if (w.condition == "tangent") j["witness"]["value"] = q_json(w.value);
-  }
-  j["meaning"] = v.verdict == "valid" ? "Section 2's conditions hold: interpolation at the vertices exact, tangents, regularity, injectivity and no collision "
-                                        "outside the strip certified exactly"
-                 : v.verdict == "invalid" ? "a condition fails at the witness, an exact point"
-                                          : "no condition fails at a point found, but some could not be certified (see above)";
-  return j;
-}
-
-template <class T>
-Json surface_json(const CuttingSurface<T>& R, const Frame3& f) {
-  Json dom = Json::array();
-  for (const auto& w : R.domain.vertices) dom.push_back(Json::array({to_fraction_string(w[0]), to_fraction_string(w[1])}));
-  Json j{{"arithmetic", ArithTraits<T>::name()},
-         {"domain", Json{{"method", R.domain.method}, {"vertices", dom}, {"projection_axes", Json::array({R.domain.axes[0], R.domain.axes[1]})}}},
-         {"variables", R.variables},
-         {"equalities", R.equalities},
-         {"inequalities", R.inequalities},
-         {"active_inequalities", R.active_inequalities},
-         {"solver", R.solver},
-         {"kkt", Json{{"holds", R.kkt_holds}, {"failed", R.kkt_failed}}},
-         {"seconds", R.seconds},
-         {"surface", cutting_surface_to_json(patch_from_frame(R.patch, f), R.domain.vertices)}};
-  if (!R.domain.why_not_projection.empty()) j["domain"]["why_not_projection"] = R.domain.why_not_projection;
-  if (!R.domain.why_not_qp.empty()) j["domain"]["why_not_qp"] = R.domain.why_not_qp;
-  j["kkt"]["meaning"] = ArithTraits<T>::exact
-                            ? (R.kkt_holds ? "proved: the minimizer of the patch program (KKT conditions checked exactly)" : "not proved: " + R.kkt_failed)
-                            : "a double solution: judge it against --arith exact";
-  return j;
-}
-
-Json guided_json(const GuidedResult& g, double weight, const GuideOptions3& o, const std::string& guide_status) {
-  return Json{{"guide", guide_status},
-              {"weight", weight},
-              {"guide_inner_knots", Json::array({o.inner_knots[0] < 0 ? o.base.inner_knots : o.inner_knots[0], o.inner_knots[1], o.inner_knots[2]})},
-              {"iterations", g.iterations},
-              {"samples", g.samples},
-              {"objective", Json{{"before", g.objective_before}, {"after", g.objective_after}}},
-              {"max_abs_f_on_samples", Json{{"before", g.max_abs_f_before}, {"after", g.max_abs_f_after}}},
-              {"seconds", g.seconds},
-              {"meaning", "Eq. 6 (at this weight; the paper's is 10) added and minimized by Gauss-Newton in double from the initial patch, then projected "
-                          "exactly onto the vertex equalities; the validity above is decided exactly on that patch"}};
 }
 
 // The two parts of a valid surface's split, as facet lists, into dir/split.json.
@@ -594,22 +372,41 @@ int run_split3(const std::string& solid_file, const std::string& cut_file, const
   return 0;
 }
 
-}  // namespace
-
-Commands add_cut(CLI::App& app) {
-  auto* cut = app.add_subcommand("cut", "cutting curves and surfaces for isogeometric segmentation (papers/004): example, guide, facet, certify, split (d = 2 and 3)");
-  cut->require_subcommand(1);
-
+/// splinex cut example
+Command cut_example_command(CLI::App* parent) {
   struct ExampleOptions {
     std::string name, out = ".";
   };
   auto eo = std::make_shared<ExampleOptions>();
-  auto* ex = cut->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
+  auto* ex = parent->add_subcommand("example", "write an example solid and its cutting data (NAME.solid.json, NAME.cut.json)");
   ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: tower, cube, slotted, maiden, vase, twisted-vase")->required();
   ex->add_option("--out", eo->out, "folder to write into")->check(output_folder())->capture_default_str();
+  return {ex, [eo](const Context&) {
+    Json s, c;
+    const auto names3 = cut_example3_names();
+    if (std::find(names3.begin(), names3.end(), eo->name) != names3.end()) {
+      const auto e = cut_example3(eo->name);
+      s = solid3_to_json(e.solid), c = cut3_to_json(e.cut);
+      s["description"] = e.description;
+    } else {
+      const auto e = cut_example(eo->name);
+      s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
+      s["description"] = e.description;
+    }
+    std::filesystem::create_directories(eo->out);
+    const std::string sp = (std::filesystem::path(eo->out) / (eo->name + ".solid.json")).string();
+    const std::string cp = (std::filesystem::path(eo->out) / (eo->name + ".cut.json")).string();
+    write_file_atomically(sp, s.dump(1) + "\n");
+    write_file_atomically(cp, c.dump(1) + "\n");
+    std::cout << Json{{"solid", sp}, {"cut", cp}}.dump() << "\n";
+    return 0;
+  }};
+}
 
+/// splinex cut guide
+Command cut_guide_command(CLI::App* parent) {
   auto go = std::make_shared<GuideCliOptions>();
-  auto* g = cut->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
+  auto* g = parent->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
   add_guide_options(g, *go);
   g->add_option("--inner-knots-z", go->inner_z, "solid3d: inner knots in z, if not as many as in x (-1)")->check(CLI::Range(-1, 1000))->capture_default_str();
   g->add_option("--loop-samples", go->loop_samples, "solid3d: points of L* per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -617,7 +414,62 @@ Commands add_cut(CLI::App& app) {
   add_arith_option(g, go->arith, "exact (the QP exactly, KKT checked), double (assembled in double), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
   g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here")->check(output_file());
+  return {g, [go](const Context& ctx) {
+    const Json solid_doc = read_json_file(go->solid, ctx.read_limits);
+    if (solid_document_type(solid_doc) == "solid3d") return run_guide3(*go, solid_doc, ctx);
+    if (!go->vtk.empty()) throw UsageError("vtk", "is for solid3d documents", "leave --vtk out, or give --svg for a 2D figure");
+    const auto S = solid2_from_json(solid_doc, ctx.limits);
+    const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
+    const GuideOptions o = to_guide_options(*go);
+    validate_cut(S, C);  // every typed error before the first progress line
+    validate_guide_options(o, S.facets.size());
+    if (go->arith != "double") check_exact_sizes(S, C, o);
+    auto run = [&](auto tag) {
+      using T = decltype(tag);
+      std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": solving RDCP\n";
+      const auto R = guide_curve<T>(S, C, o);
+      std::optional<SeparationResult> sep;
+      if (R.status == QPStatus::optimal) {
+        std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
+        sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
+      }
+      return std::make_pair(R, sep);
+    };
+    Json out;
+    std::string svg;
+    if (go->arith == "exact" || go->arith == "both") {
+      const auto [R, sep] = run(Rational());
+      out = guide_json(R, sep);
+      if (R.status == QPStatus::optimal)
+        svg = cut_guide_svg(R.solid, R.cut, R.f_exact, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
+                            "Guiding curve (papers/004 RDCP), exact, " + std::to_string(R.inner_knots) + " inner knots");
+      if (go->arith == "both") {
+        const auto [D, dsep] = run(double());
+        Json d = guide_json(D, dsep);
+        if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
+          const Json cmp = judged_against_exact(R.coefficients, D.f_exact.points);
+          d["judged_against_exact"] = cmp;
+        }
+        out = Json{{"exact", out}, {"double", d}};
+      }
+    } else {
+      const auto [D, dsep] = run(double());
+      out = guide_json(D, dsep);
+      if (D.status == QPStatus::optimal)
+        svg = cut_guide_svg(D.solid, D.cut, D.f_exact, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
+                            "Guiding curve (papers/004 RDCP), double, " + std::to_string(D.inner_knots) + " inner knots");
+    }
+    if (!go->svg.empty()) {
+      if (svg.empty()) throw DomainError("svg", "there is no guide to draw (RDCP infeasible)", "leave --svg out or make RDCP feasible");
+      write_file_atomically(go->svg, svg);
+    }
+    std::cout << out.dump() << "\n";
+    return 0;
+  }};
+}
 
+/// splinex cut facet
+Command cut_facet_command(CLI::App* parent) {
   struct FacetCliOptions {
     GuideCliOptions guide;
     int control_points = 8;
@@ -625,7 +477,7 @@ Commands add_cut(CLI::App& app) {
     std::string out;
   };
   auto fo = std::make_shared<FacetCliOptions>();
-  auto* fc = cut->add_subcommand("facet", "the cutting curve: the exact guide traced (march in double), fitted exactly (least squares, ends and "
+  auto* fc = parent->add_subcommand("facet", "the cutting curve: the exact guide traced (march in double), fitted exactly (least squares, ends and "
                                            "tangents imposed), its validity certified; with --out also the two sub-solids");
   add_guide_options(fc, fo->guide);
   fc->add_option("--control-points", fo->control_points, "control points of the fitted cubic")->check(CLI::Range(4, 1000))->capture_default_str();
@@ -655,9 +507,65 @@ Commands add_cut(CLI::App& app) {
   fc->add_option("--loop-samples", fo->guide.loop_samples, "solid3d --guided: points of L* per loop side")->check(CLI::Range(1, 1000))->capture_default_str();
   add_arith_option(fc, f3->arith, "solid3d: exact (KKT exactly), double (Eigen), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
+  return {fc, [fo, f3](const Context& ctx) {
+    if (solid_document_type(read_json_file(fo->guide.solid, ctx.read_limits)) == "solid3d") {
+      Facet3CliOptions o = *f3;
+      o.strip = fo->guide.strip;
+      o.out = fo->out;
+      return run_facet3(o, fo->guide, fo->guide.solid, fo->guide.cut, ctx);
+    }
+    if (f3->arith != "exact" || !f3->vtk.empty()) throw UsageError(f3->vtk.empty() ? "arith" : "vtk", "is for solid3d documents", "leave it out for a solid2d");
+    const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);
+    const auto C = cut2_from_json(read_json_file(fo->guide.cut, ctx.read_limits));
+    const GuideOptions o = to_guide_options(fo->guide);
+    validate_cut(S, C);
+    validate_guide_options(o, S.facets.size());
+    check_exact_sizes(S, C, o);
+    // No progress lines here: the march can still fail with a typed error, which must be the
+    // only line on stderr (the default sizes take seconds).
+    const auto R = guide_curve<Rational>(S, C, o);
+    if (R.status != QPStatus::optimal)
+      throw DomainError("guide", "RDCP is " + to_string(R.status) + " up to " + std::to_string(R.inner_knots) + " inner knots",
+                        "raise --max-inner-knots, lower --delta, or widen --strip");
+    const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
+    CurveFitOptions fo2;
+    fo2.control_points = fo->control_points;
+    fo2.step = fo->step;
+    const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo2);
+    const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
+    const auto curve = from_frame(cc.curve, R.frame);
+    Json out{{"guide", guide_json(R, sep)},
+             {"curve", spline_to_json(curve)},
+             {"march_points", cc.polygon.size()},
+             {"fit_max_deviation_normalized", cc.fit_max_deviation},
+             {"validity", validity_json(v)}};
+    out["guide"].erase("guide");
+    if (!fo->guide.svg.empty())
+      write_file_atomically(fo->guide.svg, cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, &sep,
+                                                         "Cutting curve (papers/004): guide, samples, fitted curve (" + v.verdict + ")", &cc.curve));
+    if (!fo->out.empty()) {
+      std::filesystem::create_directories(fo->out);
+      write_file_atomically((std::filesystem::path(fo->out) / "curve.json").string(), spline_to_json(curve).dump(1) + "\n");
+      if (v.verdict == "valid") {
+        const auto [S1, S2] = split_solid(S, validate_cut(S, C), curve);
+        write_file_atomically((std::filesystem::path(fo->out) / "part1.solid.json").string(), solid2_to_json(S1).dump(1) + "\n");
+        write_file_atomically((std::filesystem::path(fo->out) / "part2.solid.json").string(), solid2_to_json(S2).dump(1) + "\n");
+        out["split"] = Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
+                            {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
+                            {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
+      } else {
+        out["split"] = "not written: the curve is not certified valid";
+      }
+    }
+    std::cout << out.dump() << "\n";
+    return 0;
+  }};
+}
 
+/// splinex cut certify
+Command cut_certify_command(CLI::App* parent) {
   auto co = std::make_shared<CertifyCliOptions>();
-  auto* ce = cut->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
+  auto* ce = parent->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
   ce->add_option("solid", co->solid, "solid document")->required();
   ce->add_option("cut", co->cut, "cutting data document")->required();
   ce->add_option("curve", co->curve, "the cutting curve (a spline document: a polynomial curve in R^2, from the first cut point to the second); "
@@ -665,164 +573,51 @@ Commands add_cut(CLI::App& app) {
   auto c3 = std::make_shared<Facet3CliOptions>();
   ce->add_option("--strip", c3->strip, "solid3d: no collision check within this max-norm distance of the loop (normalized units)")->capture_default_str();
   ce->add_option("--max-depth", c3->max_depth, "solid3d: halvings of one piece")->check(CLI::Range(0, 40))->capture_default_str();
+  return {ce, [co, c3](const Context& ctx) {
+    if (solid_document_type(read_json_file(co->solid, ctx.read_limits)) == "solid3d") return run_certify3(*c3, co->solid, co->cut, co->curve, ctx);
+    const auto [S, C, curve] = read_curve_input(*co, ctx);
+    std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
+    return 0;
+  }};
+}
+
+/// splinex cut split
+Command cut_split_command(CLI::App* parent) {
   auto cso = std::make_shared<CertifyCliOptions>();
-  auto* sp = cut->add_subcommand("split", "split the solid along a cutting curve (solid3d: surface) certified valid: the two sub-solids' facets");
+  auto* sp = parent->add_subcommand("split", "split the solid along a cutting curve (solid3d: surface) certified valid: the two sub-solids' facets");
   sp->add_option("solid", cso->solid, "solid document")->required();
   sp->add_option("cut", cso->cut, "cutting data document")->required();
   sp->add_option("curve", cso->curve, "the cutting curve (spline document); solid3d: a cutting_surface document")->required();
   sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json (solid3d: split.json and surface.json)")->check(output_folder())->required();
+  return {sp, [cso](const Context& ctx) {
+    if (solid_document_type(read_json_file(cso->solid, ctx.read_limits)) == "solid3d") return run_split3(cso->solid, cso->cut, cso->curve, cso->out, ctx);
+    const auto [S, C, curve] = read_curve_input(*cso, ctx);
+    const auto v = certify_cutting_curve(S, C, curve);
+    if (v.verdict != "valid")
+      throw DomainError("curve", "is not certified valid (" + v.verdict + ": regular " + v.regular + ", injective " + v.injective +
+                                     ", no collision " + v.inside + ")",
+                        "run cut certify to see why; split along a valid cutting curve");
+    const auto [S1, S2] = split_solid(S, C, curve);
+    std::filesystem::create_directories(cso->out);
+    const std::string p1 = (std::filesystem::path(cso->out) / "part1.solid.json").string();
+    const std::string p2 = (std::filesystem::path(cso->out) / "part2.solid.json").string();
+    write_file_atomically(p1, solid2_to_json(S1).dump(1) + "\n");
+    write_file_atomically(p2, solid2_to_json(S2).dump(1) + "\n");
+    std::cout << Json{{"part1", p1}, {"part2", p2}, {"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
+                      {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
+                      {"area_check", "area(part1) + area(part2) = area(solid), exactly"}}.dump()
+              << "\n";
+    return 0;
+  }};
+}
 
-  return {{ex, [eo](const Context&) {
-             Json s, c;
-             const auto names3 = cut_example3_names();
-             if (std::find(names3.begin(), names3.end(), eo->name) != names3.end()) {
-               const auto e = cut_example3(eo->name);
-               s = solid3_to_json(e.solid), c = cut3_to_json(e.cut);
-               s["description"] = e.description;
-             } else {
-               const auto e = cut_example(eo->name);
-               s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
-               s["description"] = e.description;
-             }
-             std::filesystem::create_directories(eo->out);
-             const std::string sp = (std::filesystem::path(eo->out) / (eo->name + ".solid.json")).string();
-             const std::string cp = (std::filesystem::path(eo->out) / (eo->name + ".cut.json")).string();
-             write_file_atomically(sp, s.dump(1) + "\n");
-             write_file_atomically(cp, c.dump(1) + "\n");
-             std::cout << Json{{"solid", sp}, {"cut", cp}}.dump() << "\n";
-             return 0;
-           }},
-          {g, [go](const Context& ctx) {
-             const Json solid_doc = read_json_file(go->solid, ctx.read_limits);
-             if (solid_document_type(solid_doc) == "solid3d") return run_guide3(*go, solid_doc, ctx);
-             if (!go->vtk.empty()) throw UsageError("vtk", "is for solid3d documents", "leave --vtk out, or give --svg for a 2D figure");
-             const auto S = solid2_from_json(solid_doc, ctx.limits);
-             const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
-             const GuideOptions o = to_guide_options(*go);
-             validate_cut(S, C);  // every typed error before the first progress line
-             validate_guide_options(o, S.facets.size());
-             if (go->arith != "double") check_exact_sizes(S, C, o);
-             auto run = [&](auto tag) {
-               using T = decltype(tag);
-               std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": solving RDCP\n";
-               const auto R = guide_curve<T>(S, C, o);
-               std::optional<SeparationResult> sep;
-               if (R.status == QPStatus::optimal) {
-                 std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
-                 sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
-               }
-               return std::make_pair(R, sep);
-             };
-             Json out;
-             std::string svg;
-             if (go->arith == "exact" || go->arith == "both") {
-               const auto [R, sep] = run(Rational());
-               out = guide_json(R, sep);
-               if (R.status == QPStatus::optimal)
-                 svg = cut_guide_svg(R.solid, R.cut, R.f_exact, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
-                                     "Guiding curve (papers/004 RDCP), exact, " + std::to_string(R.inner_knots) + " inner knots");
-               if (go->arith == "both") {
-                 const auto [D, dsep] = run(double());
-                 Json d = guide_json(D, dsep);
-                 if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
-                   const Json cmp = judged_against_exact(R.coefficients, D.f_exact.points);
-                   d["judged_against_exact"] = cmp;
-                 }
-                 out = Json{{"exact", out}, {"double", d}};
-               }
-             } else {
-               const auto [D, dsep] = run(double());
-               out = guide_json(D, dsep);
-               if (D.status == QPStatus::optimal)
-                 svg = cut_guide_svg(D.solid, D.cut, D.f_exact, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
-                                     "Guiding curve (papers/004 RDCP), double, " + std::to_string(D.inner_knots) + " inner knots");
-             }
-             if (!go->svg.empty()) {
-               if (svg.empty()) throw DomainError("svg", "there is no guide to draw (RDCP infeasible)", "leave --svg out or make RDCP feasible");
-               write_file_atomically(go->svg, svg);
-             }
-             std::cout << out.dump() << "\n";
-             return 0;
-           }},
-          {fc, [fo, f3](const Context& ctx) {
-             if (solid_document_type(read_json_file(fo->guide.solid, ctx.read_limits)) == "solid3d") {
-               Facet3CliOptions o = *f3;
-               o.strip = fo->guide.strip;
-               o.out = fo->out;
-               return run_facet3(o, fo->guide, fo->guide.solid, fo->guide.cut, ctx);
-             }
-             if (f3->arith != "exact" || !f3->vtk.empty()) throw UsageError(f3->vtk.empty() ? "arith" : "vtk", "is for solid3d documents", "leave it out for a solid2d");
-             const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);
-             const auto C = cut2_from_json(read_json_file(fo->guide.cut, ctx.read_limits));
-             const GuideOptions o = to_guide_options(fo->guide);
-             validate_cut(S, C);
-             validate_guide_options(o, S.facets.size());
-             check_exact_sizes(S, C, o);
-             // No progress lines here: the march can still fail with a typed error, which must be the
-             // only line on stderr (the default sizes take seconds).
-             const auto R = guide_curve<Rational>(S, C, o);
-             if (R.status != QPStatus::optimal)
-               throw DomainError("guide", "RDCP is " + to_string(R.status) + " up to " + std::to_string(R.inner_knots) + " inner knots",
-                                 "raise --max-inner-knots, lower --delta, or widen --strip");
-             const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
-             CurveFitOptions fo2;
-             fo2.control_points = fo->control_points;
-             fo2.step = fo->step;
-             const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo2);
-             const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
-             const auto curve = from_frame(cc.curve, R.frame);
-             Json out{{"guide", guide_json(R, sep)},
-                      {"curve", spline_to_json(curve)},
-                      {"march_points", cc.polygon.size()},
-                      {"fit_max_deviation_normalized", cc.fit_max_deviation},
-                      {"validity", validity_json(v)}};
-             out["guide"].erase("guide");
-             if (!fo->guide.svg.empty())
-               write_file_atomically(fo->guide.svg, cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, &sep,
-                                                                  "Cutting curve (papers/004): guide, samples, fitted curve (" + v.verdict + ")", &cc.curve));
-             if (!fo->out.empty()) {
-               std::filesystem::create_directories(fo->out);
-               write_file_atomically((std::filesystem::path(fo->out) / "curve.json").string(), spline_to_json(curve).dump(1) + "\n");
-               if (v.verdict == "valid") {
-                 const auto [S1, S2] = split_solid(S, validate_cut(S, C), curve);
-                 write_file_atomically((std::filesystem::path(fo->out) / "part1.solid.json").string(), solid2_to_json(S1).dump(1) + "\n");
-                 write_file_atomically((std::filesystem::path(fo->out) / "part2.solid.json").string(), solid2_to_json(S2).dump(1) + "\n");
-                 out["split"] = Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-                                     {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-                                     {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
-               } else {
-                 out["split"] = "not written: the curve is not certified valid";
-               }
-             }
-             std::cout << out.dump() << "\n";
-             return 0;
-           }},
-          {ce, [co, c3](const Context& ctx) {
-             if (solid_document_type(read_json_file(co->solid, ctx.read_limits)) == "solid3d") return run_certify3(*c3, co->solid, co->cut, co->curve, ctx);
-             const auto [S, C, curve] = read_curve_input(*co, ctx);
-             std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
-             return 0;
-           }},
-          {sp, [cso](const Context& ctx) {
-             if (solid_document_type(read_json_file(cso->solid, ctx.read_limits)) == "solid3d") return run_split3(cso->solid, cso->cut, cso->curve, cso->out, ctx);
-             const auto [S, C, curve] = read_curve_input(*cso, ctx);
-             const auto v = certify_cutting_curve(S, C, curve);
-             if (v.verdict != "valid")
-               throw DomainError("curve", "is not certified valid (" + v.verdict + ": regular " + v.regular + ", injective " + v.injective +
-                                              ", no collision " + v.inside + ")",
-                                 "run cut certify to see why; split along a valid cutting curve");
-             const auto [S1, S2] = split_solid(S, C, curve);
-             std::filesystem::create_directories(cso->out);
-             const std::string p1 = (std::filesystem::path(cso->out) / "part1.solid.json").string();
-             const std::string p2 = (std::filesystem::path(cso->out) / "part2.solid.json").string();
-             write_file_atomically(p1, solid2_to_json(S1).dump(1) + "\n");
-             write_file_atomically(p2, solid2_to_json(S2).dump(1) + "\n");
-             std::cout << Json{{"part1", p1}, {"part2", p2}, {"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-                               {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-                               {"area_check", "area(part1) + area(part2) = area(solid), exactly"}}.dump()
-                       << "\n";
-             return 0;
-           }}};
+}  // namespace
+
+Commands add_cut(CLI::App& app) {
+  auto* cut = app.add_subcommand("cut", "cutting curves and surfaces for isogeometric segmentation (papers/004): example, guide, facet, certify, split (d = 2 and 3)");
+  cut->require_subcommand(1);
+  // In the order of --help.
+  return {cut_example_command(cut), cut_guide_command(cut), cut_facet_command(cut), cut_certify_command(cut), cut_split_command(cut)};
 }
 
 }  // namespace splinex::app

@@ -51,34 +51,6 @@ Json run_op_document(const Operation& op, const BSpline<Rational>& S, const Arit
 
 }  // namespace
 
-Operation make_op(const std::string& kind, const OpOptions& o) {
-  Operation op = Operation::parse_kind(kind);
-  op.dir = o.dir;
-  switch (op.kind) {
-    case Operation::Kind::insert_knots:
-      op.knots = parse_number_list(o.knots, "knots");
-      op.boehm = o.insert_method == "boehm";
-      break;
-    case Operation::Kind::elevate:
-      op.by = o.by;
-      op.method = o.elevate_method == "blossom" ? ElevationMethod::blossom
-                  : o.elevate_method == "a59"   ? ElevationMethod::bezier_pieces
-                                                : ElevationMethod::automatic;
-      break;
-    case Operation::Kind::split: op.at = parse_number(o.at, "at"); break;
-    case Operation::Kind::derivative: op.by = o.by; break;
-    case Operation::Kind::reparametrize: {
-      const auto v = parse_number_list(o.interval, "interval");
-      if (v.size() != 2) throw UsageError("interval", "needs two numbers", "write --interval \"lo,hi\"");
-      op.lo = v[0];
-      op.hi = v[1];
-      break;
-    }
-    default: break;
-  }
-  return op;
-}
-
 Commands add_operations(CLI::App& app) {
   Commands out;
   for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative"}) {

@@ -1,4 +1,5 @@
 // splinex report: the main job (experiments/): crosscheck suite, paper reproductions, figures.
+#include <iostream>
 #include <memory>
 
 #include "apps/command.hpp"
@@ -21,7 +22,16 @@ Commands add_report(CLI::App& app) {
                  "order of the progress lines and the times do")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  return {{c, [o](const Context&) { return run_report(*o); }}};
+  auto list = std::make_shared<bool>(false);
+  c->add_flag("--list-sections", *list, "print the sections as a Markdown table (what each reproduces, its time) and exit");
+  c->footer(report_section_table(false));
+  return {{c, [o, list](const Context&) {
+             if (*list) {
+               std::cout << report_section_table(true);
+               return 0;
+             }
+             return run_report(*o);
+           }}};
 }
 
 }  // namespace splinex::app

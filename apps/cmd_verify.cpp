@@ -30,9 +30,21 @@ std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::strin
 }
 
 /// 1 when --max-bits-lost is given and the candidate loses more or its structure differs.
+/// A line on stderr says which metric failed.
 int verdict_status(const VerifyReport& rep, double max_bits) {
   if (max_bits < 0) return 0;
-  return rep.worst_bits_lost() > max_bits || rep.structure == "different" ? 1 : 0;
+  const auto [part, bits] = rep.worst_part();
+  if (rep.structure == "different") {
+    std::cerr << "splinex: verify: the structure differs (" << (rep.structure_notes.empty() ? "see structure_notes" : rep.structure_notes.front())
+              << "), so --max-bits-lost fails\n";
+    return 1;
+  }
+  if (bits > max_bits) {
+    std::cerr << "splinex: verify: " << (part == "function" ? "the function-level error bound" : part == "values" ? "the values" : "the control points")
+              << " lose " << bits << " bits, over --max-bits-lost " << max_bits << "\n";
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace

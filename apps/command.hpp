@@ -58,17 +58,7 @@ Commands add_sweep(CLI::App& app);  // sweep plan, run, merge, single (experimen
 /// (the merged surfaces of the Utah teapot).
 BSpline<Rational> read_surface_argument(const std::string& what, const std::string& field, const Context& ctx);
 
-/// The options of the single-spline operations, shared by their commands and crosscheck.
-struct OpOptions {
-  int dir = 0;
-  std::string knots;
-  std::string insert_method = "a54";
-  int by = 1;
-  std::string elevate_method = "auto";
-  std::string at;
-  std::string interval;
-};
-Operation make_op(const std::string& kind, const OpOptions& o);
+// OpOptions and make_op (an operation from its text options) are in crosscheck/operations.hpp.
 
 /// Parsed numbers that must be whole and in [0, hi] (derivative orders, exponents); else
 /// UsageError(field, what, fix).

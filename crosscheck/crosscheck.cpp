@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "crosscheck/operations_impl.hpp"
+#include "io/json_io.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {
@@ -24,6 +25,34 @@ std::string Operation::name() const {
     case Kind::identity: break;
   }
   return "identity";
+}
+
+Operation make_op(const std::string& kind, const OpOptions& o) {
+  Operation op = Operation::parse_kind(kind);
+  op.dir = o.dir;
+  switch (op.kind) {
+    case Operation::Kind::insert_knots:
+      op.knots = parse_number_list(o.knots, "knots");
+      op.boehm = o.insert_method == "boehm";
+      break;
+    case Operation::Kind::elevate:
+      op.by = o.by;
+      op.method = o.elevate_method == "blossom" ? ElevationMethod::blossom
+                  : o.elevate_method == "a59"   ? ElevationMethod::bezier_pieces
+                                                : ElevationMethod::automatic;
+      break;
+    case Operation::Kind::split: op.at = parse_number(o.at, "at"); break;
+    case Operation::Kind::derivative: op.by = o.by; break;
+    case Operation::Kind::reparametrize: {
+      const auto v = parse_number_list(o.interval, "interval");
+      if (v.size() != 2) throw UsageError("interval", "needs two numbers", "write --interval \"lo,hi\"");
+      op.lo = v[0];
+      op.hi = v[1];
+      break;
+    }
+    default: break;
+  }
+  return op;
 }
 
 Operation Operation::parse_kind(const std::string& name) {
@@ -85,9 +114,10 @@ Json CrossReport::to_json() const {
   Json j;
   j["operation"] = operation;
   j["arith"] = arith;
-  j["precision_bits"] = precision;
-  j["structure_match"] = structure_match;
-  if (!structure_note.empty()) j["structure_note"] = structure_note;
+  // The field names of `splinex verify` (issue 48): "precision", "structure", "structure_notes".
+  j["precision"] = precision;
+  j["structure"] = structure_match ? "equal" : "different";
+  j["structure_notes"] = structure_note.empty() ? Json::array() : Json::array({structure_note});
   j["results"] = results;
   j["control_point_count"] = control_point_count;
   j["control_points"] = control_points.to_json(precision);

@@ -27,6 +27,20 @@ struct Operation {
   static Operation parse_kind(const std::string& name);  // UsageError for unknown names
 };
 
+/// An operation's options as text, as the command line, crosscheck and bench_document take them.
+struct OpOptions {
+  int dir = 0;
+  std::string knots;                  // insert-knots: comma-separated
+  std::string insert_method = "a54";  // insert-knots: a54 | boehm
+  int by = 1;                         // elevate: the amount; derivative: the order
+  std::string elevate_method = "auto";  // elevate: auto | a59 | blossom
+  std::string at;                     // split
+  std::string interval;               // reparametrize: "lo,hi"
+};
+/// The operation `kind` (insert-knots, elevate, ...) with those options, numbers read exactly
+/// (ParseError / UsageError naming the option).
+Operation make_op(const std::string& kind, const OpOptions& o);
+
 /// The result splines (one for most operations; the pieces or the two halves otherwise).
 template <class T>
 std::vector<BSpline<T>> run_operation(const Operation& op, const BSpline<T>& S, const Limits& limits);

@@ -379,6 +379,7 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
       // Domain ends rounded to the candidate's precision are accepted as interior knots are: the
       // candidate is compared after the affine map of its domain onto the reference's.
       if (auto mapped = onto_reference_domain(candidate[i], reference[i], options.precision)) {
+        rep.domain_mapped = true;
         rep.structure_notes.push_back(where + ": the domain ends are the reference's rounded to " + std::to_string(options.precision) +
                                       " bits; the functions are compared after the affine map of the candidate's domain onto "
                                       "the reference's");
@@ -481,16 +482,87 @@ VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::ve
                              options);
 }
 
-double VerifyReport::worst_bits_lost() const {
-  const Json j = to_json();
-  double worst = 0;
+std::pair<std::string, double> VerifyReport::worst_part() const {
+  const Json j = to_json_parts();
+  std::pair<std::string, double> worst{"", 0.0};
+  const auto take = [&](const std::string& name, const Json& part) {
+    if (part.contains("bits_lost") && part["bits_lost"].is_number() && part["bits_lost"].get<double>() > worst.second)
+      worst = {name, part["bits_lost"].get<double>()};
+  };
   for (const char* part : {"control_points", "values"})
-    if (j.contains(part)) worst = std::max(worst, j[part]["bits_lost"].get<double>());
-  if (j["function"].contains("bits_lost")) worst = std::max(worst, j["function"]["bits_lost"].get<double>());
+    if (j.contains(part)) take(part, j[part]);
+  take("function", j["function"]);
   return worst;
 }
 
+double VerifyReport::worst_bits_lost() const { return worst_part().second; }
+
+Json VerifyReport::verdict() const {
+  // The claim judged: the candidate is the exact result - as a function on the domain, or, for
+  // point values (eval, hybrid-eval), at the given points.
+  const bool point_values = parts.empty() && points_checked == 0 && !coefficients_compared && values.count > 0;
+  const bool composition = !parts.empty() || points_checked > 0 || area_compared;
+  const std::string claim = point_values ? "the candidate's values equal the exact values at the " + std::to_string(results) + " points"
+                                         : "the candidate equals the exact result as a function on the domain";
+  Json v{{"claim", claim}};
+  const auto refuted = [&](const std::string& witness) {
+    v["status"] = "refuted";
+    v["witness"] = witness;
+    return v;
+  };
+  const auto undecided = [&](const std::string& reason) {
+    v["status"] = "undecided";
+    v["reason"] = reason;
+    return v;
+  };
+  // Refuted: a value that differs, measured exactly (point values, or a composition's samples of
+  // T(S(r)) in Cartesian coordinates).
+  if (values.count > 0 && values.max_abs > 0)
+    return refuted("a value differs from the exact one by " + to_fraction_string(values.max_abs) + " (measured exactly)");
+  if (point_values) {
+    if (points_failed > 0) return undecided(std::to_string(points_failed) + " values could not be compared");
+    v["status"] = "proved";
+    v["reason"] = "every value compared exactly and equal";
+    return v;
+  }
+  // Refuted by the function-level witness: only for the kernel operations, where it is the
+  // difference of the functions at a point of the domain. (A composition's patches may be compared
+  // in homogeneous coordinates, whose difference is no witness; a candidate mapped onto the
+  // reference's domain is witnessed in the reference's parameters.)
+  if (!composition && !domain_mapped && function.lower > 0) {
+    std::string at;
+    for (const auto& x : function.at) at += (at.empty() ? "" : ", ") + to_fraction_string(x);
+    return refuted("|candidate - exact| = " + to_fraction_string(function.lower) + " at (" + at + "), evaluated exactly");
+  }
+  // Proved only where every part of the claim was checked: a certified bound of 0, nothing mapped,
+  // and for compositions the same regions or tiles, no area moved and every sample point claimed
+  // by the right part.
+  if (!function.certified) return undecided("no certified bound: " + function.method);
+  if (function.upper != 0) return undecided("the certified bound is not 0 and no difference was witnessed");
+  if (domain_mapped) return undecided("equal after the affine map of the candidate's domain onto the reference's, whose ends differ");
+  if (composition) {
+    if (structure != "equal") return undecided("the patches agree, but the structure is " + structure + " (see structure_notes)");
+    if (area_compared && area_moved != 0) return undecided("tiles cover other areas than the exact tiling (area_moved)");
+    if (points_unclaimed + points_misassigned + points_failed > 0)
+      return undecided(std::to_string(points_unclaimed) + " sample points unclaimed, " + std::to_string(points_misassigned) + " misassigned, " +
+                       std::to_string(points_failed) + " with weight 0");
+  }
+  v["status"] = "proved";
+  v["reason"] = composition ? "the certified bound of every part's difference is 0, with the same regions and every sample point claimed rightly"
+                            : "the certified bound of the difference is 0";
+  return v;
+}
+
 Json VerifyReport::to_json() const {
+  Json j = to_json_parts();
+  const auto [part, bits] = worst_part();
+  j["worst_bits_lost"] = bits;
+  j["worst_part"] = part.empty() ? Json(nullptr) : Json(part);
+  j["verdict"] = verdict();
+  return j;
+}
+
+Json VerifyReport::to_json_parts() const {
   Json j;
   j["operation"] = operation;
   j["precision"] = precision;

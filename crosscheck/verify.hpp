@@ -19,6 +19,7 @@
 //    the denominator's smallest (positive weights) bounds it, refined the same way.
 #pragma once
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -64,9 +65,21 @@ struct VerifyReport {
   bool area_compared = false;          // tiles against the exact tiling:
   Rational area_moved{0};              // sum over regions of |candidate tiles' area - exact area|
   Json parts = Json::array();          // per trimmed patch or tile: what it was paired with, its error
+  bool domain_mapped = false;          // a candidate's domain ends were the reference's rounded: compared after the affine map
   /// The worst bits lost of the coefficients, the values and the function-level error.
   double worst_bits_lost() const;
+  /// Which of them ("control_points", "values", "function"; "" when none lost a bit) and its bits.
+  std::pair<std::string, double> worst_part() const;
+  /// The top-level verdict on "the candidate is the exact result": proved (a certified bound of 0
+  /// with nothing mapped, and for compositions the same structure, no area moved and every sample
+  /// point claimed rightly; or every point value compared equal), refuted with a witness (a value
+  /// that differs, or for kernel operations a point of the domain where the functions differ,
+  /// measured exactly), otherwise undecided with the reason. {"claim", "status", "reason" | "witness"}.
+  Json verdict() const;
+  /// The whole report: the parts below, then "worst_bits_lost", "worst_part" and "verdict".
   Json to_json() const;
+  /// The report without the summary fields.
+  Json to_json_parts() const;
 };
 
 /// Reference splines against candidate splines, one to one (a piece list for extraction, the two

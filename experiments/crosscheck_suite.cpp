@@ -97,14 +97,14 @@ std::vector<Rational> random_knots(const BSpline<Rational>& S, int d, std::size_
 
 std::string csv(const std::vector<Row>& rows) {
   std::ostringstream o;
-  o << "suite,case,dim,degree,rational,inserted,operation,arith,precision_bits,structure_match,control_points,"
+  o << "suite,case,dim,degree,rational,inserted,operation,arith,precision,structure,control_points,"
        "cp_abs_error,cp_rel_error,cp_bits_lost,grid_abs_error,grid_rel_error,grid_bits_lost,knot_abs_error,"
        "seconds_exact,seconds_float\n";
   o << std::setprecision(17);
   for (const auto& r : rows) {
     const auto& c = r.rep;
     o << r.suite << "," << r.case_name << "," << r.dim << "," << r.degree << "," << r.rational << "," << r.inserted << ","
-      << c.operation << "," << c.arith << "," << c.precision << "," << c.structure_match << "," << c.control_point_count << ","
+      << c.operation << "," << c.arith << "," << c.precision << "," << (c.structure_match ? "equal" : "different") << "," << c.control_point_count << ","
       << c.control_points.abs() << "," << c.control_points.rel() << "," << c.control_points.bits_lost(c.precision) << ","
       << c.grid.abs() << "," << c.grid.rel() << "," << c.grid.bits_lost(c.precision) << "," << c.knots.abs() << ","
       << c.seconds_exact << "," << c.seconds_float << "\n";
@@ -281,8 +281,7 @@ void crosscheck_section(ReportContext& ctx) {
   // report.md: the introduction, the figures, the tables.
   {
     std::ostringstream md;
-    md << "# splinex report\n\n"
-       << "Every number below is measured exactly: each float result is converted to the rational it is and "
+    md << "Every number below is measured exactly: each float result is converted to the rational it is and "
           "subtracted from the exact (GMP rational) result of the same exact input. Relative errors are normwise "
           "(max |error| / max |exact value| over the compared set); *bits lost* is precision + log2(relative error), "
           "clamped to [0, precision]. Inputs are rounded once to the float format, so a well-conditioned operation "

@@ -206,7 +206,7 @@ void cut3_section(ReportContext& ctx) {
        << R.program.n << " x " << R.program.rows.size() << " | " << fmt(R.seconds) << " | " << proved << " | " << sep_e << " | " << fmt(t_d)
        << " | " << bits << " | " << sep_d << " |\n";
     csv << st.name << "," << e.solid.facets.size() << "," << R.loop.size() << "," << R.program.n << "," << R.program.rows.size() << ","
-        << R.seconds << "," << proved << ",\"" << sep_e << "\"," << t_d << "," << bits << ",\"" << sep_d << "\"\n";
+        << R.seconds << ",\"" << proved << "\",\"" << sep_e << "\"," << t_d << "," << bits << ",\"" << sep_d << "\"\n";
   }
   write_file_atomically(ctx.options.out_dir + "/cut3_table.csv", csv.str());
   md << "\nFigures `cut3_NAME_slice.svg` (a slice through the middle of the solid; f* = 0 drawn in double), ParaView files "

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
+#include <string_view>
 #include <iterator>
 #include <filesystem>
 #include <fstream>
@@ -48,34 +50,46 @@ void proofs_section(ReportContext& ctx) {
 
 namespace {
 
-// The sections in the order they run (the crosscheck suite and the composition orders share one
-// seeded stream, in this order).
-constexpr Section kSections[] = {
-    crosscheck_section,       composition_orders_section, teapot_stars_section, tolerance_section,
-    algorithm2_stars_section, untrim_tolerance_section,   checkerboard_section, curved_untrim_section,
-    hybrid_section,           elevation_accuracy_section, vrep_section, vrep_boolean_section, vrep_ssi_section, vrep_teapot_section, solve_section, cut_section, cut3_section, peers_section, proofs_section,
+// The one table of the report's sections (issue 48: a new section is one line here, its part in
+// kDocument and its function in section.hpp). In the order they run when nothing reorders them (the
+// crosscheck suite and the composition orders share one seeded stream, in this order).
+//   seconds: the measured cost - each section alone, `splinex report --sections NAME --jobs 1`
+//     on the 2-core development machine under a load of about 3, 2026-12-06 (wall clock) - so
+//     that the longest start first when sections run on threads or as sweep jobs, and shown by
+//     `report --help` and in docs/papers.md (generated: `splinex report --list-sections`). Only
+//     the order of the work depends on it, never a result.
+//   reproduces: the papers' figures and tables it reproduces (docs/papers.md has the details).
+struct SectionInfo {
+  const char* name;
+  Section run;
+  double seconds;
+  const char* reproduces;
 };
-
-// The sections' names, in kSections' order.
-const char* const kSectionNames[] = {
-    "crosscheck",       "composition-orders", "teapot-stars", "tolerance", "algorithm2-stars", "untrim-tolerance", "checkerboard",
-    "curved-untrim",    "hybrid",             "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve",
-    "cut",              "cut3",               "peers",        "proofs",
+constexpr SectionInfo kSectionTable[] = {
+    {"crosscheck", crosscheck_section, 47, "exact-vs-float errors of the kernel (no paper figure)"},
+    {"composition-orders", composition_orders_section, 0.2, "papers/000 Figures 6-8: composed orders (runs with crosscheck)"},
+    {"teapot-stars", teapot_stars_section, 51, "papers/000 Figure 4: the teapot's star pattern by Algorithm 1"},
+    {"tolerance", tolerance_section, 35, "papers/000 Figure 9's kind: the price of a trimming tolerance"},
+    {"algorithm2-stars", algorithm2_stars_section, 27, "papers/000 Figure 5: the star pattern by Algorithm 2"},
+    {"untrim-tolerance", untrim_tolerance_section, 11, "the tolerance of untrimming (no paper figure)"},
+    {"checkerboard", checkerboard_section, 2.2, "papers/000 Figure 3: the checkerboard texture"},
+    {"curved-untrim", curved_untrim_section, 0.1, "papers/002 Figure 11's kind: tiles with curved sides"},
+    {"hybrid", hybrid_section, 22, "papers/003 Figures 2.1, 3.2, 4.1, 4.2"},
+    {"elevation-accuracy", elevation_accuracy_section, 5.7, "degree elevation in double (no paper figure)"},
+    {"vrep", vrep_section, 2.1, "papers/002 Figures 1b, 7, 8, 9"},
+    {"vrep-boolean", vrep_boolean_section, 46, "papers/002 Figures 3, 4, 5, 6, 15; Table 1's gluing times"},
+    {"vrep-ssi", vrep_ssi_section, 19, "papers/002 Figure 10"},
+    {"vrep-teapot", vrep_teapot_section, 59, "papers/002 Figure 14; Table 1's teapot row"},
+    {"solve", solve_section, 51, "papers/002 Figure 12; Eq. 3 and 4"},
+    {"cut", cut_section, 45, "papers/004 Figures 6, 8, 9; Table 1"},
+    {"cut3", cut3_section, 156, "papers/004 Figures 1 and 6 (d = 3)"},
+    {"peers", peers_section, 1, "SciPy, Octave NURBS and OpenCASCADE judged (needs --peers; no figure)"},
+    {"proofs", proofs_section, 108, "the exact proofs of splinex prove"},
 };
-static_assert(std::size(kSectionNames) == std::size(kSections), "one name per section");
+constexpr std::size_t kSectionCount = std::size(kSectionTable);
+static_assert(std::string_view(kSectionTable[kSectionCount - 1].name) == "proofs", "the proofs run last (report.md's closing line reads it)");
 
-// A section's cost in seconds, measured (the "section ... finished in" lines of `splinex report
-// --jobs 1` on the 2-core development machine, 2026-12-05, with a sweep running beside it), so
-// that the longest start first when sections run on threads or as sweep jobs; unlisted sections
-// count 1. Only the order of the work depends on it, never a result.
-double section_weight(std::size_t k) {
-  static const std::map<std::string, double> w{
-      {"cut3", 249},         {"cut", 134},   {"proofs", 44}, {"vrep-teapot", 29},      {"crosscheck", 26}, {"teapot-stars", 25},
-      {"solve", 23},         {"vrep-boolean", 23},           {"tolerance", 20},        {"algorithm2-stars", 15}, {"hybrid", 9.5},
-      {"vrep-ssi", 8.9},     {"untrim-tolerance", 5.7},      {"elevation-accuracy", 3.9}, {"vrep", 1.9},    {"checkerboard", 1.3}};
-  const auto it = w.find(kSectionNames[k]);
-  return it == w.end() ? 1.0 : it->second;
-}
+double section_weight(std::size_t k) { return kSectionTable[k].seconds; }
 
 // report.md's parts in the order they are read.
 const char* const kDocument[] = {
@@ -87,15 +101,15 @@ const char* const kDocument[] = {
 // Which sections run (every one when none is named); typed errors for unknown names and for
 // composition-orders without crosscheck.
 std::vector<char> chosen_sections(const std::vector<std::string>& sections) {
-  std::vector<char> chosen(std::size(kSections), sections.empty() ? 1 : 0);
+  std::vector<char> chosen(kSectionCount, sections.empty() ? 1 : 0);
   for (const auto& name : sections) {
-    const auto it = std::find(std::begin(kSectionNames), std::end(kSectionNames), name);
-    if (it == std::end(kSectionNames)) {
+    const auto it = std::find_if(std::begin(kSectionTable), std::end(kSectionTable), [&](const SectionInfo& x) { return name == x.name; });
+    if (it == std::end(kSectionTable)) {
       std::string all;
-      for (const char* n : kSectionNames) all += (all.empty() ? "" : ", ") + std::string(n);
+      for (const auto& x : kSectionTable) all += (all.empty() ? "" : ", ") + std::string(x.name);
       throw UsageError("sections", "'" + name + "' is not a section", "give some of " + all);
     }
-    chosen[static_cast<std::size_t>(it - std::begin(kSectionNames))] = 1;
+    chosen[static_cast<std::size_t>(it - std::begin(kSectionTable))] = 1;
   }
   if (chosen[1] && !chosen[0])
     throw UsageError("sections", "composition-orders draws from the crosscheck suite's seeded stream", "give crosscheck with it");
@@ -106,7 +120,7 @@ std::vector<char> chosen_sections(const std::vector<std::string>& sections) {
 // seeded stream, in this order). Longest first where known, so that cores finish together.
 std::vector<std::vector<std::size_t>> report_task_list(const std::vector<char>& chosen) {
   std::vector<std::vector<std::size_t>> tasks;
-  for (std::size_t k = 0; k < std::size(kSections); ++k)
+  for (std::size_t k = 0; k < kSectionCount; ++k)
     if (chosen[k]) {
       if (k == 1 && chosen[0]) tasks.front().push_back(k);
       else tasks.push_back({k});
@@ -119,8 +133,8 @@ std::vector<std::vector<std::size_t>> report_task_list(const std::vector<char>& 
 void run_task(const std::vector<std::size_t>& task, ReportContext& ctx) {
   for (std::size_t k : task) {
     const auto s0 = std::chrono::steady_clock::now();
-    kSections[k](ctx);
-    ctx.progress(std::string("section ") + kSectionNames[k] + " finished in " +
+    kSectionTable[k].run(ctx);
+    ctx.progress(std::string("section ") + kSectionTable[k].name + " finished in " +
                  fmt(std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count(), 4) + " s");
   }
 }
@@ -139,9 +153,33 @@ int write_report(const ReportOptions& opt, ReportContext& ctx) {
   namespace fs = std::filesystem;
   const std::string manifest = opt.out_dir + "/MANIFEST.json";
   ctx.progress("writing " + opt.out_dir);
-  std::string md;
+  // The title, the version, when and how it ran (the line "Run: ..." is the only one that differs
+  // between two runs of the same sections: the comparisons of report.md drop it), then the parts
+  // in reading order, then what ran.
+  std::vector<std::string> ran;
+  const auto chosen = chosen_sections(opt.sections);
+  for (std::size_t k = 0; k < kSectionCount; ++k)
+    if (chosen[k]) ran.emplace_back(kSectionTable[k].name);
+  std::string command = opt.command.empty() ? "splinex report --out " + opt.out_dir : opt.command;
+  if (opt.command.empty() && opt.full) command += " --full";
+  if (opt.command.empty() && !opt.peers_dir.empty()) command += " --peers " + opt.peers_dir;
+  if (opt.command.empty() && !opt.sections.empty()) {
+    command += " --sections ";
+    for (std::size_t i = 0; i < opt.sections.size(); ++i) command += (i ? "," : "") + opt.sections[i];
+  }
+  const std::time_t now = std::time(nullptr);
+  char when[32];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  std::string md = "# splinex report\n\nRun: splinex " SPLINEX_VERSION " on " + std::string(when) + ", `" + command + "`.\n\n";
   for (const char* part : kDocument)
-    if (opt.sections.empty() || ctx.markdown.count(part)) md += ctx.markdown.at(part);
+    if (ctx.markdown.count(part)) md += ctx.markdown.at(part);
+  std::string list;
+  for (std::size_t i = 0; i < ran.size(); ++i) list += (i ? ", " : "") + ran[i];
+  md += "---\n\nThis report ran " + std::to_string(ran.size()) + " of " + std::to_string(kSectionCount) + " sections (" + list + "); " +
+        (ctx.ok ? "every section's own checks held" : "**some section's own checks failed** (see above)") + "; " +
+        (!chosen[kSectionCount - 1] ? std::string("proofs not run")
+         : ctx.proofs_as_expected   ? std::string("proofs as expected")
+                                    : std::string("**proofs with an unexpected verdict**")) + "; " + std::to_string(ctx.crosschecks) + " crosschecks.\n";
   write_file_atomically(opt.out_dir + "/report.md", md);
   {
     std::ostringstream mf;
@@ -166,7 +204,35 @@ int write_report(const ReportOptions& opt, ReportContext& ctx) {
 
 }  // namespace
 
-std::vector<std::string> report_section_names() { return {std::begin(kSectionNames), std::end(kSectionNames)}; }
+std::vector<std::string> report_section_names() {
+  std::vector<std::string> out;
+  for (const auto& x : kSectionTable) out.emplace_back(x.name);
+  return out;
+}
+
+std::string report_section_table(bool markdown) {
+  std::ostringstream o;
+  const auto time = [](double s) {
+    std::ostringstream t;
+    if (s >= 100) t << std::fixed << std::setprecision(1) << s / 60 << " min";
+    else t << s << " s";
+    return t.str();
+  };
+  double total = 0;
+  for (const auto& x : kSectionTable)
+    if (std::string(x.name) != "peers") total += x.seconds;
+  if (markdown) {
+    o << "| section | reproduces | time |\n|---|---|---|\n";
+    for (const auto& x : kSectionTable) o << "| " << x.name << " | " << x.reproduces << " | " << (std::string(x.name) == "peers" ? "-" : time(x.seconds)) << " |\n";
+    o << "| all (`--jobs 1`, without peers) | | " << time(total) << " |\n";
+  } else {
+    o << "Sections (what each reproduces; time alone with --jobs 1 on 2 cores under load, 2026-12-06):\n";
+    for (const auto& x : kSectionTable)
+      o << "  " << std::left << std::setw(20) << x.name << x.reproduces << (std::string(x.name) == "peers" ? "" : "; " + time(x.seconds)) << "\n";
+    o << "  all sections one after another (--jobs 1, without peers): " << time(total) << "; the default runs them on every core\n";
+  }
+  return o.str();
+}
 
 int run_report(const ReportOptions& opt) {
   namespace fs = std::filesystem;
@@ -211,7 +277,7 @@ std::vector<std::vector<std::string>> report_tasks(const std::vector<std::string
   std::vector<std::vector<std::string>> out;
   for (const auto& t : report_task_list(chosen_sections(sections))) {
     out.emplace_back();
-    for (std::size_t k : t) out.back().push_back(kSectionNames[k]);
+    for (std::size_t k : t) out.back().push_back(kSectionTable[k].name);
   }
   return out;
 }
@@ -221,7 +287,7 @@ nlohmann::json run_report_task(const ReportOptions& opt, const std::vector<std::
   const auto tasks = report_task_list(chosen_sections(task));
   std::vector<std::string> names;
   if (tasks.size() == 1)
-    for (std::size_t k : tasks.front()) names.push_back(kSectionNames[k]);
+    for (std::size_t k : tasks.front()) names.push_back(kSectionTable[k].name);
   if (names != task)
     throw UsageError("sections", "are not one task of the report (a section alone, or crosscheck with composition-orders)",
                      "give the sections of one line of sweep plan report");

@@ -14,6 +14,7 @@ struct ReportOptions {
   std::string out_dir = "results";
   bool full = false;  // the long sweep: larger cases, more precisions, longer refinements
   std::string peers_dir;  // the peers' judged results (scripts/run.sh peers); empty: not included
+  std::string command;    // the command report.md names; empty: the `splinex report` these options are
   /// Only these sections (names as in report_section_names()), in the report's order; empty: all.
   /// A part of the report lets a test run split the report over the cores; every section computes
   /// the same numbers alone as in the whole run (composition-orders shares crosscheck's seeded
@@ -28,6 +29,10 @@ struct ReportOptions {
 
 /// The sections' names in the order they run.
 std::vector<std::string> report_section_names();
+/// Every section with what it reproduces and its measured time: plain text for `report --help`,
+/// or the Markdown table of docs/papers.md (`report --list-sections`; the test docs_generated
+/// keeps the page equal to it).
+std::string report_section_table(bool markdown);
 
 /// Returns the process exit status (0 when every proof held and every run finished).
 int run_report(const ReportOptions& options);

@@ -500,7 +500,8 @@ bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, cons
   }
   std::filesystem::create_directories(out_dir);
   if (jobs.front().sweep == "report") {
-    const auto o = report_options(out_dir, jobs.front().plan.at("full").get<bool>(), jobs.front().plan.at("sections").get<std::vector<std::string>>());
+    auto o = report_options(out_dir, jobs.front().plan.at("full").get<bool>(), jobs.front().plan.at("sections").get<std::vector<std::string>>());
+    o.command = "splinex sweep merge --dir " + dir + " --out " + out_dir + " (the jobs of sweep plan report)";
     std::vector<std::string> dirs;
     for (const auto& job : jobs) dirs.push_back(report_task_dir(job, dir));
     return merge_report_tasks(o, rows, dirs, [](const std::string& s) { std::cerr << "[sweep merge] " << s << "\n"; }) == 0;
@@ -538,7 +539,9 @@ bool sweep_single(const std::string& name, const SweepPlanOptions& options, cons
   sweep_plan(name, options);  // the name's and the options' errors
   prepare_output_folder(out_dir, "out");  // before the work, not after it
   if (name == "report") {
-    return run_report(report_options(out_dir, options.full, report_sections(options))) == 0;
+    auto o = report_options(out_dir, options.full, report_sections(options));
+    o.command = "splinex sweep single report --out " + out_dir + (options.full ? " --full" : "");
+    return run_report(o) == 0;
   }
   if (name == "proofs") {
     const std::size_t cases = proof_cases(options);

@@ -17,6 +17,7 @@
 #include "float/rounding.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean.hpp"
+#include "vrep/io/documents.hpp"
 
 namespace splinex {
 
@@ -95,6 +96,53 @@ TeapotVModel<T> teapot_vmodel(std::size_t boxes, const std::function<void(const 
   return M;
 }
 
+template <class T>
+Json teapot_document(const TeapotVModel<T>& M) {
+  static_assert(std::is_same_v<T, std::decay_t<decltype(M.cells.front().cell.volume.lower)>>);
+  auto row = [](const auto& r) {
+    Json v;
+    if constexpr (std::is_same_v<T, Rational>) vrep::put_enclosure(v, "exact", r.cell.volume.lower, r.cell.volume.upper, true);
+    else v = {{"lower", r.cell.volume.lower}, {"upper", r.cell.volume.upper}};
+    std::size_t pieces = 0, points = 0, undecided = 0, collapsed = 0;
+    for (const auto& e : r.edges.edges) {
+      pieces += e.pieces;
+      points += e.points;
+      undecided += e.status == std::decay_t<decltype(e)>::undecided;
+      collapsed += e.status == std::decay_t<decltype(e)>::collapsed;
+    }
+    return Json{{"name", r.name},
+                {"edges", {{"corners", r.edges.corners}, {"corners_undecided", r.edges.corners_undecided}, {"v_curves", pieces}, {"v_points", points},
+                           {"undecided", undecided}, {"collapsed", collapsed}}},
+                {"trivariate", r.trivariate},
+                {"conditions", r.conditions},
+                {"kind", to_string<T>(r.cell.cls.kind)},
+                {"components_at_least", r.cell.components},
+                {"cover_components", r.cell.cover_components},
+                {"volume", v},
+                {"boxes", r.cell.cls.boxes},
+                {"boxes_near_trimming", r.cell.cls.mixed},
+                {"point_queries", r.cell.queries},
+                {"seconds", r.seconds}};
+  };
+  Json cells = Json::array(), removed = Json::array();
+  std::size_t vcells = 0;
+  for (const auto& r : M.cells) {
+    cells.push_back(row(r));
+    vcells += r.cell.components;
+  }
+  for (const auto& r : M.removed) removed.push_back(row(r));
+  return Json{{"cells", cells},
+              {"removed_by_subtraction", removed},
+              {"v_cells_at_least", vcells},
+              {"seconds", M.seconds},
+              {"certified", std::is_same_v<T, Rational>},
+              {"note", std::is_same_v<T, Rational>
+                           ? "kinds, volume enclosures and the lower bounds on components are certified; (body + handle + spout) - cavity"
+                           : "double: the same steps in floats, nothing certified; (body + handle + spout) - cavity"}};
+}
+
+template Json teapot_document(const TeapotVModel<Rational>&);
+template Json teapot_document(const TeapotVModel<double>&);
 template TeapotVModel<Rational> teapot_vmodel(std::size_t, const std::function<void(const std::string&)>&);
 template TeapotVModel<double> teapot_vmodel(std::size_t, const std::function<void(const std::string&)>&);
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact/rational.hpp"
+#include "io/json_io.hpp"
 #include "vrep/freeform.hpp"
 
 namespace splinex {
@@ -35,6 +36,11 @@ struct TeapotVModel {
 /// solver's periodic ones) go to `progress`.
 template <class T>
 TeapotVModel<T> teapot_vmodel(std::size_t boxes, const std::function<void(const std::string&)>& progress = {});
+
+/// The model as `splinex vrep teapot` prints it: per cell its edges, kind, components, volume
+/// (certified enclosure in exact arithmetic), boxes and time; the cells removed by the subtraction.
+template <class T>
+Json teapot_document(const TeapotVModel<T>& M);
 
 /// An exploded view (SVG): per cell the faces of its boxes on its trivariate's boundary (in-boxes
 /// in the cell's colour, boxes near a trimming surface pale), cells moved apart along x.

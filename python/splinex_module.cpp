@@ -149,8 +149,9 @@ py::list fractions_of(const std::vector<Rational>& v) {
 
 /// The Operation for `name` from keyword arguments (the CLI's options, range-checked as the CLI
 /// does; an argument the operation does not take is a TypeError, as Python's own functions raise).
-Operation make_operation(const std::string& name, const py::kwargs& kw) {
-  Operation op = Operation::parse_kind(name);
+Operation make_operation(const std::string& name, const py::dict& kw, const std::string& caller = "verify: ") {
+  // "refine" is knot refinement, insert-knots by A5.4 (Operation's default), as in `splinex verify`.
+  Operation op = Operation::parse_kind(name == "refine" ? "insert-knots" : name);
   std::vector<std::string> allowed{"dir"};
   switch (op.kind) {
     case Operation::Kind::insert_knots: allowed.push_back("knots"); break;
@@ -166,7 +167,7 @@ Operation make_operation(const std::string& name, const py::kwargs& kw) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::string names;
       for (const auto& a : allowed) names += (names.empty() ? "" : ", ") + a;
-      throw py::type_error("verify: " + name + " takes no argument '" + key + "'" +
+      throw py::type_error(caller + name + " takes no argument '" + key + "'" +
                            (names.empty() ? std::string(" (it takes none)") : " (it takes " + names + ")"));
     }
   }
@@ -232,6 +233,34 @@ PyReport to_py(const VerifyReport& r) {
 }
 
 }  // namespace
+
+/// The rest of `splinex verify`'s operations as functions: refine, derivative, reparametrize, run
+/// as verify runs them (run_operation), arguments checked by verify's reader.
+static void add_more_operations(py::module_& m) {
+  const auto one_result = [](const std::string& name, const py::dict& S, const py::dict& args) {
+    const auto out = run_operation<Rational>(make_operation(name, args, "splinex."), to_spline(S), Limits{});
+    return from_spline(out.at(0));
+  };
+  const auto with = [](std::initializer_list<std::pair<const char*, py::object>> kv) {
+    py::dict d;
+    for (const auto& [k, v] : kv)
+      if (!v.is_none()) d[k] = v;
+    return d;
+  };
+  m.def("refine", [one_result, with](const py::dict& S, const py::object& knots, const py::object& dir) {
+          return one_result("refine", S, with({{"knots", knots}, {"dir", dir}}));
+        },
+        py::arg("spline"), py::arg("knots"), py::arg("dir") = 0, "knot refinement by A5.4 (NURBS Book): refine(spline, knots, dir=0), exact");
+  m.def("derivative", [one_result, with](const py::dict& S, const py::object& order, const py::object& dir) {
+          return one_result("derivative", S, with({{"order", order}, {"dir", dir}}));
+        },
+        py::arg("spline"), py::arg("order") = 1, py::arg("dir") = 0,
+        "the derivative spline (hodograph): derivative(spline, order=1, dir=0), exact; polynomial splines only (a rational one is refused, as by the CLI)");
+  m.def("reparametrize", [one_result, with](const py::dict& S, const py::object& interval, const py::object& dir) {
+          return one_result("reparametrize", S, with({{"interval", interval}, {"dir", dir}}));
+        },
+        py::arg("spline"), py::arg("interval"), py::arg("dir") = 0, "the same function on a new interval: reparametrize(spline, (lo, hi), dir=0), exact");
+}
 
 PYBIND11_MODULE(splinex, m) {
   m.doc() = "splinex: exact B-spline kernel operations and exact verification of results computed elsewhere";
@@ -301,6 +330,7 @@ PYBIND11_MODULE(splinex, m) {
         py::arg("spline"), py::arg("at"), py::arg("dir") = 0);
   m.def("reverse", [](const py::dict& S, int dir) { return from_spline(reverse(to_spline(S), dir)); }, py::arg("spline"),
         py::arg("dir") = 0);
+  add_more_operations(m);
   m.def(
       "verify",
       [](const std::string& operation, const py::dict& S, const py::object& candidate, const py::object& precision,
@@ -337,7 +367,7 @@ PYBIND11_MODULE(splinex, m) {
         return to_py(verify(make_operation(operation, kw), input, cands, vo));
       },
       py::arg("operation"), py::arg("spline"), py::arg("candidate"), py::arg("precision") = 53, py::arg("factor") = 2,
-      "Judge a candidate result exactly: operation is insert-knots (knots=...), elevate (by=...), extract-bezier, "
+      "Judge a candidate result exactly: operation is insert-knots or refine (knots=...), elevate (by=...), extract-bezier, "
       "split (at=...), reparametrize (interval=(lo, hi)), reverse, derivative (order=...) or eval (candidate {\"at\": [...], \"values\": [...]}); "
       "dir=... selects the direction. Floats are taken as the doubles they are.");
   m.def(

@@ -13,7 +13,8 @@ A snapshot holds, one file per item, the exit status, standard output and standa
   - the help text of every subcommand, `prove --list` and all proofs (`prove --json`);
   - `splinex report` (every file it writes).
 Wall-clock times are the only thing allowed to differ: CSV columns whose header names seconds are
-blanked, and in text "<number> s", "seconds": <number> and the report's Time section are masked.
+blanked, and in text "<number> s", "seconds": <number>, the report's Time section and its "Run: "
+line (version, date, command) are masked.
 The SVGs that plot times (untrim_tolerance_cost.svg) keep their axes but not their polylines'
 coordinates. Absolute paths of the source and build trees become $SRC and $BUILD.
 
@@ -83,6 +84,9 @@ def mask_report_md(text: str) -> str:
     # of times) are masked.
     out, in_time, in_table, timed = [], False, False, set()
     for line in text.splitlines(keepends=True):
+        if line.startswith("Run: "):  # version, date and command of the run
+            out.append("Run: <masked>\n")
+            continue
         if line.startswith("## "):
             in_time = line.startswith("## Time")
         if line.startswith("|"):

@@ -1,6 +1,7 @@
 #!/bin/sh
 # find_package(splinex) from another project: install the build into a temporary prefix, then
-# configure, build and run examples/consumer against it.
+# configure, build and run examples/consumer against it: the composition kernel's consumer
+# (its output is the test's match) and the verify API's (splinex::crosscheck, every dependency).
 set -eu
 build=$1
 src=$2
@@ -11,3 +12,4 @@ cmake -S "$src/examples/consumer" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$tmp/prefix" 
   || { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/b" > "$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
 "$tmp/b/consumer"
+"$tmp/b/verify" > "$tmp/verify.log" || { cat "$tmp/verify.log"; exit 1; }

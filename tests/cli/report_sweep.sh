@@ -17,7 +17,7 @@ $CLI sweep plan report --sections $S > "$W/jobs.jsonl"
 test "$(wc -l < "$W/jobs.jsonl")" -eq 4
 grep -q '"id":"crosscheck+composition-orders"' "$W/jobs.jsonl"
 $CLI report --out "$W/report" --sections $S --jobs 1 2> "$W/report.log"
-mask() { sed -E 's/[0-9][0-9.e+-]* s([;,.)| ])/T s\1/g' "$1"; }
+mask() { sed -E -e '/^Run: /d' -e 's/[0-9][0-9.e+-]* s([;,.)| ])/T s\1/g' "$1"; }
 untimed() {  # the timed files of folder $1, times masked
   mask "$1/report.md" | awk -F'|' -v OFS='|' '
     /^\| arith \| exact s \| float s \| exact\/float \|$/ { time = 1; print; next }

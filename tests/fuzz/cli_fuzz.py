@@ -193,7 +193,7 @@ def command_for(rng, docs, kinds=KINDS):
         doc = docs[rng.choice([n for n in docs if n.startswith("inner")] or curves)]
     elif kind == "crosscheck":
         op = rng.choice(["insert-knots", "elevate", "extract-bezier", "split", "reverse", "identity"])
-        argv = ["crosscheck", op, "--float", rng.choice(["double", "mpfr:64", "flint"]), "--grid", rng.choice(["0", "2", "5"])]
+        argv = ["crosscheck", op, "--arith", rng.choice(["double", "mpfr:64", "flint"]), "--grid", rng.choice(["0", "2", "5"])]
         if op == "insert-knots":
             argv += ["--knots", "0.3"]
         if op == "elevate":

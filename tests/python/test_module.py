@@ -123,6 +123,30 @@ def main():
     rep = splinex.verify("reverse", S, moved)
     assert rep.structure == "different" and rep.function_upper is None and not rep.certified, rep.report
 
+    # The rest of verify's operations as functions (issue 48): refine, derivative, reparametrize,
+    # checked against closed forms, not against the code under test.
+    cubic = {"degrees": [3], "knots": [[0, 0, 0, 0, 1, 1, 1, 1]], "points": [[0], [0], [0], [1]]}  # t^3
+    D = splinex.derivative(cubic, order=1)
+    D2 = splinex.derivative(cubic, order=2)
+    for t in (Fraction(0), Fraction(1, 3), Fraction(5, 7), Fraction(1)):
+        assert splinex.evaluate(D, t) == [3 * t * t], (t, splinex.evaluate(D, t))
+        assert splinex.evaluate(D2, t) == [6 * t]
+    Rp = splinex.reparametrize(cubic, interval=("2", 5))
+    assert Rp["knots"][0][0] == 2 and Rp["knots"][0][-1] == 5
+    for t in (Fraction(1, 3), Fraction(5, 7)):
+        assert splinex.evaluate(Rp, 2 + 3 * t) == [t ** 3]
+    F = splinex.refine(S, knots=["1/5", "1/5"])
+    assert len(F["knots"][0]) == len(S["knots"][0]) + 2 and F["knots"][0].count(Fraction(1, 5)) >= 2
+    for t in (Fraction(1, 7), Fraction(1, 5), Fraction(2, 3)):
+        assert splinex.evaluate(F, t) == splinex.evaluate(S, t)
+    rep = splinex.verify("refine", S, F, knots=["1/5", "1/5"])
+    assert rep.structure == "equal" and rep.function_upper == 0 and rep.certified, rep.report
+    raises(ValueError, "spline: the hodograph of a rational spline", splinex.derivative,
+           dict(cubic, weights=[1, 2, 2, 1]))
+    raises(ValueError, "interval: needs two numbers", splinex.reparametrize, cubic, interval=[1])
+    raises(TypeError, "incompatible function arguments", splinex.derivative, cubic, by=2)
+    assert splinex.derivative(cubic, 2) == D2 and splinex.refine(S, ["1/5", "1/5"]) == F
+
     # Compositions: Algorithm 1's trimmed patches from splinex compose in double (argv[1]: the
     # splinex command), read by json as Python floats, judged exactly.
     if len(sys.argv) > 1:

@@ -1,0 +1,295 @@
+#!/usr/bin/env python3
+"""The house's size budget and placement rules (issue 48), checked on every C++ source.
+
+    scripts/check_size.py            check (exit 1 on any breach)
+    scripts/check_size.py --report   print every file and function over the budget, with sizes
+
+Budget: no file over 800 lines, no function over 150 lines. What was over the budget when the rule
+came in is listed in scripts/size_allowlist.txt with its size then; that list may only shrink:
+  - a file or function not on the list must fit the budget;
+  - one on the list may not grow past its recorded size;
+  - one on the list that now fits (or is gone) must be struck from the list, so the ratchet holds.
+Placement: no JSON (nlohmann) in apps/ or in the algorithm folders, outside the files that are
+listed in the same file as allowed to (the same ratchet: the list may only shrink).
+
+Functions are found by a brace scanner, not a compiler: comments, strings and character literals
+are blanked, and a `{` at namespace or class scope that follows `)` (with qualifiers, an arrow
+return type or a constructor's initialiser list between) opens a function body; its length is the
+number of lines from the line of its name to the closing brace. Lambdas and local classes count
+towards the function that holds them.
+"""
+import re
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+ALLOW = ROOT / "scripts" / "size_allowlist.txt"
+FILE_BUDGET = 800
+FUNCTION_BUDGET = 150
+FOLDERS = ["spline", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "io",
+           "fixtures", "crosscheck", "proofs", "experiments", "apps", "python", "bench", "fuzz", "tests",
+           "examples"]
+# Folders whose code is algorithm, not documents: no JSON there (a package's io/ sub-folder, such as
+# vrep/io/, is where its documents live).
+NO_JSON = ["spline", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "apps"]
+
+
+def sources():
+    for folder in FOLDERS:
+        base = ROOT / folder
+        if base.is_dir():
+            yield from sorted(p for p in base.rglob("*") if p.suffix in (".cpp", ".hpp", ".h", ".cc"))
+
+
+def blank(text):
+    """Comments, strings and character literals replaced by spaces; newlines kept."""
+    out, i, n = [], 0, len(text)
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i):
+            j = text.find("\n", i)
+            j = n if j < 0 else j
+            out.append(" " * (j - i))
+            i = j
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            out.append(re.sub(r"[^\n]", " ", text[i:j]))
+            i = j
+        elif c == 'R' and text.startswith('R"', i) and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == '_')):
+            m = re.match(r'R"([^(\s]*)\(', text[i:])
+            if m:
+                end = text.find(")" + m.group(1) + '"', i)
+                end = n if end < 0 else end + len(m.group(1)) + 2
+                out.append(re.sub(r"[^\n]", " ", text[i:end]))
+                i = end
+            else:
+                out.append(c)
+                i += 1
+        elif c in "\"'":
+            if c == "'" and i > 0 and text[i - 1].isalnum() and i + 1 < n and text[i + 1].isalnum():
+                out.append(" ")  # digit separator 1'000
+                i += 1
+                continue
+            j = i + 1
+            while j < n and text[j] != c:
+                j += 2 if text[j] == "\\" else 1
+            out.append(re.sub(r"[^\n]", " ", text[i:j + 1]))
+            i = j + 1
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+CONTROL = re.compile(r"\b(if|for|while|switch|catch|do|else|try)\s*$")
+SCOPE = re.compile(r"\b(namespace|class|struct|union|enum)\b[^;(){}]*$")
+
+
+def skip_braces(text, i):
+    """The index after the brace group that opens at text[i] == '{'."""
+    depth = 0
+    while i < len(text):
+        if text[i] == "{":
+            depth += 1
+        elif text[i] == "}":
+            depth -= 1
+            if depth == 0:
+                return i + 1
+        i += 1
+    return i
+
+
+INIT_LIST = re.compile(r"\)\s*(noexcept\b)?\s*:(?!:)")
+
+
+def functions(path):
+    """(name, first line, last line) of each function body at namespace or class scope."""
+    text = blank(path.read_text(errors="replace"))
+    stack = []  # kinds of the open braces: 'scope', 'function', 'other'
+    found = []
+    last = 0  # end of the previous statement at this level
+    i = 0
+    while i < len(text):
+        c = text[i]
+        if c in ";}":
+            if c == "}" and stack:
+                kind, start, name = stack.pop()
+                if kind == "function" and not any(k == "function" for k, _, _ in stack):
+                    found.append((name, start, text.count("\n", 0, i) + 1))
+            last = i + 1
+        elif c == "{":
+            head = text[last:i]
+            inside_function = any(k == "function" for k, _, _ in stack)
+            before = head.rstrip()[-1:] if head.strip() else ""
+            if not inside_function and head.count("(") > head.count(")"):
+                i = skip_braces(text, i)  # a braced default argument inside a parameter list: f(const L& l = {})
+                continue
+            if not inside_function and INIT_LIST.search(head) and (before.isalnum() or before in "_>"):
+                i = skip_braces(text, i)  # a constructor's braced member initialiser: X() : a_{a} {
+                continue
+            if inside_function:
+                stack.append(("other", 0, ""))
+            elif SCOPE.search(head) or re.search(r"\bextern\s*$", head.strip() + " ") or head.strip().endswith("="):
+                stack.append(("scope" if SCOPE.search(head) else "other", 0, ""))
+            else:
+                name = function_name(head)
+                if name and not CONTROL.search(head.split(")")[0]):
+                    start_offset = last + head.find(name) if name in head else last
+                    stack.append(("function", text.count("\n", 0, start_offset) + 1, name))
+                else:
+                    stack.append(("other", 0, ""))
+            last = i + 1
+        i += 1
+    return found
+
+
+def function_name(head):
+    """The name of the function whose body the brace after `head` opens, or None."""
+    h = " ".join(head.split())
+    h = re.sub(r"^\s*(public|private|protected)\s*:", "", h)
+    while re.search(r"\{[^{}]*\}", h):  # braced initialisers in the head (defaults, member inits)
+        h = re.sub(r"\{[^{}]*\}", "", h)
+    h = re.sub(r"\bnoexcept\s*\([^()]*(\([^()]*\)[^()]*)*\)", "noexcept", h)  # noexcept(expr)
+    h = re.sub(r"\brequires\b.*$", "", h) if re.search(r"\)\s*(const\s*)?requires\b", h) else h  # a trailing requires-clause
+    if ")" not in h:
+        return None
+    # strip a constructor's initialiser list: ") : a(x), b{y}" -> ")"
+    m = re.search(r"\)\s*(const|noexcept|override|final|mutable|&|&&|\s)*(->[^{]*)?(\s*:\s*[^{]*)?$", h)
+    if not m:
+        return None
+    paren = h.rfind(")", 0, m.start() + 1)
+    depth, j = 0, paren
+    while j >= 0:
+        if h[j] == ")":
+            depth += 1
+        elif h[j] == "(":
+            depth -= 1
+            if depth == 0:
+                break
+        j -= 1
+    if j < 0:
+        return None
+    before = h[:j].rstrip()
+    op = re.search(r"([A-Za-z_][A-Za-z0-9_:]*::)?operator\s*\(\s*\)$", before)
+    if op:
+        return op.group(0).replace(" ", "")
+    nm = re.search(r"([A-Za-z_~][A-Za-z0-9_:~<>,\s]*?(operator\s*[^\s(]+)?)$", before)
+    if not nm:
+        return None
+    name = nm.group(1).strip().split()[-1] if nm.group(1).strip() else None
+    if not name or name in ("if", "for", "while", "switch", "catch", "return", "sizeof", "decltype",
+                            "alignof", "static_assert", "defined"):
+        return None
+    if re.search(r"\b(if|for|while|switch|catch)\s*$", before):
+        return None
+    return name
+
+
+def measure():
+    files, funcs, json_files = {}, {}, set()
+    for p in sources():
+        rel = str(p.relative_to(ROOT))
+        text = p.read_text(errors="replace")
+        files[rel] = text.count("\n") + (0 if text.endswith("\n") or not text else 1)
+        for name, a, b in functions(p):
+            key = f"{rel}::{name}"
+            size = b - a + 1
+            if size > funcs.get(key, 0):
+                funcs[key] = size
+        code = blank(text)
+        if rel.split("/")[0] in NO_JSON and "/io/" not in rel and (re.search(r"(?i)json", code) or
+                                             re.search(r'#\s*include\s*[<"](nlohmann/|io/(json_io|result_json))', text)):
+            json_files.add(rel)
+    return files, funcs, json_files
+
+
+def read_allow():
+    allow = {"file": {}, "function": {}, "json": set()}
+    if not ALLOW.exists():
+        return allow
+    for n, line in enumerate(ALLOW.read_text().splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = line.split()
+        if parts[0] == "json" and len(parts) == 2:
+            allow["json"].add(parts[1])
+        elif parts[0] in ("file", "function") and len(parts) == 3:
+            allow[parts[0]][parts[1]] = int(parts[2])
+        else:
+            sys.exit(f"{ALLOW.relative_to(ROOT)}:{n}: expected 'file PATH LINES', 'function PATH::NAME LINES' or 'json PATH'")
+    return allow
+
+
+def self_test():
+    """The scanner on a planted text: a long function, a class's method, a lambda, a control block."""
+    import tempfile
+    body = "\n".join(f"  x += {i};" for i in range(160))
+    text = ("namespace a {\nstruct S {\n  int m() const { return 1; }\n};\n"
+            "// void commented_out() {\n"
+            "int long_one(int x)\n{\n  auto f = [&](int y) { return y; };\n  if (x) {\n" + body + "\n  }\n"
+            "  const char* s = \"{ not a brace\";\n  return f(x);\n}\n"
+            "Point::Point(int a) : a_(a), b_{a} {}\n"
+            "int with_default(const L& l = {}, int k = L{}.k)\n{\n" + body + "\n}\n"
+            "Long::Long(int a)\n    : a_{a}, b_{a} {\n" + body + "\n}\n"
+            "struct Call {\n  int operator()(int x) const noexcept(true) {\n" + body + "\n  }\n};\n"
+            "}  // namespace a\n")
+    with tempfile.NamedTemporaryFile("w", suffix=".cpp", delete=False) as f:
+        f.write(text)
+    got = {name: b - a + 1 for name, a, b in functions(Path(f.name))}
+    Path(f.name).unlink()
+    want = {"m": 1, "long_one": 168, "Point::Point": 1, "with_default": 163, "Long::Long": 163, "operator()": 162}
+    if got != want:
+        print(f"self-test failed: found {got}, expected {want}")
+        return 1
+    print("self-test: the scanner measures planted long functions (plain, braced default arguments, braced member "
+          "initialisers, operator()) and skips comments, strings, lambdas and blocks")
+    return 0
+
+
+def main():
+    if "--self-test" in sys.argv:
+        return self_test()
+    files, funcs, json_files = measure()
+    if "--report" in sys.argv:
+        for f, n in sorted(files.items()):
+            if n > FILE_BUDGET:
+                print(f"file {f} {n}")
+        for f, n in sorted(funcs.items()):
+            if n > FUNCTION_BUDGET:
+                print(f"function {f} {n}")
+        for f in sorted(json_files):
+            print(f"json {f}")
+        return 0
+    allow = read_allow()
+    bad = []
+    for kind, sizes, budget in (("file", files, FILE_BUDGET), ("function", funcs, FUNCTION_BUDGET)):
+        for key, n in sorted(sizes.items()):
+            if n <= budget:
+                continue
+            if key not in allow[kind]:
+                bad.append(f"{key}: {n} lines, over the budget of {budget}: split it (or, only when the rule came in, list it)")
+            elif n > allow[kind][key]:
+                bad.append(f"{key}: {n} lines, grew past its allowance of {allow[kind][key]}: the list may only shrink")
+        for key, was in sorted(allow[kind].items()):
+            if sizes.get(key, 0) <= budget:
+                bad.append(f"{ALLOW.name}: {kind} {key} now fits the budget ({sizes.get(key, 0)} lines, was {was}): strike it from the list")
+            elif sizes[key] < was:
+                bad.append(f"{ALLOW.name}: {kind} {key} shrank to {sizes[key]} lines: lower its allowance from {was}")
+    for f in sorted(json_files - allow["json"]):
+        bad.append(f"{f}: builds or reads JSON, but {f.split('/')[0]}/ may not (documents belong in io/)")
+    for f in sorted(allow["json"] - json_files):
+        bad.append(f"{ALLOW.name}: json {f} no longer uses JSON: strike it from the list")
+    for b in bad:
+        print(b)
+    if not bad:
+        nf = sum(1 for n in files.values() if n > FILE_BUDGET)
+        nfn = sum(1 for n in funcs.values() if n > FUNCTION_BUDGET)
+        print(f"size: {len(files)} files, {len(funcs)} functions; over the budget and allowed: "
+              f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/")
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
