@@ -372,7 +372,7 @@ int run_split3(const std::string& solid_file, const std::string& cut_file, const
   return 0;
 }
 
-/// splinex cut example
+/// `splinex cut example`: its options, and what it runs (the work is in cut/ and cut/io/).
 Command cut_example_command(CLI::App* parent) {
   struct ExampleOptions {
     std::string name, out = ".";
@@ -403,7 +403,7 @@ Command cut_example_command(CLI::App* parent) {
   }};
 }
 
-/// splinex cut guide
+/// `splinex cut guide`: its options, and what it runs (the work is in cut/ and cut/io/).
 Command cut_guide_command(CLI::App* parent) {
   auto go = std::make_shared<GuideCliOptions>();
   auto* g = parent->add_subcommand("guide", "the implicit guiding curve f* = 0 by RDCP (Eq. 2 with the constraints of DCP), and the certified separation");
@@ -468,7 +468,7 @@ Command cut_guide_command(CLI::App* parent) {
   }};
 }
 
-/// splinex cut facet
+/// `splinex cut facet`: its options, and what it runs (the work is in cut/ and cut/io/).
 Command cut_facet_command(CLI::App* parent) {
   struct FacetCliOptions {
     GuideCliOptions guide;
@@ -562,7 +562,7 @@ Command cut_facet_command(CLI::App* parent) {
   }};
 }
 
-/// splinex cut certify
+/// `splinex cut certify`: its options, and what it runs (the work is in cut/ and cut/io/).
 Command cut_certify_command(CLI::App* parent) {
   auto co = std::make_shared<CertifyCliOptions>();
   auto* ce = parent->add_subcommand("certify", "decide a given cutting curve's validity (Section 2's conditions) exactly, in the solid's coordinates");
@@ -581,7 +581,7 @@ Command cut_certify_command(CLI::App* parent) {
   }};
 }
 
-/// splinex cut split
+/// `splinex cut split`: its options, and what it runs (the work is in cut/ and cut/io/).
 Command cut_split_command(CLI::App* parent) {
   auto cso = std::make_shared<CertifyCliOptions>();
   auto* sp = parent->add_subcommand("split", "split the solid along a cutting curve (solid3d: surface) certified valid: the two sub-solids' facets");

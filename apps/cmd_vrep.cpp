@@ -31,11 +31,6 @@ namespace splinex::app {
 
 namespace {
 
-}  // namespace
-
-
-namespace {
-
 struct ConstructOptions {
   std::string kind, arith = "exact", surface, first, second, faces, surfaces, vector, at, axis = "z";
   int quarters = 4, degree = 3;
@@ -192,7 +187,7 @@ VModel<Rational> exact_model(const std::vector<std::string>& files, const Contex
 vrep::Operand operand(const std::string& file, const Context& ctx) { return vrep::load_operand(file, ctx.limits, ctx.read_limits); }
 
 
-/// vrep construct
+/// `splinex vrep construct`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_construct(CLI::App* v) {
   auto o = std::make_shared<ConstructOptions>();
   auto* c = v->add_subcommand("construct", "a trivariate from surfaces: extrude, ruled, revolve, boolean-sum or sweep");
@@ -220,7 +215,7 @@ Command vrep_construct(CLI::App* v) {
   }};
 }
 
-/// vrep certify
+/// `splinex vrep certify`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_certify(CLI::App* v) {
   struct CertifyOptions {
     std::string arith = "exact", file;
@@ -243,7 +238,7 @@ Command vrep_certify(CLI::App* v) {
   }};
 }
 
-/// vrep primitive
+/// `splinex vrep primitive`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_primitive(CLI::App* v) {
   auto po = std::make_shared<PrimitiveOptions>();
   auto* prim = v->add_subcommand("primitive", "a glued primitive V-model (Figure 9) or a singular single trivariate (Figure 8)");
@@ -286,7 +281,7 @@ Command vrep_primitive(CLI::App* v) {
   }};
 }
 
-/// vrep glue
+/// `splinex vrep glue`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_glue(CLI::App* v) {
   auto go = std::make_shared<GlueOptions>();
   auto* glue_cmd = v->add_subcommand("glue", "glue trivariates and V-models into one V-model (exact; --eps: in double, IRIT's test)");
@@ -311,7 +306,7 @@ Command vrep_glue(CLI::App* v) {
   }};
 }
 
-/// vrep info
+/// `splinex vrep info`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_info(CLI::App* v) {
   auto io = std::make_shared<GlueOptions>();
   auto* info = v->add_subcommand("info", "counts, Euler characteristic, invariants, neighbours and regularity per cell");
@@ -325,7 +320,7 @@ Command vrep_info(CLI::App* v) {
   }};
 }
 
-/// vrep export
+/// `splinex vrep export`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_export(CLI::App* v) {
   struct ExportOptions {
     std::vector<std::string> files;
@@ -373,7 +368,7 @@ Command vrep_export(CLI::App* v) {
   }};
 }
 
-/// vrep eval
+/// `splinex vrep eval`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_eval(CLI::App* v) {
   struct EvalOptions {
     std::string file, at;
@@ -406,7 +401,7 @@ Command vrep_eval(CLI::App* v) {
   }};
 }
 
-/// vrep boolean
+/// `splinex vrep boolean`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_boolean(CLI::App* v) {
   auto bo = std::make_shared<BooleanOptions>();
   bo->boxes = 4096;
@@ -438,7 +433,7 @@ Command vrep_boolean(CLI::App* v) {
   }};
 }
 
-/// vrep volume
+/// `splinex vrep volume`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_volume(CLI::App* v) {
   auto volo = std::make_shared<BooleanOptions>();
   auto* vol = v->add_subcommand("volume", "every cell's volume and the model's: exact (polynomial cells) or a certified enclosure (rational)");
@@ -468,7 +463,7 @@ Command vrep_volume(CLI::App* v) {
   }};
 }
 
-/// vrep classify
+/// `splinex vrep classify`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_classify(CLI::App* v) {
   auto clo = std::make_shared<BooleanOptions>();
   auto* cls = v->add_subcommand("classify", "which cells contain a point (exact: planar cells; otherwise the model's exact region)");
@@ -503,7 +498,7 @@ Command vrep_classify(CLI::App* v) {
   }};
 }
 
-/// vrep topology
+/// `splinex vrep topology`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_topology(CLI::App* v) {
   struct TopologyCli {
     std::string file;
@@ -529,7 +524,7 @@ Command vrep_topology(CLI::App* v) {
   }};
 }
 
-/// vrep teapot
+/// `splinex vrep teapot`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_teapot(CLI::App* v) {
   struct TeapotCli {
     std::string arith = "exact", svg, vtk;
@@ -558,7 +553,7 @@ Command vrep_teapot(CLI::App* v) {
   }};
 }
 
-/// vrep ssi
+/// `splinex vrep ssi`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_ssi(CLI::App* v) {
   struct SsiCli {
     std::string a, b, step = "1/16", tolerance = "1e-12", svg, obj;
@@ -622,7 +617,7 @@ Command vrep_ssi(CLI::App* v) {
   }};
 }
 
-/// vrep blend
+/// `splinex vrep blend`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_blend(CLI::App* v) {
   struct BlendCli {
     std::string a, b, at, attribute;

@@ -13,3 +13,5 @@ cmake -S "$src/examples/consumer" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$tmp/prefix" 
 cmake --build "$tmp/b" > "$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
 "$tmp/b/consumer"
 "$tmp/b/verify" > "$tmp/verify.log" || { cat "$tmp/verify.log"; exit 1; }
+"$tmp/b/vrep_boolean" "$src/tests/data/vmodel_box.json" "$src/tests/data/vrep_box_field.json" > "$tmp/vrep.log" 2>&1 \
+  && grep -q "^intersection: 1 cell(s), planar cuts$" "$tmp/vrep.log" || { cat "$tmp/vrep.log"; exit 1; }
