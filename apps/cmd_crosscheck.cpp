@@ -31,10 +31,7 @@ Commands add_crosscheck(CLI::App& app) {
   return {{c, [o](const Context& ctx) {
              const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
              OpOptions op = o->op_options;
-             const std::string& m = o->op_options.insert_method;  // --method serves both operations
-             if (o->op == "elevate") op.elevate_method = m == "blossom" ? "blossom" : m == "a59" ? "a59" : "auto";
-             if (o->op == "insert-knots" && o->op_options.knots.empty())
-               throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
+             use_one_method(o->op, op, o->op);  // --method serves both operations
              const auto rep = crosscheck(make_op(o->op, op), S, ArithSpec::parse(o->float_arith, "arith"), o->grid, ctx.limits);
              std::cout << rep.to_json().dump(2) << "\n";
              return 0;

@@ -167,9 +167,7 @@ Commands add_verify(CLI::App& app) {
                  kind = "insert-knots";
                  op.insert_method = "a54";
                }
-               if (o->operation == "elevate") op.elevate_method = op.insert_method == "a54" ? "auto" : op.insert_method;
-               if (kind == "insert-knots" && op.knots.empty())
-                 throw UsageError("knots", o->operation + " needs --knots", "add --knots \"k1,k2,...\"");
+               use_one_method(kind, op, o->operation);
                rep = verify(make_op(kind, op), S, verify_candidate_splines(cand, ctx.limits), vo, ctx.limits);
              }
              std::cout << rep.to_json().dump(2) << "\n";

@@ -58,11 +58,10 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&bargc, bargv.data());
   std::vector<std::string> names;
   try {
-    const std::string& m = op.insert_method;  // --method serves both operations
+    const std::string& m = op.insert_method;  // --method serves both operations; here each only its own methods
     if (kind == "insert-knots" && m != "a54" && m != "boehm") throw UsageError("method", "insert-knots takes a54 or boehm", "give --method a54|boehm");
     if (kind == "elevate" && m == "boehm") throw UsageError("method", "elevate takes auto, a59 or blossom", "give --method auto|a59|blossom");
-    if (kind == "elevate") op.elevate_method = m == "a54" ? "auto" : m;
-    if (kind == "insert-knots" && op.knots.empty()) throw UsageError("knots", "insert-knots needs --knots", "add --knots \"k1,k2,...\"");
+    use_one_method(kind, op, kind);
     const Operation o = make_op(kind, op);
     const auto S = spline_from_json(read_json_file(file), Limits{}, "input");
     std::string rest = ariths;

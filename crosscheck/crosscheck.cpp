@@ -55,6 +55,12 @@ Operation make_op(const std::string& kind, const OpOptions& o) {
   return op;
 }
 
+void use_one_method(const std::string& kind, OpOptions& o, const std::string& what) {
+  const std::string& m = o.insert_method;
+  if (kind == "elevate") o.elevate_method = m == "blossom" ? "blossom" : m == "a59" ? "a59" : "auto";
+  if (kind == "insert-knots" && o.knots.empty()) throw UsageError("knots", what + " needs --knots", "add --knots \"k1,k2,...\"");
+}
+
 Operation Operation::parse_kind(const std::string& name) {
   Operation op;
   if (name == "insert-knots") op.kind = Kind::insert_knots;

@@ -40,6 +40,10 @@ struct OpOptions {
 /// The operation `kind` (insert-knots, elevate, ...) with those options, numbers read exactly
 /// (ParseError / UsageError naming the option).
 Operation make_op(const std::string& kind, const OpOptions& o);
+/// For the commands whose one --method (in `insert_method`) serves both insert-knots (a54 | boehm)
+/// and elevate (auto | a59 | blossom): elevate's method taken from it (a59 and blossom as named,
+/// anything else auto), and insert-knots' knots required (UsageError "`what` needs --knots").
+void use_one_method(const std::string& kind, OpOptions& o, const std::string& what);
 
 /// The result splines (one for most operations; the pieces or the two halves otherwise).
 template <class T>

@@ -482,16 +482,22 @@ VerifyReport verify_values(const BSpline<Rational>& S, const std::vector<std::ve
                              options);
 }
 
+std::optional<ErrorStat> VerifyReport::function_stat() const {
+  if (!(reference_scale > 0) || !function.certified) return std::nullopt;
+  ErrorStat e;  // the same definitions as the coefficient errors'
+  e.max_abs = function.upper;
+  e.max_ref = reference_scale;
+  return e;
+}
+
 std::pair<std::string, double> VerifyReport::worst_part() const {
-  const Json j = to_json_parts();
   std::pair<std::string, double> worst{"", 0.0};
-  const auto take = [&](const std::string& name, const Json& part) {
-    if (part.contains("bits_lost") && part["bits_lost"].is_number() && part["bits_lost"].get<double>() > worst.second)
-      worst = {name, part["bits_lost"].get<double>()};
+  const auto take = [&](const char* name, double bits) {
+    if (bits > worst.second) worst = {name, bits};
   };
-  for (const char* part : {"control_points", "values"})
-    if (j.contains(part)) take(part, j[part]);
-  take("function", j["function"]);
+  if (coefficients_compared) take("control_points", control_points.bits_lost(precision));
+  if (values.count) take("values", values.bits_lost(precision));
+  if (const auto f = function_stat()) take("function", f->bits_lost(precision));
   return worst;
 }
 
@@ -554,15 +560,6 @@ Json VerifyReport::verdict() const {
 }
 
 Json VerifyReport::to_json() const {
-  Json j = to_json_parts();
-  const auto [part, bits] = worst_part();
-  j["worst_bits_lost"] = bits;
-  j["worst_part"] = part.empty() ? Json(nullptr) : Json(part);
-  j["verdict"] = verdict();
-  return j;
-}
-
-Json VerifyReport::to_json_parts() const {
   Json j;
   j["operation"] = operation;
   j["precision"] = precision;
@@ -586,14 +583,16 @@ Json VerifyReport::to_json_parts() const {
   Json f = function.to_json();
   // Relative to the largest reference coefficient (values: the largest exact value), and as bits
   // lost at the candidate's precision, as the coefficient errors are.
-  if (reference_scale > 0 && function.certified) {
-    ErrorStat e;  // the same definitions as the coefficient errors'
-    e.max_abs = function.upper;
-    e.max_ref = reference_scale;
-    f["relative"] = approx_json(e.rel());
-    f["bits_lost"] = e.bits_lost(precision);
+  if (const auto e = function_stat()) {
+    f["relative"] = approx_json(e->rel());
+    f["bits_lost"] = e->bits_lost(precision);
   }
   j["function"] = f;
+  // The summary: the worst bits lost and where, and the verdict.
+  const auto [part, bits] = worst_part();
+  j["worst_bits_lost"] = bits;
+  j["worst_part"] = part.empty() ? Json(nullptr) : Json(part);
+  j["verdict"] = verdict();
   return j;
 }
 

@@ -19,6 +19,7 @@
 //    the denominator's smallest (positive weights) bounds it, refined the same way.
 #pragma once
 #include <functional>
+#include <optional>
 #include <utility>
 #include <string>
 #include <vector>
@@ -76,10 +77,11 @@ struct VerifyReport {
   /// that differs, or for kernel operations a point of the domain where the functions differ,
   /// measured exactly), otherwise undecided with the reason. {"claim", "status", "reason" | "witness"}.
   Json verdict() const;
-  /// The whole report: the parts below, then "worst_bits_lost", "worst_part" and "verdict".
+  /// The function-level error as an error statistic against the reference's scale, where it is a
+  /// certified bound (its bits lost are the function's in the JSON and in worst_part).
+  std::optional<ErrorStat> function_stat() const;
+  /// The whole report, ending with "worst_bits_lost", "worst_part" and "verdict".
   Json to_json() const;
-  /// The report without the summary fields.
-  Json to_json_parts() const;
 };
 
 /// Reference splines against candidate splines, one to one (a piece list for extraction, the two
