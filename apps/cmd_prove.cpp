@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "apps/command.hpp"
-#include "spline/parallel.hpp"
+#include "base/parallel.hpp"
 #include "proofs/suite.hpp"
 
 namespace splinex::app {

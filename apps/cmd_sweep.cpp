@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "base/errors.hpp"
 #include "experiments/sweep.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex::app {
 

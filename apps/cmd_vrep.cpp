@@ -250,7 +250,7 @@ Command vrep_primitive(CLI::App* v) {
   prim->add_option("--radius2", po->radius2, "cone: the top radius")->capture_default_str();
   prim->add_option("--height", po->height, "cylinder, cone: the height")->capture_default_str();
   prim->add_option("--major", po->major, "torus: the distance of the tube's centre from the axis")->capture_default_str();
-  prim->add_option("--degree", po->degree, "sphere: the patches' degree (radius approximate, direction exact; docs/vrep.md)")
+  prim->add_option("--degree", po->degree, "sphere: the patches' degree (radius approximate, direction exact; docs/vrep/primitives.md)")
       ->capture_default_str();
   prim->add_option("--pieces", po->pieces, "sphere: the patches' polynomial pieces per direction")->capture_default_str();
   prim->add_option("--lo", po->lo, "box: the low corner x,y,z")->capture_default_str();

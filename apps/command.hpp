@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "crosscheck/operations.hpp"
 #include "io/json_io.hpp"
 #include "io/output_path.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex::app {
 

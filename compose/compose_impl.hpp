@@ -2,12 +2,12 @@
 #include <algorithm>
 #include <string>
 
-#include "spline/bezier_impl.hpp"
-#include "spline/arith.hpp"
+#include "bernstein/tensor.hpp"
 #include "compose/compose.hpp"
+#include "spline/arith.hpp"
+#include "spline/bezier_impl.hpp"
 #include "spline/elevate_impl.hpp"
 #include "spline/evaluate_impl.hpp"
-#include "spline/tensor_bernstein.hpp"
 
 namespace splinex {
 namespace detail {
@@ -175,25 +175,25 @@ Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline
   if (method == CompositionMethod::symbolic) {
     /// Homogeneous inner components: W and the local coordinates U_j = (X_j - a_j W)/(b_j - a_j).
     const std::size_t ns = inner.size();
-    detail::Bern<T> W{inner.degrees, std::vector<T>(ns, T(1))};
+    Bernstein<T> W{inner.degrees, std::vector<T>(ns, T(1))};
     if (inner.is_rational()) W.c = inner.weights;
-    std::vector<std::vector<detail::Bern<T>>> basis(n);  // basis[j][i] = B^{e_j}_i(u_j(S)) * W^{e_j}
+    std::vector<std::vector<Bernstein<T>>> basis(n);  // basis[j][i] = B^{e_j}_i(u_j(S)) * W^{e_j}
     for (int j = 0; j < n; ++j) {
       const T a = outer.domain_lo(j), w = outer.domain_hi(j) - a;
-      detail::Bern<T> U{inner.degrees, std::vector<T>(ns)}, V{inner.degrees, std::vector<T>(ns)};
+      Bernstein<T> U{inner.degrees, std::vector<T>(ns)}, V{inner.degrees, std::vector<T>(ns)};
       for (std::size_t i = 0; i < ns; ++i) {
         const T X = inner.points[i * inner.q + j] * (inner.is_rational() ? inner.weights[i] : T(1));
         U.c[i] = (X - a * W.c[i]) / w;
         V.c[i] = W.c[i] - U.c[i];
       }
       const int e = outer.degrees[j];
-      std::vector<detail::Bern<T>> PU{detail::Bern<T>{std::vector<int>(k, 0), {T(1)}}}, PV = PU;
+      std::vector<Bernstein<T>> PU{Bernstein<T>{std::vector<int>(k, 0), {T(1)}}}, PV = PU;
       for (int i = 1; i <= e; ++i) {
-        PU.push_back(detail::bern_product(PU.back(), U));
-        PV.push_back(detail::bern_product(PV.back(), V));
+        PU.push_back(bern_product(PU.back(), U));
+        PV.push_back(bern_product(PV.back(), V));
       }
       for (int i = 0; i <= e; ++i) {
-        detail::Bern<T> b = detail::bern_product(PU[i], PV[e - i]);
+        Bernstein<T> b = bern_product(PU[i], PV[e - i]);
         const T c = detail::binomial<T>(e, i);
         for (auto& x : b.c) x *= c;
         basis[j].push_back(std::move(b));
@@ -204,8 +204,8 @@ Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline
     std::vector<int> I(n);
     for (std::size_t t = 0; t < nt; ++t) {
       detail::unflatten(t, outer.degrees, I);
-      detail::Bern<T> term = basis[0][I[0]];
-      for (int j = 1; j < n; ++j) term = detail::bern_product(term, basis[j][I[j]]);
+      Bernstein<T> term = basis[0][I[0]];
+      for (int j = 1; j < n; ++j) term = bern_product(term, basis[j][I[j]]);
       const T w = outer.is_rational() ? outer.weights[t] : T(1);
       for (std::size_t K = 0; K < total; ++K) {
         if (term.c[K] == T(0)) continue;

@@ -21,9 +21,9 @@
 #include <utility>
 #include <vector>
 
-#include "spline/bezier.hpp"
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "compose/compose.hpp"
+#include "spline/bezier.hpp"
 
 namespace splinex {
 

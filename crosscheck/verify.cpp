@@ -7,8 +7,8 @@
 #include <numeric>
 #include <optional>
 
+#include "bernstein/tensor.hpp"  // Bernstein, bern_product, bern_coordinate
 #include "compose/compose_impl.hpp"
-#include "spline/tensor_bernstein.hpp"  // detail::Bern, bern_product, bern_coordinate
 #include "float/mpfr.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
@@ -175,13 +175,13 @@ FunctionError rational_function_error(const BSpline<Rational>& C0, const BSpline
     for (std::size_t k = 0; k < pieces; ++k) {
       const BezierPiece<Rational> pc = FC.piece(k), pr = FR.piece(k);
       boxes[k] = pc.box;
-      const auto cw = detail::bern_coordinate(pc.spline, q), rw = detail::bern_coordinate(pr.spline, q);
-      const auto W = detail::bern_product(cw, rw);
+      const auto cw = bern_coordinate(pc.spline, q), rw = bern_coordinate(pr.spline, q);
+      const auto W = bern_product(cw, rw);
       const Rational wmin = *std::min_element(W.c.begin(), W.c.end());
       Rational nmax(0);
       for (int c = 0; c < q; ++c) {
-        const auto a = detail::bern_product(detail::bern_coordinate(pc.spline, c), rw);
-        const auto b = detail::bern_product(detail::bern_coordinate(pr.spline, c), cw);
+        const auto a = bern_product(bern_coordinate(pc.spline, c), rw);
+        const auto b = bern_product(bern_coordinate(pr.spline, c), cw);
         for (std::size_t i = 0; i < a.c.size(); ++i) nmax = std::max(nmax, Rational(abs(Rational(a.c[i] - b.c[i]))));
       }
       bound[k] = nmax / wmin;

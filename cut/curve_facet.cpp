@@ -3,12 +3,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
+#include "bernstein/subdivide.hpp"
 #include "exact/root_isolation.hpp"
 #include "float/rounding.hpp"
 #include "spline/basis.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
 #include "spline/knots.hpp"
@@ -17,7 +19,7 @@ namespace splinex {
 
 namespace {
 
-using P2 = std::array<Rational, 2>;
+using P2 = Point2<Rational>;
 
 P2 at(const BSpline<Rational>& C, const Rational& s) {
   const auto v = evaluate(C, std::vector<Rational>{s});
@@ -27,9 +29,6 @@ P2 d_at(const BSpline<Rational>& C, const Rational& s) {
   const auto v = derivative(C, std::vector<Rational>{s}, {1});
   return {v[0], v[1]};
 }
-Rational cross(const P2& a, const P2& b) { return a[0] * b[1] - a[1] * b[0]; }
-Rational dot(const P2& a, const P2& b) { return a[0] * b[0] + a[1] * b[1]; }
-P2 sub(const P2& a, const P2& b) { return {a[0] - b[0], a[1] - b[1]}; }
 
 // A Bezier piece's control points and its hodograph's (exact).
 struct Piece {
@@ -333,96 +332,78 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   R.tangents = cross(d0, cut.ends[0].tangent) == 0 && dot(d0, cut.ends[0].tangent) > 0 && cross(d1, cut.ends[1].tangent) == 0 &&
                dot(d1, cut.ends[1].tangent) < 0;
   const auto cp = pieces_of(C);
-  std::size_t budget = o.max_pairs;
-  // One budget for the three subdivisions; once spent, what is left is undecided.
-  auto take = [&]() {
-    if (budget == 0) return false;
-    --budget;
-    ++R.pairs;
-    return true;
+  // One budget for the three subdivisions, spent in turn; once spent, what is left is undecided.
+  auto budget = [&] {
+    Budget b;
+    b.max_boxes = o.max_pairs - R.pairs;
+    b.max_depth = o.max_depth;
+    return b;
   };
+  const Walk dfs{Order::depth_first, 4, false};
 
   // Regularity: on each piece, x' or y' of one strict sign; else halve.
-  R.regular = "certified";
-  std::vector<std::pair<Piece, int>> todo;
-  for (const auto& pc : cp) todo.push_back({pc, 0});
-  while (!todo.empty() && R.regular != "violated") {
-    auto [pc, depth] = todo.back();
-    todo.pop_back();
-    if (!take()) {  // the shared budget: what is left stays undecided
-      R.regular = "undecided";
-      break;
-    }
-    bool ok = false;
-    for (int a = 0; a < 2 && !ok; ++a) {
+  auto regular = [&](const Piece& pc, int) {
+    for (int a = 0; a < 2; ++a) {
       bool pos = true, neg = true;
       for (const auto& h : pc.H) pos = pos && h[a] > 0, neg = neg && h[a] < 0;
-      ok = pos || neg;
+      if (pos || neg) return Examined::settled;
     }
-    if (ok) continue;
     const Rational mid = (pc.lo + pc.hi) / 2;
     const P2 dm = d_at(C, mid);
     if (dm[0] == 0 && dm[1] == 0) {
-      R.regular = "violated";
       R.singular_s = mid;
-      break;
+      return Examined::refuted;
     }
-    if (depth >= o.max_depth) {
-      R.regular = "undecided";
-      continue;
-    }
+    return Examined::split;
+  };
+  auto halve_piece = [](Piece&& pc, int, auto&& emit) {
     auto [a, b] = halve(pc);
-    todo.push_back({a, depth + 1});
-    todo.push_back({b, depth + 1});
-  }
+    emit(std::move(a));
+    emit(std::move(b));
+  };
+  const Subdivision reg = subdivide(cp, dfs, budget(), regular, halve_piece, [](Piece&&, Left) {});
+  R.pairs += reg.examined;
+  R.regular = reg.stop == Subdivision::Stop::refuted ? "violated" : reg.decided() ? "certified" : "undecided";
 
   // Injectivity: pairs of intervals.
-  R.injective = "certified";
   struct Pair {
     Piece a, b;
-    int depth;
   };
   std::vector<Pair> pairs;
   for (std::size_t i = 0; i < cp.size(); ++i)
-    for (std::size_t j = i; j < cp.size(); ++j) pairs.push_back({cp[i], cp[j], 0});
-  while (!pairs.empty()) {
-    Pair pr = pairs.back();
-    pairs.pop_back();
-    if (!take()) {
-      R.injective = "undecided";
-      break;
-    }
+    for (std::size_t j = i; j < cp.size(); ++j) pairs.push_back({cp[i], cp[j]});
+  auto injective = [&](const Pair& pr, int) {
     const bool same = pr.a.lo == pr.b.lo && pr.a.hi == pr.b.hi;
     const bool adjacent = pr.a.hi == pr.b.lo || pr.b.hi == pr.a.lo;
-    if (!same && !adjacent && boxes_disjoint(pr.a, pr.b)) continue;
+    if (!same && !adjacent && boxes_disjoint(pr.a, pr.b)) return Examined::settled;
     if (same || adjacent) {
       // one direction d with d . C' > 0 on both: C is monotone along d on the union
       const Rational lo = same ? pr.a.lo : std::min(pr.a.lo, pr.b.lo), hi = same ? pr.a.hi : std::max(pr.a.hi, pr.b.hi);
       const P2 chord = sub(at(C, hi), at(C, lo));
       const P2 dm = d_at(C, (lo + hi) / 2);
-      bool ok = false;
-      for (const P2& d : {dm, chord}) ok = ok || (monotone_along(pr.a, d) && monotone_along(pr.b, d));
-      if (ok) continue;
+      for (const P2& d : {dm, chord})
+        if (monotone_along(pr.a, d) && monotone_along(pr.b, d)) return Examined::settled;
     }
-    if (pr.depth >= o.max_depth) {
-      R.injective = "undecided";
-      continue;
-    }
-    if (same) {
+    return Examined::split;
+  };
+  auto split_pair = [](Pair&& pr, int, auto&& emit) {
+    if (pr.a.lo == pr.b.lo && pr.a.hi == pr.b.hi) {  // a piece against itself: its halves and the two apart
       auto [a, b] = halve(pr.a);
-      pairs.push_back({a, a, pr.depth + 1});
-      pairs.push_back({b, b, pr.depth + 1});
-      pairs.push_back({a, b, pr.depth + 1});
-    } else {
-      auto [a1, a2] = halve(pr.a);
-      auto [b1, b2] = halve(pr.b);
-      for (const auto& x : {a1, a2})
-        for (const auto& y : {b1, b2}) pairs.push_back({x, y, pr.depth + 1});
+      emit(Pair{a, a});
+      emit(Pair{b, b});
+      emit(Pair{a, b});
+      return;
     }
-  }
+    auto [a1, a2] = halve(pr.a);
+    auto [b1, b2] = halve(pr.b);
+    for (const auto& x : {a1, a2})
+      for (const auto& y : {b1, b2}) emit(Pair{x, y});
+  };
+  const Subdivision inj = subdivide(std::move(pairs), dfs, budget(), injective, split_pair, [](Pair&&, Left) {});
+  R.pairs += inj.examined;
+  R.injective = inj.decided() ? "certified" : "undecided";
 
   // No collision: curve intervals against facet pieces (split at the cut points).
-  R.inside = "certified";
   std::vector<std::pair<Piece, std::size_t>> fp;
   for (const auto& P : split_at_cut_points(S, cut))
     for (const auto& bz : extract_bezier(P.curve)) fp.push_back({make_piece(bz.spline), P.facet});
@@ -435,20 +416,13 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   auto touches = [](const Piece& f, const P2& c) { return f.P.front() == c || f.P.back() == c; };
   struct CPair {
     Piece c, f;
-    int depth;
   };
   std::vector<CPair> cpairs;
   std::vector<Rational> suspects;
   for (const auto& c : cp)
-    for (const auto& f : fp) cpairs.push_back({c, f.first, 0});
-  while (!cpairs.empty()) {
-    CPair pr = cpairs.back();
-    cpairs.pop_back();
-    if (!take()) {
-      R.inside = "undecided";
-      break;
-    }
-    if (boxes_disjoint(pr.c, pr.f)) continue;
+    for (const auto& f : fp) cpairs.push_back({c, f.first});
+  auto inside = [&](const CPair& pr, int) {
+    if (boxes_disjoint(pr.c, pr.f)) return Examined::settled;
     const bool at_start = pr.c.lo == s0 && touches(pr.f, p) && pr.c.hi < s1;
     const bool at_end = pr.c.hi == s1 && touches(pr.f, q) && s0 < pr.c.lo;
     if (at_start || at_end) {
@@ -463,20 +437,24 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
         const P2 nn = at_start ? n : P2{-n[0], -n[1]};
         if (monotone_along(pr.c, nn) && behind(pr.f, n, c)) ok = true;
       }
-      if (ok) continue;
+      if (ok) return Examined::settled;
     }
-    if (pr.depth >= o.max_depth) {
-      R.inside = "undecided";
-      suspects.push_back((pr.c.lo + pr.c.hi) / 2);
-      continue;
-    }
+    return Examined::split;
+  };
+  auto split_cpair = [&](CPair&& pr, int depth, auto&& emit) {
     auto [c1, c2] = halve(pr.c);
     auto [f1, f2] = halve(pr.f);
     for (const auto& x : {c1, c2})
-      for (const auto& y : {f1, f2}) cpairs.push_back({x, y, pr.depth + 1});
+      for (const auto& y : {f1, f2}) emit(CPair{x, y});
     // Look for a witness early: the middle of this curve interval.
-    if (pr.depth == 6 || pr.depth == 12) suspects.push_back((pr.c.lo + pr.c.hi) / 2);
-  }
+    if (depth == 6 || depth == 12) suspects.push_back((pr.c.lo + pr.c.hi) / 2);
+  };
+  auto suspect = [&](CPair&& pr, Left why) {
+    if (why == Left::depth) suspects.push_back((pr.c.lo + pr.c.hi) / 2);
+  };
+  const Subdivision col = subdivide(std::move(cpairs), dfs, budget(), inside, split_cpair, suspect);
+  R.pairs += col.examined;
+  R.inside = col.decided() ? "certified" : "undecided";
   if (R.inside != "certified") {
     // Witness: an exact point of C outside the solid or on its boundary.
     for (const auto& s : suspects) {

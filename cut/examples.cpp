@@ -1,13 +1,14 @@
 #include "cut/examples.hpp"
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "spline/factories.hpp"
 
 namespace splinex {
 
 namespace {
 
-using P = std::array<Rational, 2>;
+using P = Point2<Rational>;
 Rational q(long a, long b = 1) { return Rational(a, b); }
 
 BSpline<Rational> segment(const P& a, const P& b) {

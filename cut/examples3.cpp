@@ -1,12 +1,13 @@
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "cut/examples.hpp"
-#include "spline/errors.hpp"
 #include "spline/factories.hpp"
 
 namespace splinex {
 
 namespace {
 
-using P3 = std::array<Rational, 3>;
+using P3 = Point3<Rational>;
 Rational q(long a, long b = 1) { return Rational(a, b); }
 
 // The bilinear patch with corners a (u0 v0), b (u1 v0), c (u1 v1), d (u0 v1): normal (b-a) x (d-a).
@@ -29,7 +30,8 @@ P3 inward_normal(const BSpline<Rational>& F) {
   // minus (P10 - P00) x (P01 - P00)
   P3 a, b;
   for (int k = 0; k < 3; ++k) a[k] = F.points[3 + k] - F.points[k], b[k] = F.points[6 + k] - F.points[k];
-  return {-(a[1] * b[2] - a[2] * b[1]), -(a[2] * b[0] - a[0] * b[2]), -(a[0] * b[1] - a[1] * b[0])};
+  const P3 n = cross(a, b);
+  return {-n[0], -n[1], -n[2]};
 }
 
 // The cutting data: b = facets whose centre satisfies `in_b`; each loop side gets the inward
@@ -158,7 +160,8 @@ CutExample3 cut_example3(const std::string& name) {
         Fu[k] = (1 - v) * (p10 - p00) + v * (p11 - p01);
         Fv[k] = (1 - u) * (p01 - p00) + u * (p11 - p10);
       }
-      t.tangent = {-(Fu[1] * Fv[2] - Fu[2] * Fv[1]), -(Fu[2] * Fv[0] - Fu[0] * Fv[2]), -(Fu[0] * Fv[1] - Fu[1] * Fv[0])};
+      const P3 n = cross(Fu, Fv);
+      t.tangent = {-n[0], -n[1], -n[2]};
     }
   } else {
     std::string names;

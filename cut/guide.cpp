@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "base/errors.hpp"
 #include "float/rounding.hpp"
 #include "spline/basis.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
 #include "spline/knots.hpp"

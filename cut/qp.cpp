@@ -18,8 +18,8 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_mat.h>
 
+#include "base/errors.hpp"
 #include "exact/linear_solve.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex {
 

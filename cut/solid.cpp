@@ -4,9 +4,10 @@
 #include <optional>
 #include <sstream>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
 
@@ -48,8 +49,6 @@ std::array<Rational, 2> direction(const BSpline<Rational>& F, const Rational& s,
                         "give facets that are curves, not points");
 }
 
-Rational cross(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) { return a[0] * b[1] - a[1] * b[0]; }
-Rational dot(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) { return a[0] * b[0] + a[1] * b[1]; }
 
 // t strictly inside the solid's angle at a point with incoming direction ein and outgoing eout
 // (counter-clockwise loop: the solid is on the left).
@@ -121,9 +120,8 @@ void validate_solid(const Solid2<Rational>& S) {
 
 namespace {
 
-using P2 = std::array<Rational, 2>;
+using P2 = Point2<Rational>;
 
-P2 sub(const P2& a, const P2& b) { return {a[0] - b[0], a[1] - b[1]}; }
 P2 perp(const P2& a) { return {Rational(-a[1]), a[0]}; }
 bool is_zero(const P2& a) { return a[0] == 0 && a[1] == 0; }
 

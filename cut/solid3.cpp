@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <map>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
+#include "bernstein/tensor.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
-#include "spline/tensor_bernstein.hpp"
 
 namespace splinex {
 
 namespace {
 
-using P3 = std::array<Rational, 3>;
-using detail::Bern;
+using P3 = Point3<Rational>;
 
 std::string facet_field(std::size_t i) { return "facets[" + std::to_string(i) + "]"; }
 const char* side_name(int s) {
@@ -23,9 +23,6 @@ const char* side_name(int s) {
 }
 
 P3 point(const BSpline<Rational>& C, std::size_t i) { return {C.points[3 * i], C.points[3 * i + 1], C.points[3 * i + 2]}; }
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-Rational dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Knots mapped affinely onto [0, 1] (a side's shape does not depend on its parameter interval).
 std::vector<Rational> normalized(const std::vector<Rational>& U) {
@@ -48,28 +45,28 @@ bool reversed_equal(const BSpline<Rational>& A, const BSpline<Rational>& B) {
 }
 
 // t . (F_u x F_v) of one Bezier piece, as a bivariate Bernstein polynomial on [0, 1]^2.
-Bern<Rational> normal_dot(const BSpline<Rational>& piece, const P3& t) {
-  std::array<Bern<Rational>, 3> du, dv;
+Bernstein<Rational> normal_dot(const BSpline<Rational>& piece, const P3& t) {
+  std::array<Bernstein<Rational>, 3> du, dv;
   for (int c = 0; c < 3; ++c) {
-    const auto x = detail::bern_coordinate(piece, c);
-    du[c] = detail::bern_derivative(x, 0);
-    dv[c] = detail::bern_derivative(x, 1);
+    const auto x = bern_coordinate(piece, c);
+    du[c] = bern_derivative(x, 0);
+    dv[c] = bern_derivative(x, 1);
   }
-  Bern<Rational> out;
+  Bernstein<Rational> out;
   for (int c = 0; c < 3; ++c) {
     const int a = (c + 1) % 3, b = (c + 2) % 3;
     if (t[c] == 0) continue;
-    auto term = detail::bern_sub(detail::bern_product(du[a], dv[b]), detail::bern_product(du[b], dv[a]));
+    auto term = bern_sub(bern_product(du[a], dv[b]), bern_product(du[b], dv[a]));
     for (auto& v : term.c) v *= t[c];
-    out = out.c.empty() ? term : detail::bern_add(out, term);
+    out = out.c.empty() ? term : bern_add(out, term);
   }
   return out;
 }
 
 // Decide g < 0 on all of [0, 1] (univariate Bernstein): 1 certified, -1 refuted (value >= 0 at a
 // point, returned in `where`, a parameter in [0, 1]), 0 undecided within the depth.
-int negative_on_interval(const Bern<Rational>& g, int depth, Rational lo, Rational hi, Rational& where) {
-  if (detail::bern_sign(g) < 0) return 1;
+int negative_on_interval(const Bernstein<Rational>& g, int depth, Rational lo, Rational hi, Rational& where) {
+  if (bern_sign(g) < 0) return 1;
   if (!(g.c.front() < 0)) {
     where = lo;
     return -1;
@@ -82,7 +79,7 @@ int negative_on_interval(const Bern<Rational>& g, int depth, Rational lo, Ration
     where = (lo + hi) / 2;
     return 0;
   }
-  const auto [a, b] = detail::bern_split(g, 0, Rational(1, 2));
+  const auto [a, b] = bern_split(g, 0, Rational(1, 2));
   const Rational mid = (lo + hi) / 2;
   const int ra = negative_on_interval(a, depth - 1, lo, mid, where);
   if (ra <= 0) return ra;
@@ -97,7 +94,7 @@ void check_tangent_below(const BSpline<Rational>& F, int side, const P3& t, cons
     const bool at_hi = side == 1 || side == 2;
     const Rational fixed = at_hi ? F.domain_hi(l) : F.domain_lo(l);
     if ((at_hi ? sp.domain_hi(l) : sp.domain_lo(l)) != fixed) continue;
-    const auto g = detail::bern_face(normal_dot(sp, t), l, at_hi ? 1 : 0);
+    const auto g = bern_face(normal_dot(sp, t), l, at_hi ? 1 : 0);
     Rational where;
     const int r = negative_on_interval(g, 24, Rational(0), Rational(1), where);
     if (r < 0)
@@ -155,16 +152,16 @@ Rational signed_volume(const Solid3<Rational>& S) {
   Rational total(0);
   for (const auto& F : S.facets)
     for (const auto& piece : extract_bezier(F)) {
-      std::array<Bern<Rational>, 3> x, du, dv;
+      std::array<Bernstein<Rational>, 3> x, du, dv;
       for (int c = 0; c < 3; ++c) {
-        x[c] = detail::bern_coordinate(piece.spline, c);
-        du[c] = detail::bern_derivative(x[c], 0);
-        dv[c] = detail::bern_derivative(x[c], 1);
+        x[c] = bern_coordinate(piece.spline, c);
+        du[c] = bern_derivative(x[c], 0);
+        dv[c] = bern_derivative(x[c], 1);
       }
       for (int c = 0; c < 3; ++c) {
         const int a = (c + 1) % 3, b = (c + 2) % 3;
-        const auto nc = detail::bern_sub(detail::bern_product(du[a], dv[b]), detail::bern_product(du[b], dv[a]));
-        const auto g = detail::bern_product(x[c], nc);
+        const auto nc = bern_sub(bern_product(du[a], dv[b]), bern_product(du[b], dv[a]));
+        const auto g = bern_product(x[c], nc);
         Rational sum(0);
         for (const auto& v : g.c) sum += v;
         total += sum / Rational(static_cast<long>(g.c.size()));

@@ -14,25 +14,27 @@
 #include <iostream>
 #include <optional>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
+#include "bernstein/subdivide.hpp"
+#include "bernstein/tensor.hpp"
 #include "compose/compose.hpp"
 #include "cut/guide.hpp"
+#include "cut/membership.hpp"
 #include "cut/qp.hpp"
 #include "exact/linear_solve.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
 #include "spline/hodograph.hpp"
-#include "spline/tensor_bernstein.hpp"
 
 namespace splinex {
 
 namespace {
 
-using P2 = std::array<Rational, 2>;
-using P3 = std::array<Rational, 3>;
+using P2 = Point2<Rational>;
+using P3 = Point3<Rational>;
 using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
-using detail::Bern;
 
 K::Point_2 cg(const P2& p) { return K::Point_2(CGAL::Gmpq(p[0].backend().data()), CGAL::Gmpq(p[1].backend().data())); }
 
@@ -44,9 +46,6 @@ std::vector<K::Point_2> cg_polygon(const std::vector<P2>& v) {
 
 Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 Rational max_abs3(const P3& a) { return std::max(rabs(a[0]), std::max(rabs(a[1]), rabs(a[2]))); }
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-Rational dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // ---- Step 1 --------------------------------------------------------------------------------------
 
@@ -182,7 +181,7 @@ bool into_unit_square(std::vector<P2>& q) {
 std::optional<std::vector<P2>> eq5_polygon(const std::vector<LoopSide3>& loop, std::string& why) {
   const std::size_t n = loop.size();
   const P3 N = newell_normal(loop);
-  const Rational NN = dot3(N, N);
+  const Rational NN = dot(N, N);
   if (NN == 0) {
     why = "the loop's Newell normal is zero";
     return std::nullopt;
@@ -194,8 +193,8 @@ std::optional<std::vector<P2>> eq5_polygon(const std::vector<LoopSide3>& loop, s
   std::vector<Rational> sq(n), cq(n);
   for (std::size_t j = 0; j < n; ++j) {
     const P3 din = sub(loop[(j + n - 1) % n].end, loop[(j + n - 1) % n].start), dout = sub(loop[j].end, loop[j].start);
-    sq[j] = dot3(cross(din, dout), N);
-    cq[j] = dot3(din, dout);
+    sq[j] = dot(cross(din, dout), N);
+    cq[j] = dot(din, dout);
   }
   // theta_j = atan2(sq_j / |N|, cq_j); sum them
   std::vector<__mpfr_struct> theta(n);
@@ -336,7 +335,7 @@ void add_outer(QuadraticProgram<T>& qp, const std::vector<std::pair<std::size_t,
     for (const auto& [j, vj] : a) qp.d(i, j) += w * vi * vj;
 }
 
-Rational dot(const std::vector<std::pair<std::size_t, Rational>>& a, const std::vector<Rational>& x) {
+Rational sparse_dot(const std::vector<std::pair<std::size_t, Rational>>& a, const std::vector<Rational>& x) {
   Rational s(0);
   for (const auto& [i, v] : a) s += v * x[i];
   return s;
@@ -360,7 +359,7 @@ P3 eval3(const BSpline<Rational>& S, const P2& w) {
   return {v[0], v[1], v[2]};
 }
 
-Bern<Rational> scaled(Bern<Rational> b, const Rational& s) {
+Bernstein<Rational> scaled(Bernstein<Rational> b, const Rational& s) {
   for (auto& c : b.c) c *= s;
   return b;
 }
@@ -420,7 +419,7 @@ GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& piece
     P2 lo, hi;
     const BezierPiece<Rational>* piece = nullptr;
     int i = 0, j = 0;  // the sub-cell within the piece
-    std::array<Bern<Rational>, 3> pu, pv;
+    std::array<Bernstein<Rational>, 3> pu, pv;
     std::array<std::pair<Rational, Rational>, 3> box;
   };
   for (int m = 0; m <= max_level; ++m) {
@@ -453,12 +452,12 @@ GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& piece
       const Rational a0(c.i, k), a1(c.i + 1, k), b0(c.j, k), b1(c.j + 1, k);
       const Rational hu = c.hi[0] - c.lo[0], hv = c.hi[1] - c.lo[1];
       for (int d = 0; d < 3; ++d) {
-        auto X = scaled(detail::bern_coordinate(c.piece->spline, d), L);
-        if (k > 1) X = detail::bern_restrict(detail::bern_restrict(X, 0, a0, a1), 1, b0, b1);
-        const auto [lo, hi] = detail::bern_range(X);
+        auto X = scaled(bern_coordinate(c.piece->spline, d), L);
+        if (k > 1) X = bern_restrict(bern_restrict(X, 0, a0, a1), 1, b0, b1);
+        const auto [lo, hi] = bern_range(X);
         c.box[d] = {lo, hi};
-        c.pu[d] = scaled(detail::bern_derivative(X, 0), 1 / hu);
-        c.pv[d] = scaled(detail::bern_derivative(X, 1), 1 / hv);
+        c.pu[d] = scaled(bern_derivative(X, 0), 1 / hu);
+        c.pv[d] = scaled(bern_derivative(X, 1), 1 / hv);
       }
     };
     R.cells = 0;
@@ -478,8 +477,8 @@ GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& piece
         build(mid);
         const std::vector<Rational> half{Rational(1, 2), Rational(1, 2)};
         P3 u, v;
-        for (int d = 0; d < 3; ++d) u[d] = detail::bern_value(mid.pu[d], half), v[d] = detail::bern_value(mid.pv[d], half);
-        const Rational g00 = dot3(u, u), g01 = dot3(u, v), g11 = dot3(v, v), det = g00 * g11 - g01 * g01;
+        for (int d = 0; d < 3; ++d) u[d] = bern_value(mid.pu[d], half), v[d] = bern_value(mid.pv[d], half);
+        const Rational g00 = dot(u, u), g01 = dot(u, v), g11 = dot(v, v), det = g00 * g11 - g01 * g01;
         if (det == 0) {
           ok = false;
           R.why = "p_u x p_v = 0 at the centre of the window at cell (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ")";
@@ -495,15 +494,15 @@ GridCertificate grid_injectivity(const std::vector<BezierPiece<Rational>>& piece
           for (long b = 0; ok && b < 3; ++b) {
             Cell& c = at(I + a, J + b);
             build(c);
-            auto row = [&](int r, const std::array<Bern<Rational>, 3>& w) {
-              Bern<Rational> s = scaled(w[0], A[3 * r]);
-              s = detail::bern_combine(s, scaled(w[1], A[3 * r + 1]), false);
-              return detail::bern_combine(s, scaled(w[2], A[3 * r + 2]), false);
+            auto row = [&](int r, const std::array<Bernstein<Rational>, 3>& w) {
+              Bernstein<Rational> s = scaled(w[0], A[3 * r]);
+              s = bern_combine(s, scaled(w[1], A[3 * r + 1]), false);
+              return bern_combine(s, scaled(w[2], A[3 * r + 2]), false);
             };
             const auto fa = row(0, c.pu), fb1 = row(0, c.pv), fb2 = row(1, c.pu), fc = row(1, c.pv);
-            const auto S = detail::bern_combine(fb1, fb2, false);
-            const auto Q = detail::bern_combine(scaled(detail::bern_product(fa, fc), Rational(4)), detail::bern_product(S, S), true);
-            if (!(detail::bern_sign(fa) > 0 && detail::bern_sign(Q) > 0)) {
+            const auto S = bern_combine(fb1, fb2, false);
+            const auto Q = bern_combine(scaled(bern_product(fa, fc), Rational(4)), bern_product(S, S), true);
+            if (!(bern_sign(fa) > 0 && bern_sign(Q) > 0)) {
               ok = false;
               R.why = "the window at cell (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ") is not certified monotone";
             }
@@ -554,160 +553,6 @@ std::vector<Rational> edge_breaks(const P2& W0, const P2& W1, const std::vector<
   std::sort(s.begin(), s.end());
   s.erase(std::unique(s.begin(), s.end()), s.end());
   return s;
-}
-
-struct Triangle {
-  P3 a, b, c;
-};
-
-
-// A non-planar bilinear facet B(u, v) = a + b u + c v + d u v on [0, 1]^2. Its corners are not
-// coplanar, so b, c, d are independent and B is injective: a ray's crossings are the solutions.
-struct Bilinear {
-  P3 a, b, c, d;
-};
-
-// The facets for exact ray parity: planar convex quadrilaterals as two triangles, non-planar
-// bilinear quadrilaterals as themselves.
-struct MembershipModel {
-  std::vector<Triangle> triangles;
-  std::vector<Bilinear> bilinears;
-};
-
-std::optional<MembershipModel> membership_model(const Solid3<Rational>& S, std::string& why) {
-  MembershipModel M;
-  for (std::size_t i = 0; i < S.facets.size(); ++i) {
-    const auto& F = S.facets[i];
-    if (F.degrees != std::vector<int>{1, 1} || F.count(0) != 2 || F.count(1) != 2) {
-      why = "facets[" + std::to_string(i) + "] is not a bilinear quadrilateral";
-      return std::nullopt;
-    }
-    auto P = [&](std::size_t k) { return P3{F.points[3 * k], F.points[3 * k + 1], F.points[3 * k + 2]}; };
-    const P3 a = P(0), b = P(1), d = P(2), c = P(3);  // P00, P10, P01, P11
-    const P3 n = cross(sub(b, a), sub(d, a));
-    if (dot3(n, sub(c, a)) != 0) {
-      // B = a + (b - a) u + (d - a) v + (c - b - d + a) u v
-      M.bilinears.push_back({a, sub(b, a), sub(d, a), sub(sub(c, b), sub(d, a))});
-      continue;
-    }
-    // convex: the corners a b c d turn the same way as n
-    const std::array<P3, 4> q{a, b, c, d};
-    for (int k = 0; k < 4; ++k)
-      if (!(dot3(cross(sub(q[(k + 1) % 4], q[k]), sub(q[(k + 2) % 4], q[(k + 1) % 4])), n) > 0)) {
-        why = "facets[" + std::to_string(i) + "] is a planar quadrilateral that is not convex";
-        return std::nullopt;
-      }
-    M.triangles.push_back({a, b, c});
-    M.triangles.push_back({a, c, d});
-  }
-  return M;
-}
-
-// A quadratic irrational p + s sqrt(D), D >= 0 rational, and its exact sign.
-struct QuadIrr {
-  Rational p, s;
-};
-int sgn(const Rational& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
-int sign_of(const QuadIrr& x, const Rational& D) {
-  const int sp = sgn(x.p), ss = D == 0 ? 0 : sgn(x.s);
-  if (ss == 0) return sp;
-  if (sp == 0 || sp == ss) return ss;
-  const Rational l = x.p * x.p, r = x.s * x.s * D;
-  return l > r ? sp : l < r ? ss : 0;
-}
-QuadIrr mul(const QuadIrr& x, const QuadIrr& y, const Rational& D) { return {x.p * y.p + x.s * y.s * D, x.p * y.s + x.s * y.p}; }
-QuadIrr lin(const Rational& k0, const Rational& k1, const QuadIrr& u) { return {k0 + k1 * u.p, k1 * u.s}; }  // k0 + k1 u
-
-// The ray x + t r (t > 0) against a non-planar bilinear facet: adds its crossings to hits; 2 when x
-// lies on the facet, -1 when the ray is degenerate for it (through its border, tangent, or along a
-// ruling), else 0. With n1, n2 spanning the plane normal to r, the two equations (B - x) . n_k = 0
-// are bilinear, A_k + B_k u + C_k v + D_k u v = 0; eliminating v leaves the quadratic
-// (A1 + B1 u)(C2 + D2 u) - (A2 + B2 u)(C1 + D1 u) = 0, whose roots are exact quadratic irrationals.
-int bilinear_crossings(const Bilinear& F, const P3& x, const P3& r, std::size_t& hits) {
-  int ax = 0;
-  for (int k = 1; k < 3; ++k)
-    if (rabs(r[k]) < rabs(r[ax])) ax = k;
-  P3 e{Rational(0), Rational(0), Rational(0)};
-  e[ax] = 1;
-  const P3 n1 = cross(r, e), n2 = cross(r, n1);
-  const P3 ax0 = sub(F.a, x);
-  const Rational A1 = dot3(ax0, n1), B1 = dot3(F.b, n1), C1 = dot3(F.c, n1), D1 = dot3(F.d, n1);
-  const Rational A2 = dot3(ax0, n2), B2 = dot3(F.b, n2), C2 = dot3(F.c, n2), D2 = dot3(F.d, n2);
-  const Rational al = B1 * D2 - B2 * D1, be = A1 * D2 + B1 * C2 - A2 * D1 - B2 * C1, ga = A1 * C2 - A2 * C1;
-  std::vector<QuadIrr> roots;
-  Rational D(0);
-  if (al == 0) {
-    if (be == 0) return ga == 0 ? -1 : 0;
-    roots.push_back({-ga / be, Rational(0)});
-  } else {
-    D = be * be - 4 * al * ga;
-    if (D < 0) return 0;
-    const QuadIrr u0{-be / (2 * al), Rational(0)};
-    if (D == 0) {  // tangent: degenerate when the touching point is on the facet
-      const bool in = u0.p >= 0 && u0.p <= 1;
-      return in ? -1 : 0;
-    }
-    roots.push_back({-be / (2 * al), 1 / (2 * al)});
-    roots.push_back({-be / (2 * al), -1 / (2 * al)});
-  }
-  const Rational re = dot3(F.a, r) - dot3(x, r), rb = dot3(F.b, r), rc = dot3(F.c, r), rd = dot3(F.d, r);
-  for (const auto& u : roots) {
-    const int su0 = sign_of(u, D), su1 = sign_of(lin(Rational(1), Rational(-1), u), D);
-    if (su0 < 0 || su1 < 0) continue;
-    // v = num / den from the first equation, else the second
-    QuadIrr num = lin(-A1, -B1, u), den = lin(C1, D1, u);
-    if (sign_of(den, D) == 0) {
-      if (sign_of(num, D) != 0) continue;  // the first equation has no v: no crossing
-      num = lin(-A2, -B2, u), den = lin(C2, D2, u);
-      if (sign_of(den, D) == 0) return -1;  // a whole segment u = u* solves both
-    }
-    const int sd = sign_of(den, D);
-    const int sv0 = sign_of(num, D) * sd;
-    const int sv1 = sign_of(QuadIrr{den.p - num.p, den.s - num.s}, D) * sd;
-    if (sv0 < 0 || sv1 < 0) continue;
-    // t has the sign of (B(u, v) - x) . r; times den: (re + rb u) den + (rc + rd u) num
-    const QuadIrr td1 = mul(lin(re, rb, u), den, D), td2 = mul(lin(rc, rd, u), num, D);
-    const int st = sign_of(QuadIrr{td1.p + td2.p, td1.s + td2.s}, D) * sd;
-    if (st == 0) return 2;
-    if (st > 0) {
-      if (su0 == 0 || su1 == 0 || sv0 == 0 || sv1 == 0) return -1;
-      ++hits;
-    }
-  }
-  return 0;
-}
-
-// Exact ray parity. 0: inside, 1: outside, 2: on the boundary, -1: degenerate ray.
-int parity(const MembershipModel& model, const P3& x, const P3& r) {
-  std::size_t hits = 0;
-  for (const auto& B : model.bilinears) {
-    const int c = bilinear_crossings(B, x, r, hits);
-    if (c != 0) return c;
-  }
-  for (const auto& T : model.triangles) {
-    const P3 e1 = sub(T.b, T.a), e2 = sub(T.c, T.a), s = sub(x, T.a);
-    const P3 h = cross(r, e2);
-    const Rational det = dot3(e1, h);
-    if (det == 0) {
-      const P3 n = cross(e1, e2);
-      if (dot3(s, n) != 0) continue;  // parallel, off the plane
-      // x in the triangle's plane: on the triangle (barycentric by areas) or a degenerate ray
-      const Rational A = dot3(n, n);
-      const Rational beta = dot3(cross(s, e2), n) / A, gamma = dot3(cross(e1, s), n) / A;
-      if (beta >= 0 && gamma >= 0 && beta + gamma <= 1) return 2;
-      return -1;
-    }
-    const Rational beta = dot3(s, h) / det;
-    const P3 q = cross(s, e1);
-    const Rational gamma = dot3(r, q) / det, t = dot3(e2, q) / det;
-    const bool closed = beta >= 0 && gamma >= 0 && beta + gamma <= 1;
-    if (t == 0 && closed) return 2;
-    if (t > 0 && closed) {
-      if (beta == 0 || gamma == 0 || beta + gamma == 1) return -1;
-      ++hits;
-    }
-  }
-  return hits % 2 ? 0 : 1;
 }
 
 }  // namespace
@@ -1012,7 +857,7 @@ CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const Surf
       for (std::size_t r = 0; r < ineq.size(); ++r) {
         if (std::find(work.begin(), work.end(), r) != work.end()) continue;
         const auto& row = exact_qp.rows[2 * ne + r];
-        const Rational gap = row.b - dot(row.a, x);
+        const Rational gap = row.b - sparse_dot(row.a, x);
         if (gap > worst) worst = gap, add = r;
       }
       if (add == ineq.size()) {
@@ -1055,7 +900,7 @@ CuttingSurface<T> cutting_surface(const std::vector<LoopSide3>& loop, const Surf
   R.kkt_failed = kkt.failed;
   R.active_inequalities = 0;
   for (std::size_t r = 0; r < ineq.size(); ++r)
-    if (dot(exact_qp.rows[2 * ne + r].a, x) == exact_qp.rows[2 * ne + r].b) ++R.active_inequalities;
+    if (sparse_dot(exact_qp.rows[2 * ne + r].a, x) == exact_qp.rows[2 * ne + r].b) ++R.active_inequalities;
   R.coefficients = x;
   R.program = exact_qp;
   std::vector<Rational> pts(3 * N);
@@ -1236,28 +1081,23 @@ GuidedResult refine_with_guide(const CuttingSurface<Rational>& init, const BSpli
 
 // ---- certificates --------------------------------------------------------------------------------
 
-static std::optional<Membership> membership_of(const MembershipModel& tris, const P3& x) {
-  static const std::array<P3, 6> rays{P3{Rational(1), Rational(17, 4099), Rational(29, 8191)},
-                                      P3{Rational(-31, 7919), Rational(1), Rational(13, 6007)},
-                                      P3{Rational(19, 5003), Rational(-23, 9001), Rational(1)},
-                                      P3{Rational(-1), Rational(37, 7901), Rational(-41, 8839)},
-                                      P3{Rational(43, 9973), Rational(-1), Rational(-47, 9967)},
-                                      P3{Rational(-53, 9949), Rational(59, 9941), Rational(-1)}};
-  for (const auto& r : rays) {
-    const int p = parity(tris, x, r);
-    if (p == 0) return Membership::inside;
-    if (p == 1) return Membership::outside;
-    if (p == 2) return Membership::boundary;
+/// A parameter interval [lo, hi] of a loop side with a polynomial on it in Bernstein form, and its
+/// halving (the tangent check of certify_cutting_surface).
+namespace {
+struct SideArc {
+  Bernstein<Rational> h;
+  Rational lo, hi;
+};
+struct HalveArc {
+  template <class Emit>
+  void operator()(SideArc&& a, int, Emit&& emit) const {
+    auto [h1, h2] = bern_split(a.h, 0, Rational(1, 2));
+    const Rational m = (a.lo + a.hi) / 2;
+    emit(SideArc{std::move(h1), a.lo, m});
+    emit(SideArc{std::move(h2), m, a.hi});
   }
-  return std::nullopt;
-}
-
-std::optional<Membership> point_in_solid(const Solid3<Rational>& solid, const P3& x) {
-  std::string why;
-  const auto model = membership_model(solid, why);
-  if (!model) return std::nullopt;
-  return membership_of(*model, x);
-}
+};
+}  // namespace
 
 SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,
                                         const BSpline<Rational>& patch, const SurfaceFacetOptions& o) {
@@ -1318,35 +1158,28 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
       // g(s) = t . (p_u m_u + p_v m_v) along the piece
       const auto du = compose_bezier(hodograph(cell.spline, 0), seg), dv = compose_bezier(hodograph(cell.spline, 1), seg);
       if (du.degrees != dv.degrees) throw std::logic_error("certify_cutting_surface: derivative degrees differ");
-      Bern<Rational> g;
+      Bernstein<Rational> g;
       g.deg = du.degrees;
       g.c.assign(du.count(0), Rational(0));
       for (std::size_t k = 0; k < g.c.size(); ++k)
         for (int cc = 0; cc < 3; ++cc) g.c[k] += L.tangent[cc] * (du.points[3 * k + cc] * inward[0] + dv.points[3 * k + cc] * inward[1]);
-      // halving queue on [lo, hi] of the local parameter
-      std::deque<std::tuple<Bern<Rational>, Rational, Rational, int>> q;
-      q.emplace_back(g, Rational(0), Rational(1), 0);
-      while (!q.empty()) {
-        auto [h, lo, hi, depth] = q.front();
-        q.pop_front();
-        if (detail::bern_sign(h) > 0) continue;
-        const Rational mid = detail::bern_value(h, std::vector<Rational>{Rational(1, 2)});
-        if (!(mid > 0)) {
-          const Rational tau = (lo + hi) / 2, s = s0 + (s1 - s0) * tau;
-          const P2 w{W0[0] + s * e[0], W0[1] + s * e[1]};
-          V.tangents = "violated";
-          V.witness = SurfaceValidity::Witness{"tangent", w, eval3(patch, w), mid,
-                                               "t . (dp/dm) <= 0 on loop side " + std::to_string(j) + ": the prescribed tangent does not point into the patch"};
-          break;
-        }
-        if (depth >= o.max_depth) {
-          V.tangents = "undecided";
-          continue;
-        }
-        auto [h1, h2] = detail::bern_split(h, 0, Rational(1, 2));
-        q.emplace_back(h1, lo, (lo + hi) / 2, depth + 1);
-        q.emplace_back(h2, (lo + hi) / 2, hi, depth + 1);
-      }
+      // halving on [lo, hi] of the local parameter (no box budget: the depth bounds it)
+      using Arc = SideArc;
+      auto positive = [&](const Arc& a, int) {
+        if (bern_sign(a.h) > 0) return Examined::settled;
+        const Rational mid = bern_value(a.h, std::vector<Rational>{Rational(1, 2)});
+        if (mid > 0) return Examined::split;
+        const Rational tau = (a.lo + a.hi) / 2, s = s0 + (s1 - s0) * tau;
+        const P2 w{W0[0] + s * e[0], W0[1] + s * e[1]};
+        V.tangents = "violated";
+        V.witness = SurfaceValidity::Witness{"tangent", w, eval3(patch, w), mid,
+                                             "t . (dp/dm) <= 0 on loop side " + std::to_string(j) + ": the prescribed tangent does not point into the patch"};
+        return Examined::refuted;
+      };
+      Budget depth_only;
+      depth_only.max_depth = o.max_depth;
+      const Subdivision run = subdivide(std::vector<Arc>{Arc{g, Rational(0), Rational(1)}}, Walk{}, depth_only, positive, HalveArc{}, [](Arc&&, Left) {});
+      if (run.stop != Subdivision::Stop::refuted && run.left > 0) V.tangents = "undecided";
     }
   }
   if (V.tangents == "undecided") undecided = true;
@@ -1359,7 +1192,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
   const int a0 = domain.axes[0], a1 = domain.axes[1];
   const auto M = projection_alignment(loop, domain);
   struct Cell {
-    Bern<Rational> A, Q, det;
+    Bernstein<Rational> A, Q, det;
     P2 lo, hi;
   };
   std::vector<Cell> cells;
@@ -1367,53 +1200,52 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
     const P2 lo{pc.box[0].first, pc.box[1].first}, hi{pc.box[0].second, pc.box[1].second};
     if (!(lo[0] < bhi[0] && blo[0] < hi[0] && lo[1] < bhi[1] && blo[1] < hi[1])) continue;
     const Rational hu = hi[0] - lo[0], hv = hi[1] - lo[1];
-    const auto X0 = detail::bern_coordinate(pc.spline, a0), Y0 = detail::bern_coordinate(pc.spline, a1);
-    const auto X = detail::bern_combine(scaled(X0, M[0]), scaled(Y0, M[1]), false), Y = detail::bern_combine(scaled(X0, M[2]), scaled(Y0, M[3]), false);
-    const auto A = scaled(detail::bern_derivative(X, 0), 1 / hu), B1 = scaled(detail::bern_derivative(X, 1), 1 / hv);
-    const auto B2 = scaled(detail::bern_derivative(Y, 0), 1 / hu), C = scaled(detail::bern_derivative(Y, 1), 1 / hv);
-    const auto AC = detail::bern_product(A, C);
-    const auto S = detail::bern_combine(B1, B2, false);
+    const auto X0 = bern_coordinate(pc.spline, a0), Y0 = bern_coordinate(pc.spline, a1);
+    const auto X = bern_combine(scaled(X0, M[0]), scaled(Y0, M[1]), false), Y = bern_combine(scaled(X0, M[2]), scaled(Y0, M[3]), false);
+    const auto A = scaled(bern_derivative(X, 0), 1 / hu), B1 = scaled(bern_derivative(X, 1), 1 / hv);
+    const auto B2 = scaled(bern_derivative(Y, 0), 1 / hu), C = scaled(bern_derivative(Y, 1), 1 / hv);
+    const auto AC = bern_product(A, C);
+    const auto S = bern_combine(B1, B2, false);
     Cell cl;
     cl.A = A;
-    cl.Q = detail::bern_combine(scaled(AC, Rational(4)), detail::bern_product(S, S), true);
-    cl.det = detail::bern_combine(AC, detail::bern_product(B1, B2), true);
+    cl.Q = bern_combine(scaled(AC, Rational(4)), bern_product(S, S), true);
+    cl.det = bern_combine(AC, bern_product(B1, B2), true);
     // restricted to the bounding box of Omega
     const P2 rlo{std::max(lo[0], blo[0]), std::max(lo[1], blo[1])}, rhi{std::min(hi[0], bhi[0]), std::min(hi[1], bhi[1])};
     for (int d = 0; d < 2; ++d) {
       const Rational h = hi[d] - lo[d], fa = (rlo[d] - lo[d]) / h, fc = (rhi[d] - lo[d]) / h;
       if (fa > 0 || fc < 1) {
-        cl.A = detail::bern_restrict(cl.A, d, fa, fc);
-        cl.Q = detail::bern_restrict(cl.Q, d, fa, fc);
-        cl.det = detail::bern_restrict(cl.det, d, fa, fc);
+        cl.A = bern_restrict(cl.A, d, fa, fc);
+        cl.Q = bern_restrict(cl.Q, d, fa, fc);
+        cl.det = bern_restrict(cl.det, d, fa, fc);
       }
     }
     cl.lo = rlo, cl.hi = rhi;
     cells.push_back(cl);
   }
   auto certify_cells = [&](bool monotone) {
-    std::deque<std::tuple<Cell, int>> q;
-    for (const auto& c : cells) q.emplace_back(c, 0);
-    std::size_t examined = 0;
-    while (!q.empty()) {
-      auto [c, depth] = q.front();
-      q.pop_front();
-      if (++examined > o.max_pieces) return false;
-      if (!monotone && !box_meets_polygon(c.lo, c.hi, poly)) continue;
-      if (monotone ? (detail::bern_sign(c.A) > 0 && detail::bern_sign(c.Q) > 0) : detail::bern_sign(c.det) > 0) continue;
+    auto positive = [&](const Cell& c, int) {
+      if (!monotone && !box_meets_polygon(c.lo, c.hi, poly)) return Examined::settled;
+      if (monotone ? (bern_sign(c.A) > 0 && bern_sign(c.Q) > 0) : bern_sign(c.det) > 0) return Examined::settled;
       const std::vector<Rational> half{Rational(1, 2), Rational(1, 2)};
-      if (monotone ? (!(detail::bern_value(c.A, half) > 0) || !(detail::bern_value(c.Q, half) > 0)) : !(detail::bern_value(c.det, half) > 0)) return false;
-      if (depth >= o.max_depth) return false;
+      if (monotone ? (!(bern_value(c.A, half) > 0) || !(bern_value(c.Q, half) > 0)) : !(bern_value(c.det, half) > 0)) return Examined::refuted;
+      return Examined::split;
+    };
+    auto halve = [](Cell&& c, int depth, auto&& emit) {  // u and v in turn
       const int d = depth % 2;
       const Rational mid = (c.lo[d] + c.hi[d]) / 2;
-      auto [A1, A2] = detail::bern_split(c.A, d, Rational(1, 2));
-      auto [Q1, Q2] = detail::bern_split(c.Q, d, Rational(1, 2));
-      auto [D1, D2] = detail::bern_split(c.det, d, Rational(1, 2));
+      auto [A1, A2] = bern_split(c.A, d, Rational(1, 2));
+      auto [Q1, Q2] = bern_split(c.Q, d, Rational(1, 2));
+      auto [D1, D2] = bern_split(c.det, d, Rational(1, 2));
       Cell l{A1, Q1, D1, c.lo, c.hi}, r{A2, Q2, D2, c.lo, c.hi};
       l.hi[d] = mid, r.lo[d] = mid;
-      q.emplace_back(l, depth + 1);
-      q.emplace_back(r, depth + 1);
-    }
-    return true;
+      emit(std::move(l));
+      emit(std::move(r));
+    };
+    Budget budget;
+    budget.max_boxes = o.max_pieces;
+    budget.max_depth = o.max_depth;
+    return subdivide(cells, Walk{Order::breadth_first, 2, true}, budget, positive, halve, [](Cell&&, Left) {}).decided();
   };
   const bool aligned = !(M[0] == 1 && M[1] == 0 && M[2] == 0 && M[3] == 1);
   GridCertificate G;
@@ -1446,7 +1278,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
   progress("certificate: collision");
   // collision
   std::string why;
-  const auto triangles = membership_model(solid, why);
+  const auto triangles = cut_detail::membership_model(solid, why);
   const bool membership = triangles.has_value();
   V.membership = !membership ? "not available: " + why
                  : triangles->bilinears.empty()
@@ -1495,7 +1327,7 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
         if (in_polygon(w, poly)) {
           const P3 x = eval3(patch, w);
           if (!in_loop_strip(loop, x, o.strip)) {
-            const auto mb = membership_of(*triangles, x);
+            const auto mb = cut_detail::membership_of(*triangles, x);
             if (mb && *mb != Membership::inside) {
               V.witness = SurfaceValidity::Witness{"collision", w, x, Rational(0),
                                                    *mb == Membership::outside ? "p(w) lies outside the solid (exact ray parity): the surface crosses the boundary"

@@ -1,6 +1,6 @@
 #include "exact/flint_rational.hpp"
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

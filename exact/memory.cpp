@@ -14,7 +14,7 @@
 #include <mutex>
 #include <new>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 // Address and thread sanitizers reserve terabytes of shadow address space: no RLIMIT_AS under them.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)

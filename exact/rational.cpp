@@ -7,7 +7,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

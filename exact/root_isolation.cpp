@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

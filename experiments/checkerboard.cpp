@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
@@ -104,10 +105,13 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
   std::ostringstream svg;
   svg << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * W + 4 * margin << "\" height=\""
       << W + 3 * margin << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svg << "<text x=\"" << margin << "\" y=\"20\" font-family=\"sans-serif\" font-size=\"13\">(a) Algorithm 1: trimmed patches, "
-      << "texture by S's parameters (Definition 1 holds)</text>\n";
-  svg << "<text x=\"" << W + 3 * margin << "\" y=\"20\" font-family=\"sans-serif\" font-size=\"13\">(b) Algorithm 2: "
-      << A.tiles.size() << " tensor-product tiles, texture by each tile's parameters</text>\n";
+  // Each panel's title on two lines within the panel's width (one line overlapped the other panel).
+  auto title = [&](double x, const std::string& first, const std::string& second) {
+    svg << "<text x=\"" << x << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"13\">" << first << "</text>\n"
+        << "<text x=\"" << x << "\" y=\"35\" font-family=\"sans-serif\" font-size=\"13\">" << second << "</text>\n";
+  };
+  title(margin, "(a) Algorithm 1: trimmed patches,", "texture by S's parameters (Definition 1 holds)");
+  title(W + 3 * margin, "(b) Algorithm 2: " + std::to_string(A.tiles.size()) + " tensor-product tiles,", "texture by each tile's parameters");
   // (a) Algorithm 1: each patch draws the part of the texture its region owns.
   std::map<int, int> counts1, counts2;
   const Canvas ca{xmin, ymin, scale, margin, W + 2 * margin};

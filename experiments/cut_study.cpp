@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "base/errors.hpp"
 #include "cut/curve_facet.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
@@ -17,7 +18,6 @@
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/rounding.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

@@ -1,4 +1,5 @@
 #include "experiments/hybrid_experiment.hpp"
+#include "base/point.hpp"
 #include "experiments/section.hpp"
 
 #include <algorithm>
@@ -7,19 +8,19 @@
 #include <iomanip>
 #include <sstream>
 
-#include "fixtures/hybrid_examples.hpp"
-#include "io/hybrid_io.hpp"
 #include "experiments/svg_plot.hpp"
+#include "fixtures/hybrid_examples.hpp"
 #include "float/mpfr.hpp"
-#include "hybrid/hybrid.hpp"
 #include "hybrid/form.hpp"
+#include "hybrid/hybrid.hpp"
+#include "io/hybrid_io.hpp"
 #include "spline/kernel.hpp"
 
 namespace splinex {
 
 namespace {
 
-using P2 = std::array<Rational, 2>;
+using P2 = Point2<Rational>;
 
 // The exact fraction when it is short, else the decimal and a pointer to the JSON.
 std::string frac_or_sci(const Rational& x) {
@@ -254,20 +255,16 @@ std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
           std::vector<Rational> negAt{-At[0], -At[1], -At[2]};
           const Rational c1 = max_norm_diff(dS, negAt);
           span_max = std::max(span_max, c1);
-          const Rational det = Ps[0] * (At[1] * dS[2] - At[2] * dS[1]) - Ps[1] * (At[0] * dS[2] - At[2] * dS[0]) + Ps[2] * (At[0] * dS[1] - At[1] * dS[0]);
+          const Rational det = triple(as_point3(Ps), as_point3(At), as_point3(dS));
           detmax = std::max(detmax, Rational(abs(det)));
-          auto cr = [](const std::vector<double>& a, const std::vector<double>& b) {
-            return std::vector<double>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-          };
-          std::vector<double> pd, ad, sd;
+          Point3<double> pd, ad, sd;
           for (int c = 0; c < 3; ++c) {
-            pd.push_back(to_double(Ps[c]));
-            ad.push_back(to_double(At[c]));
-            sd.push_back(-to_double(dS[c]));
+            pd[c] = to_double(Ps[c]);
+            ad[c] = to_double(At[c]);
+            sd[c] = -to_double(dS[c]);
           }
-          const auto na = cr(pd, ad), ns = cr(pd, sd), x = cr(na, ns);
-          const double dot = na[0] * ns[0] + na[1] * ns[1] + na[2] * ns[2];
-          angmax = std::max(angmax, std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), dot) * 180 / M_PI);
+          const auto na = cross(pd, ad), ns = cross(pd, sd), x = cross(na, ns);
+          angmax = std::max(angmax, std::atan2(std::sqrt(dot(x, x)), dot(na, ns)) * 180 / M_PI);
         }
         c1max = std::max(c1max, span_max);
         zero_spans += span_max == 0 ? 1 : 0;

@@ -1,4 +1,5 @@
 #include "experiments/render.hpp"
+#include "base/point.hpp"
 #include "experiments/svg_plot.hpp"
 
 #include <algorithm>
@@ -23,8 +24,7 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
   // Camera frame: right r, up u, towards the viewer d.
   const std::array<double, 3> d{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
   const std::array<double, 3> r{-std::sin(az), std::cos(az), 0};
-  const std::array<double, 3> u{d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
-  auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const std::array<double, 3> u = cross(d, r);
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   auto grow = [&](const std::array<double, 3>& p) {
     const double x = dot(p, r), y = dot(p, u);
@@ -68,7 +68,7 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
       a[k] = t.p[1][k] - t.p[0][k];
       b[k] = t.p[2][k] - t.p[0][k];
     }
-    std::array<double, 3> nrm{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const std::array<double, 3> nrm = cross(a, b);
     const double nl = std::sqrt(dot(nrm, nrm));
     const double lambert = nl > 0 ? std::abs(dot(nrm, light)) / nl : 0;  // two-sided
     const double f = 0.35 + 0.65 * lambert;

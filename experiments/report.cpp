@@ -22,12 +22,12 @@
 
 #include <mpfr.h>
 
+#include "base/errors.hpp"
+#include "base/parallel.hpp"
 #include "experiments/common.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "proofs/suite.hpp"
-#include "spline/errors.hpp"
-#include "spline/parallel.hpp"
 
 namespace splinex {
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

@@ -16,13 +16,13 @@
 #include <set>
 #include <sstream>
 
+#include "base/errors.hpp"
+#include "base/parallel.hpp"
 #include "experiments/report.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/untrim_tolerance.hpp"
 #include "io/output_path.hpp"
 #include "proofs/suite.hpp"
-#include "spline/errors.hpp"
-#include "spline/parallel.hpp"
 
 namespace splinex {
 

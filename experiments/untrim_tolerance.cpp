@@ -11,13 +11,13 @@
 #include <mutex>
 #include <sstream>
 
+#include "base/parallel.hpp"
+#include "compose/trimmed_compose.hpp"
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
-#include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
-#include "spline/parallel.hpp"
 #include "untrim/algorithm2.hpp"
 #include "untrim/polygon.hpp"
 

@@ -196,9 +196,9 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
                     trimmed_boolean(box({R(0), R(0), R(0)}, {R(2), R(1), R(1)}),
                                     placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-1, 2), R(1, 2), R(1, 2)}),
                                     BooleanOp::unite),
-                    "24 + 27 (docs/vrep.md)"});
+                    "24 + 27 (docs/vrep/topology.md)"});
   models.push_back({"Figure 4 (cone u cylinder)", figure4, ""});
-  models.push_back({"Figure 15's kind", figure15, "18 + 14 (docs/vrep.md)"});
+  models.push_back({"Figure 15's kind", figure15, "18 + 14 (docs/vrep/topology.md)"});
   md << "**Gluing the trimmed cells into one V-model** (`trimmed_glue`, `vrep topology --glue`; 2048 boxes per count): every "
         "half-V-surface's pieces where the other side lies in the model (internal) or not (boundary), certified subdivision counts; "
         "twins exact where two cells share a trivariate (the two sides of a trimming surface) or glued faces of two trivariates, and "

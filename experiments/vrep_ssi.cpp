@@ -7,12 +7,12 @@
 #include <map>
 #include <sstream>
 
+#include "base/errors.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/teapot.hpp"
 #include "float/rounding.hpp"
 #include "io/bpt.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

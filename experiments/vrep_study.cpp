@@ -301,11 +301,11 @@ void vrep_section(ReportContext& ctx) {
       const auto re = certify_regularity(convert<Rational>(rd, [](double x) { return exact_from_double(x); })).verdict;
       const auto db = certify_regularity(rd).verdict;
       ++rows;
-      wrong += db != ex;
-      arithmetic += db != re;
-      md << "| " << (sign < 0 ? "-" : "+") << "2^-" << k << " | " << to_string(ex) << " | " << to_string(re) << " | "
-         << to_string(db) << " | " << (db != ex ? "**yes**" : "no") << " |\n";
-      rcsv << (sign < 0 ? "-" : "") << "2^-" << k << "," << to_string(ex) << "," << to_string(re) << "," << to_string(db) << "\n";
+      wrong += db.status() != ex.status();
+      arithmetic += db.status() != re.status();
+      md << "| " << (sign < 0 ? "-" : "+") << "2^-" << k << " | " << regularity_name(ex) << " | " << regularity_name(re) << " | "
+         << regularity_name(db) << " | " << (db.status() != ex.status() ? "**yes**" : "no") << " |\n";
+      rcsv << (sign < 0 ? "-" : "") << "2^-" << k << "," << regularity_name(ex) << "," << regularity_name(re) << "," << regularity_name(db) << "\n";
     }
   write_file_atomically(ctx.options.out_dir + "/vrep_regularity.csv", rcsv.str());
   md << "\nDouble decides wrongly about the exact input in " << wrong << " of " << rows

@@ -1,6 +1,6 @@
 #include "float/arith_spec.hpp"
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

@@ -4,10 +4,10 @@
 #include <string>
 #include <utility>
 
+#include "base/errors.hpp"
 #include "exact/flint_rational.hpp"
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex {
 

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

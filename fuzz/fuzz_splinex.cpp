@@ -17,18 +17,18 @@
 #include <sstream>
 #include <string>
 
+#include "compose/trimmed_compose.hpp"
+#include "crosscheck/verify.hpp"
 #include "exact/flint_rational.hpp"
-#include "io/hybrid_io.hpp"
-#include "io/json_io.hpp"
-#include "io/trimmed_domain_io.hpp"
 #include "exact/memory.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
 #include "hybrid/hybrid.hpp"
+#include "io/hybrid_io.hpp"
+#include "io/json_io.hpp"
+#include "io/trimmed_domain_io.hpp"
 #include "solve/projection.hpp"
 #include "solve/solver.hpp"
-#include "compose/trimmed_compose.hpp"
-#include "crosscheck/verify.hpp"
 #include "spline/kernel.hpp"
 #include "untrim/curved.hpp"
 #include "untrim/loops.hpp"
@@ -69,7 +69,7 @@ sx::Rational inside(const sx::BSpline<sx::Rational>& S, int d, std::uint8_t f) {
 // in a reported box, no exact root is reported twice, an exact root certified simple has a
 // non-singular Jacobian J(x) (exactly), a box certified to hold one simple root of a univariate
 // g has f of opposite signs (or 0) at its ends.
-void check_roots(const std::vector<sx::detail::Bern<sx::Rational>>& g, const std::vector<sx::Rational>& lo, const std::vector<sx::Rational>& hi,
+void check_roots(const std::vector<sx::Bernstein<sx::Rational>>& g, const std::vector<sx::Rational>& lo, const std::vector<sx::Rational>& hi,
                  const std::vector<sx::Rational>& x0, const sx::SolveOptions& so,
                  const std::function<sx::Rational(const std::vector<sx::Rational>&)>& det_jacobian,
                  const std::function<sx::Rational(const sx::Rational&)>& f1) {
@@ -106,7 +106,7 @@ void run_solve(std::uint8_t arg, const sx::BSpline<sx::Rational>& S, const sx::L
       const R t0 = lo + (hi - lo) * R(arg % 9, 8);
       const auto f = [&](const R& t) -> R { return sx::evaluate(B, {t})[co]; };
       const R c = f(t0);
-      sx::detail::Bern<R> g{{B.degrees[0]}, {}};  // (x - c) W in Bernstein form: the weights are positive
+      sx::Bernstein<R> g{{B.degrees[0]}, {}};  // (x - c) W in Bernstein form: the weights are positive
       bool zero = true;
       for (std::size_t i = 0; i < B.size(); ++i) {
         g.c.push_back((B.points[i * B.q + co] - c) * (B.is_rational() ? B.weights[i] : R(1)));
@@ -137,7 +137,7 @@ void run_solve(std::uint8_t arg, const sx::BSpline<sx::Rational>& S, const sx::L
     }
     const auto c = sx::evaluate(B, x0);
     const int coords[3][2] = {{0, 1}, {0, 2}, {1, 2}}, *co = coords[(arg / 81) % 3];
-    std::vector<sx::detail::Bern<R>> g(2, sx::detail::Bern<R>{{B.degrees[0], B.degrees[1]}, {}});
+    std::vector<sx::Bernstein<R>> g(2, sx::Bernstein<R>{{B.degrees[0], B.degrees[1]}, {}});
     bool zero[2] = {true, true};
     for (int e = 0; e < 2; ++e)
       for (std::size_t i = 0; i < B.size(); ++i) {

@@ -37,10 +37,10 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "spline/arith.hpp"
 #include "spline/bspline.hpp"
-#include "spline/errors.hpp"
-#include "spline/point.hpp"
 
 namespace splinex {
 

@@ -2,10 +2,11 @@
 #pragma once
 #include <algorithm>
 
+#include "base/point.hpp"
+#include "hybrid/hybrid.hpp"
 #include "spline/basis.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/dual.hpp"
-#include "hybrid/hybrid.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex {
@@ -31,11 +32,6 @@ Point2<T> normal(const HybridPatch<T>& P, std::size_t i) {
   const auto& a = P.vertices[i];
   const auto& b = P.vertices[(i + 1) % P.sides()];
   return {b[1] - a[1], a[0] - b[0]};
-}
-
-template <class T>
-T cross(const Point2<T>& a, const Point2<T>& b) {
-  return a[0] * b[1] - a[1] * b[0];
 }
 
 /// mu^i_{j,k} (Definition 2.4) for layers k = 0..l-1.

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "spline/factories.hpp"
 
 namespace splinex {

@@ -4,8 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

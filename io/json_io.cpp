@@ -11,8 +11,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "exact/memory.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

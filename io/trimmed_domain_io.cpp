@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

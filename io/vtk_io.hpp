@@ -7,7 +7,7 @@
 //  - point data RationalWeights (all 1 for polynomial cells) and one array per attribute coordinate
 //    (point coordinates beyond the third).
 // Numbers are written with 17 significant digits: each reads back as the double nearest to the
-// exact value (docs/vrep.md; tests/vrep/test_vtk.py reads the file with VTK and compares).
+// exact value (docs/vrep/model.md; tests/vrep/test_vtk.py reads the file with VTK and compares).
 #pragma once
 #include <array>
 #include <string>

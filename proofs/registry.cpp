@@ -7,10 +7,10 @@
 #include <random>
 #include <stdexcept>
 
+#include "base/parallel.hpp"
 #include "fixtures/random_spline.hpp"
 #include "proofs/suite.hpp"
 #include "proofs/suite_detail.hpp"
-#include "spline/parallel.hpp"
 
 namespace splinex {
 

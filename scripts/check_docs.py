@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the front page and the links of the docs (issue 48): the README has at most 1,000
 words and its status table one short line per capability (at most 200 characters a row), and
-every relative link in README.md and docs/*.md names a file of the checkout."""
+every relative link in README.md and docs/**/*.md (every Markdown file under docs/, sub-folders
+such as docs/vrep/ included) names a file of the checkout."""
 import re
 import sys
 from pathlib import Path
@@ -25,7 +26,7 @@ def main():
             in_status = line.strip() == "## Status"
         if in_status and line.startswith("|") and len(line) > MAX_ROW:
             bad.append(f"README.md:{n}: a status row of {len(line)} characters, above {MAX_ROW}: one short line, the detail on its page")
-    pages = [readme] + sorted((ROOT / "docs").glob("*.md"))
+    pages = [readme] + sorted((ROOT / "docs").rglob("*.md"))
     for page in pages:
         body = page.read_text(encoding="utf-8")
         body = re.sub(r"```.*?```", "", body, flags=re.S)  # links in code blocks are not links

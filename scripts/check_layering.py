@@ -7,10 +7,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 DIRECT = {
-    "spline": [],
+    "base": [],
+    "spline": ["base"],
     "exact": ["spline"],
     "float": ["exact"],
-    "compose": ["float"],
+    "bernstein": ["spline"],  # the tensor Bernstein type and the subdivision engine
+    "compose": ["float", "bernstein"],
     "solve": ["compose"],
     "untrim": ["compose"],
     "cut": ["compose"],

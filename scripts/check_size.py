@@ -10,7 +10,12 @@ came in is listed in scripts/size_allowlist.txt with its size then; that list ma
   - one on the list may not grow past its recorded size;
   - one on the list that now fits (or is gone) must be struck from the list, so the ratchet holds.
 Placement: no JSON (nlohmann) in apps/ or in the algorithm folders, outside the files that are
-listed in the same file as allowed to (the same ratchet: the list may only shrink).
+listed in the same file as allowed to (the same ratchet: the list may only shrink). No point type
+and no point algebra outside base/point.hpp (tests aside): no alias of std::array<T, 2 or 3> (use
+Point2<T>, Point3<T>), no cross product written out (use cross, dot, triple). Verdicts only
+through base/verdict.hpp: no three-valued enum (one with an `undecided` member) outside base/, and
+no verdict spelled as text ("undecided" in an algorithm folder's code); those there when the rule
+came in are listed (`verdict PATH::ENUM`, `verdict-text PATH`) and the list may only shrink.
 
 Functions are found by a brace scanner, not a compiler: comments, strings and character literals
 are blanked, and a `{` at namespace or class scope that follows `)` (with qualifiers, an arrow
@@ -26,12 +31,12 @@ ROOT = Path(__file__).resolve().parent.parent
 ALLOW = ROOT / "scripts" / "size_allowlist.txt"
 FILE_BUDGET = 800
 FUNCTION_BUDGET = 150
-FOLDERS = ["spline", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "io",
+FOLDERS = ["base", "spline", "bernstein", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "io",
            "fixtures", "crosscheck", "proofs", "experiments", "apps", "python", "bench", "fuzz", "tests",
            "examples"]
 # Folders whose code is algorithm, not documents: no JSON there (a package's io/ sub-folder, such as
 # vrep/io/, is where its documents live).
-NO_JSON = ["spline", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "apps"]
+NO_JSON = ["base", "spline", "bernstein", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid", "apps"]
 
 
 def sources():
@@ -186,8 +191,42 @@ def function_name(head):
     return name
 
 
+POINT_ALIAS = re.compile(r"\busing\s+\w+\s*=\s*std::array<[^<>,]+,\s*[23]\s*>")
+CROSS_WRITTEN = re.compile(r"(\w+)\[1\]\s*\*\s*(\w+)\[2\]\s*-\s*\1\[2\]\s*\*\s*\2\[1\]")
+
+
+def point_breaches(rel, code):
+    """Lines of `code` (comments and strings blanked) that define a point type or write out a cross
+    product, outside base/ and tests/."""
+    if rel.startswith(("base/", "tests/")):
+        return []
+    out = []
+    for n, line in enumerate(code.splitlines(), 1):
+        if POINT_ALIAS.search(line):
+            out.append(f"{rel}:{n}: a local point type: use Point2<T> or Point3<T> (base/point.hpp)")
+        if CROSS_WRITTEN.search(line):
+            out.append(f"{rel}:{n}: a cross product written out: use cross (base/point.hpp)")
+    return out
+
+
+THREE_VALUED = re.compile(r"\benum(?:\s+class)?\s+(\w+)\s*(?::\s*\w+\s*)?\{[^}]*\bundecided\b")
+ALGORITHM = ["spline", "bernstein", "exact", "float", "compose", "solve", "untrim", "cut", "vrep", "hybrid"]
+
+
+def verdict_breaches(rel, text, code):
+    """Three-valued enums (by name) and whether the file spells a verdict as text."""
+    if rel.startswith(("base/", "tests/")):
+        return set(), False
+    enums = {f"{rel}::{m.group(1)}" for m in THREE_VALUED.finditer(code)}
+    uncommented = re.sub(r"/\*.*?\*/", "", re.sub(r"//[^\n]*", "", text), flags=re.S)
+    as_text = rel.split("/")[0] in ALGORITHM and "/io/" not in rel and '"undecided"' in uncommented
+    return enums, as_text
+
+
 def measure():
     files, funcs, json_files = {}, {}, set()
+    points = []
+    verdicts, verdict_texts = set(), set()
     for p in sources():
         rel = str(p.relative_to(ROOT))
         text = p.read_text(errors="replace")
@@ -198,14 +237,19 @@ def measure():
             if size > funcs.get(key, 0):
                 funcs[key] = size
         code = blank(text)
+        points += point_breaches(rel, code)
+        enums, as_text = verdict_breaches(rel, text, code)
+        verdicts |= enums
+        if as_text:
+            verdict_texts.add(rel)
         if rel.split("/")[0] in NO_JSON and "/io/" not in rel and (re.search(r"(?i)json", code) or
                                              re.search(r'#\s*include\s*[<"](nlohmann/|io/(json_io|result_json))', text)):
             json_files.add(rel)
-    return files, funcs, json_files
+    return files, funcs, json_files, points, verdicts, verdict_texts
 
 
 def read_allow():
-    allow = {"file": {}, "function": {}, "json": set()}
+    allow = {"file": {}, "function": {}, "json": set(), "verdict": set(), "verdict-text": set()}
     if not ALLOW.exists():
         return allow
     for n, line in enumerate(ALLOW.read_text().splitlines(), 1):
@@ -213,12 +257,13 @@ def read_allow():
         if not line:
             continue
         parts = line.split()
-        if parts[0] == "json" and len(parts) == 2:
-            allow["json"].add(parts[1])
+        if parts[0] in ("json", "verdict", "verdict-text") and len(parts) == 2:
+            allow[parts[0]].add(parts[1])
         elif parts[0] in ("file", "function") and len(parts) == 3:
             allow[parts[0]][parts[1]] = int(parts[2])
         else:
-            sys.exit(f"{ALLOW.relative_to(ROOT)}:{n}: expected 'file PATH LINES', 'function PATH::NAME LINES' or 'json PATH'")
+            sys.exit(f"{ALLOW.relative_to(ROOT)}:{n}: expected 'file PATH LINES', 'function PATH::NAME LINES', 'json PATH', "
+                     "'verdict PATH::ENUM' or 'verdict-text PATH'")
     return allow
 
 
@@ -243,15 +288,29 @@ def self_test():
     if got != want:
         print(f"self-test failed: found {got}, expected {want}")
         return 1
+    planted = ("using P3 = std::array<Rational, 3>;\n"
+               "  n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};\n"
+               "  // n = {u[1] * v[2] - u[2] * v[1]} in a comment\n"
+               "using Row = std::array<Rational, 4>;\n")
+    enums, as_text = verdict_breaches("cut/x.cpp", 'enum class Fate { yes, no, undecided };\nr = "undecided";\n',
+                                      blank('enum class Fate { yes, no, undecided };\nr = "undecided";\n'))
+    if enums != {"cut/x.cpp::Fate"} or not as_text:
+        print(f"self-test failed: verdict placement found {enums}, {as_text}")
+        return 1
+    found = point_breaches("vrep/x.cpp", blank(planted))
+    if [b.split(":")[1] for b in found] != ["1", "2"] or point_breaches("base/point.hpp", planted):
+        print(f"self-test failed: point placement found {found}, expected lines 1 and 2 only")
+        return 1
     print("self-test: the scanner measures planted long functions (plain, braced default arguments, braced member "
-          "initialisers, operator()) and skips comments, strings, lambdas and blocks")
+          "initialisers, operator()) and skips comments, strings, lambdas and blocks; the placement rule finds a "
+          "planted point alias, a written-out cross product, a three-valued enum and a verdict as text")
     return 0
 
 
 def main():
     if "--self-test" in sys.argv:
         return self_test()
-    files, funcs, json_files = measure()
+    files, funcs, json_files, points, verdicts, verdict_texts = measure()
     if "--report" in sys.argv:
         for f, n in sorted(files.items()):
             if n > FILE_BUDGET:
@@ -261,6 +320,10 @@ def main():
                 print(f"function {f} {n}")
         for f in sorted(json_files):
             print(f"json {f}")
+        for e in sorted(verdicts):
+            print(f"verdict {e}")
+        for f in sorted(verdict_texts):
+            print(f"verdict-text {f}")
         return 0
     allow = read_allow()
     bad = []
@@ -281,13 +344,23 @@ def main():
         bad.append(f"{f}: builds or reads JSON, but {f.split('/')[0]}/ may not (documents belong in io/)")
     for f in sorted(allow["json"] - json_files):
         bad.append(f"{ALLOW.name}: json {f} no longer uses JSON: strike it from the list")
+    bad += points
+    for e in sorted(verdicts - allow["verdict"]):
+        bad.append(f"{e}: a three-valued enum: use Verdict (base/verdict.hpp)")
+    for e in sorted(allow["verdict"] - verdicts):
+        bad.append(f"{ALLOW.name}: verdict {e} is gone: strike it from the list")
+    for f in sorted(verdict_texts - allow["verdict-text"]):
+        bad.append(f"{f}: spells a verdict as text (\"undecided\"): use Verdict (base/verdict.hpp); text belongs in io/")
+    for f in sorted(allow["verdict-text"] - verdict_texts):
+        bad.append(f"{ALLOW.name}: verdict-text {f} no longer spells verdicts as text: strike it from the list")
     for b in bad:
         print(b)
     if not bad:
         nf = sum(1 for n in files.values() if n > FILE_BUDGET)
         nfn = sum(1 for n in funcs.values() if n > FUNCTION_BUDGET)
         print(f"size: {len(files)} files, {len(funcs)} functions; over the budget and allowed: "
-              f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/")
+              f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/, "
+              f"{len(allow['verdict'])} three-valued enums and {len(allow['verdict-text'])} files with verdicts as text outside base/")
     return 1 if bad else 0
 
 

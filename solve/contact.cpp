@@ -9,11 +9,12 @@
 #include <numeric>
 #include <type_traits>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "solve/strata.hpp"
 #include "solve/testing.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {
@@ -53,16 +54,16 @@ bool certify_common_point(const Stratum<T>& A, const Stratum<T>& B, const PairSy
     lb[l] = (x1 - sys.lo[l]) / w;
   }
   for (std::size_t fixed = 0; fixed < (n == 4 ? n : 1); ++fixed) {
-    std::vector<detail::Bern<T>> eq(3);
+    std::vector<Bernstein<T>> eq(3);
     std::vector<T> lo, hi;
     for (int c = 0; c < 3; ++c) {
       eq[c] = sys.D[c];
-      for (std::size_t l = 0; l < n; ++l) eq[c] = detail::bern_restrict(eq[c], static_cast<int>(l), la[l], lb[l]);
+      for (std::size_t l = 0; l < n; ++l) eq[c] = bern_restrict(eq[c], static_cast<int>(l), la[l], lb[l]);
     }
     T fixed_value(0);
     if (n == 4) {
       // Fix unknown `fixed` at the centre of the widened box (local 1/2).
-      for (auto& g : eq) g = detail::bern_fix(g, static_cast<int>(fixed), T(1) / T(2));
+      for (auto& g : eq) g = bern_fix(g, static_cast<int>(fixed), T(1) / T(2));
       const T w = sys.hi[fixed] - sys.lo[fixed];
       fixed_value = sys.lo[fixed] + w * (la[fixed] + lb[fixed]) / T(2);
     }
@@ -280,12 +281,12 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     bool stop_near = !full;
     Pruning<T> pr;
     pr.aux = {sys.W, sys.D[0], sys.D[1], sys.D[2]};
-    pr.discard = [&](const detail::Bern<T>* aux, std::size_t, const std::vector<T>& lo, const std::vector<T>& hi) {
+    pr.discard = [&](const Bernstein<T>* aux, std::size_t, const std::vector<T>& lo, const std::vector<T>& hi) {
       auto [low, high] = distance2_bounds(aux + 1, aux[0]);
       // The box's corners are points of the strata: their exact distances bound the minimum
       // (much tighter than the bound for any point of the box).
       const std::size_t nv = aux[0].deg.size();
-      const auto corner = [&](const detail::Bern<T>& g, std::size_t m) {
+      const auto corner = [&](const Bernstein<T>& g, std::size_t m) {
         std::size_t i = 0;
         for (std::size_t l = 0; l < nv; ++l)
           if (m >> l & 1) i += g.deg[l] * detail::tensor_stride(g.deg, static_cast<int>(l));
@@ -331,7 +332,7 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     // other are skipped (shallower penetrations are not searched).
     Pruning<T> away;
     away.aux = pr.aux;
-    away.discard = [&](const detail::Bern<T>* aux, std::size_t, const std::vector<T>&, const std::vector<T>&) {
+    away.discard = [&](const Bernstein<T>* aux, std::size_t, const std::vector<T>&, const std::vector<T>&) {
       return !(tau_away < distance2_bounds(aux + 1, aux[0]).second);
     };
     const auto r = solve_system(sys.equations, sys.lo, sys.hi, options, minimum ? &pr : search == Search::away_from_contact ? &away : nullptr);
@@ -432,7 +433,7 @@ ContactResult<T> stationary_pairs(const std::vector<Stratum<T>>& A, const std::v
     std::vector<T> t(sys.n);
     for (std::size_t l = 0; l < sys.n; ++l) t[l] = (x[l] - sys.lo[l]) / (sys.hi[l] - sys.lo[l]);
     for (const auto& g : sys.equations)
-      if (!(detail::bern_value(g, t) == T(0))) return false;
+      if (!(bern_value(g, t) == T(0))) return false;
     return stratum_point(a, x, 0) == k.p1 && stratum_point(b, x, static_cast<std::size_t>(a.k)) == k.p2;
   };
   std::vector<ContactPoint<T>> kept;
@@ -578,7 +579,7 @@ ContactResult<T> surface_distance(const BSpline<T>& S1, const BSpline<T>& S2, co
   out.extremes_complete = away.undecided.empty();
   const auto side = [](const BSpline<T>& S, const std::vector<T>& uv, const std::vector<T>& from, const std::vector<T>& to) {
     const auto su = derivative(S, uv, {1, 0}), sv = derivative(S, uv, {0, 1});
-    const T n[3] = {su[1] * sv[2] - su[2] * sv[1], su[2] * sv[0] - su[0] * sv[2], su[0] * sv[1] - su[1] * sv[0]};
+    const Point3<T> n = cross(as_point3(su), as_point3(sv));
     T s(0);
     for (int c = 0; c < 3; ++c) s += (to[c] - from[c]) * n[c];
     return T(0) < s ? 1 : s < T(0) ? -1 : 0;

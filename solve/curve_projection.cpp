@@ -9,9 +9,9 @@
 #include <functional>
 #include <numeric>
 
+#include "base/errors.hpp"
 #include "solve/strata.hpp"
 #include "solve/testing.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {
@@ -20,17 +20,17 @@ namespace {
 
 using solve_detail::PairSystem;
 using solve_detail::Stratum;
-using Bern = detail::Bern<Rational>;
-using BernD = detail::Bern<double>;
+using BernQ = Bernstein<Rational>;
+using BernD = Bernstein<double>;
 
-BernD to_double_bern(const Bern& b) {
+BernD to_double_bern(const BernQ& b) {
   BernD d{b.deg, {}};
   d.c.reserve(b.c.size());
   for (const auto& x : b.c) d.c.push_back(to_double(x));
   return d;
 }
 
-bool is_zero(const Bern& b) {
+bool is_zero(const BernQ& b) {
   for (const auto& x : b.c)
     if (x != 0) return false;
   return true;
@@ -116,8 +116,8 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
                                std::to_string(pair) + "/" + std::to_string(faces.size() * curves.size()) + ", " + std::to_string(out.boxes) + " boxes");
       }
       const PairSystem<Rational> sys = solve_detail::pair_system(A, B);
-      const std::vector<Bern> F{sys.equations[0], sys.equations[1]};  // the surface's two: Eq. 3
-      if (detail::bern_sign(F[0]) != 0 || detail::bern_sign(F[1]) != 0) continue;  // no solution in this box
+      const std::vector<BernQ> F{sys.equations[0], sys.equations[1]};  // the surface's two: Eq. 3
+      if (bern_sign(F[0]) != 0 || bern_sign(F[1]) != 0) continue;  // no solution in this box
       const bool over_budget = out.boxes >= options.solve.max_boxes * 10;  // the whole search's budget
       if (is_zero(F[0]) || is_zero(F[1]) || over_budget) {
         ProjectionSpecialPoint u;
@@ -156,7 +156,7 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
       for (int l = 0; l < 3; ++l)
         for (int side = 0; side < 2; ++side) {
           const Rational x = side ? sys.hi[l] : sys.lo[l];
-          const std::vector<Bern> G{detail::bern_fix(F[0], l, Rational(side)), detail::bern_fix(F[1], l, Rational(side))};
+          const std::vector<BernQ> G{bern_fix(F[0], l, Rational(side)), bern_fix(F[1], l, Rational(side))};
           std::vector<Rational> glo, ghi;
           for (int m = 0; m < 3; ++m)
             if (m != l) {
@@ -197,8 +197,8 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
         }
       // Turning points: F = 0 and det dF/d(u, v) = 0.
       {
-        const Bern J = detail::bern_sub(detail::bern_product(detail::bern_derivative(F[0], 0), detail::bern_derivative(F[1], 1)),
-                                        detail::bern_product(detail::bern_derivative(F[0], 1), detail::bern_derivative(F[1], 0)));
+        const BernQ J = bern_sub(bern_product(bern_derivative(F[0], 0), bern_derivative(F[1], 1)),
+                                        bern_product(bern_derivative(F[0], 1), bern_derivative(F[1], 0)));
         const auto id = [](const std::vector<Rational>& y) { return y; };
         if (is_zero(J)) {
           RootBox<Rational> b;
@@ -243,8 +243,8 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
       }
       // Gaps between them (and the box's ends), each with a certified slice and traced arcs.
       const BernD Fd[2] = {to_double_bern(F[0]), to_double_bern(F[1])};
-      const BernD dF[2][2] = {{detail::bern_derivative(Fd[0], 0), detail::bern_derivative(Fd[0], 1)},
-                              {detail::bern_derivative(Fd[1], 0), detail::bern_derivative(Fd[1], 1)}};
+      const BernD dF[2][2] = {{bern_derivative(Fd[0], 0), bern_derivative(Fd[0], 1)},
+                              {bern_derivative(Fd[1], 0), bern_derivative(Fd[1], 1)}};
       const double t0 = to_double(sys.lo[2]), t1 = to_double(sys.hi[2]);
       const double u0 = to_double(sys.lo[0]), u1 = to_double(sys.hi[0]), v0 = to_double(sys.lo[1]), v1 = to_double(sys.hi[1]);
       constexpr std::size_t none = static_cast<std::size_t>(-1);
@@ -256,7 +256,7 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
         ProjectionSlice sl;
         sl.t = simplest_rational_between(glo + q, ghi - q);
         const Rational tl = (sl.t - sys.lo[2]) / (sys.hi[2] - sys.lo[2]);
-        const std::vector<Bern> G{detail::bern_fix(F[0], 2, tl), detail::bern_fix(F[1], 2, tl)};
+        const std::vector<BernQ> G{bern_fix(F[0], 2, tl), bern_fix(F[1], 2, tl)};
         if (is_zero(G[0]) || is_zero(G[1])) {
           counts = false;
           continue;
@@ -302,10 +302,10 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
               double last_step = INFINITY;
               for (int it = 0; it < 40; ++it) {
                 const std::vector<double> at{guess[0], guess[1], t};
-                Eigen::Vector2d f(detail::bern_value(Fd[0], at), detail::bern_value(Fd[1], at));
+                Eigen::Vector2d f(bern_value(Fd[0], at), bern_value(Fd[1], at));
                 Eigen::Matrix2d J;
                 for (int i = 0; i < 2; ++i)
-                  for (int j = 0; j < 2; ++j) J(i, j) = detail::bern_value(dF[i][j], at);
+                  for (int j = 0; j < 2; ++j) J(i, j) = bern_value(dF[i][j], at);
                 const Eigen::Vector2d d = J.fullPivLu().solve(f);
                 if (!d.allFinite()) break;
                 guess[0] -= d(0);

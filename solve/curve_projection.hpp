@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "solve/solver.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

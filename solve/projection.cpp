@@ -5,10 +5,10 @@
 #include <cmath>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "solve/strata.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "solve/solver.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

@@ -10,10 +10,11 @@
 #include <type_traits>
 #include <utility>
 
+#include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "solve/testing.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex {
 
@@ -62,7 +63,6 @@ ScopedPlant::~ScopedPlant() {
 
 namespace {
 
-using detail::Bern;
 using solve_testing::Plant;
 
 template <class T>
@@ -136,22 +136,22 @@ struct KrawczykResult {
 
 /// With the centre c (default: the box's centre); c - Y F(c) + (I - Y J(X)) (X - c).
 template <class T>
-KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool strict, std::vector<T> c = {}) {
+KrawczykResult<T> krawczyk(const std::vector<Bernstein<T>>& f, std::size_t neq, bool strict, std::vector<T> c = {}) {
   const int n = static_cast<int>(neq);
   KrawczykResult<T> out;
   if (c.empty()) c.assign(n, T(1) / T(2));
   std::vector<T> F(n);
-  std::vector<std::vector<Bern<T>>> J(n, std::vector<Bern<T>>(n));
+  std::vector<std::vector<Bernstein<T>>> J(n, std::vector<Bernstein<T>>(n));
   // F'(c) with its rows scaled by 2^-e_i into double's range (D J), its inverse in double, and
   // Y = (D J)^-1 D taken exactly: entries beyond double's range do not defeat the test.
   Eigen::MatrixXd Jc(n, n);
   std::vector<long> e(n);
   for (int i = 0; i < n; ++i) {
-    F[i] = detail::bern_value(f[i], c);
+    F[i] = bern_value(f[i], c);
     std::vector<T> row(n);
     for (int j = 0; j < n; ++j) {
-      J[i][j] = detail::bern_derivative(f[i], j);
-      row[j] = detail::bern_value(J[i][j], c);
+      J[i][j] = bern_derivative(f[i], j);
+      row[j] = bern_value(J[i][j], c);
     }
     e[i] = scale_exponent(row);
     const T s = pow2<T>(-e[i]);
@@ -169,7 +169,7 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
   }
   std::vector<std::vector<std::pair<T, T>>> R(n, std::vector<std::pair<T, T>>(n));
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) R[i][j] = detail::bern_range(J[i][j]);
+    for (int j = 0; j < n; ++j) R[i][j] = bern_range(J[i][j]);
   out.lo.resize(n);
   out.hi.resize(n);
   bool inside_open = true, inside_closed = true, excluded = false;
@@ -230,7 +230,7 @@ KrawczykResult<T> krawczyk(const std::vector<Bern<T>>& f, std::size_t neq, bool 
 
 template <class T>
 struct Node {
-  std::vector<Bern<T>> f;  // the equations, then the caller's auxiliary polynomials
+  std::vector<Bernstein<T>> f;  // the equations, then the caller's auxiliary polynomials
   std::vector<T> lo, hi;  // global box
   int depth = 0;
 };
@@ -241,7 +241,7 @@ Node<T> restrict_node(const Node<T>& N, const std::vector<T>& a, const std::vect
   Node<T> out = N;
   const std::size_t n = N.lo.size();
   for (std::size_t l = 0; l < n; ++l) {
-    for (auto& g : out.f) g = detail::bern_restrict(g, static_cast<int>(l), a[l], b[l]);
+    for (auto& g : out.f) g = bern_restrict(g, static_cast<int>(l), a[l], b[l]);
     const T w = N.hi[l] - N.lo[l];
     out.lo[l] = N.lo[l] + w * a[l];
     out.hi[l] = N.lo[l] + w * b[l];
@@ -321,7 +321,7 @@ bool recognize(const Node<T>& N, std::vector<T>& point) {
         t[l] = w == 0 ? Rational(0) : Rational((x[l] - N.lo[l]) / w);
       }
       for (std::size_t i = 0; i < n; ++i)
-        if (detail::bern_value(N.f[i], t) != 0) return false;
+        if (bern_value(N.f[i], t) != 0) return false;
       point = x;
       return true;
     };
@@ -330,22 +330,22 @@ bool recognize(const Node<T>& N, std::vector<T>& point) {
     for (std::size_t l = 0; l < n; ++l) x[l] = simplest_rational_between(N.lo[l], N.hi[l]);
     if (check(x)) return true;
     // Newton in double on the local polynomials from the centre.
-    std::vector<Bern<double>> fd(n);  // each equation scaled by a power of 2 into double's range
+    std::vector<Bernstein<double>> fd(n);  // each equation scaled by a power of 2 into double's range
     for (std::size_t i = 0; i < n; ++i) {
       fd[i].deg = N.f[i].deg;
       const Rational s = pow2<Rational>(-scale_exponent(N.f[i].c));
       for (const auto& v : N.f[i].c) fd[i].c.push_back(to_double(Rational(v * s)));
     }
-    std::vector<std::vector<Bern<double>>> dfd(n);
+    std::vector<std::vector<Bernstein<double>>> dfd(n);
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) dfd[i].push_back(detail::bern_derivative(fd[i], static_cast<int>(j)));
+      for (std::size_t j = 0; j < n; ++j) dfd[i].push_back(bern_derivative(fd[i], static_cast<int>(j)));
     std::vector<double> t(n, 0.5);
     for (int it = 0; it < 60; ++it) {
       Eigen::VectorXd F(n);
       Eigen::MatrixXd J(n, n);
       for (std::size_t i = 0; i < n; ++i) {
-        F(i) = detail::bern_value(fd[i], t);
-        for (std::size_t j = 0; j < n; ++j) J(i, j) = detail::bern_value(dfd[i][j], t);
+        F(i) = bern_value(fd[i], t);
+        for (std::size_t j = 0; j < n; ++j) J(i, j) = bern_value(dfd[i][j], t);
       }
       if (!F.allFinite() || !J.allFinite()) return false;
       if (F.norm() == 0) break;
@@ -458,8 +458,42 @@ bool SolveResult<T>::complete() const {
   return true;
 }
 
+/// The 2^n halves of a node in every direction, emitted last first (so that a depth-first walk
+/// examines them in the order of their flat index).
+template <class T, class Emit>
+void halve_every_direction(Node<T>&& N, std::size_t n, Emit&& emit) {
+  std::vector<std::vector<Bernstein<T>>> parts{N.f};
+  std::vector<std::vector<T>> plo{N.lo}, phi{N.hi};
+  const T half = T(1) / T(2);
+  for (std::size_t l = 0; l < n; ++l) {
+    std::vector<std::vector<Bernstein<T>>> next;
+    std::vector<std::vector<T>> nlo, nhi;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      std::vector<Bernstein<T>> a, b;
+      for (const auto& g : parts[k]) {
+        auto [L, R] = bern_split(g, static_cast<int>(l), half);
+        a.push_back(std::move(L));
+        b.push_back(std::move(R));
+      }
+      const T mid = (plo[k][l] + phi[k][l]) * half;
+      next.push_back(std::move(a));
+      nlo.push_back(plo[k]);
+      nhi.push_back(phi[k]);
+      nhi.back()[l] = mid;
+      next.push_back(std::move(b));
+      nlo.push_back(plo[k]);
+      nhi.push_back(phi[k]);
+      nlo.back()[l] = mid;
+    }
+    parts = std::move(next);
+    plo = std::move(nlo);
+    phi = std::move(nhi);
+  }
+  for (std::size_t k = parts.size(); k-- > 0;) emit(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
+}
+
 template <class T>
-SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
+SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
                             const SolveOptions& options, const Pruning<T>* pruning) {
   const std::size_t n = f.size();
   if (n == 0) throw ValidationError("system", "has no equations", "give n equations in n unknowns");
@@ -485,58 +519,46 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
   }();
 
   SolveResult<T> out;
-  std::vector<Bern<T>> all = f;  // the equations and the auxiliary polynomials, split together
+  std::vector<Bernstein<T>> all = f;  // the equations and the auxiliary polynomials, split together
   if (pruning) {
     for (const auto& g : pruning->aux)
       if (g.deg.size() != n || g.c.size() != detail::tensor_size(g.deg))
         throw ValidationError("pruning", "an auxiliary polynomial is not in the n unknowns", "give it on the system's box");
     all.insert(all.end(), pruning->aux.begin(), pruning->aux.end());
   }
-  std::vector<Node<T>> stack{Node<T>{all, lo, hi, 0}}, leaves;
+  std::vector<Node<T>> leaves;
   std::vector<Node<T>> certified;  // refined boxes with one root each
   std::vector<RootBox<T>> known;   // exact roots certified unique in their boxes during the search
   int recognitions = 0;
-  while (!stack.empty()) {
-    if (out.boxes >= options.max_boxes) {
-      out.budget_exhausted = true;
-      if (solve_testing::planted(Plant::drop_box)) {  // planted: the unfinished queue forgotten
-        solve_testing::plant_hit();
-        break;
-      }
-      for (auto& N : stack) leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
-      break;
-    }
-    Node<T> N = std::move(stack.back());
-    stack.pop_back();
-    ++out.boxes;
+  auto examine = [&](Node<T>& N, int) {
     bool discarded = false;
     for (std::size_t i = 0; i < n; ++i)
-      if (detail::bern_sign(N.f[i]) != 0) discarded = true;
+      if (bern_sign(N.f[i]) != 0) discarded = true;
     if (discarded) {
       ++out.discarded_by_sign;
-      continue;
+      return Examined::settled;
     }
     if (pruning && pruning->discard(N.f.data() + n, pruning->aux.size(), N.lo, N.hi)) {
       ++out.discarded_by_caller;
-      continue;
+      return Examined::settled;
     }
     // Inside the box of a known exact root, which is that box's only root: nothing more here.
     bool in_known = false;
     for (const auto& k : known) in_known = in_known || box_inside(N.lo, N.hi, k.lo, k.hi);
     if (in_known) {
       ++out.discarded_by_krawczyk;
-      continue;
+      return Examined::settled;
     }
     const auto K = krawczyk(N.f, n, true);
     if (K.outcome == KrawczykResult<T>::excluded) {
       ++out.discarded_by_krawczyk;
-      continue;
+      return Examined::settled;
     }
     if (K.outcome == KrawczykResult<T>::unique) {
       bool seen = false;  // its one root is a known exact root it contains
       for (const auto& k : known) seen = seen || box_inside(k.point, k.point, N.lo, N.hi);
       if (!seen) certified.push_back(refine(N, K.lo, K.hi, width0, options.refine_bits));
-      continue;
+      return Examined::settled;
     }
     // A root where boxes are split (on the line between them) keeps every box around it open down
     // to the depth limit. Look for an exact rational root now and then: a contraction on the box
@@ -573,40 +595,26 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
         }
       }
     }
-    if (N.depth >= options.max_depth) {
-      leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});  // the box is enough: clusters restrict anew
-      continue;
+    return Examined::split;
+  };
+  auto split = [&](Node<T>&& N, int, auto&& emit) { halve_every_direction(std::move(N), n, emit); };
+  // A box left (the depth reached, or the budget spent) is enough as it is: clusters restrict anew.
+  bool dropped = false;
+  auto leave = [&](Node<T>&& N, Left why) {
+    if (why == Left::boxes && solve_testing::planted(Plant::drop_box)) {  // planted: the unfinished queue forgotten
+      if (!dropped) solve_testing::plant_hit();
+      dropped = true;
+      return;
     }
-    // Halve in every direction: 2^n children.
-    std::vector<std::vector<Bern<T>>> parts{N.f};
-    std::vector<std::vector<T>> plo{N.lo}, phi{N.hi};
-    const T half = T(1) / T(2);
-    for (std::size_t l = 0; l < n; ++l) {
-      std::vector<std::vector<Bern<T>>> next;
-      std::vector<std::vector<T>> nlo, nhi;
-      for (std::size_t k = 0; k < parts.size(); ++k) {
-        std::vector<Bern<T>> a, b;
-        for (const auto& g : parts[k]) {
-          auto [L, R] = detail::bern_split(g, static_cast<int>(l), half);
-          a.push_back(std::move(L));
-          b.push_back(std::move(R));
-        }
-        const T mid = (plo[k][l] + phi[k][l]) * half;
-        next.push_back(std::move(a));
-        nlo.push_back(plo[k]);
-        nhi.push_back(phi[k]);
-        nhi.back()[l] = mid;
-        next.push_back(std::move(b));
-        nlo.push_back(plo[k]);
-        nhi.push_back(phi[k]);
-        nlo.back()[l] = mid;
-      }
-      parts = std::move(next);
-      plo = std::move(nlo);
-      phi = std::move(nhi);
-    }
-    for (std::size_t k = parts.size(); k-- > 0;) stack.push_back(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
-  }
+    leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
+  };
+  Budget budget;
+  budget.max_boxes = options.max_boxes;
+  budget.max_depth = options.max_depth;
+  std::vector<Node<T>> roots{Node<T>{all, lo, hi, 0}};
+  const Subdivision run = subdivide(std::move(roots), Walk{Order::depth_first, std::size_t(1) << n, false}, budget, examine, split, leave);
+  out.boxes = run.examined;
+  out.budget_exhausted = run.stop == Subdivision::Stop::boxes;
   for (const auto& N : certified) {
     // Found before a known exact root whose box holds it: the same root.
     bool seen = false;
@@ -736,11 +744,11 @@ SolveResult<T> solve_system(const std::vector<Bern<T>>& f, const std::vector<T>&
 template struct SolveResult<Rational>;
 template struct SolveResult<double>;
 template struct SolveResult<Mpfr>;
-template SolveResult<Rational> solve_system(const std::vector<Bern<Rational>>&, const std::vector<Rational>&, const std::vector<Rational>&,
+template SolveResult<Rational> solve_system(const std::vector<Bernstein<Rational>>&, const std::vector<Rational>&, const std::vector<Rational>&,
                                             const SolveOptions&, const Pruning<Rational>*);
-template SolveResult<double> solve_system(const std::vector<Bern<double>>&, const std::vector<double>&, const std::vector<double>&,
+template SolveResult<double> solve_system(const std::vector<Bernstein<double>>&, const std::vector<double>&, const std::vector<double>&,
                                           const SolveOptions&, const Pruning<double>*);
-template SolveResult<Mpfr> solve_system(const std::vector<Bern<Mpfr>>&, const std::vector<Mpfr>&, const std::vector<Mpfr>&, const SolveOptions&,
+template SolveResult<Mpfr> solve_system(const std::vector<Bernstein<Mpfr>>&, const std::vector<Mpfr>&, const std::vector<Mpfr>&, const SolveOptions&,
                                         const Pruning<Mpfr>*);
 
 }  // namespace splinex

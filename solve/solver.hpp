@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
+#include "bernstein/tensor.hpp"
 #include "exact/rational.hpp"
-#include "spline/tensor_bernstein.hpp"
 
 namespace splinex {
 
@@ -75,15 +75,15 @@ struct SolveResult {
 /// the caller's bound. Boxes it discards are not searched: the result is complete only outside them.
 template <class T>
 struct Pruning {
-  std::vector<detail::Bern<T>> aux;
-  std::function<bool(const detail::Bern<T>* aux, std::size_t count, const std::vector<T>& lo, const std::vector<T>& hi)> discard;
+  std::vector<Bernstein<T>> aux;
+  std::function<bool(const Bernstein<T>* aux, std::size_t count, const std::vector<T>& lo, const std::vector<T>& hi)> discard;
 };
 
 /// The roots of f on the box [lo, hi] (f[i] in Bernstein form on [0, 1]^n standing for it).
 /// ValidationError when the system is not square (n polynomials in n variables, n >= 1) or a
 /// box side is empty.
 template <class T>
-SolveResult<T> solve_system(const std::vector<detail::Bern<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
+SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
                             const SolveOptions& options = {}, const Pruning<T>* pruning = nullptr);
 
 /// x rounded down (or up) to a multiple of 2^-bits (bits may be negative).

@@ -6,11 +6,11 @@
 #include <limits>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "exact/rational.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
-#include "spline/errors.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex::solve_detail {
@@ -23,13 +23,13 @@ std::string text(const T& x) {
 }
 
 template <class T>
-Bern<T> constant(std::size_t vars, const T& value) {
-  return Bern<T>{std::vector<int>(vars, 0), {value}};
+Bernstein<T> constant(std::size_t vars, const T& value) {
+  return Bernstein<T>{std::vector<int>(vars, 0), {value}};
 }
 
 /// b in n unknowns, its own at offset.. (degree 0 in the others: the coefficient layout is the same).
 template <class T>
-Bern<T> lift(Bern<T> b, std::size_t offset, std::size_t n) {
+Bernstein<T> lift(Bernstein<T> b, std::size_t offset, std::size_t n) {
   std::vector<int> deg(n, 0);
   for (std::size_t l = 0; l < b.deg.size(); ++l) deg[offset + l] = b.deg[l];
   b.deg = std::move(deg);
@@ -38,7 +38,7 @@ Bern<T> lift(Bern<T> b, std::size_t offset, std::size_t n) {
 
 /// b elevated to the degrees `target` (>= its own): the product with 1 in Bernstein form.
 template <class T>
-Bern<T> elevate(const Bern<T>& b, const std::vector<int>& target) {
+Bernstein<T> elevate(const Bernstein<T>& b, const std::vector<int>& target) {
   std::vector<int> r(target.size());
   bool any = false;
   for (std::size_t l = 0; l < target.size(); ++l) {
@@ -46,7 +46,7 @@ Bern<T> elevate(const Bern<T>& b, const std::vector<int>& target) {
     any = any || r[l] > 0;
   }
   if (!any) return b;
-  return detail::bern_product(b, Bern<T>{r, std::vector<T>(detail::tensor_size(r), T(1))});
+  return bern_product(b, Bernstein<T>{r, std::vector<T>(detail::tensor_size(r), T(1))});
 }
 
 template <class T>
@@ -66,8 +66,8 @@ template <class T>
 Stratum<T> fix_side(const Stratum<T>& base, int d, int side) {
   Stratum<T> s = base;
   const int v = base.var[d];
-  for (int c = 0; c < 3; ++c) s.X[c] = detail::bern_face(base.X[c], v, side);
-  s.W = base.rational ? detail::bern_face(base.W, v, side) : constant<T>(base.k - 1, T(1));
+  for (int c = 0; c < 3; ++c) s.X[c] = bern_face(base.X[c], v, side);
+  s.W = base.rational ? bern_face(base.W, v, side) : constant<T>(base.k - 1, T(1));
   s.k = base.k - 1;
   if (s.k == 0) {  // bern_face leaves one direction of degree 0: no unknown
     for (int c = 0; c < 3; ++c) s.X[c].deg.clear();
@@ -85,8 +85,8 @@ Stratum<T> fix_side(const Stratum<T>& base, int d, int side) {
 /// The stratum with its coefficients taken exactly as rationals (every float is one).
 template <class T>
 Stratum<Rational> exact_stratum(const Stratum<T>& s) {
-  const auto conv = [](const Bern<T>& b) {
-    Bern<Rational> o;
+  const auto conv = [](const Bernstein<T>& b) {
+    Bernstein<Rational> o;
     o.deg = b.deg;
     o.c.reserve(b.c.size());
     for (const auto& x : b.c) o.c.push_back(ArithTraits<T>::to_rational(x));
@@ -109,16 +109,16 @@ Stratum<Rational> exact_stratum(const Stratum<T>& s) {
 /// The difference's numerators D = X_A W_B - X_B W_A and its denominator W = W_A W_B in the
 /// kA + kB unknowns of the pair.
 template <class T>
-void difference_forms(const Stratum<T>& A, const Stratum<T>& B, Bern<T> (&D)[3], Bern<T>& W) {
+void difference_forms(const Stratum<T>& A, const Stratum<T>& B, Bernstein<T> (&D)[3], Bernstein<T>& W) {
   const std::size_t n = static_cast<std::size_t>(A.k + B.k), oa = 0, ob = static_cast<std::size_t>(A.k);
-  const Bern<T> WA = lift(A.W, oa, n), WB = lift(B.W, ob, n);
+  const Bernstein<T> WA = lift(A.W, oa, n), WB = lift(B.W, ob, n);
   for (int c = 0; c < 3; ++c) {
-    const Bern<T> P = detail::bern_product(lift(A.X[c], oa, n), WB), Q = detail::bern_product(lift(B.X[c], ob, n), WA);
+    const Bernstein<T> P = bern_product(lift(A.X[c], oa, n), WB), Q = bern_product(lift(B.X[c], ob, n), WA);
     std::vector<int> target(n);
     for (std::size_t l = 0; l < n; ++l) target[l] = std::max(P.deg[l], Q.deg[l]);
-    D[c] = detail::bern_sub(elevate(P, target), elevate(Q, target));
+    D[c] = bern_sub(elevate(P, target), elevate(Q, target));
   }
-  W = detail::bern_product(WA, WB);
+  W = bern_product(WA, WB);
 }
 
 template <class T>
@@ -173,14 +173,14 @@ bool constant_along(const Stratum<T>& A, const std::vector<int>& dirs, const std
     (void)uv;
     return false;
   } else {
-    Bern<T> X[3] = {A.X[0], A.X[1], A.X[2]}, W = A.W;
+    Bernstein<T> X[3] = {A.X[0], A.X[1], A.X[2]}, W = A.W;
     for (int v = A.k - 1; v >= 0; --v) {
       int d = 0;
       while (d < A.dims && A.var[d] != v) ++d;
       if (d == A.dims || std::find(dirs.begin(), dirs.end(), d) != dirs.end()) continue;
       const T t = (uv[d] - A.lo[d]) / (A.hi[d] - A.lo[d]);
-      for (auto& g : X) g = detail::bern_fix(g, v, t);
-      if (A.rational) W = detail::bern_fix(W, v, t);
+      for (auto& g : X) g = bern_fix(g, v, t);
+      if (A.rational) W = bern_fix(W, v, t);
     }
     for (int c = 0; c < 3; ++c)
       for (std::size_t i = 0; i < X[c].c.size(); ++i) {
@@ -234,8 +234,8 @@ std::vector<Stratum<T>> surface_strata(const BSpline<T>& S, const Limits& limits
     face.k = 2;
     face.rational = S.is_rational();
     face.piece = k;
-    for (int c = 0; c < 3; ++c) face.X[c] = detail::bern_coordinate(bp.spline, c);
-    face.W = face.rational ? detail::bern_coordinate(bp.spline, bp.spline.q) : constant<T>(2, T(1));
+    for (int c = 0; c < 3; ++c) face.X[c] = bern_coordinate(bp.spline, c);
+    face.W = face.rational ? bern_coordinate(bp.spline, bp.spline.q) : constant<T>(2, T(1));
     for (int d = 0; d < 2; ++d) {
       face.var[d] = d;
       face.lo[d] = bp.box[d].first;
@@ -283,8 +283,8 @@ std::vector<Stratum<T>> curve_strata(const BSpline<T>& C, const Limits& limits) 
     s.k = 1;
     s.rational = C.is_rational();
     s.piece = k;
-    for (int c = 0; c < 3; ++c) s.X[c] = detail::bern_coordinate(bp.spline, c);
-    s.W = s.rational ? detail::bern_coordinate(bp.spline, bp.spline.q) : constant<T>(1, T(1));
+    for (int c = 0; c < 3; ++c) s.X[c] = bern_coordinate(bp.spline, c);
+    s.W = s.rational ? bern_coordinate(bp.spline, bp.spline.q) : constant<T>(1, T(1));
     s.var[0] = 0;
     s.lo[0] = bp.box[0].first;
     s.hi[0] = bp.box[0].second;
@@ -301,32 +301,32 @@ PairSystem<T> pair_system(const Stratum<T>& A, const Stratum<T>& B) {
   PairSystem<T> sys;
   const std::size_t n = static_cast<std::size_t>(A.k + B.k), oa = 0, ob = static_cast<std::size_t>(A.k);
   sys.n = n;
-  const Bern<T> WA = lift(A.W, oa, n), WB = lift(B.W, ob, n);
+  const Bernstein<T> WA = lift(A.W, oa, n), WB = lift(B.W, ob, n);
   for (int c = 0; c < 3; ++c) {
-    const Bern<T> P = detail::bern_product(lift(A.X[c], oa, n), WB), Q = detail::bern_product(lift(B.X[c], ob, n), WA);
+    const Bernstein<T> P = bern_product(lift(A.X[c], oa, n), WB), Q = bern_product(lift(B.X[c], ob, n), WA);
     std::vector<int> target(n);
     for (std::size_t l = 0; l < n; ++l) target[l] = std::max(P.deg[l], Q.deg[l]);
-    sys.D[c] = detail::bern_sub(elevate(P, target), elevate(Q, target));
+    sys.D[c] = bern_sub(elevate(P, target), elevate(Q, target));
   }
   // Tangent numerators of a stratum: d X_c W - X_c d W (d X_c when polynomial).
   const auto tangent = [](const Stratum<T>& s, int i, int c) {
-    if (!s.rational) return detail::bern_derivative(s.X[c], i);
-    return detail::bern_sub(detail::bern_product(detail::bern_derivative(s.X[c], i), s.W),
-                            detail::bern_product(s.X[c], detail::bern_derivative(s.W, i)));
+    if (!s.rational) return bern_derivative(s.X[c], i);
+    return bern_sub(bern_product(bern_derivative(s.X[c], i), s.W),
+                            bern_product(s.X[c], bern_derivative(s.W, i)));
   };
   for (const auto* s : {&A, &B})
     for (int i = 0; i < s->k; ++i) {
-      Bern<T> sum;
+      Bernstein<T> sum;
       for (int c = 0; c < 3; ++c) {
-        const Bern<T> term = detail::bern_product(sys.D[c], lift(tangent(*s, i, c), s == &A ? oa : ob, n));
-        sum = c == 0 ? term : detail::bern_add(sum, term);
+        const Bernstein<T> term = bern_product(sys.D[c], lift(tangent(*s, i, c), s == &A ? oa : ob, n));
+        sum = c == 0 ? term : bern_add(sum, term);
       }
       sys.equations.push_back(std::move(sum));
     }
-  sys.D2 = detail::bern_product(sys.D[0], sys.D[0]);
-  for (int c = 1; c < 3; ++c) sys.D2 = detail::bern_add(sys.D2, detail::bern_product(sys.D[c], sys.D[c]));
-  sys.W = detail::bern_product(WA, WB);
-  sys.WW = detail::bern_product(sys.W, sys.W);
+  sys.D2 = bern_product(sys.D[0], sys.D[0]);
+  for (int c = 1; c < 3; ++c) sys.D2 = bern_add(sys.D2, bern_product(sys.D[c], sys.D[c]));
+  sys.W = bern_product(WA, WB);
+  sys.WW = bern_product(sys.W, sys.W);
   for (const auto* s : {&A, &B})
     for (int v = 0; v < s->k; ++v)
       for (int d = 0; d < s->dims; ++d)
@@ -361,29 +361,29 @@ std::vector<T> stratum_point(const Stratum<T>& A, const std::vector<T>& x, std::
   std::vector<T> t(A.k);
   for (int d = 0; d < A.dims; ++d)
     if (A.var[d] >= 0) t[A.var[d]] = (x[offset + A.var[d]] - A.lo[d]) / (A.hi[d] - A.lo[d]);
-  const T w = detail::bern_value(A.W, t);
+  const T w = bern_value(A.W, t);
   std::vector<T> p(3);
-  for (int c = 0; c < 3; ++c) p[c] = detail::bern_value(A.X[c], t) / w;
+  for (int c = 0; c < 3; ++c) p[c] = bern_value(A.X[c], t) / w;
   return p;
 }
 
 template <class T>
-std::pair<T, T> distance2_bounds(const Bern<T>* D, const Bern<T>& W) {
+std::pair<T, T> distance2_bounds(const Bernstein<T>* D, const Bernstein<T>& W) {
   T gap2(0), far2(0);
   for (int c = 0; c < 3; ++c) {
-    const auto [lo, hi] = detail::bern_range(D[c]);
+    const auto [lo, hi] = bern_range(D[c]);
     const T gap = T(0) < lo ? lo : hi < T(0) ? T(T(0) - hi) : T(0);
     const T far = hi < T(T(0) - lo) ? T(T(0) - lo) : hi;
     gap2 += gap * gap;
     far2 += far * far;
   }
-  const auto [wlo, whi] = detail::bern_range(W);
+  const auto [wlo, whi] = bern_range(W);
   return {gap2 / (whi * whi), far2 / (wlo * wlo)};
 }
 
 template <class T>
 std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& a, const std::vector<T>& b) {
-  Bern<T> D2 = sys.D2, WW = sys.WW, W = sys.W, D[3] = {sys.D[0], sys.D[1], sys.D[2]};
+  Bernstein<T> D2 = sys.D2, WW = sys.WW, W = sys.W, D[3] = {sys.D[0], sys.D[1], sys.D[2]};
   const auto each = [&](auto&& op) {
     D2 = op(D2);
     WW = op(WW);
@@ -396,7 +396,7 @@ std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& 
     const T w = sys.hi[l] - sys.lo[l];
     const T la = (a[l] - sys.lo[l]) / w, lb = (b[l] - sys.lo[l]) / w;
     if (la < lb) {
-      each([&](const Bern<T>& g) { return detail::bern_restrict(g, static_cast<int>(l), la, lb); });
+      each([&](const Bernstein<T>& g) { return bern_restrict(g, static_cast<int>(l), la, lb); });
     } else {
       zero[l] = true;
       fixed[l] = la;
@@ -404,11 +404,11 @@ std::pair<T, T> distance2_range(const PairSystem<T>& sys, const std::vector<T>& 
   }
   for (std::size_t l = sys.n; l-- > 0;) {  // sides of width 0, last first (bern_face drops the direction)
     if (!zero[l]) continue;
-    const auto face = [&](const Bern<T>& g) { return detail::bern_fix(g, static_cast<int>(l), fixed[l]); };
+    const auto face = [&](const Bernstein<T>& g) { return bern_fix(g, static_cast<int>(l), fixed[l]); };
     each(face);
   }
-  const auto [dlo, dhi] = detail::bern_range(D2);
-  const auto [wlo, whi] = detail::bern_range(WW);
+  const auto [dlo, dhi] = bern_range(D2);
+  const auto [wlo, whi] = bern_range(WW);
   auto [lo, hi] = distance2_bounds(D, W);
   if (lo < T(dlo / whi)) lo = dlo / whi;
   if (T(dhi / wlo) < hi) hi = dhi / wlo;
@@ -419,17 +419,17 @@ namespace {
 
 /// The bounds of distance2_bounds over [a, b] (local coordinates of the system's box, la <= lb).
 template <class T>
-std::pair<T, T> bounds_on_box(Bern<T> (&D)[3], Bern<T>& W, const std::vector<T>& la, const std::vector<T>& lb) {
+std::pair<T, T> bounds_on_box(Bernstein<T> (&D)[3], Bernstein<T>& W, const std::vector<T>& la, const std::vector<T>& lb) {
   const std::size_t n = la.size();
   for (std::size_t l = 0; l < n; ++l)
     if (la[l] < lb[l]) {
-      for (auto& g : D) g = detail::bern_restrict(g, static_cast<int>(l), la[l], lb[l]);
-      W = detail::bern_restrict(W, static_cast<int>(l), la[l], lb[l]);
+      for (auto& g : D) g = bern_restrict(g, static_cast<int>(l), la[l], lb[l]);
+      W = bern_restrict(W, static_cast<int>(l), la[l], lb[l]);
     }
   for (std::size_t l = n; l-- > 0;)
     if (!(la[l] < lb[l])) {
-      for (auto& g : D) g = detail::bern_fix(g, static_cast<int>(l), la[l]);
-      W = detail::bern_fix(W, static_cast<int>(l), la[l]);
+      for (auto& g : D) g = bern_fix(g, static_cast<int>(l), la[l]);
+      W = bern_fix(W, static_cast<int>(l), la[l]);
     }
   return distance2_bounds(D, W);
 }
@@ -449,7 +449,7 @@ std::pair<T, T> distance2_enclosure(const Stratum<T>& A, const Stratum<T>& B, co
     // Round-to-nearest de Casteljau on |D|^2 can give a negative or inverted range (a point on the
     // surface: [5.9e-32, -9.9e-17]); the exact rational value of the float data cannot.
     const Stratum<Rational> EA = exact_stratum(A), EB = exact_stratum(B);
-    Bern<Rational> D[3], W;
+    Bernstein<Rational> D[3], W;
     difference_forms(EA, EB, D, W);
     const std::size_t n = sys.n;
     std::vector<Rational> la(n), lb(n);
@@ -472,7 +472,7 @@ template <class T>
 T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
   std::vector<T> t(sys.n);
   for (std::size_t l = 0; l < sys.n; ++l) t[l] = (x[l] - sys.lo[l]) / (sys.hi[l] - sys.lo[l]);
-  return detail::bern_value(sys.D2, t) / detail::bern_value(sys.WW, t);
+  return bern_value(sys.D2, t) / bern_value(sys.WW, t);
 }
 
 #define SPLINEX_STRATA(T)                                                                                                 \
@@ -484,7 +484,7 @@ T distance2_at(const PairSystem<T>& sys, const std::vector<T>& x) {
   template T hull_distance2(const Stratum<T>&, const Stratum<T>&);                                                       \
   template std::vector<T> surface_parameters(const Stratum<T>&, const std::vector<T>&, std::size_t);                     \
   template std::vector<T> stratum_point(const Stratum<T>&, const std::vector<T>&, std::size_t);                          \
-  template std::pair<T, T> distance2_bounds(const Bern<T>*, const Bern<T>&);                                            \
+  template std::pair<T, T> distance2_bounds(const Bernstein<T>*, const Bernstein<T>&);                                            \
   template std::pair<T, T> distance2_range(const PairSystem<T>&, const std::vector<T>&, const std::vector<T>&);          \
   template T distance2_at(const PairSystem<T>&, const std::vector<T>&);                                                 \
   template std::pair<T, T> distance2_enclosure(const Stratum<T>&, const Stratum<T>&, const PairSystem<T>&, const std::vector<T>&, \

@@ -14,21 +14,20 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
+#include "bernstein/tensor.hpp"
 #include "solve/contact.hpp"
 #include "spline/bezier.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
-#include "spline/tensor_bernstein.hpp"
 
 namespace splinex::solve_detail {
 
-using detail::Bern;
 
 template <class T>
 struct Stratum {
   int dims = 2;           // the object's parameters: 2 a surface, 1 a curve, 0 a point
   int k = 0;              // free parameters: 2 a piece, 1 an edge, 0 a corner or a point
-  Bern<T> X[3], W;        // homogeneous coordinates in the k local parameters (W = 1 of degree 0 when polynomial)
+  Bernstein<T> X[3], W;        // homogeneous coordinates in the k local parameters (W = 1 of degree 0 when polynomial)
   bool rational = false;
   int var[2] = {-1, -1};  // per parameter of the object: its free local variable, or -1 when fixed
   T lo[2], hi[2];         // per parameter of the object: its range (lo == hi when fixed)
@@ -68,10 +67,10 @@ Stratum<T> point_stratum(const std::vector<T>& P);
 template <class T>
 struct PairSystem {
   std::size_t n = 0;              // unknowns: A's free parameters, then B's
-  std::vector<Bern<T>> equations;  // n of them
-  Bern<T> D[3];                    // X_A W_B - X_B W_A
-  Bern<T> W;                       // W_A W_B (positive): S_A - S_B = D / W
-  Bern<T> D2, WW;                  // |D|^2 and W^2: the squared distance is D2 / WW
+  std::vector<Bernstein<T>> equations;  // n of them
+  Bernstein<T> D[3];                    // X_A W_B - X_B W_A
+  Bernstein<T> W;                       // W_A W_B (positive): S_A - S_B = D / W
+  Bernstein<T> D2, WW;                  // |D|^2 and W^2: the squared distance is D2 / WW
   std::vector<T> lo, hi;           // the unknowns' ranges (the strata's parameters)
 };
 
@@ -105,7 +104,7 @@ std::vector<T> stratum_point(const Stratum<T>& A, const std::vector<T>& x, std::
 /// and W there: below by the box of D's ranges' distance from 0 over max W^2, above by the
 /// farthest corner of that box over min W^2.
 template <class T>
-std::pair<T, T> distance2_bounds(const Bern<T>* D, const Bern<T>& W);
+std::pair<T, T> distance2_bounds(const Bernstein<T>* D, const Bernstein<T>& W);
 
 /// The range [lo, hi] of the squared distance over the sub-box [a, b] of the system's box (global
 /// coordinates), a <= b (sides of width 0 allowed): distance2_bounds, and D2 / WW's coefficient

@@ -14,10 +14,10 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/limits.hpp"
 #include "spline/arith.hpp"
-#include "spline/errors.hpp"
 #include "spline/knots.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

@@ -9,7 +9,7 @@
 //    span A2.1 picks and the derivative is that span's one-sided derivative.
 // Division by a dual whose value is 0 throws DomainError (the derivative does not exist there).
 #pragma once
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

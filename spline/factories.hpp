@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "spline/errors.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

@@ -2,8 +2,8 @@
 // eq. 3.8/A3.3): Q_i = p (P_{i+1} - P_i) / (U_{i+p+1} - U_{i+1}) on the knots U_1..U_{m-1}.
 // An independent route to the first derivative, used to prove the A2.3 derivatives.
 #pragma once
+#include "base/errors.hpp"
 #include "spline/bspline.hpp"
-#include "spline/errors.hpp"
 
 namespace splinex {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <algorithm>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/elevate.hpp"
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"

@@ -1,5 +1,6 @@
 // Everything of the generic B-spline kernel, declarations only (composition: compose/).
 #pragma once
+#include "base/limits.hpp"
 #include "spline/arith.hpp"
 #include "spline/bezier.hpp"
 #include "spline/bspline.hpp"
@@ -9,4 +10,3 @@
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
-#include "spline/limits.hpp"

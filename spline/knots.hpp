@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 

@@ -7,8 +7,8 @@
 #include <array>
 #include <vector>
 
+#include "base/point.hpp"
 #include "spline/bspline.hpp"
-#include "spline/point.hpp"
 
 namespace splinex {
 

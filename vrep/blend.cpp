@@ -3,7 +3,8 @@
 #include <mpfi.h>
 #include <mpfr.h>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean_impl.hpp"  // vrep_detail::affine_inverse
 
@@ -11,11 +12,8 @@ namespace splinex {
 
 namespace {
 
-using P3 = std::array<Rational, 3>;
+using P3 = Point3<Rational>;
 
-Rational dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
 std::vector<std::vector<HalfSpace<Rational>>> cell_planes(const VModel<Rational>& M, const std::string& name) {
   std::vector<std::vector<HalfSpace<Rational>>> out;

@@ -40,9 +40,9 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "spline/errors.hpp"
-#include "spline/limits.hpp"
 #include "vrep/vmodel.hpp"
 
 namespace splinex {

@@ -6,10 +6,11 @@
 #include <queue>
 #include <set>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "compose/affine.hpp"
 #include "compose/compose.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
@@ -25,9 +26,7 @@ namespace splinex {
 namespace vrep_detail {
 
 template <class T>
-T plane_at(const HalfSpace<T>& H, const T* x) {
-  return H.n[0] * x[0] + H.n[1] * x[1] + H.n[2] * x[2] + H.d;
-}
+T plane_at(const HalfSpace<T>& H, const T* x) { return H.n[0] * x[0] + H.n[1] * x[1] + H.n[2] * x[2] + H.d; }
 
 /// Whether half-space k of a cell's six is tested when a point is classified (always; the planted
 /// bug of vrep/planted.hpp skips the second, the face u = end, in tests only).
@@ -225,7 +224,7 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
 /// of its piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure. `plain`:
 /// the extreme coefficients' ratios only, without the Jensen / chord bounds' product N W.
 template <class T>
-void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo, T& hi, int power = 4, bool plain = false) {
+void box_integral_bounds(const Bernstein<T>& N, const Bernstein<T>& W, const T& vol, T& lo, T& hi, int power = 4, bool plain = false) {
   T nmin = N.c.front(), nmax = nmin, wmin = W.c.front(), wmax = wmin;
   for (const auto& x : N.c) {
     if (x < nmin) nmin = x;
@@ -255,7 +254,7 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
     T J = I * wmin;
     if (!(wmax == wmin)) {
       T sj(0);
-      const Bern<T> NW = vrep_detail::mul(N, W);
+      const Bernstein<T> NW = vrep_detail::mul(N, W);
       for (const auto& x : NW.c) sj += x;
       J = sg * vol * sj / T(static_cast<long>(NW.c.size()));
     }
@@ -280,7 +279,7 @@ void box_integral_bounds(const Bern<T>& N, const Bern<T>& W, const T& vol, T& lo
 /// The largest difference of neighbouring coefficients along direction l: where a Bernstein
 /// polynomial varies most (the direction to halve a box across).
 template <class T>
-T coefficient_variation(const Bern<T>& b, int l) {
+T coefficient_variation(const Bernstein<T>& b, int l) {
   std::size_t stride = 1;
   for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
   T v(0);
@@ -414,9 +413,9 @@ std::optional<HalfSpace<T>> face_plane_towards(const BSpline<T>& V, int d, int s
   bool found = false;
   for (std::size_t i = 1; i < n && !found; ++i)
     for (std::size_t j = i + 1; j < n && !found; ++j) {
-      const T a[3] = {pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
-      const T b[3] = {pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
-      H.n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const Point3<T> a{pt(i)[0] - p0[0], pt(i)[1] - p0[1], pt(i)[2] - p0[2]};
+      const Point3<T> b{pt(j)[0] - p0[0], pt(j)[1] - p0[1], pt(j)[2] - p0[2]};
+      H.n = cross(a, b);
       const T size = magnitude(H.n[0]) + magnitude(H.n[1]) + magnitude(H.n[2]);
       const T amax = std::max({magnitude(a[0]), magnitude(a[1]), magnitude(a[2])}), bmax = std::max({magnitude(b[0]), magnitude(b[1]), magnitude(b[2])});
       found = eps * (amax + bmax) < size && !(size == T(0));
@@ -714,17 +713,16 @@ T cell_volume(const VModel<T>& M, std::size_t cell, const Limits& limits) {
 
 template <class T>
 VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, const Limits& limits) {
-  using vrep_detail::Bern;
   vrep_detail::require_jacobian_input(V, limits);
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
   // Per Bezier piece, in local coordinates s in [0, 1]^3 (the volume is the integral of the local
   // det J over the unit cube): det J = N / W^4, N and W in Bernstein form.
   struct Box {
-    Bern<T> N, W;
+    Bernstein<T> N, W;
     T vol, lo, hi;  // the box's share of the unit cube and the bounds of its integral
   };
   auto bounds = [](Box& b) { vrep_detail::box_integral_bounds(b.N, b.W, b.vol, b.lo, b.hi); };
-  const auto variation = [](const Bern<T>& b, int l) { return vrep_detail::coefficient_variation(b, l); };
+  const auto variation = [](const Bernstein<T>& b, int l) { return vrep_detail::coefficient_variation(b, l); };
   auto wider = [](const Box& a, const Box& b) { return (a.hi - a.lo) < (b.hi - b.lo); };
   std::priority_queue<Box, std::vector<Box>, decltype(wider)> queue(wider);
   VolumeEnclosure<T> out;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/point.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/vmodel_impl.hpp"  // vrep_detail::magnitude, close
@@ -24,7 +25,7 @@ template <class T>
 void find_corner_junctions(const VModel<T>& M, const std::vector<std::pair<int, std::size_t>>& origin, const std::vector<std::string>& names,
                            const T& eps, std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>>& junctions,
                            std::string& first_junction) {
-  using P = std::array<T, 3>;
+  using P = Point3<T>;
   struct Geometry {
     bool planar = false;
     std::array<P, 8> c;
@@ -33,9 +34,6 @@ void find_corner_junctions(const VModel<T>& M, const std::vector<std::pair<int, 
     std::vector<std::vector<std::vector<T>>> quads;  // face_corners per face
     bool axis_edges = true;                          // every edge parallel to a coordinate axis
   };
-  auto sub = [](const P& a, const P& b) { return P{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-  auto dot = [](const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto cross = [](const P& a, const P& b) { return P{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
   auto norm1 = [](const P& a) { return magnitude(a[0]) + magnitude(a[1]) + magnitude(a[2]); };
   std::vector<Geometry> g(M.cells.size());
   for (std::size_t k = 0; k < M.cells.size(); ++k) {

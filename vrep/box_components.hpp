@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 #include "vrep/trivariate.hpp"
 #include "vrep/vmodel.hpp"
 

@@ -9,11 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "spline/tensor_bernstein.hpp"
+#include "bernstein/tensor.hpp"
 
 namespace splinex::vrep_detail {
 
-using detail::Bern;
 
 template <class T>
 int sign_of(const T& v) {
@@ -23,7 +22,7 @@ int sign_of(const T& v) {
 /// Sign variations of a Bernstein polynomial's coefficients (zeros skipped): an upper bound on its
 /// roots in the open interval, of the same parity.
 template <class T>
-int sign_variations(const Bern<T>& f) {
+int sign_variations(const Bernstein<T>& f) {
   int changes = 0, last = 0;
   for (const auto& c : f.c) {
     const int s = sign_of(c);
@@ -39,11 +38,11 @@ int sign_variations(const Bern<T>& f) {
 template <class T>
 struct Root {
   std::size_t leaf = 0;
-  Bern<T> f;
+  Bernstein<T> f;
   T L, H;
   T lo, hi;
   bool exact() const { return lo == hi; }
-  T value(const T& t) const { return detail::bern_value(f, {(t - L) / (H - L)}); }
+  T value(const T& t) const { return bern_value(f, {(t - L) / (H - L)}); }
   /// Narrows the bracket to one side of t (L <= t <= H), or to t itself when t is the root.
   void cut(const T& t) {
     if (exact() || !(lo < t && t < hi)) return;
@@ -92,7 +91,7 @@ std::optional<int> compare(Root<T>& a, Root<T>& b, bool same_line) {
     if (same_line && a.leaf == b.leaf) {
       const T u0 = std::min(a.lo, b.lo), u1 = std::max(a.hi, b.hi);
       if (a.L <= u0 && u1 <= a.H) {
-        if (sign_variations(detail::bern_restrict(a.f, 0, T((u0 - a.L) / (a.H - a.L)), T((u1 - a.L) / (a.H - a.L)))) == 1) return 0;
+        if (sign_variations(bern_restrict(a.f, 0, T((u0 - a.L) / (a.H - a.L)), T((u1 - a.L) / (a.H - a.L)))) == 1) return 0;
       }
     }
     const T m = (std::max(a.lo, b.lo) + std::min(a.hi, b.hi)) / 2;
@@ -115,7 +114,7 @@ std::optional<int> compare(Bound<T>& a, Bound<T>& b, bool same_line) {
 /// split point are exact when simple. False when a root stays unisolated (a multiple root) by
 /// `depth` halvings.
 template <class T>
-bool isolate(const Bern<T>& f, const T& a, const T& b, int depth, std::vector<std::pair<T, T>>& out) {
+bool isolate(const Bernstein<T>& f, const T& a, const T& b, int depth, std::vector<std::pair<T, T>>& out) {
   const int changes = sign_variations(f);
   if (changes == 0) return true;
   if (changes == 1 && !(f.c.front() == T(0)) && !(f.c.back() == T(0))) {
@@ -124,10 +123,10 @@ bool isolate(const Bern<T>& f, const T& a, const T& b, int depth, std::vector<st
   }
   if (depth == 0) return false;
   const T half = T(1) / T(2), m = (a + b) / 2;
-  auto [l, r] = detail::bern_split(f, 0, half);
+  auto [l, r] = bern_split(f, 0, half);
   if (!isolate(l, a, m, depth - 1, out)) return false;
   if (r.c.front() == T(0)) {  // a rational root at the split point: simple when the slope is not 0
-    if (detail::bern_derivative(r, 0).c.front() == T(0)) return false;
+    if (bern_derivative(r, 0).c.front() == T(0)) return false;
     out.push_back({m, m});
   }
   return isolate(r, m, b, depth - 1, out);

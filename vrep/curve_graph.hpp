@@ -9,7 +9,8 @@
 #include <tuple>
 #include <vector>
 
-#include "spline/tensor_bernstein.hpp"
+#include "bernstein/subdivide.hpp"
+#include "bernstein/tensor.hpp"
 #include "vrep/trimmed.hpp"
 
 namespace splinex::vrep_detail {
@@ -18,7 +19,7 @@ namespace splinex::vrep_detail {
 /// face), with the box.
 template <class T, std::size_t N>
 struct CurvePiece {
-  std::vector<detail::Bern<T>> G;  // per leaf (collect order)
+  std::vector<Bernstein<T>> G;  // per leaf (collect order)
   std::array<T, N> lo, hi;
 };
 
@@ -64,10 +65,29 @@ void split_box(const Box& box, int dir, const T& frac, Box (&c)[2]) {
     h.level = box.level + 1;
     h.G.resize(n);
   }
-  for (std::size_t l = 0; l < n; ++l) std::tie(c[0].G[l], c[1].G[l]) = detail::bern_split(box.G[l], dir, frac);
+  for (std::size_t l = 0; l < n; ++l) std::tie(c[0].G[l], c[1].G[l]) = bern_split(box.G[l], dir, frac);
   const T mid = box.lo[D] + frac * (box.hi[D] - box.lo[D]);
   c[0].hi[D] = mid;
   c[1].lo[D] = mid;
+}
+
+/// The subdivision budget of one attempt: CurveOptions' boxes and levels.
+inline Budget attempt_budget(const CurveOptions& o) {
+  Budget b;
+  b.max_boxes = o.max_boxes;
+  b.max_depth = o.max_level;
+  return b;
+}
+
+/// An attempt's run in its count (CurveCount or RegionCount): the boxes spent (those examined,
+/// and the one refused when the box budget ran out, so a spent budget reads max_boxes + 1, as it
+/// always has) and, when it did not decide, why (`deepest`: the reason of a box left undecided).
+template <class Count>
+bool count_run(const Subdivision& run, const CurveOptions& o, const std::string& deepest, Count& out) {
+  out.boxes = run.examined + (run.stop == Subdivision::Stop::boxes ? 1 : 0);
+  if (run.stop == Subdivision::Stop::boxes) out.undecided_reason = "the box budget (" + std::to_string(o.max_boxes) + ") is spent";
+  if (run.stop == Subdivision::Stop::left) out.undecided_reason = deepest;
+  return run.stop != Subdivision::Stop::boxes && run.stop != Subdivision::Stop::left;
 }
 
 /// The split fractions tried in turn: 1/2, 7/16, 13/32 (index 0, 1, 2).
@@ -170,7 +190,7 @@ FaceEdges face_edges(const BSpline<T>& V, int d, int s, const Limits& limits);
 /// parameter. Where `outside` marks a leaf, it is read from the other side of the face: the
 /// quotient times (-1)^m.
 template <class T>
-std::vector<detail::Bern<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
+std::vector<Bernstein<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
                                             std::vector<int>* multiplicity);
 
 /// The 2D problem of face (d, s): the pieces touching it with leaves_on_face, the face's
@@ -182,6 +202,6 @@ CurveProblem<T, 2> face_curve_problem(const BSpline<T>& V, const std::vector<Lea
 /// G / t_d (side 0) or G / (1 - t_d) (side 1), for G vanishing identically on that facet: the
 /// same signs inside the box.
 template <class T>
-detail::Bern<T> divide_facet(const detail::Bern<T>& G, int d, int side);
+Bernstein<T> divide_facet(const Bernstein<T>& G, int d, int side);
 
 }  // namespace splinex::vrep_detail

@@ -136,7 +136,7 @@ void normalize(SBern<T>& b) {
 }
 
 template <class T>
-SBern<T> scaled(const Bern<T>& b) {
+SBern<T> scaled(const Bernstein<T>& b) {
   SBern<T> s;
   s.deg = b.deg;
   if constexpr (integer_coefficients<T>) {
@@ -164,7 +164,7 @@ SBern<T> scaled(const Bern<T>& b) {
 template <class T>
 std::pair<SBern<T>, SBern<T>> split_at(const SBern<T>& b, int d, const T& t) {
   if constexpr (!integer_coefficients<T>) {
-    auto [l, r] = detail::bern_split(Bern<T>{b.deg, b.c}, d, t);
+    auto [l, r] = bern_split(Bernstein<T>{b.deg, b.c}, d, t);
     return {SBern<T>{b.deg, std::move(l.c), b.scale}, SBern<T>{b.deg, std::move(r.c), b.scale}};
   } else {
     const Integer n = numerator(t), m = denominator(t), mn = m - n;
@@ -205,7 +205,7 @@ std::pair<SBern<T>, SBern<T>> split_at(const SBern<T>& b, int d, const T& t) {
 template <class T>
 std::pair<SBern<T>, SBern<T>> split_half(const SBern<T>& b, int d) {
   if constexpr (!integer_coefficients<T>) {
-    auto [l, r] = detail::bern_split(Bern<T>{b.deg, b.c}, d, T(1) / T(2));
+    auto [l, r] = bern_split(Bernstein<T>{b.deg, b.c}, d, T(1) / T(2));
     return {SBern<T>{b.deg, std::move(l.c), b.scale}, SBern<T>{b.deg, std::move(r.c), b.scale}};
   } else {
     SBern<T> L{b.deg, std::vector<Coef<T>>(b.c.size()), b.scale}, R{b.deg, std::vector<Coef<T>>(b.c.size()), b.scale};
@@ -280,7 +280,7 @@ std::vector<Coef<T>> raw_product(const std::vector<Coef<T>>& a, const std::vecto
   for (std::size_t l = 0; l < n; ++l) dh[l] = da[l] + db[l];
   if constexpr (!integer_coefficients<T>) {
     unit = T(1);
-    return detail::bern_product(Bern<T>{da, a}, Bern<T>{db, b}).c;
+    return bern_product(Bernstein<T>{da, a}, Bernstein<T>{db, b}).c;
   } else {
     // h_k = sum_{i + j = k} C(a, i) C(b, j) / C(a + b, k) a_i b_j per direction: on integers
     // times L / C(a + b, k).
@@ -758,10 +758,10 @@ struct GraphCut {
   const std::array<T, 4>& overshoot() {
     if (overshoot_) return *overshoot_;
     std::array<T, 4> o{T(0), T(0), T(0), T(0)};
-    Bern<T> p{dpsi, std::vector<T>(psi.size())};
+    Bernstein<T> p{dpsi, std::vector<T>(psi.size())};
     for (std::size_t i = 0; i < p.c.size(); ++i) p.c[i] = as_value<T>(psi[i]) * psi_unit;
     // f = psi - 1 (top) or -psi (bottom) on a sub-square of the given area.
-    std::function<void(const Bern<T>&, bool, int, const T&)> walk = [&](const Bern<T>& q, bool top, int depth, const T& area) {
+    std::function<void(const Bernstein<T>&, bool, int, const T&)> walk = [&](const Bernstein<T>& q, bool top, int depth, const T& area) {
       std::vector<T> f(q.c.size());
       for (std::size_t i = 0; i < f.size(); ++i) f[i] = top ? T(q.c[i] - T(1)) : T(-q.c[i]);
       T mn = f.front(), mx = mn, sum(0);
@@ -792,7 +792,7 @@ struct GraphCut {
           if (va < d1) va = d1;
           if (vb < d2) vb = d2;
         }
-      auto [q0, q1] = detail::bern_split(q, va < vb ? 1 : 0, T(1) / T(2));
+      auto [q0, q1] = bern_split(q, va < vb ? 1 : 0, T(1) / T(2));
       walk(q0, top, depth - 1, area / T(2));
       walk(q1, top, depth - 1, area / T(2));
     };
@@ -897,9 +897,9 @@ bool graph_along(const SBern<T>& G, int k, int sign_k, const T& m, bool part_is_
     for (int ib = 0; ib < 3; ++ib) {
       std::vector<T> u(sl.size());
       for (std::size_t l = 0; l < sl.size(); ++l) {
-        Bern<T> b2{ds, std::vector<T>(sl[l].size())};
+        Bernstein<T> b2{ds, std::vector<T>(sl[l].size())};
         for (std::size_t i = 0; i < sl[l].size(); ++i) b2.c[i] = as_value<T>(sl[l][i]);
-        u[l] = detail::bern_value(b2, std::vector<T>{grid[ia], grid[ib]});
+        u[l] = bern_value(b2, std::vector<T>{grid[ia], grid[ib]});
       }
       std::vector<T> du(u.size() - 1);
       for (std::size_t l = 0; l + 1 < u.size(); ++l) du[l] = (u[l + 1] - u[l]) * T(static_cast<long>(u.size() - 1));
@@ -945,10 +945,10 @@ bool graph_along(const SBern<T>& G, int k, int sign_k, const T& m, bool part_is_
   while (!(pmax < ext_hi - eighth)) ext_hi += eighth;
   if (ext_lo < T(-1) || T(2) < ext_hi) return false;
   if (ext_lo < T(0) || T(1) < ext_hi) {
-    Bern<T> v{G.deg, std::vector<T>(G.c.size())};
+    Bernstein<T> v{G.deg, std::vector<T>(G.c.size())};
     for (std::size_t i = 0; i < v.c.size(); ++i) v.c[i] = as_value<T>(G.c[i]);
-    v = detail::bern_split(v, k, ext_lo).second;                                           // over [ext_lo, 1]
-    v = detail::bern_split(v, k, T((ext_hi - ext_lo) / (T(1) - ext_lo))).first;          // over [ext_lo, ext_hi]
+    v = bern_split(v, k, ext_lo).second;                                           // over [ext_lo, 1]
+    v = bern_split(v, k, T((ext_hi - ext_lo) / (T(1) - ext_lo))).first;          // over [ext_lo, ext_hi]
     const std::size_t n[3] = {static_cast<std::size_t>(G.deg[0]) + 1, static_cast<std::size_t>(G.deg[1]) + 1,
                               static_cast<std::size_t>(G.deg[2]) + 1};
     const std::size_t stride[3] = {1, n[0], n[0] * n[1]};
@@ -1086,10 +1086,10 @@ void graph_integral(const SBern<T>& P, GraphCut<T>& g, GramCache<T>& gram, T& lo
     // Where psi > 1, A(s, 1) instead of C(s) = A(s, psi(s)): C - A(s, 1) = int_1^psi P dt lies
     // between (psi - 1) times P's extremes over the longer interval; where psi < 0, 0 instead of
     // C = -int_psi^0 P dt. int int (psi - 1)_+ and (-psi)_+ are the graph's (overshoot).
-    Bern<T> v{P.deg, std::vector<T>(P.c.size())};
+    Bernstein<T> v{P.deg, std::vector<T>(P.c.size())};
     for (std::size_t i = 0; i < v.c.size(); ++i) v.c[i] = as_value<T>(P.c[i]) * P.scale;
-    if (g.ext_lo < T(0)) v = detail::bern_split(v, g.k, g.ext_lo).second;
-    if (T(1) < g.ext_hi) v = detail::bern_split(v, g.k, T((g.ext_hi - g.ext_lo) / (T(1) - g.ext_lo))).first;
+    if (g.ext_lo < T(0)) v = bern_split(v, g.k, g.ext_lo).second;
+    if (T(1) < g.ext_hi) v = bern_split(v, g.k, T((g.ext_hi - g.ext_lo) / (T(1) - g.ext_lo))).first;
     T emin = v.c.front(), emax = emin;
     for (const auto& x : v.c) {
       if (x < emin) emin = x;
@@ -1229,7 +1229,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
       for (std::size_t l = 0; l < cell.leaves.size(); ++l)
         if (cell.leaves[l]->degree() > 1 && live[l]) b.G[l] = scaled(compose_leaf(*cell.leaves[l], powers));
       initial_carried.add(CarriedCoefficients::of(b.G), "the cells' pieces");  // as they are made
-      const Bern<T> N = jacobian_numerator(pc.spline);
+      const Bernstein<T> N = jacobian_numerator(pc.spline);
       if (cell.orientation == 0) {
         // N's mean is its integral over the piece, W^4 > 0: a regular cell's orientation.
         T sum(0);
@@ -1397,7 +1397,7 @@ IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>& c
         if (wmax < w0) w0 = wmax;
         SBern<T> Wm, Wm2;
         if (cell.rational) {
-          Bern<T> v{b.W.deg, std::vector<T>(b.W.c.size())};
+          Bernstein<T> v{b.W.deg, std::vector<T>(b.W.c.size())};
           for (std::size_t i = 0; i < v.c.size(); ++i) v.c[i] = as_value<T>(b.W.c[i]) * b.W.scale - w0;
           Wm = scaled(v);
           Wm2 = product(Wm, Wm);

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
@@ -24,13 +24,12 @@ namespace splinex {
 
 namespace {
 
-using detail::Bern;
 using vrep_detail::corner_set;
 using vrep_detail::join_identified;
 using vrep_detail::join_touching;
 using vrep_detail::UnionFind;
 template <class T>
-using H4 = std::array<Bern<T>, 4>;  // W, wx, wy, wz
+using H4 = std::array<Bernstein<T>, 4>;  // W, wx, wy, wz
 
 /// Bounds (x_lo, y_lo, z_lo, x_hi, y_hi, z_hi) of the points of a homogeneous Bezier form: the
 /// control points' (weights positive: every point is a convex combination of them).
@@ -65,8 +64,8 @@ T extent(const std::array<T, 6>& a) {
 template <class T>
 H4<T> homogeneous_form(const BSpline<T>& piece) {
   H4<T> h;
-  h[0] = detail::bern_coordinate(piece, piece.q);
-  for (int k = 0; k < 3; ++k) h[k + 1] = detail::bern_coordinate(piece, k);
+  h[0] = bern_coordinate(piece, piece.q);
+  for (int k = 0; k < 3; ++k) h[k + 1] = bern_coordinate(piece, k);
   return h;
 }
 
@@ -89,10 +88,10 @@ void require_no_fold(const BSpline<T>& V, const std::string& name, const Limits&
   std::vector<T> first[2];
   for (std::size_t k = 0; k < F.size(); ++k) {
     const auto pc = F.piece(k);
-    const Bern<T> N = vrep_detail::jacobian_numerator(pc.spline);
+    const Bernstein<T> N = vrep_detail::jacobian_numerator(pc.spline);
     for (int i = 0; i < 125; ++i) {
       const std::vector<T> x{T(i % 5) / T(4), T((i / 5) % 5) / T(4), T(i / 25) / T(4)};
-      const T v = detail::bern_value(N, x);
+      const T v = bern_value(N, x);
       const int sg = T(0) < v ? 1 : v < T(0) ? 2 : 0;
       if (!sg) continue;
       if (first[sg - 1].empty())
@@ -217,7 +216,7 @@ Truth classify_point_freeform(const FreeformSolid<T>& S, const std::vector<T>& x
   bool doubtful = false;
   for (const auto& p : S.pieces) {
     if (!overlap(p.box, at)) continue;
-    std::vector<Bern<T>> f(3);
+    std::vector<Bernstein<T>> f(3);
     for (int k = 0; k < 3; ++k) {
       f[k] = p.h[k + 1];
       for (std::size_t i = 0; i < f[k].c.size(); ++i) f[k].c[i] -= x[k] * p.h[0].c[i];
@@ -249,10 +248,10 @@ Truth classify_point_freeform(const FreeformSolid<T>& S, const std::vector<T>& x
         const T& plane = side ? p.hi[d] : p.lo[d];
         const auto& cell = S.cells[p.cell];
         if (plane == cell.domain_lo(d) || plane == cell.domain_hi(d)) continue;  // a face of the cell, not an inner knot plane
-        std::vector<Bern<T>> f, zero;
+        std::vector<Bernstein<T>> f, zero;
         for (int k = 0; k < 3; ++k) {
-          Bern<T> g = detail::bern_face(p.h[k + 1], d, side);
-          const Bern<T> w = detail::bern_face(p.h[0], d, side);
+          Bernstein<T> g = bern_face(p.h[k + 1], d, side);
+          const Bernstein<T> w = bern_face(p.h[0], d, side);
           for (std::size_t i = 0; i < g.c.size(); ++i) g.c[i] -= x[k] * w.c[i];
           (std::all_of(g.c.begin(), g.c.end(), [](const T& v) { return v == T(0); }) ? zero : f).push_back(std::move(g));
         }
@@ -296,7 +295,7 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
     for (const auto& p : conditions[j].solid->boundary) roots[j].push_back(std::make_shared<typename FreeformSolid<T>::Patch>(p));
   struct Box {
     H4<T> h;
-    Bern<T> N;
+    Bernstein<T> N;
     std::array<T, 3> lo, hi;
     T vol;
     std::array<T, 6> image;
@@ -621,7 +620,7 @@ FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformC
     out.corners_undecided += t == Truth::mixed;
   }
   // An edge piece's homogeneous coordinates lifted to (s, t, tau), and a boundary piece's.
-  auto lift = [](Bern<T> b, int dims_before) {
+  auto lift = [](Bernstein<T> b, int dims_before) {
     std::vector<int> deg(static_cast<std::size_t>(dims_before), 0);
     deg.insert(deg.end(), b.deg.begin(), b.deg.end());
     while (deg.size() < 3) deg.push_back(0);
@@ -647,16 +646,16 @@ FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformC
         for (std::size_t k = 0; k < F.size() && e.status == FreeformEdges<T>::Edge::curve; ++k) {
           const auto pc = F.piece(k);
           H4<T> h;
-          h[0] = detail::bern_coordinate(pc.spline, pc.spline.q);
-          for (int c = 0; c < 3; ++c) h[c + 1] = detail::bern_coordinate(pc.spline, c);
+          h[0] = bern_coordinate(pc.spline, pc.spline.q);
+          for (int c = 0; c < 3; ++c) h[c + 1] = bern_coordinate(pc.spline, c);
           const auto box = bounds_of(h);
           for (const auto& cond : conditions)
             for (const auto& P : cond.solid->boundary) {
               if (!overlap(P.box, box)) continue;
-              std::vector<Bern<T>> f;
-              const Bern<T> WE = lift(h[0], 2), WP = lift(P.h[0], 0);
+              std::vector<Bernstein<T>> f;
+              const Bernstein<T> WE = lift(h[0], 2), WP = lift(P.h[0], 0);
               for (int c = 1; c < 4; ++c)
-                f.push_back(detail::bern_sub(detail::bern_product(lift(P.h[c], 0), WE), detail::bern_product(lift(h[c], 2), WP)));
+                f.push_back(bern_sub(bern_product(lift(P.h[c], 0), WE), bern_product(lift(h[c], 2), WP)));
               // An equation that vanishes identically (the edge and the piece in one coordinate plane):
               // no crossing if another one has one strict sign, else the solutions need not be isolated.
               bool zero = false, excluded = false;

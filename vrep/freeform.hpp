@@ -51,10 +51,10 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
+#include "bernstein/tensor.hpp"
 #include "solve/solver.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
-#include "spline/tensor_bernstein.hpp"
 #include "vrep/trimmed.hpp"
 
 namespace splinex {
@@ -64,14 +64,14 @@ struct FreeformSolid {
   /// A Bezier piece of a boundary face: the homogeneous coordinates (W, wx, wy, wz) in Bernstein
   /// form on [0, 1]^2, and the bounds of its points.
   struct Patch {
-    std::array<detail::Bern<T>, 4> h;
+    std::array<Bernstein<T>, 4> h;
     std::array<T, 6> box;
   };
   /// A Bezier piece of a cell: (W, wx, wy, wz) on [0, 1]^3 standing for the parameter box [lo, hi],
   /// the bounds of its points, and which of its faces lie on the solid's boundary.
   struct Piece {
     std::size_t cell = 0;
-    std::array<detail::Bern<T>, 4> h;
+    std::array<Bernstein<T>, 4> h;
     std::vector<T> lo, hi;
     std::array<T, 6> box;
     std::array<std::array<bool, 2>, 3> on_boundary{};

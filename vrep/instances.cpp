@@ -4,17 +4,16 @@
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean_impl.hpp"
+#include "vrep/enclosure_impl.hpp"
 #include "vrep/primitives_impl.hpp"
 #include "vrep/regularity_impl.hpp"
-#include "vrep/vmodel_impl.hpp"
-#include "vrep/trivariate_impl.hpp"
 #include "vrep/trimmed_impl.hpp"
-#include "vrep/enclosure_impl.hpp"
+#include "vrep/trivariate_impl.hpp"
+#include "vrep/vmodel_impl.hpp"
 
 namespace splinex {
 
 SphereDeviation sphere_deviation(const BSpline<Rational>& S, const std::vector<Rational>& centre, const Rational& r, int samples) {
-  using detail::Bern;
   validate(S);
   if (S.dim() != 2 || S.q < 3) throw ValidationError("surface", "is not a surface in R^3", "give a surface S(u, v)");
   if (centre.size() != 3) throw ValidationError("centre", "needs three coordinates", "give x,y,z");
@@ -26,15 +25,15 @@ SphereDeviation sphere_deviation(const BSpline<Rational>& S, const std::vector<R
   for (const auto& piece : extract_bezier(S)) {
     const auto& B = piece.spline;
     // Homogeneous W and W (x_a - c_a); E = sum_a (W (x_a - c_a))^2 - r^2 W^2 = W^2 (|x - c|^2 - r^2).
-    Bern<Rational> w{B.degrees, {}}, e;
+    Bernstein<Rational> w{B.degrees, {}}, e;
     for (std::size_t i = 0; i < B.size(); ++i) w.c.push_back(B.is_rational() ? B.weights[i] : Rational(1));
-    const auto w2 = detail::bern_product(w, w);
+    const auto w2 = bern_product(w, w);
     e = w2;
     for (auto& x : e.c) x *= -r2;
     for (int a = 0; a < 3; ++a) {
-      Bern<Rational> x{B.degrees, {}};
+      Bernstein<Rational> x{B.degrees, {}};
       for (std::size_t i = 0; i < B.size(); ++i) x.c.push_back(w.c[i] * (B.points[i * B.q + a] - centre[a]));
-      const auto x2 = detail::bern_product(x, x);
+      const auto x2 = bern_product(x, x);
       for (std::size_t i = 0; i < e.c.size(); ++i) e.c[i] += x2.c[i];
     }
     Rational emax(0), wmin = w2.c.front();
@@ -119,8 +118,8 @@ const char* to_string(Truth t) {
   return t == Truth::in ? "in" : t == Truth::out ? "out" : "mixed";
 }
 
-const char* to_string(Regularity r) {
-  return r == Regularity::regular ? "regular" : r == Regularity::singular ? "singular" : "undecided";
+const char* regularity_name(const Verdict& v) {
+  return v.is_proved() ? "regular" : v.is_refuted() ? "singular" : "undecided";
 }
 
 #define SPLINEX_INSTANTIATE_VREP(T)                                                                                 \

@@ -12,7 +12,7 @@
 #include <numeric>
 #include <set>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "spline/evaluate.hpp"
 
 namespace splinex {

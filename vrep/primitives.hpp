@@ -29,7 +29,7 @@
 //    square roots, the system solved exactly), symmetric in s <-> t and even in each, so the
 //    six patches (the +z one under the rotations of the cube) share their edges exactly and the
 //    seven cells glue exactly. sphere_deviation bounds | |x - c|^2 / r^2 - 1 | over a patch from
-//    exact Bernstein coefficients (docs/vrep.md has the numbers).
+//    exact Bernstein coefficients (docs/vrep/primitives.md has the numbers).
 // Figure 8: singular_cylinder (a rectangle revolved about z: det J = 0 on the axis) and
 // singular_sphere (a half disk revolved about z).
 #pragma once

@@ -1,9 +1,9 @@
 // Primitives (vrep/primitives.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
-#include "spline/elevate.hpp"
+#include "base/errors.hpp"
 #include "exact/rational.hpp"
 #include "spline/basis.hpp"
-#include "spline/errors.hpp"
+#include "spline/elevate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trivariate_impl.hpp"  // vrep_detail::solve_in_place

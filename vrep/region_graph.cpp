@@ -23,7 +23,7 @@
 #include <deque>
 #include <optional>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/brackets.hpp"
 #include "vrep/curve_graph.hpp"
@@ -35,7 +35,6 @@ namespace splinex {
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// One side of a resolved box: the roots along it of the leaves that matter in the box, in
@@ -63,39 +62,31 @@ class RegionRun {
   bool run(RegionCount& out) {
     struct Open {
       std::array<T, 2> lo, hi;
-      std::vector<Bern<T>> G;
+      std::vector<Bernstein<T>> G;
       int level = 0;
     };
-    std::deque<Open> todo;
-    for (const auto& pc : P.pieces) todo.push_back({pc.lo, pc.hi, pc.G, 0});
-    std::size_t boxes = 0;
-    while (!todo.empty()) {
-      if (++boxes > P.options.max_boxes) {
-        out.boxes = boxes;
-        out.undecided_reason = "the box budget (" + std::to_string(P.options.max_boxes) + ") is spent";
-        return false;
-      }
-      Open B = std::move(todo.front());
-      todo.pop_front();
+    std::vector<Open> roots;
+    for (const auto& pc : P.pieces) roots.push_back({pc.lo, pc.hi, pc.G, 0});
+    auto examine_box = [&](Open& B, int) {
       Resolved<T> r;
       r.lo = B.lo;
       r.hi = B.hi;
-      const int v = examine(B.G, r);
-      if (v == 1) {
-        if (r.pieces > 0) done_.push_back(std::move(r));
-        continue;
-      }
-      if (B.level >= P.options.max_level) {
-        out.boxes = boxes;
-        out.undecided_reason = "a box at the deepest level is still open (a trimming curve is singular or tangent to a split line there, or more than two curves meet)";
-        return false;
-      }
+      if (examine(B.G, r) != 1) return Examined::split;
+      if (r.pieces > 0) done_.push_back(std::move(r));
+      return Examined::settled;
+    };
+    auto split = [&](Open&& B, int, auto&& emit) {
       Open c[2];
       split_box(B, widest(B.lo, B.hi), frac_, c);
-      todo.push_back(std::move(c[0]));
-      todo.push_back(std::move(c[1]));
-    }
-    out.boxes = boxes;
+      emit(std::move(c[0]));
+      emit(std::move(c[1]));
+    };
+    const Subdivision run =
+        subdivide(std::move(roots), Walk{Order::breadth_first, 2, true}, attempt_budget(P.options), examine_box, split, [](Open&&, Left) {});
+    if (!count_run(run, P.options,
+                   "a box at the deepest level is still open (a trimming curve is singular or tangent to a split line there, or more than two curves meet)",
+                   out))
+      return false;
     return graph(out);
   }
 
@@ -111,11 +102,11 @@ class RegionRun {
   }
 
   /// 1: resolved (r filled), 0: split it.
-  int examine(const std::vector<Bern<T>>& G, Resolved<T>& r) {
+  int examine(const std::vector<Bernstein<T>>& G, Resolved<T>& r) {
     std::vector<Truth> t(nl_);
     std::vector<std::size_t> mixed;
     for (std::size_t l = 0; l < nl_; ++l) {
-      const int s = detail::bern_sign(G[l]);
+      const int s = bern_sign(G[l]);
       t[l] = s > 0 ? Truth::in : s < 0 ? Truth::out : Truth::mixed;
       if (s == 0) mixed.push_back(l);
     }
@@ -153,12 +144,12 @@ class RegionRun {
             if (v == T(0)) return 0;
             corner = sign_of(v);
           }
-        if (detail::bern_sign(detail::bern_derivative(G[l], 0)) == 0 && detail::bern_sign(detail::bern_derivative(G[l], 1)) == 0) return 0;
+        if (bern_sign(bern_derivative(G[l], 0)) == 0 && bern_sign(bern_derivative(G[l], 1)) == 0) return 0;
         std::size_t n = 0;
         for (int d = 0; d < 2; ++d)
           for (int s = 0; s < 2; ++s) {
             std::vector<std::pair<T, T>> roots;
-            if (!isolate(detail::bern_face(G[l], d, s), T(0), T(1), 48, roots)) return 0;
+            if (!isolate(bern_face(G[l], d, s), T(0), T(1), 48, roots)) return 0;
             n += roots.size();
           }
         if (n == 0) {  // monotone and no crossing: no zero in the box
@@ -183,12 +174,12 @@ class RegionRun {
 
   /// The arrangement of the one or two arcs `keep` (the other mixed leaves do not matter): the
   /// sign patterns on the boundary, the faces and pieces.
-  int arrange(const std::vector<Bern<T>>& G, std::vector<Truth> t, const std::vector<std::size_t>& mixed, const std::vector<std::size_t>& keep,
+  int arrange(const std::vector<Bernstein<T>>& G, std::vector<Truth> t, const std::vector<std::size_t>& mixed, const std::vector<std::size_t>& keep,
               Resolved<T>& r) {
     if (keep.size() == 2) {
-      const Bern<T> det = detail::bern_sub(detail::bern_product(detail::bern_derivative(G[keep[0]], 0), detail::bern_derivative(G[keep[1]], 1)),
-                                     detail::bern_product(detail::bern_derivative(G[keep[0]], 1), detail::bern_derivative(G[keep[1]], 0)));
-      if (detail::bern_sign(det) == 0) return 0;
+      const Bernstein<T> det = bern_sub(bern_product(bern_derivative(G[keep[0]], 0), bern_derivative(G[keep[1]], 1)),
+                                     bern_product(bern_derivative(G[keep[0]], 1), bern_derivative(G[keep[1]], 0)));
+      if (bern_sign(det) == 0) return 0;
     }
     // The patterns of the kept leaves (bit q: leaf keep[q] > 0) that make the formula true; the
     // leaves that do not matter at any value.
@@ -202,8 +193,8 @@ class RegionRun {
       for (int s = 0; s < 2; ++s) {
         const int idx = 2 * d + s, e = 1 - d;
         Side<T>& side = r.sides[static_cast<std::size_t>(idx)];
-        std::vector<Bern<T>> f;
-        for (std::size_t l : keep) f.push_back(detail::bern_face(G[l], d, s));
+        std::vector<Bernstein<T>> f;
+        for (std::size_t l : keep) f.push_back(bern_face(G[l], d, s));
         const T L = r.lo[static_cast<std::size_t>(e)], H = r.hi[static_cast<std::size_t>(e)];
         for (std::size_t q = 0; q < keep.size(); ++q) {
           std::vector<std::pair<T, T>> iso;
@@ -232,7 +223,7 @@ class RegionRun {
           const T at = g == 0 ? L : g == side.roots.size() ? H : (side.roots[g - 1].hi + side.roots[g].lo) / 2;
           unsigned pattern = 0;
           for (std::size_t q = 0; q < keep.size(); ++q) {
-            const int sg = sign_of(detail::bern_value(f[q], {(at - L) / (H - L)}));
+            const int sg = sign_of(bern_value(f[q], {(at - L) / (H - L)}));
             if (sg == 0) return 0;
             if (sg > 0) pattern |= 1u << q;
           }

@@ -18,25 +18,25 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
+#include "base/verdict.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 
-enum class Regularity { regular, singular, undecided };
-
-const char* to_string(Regularity r);
+/// The word of a regularity verdict in text and documents: "regular" (proved: det J has one sign),
+/// "singular" (refuted: det J = 0 at `point`, or of both signs), "undecided".
+const char* regularity_name(const Verdict& v);
 
 template <class T>
 struct RegularityReport {
-  Regularity verdict = Regularity::undecided;
+  Verdict verdict;           // proved: regular; refuted: singular (the witness below); undecided (the reason says why)
   int sign = 0;              // regular: +1 (det J > 0 everywhere) or -1
   std::vector<T> point;      // singular: where det J = 0, or where its sign is the opposite of `other`'s
   std::vector<T> other;      // sign change: a parameter of the other sign (empty when det J = 0 at `point`)
   T value{0}, other_value{0};  // det J's numerator at point and other (local scaling, sign exact)
   int levels = 0;            // subdivision levels used
   std::size_t boxes = 0;     // boxes examined
-  std::string reason;
 };
 
 /// The verdict on the whole domain (every coordinate beyond the third is an attribute).

@@ -1,11 +1,13 @@
 // Certified regularity (vrep/regularity.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
+#include <array>
 #include <deque>
 
+#include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
+#include "bernstein/tensor.hpp"
 #include "compose/compose_impl.hpp"
-#include "spline/tensor_bernstein.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/knots.hpp"
 #include "vrep/brackets.hpp"
 #include "vrep/planted.hpp"
@@ -15,68 +17,67 @@ namespace splinex {
 
 namespace vrep_detail {
 
-using detail::Bern;
 
 /// Homogeneous coordinate c of a Bezier trivariate piece: c = 0 the weight W (1 if polynomial),
 /// c = 1..3 the geometry w x, w y, w z.
 template <class T>
-Bern<T> homogeneous(const BSpline<T>& piece, int c) {
-  return detail::bern_coordinate(piece, c == 0 ? piece.q : c - 1);
+Bernstein<T> homogeneous(const BSpline<T>& piece, int c) {
+  return bern_coordinate(piece, c == 0 ? piece.q : c - 1);
 }
 
 template <class T>
-Bern<T> derivative(const Bern<T>& b, int l) {
-  return detail::bern_derivative(b, l);
+Bernstein<T> derivative(const Bernstein<T>& b, int l) {
+  return bern_derivative(b, l);
 }
 template <class T>
-Bern<T> sub(Bern<T> a, const Bern<T>& b) {
-  return detail::bern_sub(std::move(a), b);
+Bernstein<T> sub(Bernstein<T> a, const Bernstein<T>& b) {
+  return bern_sub(std::move(a), b);
 }
 template <class T>
-Bern<T> add(Bern<T> a, const Bern<T>& b) {
-  return detail::bern_add(std::move(a), b);
+Bernstein<T> add(Bernstein<T> a, const Bernstein<T>& b) {
+  return bern_add(std::move(a), b);
 }
 template <class T>
-Bern<T> mul(const Bern<T>& a, const Bern<T>& b) {
-  return detail::bern_product(a, b);
+Bernstein<T> mul(const Bernstein<T>& a, const Bernstein<T>& b) {
+  return bern_product(a, b);
 }
 
 /// det of the 2x2 [[a, b], [c, d]].
 template <class T>
-Bern<T> det2(const Bern<T>& a, const Bern<T>& b, const Bern<T>& c, const Bern<T>& d) {
+Bernstein<T> det2(const Bernstein<T>& a, const Bernstein<T>& b, const Bernstein<T>& c, const Bernstein<T>& d) {
   return sub(mul(a, d), mul(b, c));
 }
 
 /// det J's numerator of a Bezier piece in local coordinates.
 template <class T>
-Bern<T> jacobian_numerator(const BSpline<T>& piece) {
+Bernstein<T> jacobian_numerator(const BSpline<T>& piece) {
   const bool rational = piece.is_rational();
   // M[r][c]: row r = homogeneous coordinate (W, X, Y, Z) or (X, Y, Z); column c = (P,) P_u, P_v, P_w.
   if (!rational) {
-    Bern<T> M[3][3];
+    Bernstein<T> M[3][3];
     for (int r = 0; r < 3; ++r) {
-      const Bern<T> x = homogeneous(piece, r + 1);
+      const Bernstein<T> x = homogeneous(piece, r + 1);
       for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
     }
-    Bern<T> det = mul(M[0][0], det2(M[1][1], M[1][2], M[2][1], M[2][2]));
+    Bernstein<T> det = mul(M[0][0], det2(M[1][1], M[1][2], M[2][1], M[2][2]));
     det = sub(det, mul(M[0][1], det2(M[1][0], M[1][2], M[2][0], M[2][2])));
     return add(det, mul(M[0][2], det2(M[1][0], M[1][1], M[2][0], M[2][1])));
   }
-  Bern<T> M[4][4];
+  Bernstein<T> M[4][4];
   for (int r = 0; r < 4; ++r) {
     M[r][0] = homogeneous(piece, r);
     for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
   }
   // Laplace expansion along columns (0, 1): sum over row pairs r1 < r2 of
   // (-1)^(r1 + r2 + 1) minor(r1, r2; 0, 1) minor(complement; 2, 3).
-  Bern<T> det;
+  Bernstein<T> det;
   bool first = true;
   for (int r1 = 0; r1 < 4; ++r1)
     for (int r2 = r1 + 1; r2 < 4; ++r2) {
       int s1 = -1, s2 = -1;
       for (int r = 0; r < 4; ++r)
         if (r != r1 && r != r2) (s1 < 0 ? s1 : s2) = r;
-      Bern<T> term = mul(det2(M[r1][0], M[r1][1], M[r2][0], M[r2][1]), det2(M[s1][2], M[s1][3], M[s2][2], M[s2][3]));
+      Bernstein<T> term = mul(det2(M[r1][0], M[r1][1], M[r2][0], M[r2][1]), det2(M[s1][2], M[s1][3], M[s2][2], M[s2][3]));
       if ((r1 + r2 + 1) % 2 != 0)
         for (auto& x : term.c) x = -x;
       det = first ? term : add(det, term);
@@ -87,8 +88,8 @@ Bern<T> jacobian_numerator(const BSpline<T>& piece) {
 
 /// The two halves of b at t_l = 1/2.
 template <class T>
-std::pair<Bern<T>, Bern<T>> split_half(const Bern<T>& b, int l) {
-  return detail::bern_split(b, l, T(1) / T(2));
+std::pair<Bernstein<T>, Bernstein<T>> split_half(const Bernstein<T>& b, int l) {
+  return bern_split(b, l, T(1) / T(2));
 }
 
 /// det J's numerator degrees, checked against the limits before any work: the degree limit per
@@ -117,6 +118,54 @@ void require_jacobian_input(const BSpline<T>& V, const Limits& limits) {
   for (int d = 0; d < 3; ++d)
     if (V.degrees[d] == 0) throw ValidationError("degrees", "has degree 0 in a direction: det J is 0", "elevate it first");
   check_jacobian_size(V, limits);
+}
+
+/// A parameter box of a trivariate with det J's numerator on it in Bernstein form: the box of the
+/// subdivisions that decide det J's sign (certify_regularity, certify_cell_shape).
+template <class T>
+struct JacobianBox {
+  Bernstein<T> N;
+  std::array<T, 3> lo, hi;
+};
+
+/// The roots of those subdivisions: one box per Bezier piece of V.
+template <class T>
+std::vector<JacobianBox<T>> jacobian_boxes(const BSpline<T>& V, const Limits& limits) {
+  const BezierForm<T> F = bezier_form(V, limits);
+  std::vector<JacobianBox<T>> out;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    JacobianBox<T> b{jacobian_numerator(pc.spline), {}, {}};
+    for (int d = 0; d < 3; ++d) {
+      b.lo[d] = pc.box[d].first;
+      b.hi[d] = pc.box[d].second;
+    }
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+/// The eight children of a box at its midpoints, emitted in the order of splitting direction 0,
+/// then 1, then 2 (de Casteljau, exact in exact arithmetic). `keep_upper_u` false loses the
+/// children above the midpoint of u (the planted bug of vrep/planted.hpp, tests only).
+template <class T, class Emit>
+void split_octants(JacobianBox<T>&& b, Emit&& emit, bool keep_upper_u = true) {
+  std::vector<JacobianBox<T>> parts;
+  parts.push_back(std::move(b));
+  for (int d = 0; d < 3; ++d) {
+    std::vector<JacobianBox<T>> next;
+    for (auto& p : parts) {
+      auto [L, R] = split_half(p.N, d);
+      const T mid = (p.lo[d] + p.hi[d]) / T(2);
+      JacobianBox<T> l{std::move(L), p.lo, p.hi}, r{std::move(R), p.lo, p.hi};
+      l.hi[d] = mid;
+      r.lo[d] = mid;
+      next.push_back(std::move(l));
+      if (d != 0 || keep_upper_u) next.push_back(std::move(r));
+    }
+    parts = std::move(next);
+  }
+  for (auto& p : parts) emit(std::move(p));
 }
 
 }  // namespace vrep_detail
@@ -159,7 +208,6 @@ BSpline<T> jacobian_determinant(const BSpline<T>& V, const Limits& limits) {
 
 template <class T>
 RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, const Limits& limits) {
-  using vrep_detail::Bern;
   validate(V, limits);
   if (V.dim() != 3 || V.q < 3)
     throw ValidationError("degrees", "regularity needs a trivariate with points in R^3", "give a spline with three directions and q >= 3");
@@ -167,41 +215,21 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
   RegularityReport<T> rep;
   for (int d = 0; d < 3; ++d)
     if (V.degrees[d] == 0) {
-      rep.verdict = Regularity::singular;
+      rep.verdict = Verdict::refuted("degree 0 in direction " + std::to_string(d) + ": det J = 0 everywhere");
       rep.point = {V.domain_lo(0), V.domain_lo(1), V.domain_lo(2)};
-      rep.reason = "degree 0 in direction " + std::to_string(d) + ": det J = 0 everywhere";
       return rep;
     }
-  struct Box {
-    Bern<T> N;
-    T lo[3], hi[3];
-    int level;
-  };
   // Memory: the boxes alive at once hold at most the control-point limit of coefficients.
   const std::size_t per_piece = vrep_detail::check_jacobian_size(V, limits);
-  const std::size_t box_budget = std::max<std::size_t>(64, limits.max_control_points / per_piece);
-  bool budget_hit = false;
-  const BezierForm<T> F = bezier_form(V, limits);
-  std::deque<Box> todo;
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    Box b{vrep_detail::jacobian_numerator(pc.spline), {}, {}, 0};
-    for (int d = 0; d < 3; ++d) {
-      b.lo[d] = pc.box[d].first;
-      b.hi[d] = pc.box[d].second;
-    }
-    todo.push_back(std::move(b));
-  }
+  Budget budget;
+  budget.max_depth = max_levels;
+  budget.max_alive = std::max<std::size_t>(64, limits.max_control_points / per_piece);
+  using Box = vrep_detail::JacobianBox<T>;
   int global = 0;
   std::vector<T> global_point;
   T global_value(0);
-  bool undecided = false;
   std::vector<T> undecided_at;
-  while (!todo.empty()) {
-    Box b = std::move(todo.front());
-    todo.pop_front();
-    ++rep.boxes;
-    rep.levels = std::max(rep.levels, b.level);
+  auto examine = [&](const Box& b, int) {
     // The corners: exact values of the (local) numerator.
     std::vector<int> idx(3);
     int lo_sign = 2, hi_sign = -2, corner_lo = 2, corner_hi = -2;
@@ -218,65 +246,53 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
       std::vector<T> x(3);
       for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
       if (s == 0) {
-        rep.verdict = Regularity::singular;
+        rep.verdict = Verdict::refuted("det J = 0 at a corner of a Bezier box");
         rep.point = x;
         rep.value = b.N.c[i];
-        rep.reason = "det J = 0 at a corner of a Bezier box";
-        return rep;
+        return Examined::refuted;
       }
       if (global == 0) {
         global = s;
         global_point = x;
         global_value = b.N.c[i];
       } else if (s != global) {
-        rep.verdict = Regularity::singular;
+        rep.verdict = Verdict::refuted("det J changes sign");
         rep.point = x;
         rep.value = b.N.c[i];
         rep.other = global_point;
         rep.other_value = global_value;
-        rep.reason = "det J changes sign";
-        return rep;
+        return Examined::refuted;
       }
     }
-    if (lo_sign == hi_sign && lo_sign == global) continue;  // certified on this box
+    if (lo_sign == hi_sign && lo_sign == global) return Examined::settled;  // certified on this box
     // Planted (tests only): the corners alone "certify" the box.
-    if (vrep_testing::is_planted(vrep_testing::Plant::regularity_corners_only) && corner_lo == corner_hi && corner_lo == global) continue;
-    if (b.level >= max_levels || todo.size() + 8 > box_budget) {
-      if (!undecided) undecided_at = {(b.lo[0] + b.hi[0]) / T(2), (b.lo[1] + b.hi[1]) / T(2), (b.lo[2] + b.hi[2]) / T(2)};
-      undecided = true;
-      budget_hit = budget_hit || b.level < max_levels;
-      continue;
-    }
-    // Subdivide at the midpoints of all three directions: 8 children.
-    std::vector<Box> parts{std::move(b)};
-    for (int d = 0; d < 3; ++d) {
-      std::vector<Box> next;
-      for (auto& p : parts) {
-        auto [L, R] = vrep_detail::split_half(p.N, d);
-        const T mid = (p.lo[d] + p.hi[d]) / T(2);
-        Box l{std::move(L), {p.lo[0], p.lo[1], p.lo[2]}, {p.hi[0], p.hi[1], p.hi[2]}, p.level + 1};
-        Box r{std::move(R), {p.lo[0], p.lo[1], p.lo[2]}, {p.hi[0], p.hi[1], p.hi[2]}, p.level + 1};
-        l.hi[d] = mid;
-        r.lo[d] = mid;
-        next.push_back(std::move(l));
-        // Planted (tests only): the children on the upper side of u are lost.
-        if (!(d == 0 && vrep_testing::is_planted(vrep_testing::Plant::regularity_drops_upper_u))) next.push_back(std::move(r));
-      }
-      parts = std::move(next);
-    }
-    for (auto& p : parts) todo.push_back(std::move(p));
-  }
+    if (vrep_testing::is_planted(vrep_testing::Plant::regularity_corners_only) && corner_lo == corner_hi && corner_lo == global)
+      return Examined::settled;
+    return Examined::split;
+  };
+  // Subdivide at the midpoints of all three directions: 8 children (planted, tests only: the
+  // children on the upper side of u are lost).
+  const bool keep_upper_u = !vrep_testing::is_planted(vrep_testing::Plant::regularity_drops_upper_u);
+  auto split = [&](Box&& b, int, auto&& emit) { vrep_detail::split_octants(std::move(b), emit, keep_upper_u); };
+  auto leave = [&](Box&& b, Left) {
+    if (undecided_at.empty()) undecided_at = {(b.lo[0] + b.hi[0]) / T(2), (b.lo[1] + b.hi[1]) / T(2), (b.lo[2] + b.hi[2]) / T(2)};
+  };
+  const Subdivision run =
+      subdivide(vrep_detail::jacobian_boxes(V, limits), Walk{Order::breadth_first, 8, false}, budget, examine, split, leave);
+  rep.boxes = run.examined;
+  rep.levels = run.deepest;
+  if (run.stop == Subdivision::Stop::refuted) return rep;
+  const bool undecided = run.left > 0, budget_hit = run.left_alive > 0;
+  const std::size_t box_budget = budget.max_alive;
   if (undecided) {
-    rep.verdict = Regularity::undecided;
     rep.point = undecided_at;
-    rep.reason = budget_hit ? "Bernstein coefficients of both signs when the boxes reached the memory budget (" +
+    rep.verdict = Verdict::undecided(budget_hit ? "Bernstein coefficients of both signs when the boxes reached the memory budget (" +
                                   std::to_string(box_budget) + " boxes; raise --max-control-points)"
-                            : "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels";
+                            : "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels");
     return rep;
   }
-  rep.verdict = Regularity::regular;
+  rep.verdict = Verdict::proved(global > 0 ? "det J > 0: every Bernstein coefficient positive" : "det J < 0: every Bernstein coefficient negative");
   rep.sign = vrep_testing::is_planted(vrep_testing::Plant::regularity_sign_flipped) ? -global : global;  // (planted: tests only)
-  rep.reason = global > 0 ? "det J > 0: every Bernstein coefficient positive" : "det J < 0: every Bernstein coefficient negative";
   return rep;
 }
 

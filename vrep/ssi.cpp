@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/hodograph.hpp"
 

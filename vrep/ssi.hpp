@@ -34,9 +34,9 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

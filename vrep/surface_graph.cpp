@@ -28,7 +28,7 @@
 #include <deque>
 #include <map>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/brackets.hpp"
 #include "vrep/curve_graph.hpp"
@@ -40,12 +40,11 @@ namespace splinex {
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// +1 / -1: every coefficient >= 0 / <= 0 (weakly monotone), 0: neither.
 template <class T>
-int weak_sign(const Bern<T>& b) {
+int weak_sign(const Bernstein<T>& b) {
   bool pos = true, neg = true;
   for (const auto& x : b.c) {
     pos = pos && !(x < T(0));
@@ -58,8 +57,8 @@ enum class Shape { empty, contractible, unknown };
 
 /// {s f >= 0} on [0, 1] (f univariate).
 template <class T>
-Shape shape1(const Bern<T>& f, int s) {
-  const int st = detail::bern_sign(f) * s;
+Shape shape1(const Bernstein<T>& f, int s) {
+  const int st = bern_sign(f) * s;
   if (st > 0) return Shape::contractible;
   if (st < 0) return Shape::empty;
   if (f.c.front() == T(0) || f.c.back() == T(0)) return Shape::unknown;
@@ -84,20 +83,20 @@ Region<T> one_leaf() {
 
 /// {s h >= 0} on [0, 1]^2.
 template <class T>
-Shape shape2(const Bern<T>& h, int s, std::size_t budget) {
-  const int st = detail::bern_sign(h) * s;
+Shape shape2(const Bernstein<T>& h, int s, std::size_t budget) {
+  const int st = bern_sign(h) * s;
   if (st > 0) return Shape::contractible;
   if (st < 0) return Shape::empty;
   for (int d = 0; d < 2; ++d) {
-    const int w = weak_sign(detail::bern_derivative(h, d)) * s;
-    if (w != 0) return shape1(detail::bern_face(h, d, w > 0 ? 1 : 0), s);
+    const int w = weak_sign(bern_derivative(h, d)) * s;
+    if (w != 0) return shape1(bern_face(h, d, w > 0 ? 1 : 0), s);
   }
   // One closed loop with the set inside: s h < 0 on the whole boundary, {s h > 0} and {s h < 0}
   // one piece each (count_region).
   for (int d = 0; d < 2; ++d)
     for (int side = 0; side < 2; ++side) {
-      const Bern<T> e = detail::bern_face(h, d, side);
-      if (s * detail::bern_sign(e) < 0) continue;
+      const Bernstein<T> e = bern_face(h, d, side);
+      if (s * bern_sign(e) < 0) continue;
       if (e.c.front() == T(0) || e.c.back() == T(0) || sign_of(e.c.front()) * s > 0) return Shape::unknown;
       std::vector<std::pair<T, T>> roots;
       if (!isolate(e, T(0), T(1), 48, roots) || !roots.empty()) return Shape::unknown;
@@ -109,7 +108,7 @@ Shape shape2(const Bern<T>& h, int s, std::size_t budget) {
   p.options.max_total_boxes = 3 * budget;
   p.dom_lo = {T(0), T(0)};
   p.dom_hi = {T(1), T(1)};
-  Bern<T> in = h;
+  Bernstein<T> in = h;
   if (s < 0)
     for (auto& c : in.c) c = -c;
   p.pieces.push_back({{in}, p.dom_lo, p.dom_hi});
@@ -123,13 +122,13 @@ Shape shape2(const Bern<T>& h, int s, std::size_t budget) {
 
 /// {s g >= 0} on the box [0, 1]^3.
 template <class T>
-Shape shape3(const Bern<T>& g, int s, std::size_t budget) {
-  const int st = detail::bern_sign(g) * s;
+Shape shape3(const Bernstein<T>& g, int s, std::size_t budget) {
+  const int st = bern_sign(g) * s;
   if (st > 0) return Shape::contractible;
   if (st < 0) return Shape::empty;
   for (int d = 0; d < 3; ++d) {
-    const int w = weak_sign(detail::bern_derivative(g, d)) * s;
-    if (w != 0) return shape2(detail::bern_face(g, d, w > 0 ? 1 : 0), s, budget);
+    const int w = weak_sign(bern_derivative(g, d)) * s;
+    if (w != 0) return shape2(bern_face(g, d, w > 0 ? 1 : 0), s, budget);
   }
   return Shape::unknown;
 }
@@ -144,12 +143,12 @@ struct Trace {
 };
 
 template <class T>
-bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_depth, std::size_t& budget, Trace& out) {
+bool trace(const Bernstein<T>& h0, const std::vector<Bernstein<T>>& tracked0, int max_depth, std::size_t& budget, Trace& out) {
   const std::size_t nt = tracked0.size();
   out.crossings.assign(nt, 0);
   struct Q {
-    Bern<T> h;
-    std::vector<Bern<T>> o;
+    Bernstein<T> h;
+    std::vector<Bernstein<T>> o;
     int depth;
   };
   std::vector<Q> stack{{h0, tracked0, 0}};
@@ -157,7 +156,7 @@ bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_dept
   while (!stack.empty()) {
     Q q = std::move(stack.back());
     stack.pop_back();
-    if (detail::bern_sign(q.h) != 0) continue;
+    if (bern_sign(q.h) != 0) continue;
     if (all_zero(q.h)) {
       out.why = "a trimming surface contains a split plane or a face of the domain";
       return false;
@@ -167,12 +166,12 @@ bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_dept
       --budget;
       const int dir = q.depth % 2;
       Q c[2];
-      std::tie(c[0].h, c[1].h) = detail::bern_split(q.h, dir, half);
+      std::tie(c[0].h, c[1].h) = bern_split(q.h, dir, half);
       for (auto& x : c) {
         x.o.resize(nt);
         x.depth = q.depth + 1;
       }
-      for (std::size_t l = 0; l < nt; ++l) std::tie(c[0].o[l], c[1].o[l]) = detail::bern_split(q.o[l], dir, half);
+      for (std::size_t l = 0; l < nt; ++l) std::tie(c[0].o[l], c[1].o[l]) = bern_split(q.o[l], dir, half);
       stack.push_back(std::move(c[0]));
       stack.push_back(std::move(c[1]));
       return true;
@@ -186,14 +185,14 @@ bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_dept
     std::size_t mixed = nt;
     int nmixed = 0;
     for (std::size_t l = 0; l < nt; ++l) {
-      sign[l] = detail::bern_sign(q.o[l]);
+      sign[l] = bern_sign(q.o[l]);
       if (sign[l] == 0) mixed = l, ++nmixed;
     }
     bool ok = nmixed <= 1;
     const std::size_t n0 = static_cast<std::size_t>(q.h.deg[0]), n1 = static_cast<std::size_t>(q.h.deg[1]);
     for (std::size_t c0 = 0; c0 < 2 && ok; ++c0)
       for (std::size_t c1 = 0; c1 < 2 && ok; ++c1) ok = !(q.h.c[c0 * n0 + c1 * n1 * (n0 + 1)] == T(0));
-    ok = ok && (detail::bern_sign(detail::bern_derivative(q.h, 0)) != 0 || detail::bern_sign(detail::bern_derivative(q.h, 1)) != 0);
+    ok = ok && (bern_sign(bern_derivative(q.h, 0)) != 0 || bern_sign(bern_derivative(q.h, 1)) != 0);
     // The trace's ends on the rectangle's boundary: exactly two (one arc), or none (no trace).
     struct End {
       Root<T> r;
@@ -202,17 +201,17 @@ bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_dept
     std::vector<End> ends;
     for (int d = 0; d < 2 && ok; ++d)
       for (int side = 0; side < 2 && ok; ++side) {
-        const Bern<T> e = detail::bern_face(q.h, d, side);
+        const Bernstein<T> e = bern_face(q.h, d, side);
         std::vector<std::pair<T, T>> iso;
         ok = isolate(e, T(0), T(1), 48, iso);
         for (const auto& [a, b] : iso) ends.push_back({Root<T>{0, e, T(0), T(1), a, b}, d, side});
       }
     ok = ok && (ends.size() == 2 || ends.empty());
     if (ok && nmixed == 1) {
-      const Bern<T>& o = q.o[mixed];
-      const Bern<T> det = detail::bern_sub(detail::bern_product(detail::bern_derivative(q.h, 0), detail::bern_derivative(o, 1)),
-                                           detail::bern_product(detail::bern_derivative(q.h, 1), detail::bern_derivative(o, 0)));
-      ok = detail::bern_sign(det) != 0;
+      const Bernstein<T>& o = q.o[mixed];
+      const Bernstein<T> det = bern_sub(bern_product(bern_derivative(q.h, 0), bern_derivative(o, 1)),
+                                           bern_product(bern_derivative(q.h, 1), bern_derivative(o, 0)));
+      ok = bern_sign(det) != 0;
     }
     if (!ok) {
       if (!split()) return fail();
@@ -226,14 +225,14 @@ bool trace(const Bern<T>& h0, const std::vector<Bern<T>>& tracked0, int max_dept
       for (std::size_t l = 0; l < nt; ++l) {
         int sg = sign[l];
         if (l == mixed) {
-          const Bern<T> oe = detail::bern_face(q.o[l], ends[k].d, ends[k].side);
+          const Bernstein<T> oe = bern_face(q.o[l], ends[k].d, ends[k].side);
           Root<T>& r = ends[k].r;
           for (int it = 0; it < 64 && sg == 0; ++it) {
             if (r.exact()) {
-              sg = sign_of(detail::bern_value(oe, {r.lo}));
+              sg = sign_of(bern_value(oe, {r.lo}));
               break;
             }
-            sg = detail::bern_sign(detail::bern_restrict(oe, 0, r.lo, r.hi));
+            sg = bern_sign(bern_restrict(oe, 0, r.lo, r.hi));
             if (sg == 0) r.cut((r.lo + r.hi) / 2);
           }
           if (sg == 0) ok = false;
@@ -260,7 +259,7 @@ struct Piece3 {
   std::array<int, 4> piece_of{-1, -1, -1, -1};  // per pattern of `rel`
   int pieces = 0;
   std::size_t first = 0;
-  std::vector<Bern<T>> G;
+  std::vector<Bernstein<T>> G;
 };
 
 template <class T>
@@ -271,48 +270,36 @@ class SurfaceRun {
   bool run(RegionCount& out) {
     struct Open {
       std::array<T, 3> lo, hi;
-      std::vector<Bern<T>> G;
+      std::vector<Bernstein<T>> G;
       int level = 0;
     };
-    std::deque<Open> todo;
+    std::vector<Open> roots;
     for (const auto& pc : P.pieces)
-      if (detail::bern_sign(pc.G[k_]) == 0) todo.push_back({pc.lo, pc.hi, pc.G, 0});
-    std::size_t boxes = 0;
+      if (bern_sign(pc.G[k_]) == 0) roots.push_back({pc.lo, pc.hi, pc.G, 0});
     budget_ = 40 * P.options.max_boxes;
-    while (!todo.empty()) {
-      if (++boxes > P.options.max_boxes) {
-        out.boxes = boxes;
-        out.undecided_reason = "the box budget (" + std::to_string(P.options.max_boxes) + ") is spent";
-        return false;
-      }
-      Open B = std::move(todo.front());
-      todo.pop_front();
+    std::string hard;
+    auto examine_box = [&](Open& B, int) {
       Piece3<T> r;
       r.lo = B.lo;
       r.hi = B.hi;
       r.G = B.G;
-      std::string hard;
+      hard.clear();
       const int v = examine(r, hard);
-      if (v < 0) {
-        out.boxes = boxes;
-        out.undecided_reason = hard;
-        return false;
-      }
-      if (v == 1) {
-        if (r.pieces > 0) done_.push_back(std::move(r));
-        continue;
-      }
-      if (B.level >= P.options.max_level) {
-        out.boxes = boxes;
-        out.undecided_reason = hard.empty() ? "a box at the deepest level is still open (the surface is singular, or tangent to a split plane, or more than three surfaces meet)" : hard;
-        return false;
-      }
+      if (v < 0) return Examined::left;
+      if (v == 0) return Examined::split;
+      if (r.pieces > 0) done_.push_back(std::move(r));
+      return Examined::settled;
+    };
+    auto split = [&](Open&& B, int, auto&& emit) {
       Open c[2];
       split_box(B, widest(B.lo, B.hi), frac_, c);
       for (auto& h : c)
-        if (detail::bern_sign(h.G[k_]) == 0) todo.push_back(std::move(h));
-    }
-    out.boxes = boxes;
+        if (bern_sign(h.G[k_]) == 0) emit(std::move(h));
+    };
+    const Subdivision run =
+        subdivide(std::move(roots), Walk{Order::breadth_first, 2, true}, attempt_budget(P.options), examine_box, split, [](Open&&, Left) {});
+    const std::string deepest = hard.empty() ? "a box at the deepest level is still open (the surface is singular, or tangent to a split plane, or more than three surfaces meet)" : hard;
+    if (!count_run(run, P.options, deepest, out)) return false;
     return graph(out);
   }
 
@@ -348,7 +335,7 @@ class SurfaceRun {
     r.sign.assign(nl_, 0);
     std::vector<std::size_t> mixed;
     for (std::size_t l = 0; l < nl_; ++l) {
-      r.sign[l] = detail::bern_sign(G[l]);
+      r.sign[l] = bern_sign(G[l]);
       if (l != k_ && r.sign[l] == 0) mixed.push_back(l);
     }
     if (mixed.size() > 6) return 0;
@@ -376,41 +363,41 @@ class SurfaceRun {
     if ((a != Shape::contractible || b != Shape::contractible) && !vrep_testing::is_planted(vrep_testing::Plant::surface_shape_unchecked)) return 0;
     // The curves C_l: monotone (a strict component of grad g_k x grad g_l); two leaves: a strict
     // triple product.
-    std::array<Bern<T>, 3> dk;
-    for (int d = 0; d < 3; ++d) dk[static_cast<std::size_t>(d)] = detail::bern_derivative(G[k_], d);
-    std::vector<std::array<Bern<T>, 3>> dl;
+    std::array<Bernstein<T>, 3> dk;
+    for (int d = 0; d < 3; ++d) dk[static_cast<std::size_t>(d)] = bern_derivative(G[k_], d);
+    std::vector<std::array<Bernstein<T>, 3>> dl;
     for (std::size_t l : r.rel) {
-      std::array<Bern<T>, 3> x;
-      for (int d = 0; d < 3; ++d) x[static_cast<std::size_t>(d)] = detail::bern_derivative(G[l], d);
+      std::array<Bernstein<T>, 3> x;
+      for (int d = 0; d < 3; ++d) x[static_cast<std::size_t>(d)] = bern_derivative(G[l], d);
       dl.push_back(x);
       bool mono = false;
       for (int d = 0; d < 3 && !mono; ++d) {
         const std::size_t a1 = static_cast<std::size_t>((d + 1) % 3), a2 = static_cast<std::size_t>((d + 2) % 3);
-        mono = detail::bern_sign(sum(detail::bern_product(dk[a1], x[a2]), detail::bern_product(dk[a2], x[a1]), true)) != 0;
+        mono = bern_sign(sum(bern_product(dk[a1], x[a2]), bern_product(dk[a2], x[a1]), true)) != 0;
       }
       if (!mono) return 0;
     }
     if (r.rel.size() == 2) {
-      Bern<T> det;
+      Bernstein<T> det;
       bool first = true;
       for (int d = 0; d < 3; ++d) {
         const std::size_t a1 = static_cast<std::size_t>((d + 1) % 3), a2 = static_cast<std::size_t>((d + 2) % 3);
-        const Bern<T> cross = sum(detail::bern_product(dk[a1], dl[0][a2]), detail::bern_product(dk[a2], dl[0][a1]), true);
-        const Bern<T> term = detail::bern_product(cross, dl[1][static_cast<std::size_t>(d)]);
+        const Bernstein<T> cross = sum(bern_product(dk[a1], dl[0][a2]), bern_product(dk[a2], dl[0][a1]), true);
+        const Bernstein<T> term = bern_product(cross, dl[1][static_cast<std::size_t>(d)]);
         det = first ? term : sum(det, term, false);
         first = false;
       }
-      if (detail::bern_sign(det) == 0) return 0;
+      if (bern_sign(det) == 0) return 0;
     }
     // The traces on the six faces: patterns present and crossings of each C_l.
     unsigned present = 0;
     std::vector<std::size_t> cross(r.rel.size(), 0);
     for (int d = 0; d < 3; ++d)
       for (int s = 0; s < 2; ++s) {
-        std::vector<Bern<T>> o;
-        for (std::size_t l : r.rel) o.push_back(detail::bern_face(G[l], d, s));
+        std::vector<Bernstein<T>> o;
+        for (std::size_t l : r.rel) o.push_back(bern_face(G[l], d, s));
         Trace tr;
-        if (!trace(detail::bern_face(G[k_], d, s), o, 24, budget_, tr)) {
+        if (!trace(bern_face(G[k_], d, s), o, 24, budget_, tr)) {
           if (budget_ == 0) {
             hard = "the budget of face subdivisions is spent";
             return -1;
@@ -470,7 +457,7 @@ class SurfaceRun {
     return 1;
   }
 
-  static Bern<T> sum(const Bern<T>& a, const Bern<T>& b, bool minus) { return detail::bern_combine(a, b, minus); }
+  static Bernstein<T> sum(const Bernstein<T>& a, const Bernstein<T>& b, bool minus) { return bern_combine(a, b, minus); }
 
   bool graph(RegionCount& out) {
     std::vector<std::array<T, 3>> lo, hi;
@@ -506,11 +493,11 @@ class SurfaceRun {
         for (int s = 0; s < 2; ++s) {
           const std::size_t D = static_cast<std::size_t>(d);
           if (!P.identified[D][static_cast<std::size_t>(s)] || !(s ? r.hi[D] == P.dom_hi[D] : r.lo[D] == P.dom_lo[D])) continue;
-          std::vector<Bern<T>> o;
-          for (std::size_t l : r.rel) o.push_back(detail::bern_face(r.G[l], d, s));
+          std::vector<Bernstein<T>> o;
+          for (std::size_t l : r.rel) o.push_back(bern_face(r.G[l], d, s));
           Trace tr;
           std::size_t budget = 4096;
-          if (!trace(detail::bern_face(r.G[k_], d, s), o, 24, budget, tr)) {
+          if (!trace(bern_face(r.G[k_], d, s), o, 24, budget, tr)) {
             for (int p = 0; p < r.pieces; ++p) on_id[uf.find(r.first + static_cast<std::size_t>(p))] = 1;  // conservative
             continue;
           }
@@ -530,19 +517,19 @@ class SurfaceRun {
     std::vector<std::size_t> tracked = a.rel;
     for (std::size_t l : b.rel)
       if (std::find(tracked.begin(), tracked.end(), l) == tracked.end()) tracked.push_back(l);
-    auto on_E = [&](const Bern<T>& G3) {
-      Bern<T> f = detail::bern_face(G3, d, 1);  // a's upper face
+    auto on_E = [&](const Bernstein<T>& G3) {
+      Bernstein<T> f = bern_face(G3, d, 1);  // a's upper face
       int j = 0;
       for (int e = 0; e < 3; ++e) {
         if (e == d) continue;
         const std::size_t E = static_cast<std::size_t>(e), J = static_cast<std::size_t>(j);
         const T w = a.hi[E] - a.lo[E];
-        f = detail::bern_restrict(f, j, T((e0[J] - a.lo[E]) / w), T((e1[J] - a.lo[E]) / w));
+        f = bern_restrict(f, j, T((e0[J] - a.lo[E]) / w), T((e1[J] - a.lo[E]) / w));
         ++j;
       }
       return f;
     };
-    std::vector<Bern<T>> o;
+    std::vector<Bernstein<T>> o;
     for (std::size_t l : tracked) o.push_back(on_E(a.G[l]));
     Trace tr;
     if (!trace(on_E(a.G[k_]), o, 24, budget_, tr)) {

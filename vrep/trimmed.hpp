@@ -47,9 +47,9 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/vmodel.hpp"
 

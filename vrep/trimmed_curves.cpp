@@ -5,9 +5,9 @@
 #include <deque>
 #include <map>
 
+#include "base/errors.hpp"
 #include "solve/solver.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/curve_graph.hpp"
 #include "vrep/trimmed.hpp"
@@ -18,8 +18,8 @@ namespace splinex {
 namespace vrep_detail {
 
 template <class T>
-detail::Bern<T> divide_facet(const detail::Bern<T>& G, int d, int side) {
-  detail::Bern<T> H;
+Bernstein<T> divide_facet(const Bernstein<T>& G, int d, int side) {
+  Bernstein<T> H;
   H.deg = G.deg;
   const int p = G.deg[static_cast<std::size_t>(d)];
   H.deg[static_cast<std::size_t>(d)] = p - 1;
@@ -58,7 +58,7 @@ CurveProblem<T, 3> cell_problem(const BSpline<T>& V, const Region<T>& trim, cons
       for (int d = 0; d < 3; ++d)
         for (int s = 0; s < 2; ++s)
           while ((s ? piece.hi[d] == V.domain_hi(d) : piece.lo[d] == V.domain_lo(d)) && G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) &&
-                 all_zero(detail::bern_face(G, d, s)))
+                 all_zero(bern_face(G, d, s)))
             G = divide_facet(G, d, s);
     problem.pieces.push_back(std::move(piece));
   }
@@ -90,18 +90,17 @@ template CurveProblem<double, 3> cell_problem(const BSpline<double>&, const Regi
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// a + b or a - b at their common degrees.
 template <class T>
-Bern<T> sum(const Bern<T>& a, const Bern<T>& b, bool minus) {
-  return detail::bern_combine(a, b, minus);
+Bernstein<T> sum(const Bernstein<T>& a, const Bernstein<T>& b, bool minus) {
+  return bern_combine(a, b, minus);
 }
 
 template <class T>
-Truth strict(const Bern<T>& b) {
-  const int s = detail::bern_sign(b);
+Truth strict(const Bernstein<T>& b) {
+  const int s = bern_sign(b);
   return s > 0 ? Truth::in : s < 0 ? Truth::out : Truth::mixed;
 }
 
@@ -109,21 +108,21 @@ Truth strict(const Bern<T>& b) {
 /// N = 3 grad f_0 x grad f_1, N = 2 (d f / d t_1, -d f / d t_0). In the box's unit coordinates each
 /// component is a positive multiple of the true one, so its signs are the true ones.
 template <class T, std::size_t N>
-std::array<Bern<T>, N> tangent(const std::vector<Bern<T>>& f) {
-  std::array<Bern<T>, N> X;
+std::array<Bernstein<T>, N> tangent(const std::vector<Bernstein<T>>& f) {
+  std::array<Bernstein<T>, N> X;
   if constexpr (N == 2) {
-    X[0] = detail::bern_derivative(f[0], 1);
-    X[1] = detail::bern_derivative(f[0], 0);
+    X[0] = bern_derivative(f[0], 1);
+    X[1] = bern_derivative(f[0], 0);
     for (auto& c : X[1].c) c = -c;
   } else {
-    std::array<Bern<T>, 3> df, dg;
+    std::array<Bernstein<T>, 3> df, dg;
     for (int d = 0; d < 3; ++d) {
-      df[d] = detail::bern_derivative(f[0], d);
-      dg[d] = detail::bern_derivative(f[1], d);
+      df[d] = bern_derivative(f[0], d);
+      dg[d] = bern_derivative(f[1], d);
     }
     for (int d = 0; d < 3; ++d) {
       const int a = (d + 1) % 3, b = (d + 2) % 3;
-      X[d] = sum(detail::bern_product(df[a], dg[b]), detail::bern_product(df[b], dg[a]), true);
+      X[d] = sum(bern_product(df[a], dg[b]), bern_product(df[b], dg[a]), true);
     }
   }
   return X;
@@ -140,8 +139,8 @@ template <class T, std::size_t N>
 struct Box {
   std::array<T, N> lo, hi;
   std::size_t piece = 0;
-  std::vector<Bern<T>> G;    // every leaf
-  std::array<Bern<T>, N> X;  // the curve's tangent, split with the box from its piece
+  std::vector<Bernstein<T>> G;    // every leaf
+  std::array<Bernstein<T>, N> X;  // the curve's tangent, split with the box from its piece
   int level = 0;
 };
 
@@ -165,7 +164,7 @@ struct Arc {
   bool active[2] = {false, false};
 };
 
-enum class Verdict { none, arc, split, fail };
+enum class ArcStep { none, arc, split, fail };
 
 const char* const kOnDomainFace = "a trimming surface contains a face of the domain";
 const char* const kTangent = "the curve is tangent to a split plane or a face of the domain, or lies in one";
@@ -184,55 +183,44 @@ class CurveRun {
 
   /// One attempt; false (reason set) when it does not decide.
   bool run(CurveCount& out) {
-    std::deque<Box<T, N>> todo;
+    std::vector<Box<T, N>> todo;
     for (std::size_t p = 0; p < P.pieces.size(); ++p) {
       bool meet = true;
-      for (std::size_t c : P.curve) meet = meet && detail::bern_sign(P.pieces[p].G[c]) == 0;
+      for (std::size_t c : P.curve) meet = meet && bern_sign(P.pieces[p].G[c]) == 0;
       if (!meet) continue;
       Box<T, N> b;
       b.lo = P.pieces[p].lo;
       b.hi = P.pieces[p].hi;
       b.piece = p;
       b.G = P.pieces[p].G;
-      std::vector<Bern<T>> f;
+      std::vector<Bernstein<T>> f;
       for (std::size_t c : P.curve) f.push_back(b.G[c]);
       b.X = tangent<T, N>(f);
       todo.push_back(std::move(b));
     }
     std::vector<Arc<T, N>> arcs;
-    std::size_t boxes = 0;
-    while (!todo.empty()) {
-      if (++boxes > P.options.max_boxes) {
-        out.boxes = boxes;
-        out.undecided_reason = "the box budget (" + std::to_string(P.options.max_boxes) + ") is spent";
-        return false;
-      }
-      Box<T, N> B = std::move(todo.front());
-      todo.pop_front();
+    std::string hard;
+    auto examine_box = [&](Box<T, N>& B, int) {
       Arc<T, N> arc;
-      std::string hard;
-      const Verdict v = examine(B, arc, hard);
-      if (v == Verdict::fail) {
-        out.boxes = boxes;
-        out.undecided_reason = hard;
-        return false;
-      }
-      if (v == Verdict::arc) arcs.push_back(std::move(arc));
-      if (v != Verdict::split) continue;
-      if (B.level >= P.options.max_level) {
-        out.boxes = boxes;
-        out.undecided_reason = "a box at the deepest level is still open (a singular or tangential point of the curve)";
-        return false;
-      }
+      hard.clear();
+      const ArcStep v = examine(B, arc, hard);
+      if (v == ArcStep::arc) arcs.push_back(std::move(arc));
+      return v == ArcStep::fail ? Examined::left : v == ArcStep::split ? Examined::split : Examined::settled;
+    };
+    auto split = [&](Box<T, N>&& B, int, auto&& emit) {
       const int dir = widest(B.lo, B.hi);
       Box<T, N> c[2];
       split_box(B, dir, frac_, c);
       for (auto& h : c) h.piece = B.piece;
-      for (std::size_t d = 0; d < N; ++d) std::tie(c[0].X[d], c[1].X[d]) = detail::bern_split(B.X[d], dir, frac_);
-      todo.push_back(std::move(c[0]));
-      todo.push_back(std::move(c[1]));
-    }
-    out.boxes = boxes;
+      for (std::size_t d = 0; d < N; ++d) std::tie(c[0].X[d], c[1].X[d]) = bern_split(B.X[d], dir, frac_);
+      emit(std::move(c[0]));
+      emit(std::move(c[1]));
+    };
+    Left why = Left::examined;
+    auto leave = [&](Box<T, N>&&, Left w) { why = w; };
+    const Subdivision run = subdivide(std::move(todo), Walk{Order::breadth_first, 2, true}, attempt_budget(P.options), examine_box, split, leave);
+    if (!count_run(run, P.options, why == Left::depth ? "a box at the deepest level is still open (a singular or tangential point of the curve)" : hard, out))
+      return false;
     return graph(arcs, out);
   }
 
@@ -253,10 +241,10 @@ class CurveRun {
   /// The crossings of the curve with facet (d, s) of box B; false when they are not all certified
   /// simple roots strictly inside the facet (`hard`: splitting cannot help).
   bool facet_crossings(const Box<T, N>& B, long k, int d, int s, std::vector<Crossing<T, N>>& found, std::string& hard) {
-    std::vector<Bern<T>> H;
+    std::vector<Bernstein<T>> H;
     for (std::size_t c : P.curve) {
-      H.push_back(detail::bern_face(B.G[c], d, s));
-      if (detail::bern_sign(H.back()) != 0) return true;
+      H.push_back(bern_face(B.G[c], d, s));
+      if (bern_sign(H.back()) != 0) return true;
     }
     const bool on_domain = s ? B.hi[d] == P.dom_hi[d] : B.lo[d] == P.dom_lo[d];
     for (const auto& h : H)
@@ -292,7 +280,7 @@ class CurveRun {
         // A simple root: the Jacobian is regular at it (exact determinant).
         std::vector<std::vector<T>> J(M, std::vector<T>(M));
         for (std::size_t a = 0; a < M; ++a)
-          for (std::size_t b = 0; b < M; ++b) J[a][b] = detail::bern_value(detail::bern_derivative(H[a], static_cast<int>(b)), u);
+          for (std::size_t b = 0; b < M; ++b) J[a][b] = bern_value(bern_derivative(H[a], static_cast<int>(b)), u);
         if (small_det(J) == T(0)) {
           hard = kTangent;
           return false;
@@ -315,12 +303,12 @@ class CurveRun {
       c.domain = on_domain;
       c.identified = on_domain && P.identified[static_cast<std::size_t>(d)][static_cast<std::size_t>(s)];
       if (k >= 0) {
-        Bern<T> h = detail::bern_face(B.G[static_cast<std::size_t>(k)], d, s);
-        if (root.exact) c.k_sign = value_truth(detail::bern_value(h, u), T(0));
+        Bernstein<T> h = bern_face(B.G[static_cast<std::size_t>(k)], d, s);
+        if (root.exact) c.k_sign = value_truth(bern_value(h, u), T(0));
         else {
           for (std::size_t q = 0; q < M; ++q) {
             const T from = (c.lo[q] - lo[q]) / (hi[q] - lo[q]), to = (c.hi[q] - lo[q]) / (hi[q] - lo[q]);
-            h = detail::bern_restrict(h, static_cast<int>(q), from, to);
+            h = bern_restrict(h, static_cast<int>(q), from, to);
           }
           c.k_sign = strict(h);
         }
@@ -335,9 +323,9 @@ class CurveRun {
   }
 
   /// One box: no curve that matters, one arc, split it, or give up.
-  Verdict examine(const Box<T, N>& B, Arc<T, N>& arc, std::string& hard) {
+  ArcStep examine(const Box<T, N>& B, Arc<T, N>& arc, std::string& hard) {
     for (std::size_t c : P.curve)
-      if (detail::bern_sign(B.G[c]) != 0) return Verdict::none;
+      if (bern_sign(B.G[c]) != 0) return ArcStep::none;
     std::vector<Truth> fixed(nl_, Truth::mixed);
     std::vector<std::size_t> open;  // other leaves without one strict sign
     for (std::size_t l = 0; l < nl_; ++l) {
@@ -355,17 +343,17 @@ class CurveRun {
       for (std::size_t q = 0; q < open.size(); ++q) f[open[q]] = (pattern >> q) & 1 ? Truth::in : Truth::out;
       matters = depends_on_each(*P.trim, f, P.curve);
     }
-    if (!matters) return Verdict::none;
+    if (!matters) return ArcStep::none;
     bool monotone = false, flat = true;
     for (std::size_t d = 0; d < N; ++d) {
-      monotone = monotone || detail::bern_sign(B.X[d]) != 0;
+      monotone = monotone || bern_sign(B.X[d]) != 0;
       flat = flat && all_zero(B.X[d]);
     }
     if (flat && B.level >= 6) {
       hard = kCoincide;
-      return Verdict::fail;
+      return ArcStep::fail;
     }
-    if (!monotone || open.size() >= 2) return Verdict::split;
+    if (!monotone || open.size() >= 2) return ArcStep::split;
     const long k = open.empty() ? -1 : static_cast<long>(open.front());
     if (k >= 0) {
       // det(grad f..., grad g_k) on the box: the derivatives of g_k in the box's unit coordinates,
@@ -373,29 +361,29 @@ class CurveRun {
       const auto& piece = P.pieces[B.piece];
       std::array<T, N> r;
       for (std::size_t d = 0; d < N; ++d) r[d] = (B.hi[d] - B.lo[d]) / (piece.hi[d] - piece.lo[d]);
-      Bern<T> D;
+      Bernstein<T> D;
       for (std::size_t d = 0; d < N; ++d) {
-        Bern<T> t = detail::bern_product(detail::bern_derivative(B.G[static_cast<std::size_t>(k)], static_cast<int>(d)), B.X[d]);
+        Bernstein<T> t = bern_product(bern_derivative(B.G[static_cast<std::size_t>(k)], static_cast<int>(d)), B.X[d]);
         T scale(1);
         for (std::size_t e = 0; e < N; ++e)
           if (e != d) scale *= r[e];
         for (auto& x : t.c) x *= scale;
         D = d == 0 ? t : sum(D, t, false);
       }
-      if (detail::bern_sign(D) == 0) return Verdict::split;
+      if (bern_sign(D) == 0) return ArcStep::split;
     }
     std::vector<Crossing<T, N>> found;
     for (int d = 0; d < static_cast<int>(N); ++d)
       for (int s = 0; s < 2; ++s)
-        if (!facet_crossings(B, k, d, s, found, hard)) return hard.empty() ? Verdict::split : Verdict::fail;
-    if (found.empty()) return Verdict::none;
-    if (found.size() != 2) return Verdict::split;
+        if (!facet_crossings(B, k, d, s, found, hard)) return hard.empty() ? ArcStep::split : ArcStep::fail;
+    if (found.empty()) return ArcStep::none;
+    if (found.size() != 2) return ArcStep::split;
     arc = Arc<T, N>{};
     arc.x[0] = found[0];
     arc.x[1] = found[1];
     if (k < 0) {
       arc.active[0] = depends_on_each(*P.trim, fixed, P.curve);
-      return Verdict::arc;
+      return ArcStep::arc;
     }
     auto f0 = fixed, f1 = fixed;
     f0[static_cast<std::size_t>(k)] = found[0].k_sign;
@@ -406,7 +394,7 @@ class CurveRun {
       arc.active[1] = depends_on_each(*P.trim, f1, P.curve);
       arc.vpoint = depends_on_each(*P.trim, fixed, with(static_cast<std::size_t>(k)));
     }
-    return Verdict::arc;
+    return ArcStep::arc;
   }
 
   /// The graph: crossings are nodes (matched across the facets boxes share), arcs are edges; its
@@ -536,8 +524,8 @@ CurveCount count_curve(const CurveProblem<T, N>& problem) {
   return out;
 }
 
-template detail::Bern<Rational> divide_facet(const detail::Bern<Rational>&, int, int);
-template detail::Bern<double> divide_facet(const detail::Bern<double>&, int, int);
+template Bernstein<Rational> divide_facet(const Bernstein<Rational>&, int, int);
+template Bernstein<double> divide_facet(const Bernstein<double>&, int, int);
 template CurveCount count_curve(const CurveProblem<Rational, 2>&);
 template CurveCount count_curve(const CurveProblem<Rational, 3>&);
 template CurveCount count_curve(const CurveProblem<double, 2>&);
@@ -557,7 +545,7 @@ TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, cons
   for (std::size_t i = 0; i < nl; ++i)
     for (std::size_t j = i + 1; j < nl; ++j) {
       bool meet = false;
-      for (const auto& p : problem.pieces) meet = meet || (detail::bern_sign(p.G[i]) == 0 && detail::bern_sign(p.G[j]) == 0);
+      for (const auto& p : problem.pieces) meet = meet || (bern_sign(p.G[i]) == 0 && bern_sign(p.G[j]) == 0);
       if (!meet) continue;
       problem.curve = {i, j};
       CurveCount c;

@@ -25,8 +25,8 @@
 #include <array>
 #include <functional>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/planted.hpp"
@@ -39,7 +39,6 @@ namespace splinex {
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// The formula in negation normal form: atoms "leaf >= 0" (sign +1) or "leaf <= 0" (sign -1), read
@@ -106,7 +105,7 @@ struct Signs {
 };
 
 template <class T>
-Signs signs_of(const Bern<T>& G) {
+Signs signs_of(const Bernstein<T>& G) {
   Signs s;
   for (const auto& x : G.c) {
     const bool p = T(0) < x, n = x < T(0);
@@ -182,7 +181,7 @@ bool sense_of(const Nnf& n, const std::vector<Signs>& s, bool strict, const std:
 /// +1: all coefficients >= 0 and one > 0 (strictly increasing on every line of the open cell); -1
 /// the mirror; 0: all zero; 2: otherwise.
 template <class T>
-int monotone(const Bern<T>& D) {
+int monotone(const Bernstein<T>& D) {
   const Signs s = signs_of(D);
   if (s.nonneg && s.nonpos) return 0;
   return s.nonneg ? 1 : s.nonpos ? -1 : 2;
@@ -201,14 +200,14 @@ double approx(const T& x) {
 /// G(p + sum a_i n_i) = sum a_i dG_i(p) + O(|a|^2) has that sign for small a_i >= 0, not all 0.
 /// 0 when the rule does not apply.
 template <class T>
-int inward_sign(const Bern<T>& G, const std::array<int, 3>& state, const std::vector<std::pair<int, int>>& boundary) {
+int inward_sign(const Bernstein<T>& G, const std::array<int, 3>& state, const std::vector<std::pair<int, int>>& boundary) {
   int sign = 0;
   for (const auto& [d, side] : boundary) {
-    const Bern<T> D = detail::bern_derivative(G, d);
+    const Bernstein<T> D = bern_derivative(G, d);
     if (all_zero(D)) continue;
-    Bern<T> on = D;
+    Bernstein<T> on = D;
     for (int e = 2; e >= 0; --e)
-      if (state[e] != 0) on = detail::bern_face(on, e, state[e] == 2 ? 1 : 0);
+      if (state[e] != 0) on = bern_face(on, e, state[e] == 2 ? 1 : 0);
     const Signs s = signs_of(on);
     const int here = s.pos ? 1 : s.neg ? -1 : 0;
     if (here == 0) return 0;
@@ -225,10 +224,10 @@ class EulerRun {
   EulerRun(const Nnf& f, std::size_t leaves, std::size_t max_cells, int max_level, T split)
       : f_(f), leaves_(leaves), max_cells_(max_cells), max_level_(max_level), split_(std::move(split)) {}
 
-  /// chi_c of the formula's set on an open cell: G[l] the leaves on it (Bern over [0, 1]^d), dirs
+  /// chi_c of the formula's set on an open cell: G[l] the leaves on it (Bernstein over [0, 1]^d), dirs
   /// the V directions of its free directions in order, lo/hi its parameter box in V, level the
   /// halvings per V direction so far.
-  long chi(std::vector<Bern<T>> G, std::vector<int> dirs, std::array<T, 3> lo, std::array<T, 3> hi, std::array<int, 3> level, bool strict) {
+  long chi(std::vector<Bernstein<T>> G, std::vector<int> dirs, std::array<T, 3> lo, std::array<T, 3> hi, std::array<int, 3> level, bool strict) {
     if (++cells_ > max_cells_) throw Undecided{"the budget of " + std::to_string(max_cells_) + " cells is spent" + at(lo, hi)};
     const int d = static_cast<int>(dirs.size());
     std::vector<Signs> s(leaves_);
@@ -244,14 +243,14 @@ class EulerRun {
       bool ok = true;
       for (std::size_t l = 0; l < leaves_ && ok; ++l) {
         if (!open[l]) continue;
-        mono[l] = monotone(detail::bern_derivative(G[l], j));
+        mono[l] = monotone(bern_derivative(G[l], j));
         ok = mono[l] != 2;
       }
       int sense = 0;
       if (!ok || !sense_of(f_, s, strict, mono, sense)) continue;
       // Closed: up -> the face at the start; strict: up -> the face at the end.
       const int side = sense == 0 ? 0 : ((sense > 0) == strict ? 1 : 0);
-      for (auto& g : G) g = detail::bern_face(g, j, side);
+      for (auto& g : G) g = bern_face(g, j, side);
       const int vd = dirs[static_cast<std::size_t>(j)];
       if (side) lo[vd] = hi[vd];
       else hi[vd] = lo[vd];
@@ -267,10 +266,10 @@ class EulerRun {
     if (level[vd] >= max_level_)
       throw Undecided{"no monotone direction within " + std::to_string(max_level_) + " halvings" + at(lo, hi) +
                       " (a singular or tangential point of the trimming surfaces)"};
-    std::vector<Bern<T>> A(leaves_), B(leaves_), M(leaves_);
+    std::vector<Bernstein<T>> A(leaves_), B(leaves_), M(leaves_);
     for (std::size_t l = 0; l < leaves_; ++l) {
-      std::tie(A[l], B[l]) = detail::bern_split(G[l], j, split_);
-      M[l] = detail::bern_face(A[l], j, 1);
+      std::tie(A[l], B[l]) = bern_split(G[l], j, split_);
+      M[l] = bern_face(A[l], j, 1);
     }
     G.clear();
     const T mid = lo[vd] + split_ * (hi[vd] - lo[vd]);
@@ -328,7 +327,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
   std::array<std::size_t, 3> n{};
   for (int d = 0; d < 3; ++d) n[d] = F.breaks[d].size() - 1;
-  std::vector<std::vector<Bern<T>>> G(F.size());
+  std::vector<std::vector<Bernstein<T>>> G(F.size());
   for (std::size_t k = 0; k < F.size(); ++k) {
     const auto pc = F.piece(k);
     for (const auto* g : leaves) G[k].push_back(compose_leaf(*g, pc.spline));
@@ -380,7 +379,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
   // The strata of the piece grid: per direction, the open segment (state 0), its start (1) or, for
   // the last segment, its end (2); each with its leaves, box, place on the domain's boundary.
   struct Stratum {
-    std::vector<Bern<T>> H;
+    std::vector<Bernstein<T>> H;
     std::vector<int> dirs;
     std::array<T, 3> lo, hi;
     bool inside = false;  // in the open domain (the interior's chi_c counts it)
@@ -410,7 +409,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
       // Fix the directions from the last: direction d is then still at index d of every leaf.
       for (int d = 2; d >= 0; --d)
         if (state[d] != 0)
-          for (auto& h : z.H) h = detail::bern_face(h, d, state[d] == 2 ? 1 : 0);
+          for (auto& h : z.H) h = bern_face(h, d, state[d] == 2 ? 1 : 0);
       // A leaf that vanishes on the whole stratum (a face of the cell on a trimming surface:
       // coplanar contact) is read by its sign just inside the domain, so the closed reading is
       // the closure of the cell's interior there, not a thin sheet. At an inner knot (fixed
@@ -435,10 +434,10 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
                 sp[inner[q]] = 2;
               }
             const auto& GP = G[at[0] + n[0] * (at[1] + n[1] * at[2])][l];
-            Bern<T> carrier = GP;  // the leaf on this piece's part of the boundary stratum's carrier
+            Bernstein<T> carrier = GP;  // the leaf on this piece's part of the boundary stratum's carrier
             for (int d = 2; d >= 0; --d)
               for (const auto& [bd, bs] : boundary)
-                if (bd == d) carrier = detail::bern_face(carrier, d, bs);
+                if (bd == d) carrier = bern_face(carrier, d, bs);
             const int here = all_zero(carrier) ? inward_sign(GP, sp, boundary) : 0;
             ok = here != 0 && (near == 0 || near == here);
             near = here;
@@ -448,7 +447,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
             continue;
           }
           ++out.resolved_contacts;
-          Bern<T> c;
+          Bernstein<T> c;
           c.deg.assign(std::max<std::size_t>(z.dirs.size(), 1), 0);
           c.c = {T(near)};
           z.H[l] = std::move(c);

@@ -14,8 +14,8 @@
 #include <set>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "spline/evaluate.hpp"
-#include "spline/errors.hpp"
 #include "vrep/boolean_impl.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/curve_graph.hpp"
@@ -28,7 +28,6 @@ namespace splinex {
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// h = lambda g for a rational lambda != 0: the sign of lambda; 0 if not proportional.
@@ -518,7 +517,7 @@ class Gluer {
     const CurveProblem<T, 2> problem = face_problem(h.cell, d, s, f);
     const T at = s ? V.domain_hi(d) : V.domain_lo(d);
     struct Box {
-      std::vector<Bern<T>> G;
+      std::vector<Bernstein<T>> G;
       std::array<T, 2> lo, hi;
       int level = 0;
     };
@@ -533,7 +532,7 @@ class Gluer {
       std::vector<Truth> t;
       for (const auto& G : x.G) t.push_back(coefficient_truth(G, T(0)));
       bool strict = true;
-      for (const auto& G : x.G) strict = strict && detail::bern_sign(G) != 0;
+      for (const auto& G : x.G) strict = strict && bern_sign(G) != 0;
       std::size_t k = 0;
       const Truth f = combine(formula, t, k);
       if (f == Truth::out) continue;

@@ -9,8 +9,8 @@
 #include <optional>
 #include <queue>
 
+#include "base/errors.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/insert.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean_impl.hpp"
@@ -272,7 +272,7 @@ Truth value_truth(const T& v, const T& eps) {
 
 /// The truth of G >= 0 on a box from its Bernstein coefficients (within eps in float).
 template <class T>
-Truth coefficient_truth(const Bern<T>& G, const T& eps) {
+Truth coefficient_truth(const Bernstein<T>& G, const T& eps) {
   bool nonneg = true, nonpos = true;
   for (const auto& x : G.c) {
     nonneg = nonneg && !(x < -eps);
@@ -306,7 +306,7 @@ struct CarriedCoefficients {
 
 /// Whether every Bernstein coefficient is > eps or every one < -eps (then every value is too).
 template <class T>
-bool strictly_signed(const Bern<T>& G, const T& eps) {
+bool strictly_signed(const Bernstein<T>& G, const T& eps) {
   bool pos = true, neg = true;
   for (const auto& x : G.c) {
     pos = pos && eps < x;
@@ -333,7 +333,7 @@ void require_clamped(const BSpline<T>& V) {
 }
 
 template <class T>
-bool all_zero(const Bern<T>& G) {
+bool all_zero(const Bernstein<T>& G) {
   return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
 }
 
@@ -416,7 +416,7 @@ inline const std::vector<Integer>& tensor_binomial_integers(const std::vector<in
 template <class T>
 struct PiecePowers {
   const BSpline<T>* piece = nullptr;
-  std::array<std::vector<Bern<T>>, 4> pw;  // pw[c][i]: coordinate c (0 = W) to the power i
+  std::array<std::vector<Bernstein<T>>, 4> pw;  // pw[c][i]: coordinate c (0 = W) to the power i
   // Exact arithmetic: the coordinates times D (the lcm of their denominators) as integer tensors;
   // products X^a Y^b and Z^c W^d by their exponents.
   Integer D{1};
@@ -424,8 +424,8 @@ struct PiecePowers {
   std::map<std::pair<int, int>, IntTensor> xy, zw;
   bool integer_ready = false;
   explicit PiecePowers(const BSpline<T>& p) : piece(&p) {}
-  const Bern<T>& at(int c, int i) {
-    if (pw[c].empty()) pw[c].push_back(Bern<T>{{0, 0, 0}, {T(1)}});
+  const Bernstein<T>& at(int c, int i) {
+    if (pw[c].empty()) pw[c].push_back(Bernstein<T>{{0, 0, 0}, {T(1)}});
     while (static_cast<int>(pw[c].size()) <= i) {
       if (pw[c].size() == 1) pw[c].push_back(homogeneous(*piece, c));
       else pw[c].push_back(mul(pw[c].back(), pw[c][1]));
@@ -435,7 +435,7 @@ struct PiecePowers {
   void prepare_integer() {
     if (integer_ready) return;
     integer_ready = true;
-    std::array<const Bern<T>*, 4> h;
+    std::array<const Bernstein<T>*, 4> h;
     for (int c = 0; c < 4; ++c) {
       h[c] = &at(c, 1);
       for (const auto& x : h[c]->c) mpz_lcm(D.backend().data(), D.backend().data(), boost::multiprecision::denominator(x).backend().data());
@@ -464,15 +464,15 @@ struct PiecePowers {
 
 /// W^k g(X / W, Y / W, Z / W) on a Bezier piece (k the degree of g), exact.
 template <class T>
-Bern<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
+Bernstein<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
   const int k = g.degree();
   std::vector<int> deg(3);
   for (int d = 0; d < 3; ++d) deg[d] = k * P.piece->degrees[d];
-  Bern<T> G{deg, std::vector<T>(detail::tensor_size(deg), T(0))};
+  Bernstein<T> G{deg, std::vector<T>(detail::tensor_size(deg), T(0))};
   if (k == 1) {  // a plane: c0 W + c1 X + c2 Y + c3 Z, no products
     for (const auto& [e, c] : g.terms) {
       const int coord = e[0] ? 1 : e[1] ? 2 : e[2] ? 3 : 0;
-      const Bern<T>& h = P.at(coord, 1);
+      const Bernstein<T>& h = P.at(coord, 1);
       for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * h.c[i];
     }
     return G;
@@ -507,14 +507,14 @@ Bern<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
     return G;
   } else {
     for (const auto& [e, c] : g.terms) {
-      const Bern<T> t = mul(mul(P.at(1, e[0]), P.at(2, e[1])), mul(P.at(3, e[2]), P.at(0, k - e[0] - e[1] - e[2])));
+      const Bernstein<T> t = mul(mul(P.at(1, e[0]), P.at(2, e[1])), mul(P.at(3, e[2]), P.at(0, k - e[0] - e[1] - e[2])));
       for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * t.c[i];
     }
     return G;
   }
 }
 template <class T>
-Bern<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
+Bernstein<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
   PiecePowers<T> P(piece);
   return compose_leaf(g, P);
 }
@@ -551,7 +551,7 @@ std::vector<const Poly3<T>*> checked_trim_leaves(const BSpline<T>& V, const Regi
 /// The leaves composed with V on each Bezier piece of V, with the piece's parameter box.
 template <class T>
 struct LeafPiece {
-  std::vector<Bern<T>> G;  // per leaf (collect order), Bernstein form on the piece
+  std::vector<Bernstein<T>> G;  // per leaf (collect order), Bernstein form on the piece
   std::array<T, 3> lo, hi;
 };
 template <class T>
@@ -570,7 +570,7 @@ std::vector<LeafPiece<T>> leaf_pieces(const BSpline<T>& V, const std::vector<con
 }
 
 template <class T>
-const T& corner(const Bern<T>& b, int s0, int s1, int s2) {
+const T& corner(const Bernstein<T>& b, int s0, int s1, int s2) {
   const std::size_t n0 = b.deg[0] + 1, n1 = b.deg[1] + 1;
   return b.c[(s0 ? b.deg[0] : 0) + n0 * ((s1 ? b.deg[1] : 0) + n1 * (s2 ? b.deg[2] : 0))];
 }
@@ -632,9 +632,9 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
   if (!field && coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
   struct Box {
-    std::vector<Bern<T>> G;   // per leaf: its composition, or empty where it is not carried
+    std::vector<Bernstein<T>> G;   // per leaf: its composition, or empty where it is not carried
     std::vector<Truth> lt;    // per leaf: its truth on the box (not carried: its last one)
-    Bern<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
+    Bernstein<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
     std::array<T, 3> lo, hi;  // in the trivariate's parameters
     T vol;                    // share of its piece's unit cube
     Truth truth = Truth::mixed;
@@ -677,7 +677,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
     // (A leaf decided with a zero coefficient keeps its values: a corner may lie on its surface.)
     for (std::size_t l = 0; l < b.G.size(); ++l) {
       if (b.G[l].c.empty() || live[l]) continue;
-      if (b.lt[l] == Truth::mixed || strictly_signed(b.G[l], eps)) b.G[l] = Bern<T>{};
+      if (b.lt[l] == Truth::mixed || strictly_signed(b.G[l], eps)) b.G[l] = Bernstein<T>{};
     }
   };
   std::deque<Box> todo;
@@ -1571,7 +1571,7 @@ std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, co
         // exclude 0, does not vanish on it.
         if (!(poly_at(g, corner_point) == T(0))) continue;
         if (const auto [lo, hi] = poly_bounds(g, box); T(0) < lo || hi < T(0)) continue;
-        const Bern<T> G = compose_leaf(g, P);
+        const Bernstein<T> G = compose_leaf(g, P);
         if (std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); })) {
           here = true;
           last = l;

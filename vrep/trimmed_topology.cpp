@@ -5,9 +5,9 @@
 #include <functional>
 #include <type_traits>
 
+#include "base/errors.hpp"
 #include "solve/solver.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "vrep/box_components.hpp"
 #include "vrep/curve_graph.hpp"
 #include "vrep/trimmed.hpp"
@@ -17,26 +17,23 @@ namespace splinex {
 
 namespace vrep_detail {
 
-using detail::Bern;
-using detail::bern_face;
-
 template <class T>
-std::vector<Bern<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
+std::vector<Bernstein<T>> leaves_on_face(const BSpline<T>& V, const LeafPiece<T>& p, int d, int s, const std::vector<char>* outside,
                                     std::vector<int>* multiplicity) {
   const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
   const std::array<T, 2> face_lo{V.domain_lo(a), V.domain_lo(b)}, face_hi{V.domain_hi(a), V.domain_hi(b)};
   const std::array<T, 2> plo{p.lo[a], p.lo[b]}, phi{p.hi[a], p.hi[b]};
-  std::vector<Bern<T>> out;
+  std::vector<Bernstein<T>> out;
   if (multiplicity) multiplicity->assign(p.G.size(), 0);
   for (std::size_t l = 0; l < p.G.size(); ++l) {
-    Bern<T> G = p.G[l];
+    Bernstein<T> G = p.G[l];
     int m = 0;
     while (G.deg[static_cast<std::size_t>(d)] > 0 && !all_zero(G) && all_zero(bern_face(G, d, s))) {
       G = divide_facet(G, d, s);
       ++m;
     }
     if (multiplicity) (*multiplicity)[l] = m;
-    Bern<T> H = bern_face(G, d, s);
+    Bernstein<T> H = bern_face(G, d, s);
     for (int fd = 0; fd < 2; ++fd)
       for (int fs = 0; fs < 2; ++fs)
         while ((fs ? phi[static_cast<std::size_t>(fd)] == face_hi[static_cast<std::size_t>(fd)] : plo[static_cast<std::size_t>(fd)] == face_lo[static_cast<std::size_t>(fd)]) &&
@@ -99,7 +96,7 @@ CurveProblem<T, 2> face_curve_problem(const BSpline<T>& V, const std::vector<Lea
 }
 
 #define SPLINEX_FACE_HELPERS(T)                                                                                                        \
-  template std::vector<Bern<T>> leaves_on_face(const BSpline<T>&, const LeafPiece<T>&, int, int, const std::vector<char>*, std::vector<int>*); \
+  template std::vector<Bernstein<T>> leaves_on_face(const BSpline<T>&, const LeafPiece<T>&, int, int, const std::vector<char>*, std::vector<int>*); \
   template FaceEdges face_edges(const BSpline<T>&, int, int, const Limits&);                                                           \
   template CurveProblem<T, 2> face_curve_problem(const BSpline<T>&, const std::vector<LeafPiece<T>>&, int, int, const FaceEdges&,      \
                                                  const std::vector<char>*);
@@ -111,12 +108,11 @@ SPLINEX_FACE_HELPERS(double)
 
 namespace {
 
-using detail::Bern;
 using namespace vrep_detail;
 
 /// Strict truth of G >= 0 on a box: every coefficient > 0 (in), every one < 0 (out), else mixed.
 template <class T>
-Truth strict_truth(const Bern<T>& G) {
+Truth strict_truth(const Bernstein<T>& G) {
   bool pos = true, neg = true;
   for (const auto& x : G.c) {
     pos = pos && T(0) < x;
@@ -155,7 +151,7 @@ void halve(const Box& x, Box (&c)[2]) {
 
 /// The values at the corners of a tensor Bernstein polynomial's box (its corner coefficients).
 template <class T>
-std::vector<T> corner_values(const Bern<T>& b) {
+std::vector<T> corner_values(const Bernstein<T>& b) {
   const std::size_t n = b.deg.size();
   std::vector<T> out;
   for (std::size_t c = 0; c < (std::size_t(1) << n); ++c) {
@@ -171,7 +167,7 @@ std::vector<T> corner_values(const Bern<T>& b) {
 /// strict sign: a zero set on the box's boundary counts, e.g. on a split plane) and the formula, with
 /// the other leaves' coefficient truths, does not come out the same decided value with k in and out.
 template <class T>
-bool may_bound(const Region<T>& R, const std::vector<Bern<T>>& G, const std::vector<Truth>& leaf, std::size_t k) {
+bool may_bound(const Region<T>& R, const std::vector<Bernstein<T>>& G, const std::vector<Truth>& leaf, std::size_t k) {
   if (strict_truth(G[k]) != Truth::mixed) return false;
   const Truth i = forced_truth(R, leaf, k, Truth::in), o = forced_truth(R, leaf, k, Truth::out);
   return !(i == o && i != Truth::mixed);
@@ -180,7 +176,7 @@ bool may_bound(const Region<T>& R, const std::vector<Bern<T>>& G, const std::vec
 /// Every other leaf strictly signed on the box, and the formula in with leaf k on one side and out
 /// with it on the other.
 template <class T>
-bool others_decide(const Region<T>& R, const std::vector<Bern<T>>& G, std::size_t k) {
+bool others_decide(const Region<T>& R, const std::vector<Bernstein<T>>& G, std::size_t k) {
   std::vector<Truth> strict;
   for (std::size_t l = 0; l < G.size(); ++l) {
     strict.push_back(l == k ? Truth::mixed : strict_truth(G[l]));
@@ -192,7 +188,7 @@ bool others_decide(const Region<T>& R, const std::vector<Bern<T>>& G, std::size_
 
 /// The sign pattern of leaf k's corner values: bit 0 some > 0, bit 1 some < 0.
 template <class T>
-int corner_signs(const Bern<T>& g) {
+int corner_signs(const Bernstein<T>& g) {
   int m = 0;
   for (const auto& v : corner_values(g)) m |= (T(0) < v ? 1 : 0) | (v < T(0) ? 2 : 0);
   return m;
@@ -205,7 +201,7 @@ int corner_signs(const Bern<T>& g) {
 /// It lies in the box (or one of the two) that is in the cover, and two touching cover boxes are in
 /// one component.
 template <class T, std::size_t N>
-std::vector<char> certified_points(const Region<T>& R, const std::vector<std::vector<Bern<T>>>& G, const std::vector<std::array<T, N>>& lo,
+std::vector<char> certified_points(const Region<T>& R, const std::vector<std::vector<Bernstein<T>>>& G, const std::vector<std::array<T, N>>& lo,
                                    const std::vector<std::array<T, N>>& hi, const std::vector<char>& in_cover, std::size_t k) {
   const std::size_t n = G.size();
   std::vector<char> mark(n, 0);
@@ -303,7 +299,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         // Per piece on the edge: the leaves as univariate polynomials along it.
         struct Segment {
           T lo, hi;
-          std::vector<Bern<T>> g;
+          std::vector<Bernstein<T>> g;
         };
         std::vector<Segment> segs;
         struct Event {
@@ -319,7 +315,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
               e.status = TrimmedTopology<T>::Edge::on_trimming_surface;
               continue;
             }
-            const SolveResult<T> r = solve_system(std::vector<Bern<T>>{g}, {sg.lo}, {sg.hi}, so);
+            const SolveResult<T> r = solve_system(std::vector<Bernstein<T>>{g}, {sg.lo}, {sg.hi}, so);
             if (!r.undecided.empty()) e.status = TrimmedTopology<T>::Edge::undecided;
             for (const auto& root : r.roots) events.push_back(root.exact ? Event{root.point[0], root.point[0]} : Event{root.lo[0], root.hi[0]});
           }
@@ -335,7 +331,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
             if (t < sg.lo || sg.hi < t) continue;
             const std::vector<T> x{(t - sg.lo) / (sg.hi - sg.lo)};
             std::vector<Truth> tr;
-            for (const auto& g : sg.g) tr.push_back(value_truth(detail::bern_value(g, x), T(0)));
+            for (const auto& g : sg.g) tr.push_back(value_truth(bern_value(g, x), T(0)));
             return static_cast<int>(truth_of(tr));
           }
           return static_cast<int>(Truth::mixed);
@@ -364,10 +360,10 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     vo.refine_bits = 40;
     const std::size_t nl = leaves.size();
     auto corner_of = [&](const std::vector<Truth>& fixed, const std::vector<std::size_t>& which) { return depends_on_each(trim, fixed, which); };
-    // The roots of the leaves `which` (Bern over the unit box standing for [lo, hi]) and the
+    // The roots of the leaves `which` (Bernstein over the unit box standing for [lo, hi]) and the
     // decision at each; `all` every leaf on the same box; (dir, side) the face of V's domain, or
     // dir = -1 inside.
-    auto meet = [&](const std::vector<Bern<T>>& sys, const std::vector<std::size_t>& which, const std::vector<Bern<T>>& all, const std::vector<T>& lo,
+    auto meet = [&](const std::vector<Bernstein<T>>& sys, const std::vector<std::size_t>& which, const std::vector<Bernstein<T>>& all, const std::vector<T>& lo,
                     const std::vector<T>& hi, int dir, int side) {
       std::size_t& found = dir < 0 ? out.interior_points : out.face_points;
       std::size_t& undecided = out.points_undecided;
@@ -396,7 +392,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           }
           std::vector<std::vector<T>> J(n, std::vector<T>(n));
           for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = 0; b < n; ++b) J[a][b] = detail::bern_value(detail::bern_derivative(sys[a], static_cast<int>(b)), u);
+            for (std::size_t b = 0; b < n; ++b) J[a][b] = bern_value(bern_derivative(sys[a], static_cast<int>(b)), u);
           T det;
           if (n == 2) det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
           else
@@ -405,7 +401,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
           bool clear = inside && !(det == T(0));
           for (std::size_t l = 0; l < nl && clear; ++l) {
             if (std::find(which.begin(), which.end(), l) != which.end()) continue;
-            fixed[l] = value_truth(detail::bern_value(all[l], u), T(0));
+            fixed[l] = value_truth(bern_value(all[l], u), T(0));
             clear = fixed[l] != Truth::mixed;
           }
           conclude(clear, fixed, root.point, root.point);
@@ -424,11 +420,11 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         bool clear = true;
         for (std::size_t l = 0; l < nl && clear; ++l) {
           if (std::find(which.begin(), which.end(), l) != which.end()) continue;
-          Bern<T> b = all[l];
+          Bernstein<T> b = all[l];
           for (std::size_t d = 0; d < n; ++d)
           {
             const T a = (root.lo[d] - lo[d]) / (hi[d] - lo[d]), c = (root.hi[d] - lo[d]) / (hi[d] - lo[d]);
-            b = detail::bern_restrict(b, static_cast<int>(d), a, c);
+            b = bern_restrict(b, static_cast<int>(d), a, c);
           }
           fixed[l] = strict_truth(b);
           clear = fixed[l] != Truth::mixed;
@@ -441,7 +437,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       for (int d = 0; d < 3; ++d)
         for (int sd = 0; sd < 2; ++sd) {
           if (!((sd ? p.hi[d] : p.lo[d]) == domain_at(d, sd))) continue;
-          std::vector<Bern<T>> H;
+          std::vector<Bernstein<T>> H;
           for (const auto& G : p.G) H.push_back(bern_face(G, d, sd));
           std::vector<T> lo, hi;
           for (int e = 0; e < 3; ++e)
@@ -482,7 +478,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         continue;
       }
       struct Box2 {
-        std::vector<Bern<T>> G;
+        std::vector<Bernstein<T>> G;
         std::array<T, 2> lo, hi;
         Truth truth;
       };
@@ -569,7 +565,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
       const std::size_t face_index = out.surfaces.size();
       out.surfaces.push_back(sf);
       // The trimming surfaces' boundary curves on this face: per leaf, where it bounds the face's part.
-      std::vector<std::vector<Bern<T>>> Gs;
+      std::vector<std::vector<Bernstein<T>>> Gs;
       std::vector<std::vector<Truth>> truths;
       for (const auto& x : done) {
         Gs.push_back(x.G);
@@ -623,7 +619,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
 
   // Trimming surfaces: 3D subdivision of the boxes where some leaf may bound the cell.
   struct Box3 {
-    std::vector<Bern<T>> G;
+    std::vector<Bernstein<T>> G;
     std::array<T, 3> lo, hi;
     std::vector<Truth> leaf;  // coefficient truths
   };
@@ -656,7 +652,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
   for (auto& x : todo3) done3.push_back(std::move(x));
   out.boxes = done3.size();
   std::vector<std::array<T, 3>> lo3, hi3;
-  std::vector<std::vector<Bern<T>>> G3;
+  std::vector<std::vector<Bernstein<T>>> G3;
   for (const auto& x : done3) {
     lo3.push_back(x.lo);
     hi3.push_back(x.hi);

@@ -34,8 +34,8 @@
 #include <array>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

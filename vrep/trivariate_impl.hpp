@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
+#include "base/errors.hpp"
 #include "spline/basis.hpp"
 #include "spline/elevate.hpp"
-#include "spline/errors.hpp"
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"

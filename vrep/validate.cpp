@@ -7,7 +7,9 @@
 #include <optional>
 #include <set>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
+#include "base/point.hpp"
+#include "bernstein/subdivide.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/planted.hpp"
@@ -19,8 +21,7 @@ namespace splinex {
 namespace {
 
 using R = Rational;
-using P3 = std::array<R, 3>;
-using detail::Bern;
+using P3 = Point3<R>;
 
 std::string cell_text(const std::string& where, std::size_t c, const std::vector<std::string>& names) {
   std::string s = where + ".cells[" + std::to_string(c) + "]";
@@ -35,9 +36,6 @@ std::string point_text(const std::vector<R>& x) {
 }
 std::string point_text(const P3& x) { return point_text(std::vector<R>(x.begin(), x.end())); }
 
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-R dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 cross(const P3& a, const P3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 bool is_zero(const P3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 
 /// A cell's geometry for the pairwise tests: the control-point box, the exact corners and, for a
@@ -261,9 +259,9 @@ Checked check_cells(const std::vector<BSpline<R>>& cells, const std::vector<std:
   for (std::size_t c = 0; c < cells.size(); ++c) {
     CellShape shape;
     rep.regularity.push_back(certify_cell_shape(cells[c], cell_text(where, c, names), options.levels, limits, shape));
-    if (shape == CellShape::one_sign) rep.degenerate.push_back(cell_text(where, c, names) + ": " + rep.regularity.back().reason);
+    if (shape == CellShape::one_sign) rep.degenerate.push_back(cell_text(where, c, names) + ": " + rep.regularity.back().verdict.reason());
     if (shape == CellShape::undecided)
-      rep.undecided.push_back(cell_text(where, c, names) + ": the sign of det J: " + rep.regularity.back().reason);
+      rep.undecided.push_back(cell_text(where, c, names) + ": the sign of det J: " + rep.regularity.back().verdict.reason());
     out.geometry.push_back(geometry_of_cell(cells[c]));
   }
   // Pairs in order of the boxes' low x: a sweep, so that far-apart cells cost nothing.
@@ -352,8 +350,8 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
   shape = CellShape::regular;
   const std::string fix = "give cells with det J of one sign (vrep certify shows it): reorder or move the control points";
   auto rep = certify_regularity(V, levels, limits);
-  if (rep.verdict == Regularity::regular) return rep;
-  if (rep.verdict == Regularity::singular && !rep.other.empty())
+  if (rep.verdict.is_proved()) return rep;
+  if (rep.verdict.is_refuted() && !rep.other.empty())
     throw ValidationError(field, "folds: det J changes sign (" + to_fraction_string(rep.value) + " at " + point_text(rep.point) + ", " +
                                      to_fraction_string(rep.other_value) + " at " + point_text(rep.other) + ")",
                           fix);
@@ -372,37 +370,21 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
   auto refuse_interior_zero = [&](const std::vector<R>& x) {
     throw ValidationError(field, "is not regular inside: det J = 0 at the interior parameter point " + point_text(x) + " (the cell is pinched or folded there)", fix);
   };
-  if (rep.verdict == Regularity::singular && interior(rep.point)) refuse_interior_zero(rep.point);
+  if (rep.verdict.is_refuted() && interior(rep.point)) refuse_interior_zero(rep.point);
   // det J = 0 somewhere, or undecided: is det J of one sign (>= 0 or <= 0) and nowhere 0 on a
   // box? Boxes whose coefficients have one weak sign are decided; a box with all coefficients 0
   // is a flat part; strict signs of both kinds (corners or decided boxes) are a fold.
-  struct Box {
-    Bern<R> N;
-    std::array<R, 3> lo, hi;
-    int level;
-  };
+  using Box = vrep_detail::JacobianBox<R>;
   const std::size_t per_piece = vrep_detail::check_jacobian_size(V, limits);
-  const std::size_t box_budget = std::max<std::size_t>(64, limits.max_control_points / per_piece);
-  const BezierForm<R> F = bezier_form(V, limits);
-  std::deque<Box> todo;
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    Box b{vrep_detail::jacobian_numerator(pc.spline), {}, {}, 0};
-    for (int d = 0; d < 3; ++d) {
-      b.lo[d] = pc.box[d].first;
-      b.hi[d] = pc.box[d].second;
-    }
-    todo.push_back(std::move(b));
-  }
+  Budget budget;
+  budget.max_depth = levels;
+  budget.max_alive = std::max<std::size_t>(64, limits.max_control_points / per_piece);
   std::string pos_at, neg_at, undecided_at;
   auto box_text = [](const Box& b) {
     return "[" + to_fraction_string(b.lo[0]) + ", " + to_fraction_string(b.hi[0]) + "] x [" + to_fraction_string(b.lo[1]) + ", " +
            to_fraction_string(b.hi[1]) + "] x [" + to_fraction_string(b.lo[2]) + ", " + to_fraction_string(b.hi[2]) + "]";
   };
-  bool undecided = false;
-  while (!todo.empty()) {
-    Box b = std::move(todo.front());
-    todo.pop_front();
+  auto examine = [&](const Box& b, int) {
     int lo = 2, hi = -2;
     for (const auto& c : b.N.c) {
       const int s = vrep_detail::sign_of(c);
@@ -410,7 +392,7 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
       hi = std::max(hi, s);
     }
     if (lo == 0 && hi == 0) {
-      if (vrep_testing::is_planted(vrep_testing::Plant::validate_flat_skipped)) continue;  // (planted: tests only)
+      if (vrep_testing::is_planted(vrep_testing::Plant::validate_flat_skipped)) return Examined::settled;  // (planted: tests only)
       throw ValidationError(field, "is flat: det J = 0 on the parameter box " + box_text(b), fix);
     }
     {
@@ -444,39 +426,24 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
     }
     if (!pos_at.empty() && !neg_at.empty())
       throw ValidationError(field, "folds: det J changes sign (> 0 on " + pos_at + ", < 0 on " + neg_at + ")", fix);
-    if (lo >= 0 || hi <= 0) continue;
-    if (b.level >= levels || todo.size() + 8 > box_budget) {
-      undecided = true;
-      if (undecided_at.empty()) undecided_at = box_text(b);
-      continue;
-    }
-    std::vector<Box> parts{std::move(b)};
-    for (int d = 0; d < 3; ++d) {
-      std::vector<Box> next;
-      for (auto& p : parts) {
-        auto [L, Rt] = vrep_detail::split_half(p.N, d);
-        const R mid = (p.lo[d] + p.hi[d]) / R(2);
-        Box l{std::move(L), p.lo, p.hi, p.level + 1}, r{std::move(Rt), p.lo, p.hi, p.level + 1};
-        l.hi[d] = mid;
-        r.lo[d] = mid;
-        next.push_back(std::move(l));
-        next.push_back(std::move(r));
-      }
-      parts = std::move(next);
-    }
-    for (auto& p : parts) todo.push_back(std::move(p));
-  }
+    return lo >= 0 || hi <= 0 ? Examined::settled : Examined::split;
+  };
+  auto split = [](Box&& b, int, auto&& emit) { vrep_detail::split_octants(std::move(b), emit); };
+  auto leave = [&](Box&& b, Left) {
+    if (undecided_at.empty()) undecided_at = box_text(b);
+  };
+  const bool undecided =
+      subdivide(vrep_detail::jacobian_boxes(V, limits), Walk{Order::breadth_first, 8, false}, budget, examine, split, leave).left > 0;
   if (undecided) {
     shape = CellShape::undecided;
-    rep.verdict = Regularity::undecided;
-    rep.reason = "det J has Bernstein coefficients of both signs on " + undecided_at + " after " + std::to_string(levels) +
-                 " subdivision levels (a fold is not excluded)";
+    rep.verdict = Verdict::undecided("det J has Bernstein coefficients of both signs on " + undecided_at + " after " + std::to_string(levels) +
+                                     " subdivision levels (a fold is not excluded)");
     return rep;
   }
   // One weak sign everywhere, nowhere identically 0: valid, degenerate where det J = 0.
   shape = CellShape::one_sign;
-  rep.reason += rep.verdict == Regularity::singular ? "; elsewhere det J has that sign (certified): degenerate, not folded"
-                                                    : "; det J >= 0 or <= 0 everywhere (certified), > 0 not decided: not folded";
+  rep.verdict.add_to_reason(rep.verdict.is_refuted() ? "; elsewhere det J has that sign (certified): degenerate, not folded"
+                                                      : "; det J >= 0 or <= 0 everywhere (certified), > 0 not decided: not folded");
   return rep;
 }
 
@@ -562,9 +529,9 @@ ValidityReport validate_trimmed(const TrimmedModel<Rational>& M, const std::stri
     done[t] = 1;
     CellShape shape;
     rep.regularity.push_back(certify_cell_shape(M.trivariates[t], where + ".trivariates[" + std::to_string(t) + "]", options.levels, limits, shape));
-    if (shape == CellShape::one_sign) rep.degenerate.push_back(where + ".trivariates[" + std::to_string(t) + "]: " + rep.regularity.back().reason);
+    if (shape == CellShape::one_sign) rep.degenerate.push_back(where + ".trivariates[" + std::to_string(t) + "]: " + rep.regularity.back().verdict.reason());
     if (shape == CellShape::undecided)
-      rep.undecided.push_back(where + ".trivariates[" + std::to_string(t) + "]: the sign of det J: " + rep.regularity.back().reason);
+      rep.undecided.push_back(where + ".trivariates[" + std::to_string(t) + "]: the sign of det J: " + rep.regularity.back().verdict.reason());
     g[t] = geometry_of_cell(M.trivariates[t]);
   }
   std::size_t open = 0;

@@ -27,9 +27,9 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 #include "vrep/regularity.hpp"
 #include "vrep/trimmed.hpp"
 #include "vrep/vmodel.hpp"

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "spline/limits.hpp"
 
 namespace splinex {
 

@@ -4,8 +4,9 @@
 #include <map>
 #include <set>
 
+#include "base/errors.hpp"
+#include "base/point.hpp"
 #include "spline/bezier.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
@@ -339,7 +340,8 @@ VModelCheck check_invariants(const VModel<T>& M, const Limits& limits) {
         oa[a] = 1;
         ob[b] = 1;
         auto ta = derivative(V, p, oa), tb = derivative(V, p, ob);
-        normal = {ta[1] * tb[2] - ta[2] * tb[1], ta[2] * tb[0] - ta[0] * tb[2], ta[0] * tb[1] - ta[1] * tb[0]};
+        const Point3<T> n = cross(as_point3(ta), as_point3(tb));
+        normal = {n[0], n[1], n[2]};
       };
       std::vector<T> p1, o1, n1, p2, o2, n2;
       outward(hs, p1, o1, n1);

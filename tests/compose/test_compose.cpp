@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 
-#include "tests/helpers.hpp"
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 #include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
+#include "tests/helpers.hpp"
 
 using namespace splinex;
 using test::spline;

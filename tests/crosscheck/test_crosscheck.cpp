@@ -1,11 +1,11 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "base/errors.hpp"
 #include "crosscheck/crosscheck.hpp"
-#include "fixtures/teapot.hpp"
 #include "fixtures/random_spline.hpp"
+#include "fixtures/teapot.hpp"
 #include "tests/helpers.hpp"
-#include "spline/errors.hpp"
 
 using namespace splinex;
 

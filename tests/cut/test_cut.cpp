@@ -5,6 +5,8 @@
 
 #include <chrono>
 
+#include "base/errors.hpp"
+#include "bernstein/tensor.hpp"
 #include "cut/curve_facet.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
@@ -12,11 +14,9 @@
 #include "cut/separation.hpp"
 #include "io/cut_io.hpp"
 #include "io/json_io.hpp"
-#include "spline/errors.hpp"
+#include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
-#include "spline/tensor_bernstein.hpp"
-#include "spline/bezier.hpp"
 
 using namespace splinex;
 
@@ -90,20 +90,20 @@ TEST_CASE("cut: the regularization matrix equals the integral of the second deri
     const auto f = make_spline<Rational>({3, 3}, {U, Uy}, 1, c);
     Rational integral(0);
     for (const auto& piece : extract_bezier(f)) {
-      detail::Bern<Rational> b{{3, 3}, piece.spline.points};
+      Bernstein<Rational> b{{3, 3}, piece.spline.points};
       const Rational hx = piece.box[0].second - piece.box[0].first, hy = piece.box[1].second - piece.box[1].first;
-      auto mean = [](const detail::Bern<Rational>& g) {
+      auto mean = [](const Bernstein<Rational>& g) {
         Rational s(0);
         for (const auto& v : g.c) s += v;
         return s / Rational(static_cast<long>(g.c.size()));
       };
-      auto dxx = detail::bern_derivative(detail::bern_derivative(b, 0), 0);
-      auto dyy = detail::bern_derivative(detail::bern_derivative(b, 1), 1);
-      auto dxy = detail::bern_derivative(detail::bern_derivative(b, 0), 1);
+      auto dxx = bern_derivative(bern_derivative(b, 0), 0);
+      auto dyy = bern_derivative(bern_derivative(b, 1), 1);
+      auto dxy = bern_derivative(bern_derivative(b, 0), 1);
       // bern_derivative differentiates in the local [0,1] parameter: divide by the cell's sides.
-      const Rational sxx = mean(detail::bern_product(dxx, dxx)) / (hx * hx * hx * hx);
-      const Rational syy = mean(detail::bern_product(dyy, dyy)) / (hy * hy * hy * hy);
-      const Rational sxy = mean(detail::bern_product(dxy, dxy)) / (hx * hx * hy * hy);
+      const Rational sxx = mean(bern_product(dxx, dxx)) / (hx * hx * hx * hx);
+      const Rational syy = mean(bern_product(dyy, dyy)) / (hy * hy * hy * hy);
+      const Rational sxy = mean(bern_product(dxy, dxy)) / (hx * hx * hy * hy);
       integral += (sxx + 2 * sxy + syy) * hx * hy;
     }
     CHECK(quad == integral);

@@ -2,13 +2,13 @@
 // and in double, certified separation (also of hand-made guides that must fail).
 #include <catch2/catch.hpp>
 
+#include "base/errors.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/separation.hpp"
-#include "spline/errors.hpp"
+#include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
-#include "spline/bezier.hpp"
 
 using namespace splinex;
 

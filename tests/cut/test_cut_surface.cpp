@@ -4,10 +4,10 @@
 
 #include <cmath>
 
+#include "base/errors.hpp"
 #include "cut/examples.hpp"
 #include "cut/surface_facet.hpp"
 #include "exact/linear_solve.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
 

@@ -11,12 +11,12 @@
 
 #include <cmath>
 
+#include "base/errors.hpp"
 #include "cut/examples.hpp"
 #include "cut/guide.hpp"
 #include "cut/qp.hpp"
 #include "cut/separation.hpp"
 #include "cut/solid.hpp"
-#include "spline/errors.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/factories.hpp"
 #include "spline/knots.hpp"

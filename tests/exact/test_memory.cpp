@@ -11,9 +11,9 @@
 #include <functional>
 #include <new>
 
+#include "base/errors.hpp"
 #include "exact/flint_rational.hpp"
 #include "exact/memory.hpp"
-#include "spline/errors.hpp"
 
 namespace sx = splinex;
 

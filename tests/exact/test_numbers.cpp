@@ -2,8 +2,8 @@
 #include <cmath>
 #include <limits>
 
+#include "base/errors.hpp"
 #include "float/arith_spec.hpp"
-#include "spline/errors.hpp"
 
 using namespace splinex;
 

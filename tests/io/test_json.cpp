@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include "base/errors.hpp"
 #include "float/mpfr.hpp"
 #include "tests/helpers.hpp"
-#include "spline/errors.hpp"
 
 using namespace splinex;
 using test::spline;

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "bernstein/tensor.hpp"
 #include "exact/rational.hpp"
-#include "spline/tensor_bernstein.hpp"
 #include "tests/helpers.hpp"
 
 namespace splinex::solve_fixtures {
@@ -35,9 +35,9 @@ inline std::vector<Rational> from_roots(const std::vector<Rational>& roots) {
 }
 
 /// The Bernstein form on [0, 1] of sum a[k] t^k (b_i = sum_k C(i,k)/C(n,k) a_k).
-inline detail::Bern<Rational> univariate(const std::vector<Rational>& a) {
+inline Bernstein<Rational> univariate(const std::vector<Rational>& a) {
   const int n = static_cast<int>(a.size()) - 1;
-  detail::Bern<Rational> b{{n}, std::vector<Rational>(n + 1, Rational(0))};
+  Bernstein<Rational> b{{n}, std::vector<Rational>(n + 1, Rational(0))};
   for (int i = 0; i <= n; ++i)
     for (int k = 0; k <= i; ++k) b.c[i] += binom(i, k) / binom(n, k) * a[k];
   return b;
@@ -45,8 +45,8 @@ inline detail::Bern<Rational> univariate(const std::vector<Rational>& a) {
 
 /// The Bernstein form on [0, 1]^2 of degrees (n, m) of sum a[{k, l}] x^k y^l (an independent
 /// conversion, b_ij = sum C(i,k)/C(n,k) C(j,l)/C(m,l) a_kl).
-inline detail::Bern<Rational> bivariate(int n, int m, const std::map<std::pair<int, int>, Rational>& a) {
-  detail::Bern<Rational> b{{n, m}, std::vector<Rational>((n + 1) * (m + 1), Rational(0))};
+inline Bernstein<Rational> bivariate(int n, int m, const std::map<std::pair<int, int>, Rational>& a) {
+  Bernstein<Rational> b{{n, m}, std::vector<Rational>((n + 1) * (m + 1), Rational(0))};
   for (int j = 0; j <= m; ++j)
     for (int i = 0; i <= n; ++i)
       for (const auto& [e, c] : a)

@@ -40,7 +40,6 @@
 
 using namespace splinex;
 using R = Rational;
-using detail::Bern;
 using solve_testing::Plant;
 using solve_testing::ScopedPlant;
 using solve_fixtures::bivariate;
@@ -205,7 +204,7 @@ TEST_CASE("planted: Krawczyk uniqueness in a merged group without the contractio
   // the hull is reported as 1/3's box, unique, and the result complete.
   const R second = R(1, 3) + pow2(-40);
   const std::vector<R> a = from_roots({R(1, 3), second});
-  const std::vector<Bern<R>> f{univariate(a)};
+  const std::vector<Bernstein<R>> f{univariate(a)};
   REQUIRE(power_value(a, second) == 0);  // the test's own exact check: a second root
   {
     ScopedPlant plant(Plant::skip_krawczyk_contraction_merged);

@@ -13,7 +13,6 @@
 
 using namespace splinex;
 using R = Rational;
-using detail::Bern;
 using solve_fixtures::bivariate;
 using solve_fixtures::from_roots;
 using solve_fixtures::univariate;
@@ -118,12 +117,12 @@ TEST_CASE("solver: a circle and a line, rational and irrational intersections", 
 
 TEST_CASE("solver: degenerate and malformed systems are refused, a curve of solutions stays undecided", "[solve]") {
   const auto line = bivariate(1, 1, {{{1, 0}, R(1)}, {{0, 1}, R(-1)}});
-  const Bern<R> zero{{1, 1}, std::vector<R>(4, R(0))};
+  const Bernstein<R> zero{{1, 1}, std::vector<R>(4, R(0))};
   CHECK_THROWS_AS(solve_system<R>({line, zero}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
   CHECK_THROWS_AS(solve_system<R>({line}, {R(0), R(0)}, {R(1), R(1)}), ValidationError);
   CHECK_THROWS_AS(solve_system<R>({univariate({R(1), R(1)})}, {R(1)}, {R(1)}), ValidationError);
   // x - y = 0 twice over: a whole segment of solutions. Nothing may be claimed unique.
-  const auto sq = detail::bern_product(line, line);
+  const auto sq = bern_product(line, line);
   const auto s = solve_system<R>({line, sq}, {R(0), R(0)}, {R(1), R(1)}, SolveOptions{10, 3000, 60, true, {}});
   CHECK_FALSE(s.complete());
   CHECK_FALSE(s.undecided.empty());
@@ -132,7 +131,7 @@ TEST_CASE("solver: degenerate and malformed systems are refused, a curve of solu
 
 TEST_CASE("solver: the same subdivision in double finds the simple roots near the exact ones", "[solve]") {
   const auto f = univariate(mul(from_roots({R(1, 2), R(1, 3)}), {R(-1), R(0), R(2)}));
-  Bern<double> fd{f.deg, {}};
+  Bernstein<double> fd{f.deg, {}};
   for (const auto& c : f.c) fd.c.push_back(to_double(c));
   const auto s = solve_system<double>({fd}, {0.0}, {1.0});
   REQUIRE(s.roots.size() == 3);

@@ -1,17 +1,17 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "base/errors.hpp"
+#include "bernstein/tensor.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "float/mpfr.hpp"
-#include "tests/helpers.hpp"
 #include "proofs/identity.hpp"
 #include "proofs/suite.hpp"
-#include "spline/errors.hpp"
-#include "spline/hodograph.hpp"
 #include "spline/bernstein.hpp"
+#include "spline/hodograph.hpp"
 #include "spline/kernel.hpp"
-#include "spline/tensor_bernstein.hpp"
+#include "tests/helpers.hpp"
 
 using namespace splinex;
 using test::spline;

@@ -5,15 +5,15 @@
 
 #include <random>
 
+#include "base/errors.hpp"
 #include "exact/rational.hpp"
 #include "fixtures/teapot.hpp"
 #include "fixtures/teapot_vmodel.hpp"
-#include "vrep/trivariate.hpp"
-#include "spline/errors.hpp"
 #include "vrep/boolean.hpp"
 #include "vrep/freeform.hpp"
 #include "vrep/primitives.hpp"
 #include "vrep/trimmed.hpp"
+#include "vrep/trivariate.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -6,7 +6,7 @@
 //
 // SPLINEX_VREP_PLANT=<name> in the environment plants that bug for the whole test process (test
 // only; the library never reads it): then the ordinary vrep tests show which of them catch it
-// (docs/vrep.md, "Planted bugs"). The cases below run their "off" halves under an explicit
+// (docs/vrep/model.md, "Planted bugs"). The cases below run their "off" halves under an explicit
 // ScopedPlant(Plant::none), so they hold in such a run too.
 #include <catch2/catch.hpp>
 
@@ -14,8 +14,9 @@
 #include <cstring>
 #include <utility>
 
+#include "base/errors.hpp"
 #include "exact/rational.hpp"
-#include "spline/errors.hpp"
+#include "region_helpers.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
 #include "vrep/boolean.hpp"
@@ -25,7 +26,6 @@
 #include "vrep/trimmed.hpp"
 #include "vrep/validate.hpp"
 #include "vrep/vmodel.hpp"
-#include "region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -116,7 +116,7 @@ BSpline<R> figure_1b() {
 /// witnesses whose independent determinants are 0 or of opposite signs.
 bool certified_singular_with_witnesses(const BSpline<R>& V) {
   const auto rep = certify_regularity(V);
-  if (rep.verdict != Regularity::singular || rep.point.size() != 3) return false;
+  if (!rep.verdict.is_refuted() || rep.point.size() != 3) return false;
   const R a = det_at(V, rep.point);
   if (rep.other.empty()) return a == 0;
   const R b = det_at(V, rep.other);
@@ -148,7 +148,7 @@ const TrimmedTopology<R>::Surface& face_surface(const TrimmedTopology<R>& t, int
 }
 
 /// A trimmed model whose two contact halves have different piece counts (a region written by hand,
-/// larger than its cells, as docs/vrep.md says documents must not be): A = [0,1]^3; B's trivariate
+/// larger than its cells, as docs/vrep/model.md says documents must not be): A = [0,1]^3; B's trivariate
 /// [1/2,2] x [0,1]^2 trimmed to x >= 1, y <= 1/3; the region A u [1,2]x[0,1/3]x[0,1] u
 /// [1,2]x[2/3,1]x[0,1]. A's face x = 1 has the model on its other side in 2 pieces (y <= 1/3,
 /// y >= 2/3), B's surface x = 1 in 1 (y <= 1/3, against A). One set cannot have 2 and 1 pieces:
@@ -228,7 +228,7 @@ TEST_CASE("vrep planted: regularity read from the corners alone certifies a fold
   {
     ScopedPlant off(Plant::none);
     const auto rep = certify_regularity(V);
-    REQUIRE(rep.verdict == Regularity::singular);
+    REQUIRE(rep.verdict.is_refuted());
     REQUIRE_FALSE(rep.other.empty());
     CHECK(det_at(V, rep.point) * det_at(V, rep.other) < 0);  // the witnesses, confirmed
     CHECK_THROWS_AS(validate_cells({V}, {"fold"}, "vmodel"), ValidationError);
@@ -237,7 +237,7 @@ TEST_CASE("vrep planted: regularity read from the corners alone certifies a fold
   {
     ScopedPlant on(Plant::regularity_corners_only);
     const auto rep = certify_regularity(V);
-    CHECK(rep.verdict == Regularity::regular);  // wrong: det J(3/4, 1/2, 1/2) = -9/4 < 0
+    CHECK(rep.verdict.is_proved());  // wrong: det J(3/4, 1/2, 1/2) = -9/4 < 0
     CHECK(rep.sign == 1);
     CHECK_NOTHROW(validate_cells({V}, {"fold"}, "vmodel"));  // the fold passes validation
     // Figure 1 b of the ordinary test (test_trivariate.cpp) still comes out singular: its sign
@@ -251,13 +251,13 @@ TEST_CASE("vrep planted: regularity with the upper-u subdivision boxes dropped c
   const auto V = folded_cubic();  // folded only for 3/5 < u < 9/10: inside the dropped half
   {
     ScopedPlant off(Plant::none);
-    CHECK(certify_regularity(V).verdict == Regularity::singular);
+    CHECK(certify_regularity(V).verdict.is_refuted());
     CHECK(certified_singular_with_witnesses(V));
   }
   {
     ScopedPlant on(Plant::regularity_drops_upper_u);
     const auto rep = certify_regularity(V);
-    CHECK(rep.verdict == Regularity::regular);  // wrong: det J(3/4, 1/2, 1/2) = -9/4
+    CHECK(rep.verdict.is_proved());  // wrong: det J(3/4, 1/2, 1/2) = -9/4
     CHECK(det_at(V, {R(3, 4), R(1, 2), R(1, 2)}) < 0);
     CHECK_FALSE(certified_singular_with_witnesses(V));
     CHECK_NOTHROW(validate_cells({V}, {"fold"}, "vmodel"));
@@ -271,13 +271,13 @@ TEST_CASE("vrep planted: a flipped sign of det J is refuted by the kernel's deri
   {
     ScopedPlant off(Plant::none);
     const auto rep = certify_regularity(C);
-    CHECK(rep.verdict == Regularity::regular);
+    CHECK(rep.verdict.is_proved());
     CHECK(rep.sign == 1);
   }
   {
     ScopedPlant on(Plant::regularity_sign_flipped);
     const auto rep = certify_regularity(C);
-    CHECK(rep.verdict == Regularity::regular);
+    CHECK(rep.verdict.is_proved());
     CHECK(rep.sign == -1);  // wrong: det J = 6 > 0 at the centre
     // The ordinary test (the identity cube has sign +1, test_trivariate.cpp) fails.
     CHECK_FALSE(rep.sign * det_at(C, centre) > 0);

@@ -8,8 +8,9 @@
 #include <functional>
 #include <map>
 
+#include "base/errors.hpp"
 #include "exact/rational.hpp"
-#include "spline/errors.hpp"
+#include "region_helpers.hpp"
 #include "spline/evaluate.hpp"
 #include "tests/helpers.hpp"
 #include "vrep/boolean.hpp"
@@ -17,7 +18,6 @@
 #include "vrep/trimmed.hpp"
 #include "vrep/trimmed_impl.hpp"
 #include "vrep/vmodel.hpp"
-#include "region_helpers.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -104,10 +104,10 @@ Json report_to_json(const RegularityReport<F>& r) {
     for (const auto& v : x) a.push_back(ArithTraits<F>::to_json(v));
     return a;
   };
-  Json j{{"verdict", to_string(r.verdict)}, {"reason", r.reason}, {"levels", r.levels}, {"boxes", r.boxes}};
-  if (r.verdict == Regularity::regular) j["sign"] = r.sign;
+  Json j{{"verdict", regularity_name(r.verdict)}, {"reason", r.verdict.reason()}, {"levels", r.levels}, {"boxes", r.boxes}};
+  if (r.verdict.is_proved()) j["sign"] = r.sign;
   if (!r.point.empty()) j["point"] = point(r.point);
-  if (r.verdict == Regularity::singular) {
+  if (r.verdict.is_refuted()) {
     j["det_numerator_at_point"] = ArithTraits<F>::to_json(r.value);
     if (!r.other.empty()) {
       j["other"] = point(r.other);

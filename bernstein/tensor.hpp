@@ -1,6 +1,7 @@
-// Scalar tensor-product polynomials in Bernstein form on the unit box [0, 1]^n: the one home of
-// their products, derivatives, de Casteljau splits and values (used by composition, the V-rep's
-// regularity and trimming, verification and the subdivision solver).
+// Scalar tensor-product polynomials in Bernstein form on the unit box [0, 1]^n, the public type
+// Bernstein<T>: the one home of their products, derivatives, de Casteljau splits and values (used
+// by composition, the V-rep's regularity and trimming, verification, the subdivision solver and
+// the cutting checks). Boxes of them are examined by the engine of bernstein/subdivide.hpp.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -13,15 +14,17 @@
 #include "spline/bspline.hpp"
 
 namespace splinex {
-namespace detail {
 
 /// A scalar tensor-product Bernstein polynomial on [0, 1]^n: degrees per direction, coefficients
 /// with direction 0 fastest.
 template <class T>
-struct Bern {
+struct Bernstein {
   std::vector<int> deg;
   std::vector<T> c;
 };
+
+/// The index arithmetic of coefficient arrays and the tensor binomials.
+namespace detail {
 
 inline std::size_t tensor_size(const std::vector<int>& deg) {
   std::size_t s = 1;
@@ -92,23 +95,25 @@ const std::vector<T>& cached_tensor_binomials(const std::vector<int>& deg) {
   return cache.emplace(std::move(key), tensor_binomials<T>(deg)).first->second;
 }
 
+}  // namespace detail
+
 template <class T>
-Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
+Bernstein<T> bern_product(const Bernstein<T>& f, const Bernstein<T>& g) {
   const std::size_t k = f.deg.size();
-  Bern<T> h;
+  Bernstein<T> h;
   h.deg.resize(k);
   for (std::size_t l = 0; l < k; ++l) h.deg[l] = f.deg[l] + g.deg[l];
-  h.c.assign(tensor_size(h.deg), T(0));
+  h.c.assign(detail::tensor_size(h.deg), T(0));
   /// Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
   /// by binom(a+b, K).
-  auto scaled = [&](const Bern<T>& p) {
+  auto scaled = [&](const Bernstein<T>& p) {
     std::vector<T> s(p.c);
-    const std::vector<T>& b = cached_tensor_binomials<T>(p.deg);
+    const std::vector<T>& b = detail::cached_tensor_binomials<T>(p.deg);
     for (std::size_t i = 0; i < s.size(); ++i) s[i] *= b[i];
     return s;
   };
   const std::vector<T> fs = scaled(f), gs = scaled(g);
-  const std::vector<std::size_t> fo = tensor_offsets(f.deg, h.deg), go = tensor_offsets(g.deg, h.deg);
+  const std::vector<std::size_t> fo = detail::tensor_offsets(f.deg, h.deg), go = detail::tensor_offsets(g.deg, h.deg);
   T t(0);  // one scratch product: t = fs[a]; t *= gs[b] rounds as fs[a] * gs[b] does
   for (std::size_t a = 0; a < fs.size(); ++a) {
     if (fs[a] == T(0)) continue;
@@ -118,19 +123,19 @@ Bern<T> bern_product(const Bern<T>& f, const Bern<T>& g) {
       h.c[fo[a] + go[b]] += t;
     }
   }
-  const std::vector<T>& hb = cached_tensor_binomials<T>(h.deg);
+  const std::vector<T>& hb = detail::cached_tensor_binomials<T>(h.deg);
   for (std::size_t i = 0; i < h.c.size(); ++i) h.c[i] /= hb[i];
   return h;
 }
 
 /// a + b and a - b (same degrees).
 template <class T>
-Bern<T> bern_add(Bern<T> a, const Bern<T>& b) {
+Bernstein<T> bern_add(Bernstein<T> a, const Bernstein<T>& b) {
   for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] += b.c[i];
   return a;
 }
 template <class T>
-Bern<T> bern_sub(Bern<T> a, const Bern<T>& b) {
+Bernstein<T> bern_sub(Bernstein<T> a, const Bernstein<T>& b) {
   for (std::size_t i = 0; i < a.c.size(); ++i) a.c[i] -= b.c[i];
   return a;
 }
@@ -138,11 +143,11 @@ Bern<T> bern_sub(Bern<T> a, const Bern<T>& b) {
 /// a + b (or a - b with `minus`) of any degrees: each raised to the larger degree per direction
 /// (times the polynomial 1 in Bernstein form of the difference) first.
 template <class T>
-Bern<T> bern_combine(const Bern<T>& a, const Bern<T>& b, bool minus) {
+Bernstein<T> bern_combine(const Bernstein<T>& a, const Bernstein<T>& b, bool minus) {
   std::vector<int> deg(a.deg.size());
   for (std::size_t l = 0; l < deg.size(); ++l) deg[l] = std::max(a.deg[l], b.deg[l]);
-  auto up = [&](const Bern<T>& x) {
-    Bern<T> one;
+  auto up = [&](const Bernstein<T>& x) {
+    Bernstein<T> one;
     one.deg.resize(deg.size());
     bool same = true;
     for (std::size_t l = 0; l < deg.size(); ++l) {
@@ -150,7 +155,7 @@ Bern<T> bern_combine(const Bern<T>& a, const Bern<T>& b, bool minus) {
       same = same && one.deg[l] == 0;
     }
     if (same) return x;
-    one.c.assign(tensor_size(one.deg), T(1));
+    one.c.assign(detail::tensor_size(one.deg), T(1));
     return bern_product(x, one);
   };
   return minus ? bern_sub(up(a), up(b)) : bern_add(up(a), up(b));
@@ -159,22 +164,22 @@ Bern<T> bern_combine(const Bern<T>& a, const Bern<T>& b, bool minus) {
 /// d/dt_l on [0, 1]^n: degree deg_l - 1, coefficients deg_l (c_{i+1} - c_i). Degree 0 gives the
 /// zero polynomial of degree 0.
 template <class T>
-Bern<T> bern_derivative(const Bern<T>& b, int l) {
-  Bern<T> out;
+Bernstein<T> bern_derivative(const Bernstein<T>& b, int l) {
+  Bernstein<T> out;
   out.deg = b.deg;
   if (b.deg[l] == 0) {
     out.c.assign(b.c.size(), T(0));
     return out;
   }
   out.deg[l] -= 1;
-  out.c.resize(tensor_size(out.deg));
-  const std::size_t n = b.deg.size(), stride = tensor_stride(b.deg, static_cast<int>(l));
+  out.c.resize(detail::tensor_size(out.deg));
+  const std::size_t n = b.deg.size(), stride = detail::tensor_stride(b.deg, static_cast<int>(l));
   std::vector<int> idx(n);
   const T p(b.deg[l]);
   for (std::size_t i = 0; i < out.c.size(); ++i) {
-    unflatten(i, out.deg, idx);
+    detail::unflatten(i, out.deg, idx);
     std::size_t src = 0;
-    for (std::size_t k = 0; k < n; ++k) src += idx[k] * tensor_stride(b.deg, static_cast<int>(k));
+    for (std::size_t k = 0; k < n; ++k) src += idx[k] * detail::tensor_stride(b.deg, static_cast<int>(k));
     out.c[i] = p * (b.c[src + stride] - b.c[src]);
   }
   return out;
@@ -183,10 +188,10 @@ Bern<T> bern_derivative(const Bern<T>& b, int l) {
 /// The two parts of b at t_l = t (0 < t < 1), each reparametrized onto [0, 1] in direction l (de
 /// Casteljau along every line of direction l).
 template <class T>
-std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
-  Bern<T> L = b, R = b;
+std::pair<Bernstein<T>, Bernstein<T>> bern_split(const Bernstein<T>& b, int l, const T& t) {
+  Bernstein<T> L = b, R = b;
   const int p = b.deg[l];
-  const std::size_t n = b.deg.size(), stride = tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
+  const std::size_t n = b.deg.size(), stride = detail::tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
   std::vector<T> w(p + 1);
   const T s = T(1) - t, two(2);
   // At t = 1/2 one sum and one halving per step (the same value: halving is exact in binary
@@ -196,9 +201,9 @@ std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
   auto reduced = b.deg;
   reduced[l] = 0;
   for (std::size_t line = 0; line < lines; ++line) {
-    unflatten(line, reduced, idx);
+    detail::unflatten(line, reduced, idx);
     std::size_t base = 0;
-    for (std::size_t k = 0; k < n; ++k) base += idx[k] * tensor_stride(b.deg, static_cast<int>(k));
+    for (std::size_t k = 0; k < n; ++k) base += idx[k] * detail::tensor_stride(b.deg, static_cast<int>(k));
     for (int i = 0; i <= p; ++i) w[i] = b.c[base + i * stride];
     for (int r = 0; r <= p; ++r) {
       L.c[base + r * stride] = w[0];
@@ -217,7 +222,7 @@ std::pair<Bern<T>, Bern<T>> bern_split(const Bern<T>& b, int l, const T& t) {
 
 /// b restricted to [a, c] in direction l (0 <= a < c <= 1), reparametrized onto [0, 1].
 template <class T>
-Bern<T> bern_restrict(Bern<T> b, int l, const T& a, const T& c) {
+Bernstein<T> bern_restrict(Bernstein<T> b, int l, const T& a, const T& c) {
   if (T(0) < a) b = bern_split(b, l, a).second;
   const T top = (c - a) / (T(1) - a);  // c in the coordinates of [a, 1]
   if (top < T(1)) b = bern_split(b, l, top).first;
@@ -226,16 +231,16 @@ Bern<T> bern_restrict(Bern<T> b, int l, const T& a, const T& c) {
 
 /// b with direction l fixed at its end (side 0: t_l = 0, side 1: t_l = 1): one direction fewer.
 template <class T>
-Bern<T> bern_face(const Bern<T>& b, int l, int side) {
-  Bern<T> out;
+Bernstein<T> bern_face(const Bernstein<T>& b, int l, int side) {
+  Bernstein<T> out;
   const std::size_t n = b.deg.size();
   for (std::size_t k = 0; k < n; ++k)
     if (static_cast<int>(k) != l) out.deg.push_back(b.deg[k]);
   if (out.deg.empty()) out.deg.push_back(0);  // a constant
-  out.c.resize(tensor_size(out.deg));
+  out.c.resize(detail::tensor_size(out.deg));
   std::vector<int> idx(n), odx(out.deg.size());
   for (std::size_t i = 0; i < b.c.size(); ++i) {
-    unflatten(i, b.deg, idx);
+    detail::unflatten(i, b.deg, idx);
     if (idx[l] != (side ? b.deg[l] : 0)) continue;
     std::size_t o = 0, s = 1;
     for (std::size_t k = 0; k < n; ++k) {
@@ -251,14 +256,14 @@ Bern<T> bern_face(const Bern<T>& b, int l, int side) {
 /// b with direction l fixed at t in [0, 1] (one direction fewer): the face at an end, else the
 /// face of the part above t.
 template <class T>
-Bern<T> bern_fix(const Bern<T>& b, int l, const T& t) {
+Bernstein<T> bern_fix(const Bernstein<T>& b, int l, const T& t) {
   if (T(0) < t && t < T(1)) return bern_face(bern_split(b, l, t).second, l, 0);
   return bern_face(b, l, t == T(0) ? 0 : 1);
 }
 
 /// The value at x in [0, 1]^n (de Casteljau, direction by direction).
 template <class T>
-T bern_value(const Bern<T>& b, const std::vector<T>& x) {
+T bern_value(const Bernstein<T>& b, const std::vector<T>& x) {
   std::vector<T> cur = b.c;
   std::vector<int> deg = b.deg;
   for (std::size_t l = 0; l < deg.size(); ++l) {
@@ -282,7 +287,7 @@ T bern_value(const Bern<T>& b, const std::vector<T>& x) {
 /// +1 when every coefficient is > 0, -1 when every one is < 0, else 0 (the convex hull property:
 /// a definite sign is a certificate that b has no zero on the box).
 template <class T>
-int bern_sign(const Bern<T>& b) {
+int bern_sign(const Bernstein<T>& b) {
   bool pos = true, neg = true;
   for (const T& x : b.c) {
     pos = pos && T(0) < x;
@@ -293,7 +298,7 @@ int bern_sign(const Bern<T>& b) {
 
 /// The smallest and largest coefficient: a range of b's values on the box.
 template <class T>
-std::pair<T, T> bern_range(const Bern<T>& b) {
+std::pair<T, T> bern_range(const Bernstein<T>& b) {
   T lo = b.c[0], hi = b.c[0];
   for (const T& x : b.c) {
     if (x < lo) lo = x;
@@ -306,8 +311,8 @@ std::pair<T, T> bern_range(const Bern<T>& b) {
 /// coordinate times the weight (w P_c; P_c for a polynomial spline), c == q the weight (1 for a
 /// polynomial spline).
 template <class T>
-Bern<T> bern_coordinate(const BSpline<T>& piece, int c) {
-  Bern<T> b;
+Bernstein<T> bern_coordinate(const BSpline<T>& piece, int c) {
+  Bernstein<T> b;
   b.deg = piece.degrees;
   const std::size_t n = piece.size(), q = static_cast<std::size_t>(piece.q);
   b.c.resize(n);
@@ -318,5 +323,4 @@ Bern<T> bern_coordinate(const BSpline<T>& piece, int c) {
   return b;
 }
 
-}  // namespace detail
 }  // namespace splinex

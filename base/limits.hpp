@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <string>
 
-#include "spline/errors.hpp"
+#include "base/errors.hpp"
 
 namespace splinex {
 
