@@ -6,26 +6,26 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "experiments/svg_plot.hpp"
+#include "experiments/vrep_figures.hpp"
+#include "experiments/vrep_ssi.hpp"
+#include "experiments/vrep_teapot.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
 #include "io/trimmed_io.hpp"
 #include "io/vmodel_io.hpp"
 #include "io/vtk_io.hpp"
-#include "experiments/vrep_figures.hpp"
-#include "experiments/svg_plot.hpp"
-#include "experiments/vrep_ssi.hpp"
-#include "experiments/vrep_teapot.hpp"
 #include <fstream>
-#include "vrep/blend.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/validate.hpp"
+#include "vrep/boolean/boolean.hpp"
 #include "vrep/io/api.hpp"
 #include "vrep/io/documents.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/validate.hpp"
+#include "vrep/primitives/blend.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::app {
 
@@ -125,7 +125,7 @@ struct PrimitiveOptions {
   int degree = 3, pieces = 4;
 };
 
-/// A primitive's cells and its exact region (vrep/trimmed.hpp) where it has one: the sphere of
+/// A primitive's cells and its exact region (vrep/trimmed/trimmed.hpp) where it has one: the sphere of
 /// seven cells has its piecewise one for patches of degree <= 4 (sphere_region: leaves of degree
 /// 2 degree <= 8) and at most 11 pieces, in exact arithmetic; the singular trivariates are not
 /// offered for Booleans.

@@ -10,17 +10,17 @@
 #include <map>
 #include <type_traits>
 
-#include "float/mpfr.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/freeform.hpp"
-#include "fixtures/teapot_vmodel.hpp"
-#include "vrep/primitives.hpp"
 #include "experiments/vrep_ssi.hpp"
+#include "fixtures/teapot_vmodel.hpp"
+#include "float/mpfr.hpp"
 #include "float/rounding.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/ssi.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/boolean/ssi.hpp"
+#include "vrep/freeform/freeform.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 

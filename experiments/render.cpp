@@ -9,7 +9,7 @@
 
 #include "float/mpfr.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/trivariate.hpp"
+#include "vrep/model/trivariate.hpp"
 
 namespace splinex {
 

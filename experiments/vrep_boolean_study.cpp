@@ -15,12 +15,12 @@
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_figures.hpp"
 #include "float/rounding.hpp"
-#include "vrep/blend.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/nef_check.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/boolean/nef_check.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/blend.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 
@@ -568,7 +568,7 @@ void vrep_boolean_section(ReportContext& ctx) {
     md << "### Figure 6: Eq. 2's distance blend, certified\n\n"
        << "V1 = [0,2]^2 x [0,10] (red) and V2 = [1,3]^2 x [-1,11] (blue), the slice z = 5. In V1 n V2 the colour is "
           "(d1 A1 + d2 A2) / (d1 + d2), d1 the distance to the part of V1's boundary inside V2, d2 the other way: squared "
-          "distances exact, their roots and the blend enclosed by MPFI at 128 bits (`vrep/blend.hpp`). Over "
+          "distances exact, their roots and the blend enclosed by MPFI at 128 bits (`vrep/primitives/blend.hpp`). Over "
        << points << " sample points the widest enclosure is " << sci(to_double(widest))
        << " wide; where d1 or d2 is exactly 0 (the interfaces) the value is exactly A2 or A1, which is the C^0 continuity "
           "of Eq. 2 across them, checked exactly; "

@@ -1,9 +1,9 @@
 #include "experiments/vrep_figures.hpp"
 
 #include "experiments/render.hpp"
-#include "spline/evaluate.hpp"
 #include "float/rounding.hpp"
-#include "vrep/regularity.hpp"
+#include "spline/evaluate.hpp"
+#include "vrep/model/regularity.hpp"
 #include <sstream>
 
 namespace splinex {

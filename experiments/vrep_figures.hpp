@@ -7,7 +7,7 @@
 #include <string>
 
 #include "exact/rational.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 
@@ -15,7 +15,7 @@ std::string vmodel_svg(const VModel<Rational>& M, double explode, const std::str
 
 }  // namespace splinex
 
-#include "vrep/trimmed.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 

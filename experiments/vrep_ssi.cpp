@@ -178,7 +178,7 @@ void vrep_ssi_section(ReportContext& ctx) {
   std::ostringstream md, csv;
   md << "## Freeform boundaries: the teapot's handle and spout meet its body (float SSI, judged exactly)\n\n"
         "Boundaries without an implicit form (papers/002 Figures 10 and 14: the teapot's handle and body) are intersected the way a CAD "
-        "kernel does it, in double (`vrep/ssi.hpp`: seeds from a 48 x 48 grid of cells per surface whose bounding boxes overlap, Newton, "
+        "kernel does it, in double (`vrep/boolean/ssi.hpp`: seeds from a 48 x 48 grid of cells per surface whose bounding boxes overlap, Newton, "
         "then marching with a chord `step` and a Newton corrector to `tolerance`, on the exact data rounded to double). Every computed "
         "point and every midpoint of the polylines' segments (the trimming curves between the points, in both parameter planes) is then "
         "judged against the exact surfaces: the gap |S1(u,v) - S2(s,t)| exactly, and a **certificate**: Krawczyk's test in exact "

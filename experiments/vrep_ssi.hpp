@@ -1,4 +1,4 @@
-// The float surface-surface intersection judged exactly (vrep/ssi.hpp): one run's numbers, its
+// The float surface-surface intersection judged exactly (vrep/boolean/ssi.hpp): one run's numbers, its
 // figure, and the report section on the teapot's handle and body (papers/002 Figures 10 and 14).
 #pragma once
 #include <string>
@@ -6,7 +6,7 @@
 
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/ssi.hpp"
+#include "vrep/boolean/ssi.hpp"
 
 namespace splinex {
 

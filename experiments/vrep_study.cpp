@@ -23,10 +23,10 @@
 #include "float/rounding.hpp"
 #include "io/json_io.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
 
 namespace splinex {
 
@@ -241,7 +241,7 @@ void vrep_section(ReportContext& ctx) {
   md << "### The sphere of seven cells: how far its patches are from the sphere\n\n"
      << "No cube-sphere patch has rational coefficients (its corners are (+-1, +-1, +-1)/sqrt 3), so the patches are "
         "exact in direction and approximate in radius: (r s, r t, r, P(s, t)) with P the tensor spline interpolating "
-        "sqrt(1 + s^2 + t^2) (vrep/primitives.hpp). `bound` is certified (Bernstein coefficients, exact): "
+        "sqrt(1 + s^2 + t^2) (vrep/primitives/primitives.hpp). `bound` is certified (Bernstein coefficients, exact): "
         "| |x|^2 / r^2 - 1 | <= bound on the whole patch; `witness` is the largest exact value of it at 17 x 17 "
         "parameters, so the truth lies between them. The default is degree 3 with 4 pieces.\n\n"
         "| degree | pieces | bound | witness |\n|---|---|---|---|\n";

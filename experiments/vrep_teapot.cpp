@@ -16,7 +16,7 @@
 #include "fixtures/teapot_vmodel.hpp"
 #include "float/rounding.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean.hpp"
+#include "vrep/boolean/boolean.hpp"
 #include "vrep/io/documents.hpp"
 
 namespace splinex {
@@ -254,7 +254,7 @@ void vrep_teapot_section(ReportContext& ctx) {
         "so that nothing of handle or spout pokes into the pot: (body + handle + spout) - cavity. The rim's lip and the spout's tip "
         "curl over, and built this way they fold (det J changes sign: certified by two exact values and refused), so they are left "
         "out. No solid has an implicit form, so each cell is trimmed by the other solids "
-        "directly (`vrep/freeform.hpp`): its parameter boxes are halved until their images' bounding boxes miss the other solid's "
+        "directly (`vrep/freeform/freeform.hpp`): its parameter boxes are halved until their images' bounding boxes miss the other solid's "
         "boundary pieces (which are halved alongside), and each connected group of such clear boxes is classified by one point query, "
         "T(u, v, w) = x solved by the certified solver. Exact arithmetic certifies the kinds, the volume enclosures and a lower bound on "
         "each cell's components; double runs the same steps in floats. "

@@ -1,5 +1,5 @@
 // The teapot's V-model (papers/002 Figure 14, Table 1's teapot row), built exactly from trivariates
-// that have no implicit form (vrep/freeform.hpp on fixtures/teapot_vmodel.hpp's solids): the body
+// that have no implicit form (vrep/freeform/freeform.hpp on fixtures/teapot_vmodel.hpp's solids): the body
 // shell, the solid handle and spout, and the cavity subtracted from them. One run per arithmetic
 // (exact: certified; double: the same steps in floats), its figure and its ParaView file.
 #pragma once
@@ -10,7 +10,7 @@
 
 #include "exact/rational.hpp"
 #include "io/json_io.hpp"
-#include "vrep/freeform.hpp"
+#include "vrep/freeform/freeform.hpp"
 
 namespace splinex {
 

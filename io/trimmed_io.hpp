@@ -1,4 +1,4 @@
-// Implicit regions and trimmed V-models as JSON (vrep/trimmed.hpp), read exactly.
+// Implicit regions and trimmed V-models as JSON (vrep/trimmed/trimmed.hpp), read exactly.
 //   region:  {"leaf": [[c, a, b, e], ...], "label": "..."}   g = sum c x^a y^b z^e, the set g >= 0
 //                                                            (c a number: integer, decimal or p/q text)
 //          | {"all": [region, ...]} | {"any": [region, ...]} | {"not": region}
@@ -19,7 +19,7 @@
 #include <string>
 
 #include "io/json_io.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 

@@ -13,15 +13,15 @@
 //    "topology": {...}}                     written for the reader's information; ignored on input
 // Entity attributes are addressed by a cell's face, edge or corner and land on the V-surface,
 // V-curve or V-point that is there after gluing.
-// Reading glues the cells' trivariates exactly (vrep/vmodel.hpp), so the topology is always the one
+// Reading glues the cells' trivariates exactly (vrep/model/vmodel.hpp), so the topology is always the one
 // of the geometry; a "topology" given in the input is not trusted. Unknown fields are refused.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "io/json_io.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 

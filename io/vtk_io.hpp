@@ -12,7 +12,7 @@
 #include <array>
 #include <string>
 
-#include "vrep/vmodel.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 

@@ -3,13 +3,13 @@
 #include "float/rounding.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean_impl.hpp"
-#include "vrep/enclosure_impl.hpp"
-#include "vrep/primitives_impl.hpp"
-#include "vrep/regularity_impl.hpp"
-#include "vrep/trimmed_impl.hpp"
-#include "vrep/trivariate_impl.hpp"
-#include "vrep/vmodel_impl.hpp"
+#include "vrep/boolean/boolean_impl.hpp"
+#include "vrep/model/regularity_impl.hpp"
+#include "vrep/model/trivariate_impl.hpp"
+#include "vrep/model/vmodel_impl.hpp"
+#include "vrep/primitives/primitives_impl.hpp"
+#include "vrep/trimmed/enclosure_impl.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 

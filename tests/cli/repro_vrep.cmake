@@ -36,7 +36,7 @@ cli_test(repro_vrep_torus_undecided 0 [=["verdict": "undecided: overlap of vmode
 cli_test(repro_vrep_cylinder_valid 0 [=["verdict": "valid in what was checked. not checked: partial edge and vertex contacts between curved cells"]=] sh -c "${CLI} vrep primitive cylinder | ${CLI} vrep info -")
 
 # 4. A trimmed document's category other than "A", "both", "B" or "": a typed error naming the field
-#    (io/trimmed_io.cpp when reading, vrep/validate.hpp for every trimmed model).
+#    (io/trimmed_io.cpp when reading, vrep/model/validate.hpp for every trimmed model).
 cli_test(repro_vrep_category_volume 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4_b.json && ${CLI} vrep boolean union ${RW}/rv4_a.json ${RW}/rv4_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' > ${RW}/rv4_z.json && ${CLI} vrep volume ${RW}/rv4_z.json")
 cli_test(repro_vrep_category_classify 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4c_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4c_b.json && ${CLI} vrep boolean union ${RW}/rv4c_a.json ${RW}/rv4c_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' | ${CLI} vrep classify - --at 1/2,1/2,1/2")
 cli_test(repro_vrep_category_boolean 2 [=[^splinex: error: .*cells\[[0-9]+\].*\.category: .*"Z"]=] sh -c "${CLI} vrep primitive box --lo 0,0,0 --hi 2,1,1 > ${RW}/rv4b_a.json && ${CLI} vrep primitive box --lo 1,0,0 --hi 2,2,1 > ${RW}/rv4b_b.json && ${CLI} vrep boolean union ${RW}/rv4b_a.json ${RW}/rv4b_b.json --trim always | sed 's/\"category\":\"A\"/\"category\":\"Z\"/' > ${RW}/rv4b_z.json && ${CLI} vrep boolean union ${RW}/rv4b_z.json ${RW}/rv4b_a.json")
@@ -76,7 +76,7 @@ cli_test(bad_repro_vrep_volume_rel_width 2 [=[^splinex: error: rel-width: is neg
 cli_test(bad_repro_vrep_volume_rel_width_text 2 [=[^splinex: error: rel-width: ]=] sh -c "${CLI} vrep primitive box | ${CLI} vrep volume - --rel-width one")
 
 # 7. The sphere of seven cells in Booleans (issue 47 item 5): `vrep primitive sphere` writes its exact
-#    piecewise region (vrep/trimmed.hpp: sphere_region), so cuts through it are trimmed cells. The
+#    piecewise region (vrep/trimmed/trimmed.hpp: sphere_region), so cuts through it are trimmed cells. The
 #    reproducer's two cases: the sphere and the half-space z >= 0 (2 pi / 3 = 2.0944 for the round
 #    sphere; the cube sphere's radius is within 1e-4), the sphere and a box apart from it (4.19 + 1);
 #    also a box through it (the cap x >= 1/4 of the round sphere: 81 pi / 192 = 1.3254) and the unit

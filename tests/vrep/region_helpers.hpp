@@ -3,7 +3,7 @@
 #include <array>
 
 #include "exact/rational.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::test {
 

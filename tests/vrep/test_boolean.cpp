@@ -3,13 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
-#include "tests/helpers.hpp"
 #include "spline/kernel.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/nef_check.hpp"
-#include "vrep/blend.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/vmodel.hpp"
+#include "tests/helpers.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/boolean/nef_check.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/blend.hpp"
+#include "vrep/primitives/primitives.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -9,11 +9,11 @@
 #include "exact/rational.hpp"
 #include "fixtures/teapot.hpp"
 #include "fixtures/teapot_vmodel.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/freeform.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trivariate.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/freeform/freeform.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -1,5 +1,5 @@
 // Planted bugs for every certificate of V-rep (issue 47, "Prove it"): for each test-only plant of
-// vrep/planted.hpp, an input that reaches the mutated branch, the wrong certified answer the plant
+// vrep/model/planted.hpp, an input that reaches the mutated branch, the wrong certified answer the plant
 // gives (detected independently: exact point values of det J from the kernel's derivatives, exact
 // point classification, hand counts and closed forms of chi), and the right answer with it off.
 // Each case also runs the check of an ordinary test under the plant and shows that it fails.
@@ -19,13 +19,13 @@
 #include "region_helpers.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/validate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/validate.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -1,4 +1,4 @@
-// The exact pieces of a trimmed cell's part of each face of its domain (issue 18; vrep/region_graph.cpp,
+// The exact pieces of a trimmed cell's part of each face of its domain (issue 18; vrep/topology/region_graph.cpp,
 // reported by trimmed_topology as Surface::pieces): closed forms (slabs, holes, disks that overlap or
 // not, a face cut in four) and random disk arrangements on a face against an independent count (a
 // flood fill of two sampling grids, used only where the arrangement is far from tangencies).
@@ -9,9 +9,9 @@
 #include <random>
 
 #include "exact/rational.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
 #include "region_helpers.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

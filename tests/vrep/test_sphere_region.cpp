@@ -7,15 +7,15 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
-#include "spline/evaluate.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
 #include "io/trimmed_io.hpp"
+#include "spline/evaluate.hpp"
 #include "tests/vrep/region_helpers.hpp"
 #include "tests/vrep/trimmed_fixtures.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -1,4 +1,4 @@
-// The float surface-surface intersection and its exact judge (vrep/ssi.hpp): a plane and a
+// The float surface-surface intersection and its exact judge (vrep/boolean/ssi.hpp): a plane and a
 // paraboloid meeting in the circle u^2 + v^2 = 1/4 (the oracle), certificates that must bound the
 // true distance, and refusals where nothing can be certified.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include "exact/rational.hpp"
 #include "float/rounding.hpp"
 #include "spline/kernel.hpp"
-#include "vrep/ssi.hpp"
+#include "vrep/boolean/ssi.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -7,13 +7,13 @@
 #include <array>
 
 #include "exact/rational.hpp"
-#include "tests/helpers.hpp"
 #include "spline/kernel.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
+#include "tests/helpers.hpp"
 #include "tests/vrep/trimmed_fixtures.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

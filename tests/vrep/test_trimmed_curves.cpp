@@ -6,9 +6,9 @@
 #include <random>
 
 #include "exact/rational.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
 #include "region_helpers.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -7,12 +7,12 @@
 #include <random>
 
 #include "exact/rational.hpp"
+#include "region_helpers.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
-#include "vrep/vmodel.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "region_helpers.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -13,11 +13,11 @@
 #include "region_helpers.hpp"
 #include "spline/evaluate.hpp"
 #include "tests/helpers.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -5,8 +5,8 @@
 
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trivariate.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/trivariate.hpp"
 
 using namespace splinex;
 using splinex::test::q;

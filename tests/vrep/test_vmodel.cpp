@@ -9,13 +9,13 @@
 #include "exact/rational.hpp"
 #include "spline/insert.hpp"
 #include "spline/kernel.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/validate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/validate.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;
@@ -311,7 +311,7 @@ TEST_CASE("vmodel: faces with the same four V-curves but different surfaces are 
   CHECK(M.shared(0, 1) == "curve");
 }
 
-// Validation before use (vrep/validate.hpp; issue 47, reproducers vrep 2-4): proved defects are
+// Validation before use (vrep/model/validate.hpp; issue 47, reproducers vrep 2-4): proved defects are
 // typed errors naming the cells, what cannot be decided is said, valid models pass.
 namespace {
 

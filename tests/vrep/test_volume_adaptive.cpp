@@ -1,4 +1,4 @@
-// Adaptive certified enclosures (issue 47 item 4, vrep/enclosure_impl.hpp): the enclosures of
+// Adaptive certified enclosures (issue 47 item 4, vrep/trimmed/enclosure_impl.hpp): the enclosures of
 // volumes with closed forms contain them and reach the requested relative width within the
 // budget; an honest "not reached" when the budget is too small; the test seam's planted bugs (a
 // dropped crossing box, an upper bound lowered by one unit in its last bit) are caught by the
@@ -6,13 +6,13 @@
 #include <catch2/catch.hpp>
 
 #include "exact/rational.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "tests/vrep/trimmed_fixtures.hpp"
-#include "vrep/vmodel.hpp"
 #include "spline/factories.hpp"
 #include "tests/vrep/region_helpers.hpp"
+#include "tests/vrep/trimmed_fixtures.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 using namespace splinex;
 using R = Rational;

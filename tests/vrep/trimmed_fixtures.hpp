@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "exact/rational.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::trimmed_fixtures {
 

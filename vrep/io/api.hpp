@@ -14,9 +14,9 @@
 #include "io/json_io.hpp"
 #include "io/trimmed_io.hpp"
 #include "io/vmodel_io.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/validate.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/validate.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::vrep {
 

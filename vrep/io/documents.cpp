@@ -160,7 +160,7 @@ Json gluing_json(const TrimmedGluing<Rational>& G, const TrimmedModel<Rational>&
 }
 
 /// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
-/// regularity verdict (computed by the validation, vrep/validate.hpp), and the model's validity.
+/// regularity verdict (computed by the validation, vrep/model/validate.hpp), and the model's validity.
 Json info_document(const VModel<Rational>& M, const ValidityReport& v) {
   Json doc = vmodel_to_json(M);
   Json cells = Json::array();

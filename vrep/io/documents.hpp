@@ -7,8 +7,8 @@
 
 #include "io/json_io.hpp"
 #include "vrep/io/api.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::vrep {
 
@@ -37,7 +37,7 @@ Json report_to_json(const RegularityReport<F>& r);
 Json gluing_json(const TrimmedGluing<Rational>& G, const TrimmedModel<Rational>& M, double seconds);
 
 /// The V-model's summary: counts, Euler characteristic, invariants, per cell its neighbours and
-/// regularity verdict (computed by the validation, vrep/validate.hpp), and the model's validity.
+/// regularity verdict (computed by the validation, vrep/model/validate.hpp), and the model's validity.
 Json info_document(const VModel<Rational>& M, const ValidityReport& v);
 
 /// The boundary structure of a trimmed V-model's cells (vrep topology): per cell the exact edge

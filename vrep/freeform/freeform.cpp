@@ -1,5 +1,5 @@
-// Trimming by freeform solids (vrep/freeform.hpp), instantiated for Rational and double.
-#include "vrep/freeform.hpp"
+// Trimming by freeform solids (vrep/freeform/freeform.hpp), instantiated for Rational and double.
+#include "vrep/freeform/freeform.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,11 +14,11 @@
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
-#include "vrep/boolean_impl.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/regularity_impl.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean_impl.hpp"
+#include "vrep/model/regularity_impl.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/topology/box_components.hpp"
 
 namespace splinex {
 

@@ -1,4 +1,4 @@
-#include "vrep/blend.hpp"
+#include "vrep/primitives/blend.hpp"
 
 #include <mpfi.h>
 #include <mpfr.h>
@@ -6,7 +6,7 @@
 #include "base/errors.hpp"
 #include "base/point.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean_impl.hpp"  // vrep_detail::affine_inverse
+#include "vrep/boolean/boolean_impl.hpp"  // vrep_detail::affine_inverse
 
 namespace splinex {
 

@@ -1,8 +1,8 @@
 // The certified graph of a curve given by N - 1 polynomial equations in N unknowns (N = 2: a
 // trimming surface's trace on a face of a trivariate's domain; N = 3: two trimming surfaces
 // meeting inside it), restricted to where a region's formula depends on all of them: its arcs and
-// closed loops, cut at the points where a further leaf crosses (vrep/trimmed.hpp: trimmed_curves
-// describes the method; vrep/trimmed_curves.cpp implements it). Internal to vrep.
+// closed loops, cut at the points where a further leaf crosses (vrep/trimmed/trimmed.hpp: trimmed_curves
+// describes the method; vrep/topology/trimmed_curves.cpp implements it). Internal to vrep.
 #pragma once
 #include <array>
 #include <string>
@@ -11,7 +11,7 @@
 
 #include "bernstein/subdivide.hpp"
 #include "bernstein/tensor.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex::vrep_detail {
 
@@ -102,7 +102,7 @@ CurveCount count_curve(const CurveProblem<T, N>& problem);
 
 /// The connected pieces of the interior of {formula true} on a rectangle (the face of a
 /// trivariate's domain; `curve` unused), in its parameters, from a certified subdivision
-/// (vrep/region_graph.cpp proves the box rule): a box is resolved when the formula is decided on
+/// (vrep/topology/region_graph.cpp proves the box rule): a box is resolved when the formula is decided on
 /// it, or at most two leaves matter there and each is one arc through the box (a partial
 /// derivative of one strict sign, exactly two simple roots on the box's boundary, none at a
 /// corner) and, for two, det(grad g_k, grad g_l) has one strict sign (they cross at most once).
@@ -152,7 +152,7 @@ RegionCount retry_fractions(std::size_t max_total, Attempt&& attempt) {
 
 /// The connected pieces of the part of leaf `leaf`'s zero set where the formula depends on its
 /// sign (a trimming surface's part of the cell's boundary), in the trivariate's parameters, from a
-/// certified subdivision (vrep/surface_graph.cpp proves the box rule): a box is resolved when the
+/// certified subdivision (vrep/topology/surface_graph.cpp proves the box rule): a box is resolved when the
 /// surface misses it or does not bound there, or when {g <= 0} and {g >= 0} are contractible in it
 /// (retractions along weakly monotone directions, down to a segment or a rectangle with one closed
 /// loop), so the surface piece is a disk, at most two further leaves change whether it bounds, each

@@ -1,4 +1,4 @@
-// Trivariate constructors (vrep/trivariate.hpp): the templates, instantiated in vrep/instances.cpp.
+// Trivariate constructors (vrep/model/trivariate.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include <algorithm>
 #include <string>
@@ -9,7 +9,7 @@
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
-#include "vrep/trivariate.hpp"
+#include "vrep/model/trivariate.hpp"
 
 namespace splinex {
 

@@ -55,7 +55,7 @@
 #include "bernstein/tensor.hpp"
 #include "solve/solver.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 

@@ -1,5 +1,5 @@
 // The connected pieces of a region's part of a face of a trivariate's domain, from a certified
-// subdivision (vrep/curve_graph.hpp: count_region states the method), instantiated for Rational
+// subdivision (vrep/topology/curve_graph.hpp: count_region states the method), instantiated for Rational
 // and double.
 //
 // Why a resolved box's pieces are what this file says. In a box B (a rectangle) let C_k be the
@@ -24,12 +24,12 @@
 #include <optional>
 
 #include "base/errors.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/brackets.hpp"
-#include "vrep/curve_graph.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/model/brackets.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/topology/curve_graph.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -157,7 +157,7 @@ class RegionRun {
           fixed = true;
           continue;
         }
-        // (Planted, tests only: vrep/planted.hpp takes any number of boundary roots for one arc.)
+        // (Planted, tests only: vrep/model/planted.hpp takes any number of boundary roots for one arc.)
         if (n != 2 && !vrep_testing::is_planted(vrep_testing::Plant::region_arc_unchecked)) return 0;
         keep.push_back(l);
       }

@@ -1,4 +1,4 @@
-// The boundary structure of a trimmed cell (vrep/trimmed.hpp: trimmed_topology), instantiated for
+// The boundary structure of a trimmed cell (vrep/trimmed/trimmed.hpp: trimmed_topology), instantiated for
 // Rational and double.
 #include <algorithm>
 #include <deque>
@@ -8,10 +8,10 @@
 #include "base/errors.hpp"
 #include "solve/solver.hpp"
 #include "spline/bezier.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/curve_graph.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/topology/curve_graph.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -572,7 +572,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         truths.emplace_back();
         for (const auto& G : x.G) truths.back().push_back(coefficient_truth(G, T(0)));
       }
-      // The exact count of each leaf's curve on this face (vrep/curve_graph.hpp, in 2D).
+      // The exact count of each leaf's curve on this face (vrep/topology/curve_graph.hpp, in 2D).
       CurveProblem<T, 2> face_problem = face_curve_problem(V, pieces, d, s, edges_ids, nullptr);
       face_problem.trim = &trim;
       face_problem.options.max_boxes = std::max<std::size_t>(512, max_boxes / 2);  // per leaf and attempt
@@ -658,7 +658,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
     hi3.push_back(x.hi);
     G3.push_back(x.G);
   }
-  // The exact pieces of each trimming surface's part (vrep/curve_graph.hpp: count_surface).
+  // The exact pieces of each trimming surface's part (vrep/topology/curve_graph.hpp: count_surface).
   CurveOptions surface_options;
   surface_options.max_boxes = std::min<std::size_t>(8192, std::max<std::size_t>(512, max_boxes));
   surface_options.max_total_boxes = 3 * surface_options.max_boxes;

@@ -5,8 +5,8 @@
 #include <cstddef>
 
 #include "exact/rational.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 

@@ -1,5 +1,5 @@
 // Adaptive certified enclosures of volumes, moments and field integrals over (trimmed) cells
-// (vrep/trimmed.hpp: integral_enclosures, trimmed_volume, trimmed_moment, trimmed_field_integral);
+// (vrep/trimmed/trimmed.hpp: integral_enclosures, trimmed_volume, trimmed_moment, trimmed_field_integral);
 // the templates, instantiated in vrep/instances.cpp.
 //
 // One priority queue of parameter boxes over all cells, keyed by each box's share of the width
@@ -14,7 +14,7 @@
 //     remainder f^(6)(xi) / 6! (W - w0)^6, f^(6) > 0 decreasing so between its values at the ends
 //     of W's coefficient range, the moments int Q W^j exact (Gram matrices of Bernstein bases
 //     contracted on integers); where Q has one sign also Jensen's lower bound and the chord's upper
-//     bound (vrep/boolean.hpp's volume_enclosure), the tighter of each kept. The gap shrinks with
+//     bound (vrep/boolean/boolean.hpp's volume_enclosure), the tighter of each kept. The gap shrinks with
 //     the seventh power of the box;
 //   - cut by one trimming surface G whose sign the formula follows: where G is strictly monotone
 //     along a direction k (its derivative's Bernstein coefficients of one strict sign, |dG/ds_k| >=
@@ -42,7 +42,7 @@
 #include <queue>
 #include <type_traits>
 
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -232,7 +232,7 @@ std::pair<SBern<T>, SBern<T>> split_half(const SBern<T>& b, int d) {
   }
 }
 
-/// Integer tables for exact arithmetic (integer_binomials, tensor_binomial_integers: vrep/trimmed_impl.hpp):
+/// Integer tables for exact arithmetic (integer_binomials, tensor_binomial_integers: vrep/trimmed/trimmed_impl.hpp):
 /// the least common multiple of a row of binomials.
 inline const Integer& binomial_lcm(int n) {
   thread_local std::map<int, Integer> cache;

@@ -1,4 +1,4 @@
-// The Euler characteristic of a trimmed cell (vrep/trimmed.hpp: trimmed_euler), instantiated for
+// The Euler characteristic of a trimmed cell (vrep/trimmed/trimmed.hpp: trimmed_euler), instantiated for
 // Rational and double.
 //
 // The method: the compactly supported Euler characteristic chi_c is additive over a partition into
@@ -28,12 +28,12 @@
 #include "base/errors.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
-#include "vrep/trivariate.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/primitives/primitives.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 

@@ -50,8 +50,8 @@
 #include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 
@@ -100,7 +100,7 @@ Region<T> region_not(Region<T> r);
 template <class T>
 Region<T> region_cases(std::vector<std::pair<Region<T>, Region<T>>> cases);
 
-/// The exact regions of the primitives of vrep/primitives.hpp (in their standard placement).
+/// The exact regions of the primitives of vrep/primitives/primitives.hpp (in their standard placement).
 template <class T>
 Region<T> box_region(const std::vector<T>& lo, const std::vector<T>& hi);
 template <class T>
@@ -115,7 +115,7 @@ Region<T> torus_region(const T& R, const T& r);
 template <class T>
 std::optional<std::vector<T>> cases_cover_gap(const Region<T>& R, const std::vector<BSpline<T>>& cells, int n = 8);
 
-/// The exact point set of the sphere of seven cells (vrep/primitives.hpp: sphere_cells with the same
+/// The exact point set of the sphere of seven cells (vrep/primitives/primitives.hpp: sphere_cells with the same
 /// r, degree and pieces): any_of(the cube [-r/2, r/2]^3, cases over the six faces' cones cut into
 /// the patch's pieces). On the piece of face +z over s in [s_a, s_b], t in [t_a, t_b] (the cone
 /// x - s_a z >= 0, s_b z - x >= 0, y - t_a z >= 0, t_b z - y >= 0) the cell is z P(x/z, y/z) <= r,
@@ -130,7 +130,7 @@ template <class T>
 Region<T> ball_region(const std::array<T, 3>& c, const T& r);
 
 /// The convex planar cells' half-spaces as a region (any_of over cells of all_of over faces), if
-/// every cell has them (vrep/boolean.hpp: convex_planes).
+/// every cell has them (vrep/boolean/boolean.hpp: convex_planes).
 template <class T>
 std::optional<Region<T>> planar_region(const VModel<T>& M, const T& eps = T(0));
 
@@ -206,7 +206,7 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
                                 const TrimOptions& options = {}, const T& eps = T(0), const Limits& limits = {});
 
 /// Certified, adaptive enclosures of volumes, moments and field integrals over (trimmed) cells
-/// (vrep/enclosure_impl.hpp has the method). One priority queue of parameter boxes over all the
+/// (vrep/trimmed/enclosure_impl.hpp has the method). One priority queue of parameter boxes over all the
 /// cells: the box with the widest bounds is halved (exact de Casteljau) until the summed width is
 /// at most rel_width times the summed volumes' lower bound (each moment's: rel_width times that
 /// times its scale, the largest |coordinate| or |field component| of the control points) or the
@@ -316,7 +316,7 @@ namespace splinex {
 ///     number of its connected pieces: components of its cover that hold a certified point (a face:
 ///     a box decided in; a trimming surface: a box where the leaf's corner values have both strict
 ///     signs, every other leaf's coefficients have one strict sign, and the formula changes with
-///     the leaf), with V's own identifications joined (vrep/box_components.hpp). The cover's
+///     the leaf), with V's own identifications joined (vrep/topology/box_components.hpp). The cover's
 ///     component count is shown beside it, not certified. Collapsed faces carry no surface;
 ///   - face curves: per face and leaf, the leaf's zero set where it bounds the face's part (the
 ///     trimming surface's boundary curve on that face): proved absent, or a lower bound on its
@@ -345,7 +345,7 @@ struct TrimmedTopology {
     std::size_t at_least = 0;  // certified lower bound on its connected pieces
     std::size_t cover = 0;     // components of its cover (not certified)
     std::size_t boxes = 0, cover_boxes = 0;
-    /// Exact where decided (vrep/curve_graph.hpp: count_region for a face of the domain,
+    /// Exact where decided (vrep/topology/curve_graph.hpp: count_region for a face of the domain,
     /// count_surface for a trimming surface): the connected pieces of the interior of the part,
     /// in V's parameters (parts that touch at one point, or along a curve where a further sheet
     /// bounds, are apart); `on_identified_edges` of them reach an edge or face V identifies with
@@ -389,7 +389,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
 /// The gluing of a trimmed V-model (issue 18: Definition 3.9 for trimmed cells), exact where
 /// decided. The halves are every cell's faces of its domain (not collapsed) and its distinct
 /// trimming surfaces (proportional leaves are one surface). Per half, by certified subdivision
-/// (count_region on the face, count_surface on the surface; vrep/curve_graph.hpp), the pieces of
+/// (count_region on the face, count_surface on the surface; vrep/topology/curve_graph.hpp), the pieces of
 /// its part where the other side lies in the model (`internal`: a V-surface shared with another
 /// cell, or the cell itself across a seam) and where it does not (`boundary`). The twins:
 ///   - one trivariate, the two sides of one trimming surface (a cell and its complement in a
@@ -493,7 +493,7 @@ struct TrimmedCurves {
 template <class T>
 TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, const CurveOptions& options = {}, const Limits& limits = {});
 
-/// The Euler characteristic of a trimmed cell, exactly (vrep/trimmed_euler.cpp has the method):
+/// The Euler characteristic of a trimmed cell, exactly (vrep/topology/trimmed_euler.cpp has the method):
 /// chi_c is additive over the open cells of a box subdivision of V's parameter domain; on an open
 /// cell where every undecided leaf is monotone along one direction and the formula closed that
 /// way, chi_c is minus that of one open face (the fibres are half-open or whole intervals), where

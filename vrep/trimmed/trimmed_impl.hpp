@@ -1,4 +1,4 @@
-// Trimmed V-cells on exact implicit regions (vrep/trimmed.hpp): the templates, instantiated in
+// Trimmed V-cells on exact implicit regions (vrep/trimmed/trimmed.hpp): the templates, instantiated in
 // vrep/instances.cpp.
 #pragma once
 #include <algorithm>
@@ -13,10 +13,10 @@
 #include "spline/bezier.hpp"
 #include "spline/insert.hpp"
 #include "spline/knots.hpp"
-#include "vrep/boolean_impl.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/primitives_impl.hpp"
-#include "vrep/trimmed.hpp"
+#include "vrep/boolean/boolean_impl.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/primitives/primitives_impl.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 
@@ -1361,7 +1361,7 @@ Region<T> localized_region(const BSpline<T>& V, const Region<T>& R, const T& eps
     checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
     std::vector<Truth> t(open.size(), Truth::mixed);
     std::vector<char> alive(open.size(), 1);
-    // Planted (tests only, vrep/planted.hpp): the first Bezier piece decides for all.
+    // Planted (tests only, vrep/model/planted.hpp): the first Bezier piece decides for all.
     const std::size_t pieces =
         vrep_testing::is_planted(vrep_testing::Plant::classify_first_piece_only) ? std::min<std::size_t>(1, F.size()) : F.size();
     for (std::size_t k = 0; k < pieces; ++k) {
@@ -1393,7 +1393,7 @@ CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const Tri
   return vrep_detail::run_trim(V, vrep_detail::localized_region(V, trim, eps, limits), options.max_boxes, false, eps, limits).cls;
 }
 
-// trimmed_volume, trimmed_moment, trimmed_field_integral: vrep/enclosure_impl.hpp.
+// trimmed_volume, trimmed_moment, trimmed_field_integral: vrep/trimmed/enclosure_impl.hpp.
 
 template <class T>
 TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>& B, BooleanOp op, Blend blend, const TrimOptions& options,

@@ -1,12 +1,12 @@
-// Primitives (vrep/primitives.hpp): the templates, instantiated in vrep/instances.cpp.
+// Primitives (vrep/primitives/primitives.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include "base/errors.hpp"
 #include "exact/rational.hpp"
 #include "spline/basis.hpp"
 #include "spline/elevate.hpp"
 #include "spline/knots.hpp"
-#include "vrep/primitives.hpp"
-#include "vrep/trivariate_impl.hpp"  // vrep_detail::solve_in_place
+#include "vrep/model/trivariate_impl.hpp"  // vrep_detail::solve_in_place
+#include "vrep/primitives/primitives.hpp"
 
 namespace splinex {
 

@@ -2,13 +2,13 @@
 // of a V-model calls (the CLI's vrep commands, Python, the report), so that a model that is proved
 // invalid is a typed error naming its cells and one that cannot be decided says so.
 //
-// A V-model (vrep/vmodel.hpp) is valid when
+// A V-model (vrep/model/vmodel.hpp) is valid when
 //  - every cell is a trivariate whose det J does not change sign and is not identically 0 on any
-//    part (certified: the Bernstein coefficients of det J, vrep/regularity.hpp; det J may vanish
+//    part (certified: the Bernstein coefficients of det J, vrep/model/regularity.hpp; det J may vanish
 //    on a set of measure zero, as on a collapsed edge, when it keeps one sign: `degenerate`).
 //    A fold (both strict signs) or a flat part (det J = 0 on a box) is a ValidationError;
 //  - the interiors of no two cells overlap. Decided exactly for convex cells with planar faces
-//    (vrep/boolean.hpp: convex_planes; separating-axis test on the exact corners with the face
+//    (vrep/boolean/boolean.hpp: convex_planes; separating-axis test on the exact corners with the face
 //    normals and the edges' cross products as axes) and, for any cells, when their control-point
 //    boxes' interiors are disjoint or a planar face separates their control points (convex hull
 //    property). Identical trivariates are always refused. Otherwise the pair is `undecided`
@@ -17,8 +17,8 @@
 //    another, and no two unglued boundary faces overlap in a plane (a T-junction or a partial edge
 //    or vertex contact: the glued topology and its Euler characteristic would be wrong). Not
 //    checked between curved cells (said in `not_checked`);
-//  - the glued topology passes check_invariants (vrep/vmodel.hpp).
-// A trimmed V-model (vrep/trimmed.hpp) is valid when its cells' categories are "A", "both", "B" or
+//  - the glued topology passes check_invariants (vrep/model/vmodel.hpp).
+// A trimmed V-model (vrep/trimmed/trimmed.hpp) is valid when its cells' categories are "A", "both", "B" or
 // "", their trivariates satisfy the first rule, and no two cells are the same (trivariate and trim);
 // the overlap of trimmed cells is decided only by disjoint control-point boxes (else listed in
 // `not_checked`, and every command then prints the verdict).
@@ -30,9 +30,9 @@
 #include "base/limits.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/regularity.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/regularity.hpp"
+#include "vrep/model/vmodel.hpp"
+#include "vrep/trimmed/trimmed.hpp"
 
 namespace splinex {
 
@@ -75,7 +75,7 @@ ValidityReport validate_trimmed(const TrimmedModel<Rational>& M, const std::stri
 /// det J's sign on one trivariate, certified: `regular` (det J > 0 or < 0 everywhere), `one_sign`
 /// (det J >= 0 or <= 0 everywhere and not 0 on any open set: valid, degenerate where it is 0),
 /// `undecided`; a fold or a flat part is a ValidationError naming `field`. The report is
-/// certify_regularity's (vrep/regularity.hpp), with the reason extended.
+/// certify_regularity's (vrep/model/regularity.hpp), with the reason extended.
 enum class CellShape { regular, one_sign, undecided };
 RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const std::string& field, int levels, const Limits& limits,
                                               CellShape& shape);

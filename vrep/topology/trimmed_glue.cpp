@@ -1,7 +1,7 @@
-// The gluing of a trimmed V-model (vrep/trimmed.hpp: trimmed_glue), instantiated for Rational and
+// The gluing of a trimmed V-model (vrep/trimmed/trimmed.hpp: trimmed_glue), instantiated for Rational and
 // double.
 //
-// Every count here is a certified subdivision count of vrep/curve_graph.hpp (count_region on a face
+// Every count here is a certified subdivision count of vrep/topology/curve_graph.hpp (count_region on a face
 // of a cell's domain, count_surface on a trimming surface) of one formula: the cell's trim and a
 // second formula read on the other side of the half-V-surface (the model's region, or a
 // neighbouring cell's trim). Equal surfaces of the two formulas are one leaf of the subdivision
@@ -16,13 +16,13 @@
 
 #include "base/errors.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean_impl.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/curve_graph.hpp"
-#include "vrep/freeform.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/boolean/boolean_impl.hpp"
+#include "vrep/freeform/freeform.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/topology/curve_graph.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -262,7 +262,7 @@ class Gluer {
         }
         return out.halves[centre].unmatched <= sum;
       };
-      // (Planted, tests only: vrep/planted.hpp ignores the piece counts.)
+      // (Planted, tests only: vrep/model/planted.hpp ignores the piece counts.)
       if (pa == 1 && pb == 1 && (ha.unmatched == hb.unmatched || vrep_testing::is_planted(vrep_testing::Plant::glue_counts_ignored))) {
         t.decided = true;
         t.pieces = ha.unmatched;

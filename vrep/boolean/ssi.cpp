@@ -1,4 +1,4 @@
-#include "vrep/ssi.hpp"
+#include "vrep/boolean/ssi.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>

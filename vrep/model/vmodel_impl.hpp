@@ -1,4 +1,4 @@
-// The V-model (vrep/vmodel.hpp): the templates, instantiated in vrep/instances.cpp.
+// The V-model (vrep/model/vmodel.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include <algorithm>
 #include <map>
@@ -11,9 +11,9 @@
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 
@@ -231,7 +231,7 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
         auto& same_loop = loop_index[key];
         for (std::size_t o : same_loop) {
           const auto& other = model.half_surfaces[o];
-          // (Planted, tests only: vrep/planted.hpp twins faces by their loop alone.)
+          // (Planted, tests only: vrep/model/planted.hpp twins faces by their loop alone.)
           if (!vrep_testing::is_planted(vrep_testing::Plant::vmodel_twin_by_loop) &&
               !same_surface(face(model.trivariates[other.trivariate], other.dir, other.side), F, eps, limits))
             continue;

@@ -1,4 +1,4 @@
-// Certified regularity (vrep/regularity.hpp): the templates, instantiated in vrep/instances.cpp.
+// Certified regularity (vrep/model/regularity.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include <array>
 #include <deque>
@@ -9,9 +9,9 @@
 #include "compose/compose_impl.hpp"
 #include "spline/bezier.hpp"
 #include "spline/knots.hpp"
-#include "vrep/brackets.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/regularity.hpp"
+#include "vrep/model/brackets.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/regularity.hpp"
 
 namespace splinex {
 
@@ -147,7 +147,7 @@ std::vector<JacobianBox<T>> jacobian_boxes(const BSpline<T>& V, const Limits& li
 
 /// The eight children of a box at its midpoints, emitted in the order of splitting direction 0,
 /// then 1, then 2 (de Casteljau, exact in exact arithmetic). `keep_upper_u` false loses the
-/// children above the midpoint of u (the planted bug of vrep/planted.hpp, tests only).
+/// children above the midpoint of u (the planted bug of vrep/model/planted.hpp, tests only).
 template <class T, class Emit>
 void split_octants(JacobianBox<T>&& b, Emit&& emit, bool keep_upper_u = true) {
   std::vector<JacobianBox<T>> parts;

@@ -1,5 +1,5 @@
 // The connected pieces of a trimming surface's part of a trimmed cell's boundary, from a certified
-// subdivision (vrep/curve_graph.hpp: count_surface states the method), instantiated for Rational
+// subdivision (vrep/topology/curve_graph.hpp: count_surface states the method), instantiated for Rational
 // and double.
 //
 // Why a resolved box's pieces are what this file says. In a box B let P = {g = 0} (g the leaf whose
@@ -29,12 +29,12 @@
 #include <map>
 
 #include "base/errors.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/brackets.hpp"
-#include "vrep/curve_graph.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/model/brackets.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/topology/curve_graph.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 
@@ -359,7 +359,7 @@ class SurfaceRun {
     const std::size_t sb = std::max<std::size_t>(64, P.options.max_boxes / 8);
     const Shape a = shape3(G[k_], 1, sb), b = shape3(G[k_], -1, sb);
     if (a == Shape::empty || b == Shape::empty) return 1;
-    // (Planted, tests only: vrep/planted.hpp takes the sides for contractible unchecked.)
+    // (Planted, tests only: vrep/model/planted.hpp takes the sides for contractible unchecked.)
     if ((a != Shape::contractible || b != Shape::contractible) && !vrep_testing::is_planted(vrep_testing::Plant::surface_shape_unchecked)) return 0;
     // The curves C_l: monotone (a strict component of grad g_k x grad g_l); two leaves: a strict
     // triple product.

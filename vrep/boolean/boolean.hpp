@@ -4,7 +4,7 @@
 // What is built: models whose cells are convex and bounded by planar faces (boxes, and any
 // hexahedral trivariate whose six faces are planar: its control points of a face on one plane, all
 // its control points on the inner side of every face plane). Such a cell has an exact implicit
-// form, six half-spaces n.x + d >= 0 (vrep/boolean.hpp: convex_planes). A half-space on another
+// form, six half-spaces n.x + d >= 0 (vrep/boolean/boolean.hpp: convex_planes). A half-space on another
 // cell's trivariate T is a convex combination of its values c_i = n.P_i + d at T's control points
 // (positive weights), so all c_i >= 0 is inside, all <= 0 outside, touching included: coplanar
 // contact is decided exactly. When the signs are mixed, the c_i depend on one parameter only and
@@ -21,7 +21,7 @@
 // or none, by the exact sign at its parameter centre. Intersection (Algorithm 1): the pieces of
 // A's cells inside a cell of B, each holding both trivariates. Subtraction (Algorithm 2): the
 // pieces inside none. Union (Algorithm 3): the intersection, A - B and B - A. The pieces are glued
-// (vrep/vmodel.hpp) and checked: no boundary face of a piece may lie on another piece (that would
+// (vrep/model/vmodel.hpp) and checked: no boundary face of a piece may lie on another piece (that would
 // be a T-junction, a face glued to nothing although the solid continues there). Where one does
 // (a cut that splits a cell's face but not the neighbour's), the two source cells take each
 // other's splitting planes and the tiling is recomputed, until none is left (DomainError if that
@@ -43,14 +43,14 @@
 #include "base/errors.hpp"
 #include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 
 enum class BooleanOp { intersect, subtract, unite };
 
 /// The planar path cannot do it (a cut that is not a parameter plane, a cell without the half-space
-/// form, a T-junction the tiling does not resolve): vrep/trimmed.hpp can, on exact regions.
+/// form, a T-junction the tiling does not resolve): vrep/trimmed/trimmed.hpp can, on exact regions.
 class NotPlanarError : public DomainError {
   using DomainError::DomainError;
 };

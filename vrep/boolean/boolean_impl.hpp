@@ -1,4 +1,4 @@
-// Booleans on V-models (vrep/boolean.hpp): the templates, instantiated in vrep/instances.cpp.
+// Booleans on V-models (vrep/boolean/boolean.hpp): the templates, instantiated in vrep/instances.cpp.
 #pragma once
 #include <algorithm>
 #include <map>
@@ -14,12 +14,12 @@
 #include "spline/evaluate.hpp"
 #include "spline/integrate.hpp"
 #include "spline/knots.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/boolean_junctions.hpp"  // vrep_detail::find_corner_junctions
-#include "vrep/planted.hpp"
-#include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
-#include "vrep/trivariate_impl.hpp"  // vrep_detail::greville
-#include "vrep/vmodel_impl.hpp"      // vrep_detail::magnitude, centre_of
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/boolean/boolean_junctions.hpp"  // vrep_detail::find_corner_junctions
+#include "vrep/model/planted.hpp"
+#include "vrep/model/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
+#include "vrep/model/trivariate_impl.hpp"  // vrep_detail::greville
+#include "vrep/model/vmodel_impl.hpp"      // vrep_detail::magnitude, centre_of
 
 namespace splinex {
 
@@ -29,7 +29,7 @@ template <class T>
 T plane_at(const HalfSpace<T>& H, const T* x) { return H.n[0] * x[0] + H.n[1] * x[1] + H.n[2] * x[2] + H.d; }
 
 /// Whether half-space k of a cell's six is tested when a point is classified (always; the planted
-/// bug of vrep/planted.hpp skips the second, the face u = end, in tests only).
+/// bug of vrep/model/planted.hpp skips the second, the face u = end, in tests only).
 inline bool plane_tested(std::size_t k) { return !(k == 1 && vrep_testing::is_planted(vrep_testing::Plant::classify_skips_plane)); }
 
 /// The tolerance of a plane's values: eps times |n|_1 (a point moved by eps per coordinate moves
@@ -39,7 +39,7 @@ T plane_tol(const HalfSpace<T>& H, const T& eps) {
   return eps == T(0) ? T(0) : eps * (magnitude(H.n[0]) + magnitude(H.n[1]) + magnitude(H.n[2]));
 }
 
-/// How a half-space meets a trivariate (see vrep/boolean.hpp).
+/// How a half-space meets a trivariate (see vrep/boolean/boolean.hpp).
 template <class T>
 struct PlaneOnCell {
   enum Kind { inside, outside, split, curved } kind = inside;
@@ -142,7 +142,7 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
     const auto h = plane_on(V, H, eps);
     if (h.kind == PlaneOnCell<T>::curved)
       throw NotPlanarError(vname, "needs a cut by a plane of a neighbour's tiling that is not a parameter plane of its trivariate",
-                           "cut it as a trimmed cell on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
+                           "cut it as a trimmed cell on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
     if (h.kind == PlaneOnCell<T>::split) {
       cuts[h.dir].push_back(h.at);
       splitting.push_back(H);
@@ -151,7 +151,7 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
   for (std::size_t b = 0; b < other.cells.size(); ++b) {
     if (!planes[b])
       throw NotPlanarError(oname + ".cells[" + std::to_string(b) + "]", "is not a convex cell with planar faces: the planar path cannot cut with it",
-                           "cut as trimmed cells on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
+                           "cut as trimmed cells on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
     bool outside = false;
     std::vector<PlaneOnCell<T>> how;
     for (const auto& H : *planes[b]) {
@@ -164,7 +164,7 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
       if (h.kind == PlaneOnCell<T>::curved)
         throw NotPlanarError(vname, "is cut by a face plane of " + oname + ".cells[" + std::to_string(b) +
                                         "] along a surface that is not a parameter plane of its trivariate",
-                             "cut it as a trimmed cell on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
+                             "cut it as a trimmed cell on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
     }
     for (std::size_t k = 0; k < how.size(); ++k)
       if (how[k].kind == PlaneOnCell<T>::split) {
@@ -636,7 +636,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       }
       if (grew && round < 16) continue;
       throw NotPlanarError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
-                           "cut as trimmed cells on the models' exact regions (vrep/trimmed.hpp; vrep boolean --trim auto)");
+                           "cut as trimmed cells on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
     }
     const auto result_check = check_invariants(M, limits);
     if (!result_check.ok())

@@ -8,7 +8,7 @@
 // it - d1 -> 0 and A -> A2, so A is C^0 across the interfaces; where d1 = d2 = 0, the point r of
 // Figure 6, it is undefined.)
 //
-// Built for models whose cells are convex with planar faces (vrep/boolean.hpp): dV1 n V2 is the
+// Built for models whose cells are convex with planar faces (vrep/boolean/boolean.hpp): dV1 n V2 is the
 // union of V1's boundary faces clipped by V2's cells (convex polygons, exact); the squared distance
 // from a rational point to a convex polygon is rational (plane or edge, exactly); the distance is
 // its square root, enclosed by MPFI at `bits` bits; A(p) is evaluated in MPFI, and the enclosure's
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "exact/rational.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex {
 

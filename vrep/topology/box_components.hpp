@@ -13,8 +13,8 @@
 
 #include "base/limits.hpp"
 #include "spline/bspline.hpp"
-#include "vrep/trivariate.hpp"
-#include "vrep/vmodel.hpp"
+#include "vrep/model/trivariate.hpp"
+#include "vrep/model/vmodel.hpp"
 
 namespace splinex::vrep_detail {
 

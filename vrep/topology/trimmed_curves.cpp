@@ -1,5 +1,5 @@
-// The certified curve graph (vrep/curve_graph.hpp) and the V-curves between two trimming surfaces
-// of a trimmed cell (vrep/trimmed.hpp: trimmed_curves has the method), instantiated for Rational
+// The certified curve graph (vrep/topology/curve_graph.hpp) and the V-curves between two trimming surfaces
+// of a trimmed cell (vrep/trimmed/trimmed.hpp: trimmed_curves has the method), instantiated for Rational
 // and double.
 #include <algorithm>
 #include <deque>
@@ -8,10 +8,10 @@
 #include "base/errors.hpp"
 #include "solve/solver.hpp"
 #include "spline/bezier.hpp"
-#include "vrep/box_components.hpp"
-#include "vrep/curve_graph.hpp"
-#include "vrep/trimmed.hpp"
-#include "vrep/trimmed_impl.hpp"
+#include "vrep/topology/box_components.hpp"
+#include "vrep/topology/curve_graph.hpp"
+#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/trimmed_impl.hpp"
 
 namespace splinex {
 

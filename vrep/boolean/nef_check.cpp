@@ -1,4 +1,4 @@
-#include "vrep/nef_check.hpp"
+#include "vrep/boolean/nef_check.hpp"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/Gmpq.h>

@@ -1,4 +1,4 @@
-// Partial edge and vertex contacts in a Boolean's pieces (vrep/boolean.hpp, issue 47 vrep 1): the
+// Partial edge and vertex contacts in a Boolean's pieces (vrep/boolean/boolean.hpp, issue 47 vrep 1): the
 // part of the conformity pass that looks at corners (boolean_impl.hpp looks at faces).
 #pragma once
 #include <array>
@@ -9,8 +9,8 @@
 
 #include "base/point.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/vmodel_impl.hpp"  // vrep_detail::magnitude, close
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/vmodel_impl.hpp"  // vrep_detail::magnitude, close
 
 namespace splinex {
 

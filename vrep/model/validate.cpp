@@ -1,5 +1,5 @@
-// Validation of V-models before use (vrep/validate.hpp): exact, Rational only.
-#include "vrep/validate.hpp"
+// Validation of V-models before use (vrep/model/validate.hpp): exact, Rational only.
+#include "vrep/model/validate.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,10 +11,10 @@
 #include "base/point.hpp"
 #include "bernstein/subdivide.hpp"
 #include "spline/evaluate.hpp"
-#include "vrep/boolean.hpp"
-#include "vrep/planted.hpp"
-#include "vrep/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half, sign_of
-#include "vrep/vmodel_impl.hpp"      // vrep_detail::same_net_within, geometry_of
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/model/planted.hpp"
+#include "vrep/model/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half, sign_of
+#include "vrep/model/vmodel_impl.hpp"      // vrep_detail::same_net_within, geometry_of
 
 namespace splinex {
 
@@ -251,7 +251,7 @@ struct Checked {
   std::vector<CellGeometry> geometry;
 };
 
-/// Shapes and pairwise overlap of the cells (the first two rules of vrep/validate.hpp).
+/// Shapes and pairwise overlap of the cells (the first two rules of vrep/model/validate.hpp).
 Checked check_cells(const std::vector<BSpline<R>>& cells, const std::vector<std::string>& names, const std::string& where,
                     const ValidityOptions& options, const Limits& limits, ValidityReport& rep) {
   Checked out;
@@ -274,7 +274,7 @@ Checked check_cells(const std::vector<BSpline<R>>& cells, const std::vector<std:
   for (std::size_t x = 0; x < order.size(); ++x)
     for (std::size_t y = x + 1; y < order.size(); ++y) {
       std::size_t i = order[x], j = order[y];
-      // (Planted, tests only: vrep/planted.hpp compares with the wrong end of the box.)
+      // (Planted, tests only: vrep/model/planted.hpp compares with the wrong end of the box.)
       if (!(g[j].lo[0] < (vrep_testing::is_planted(vrep_testing::Plant::validate_sweep_bound) ? g[i].lo[0] : g[i].hi[0]))) break;
       if (!boxes_overlap(g[i], g[j])) continue;
       if (j < i) std::swap(i, j);
@@ -356,7 +356,7 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
                                      to_fraction_string(rep.other_value) + " at " + point_text(rep.other) + ")",
                           fix);
   for (int d = 0; d < 3; ++d)
-    if (V.degrees[d] == 0)  // the message of vrep/regularity.hpp's require_jacobian_input, with the cell
+    if (V.degrees[d] == 0)  // the message of vrep/model/regularity.hpp's require_jacobian_input, with the cell
       throw ValidationError("degrees", "has degree 0 in a direction: det J is 0 (" + field + " is flat in direction " + std::to_string(d) + ")",
                             "elevate it and give it volume");
   // det J = 0 at a point inside the parameter domain: the cell is not regular there (pinched or
