@@ -116,7 +116,7 @@ Subdivision subdivide(std::vector<Box> roots, const Walk& walk, const Budget& bu
       if (left(std::move(n.box), Left::depth)) break;
       continue;
     }
-    if (waiting.size() + walk.fanout > budget.max_alive) {
+    if (walk.fanout > budget.max_alive || waiting.size() > budget.max_alive - walk.fanout) {  // no wrap-around
       if (left(std::move(n.box), Left::alive)) break;
       continue;
     }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
 #include "base/point.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/bezier.hpp"
@@ -354,26 +355,26 @@ struct LoopChecker {
                               " of their size, and avoid cusps at vertices; facets touching elsewhere than at shared vertices are not a simple loop");
   }
 
-  // Decides one pair of elements; throws when they meet elsewhere than at a shared vertex.
+  // Decides one pair of elements; throws when they meet elsewhere than at a shared vertex. The
+  // larger element of an undecided pair is halved (depth first); the budget of tests is shared by
+  // every pair of the loop.
   void resolve(const LoopElem& A0, const LoopElem& B0) {
-    std::vector<std::pair<LoopElem, LoopElem>> todo{{A0, B0}};
-    while (!todo.empty()) {
-      auto [A, B] = std::move(todo.back());
-      todo.pop_back();
-      if (++tests > options.max_tests) undecided(A, B, "the work budget of " + std::to_string(options.max_tests) + " tests is spent");
-      if (!boxes_meet(A, B)) continue;
+    using Pair = std::pair<LoopElem, LoopElem>;
+    auto examine = [&](const Pair& pr, int) {
+      const LoopElem &A = pr.first, &B = pr.second;
+      if (!boxes_meet(A, B)) return Examined::settled;
       const bool ab = follows(A, B), ba = follows(B, A);
       if (ab != ba) {
         const LoopElem& first = ab ? A : B;
         const LoopElem& second = ab ? B : A;
-        if (meet_only_at_vertex(first, second)) continue;
+        if (meet_only_at_vertex(first, second)) return Examined::settled;
         if (first.straight && second.straight)  // both from V along the same ray
           not_simple(first, second, "turns back along", at_point(second.p.front()));
       } else if (!ab) {
-        if (hulls_apart(A, B)) continue;
+        if (hulls_apart(A, B)) return Examined::settled;
         if (A.straight && B.straight) {
           if (const auto x = segments_meet(A.p.front(), A.p.back(), B.p.front(), B.p.back())) not_simple(A, B, "meets", at_point(*x));
-          continue;
+          return Examined::settled;
         }
         if (A.straight || B.straight) {  // an end point of the other exactly on the segment: they touch
           const LoopElem& seg = A.straight ? A : B;
@@ -384,19 +385,32 @@ struct LoopChecker {
         if (crosses(A, B)) not_simple(A, B, "crosses", within_box(A));
         if (crosses(B, A)) not_simple(A, B, "crosses", within_box(B));
       }
+      if (A.depth >= options.max_depth && B.depth >= options.max_depth)
+        undecided(A, B, "no decision after " + std::to_string(options.max_depth) + " halvings");
+      return Examined::split;
+    };
+    auto split = [&](Pair&& pr, int, auto&& emit) {
+      auto& [A, B] = pr;
       const bool a_can = A.depth < options.max_depth, b_can = B.depth < options.max_depth;
-      if (!a_can && !b_can) undecided(A, B, "no decision after " + std::to_string(options.max_depth) + " halvings");
       const Rational sa = extent(A), sb = extent(B);
       if (a_can && (!b_can || !(sa < sb))) {
         auto [l, r] = halves(A);
-        todo.push_back({std::move(l), B});
-        todo.push_back({std::move(r), std::move(B)});
+        emit(Pair{std::move(l), B});
+        emit(Pair{std::move(r), std::move(B)});
       } else {
         auto [l, r] = halves(B);
-        todo.push_back({A, std::move(l)});
-        todo.push_back({std::move(A), std::move(r)});
+        emit(Pair{A, std::move(l)});
+        emit(Pair{std::move(A), std::move(r)});
       }
-    }
+    };
+    std::optional<Pair> next;  // the pair the spent budget stopped at: the next one depth first
+    auto leave = [&](Pair&& pr, Left) { next = std::move(pr); };
+    Budget budget;
+    budget.max_boxes = options.max_tests - std::min(tests, options.max_tests);
+    const Subdivision run = subdivide(std::vector<Pair>{Pair{A0, B0}}, Walk{Order::depth_first, 2, false}, budget, examine, split, leave);
+    tests += run.examined;
+    if (run.stop == Subdivision::Stop::boxes)
+      undecided(next->first, next->second, "the work budget of " + std::to_string(options.max_tests) + " tests is spent");
   }
 };
 

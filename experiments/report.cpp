@@ -20,8 +20,6 @@
 #include <set>
 #include <sstream>
 
-#include <mpfr.h>
-
 #include "base/errors.hpp"
 #include "base/parallel.hpp"
 #include "experiments/common.hpp"
@@ -267,10 +265,7 @@ int run_report(const ReportOptions& opt) {
   if (threads > 1) progress("sections on " + std::to_string(std::min(threads, tasks.size())) + " threads");
   parallel_for(tasks.size(), threads, [&](std::size_t t) {
     contexts[t] = std::make_unique<ReportContext>(opt, progress);
-    run_task(tasks[t], *contexts[t]);
-    // MPFR keeps its constants (pi, log 2, ...) in caches local to each thread; a worker thread
-    // ends with the run, so its caches are freed here (LeakSanitizer found them).
-    mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+    run_task(tasks[t], *contexts[t]);  // (MPFR's per-thread caches: freed as each worker ends, base/parallel.hpp)
   });
   // One context as if the sections had run in one thread, in their order.
   ReportContext ctx{opt, progress};

@@ -4,8 +4,18 @@
 #include <memory>
 
 #include "base/errors.hpp"
+#include "base/parallel.hpp"
 
 namespace splinex {
+
+namespace {
+// MPFR keeps constants (pi, log 2, ...) in caches local to each thread: a pool's worker frees them
+// as it ends (base/parallel.hpp), so no thread leaves them behind.
+const bool kMpfrCachesFreedPerThread = [] {
+  thread_exit_hooks().push_back([] { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); });
+  return true;
+}();
+}  // namespace
 
 Mpfr::Precision::Precision(long bits) : old_(current_bits()) {
   // Above 65536 bits (about 19,700 digits) exact arithmetic is the better tool, and a precision of

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -612,7 +613,7 @@ SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vecto
   budget.max_boxes = options.max_boxes;
   budget.max_depth = options.max_depth;
   std::vector<Node<T>> roots{Node<T>{all, lo, hi, 0}};
-  const Subdivision run = subdivide(std::move(roots), Walk{Order::depth_first, std::size_t(1) << n, false}, budget, examine, split, leave);
+  const Subdivision run = subdivide(std::move(roots), Walk{Order::depth_first, n < 64 ? std::size_t(1) << n : std::numeric_limits<std::size_t>::max(), false}, budget, examine, split, leave);
   out.boxes = run.examined;
   out.budget_exhausted = run.stop == Subdivision::Stop::boxes;
   for (const auto& N : certified) {

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,14 @@ TEST_CASE("subdivide: every budget names itself, and the walk goes on or stops a
     CHECK(r.left_alive > 0);
     CHECK(r.stop == Subdivision::Stop::complete);
     CHECK(std::count(why.begin(), why.end(), Left::alive) == static_cast<long>(r.left_alive));
+  }
+  SECTION("alive: a fanout beyond every budget leaves the box, without wrapping around") {
+    Budget b;
+    b.max_alive = 10;
+    const auto r = subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{Order::breadth_first, SIZE_MAX, false}, b, always_split,
+                             halves, leave);
+    CHECK(r.examined == 1);
+    CHECK(r.left_alive == 1);
   }
   SECTION("refuted: the walk stops at once, nothing more is examined or left") {
     auto refute_second = [](const Interval& b, int) { return b.lo == 0 && b.hi == Rational(1, 2) ? Examined::refuted : Examined::split; };

@@ -87,7 +87,7 @@ bool count_run(const Subdivision& run, const CurveOptions& o, const std::string&
   out.boxes = run.examined + (run.stop == Subdivision::Stop::boxes ? 1 : 0);
   if (run.stop == Subdivision::Stop::boxes) out.undecided_reason = "the box budget (" + std::to_string(o.max_boxes) + ") is spent";
   if (run.stop == Subdivision::Stop::left) out.undecided_reason = deepest;
-  return run.stop != Subdivision::Stop::boxes && run.stop != Subdivision::Stop::left;
+  return run.stop == Subdivision::Stop::complete;  // (no attempt refutes: its examine settles, splits or fails)
 }
 
 /// The split fractions tried in turn: 1/2, 7/16, 13/32 (index 0, 1, 2).
