@@ -484,7 +484,9 @@ FloatActiveSet float_active_set(const QuadraticProgram<Rational>& qp) {
     return out;
   }
   const auto L = llt.matrixL();
-  const Eigen::MatrixXd W = L.solve(G);
+  // No inequality rows: an empty W (Eigen's triangular solve binds a reference to an empty
+  // right-hand side's first entry, which UBSan reports).
+  const Eigen::MatrixXd W = G.cols() == 0 ? Eigen::MatrixXd(H.rows(), 0) : Eigen::MatrixXd(L.solve(G));
   Eigen::VectorXd v = -L.solve(c);
   if (!W.allFinite() || !v.allFinite()) {
     out.why = "the whitened program is beyond double's range";
