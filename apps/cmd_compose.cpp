@@ -7,7 +7,6 @@
 #include "compose/compose.hpp"
 #include "float/arith_spec.hpp"
 #include "float/rounding.hpp"
-#include "io/result_json.hpp"
 
 namespace splinex::app {
 
@@ -20,9 +19,9 @@ struct Options {
   CLI::Option* eps_option = nullptr;
 };
 
-Json run_compose(const Options& o, const Context& ctx) {
-  const auto T = spline_from_json(read_json_file(o.outer, ctx.read_limits), ctx.limits, "outer");
-  const auto S = spline_from_json(read_json_file(o.inner, ctx.read_limits), ctx.limits, "inner");
+auto run_compose(const Options& o, const Context& ctx) {
+  const auto T = read_spline(o.outer, ctx.limits, ctx.read_limits, "outer");
+  const auto S = read_spline(o.inner, ctx.limits, ctx.read_limits, "inner");
   const auto spec = ArithSpec::parse(o.arith);
   if (o.method == "tensor") {
     TensorOptions to;
@@ -30,14 +29,14 @@ Json run_compose(const Options& o, const Context& ctx) {
     to.eps = o.eps;
     return with_arith_except_flint(spec, "compose --method tensor", [&](auto tag) {
       using F = typename decltype(tag)::type;
-      return tensor_composition_to_json(
+      return document(
           compose_tensor(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), to, ctx.limits));
     });
   }
   if (o.method == "trimmed")
     return with_arith(spec, [&](auto tag) {
       using F = typename decltype(tag)::type;
-      return trimmed_composition_to_json(
+      return document(
           compose_trimmed(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), {}, ctx.limits), o.eps);
     });
   CompositionOptions co;
@@ -45,7 +44,7 @@ Json run_compose(const Options& o, const Context& ctx) {
   co.expand = o.expand;
   return with_arith(spec, [&](auto tag) {
     using F = typename decltype(tag)::type;
-    return spline_to_json(compose(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), co, ctx.limits));
+    return document(compose(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), co, ctx.limits));
   });
 }
 
@@ -69,7 +68,7 @@ Commands add_compose(CLI::App& app) {
                       ->check(CLI::Range(1e-12, 1e-1))
                       ->capture_default_str();
   return {{c, [o](const Context& ctx) {
-             std::cout << run_compose(*o, ctx).dump() << "\n";
+             print_document(run_compose(*o, ctx));
              return 0;
            }}};
 }

@@ -15,7 +15,7 @@ Commands add_crosscheck(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("crosscheck", "run an operation exactly and in float; report the exact errors");
-  c->add_option("operation", o->op, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, identity")->required();
+  c->add_option("operation", o->op, operation_names() + " or identity")->required();
   // --arith as every other command; --float, its old name, still read.
   c->add_option("--arith,--float", o->float_arith, "the arithmetic compared with exact: double, mpfr:BITS or flint (flint must agree exactly)")
       ->capture_default_str();
@@ -29,11 +29,11 @@ Commands add_crosscheck(CLI::App& app) {
   c->add_option("--interval", o->op_options.interval, "reparametrize: \"lo,hi\"");
   c->add_option("file", o->file, "spline document, - for stdin")->required();
   return {{c, [o](const Context& ctx) {
-             const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             const auto S = read_spline(o->file, ctx.limits, ctx.read_limits);
              OpOptions op = o->op_options;
              use_one_method(o->op, op, o->op);  // --method serves both operations
              const auto rep = crosscheck(make_op(o->op, op), S, ArithSpec::parse(o->float_arith, "arith"), o->grid, ctx.limits);
-             std::cout << rep.to_json().dump(2) << "\n";
+             print_document(rep.document(), 2);
              return 0;
            }}};
 }

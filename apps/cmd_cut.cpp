@@ -16,8 +16,7 @@
 #include "cut/surface_facet.hpp"
 #include "experiments/cut_figure.hpp"
 #include "experiments/svg_plot.hpp"
-#include "io/cut_io.hpp"
-#include "cut/io/documents.hpp"
+#include "cut/io/commands.hpp"
 #include "spline/knots.hpp"
 
 namespace splinex::app {
@@ -85,10 +84,10 @@ struct CurveInput {
   CutData2<Rational> cut;
   BSpline<Rational> curve;
 };
-CurveInput read_curve_input(const CertifyCliOptions& o, const Context& ctx) {
-  auto S = solid2_from_json(read_json_file(o.solid, ctx.read_limits), ctx.limits);
-  auto C = validate_cut(S, cut2_from_json(read_json_file(o.cut, ctx.read_limits)));
-  auto curve = spline_from_json(read_json_file(o.curve, ctx.read_limits), ctx.limits, "curve");
+CurveInput read_curve_input(const SolidDocument& solid, const CertifyCliOptions& o, const Context& ctx) {
+  auto S = solid.solid2(ctx.limits);
+  auto C = validate_cut(S, read_cut2(o.cut, ctx.read_limits));
+  auto curve = read_spline(o.curve, ctx.limits, ctx.read_limits, "curve");
   check_cutting_curve_shape(curve);
   return {std::move(S), std::move(C), std::move(curve)};
 }
@@ -107,9 +106,8 @@ GuideOptions3 to_guide3_options(const GuideCliOptions& go) {
   return o;
 }
 
-int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& ctx) {
-  const auto S = solid3_from_json(solid_doc, ctx.limits);
-  const auto C = cut3_from_json(read_json_file(go.cut, ctx.read_limits));
+int run_guide3(const GuideCliOptions& go, const Solid3<Rational>& S, const Context& ctx) {
+  const auto C = read_cut3(go.cut, ctx.read_limits);
   if (!go.svg.empty()) throw UsageError("svg", "is for solid2d documents", "give --vtk DIR for a solid3d");
   const GuideOptions3 o = to_guide3_options(go);
   validate_cut(S, C);  // every typed error before the first progress line
@@ -124,33 +122,27 @@ int run_guide3(const GuideCliOptions& go, const Json& solid_doc, const Context& 
       std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
       sep = certify_separation(R.solid, R.loop, C.positive, R.f_exact, o.base.strip);
     }
-    return std::make_pair(R, sep);
+    return GuideRun3<T>{R, sep};
   };
-  Json out;
+  std::optional<GuideRun3<Rational>> exact;
+  std::optional<GuideRun3<double>> dbl;
   std::optional<std::pair<BSpline<Rational>, Frame3>> drawn;
   if (go.arith == "exact" || go.arith == "both") {
-    const auto [R, sep] = run(Rational());
-    out = guide3_json(R, sep);
-    if (R.status == QPStatus::optimal) drawn = std::make_pair(R.f_exact, R.frame);
-    if (go.arith == "both") {
-      const auto [D, dsep] = run(double());
-      Json d = guide3_json(D, dsep);
-      if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size())
-        d["judged_against_exact"] = judged_against_exact(R.coefficients, D.f_exact.points);
-      out = Json{{"exact", out}, {"double", d}};
-    }
+    exact = run(Rational());
+    if (exact->result.status == QPStatus::optimal) drawn = std::make_pair(exact->result.f_exact, exact->result.frame);
+    if (go.arith == "both") dbl = run(double());
   } else {
-    const auto [D, dsep] = run(double());
-    out = guide3_json(D, dsep);
-    if (D.status == QPStatus::optimal) drawn = std::make_pair(D.f_exact, D.frame);
+    dbl = run(double());
+    if (dbl->result.status == QPStatus::optimal) drawn = std::make_pair(dbl->result.f_exact, dbl->result.frame);
   }
+  std::string vtk;
   if (!go.vtk.empty()) {
     std::filesystem::create_directories(go.vtk);
     write_file_atomically((std::filesystem::path(go.vtk) / "solid.vtk").string(), solid3_vtk(S));
     if (drawn) write_file_atomically((std::filesystem::path(go.vtk) / "guide.vtk").string(), guide3_vtk(drawn->first, drawn->second.lo, drawn->second.scale, 32));
-    out["vtk"] = drawn ? "solid.vtk and guide.vtk written" : "solid.vtk written; no guide (RDCP infeasible)";
+    vtk = drawn ? "solid.vtk and guide.vtk written" : "solid.vtk written; no guide (RDCP infeasible)";
   }
-  std::cout << out.dump() << "\n";
+  print_document(guide3_runs_document(exact ? &*exact : nullptr, dbl ? &*dbl : nullptr, vtk));
   return 0;
 }
 
@@ -184,15 +176,12 @@ SurfaceFacetOptions to_surface_options(const Facet3CliOptions& f) {
 // The two parts of a valid surface's split, as facet lists, into dir/split.json.
 SurfaceSplit write_surface_split(const Solid3<Rational>& S, const CutData3& C, const std::string& dir) {
   const auto sp = split_by_surface(S, C.positive);
-  const Json parts{{"part1", Json{{"facets", sp.part1}, {"cutting_surface", "surface.json"}, {"meaning", "the facets of b and the cutting surface"}}},
-                   {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
-  write_file_atomically((std::filesystem::path(dir) / "split.json").string(), parts.dump(1) + "\n");
+  write_file_atomically((std::filesystem::path(dir) / "split.json").string(), document_text(surface_split_parts_document(sp), 1));
   return sp;
 }
 
-int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std::string& solid_file, const std::string& cut_file, const Context& ctx) {
-  const auto S = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
-  const auto C = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
+int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const Solid3<Rational>& S, const std::string& cut_file, const Context& ctx) {
+  const auto C = read_cut3(cut_file, ctx.read_limits);
   const auto o = to_surface_options(fo);
   validate_cut(S, C);  // typed errors before the first progress line
   const Frame3 frame = unit_frame(S);
@@ -248,74 +237,32 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const std
       std::cerr << "[cut facet] " << ArithTraits<T>::name() << ": the guided refinement (Eq. 6, Gauss-Newton in double), certified\n";
       refined = refine_with_guide_sweep(Sn, loop, init, *guide, gopt, weights, o);
     }
-    return std::make_tuple(R, V, refined);
+    return SurfaceRun<T>{R, V, refined};
   };
-  // the initial patch's validity, and the refined patch's as the result when --guided
-  auto add = [&](Json& j, const auto& R, const SurfaceValidity& V, const auto& refined, std::string& verdict, auto& drawn) {
-    j["validity"] = surface_validity_json(V, frame);
-    verdict = V.verdict;
-    drawn = std::make_pair(patch_from_frame(R.patch, frame), R.domain.vertices);
-    if (refined) {
-      const GuidedStep& last = refined->back();
-      j["initial_validity"] = j["validity"];
-      j["validity"] = surface_validity_json(last.validity, frame);
-      j["guided"] = guided_json(last.result, last.weight, g3, guide_status);
-      if (fo.weight_guide == "auto") {
-        Json sweep = Json::array();
-        for (const auto& st : *refined)
-          sweep.push_back(Json{{"weight", st.weight}, {"max_abs_f_after", st.result.max_abs_f_after}, {"verdict", st.validity.verdict}});
-        j["guided"]["weight_sweep"] = sweep;
-        j["guided"]["weight_meaning"] = "--weight-guide auto: Eq. 6's weight 10, 10^2, ..., 10^6 in turn, each from the initial patch, until the refined patch is "
-                                        "certified valid; the last one run is the result";
-      }
-      j["surface"] = cutting_surface_to_json(patch_from_frame(last.result.patch, frame), R.domain.vertices);
-      verdict = last.validity.verdict;
-      drawn = std::make_pair(patch_from_frame(last.result.patch, frame), R.domain.vertices);
-    }
-  };
-  Json out;
-  std::optional<std::pair<BSpline<Rational>, std::vector<std::array<Rational, 2>>>> drawn;
-  std::string verdict;
-  if (fo.arith == "exact" || fo.arith == "both") {
-    const auto [R, V, refined] = run(Rational());
-    out = surface_json(R, frame);
-    add(out, R, V, refined, verdict, drawn);
-    if (fo.arith == "both") {
-      const auto [D, DV, drefined] = run(double());
-      Json d = surface_json(D, frame);
-      std::string dverdict;
-      decltype(drawn) ddrawn;
-      add(d, D, DV, drefined, dverdict, ddrawn);
-      d["judged_against_exact"] = judged_against_exact(R.coefficients, D.coefficients);
-      d["judged_against_exact"]["meaning"] = "the double initial patch's control points against the exact minimizer, measured exactly (normalized coordinates)";
-      out = Json{{"exact", out}, {"double", d}};
-    }
-  } else {
-    const auto [D, DV, refined] = run(double());
-    out = surface_json(D, frame);
-    add(out, D, DV, refined, verdict, drawn);
-  }
-  if (fo.guided && !guide)
-    out["guided"] = Json{{"guide", guide_status},
-                         {"meaning", "no refinement: RDCP has no minimizer at these settings (raise --max-inner-knots, lower --delta or widen --strip); "
-                                     "the surface and validity above are the initial patch's"}};
+  SurfaceRunSettings settings;
+  settings.frame = frame, settings.guide = g3, settings.guide_status = guide_status;
+  settings.weight_sweep = fo.weight_guide == "auto", settings.guided = fo.guided, settings.guide_found = guide.has_value();
+  std::optional<SurfaceRun<Rational>> exact;
+  std::optional<SurfaceRun<double>> dbl;
+  if (fo.arith == "exact" || fo.arith == "both") exact = run(Rational());
+  if (fo.arith != "exact") dbl = run(double());
+  // what is drawn and written: the exact run's patch, else the double run's
+  const auto drawn = exact ? std::make_pair(final_patch(*exact, frame), exact->surface.domain.vertices)
+                           : std::make_pair(final_patch(*dbl, frame), dbl->surface.domain.vertices);
+  const std::string verdict = exact ? final_validity(*exact).verdict : final_validity(*dbl).verdict;
   if (!fo.vtk.empty()) {
     std::filesystem::create_directories(fo.vtk);
     write_file_atomically((std::filesystem::path(fo.vtk) / "solid.vtk").string(), solid3_vtk(S));
-    write_file_atomically((std::filesystem::path(fo.vtk) / "surface.vtk").string(), surface3_vtk(drawn->first, drawn->second, 40));
-    out["vtk"] = "solid.vtk and surface.vtk written";
+    write_file_atomically((std::filesystem::path(fo.vtk) / "surface.vtk").string(), surface3_vtk(drawn.first, drawn.second, 40));
+    settings.vtk = true;
   }
   if (!fo.out.empty()) {
     std::filesystem::create_directories(fo.out);
-    write_file_atomically((std::filesystem::path(fo.out) / "surface.json").string(), cutting_surface_to_json(drawn->first, drawn->second).dump(1) + "\n");
-    if (verdict == "valid") {
-      const auto sp = write_surface_split(S, C, fo.out);
-      out["split"] = Json{{"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()}, {"file", "split.json"}};
-    } else {
-      out["split"] = "not written: the surface is not certified valid";
-    }
+    write_file_atomically((std::filesystem::path(fo.out) / "surface.json").string(), document_text(cutting_surface_document(drawn.first, drawn.second), 1));
+    settings.out = true;
+    if (verdict == "valid") settings.split = write_surface_split(S, C, fo.out);
   }
-  std::cout << out.dump() << "\n";
+  print_document(surface_facet_document(exact ? &*exact : nullptr, dbl ? &*dbl : nullptr, settings));
   return 0;
 }
 
@@ -326,11 +273,11 @@ struct GivenSurface {
   CuttingSurfaceDoc surface;
 };
 
-GivenSurface read_given_surface(const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
+GivenSurface read_given_surface(const SolidDocument& solid, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
   GivenSurface g;
-  g.solid = solid3_from_json(read_json_file(solid_file, ctx.read_limits), ctx.limits);
-  g.cut = cut3_from_json(read_json_file(cut_file, ctx.read_limits));
-  g.surface = cutting_surface_from_json(read_json_file(surface_file, ctx.read_limits), ctx.limits);
+  g.solid = solid.solid3(ctx.limits);
+  g.cut = read_cut3(cut_file, ctx.read_limits);
+  g.surface = read_cutting_surface(surface_file, ctx.limits, ctx.read_limits);
   return g;
 }
 
@@ -345,30 +292,26 @@ SurfaceValidity certify_given_surface(const GivenSurface& g, const Frame3& frame
   return certify_cutting_surface(Sn, loop, D, patch_to_frame(g.surface.patch, frame), o);
 }
 
-int run_certify3(const Facet3CliOptions& fo, const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
-  const auto g = read_given_surface(solid_file, cut_file, surface_file, ctx);
+int run_certify3(const Facet3CliOptions& fo, const SolidDocument& solid, const std::string& cut_file, const std::string& surface_file, const Context& ctx) {
+  const auto g = read_given_surface(solid, cut_file, surface_file, ctx);
   const auto o = to_surface_options(fo);
   const Frame3 frame = unit_frame(g.solid);
-  std::cout << surface_validity_json(certify_given_surface(g, frame, o), frame).dump() << "\n";
+  print_document(surface_validity_document(certify_given_surface(g, frame, o), frame));
   return 0;
 }
 
 // cut split on a solid3d: the given surface certified (as cut certify), then the parts written.
-int run_split3(const std::string& solid_file, const std::string& cut_file, const std::string& surface_file, const std::string& out_dir, const Context& ctx) {
-  const auto g = read_given_surface(solid_file, cut_file, surface_file, ctx);
+int run_split3(const SolidDocument& solid, const std::string& cut_file, const std::string& surface_file, const std::string& out_dir, const Context& ctx) {
+  const auto g = read_given_surface(solid, cut_file, surface_file, ctx);
   const auto V = certify_given_surface(g, unit_frame(g.solid), SurfaceFacetOptions{});
   if (V.verdict != "valid")
     throw DomainError("surface", "is not certified valid (" + V.verdict + ": tangents " + V.tangents + ", regular " + V.regular + ", injective " + V.injective +
                                      ", collision " + V.collision + ")",
                       "run cut certify to see why; split along a valid cutting surface");
   std::filesystem::create_directories(out_dir);
-  write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), cutting_surface_to_json(g.surface.patch, g.surface.domain).dump(1) + "\n");
+  write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), document_text(cutting_surface_document(g.surface.patch, g.surface.domain), 1));
   const auto sp = write_surface_split(g.solid, g.cut, out_dir);
-  std::cout << Json{{"split", (std::filesystem::path(out_dir) / "split.json").string()}, {"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()},
-                    {"verdict", V.verdict},
-                    {"meaning", "the surface certified valid (cut certify), the parts as facet lists with the trimmed patch (not solids: the patch is trimmed)"}}
-                   .dump()
-            << "\n";
+  print_document(surface_split_document((std::filesystem::path(out_dir) / "split.json").string(), sp, V.verdict));
   return 0;
 }
 
@@ -382,23 +325,13 @@ Command cut_example_command(CLI::App* parent) {
   ex->add_option("name", eo->name, "2D: square, L, U, J, K, maze, snake; 3D: tower, cube, slotted, maiden, vase, twisted-vase")->required();
   ex->add_option("--out", eo->out, "folder to write into")->check(output_folder())->capture_default_str();
   return {ex, [eo](const Context&) {
-    Json s, c;
-    const auto names3 = cut_example3_names();
-    if (std::find(names3.begin(), names3.end(), eo->name) != names3.end()) {
-      const auto e = cut_example3(eo->name);
-      s = solid3_to_json(e.solid), c = cut3_to_json(e.cut);
-      s["description"] = e.description;
-    } else {
-      const auto e = cut_example(eo->name);
-      s = solid2_to_json(e.solid), c = cut2_to_json(e.cut);
-      s["description"] = e.description;
-    }
+    const auto docs = example_documents(eo->name);
     std::filesystem::create_directories(eo->out);
     const std::string sp = (std::filesystem::path(eo->out) / (eo->name + ".solid.json")).string();
     const std::string cp = (std::filesystem::path(eo->out) / (eo->name + ".cut.json")).string();
-    write_file_atomically(sp, s.dump(1) + "\n");
-    write_file_atomically(cp, c.dump(1) + "\n");
-    std::cout << Json{{"solid", sp}, {"cut", cp}}.dump() << "\n";
+    write_file_atomically(sp, document_text(docs.solid, 1));
+    write_file_atomically(cp, document_text(docs.cut, 1));
+    print_document(example_written_document(sp, cp));
     return 0;
   }};
 }
@@ -415,11 +348,11 @@ Command cut_guide_command(CLI::App* parent) {
       ->check(CLI::IsMember({"exact", "double", "both"}));
   g->add_option("--svg", go->svg, "write the figure (boundary, samples, f* = 0, the certificate's witness) here")->check(output_file());
   return {g, [go](const Context& ctx) {
-    const Json solid_doc = read_json_file(go->solid, ctx.read_limits);
-    if (solid_document_type(solid_doc) == "solid3d") return run_guide3(*go, solid_doc, ctx);
+    const SolidDocument solid(go->solid, ctx.read_limits);
+    if (solid.dimension() == 3) return run_guide3(*go, solid.solid3(ctx.limits), ctx);
     if (!go->vtk.empty()) throw UsageError("vtk", "is for solid3d documents", "leave --vtk out, or give --svg for a 2D figure");
-    const auto S = solid2_from_json(solid_doc, ctx.limits);
-    const auto C = cut2_from_json(read_json_file(go->cut, ctx.read_limits));
+    const auto S = solid.solid2(ctx.limits);
+    const auto C = read_cut2(go->cut, ctx.read_limits);
     const GuideOptions o = to_guide_options(*go);
     validate_cut(S, C);  // every typed error before the first progress line
     validate_guide_options(o, S.facets.size());
@@ -433,28 +366,21 @@ Command cut_guide_command(CLI::App* parent) {
         std::cerr << "[cut guide] " << ArithTraits<T>::name() << ": certifying the separation\n";
         sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
       }
-      return std::make_pair(R, sep);
+      return GuideRun<T>{R, sep};
     };
-    Json out;
+    std::optional<GuideRun<Rational>> exact;
+    std::optional<GuideRun<double>> dbl;
     std::string svg;
     if (go->arith == "exact" || go->arith == "both") {
-      const auto [R, sep] = run(Rational());
-      out = guide_json(R, sep);
+      exact = run(Rational());
+      const auto& [R, sep] = *exact;
       if (R.status == QPStatus::optimal)
         svg = cut_guide_svg(R.solid, R.cut, R.f_exact, R.sample_points, R.samples_positive, o.strip, sep ? &*sep : nullptr,
                             "Guiding curve (papers/004 RDCP), exact, " + std::to_string(R.inner_knots) + " inner knots");
-      if (go->arith == "both") {
-        const auto [D, dsep] = run(double());
-        Json d = guide_json(D, dsep);
-        if (D.status == QPStatus::optimal && R.status == QPStatus::optimal && D.coefficients.size() == R.coefficients.size()) {
-          const Json cmp = judged_against_exact(R.coefficients, D.f_exact.points);
-          d["judged_against_exact"] = cmp;
-        }
-        out = Json{{"exact", out}, {"double", d}};
-      }
+      if (go->arith == "both") dbl = run(double());
     } else {
-      const auto [D, dsep] = run(double());
-      out = guide_json(D, dsep);
+      dbl = run(double());
+      const auto& [D, dsep] = *dbl;
       if (D.status == QPStatus::optimal)
         svg = cut_guide_svg(D.solid, D.cut, D.f_exact, D.sample_points, D.samples_positive, o.strip, dsep ? &*dsep : nullptr,
                             "Guiding curve (papers/004 RDCP), double, " + std::to_string(D.inner_knots) + " inner knots");
@@ -463,7 +389,7 @@ Command cut_guide_command(CLI::App* parent) {
       if (svg.empty()) throw DomainError("svg", "there is no guide to draw (RDCP infeasible)", "leave --svg out or make RDCP feasible");
       write_file_atomically(go->svg, svg);
     }
-    std::cout << out.dump() << "\n";
+    print_document(guide_runs_document(exact ? &*exact : nullptr, dbl ? &*dbl : nullptr));
     return 0;
   }};
 }
@@ -508,15 +434,16 @@ Command cut_facet_command(CLI::App* parent) {
   add_arith_option(fc, f3->arith, "solid3d: exact (KKT exactly), double (Eigen), or both (and the double judged exactly)")
       ->check(CLI::IsMember({"exact", "double", "both"}));
   return {fc, [fo, f3](const Context& ctx) {
-    if (solid_document_type(read_json_file(fo->guide.solid, ctx.read_limits)) == "solid3d") {
+    const SolidDocument solid(fo->guide.solid, ctx.read_limits);
+    if (solid.dimension() == 3) {
       Facet3CliOptions o = *f3;
       o.strip = fo->guide.strip;
       o.out = fo->out;
-      return run_facet3(o, fo->guide, fo->guide.solid, fo->guide.cut, ctx);
+      return run_facet3(o, fo->guide, solid.solid3(ctx.limits), fo->guide.cut, ctx);
     }
     if (f3->arith != "exact" || !f3->vtk.empty()) throw UsageError(f3->vtk.empty() ? "arith" : "vtk", "is for solid3d documents", "leave it out for a solid2d");
-    const auto S = solid2_from_json(read_json_file(fo->guide.solid, ctx.read_limits), ctx.limits);
-    const auto C = cut2_from_json(read_json_file(fo->guide.cut, ctx.read_limits));
+    const auto S = solid.solid2(ctx.limits);
+    const auto C = read_cut2(fo->guide.cut, ctx.read_limits);
     const GuideOptions o = to_guide_options(fo->guide);
     validate_cut(S, C);
     validate_guide_options(o, S.facets.size());
@@ -534,30 +461,20 @@ Command cut_facet_command(CLI::App* parent) {
     const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo2);
     const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
     const auto curve = from_frame(cc.curve, R.frame);
-    Json out{{"guide", guide_json(R, sep)},
-             {"curve", spline_to_json(curve)},
-             {"march_points", cc.polygon.size()},
-             {"fit_max_deviation_normalized", cc.fit_max_deviation},
-             {"validity", validity_json(v)}};
-    out["guide"].erase("guide");
+    CurveFacetRun run{GuideRun<Rational>{R, sep}, curve, cc.polygon.size(), cc.fit_max_deviation, v, !fo->out.empty(), std::nullopt};
     if (!fo->guide.svg.empty())
       write_file_atomically(fo->guide.svg, cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, &sep,
-                                                         "Cutting curve (papers/004): guide, samples, fitted curve (" + v.verdict + ")", &cc.curve));
+                                                         std::string("Cutting curve (papers/004): guide, samples, fitted curve (") + validity_word(v.verdict) + ")", &cc.curve));
     if (!fo->out.empty()) {
       std::filesystem::create_directories(fo->out);
-      write_file_atomically((std::filesystem::path(fo->out) / "curve.json").string(), spline_to_json(curve).dump(1) + "\n");
-      if (v.verdict == "valid") {
-        const auto [S1, S2] = split_solid(S, validate_cut(S, C), curve);
-        write_file_atomically((std::filesystem::path(fo->out) / "part1.solid.json").string(), solid2_to_json(S1).dump(1) + "\n");
-        write_file_atomically((std::filesystem::path(fo->out) / "part2.solid.json").string(), solid2_to_json(S2).dump(1) + "\n");
-        out["split"] = Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-                            {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-                            {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
-      } else {
-        out["split"] = "not written: the curve is not certified valid";
+      write_file_atomically((std::filesystem::path(fo->out) / "curve.json").string(), document_text(document(curve), 1));
+      if (v.verdict.is_proved()) {
+        run.parts = split_solid(S, validate_cut(S, C), curve);
+        write_file_atomically((std::filesystem::path(fo->out) / "part1.solid.json").string(), document_text(solid_document(run.parts->first), 1));
+        write_file_atomically((std::filesystem::path(fo->out) / "part2.solid.json").string(), document_text(solid_document(run.parts->second), 1));
       }
     }
-    std::cout << out.dump() << "\n";
+    print_document(curve_facet_document(run));
     return 0;
   }};
 }
@@ -574,9 +491,10 @@ Command cut_certify_command(CLI::App* parent) {
   ce->add_option("--strip", c3->strip, "solid3d: no collision check within this max-norm distance of the loop (normalized units)")->capture_default_str();
   ce->add_option("--max-depth", c3->max_depth, "solid3d: halvings of one piece")->check(CLI::Range(0, 40))->capture_default_str();
   return {ce, [co, c3](const Context& ctx) {
-    if (solid_document_type(read_json_file(co->solid, ctx.read_limits)) == "solid3d") return run_certify3(*c3, co->solid, co->cut, co->curve, ctx);
-    const auto [S, C, curve] = read_curve_input(*co, ctx);
-    std::cout << validity_json(certify_cutting_curve(S, C, curve)).dump() << "\n";
+    const SolidDocument solid(co->solid, ctx.read_limits);  // read once: "-" (standard input) works
+    if (solid.dimension() == 3) return run_certify3(*c3, solid, co->cut, co->curve, ctx);
+    const auto [S, C, curve] = read_curve_input(solid, *co, ctx);
+    print_document(curve_validity_document(certify_cutting_curve(S, C, curve)));
     return 0;
   }};
 }
@@ -590,23 +508,21 @@ Command cut_split_command(CLI::App* parent) {
   sp->add_option("curve", cso->curve, "the cutting curve (spline document); solid3d: a cutting_surface document")->required();
   sp->add_option("--out", cso->out, "folder for part1.solid.json and part2.solid.json (solid3d: split.json and surface.json)")->check(output_folder())->required();
   return {sp, [cso](const Context& ctx) {
-    if (solid_document_type(read_json_file(cso->solid, ctx.read_limits)) == "solid3d") return run_split3(cso->solid, cso->cut, cso->curve, cso->out, ctx);
-    const auto [S, C, curve] = read_curve_input(*cso, ctx);
+    const SolidDocument solid(cso->solid, ctx.read_limits);
+    if (solid.dimension() == 3) return run_split3(solid, cso->cut, cso->curve, cso->out, ctx);
+    const auto [S, C, curve] = read_curve_input(solid, *cso, ctx);
     const auto v = certify_cutting_curve(S, C, curve);
-    if (v.verdict != "valid")
-      throw DomainError("curve", "is not certified valid (" + v.verdict + ": regular " + v.regular + ", injective " + v.injective +
-                                     ", no collision " + v.inside + ")",
+    if (!v.verdict.is_proved())
+      throw DomainError("curve", std::string("is not certified valid (") + validity_word(v.verdict) + ": regular " + certificate_word(v.regular) +
+                                     ", injective " + certificate_word(v.injective) + ", no collision " + certificate_word(v.inside) + ")",
                         "run cut certify to see why; split along a valid cutting curve");
     const auto [S1, S2] = split_solid(S, C, curve);
     std::filesystem::create_directories(cso->out);
     const std::string p1 = (std::filesystem::path(cso->out) / "part1.solid.json").string();
     const std::string p2 = (std::filesystem::path(cso->out) / "part2.solid.json").string();
-    write_file_atomically(p1, solid2_to_json(S1).dump(1) + "\n");
-    write_file_atomically(p2, solid2_to_json(S2).dump(1) + "\n");
-    std::cout << Json{{"part1", p1}, {"part2", p2}, {"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-                      {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-                      {"area_check", "area(part1) + area(part2) = area(solid), exactly"}}.dump()
-              << "\n";
+    write_file_atomically(p1, document_text(solid_document(S1), 1));
+    write_file_atomically(p2, document_text(solid_document(S2), 1));
+    print_document(curve_split_document(p1, p2, S1, S2));
     return 0;
   }};
 }

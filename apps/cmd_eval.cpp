@@ -23,14 +23,14 @@ Commands add_eval(CLI::App& app) {
       ->capture_default_str();
   c->add_option("file", o->file, "spline document, - for stdin")->required();
   return {{c, [o](const Context& ctx) {
-             const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+             const auto S = read_spline(o->file, ctx.limits, ctx.read_limits);
              const auto x = parse_number_list(o->at, "at");
              std::vector<int> ord;
              if (!o->orders.empty())
                ord = whole_numbers(parse_number_list(o->orders, "derivative"), "derivative", 1000,
                                    "orders must be whole numbers in [0, 1000]", "write e.g. --derivative \"1,0\"");
              const auto spec = ArithSpec::parse(o->arith);
-             const Json out = with_arith(spec, [&](auto tag) {
+             print_document(with_arith(spec, [&](auto tag) {
                using T = typename decltype(tag)::type;
                const auto Sf = round_spline<T>(S);
                const std::vector<T> xf = round_values<T>(x, "at");
@@ -39,9 +39,8 @@ Commands add_eval(CLI::App& app) {
                const auto p = !ord.empty()              ? derivative(Sf, xf, ord)
                               : o->method == "deboor" ? evaluate_de_boor(Sf, xf)
                                                       : evaluate(Sf, xf);
-               return Json{{"point", point_to_json(p)}};
-             });
-             std::cout << out.dump() << "\n";
+               return point_document(p);
+             }));
              return 0;
            }}};
 }

@@ -6,6 +6,7 @@
 #include "fixtures/hybrid_examples.hpp"
 #include "float/arith_spec.hpp"
 #include "hybrid/hybrid.hpp"
+#include "io/documents.hpp"
 #include "io/hybrid_io.hpp"
 
 namespace splinex::app {
@@ -23,40 +24,12 @@ int run_example(const Options& o) {
   else if (o.example == "3.1-hexagon") P = hybrid_example_3_1_hexagon();
   else if (o.example == "3.1-octagon") P = hybrid_example_3_1_octagon();
   else throw UsageError("NAME", "is not an example: " + o.example, "use 2.1, 3.1-hexagon or 3.1-octagon");
-  std::cout << hybrid_to_json(P).dump() << "\n";
+  print_document(document(P));
   return 0;
 }
 
-template <class F>
-Json evaluate_points(const HybridPatch<Rational>& P, const std::vector<std::array<Rational, 2>>& xs) {
-  using Tr = ArithTraits<F>;
-  const auto cv = [](const Rational& r) { return Tr::from_rational(r); };
-  const auto Q = convert_hybrid<F>(P, cv);
-  Json pts = Json::array();
-  for (const auto& x : xs) {
-    const std::array<F, 2> xf{cv(x[0]), cv(x[1])};
-    const auto L = hybrid_local(Q, xf);
-    Json row{{"at", {ArithTraits<Rational>::to_json(x[0]), ArithTraits<Rational>::to_json(x[1])}},
-             {"point", point_to_json(hybrid_evaluate(Q, xf))},
-             {"wachspress", point_to_json(L.lambda)},
-             {"s", point_to_json(L.s)},
-             {"h", point_to_json(L.h)}};
-    bool corner = false;
-    for (const auto& v : Q.vertices) corner = corner || (v[0] == xf[0] && v[1] == xf[1]);
-    if (corner) {
-      row["derivatives"] = "none at a corner (alpha_i, beta_(i-1) are 0/0 there; see README)";
-    } else {
-      const auto D = hybrid_derivatives(Q, xf);
-      row["du"] = point_to_json(D.du);
-      row["dv"] = point_to_json(D.dv);
-    }
-    pts.push_back(row);
-  }
-  return Json{{"points", pts}, {"arith", Tr::name()}};
-}
-
 int run_eval(const Options& o, const Context& ctx) {
-  const auto P = hybrid_from_json(read_json_file(o.file, ctx.read_limits), ctx.limits);
+  const auto P = read_hybrid(o.file, ctx.limits, ctx.read_limits);
   std::vector<std::array<Rational, 2>> xs;
   for (const auto& a : o.at) {
     const auto v = parse_number_list(a, "at");
@@ -64,10 +37,9 @@ int run_eval(const Options& o, const Context& ctx) {
     xs.push_back({v[0], v[1]});
   }
   const auto spec = ArithSpec::parse(o.arith);
-  const Json out = with_arith_except_flint(spec, "hybrid eval", [&](auto tag) {
-    return evaluate_points<typename decltype(tag)::type>(P, xs);
-  });
-  std::cout << out.dump() << "\n";
+  print_document(with_arith_except_flint(spec, "hybrid eval", [&](auto tag) {
+    return hybrid_points_document<typename decltype(tag)::type>(P, xs);
+  }));
   return 0;
 }
 

@@ -1,13 +1,12 @@
-// splinex insert-knots | elevate | extract-bezier | split | reparametrize | reverse: one operation
-// of the kernel on a spline document, in any arithmetic.
+// splinex insert-knots | elevate | extract-bezier | split | reparametrize | reverse | derivative: one
+// operation of the kernel on a spline document, in any arithmetic (the rows of operation_table()).
 #include <iostream>
 #include <memory>
 
 #include "apps/command.hpp"
-#include "crosscheck/operations_impl.hpp"
+#include "crosscheck/operations.hpp"
 #include "float/arith_spec.hpp"
 #include "float/rounding.hpp"
-#include "io/result_json.hpp"
 
 namespace splinex::app {
 
@@ -36,16 +35,12 @@ void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
   }
 }
 
-Json run_op_document(const Operation& op, const BSpline<Rational>& S, const ArithSpec& spec, const Limits& limits) {
+auto run_op_document(const Operation& op, const BSpline<Rational>& S, const ArithSpec& spec, const Limits& limits) {
   return with_arith(spec, [&](auto tag) {
     using T = typename decltype(tag)::type;
     const BSpline<T> in = round_spline<T>(S);
-    if (op.kind == Operation::Kind::extract_bezier) return bezier_pieces_to_json(extract_bezier(in, limits));
-    const auto R = run_operation(op, in, limits);
-    if (R.size() == 1) return spline_to_json(R[0]);
-    Json parts = Json::array();
-    for (const auto& r : R) parts.push_back(spline_to_json(r));
-    return Json{{"splines", parts}};
+    if (op.kind == Operation::Kind::extract_bezier) return document(extract_bezier(in, limits));
+    return splines_document(run_operation(op, in, limits));
   });
 }
 
@@ -53,21 +48,21 @@ Json run_op_document(const Operation& op, const BSpline<Rational>& S, const Arit
 
 Commands add_operations(CLI::App& app) {
   Commands out;
-  for (const char* k : {"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative"}) {
+  for (const auto& row : operation_table()) {
     struct Options {
       std::string arith = "exact", file;
       OpOptions op;
     };
     auto o = std::make_shared<Options>();
-    const std::string kind = k;
+    const std::string kind = row.name;
     auto* c = app.add_subcommand(kind, "spline document -> " + kind + " result");
     add_arith_option(c, o->arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS");
     add_op_options(c, o->op, kind);
     c->add_option("file", o->file, "spline document, - for stdin")->required();
     out.push_back({c, [o, kind](const Context& ctx) {
-                     const auto S = spline_from_json(read_json_file(o->file, ctx.read_limits), ctx.limits);
+                     const auto S = read_spline(o->file, ctx.limits, ctx.read_limits);
                      const auto spec = ArithSpec::parse(o->arith);
-                     std::cout << run_op_document(make_op(kind, o->op), S, spec, ctx.limits).dump() << "\n";
+                     print_document(run_op_document(make_op(kind, o->op), S, spec, ctx.limits));
                      return 0;
                    }});
   }

@@ -28,14 +28,14 @@ void print_text(const ProofReport& r) {
 Commands add_prove(CLI::App& app) {
   struct Options {
     std::vector<std::string> names;
-    bool json = false, list = false;
+    bool as_document = false, list = false;
     long cases = 12;
     int jobs = 0;  // 0: every core
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("prove", "run the exact proofs (proof by identity)");
   c->add_option("names", o->names, "proof names (default: all)");
-  c->add_flag("--json", o->json, "JSON output");
+  c->add_flag("--json", o->as_document, "JSON output");
   c->add_option("--cases", o->cases, "random exact cases per proof")->capture_default_str();
   c->add_flag("--list", o->list, "list the proof names");
   c->add_option("--jobs", o->jobs, "proofs run at once on threads (default 0: every core); the output does not depend on it")
@@ -50,14 +50,14 @@ Commands add_prove(CLI::App& app) {
                throw UsageError("cases", std::to_string(o->cases) + " is outside [1, 100000] (0 cases would check nothing)",
                                 "give --cases N with 1 <= N <= 100000");
              bool all = true;
-             Json j = Json::array();
+             std::vector<ProofReport> reports;
              const std::size_t threads = o->jobs > 0 ? static_cast<std::size_t>(o->jobs) : hardware_threads();
              for (const auto& r : run_proofs(o->names, static_cast<std::size_t>(o->cases), threads)) {
                all = all && r.as_expected();
-               if (o->json) j.push_back(proof_report_json(r));
+               if (o->as_document) reports.push_back(r);
                else print_text(r);
              }
-             if (o->json) std::cout << j.dump(2) << "\n";
+             if (o->as_document) print_document(proof_reports_document(reports), 2);
              return all ? 0 : 1;
            }}};
 }

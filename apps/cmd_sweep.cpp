@@ -79,7 +79,7 @@ Commands add_sweep(CLI::App& app) {
   sg->add_option("--out", *sout, "folder for the files")->check(output_folder())->required();
 
   return {{pl, [po, pname](const Context&) {
-             for (const auto& j : sweep_plan(*pname, *po)) std::cout << sweep_job_json(j).dump() << "\n";
+             std::cout << sweep_plan_lines(sweep_plan(*pname, *po));
              return 0;
            }},
           {rn, [ro](const Context&) {
@@ -93,19 +93,18 @@ Commands add_sweep(CLI::App& app) {
                jobs = one, i = 0, n = 1;
              }
              const auto st = sweep_run(jobs, ro->dir, i, n, !ro->quiet, static_cast<std::size_t>(ro->threads));
-             std::cout << Json{{"shard", std::to_string(i) + "/" + std::to_string(n)}, {"jobs_in_shard", st.in_shard}, {"run", st.run}, {"skipped", st.skipped}, {"dir", ro->dir}}.dump()
-                       << "\n";
+             print_document(sweep_run_document(st, i, n, ro->dir));
              return 0;
            }},
           {mg, [mo](const Context&) {
              const auto jobs = read_sweep_jobs(mo->jobs);
              const bool ok = sweep_merge(jobs, mo->dir, mo->out.empty() ? mo->dir : mo->out);
-             std::cout << Json{{"jobs", jobs.size()}, {"merged_into", mo->out.empty() ? mo->dir : mo->out}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
+             print_document(sweep_merge_document(jobs.size(), mo->out.empty() ? mo->dir : mo->out, ok));
              return ok ? 0 : 1;
            }},
           {sg, [so, sname, sout](const Context&) {
              const bool ok = sweep_single(*sname, *so, *sout, [](const std::string& s) { std::cerr << "[sweep single] " << s << "\n"; });
-             std::cout << Json{{"out", *sout}, {"checks", ok ? "passed" : "FAILED"}}.dump() << "\n";
+             print_document(sweep_single_document(*sout, ok));
              return ok ? 0 : 1;
            }}};
 }

@@ -7,25 +7,21 @@
 #include "apps/command.hpp"
 #include "compose/compose.hpp"
 #include "hybrid/hybrid.hpp"
-#include "io/hybrid_io.hpp"
 #include "crosscheck/verify.hpp"
 
 namespace splinex::app {
 
 namespace {
 
-std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::string& field) {
-  if (!doc.contains(field) || !doc[field].is_array())
-    throw ValidationError("candidate." + field, "is missing or not an array", "give \"at\" and \"values\" as lists of points");
-  std::vector<std::vector<Rational>> out;
-  for (std::size_t i = 0; i < doc[field].size(); ++i) {
-    const Json& row = doc[field][i];
-    const std::string where = "candidate." + field + "[" + std::to_string(i) + "]";
-    if (!row.is_array()) throw ValidationError(where, "is not a list of numbers", "write [x0, x1, ...]");
-    std::vector<Rational> r;
-    for (std::size_t c = 0; c < row.size(); ++c) r.push_back(json_number(row[c], where + "[" + std::to_string(c) + "]"));
-    out.push_back(std::move(r));
+/// What verify judges: every kernel operation (refine: insert-knots by A5.4, after it), eval,
+/// compose and hybrid-eval.
+std::vector<std::string> verify_operations() {
+  std::vector<std::string> out;
+  for (const auto& r : operation_table()) {
+    out.push_back(r.name);
+    if (r.kind == Operation::Kind::insert_knots) out.push_back("refine");
   }
+  for (const char* extra : {"eval", "compose", "hybrid-eval"}) out.push_back(extra);
   return out;
 }
 
@@ -66,8 +62,7 @@ Commands add_verify(CLI::App& app) {
                 "compose (--method symbolic|interpolation: T(S) as one spline; trimmed: Algorithm 1's patches; "
                 "tensor: Algorithm 2's tiles) or hybrid-eval (the hybrid patch's values)")
       ->required()
-      ->check(CLI::IsMember({"insert-knots", "refine", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative", "eval",
-                             "compose", "hybrid-eval"}));
+      ->check(CLI::IsMember(verify_operations()));
   c->add_option("--patch", o->patch, "hybrid-eval: the hybrid patch document");
   c->add_option("--input", o->input, "the input spline document (every operation but compose)");
   c->add_option("--outer", o->outer, "compose: the outer spline T");
@@ -107,14 +102,13 @@ Commands add_verify(CLI::App& app) {
                if (std::chrono::steady_clock::now() - start > std::chrono::seconds(2)) std::cerr << "splinex verify: " << s << std::endl;
              };
              if (!(vo.factor > 1)) throw UsageError("factor", "must be greater than 1", "give e.g. --factor 2");
-             Json cand = read_json_file(o->candidate, ctx.read_limits);
-             if (o->read_as == "double") cand = candidate_numbers_as_doubles(cand);
+             const auto cand = read_candidate(o->candidate, o->read_as == "double", ctx.read_limits);
              VerifyReport rep;
              if (o->operation == "compose") {
                if (o->outer.empty() || o->inner.empty())
                  throw UsageError("outer", "verify compose needs --outer and --inner", "give both spline documents");
-               const auto T = spline_from_json(read_json_file(o->outer, ctx.read_limits), ctx.limits, "outer");
-               const auto Sin = spline_from_json(read_json_file(o->inner, ctx.read_limits), ctx.limits, "inner");
+               const auto T = read_spline(o->outer, ctx.limits, ctx.read_limits, "outer");
+               const auto Sin = read_spline(o->inner, ctx.limits, ctx.read_limits, "inner");
                const std::string method = o->op.insert_method == "a54" ? "symbolic" : o->op.insert_method;
                if (method != "symbolic" && method != "interpolation" && method != "trimmed" && method != "tensor")
                  throw UsageError("method", "verify compose --method " + method + " is not a composition method",
@@ -129,37 +123,28 @@ Commands add_verify(CLI::App& app) {
                  co.expand = o->expand;
                  rep = verify_splines("compose", {compose(T, Sin, co, ctx.limits)}, verify_candidate_splines(cand, ctx.limits), vo, ctx.limits);
                }
-               std::cout << rep.to_json().dump(2) << "\n";
+               print_document(rep.document(), 2);
                return verdict_status(rep, o->max_bits);
              }
              if (o->operation == "hybrid-eval") {
                if (o->patch.empty()) throw UsageError("patch", "verify hybrid-eval needs --patch", "give the hybrid patch document");
-               const auto P = hybrid_from_json(read_json_file(o->patch, ctx.read_limits), ctx.limits);
-               // Also the output of `splinex hybrid eval`: {"points": [{"at": [u, v], "point": [...]}, ...]}.
-               if (cand.is_object() && cand.contains("points") && !cand.contains("values")) {
-                 Json at = Json::array(), values = Json::array();
-                 for (const auto& row : cand["points"]) {
-                   if (!row.is_object() || !row.contains("at") || !row.contains("point"))
-                     throw ValidationError("candidate.points", "an entry has no \"at\" or \"point\"", "give {\"at\": [u, v], \"point\": [...]}");
-                   at.push_back(row["at"]);
-                   values.push_back(row["point"]);
-                 }
-                 cand = Json{{"at", at}, {"values", values}};
-               }
-               rep = verify_point_values("hybrid-eval", number_rows(cand, "at"), number_rows(cand, "values"),
+               const auto P = read_hybrid(o->patch, ctx.limits, ctx.read_limits);
+               const auto cv = hybrid_candidate_values(cand);
+               rep = verify_point_values("hybrid-eval", cv.at, cv.values,
                                          [&](const std::vector<Rational>& x) {
                                            if (x.size() != 2)
                                              throw ValidationError("candidate.at", "a hybrid patch point has two parameters", "write [u, v]");
                                            return hybrid_evaluate(P, Point2<Rational>{x[0], x[1]});
                                          },
                                          vo);
-               std::cout << rep.to_json().dump(2) << "\n";
+               print_document(rep.document(), 2);
                return verdict_status(rep, o->max_bits);
              }
              if (o->input.empty()) throw UsageError("input", "verify " + o->operation + " needs --input", "give the input spline document");
-             const auto S = spline_from_json(read_json_file(o->input, ctx.read_limits), ctx.limits, "input");
+             const auto S = read_spline(o->input, ctx.limits, ctx.read_limits, "input");
              if (o->operation == "eval") {
-               rep = verify_values(S, number_rows(cand, "at"), number_rows(cand, "values"), vo);
+               const auto cv = candidate_values(cand);
+               rep = verify_values(S, cv.at, cv.values, vo);
              } else {
                OpOptions op = o->op;
                std::string kind = o->operation;
@@ -170,7 +155,7 @@ Commands add_verify(CLI::App& app) {
                use_one_method(kind, op, o->operation);
                rep = verify(make_op(kind, op), S, verify_candidate_splines(cand, ctx.limits), vo, ctx.limits);
              }
-             std::cout << rep.to_json().dump(2) << "\n";
+             print_document(rep.document(), 2);
              return verdict_status(rep, o->max_bits);
            }}};
 }

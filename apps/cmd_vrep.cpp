@@ -37,7 +37,7 @@ struct ConstructOptions {
 };
 
 BSpline<Rational> read_spline(const std::string& path, const std::string& field, const Context& ctx) {
-  return spline_from_json(read_json_file(path, ctx.read_limits), ctx.limits, field);
+  return splinex::read_spline(path, ctx.limits, ctx.read_limits, field);
 }
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -52,7 +52,7 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
-Json construct(const ConstructOptions& o, const Context& ctx) {
+auto construct(const ConstructOptions& o, const Context& ctx) {
   const auto spec = ArithSpec::parse(o.arith);
   auto need = [](const std::string& value, const std::string& field, const std::string& kind) {
     if (value.empty()) throw UsageError(field, "vrep construct " + kind + " needs --" + field, "give --" + field);
@@ -66,7 +66,7 @@ Json construct(const ConstructOptions& o, const Context& ctx) {
       using F = typename decltype(tag)::type;
       std::vector<F> v;
       for (const auto& x : V) v.push_back(round_checked<F>(x, "vector"));
-      return spline_to_json(extrude(round_spline<F>(S, "surface"), v, ctx.limits));
+      return document(extrude(round_spline<F>(S, "surface"), v, ctx.limits));
     });
   }
   if (o.kind == "ruled") {
@@ -75,7 +75,7 @@ Json construct(const ConstructOptions& o, const Context& ctx) {
     const auto A = read_spline(o.first, "first", ctx), B = read_spline(o.second, "second", ctx);
     return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
       using F = typename decltype(tag)::type;
-      return spline_to_json(ruled(round_spline<F>(A, "first"), round_spline<F>(B, "second"), ctx.limits));
+      return document(ruled(round_spline<F>(A, "first"), round_spline<F>(B, "second"), ctx.limits));
     });
   }
   if (o.kind == "revolve") {
@@ -84,7 +84,7 @@ Json construct(const ConstructOptions& o, const Context& ctx) {
     const int axis = o.axis == "x" ? 0 : o.axis == "y" ? 1 : 2;
     return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
       using F = typename decltype(tag)::type;
-      return spline_to_json(revolve(round_spline<F>(S, "surface"), axis, o.quarters, ctx.limits));
+      return document(revolve(round_spline<F>(S, "surface"), axis, o.quarters, ctx.limits));
     });
   }
   if (o.kind == "boolean-sum") {
@@ -99,7 +99,7 @@ Json construct(const ConstructOptions& o, const Context& ctx) {
       using T = typename decltype(tag)::type;
       std::array<std::array<BSpline<T>, 2>, 3> G;
       for (int k = 0; k < 6; ++k) G[k / 2][k % 2] = round_spline<T>(F[k / 2][k % 2], names[k]);
-      return spline_to_json(boolean_sum(G, ctx.limits));
+      return document(boolean_sum(G, ctx.limits));
     });
   }
   // sweep
@@ -115,7 +115,7 @@ Json construct(const ConstructOptions& o, const Context& ctx) {
     for (std::size_t k = 0; k < S.size(); ++k) s.push_back(round_spline<F>(S[k], "surfaces[" + std::to_string(k) + "]"));
     std::vector<F> w;
     for (const auto& x : at) w.push_back(round_checked<F>(x, "at"));
-    return spline_to_json(sweep(s, w, o.degree, ctx.limits));
+    return document(sweep(s, w, o.degree, ctx.limits));
   });
 }
 
@@ -210,7 +210,7 @@ Command vrep_construct(CLI::App* v) {
   c->add_option("--degree", o->degree, "sweep: the degree in w (at most m)")->check(CLI::Range(1, 64))->capture_default_str();
 
   return {c, [o](const Context& ctx) {
-    std::cout << construct(*o, ctx).dump() << "\n";
+    print_document(construct(*o, ctx));
     return 0;
   }};
 }
@@ -229,11 +229,10 @@ Command vrep_certify(CLI::App* v) {
   return {cert, [co](const Context& ctx) {
     const auto V = read_spline(co->file, "trivariate", ctx);
     const auto spec = ArithSpec::parse(co->arith);
-    const Json j = with_arith_except_flint(spec, "vrep certify", [&](auto tag) {
+    print_document(with_arith_except_flint(spec, "vrep certify", [&](auto tag) {
       using F = typename decltype(tag)::type;
-      return vrep::report_to_json(certify_regularity(round_spline<F>(V, "trivariate"), co->levels, ctx.limits));
-    });
-    std::cout << j.dump(2) << "\n";
+      return vrep::document(certify_regularity(round_spline<F>(V, "trivariate"), co->levels, ctx.limits));
+    }), 2);
     return 0;
   }};
 }
@@ -262,7 +261,7 @@ Command vrep_primitive(CLI::App* v) {
 
   return {prim, [po](const Context& ctx) {
     const auto spec = ArithSpec::parse(po->arith);
-    const Json j = with_arith_except_flint(spec, "vrep primitive", [&](auto tag) {
+    print_document(with_arith_except_flint(spec, "vrep primitive", [&](auto tag) {
       using F = typename decltype(tag)::type;
       const int axis = po->axis == "x" ? 0 : po->axis == "y" ? 1 : 2;
       std::vector<F> at;
@@ -272,11 +271,10 @@ Command vrep_primitive(CLI::App* v) {
       for (auto& V : cells) V = place_trivariate(V, axis, at);
       std::vector<std::string> names;
       for (std::size_t k = 0; k < cells.size(); ++k) names.push_back(po->name + " " + std::to_string(k));
-      Json doc = vmodel_to_json(glue(cells, F(0), names, ctx.limits));
-      if (region) doc["implicit"] = region_to_json(place_region(*region, axis, at));
-      return doc;
-    });
-    std::cout << j.dump() << "\n";
+      std::optional<Region<F>> placed;
+      if (region) placed = place_region(*region, axis, at);
+      return vrep::vmodel_document(glue(cells, F(0), names, ctx.limits), placed);
+    }));
     return 0;
   }};
 }
@@ -289,10 +287,7 @@ Command vrep_glue(CLI::App* v) {
   glue_cmd->add_option("--eps", go->eps, "glue in double with control points equal within eps (default: exact)");
   return {glue_cmd, [go](const Context& ctx) {
     if (go->eps.empty()) {
-      const auto r = read_model(go->files, ctx);
-      Json doc = vmodel_to_json(r.model);
-      doc["topology"]["validity"] = r.validity.verdict();  // for the reader; ignored on input
-      std::cout << doc.dump() << "\n";
+      print_document(vrep::glued_document(read_model(go->files, ctx)));
       return 0;
     }
     const auto all = read_cells(go->files, ctx);
@@ -301,7 +296,7 @@ Command vrep_glue(CLI::App* v) {
     if (!(eps > 0) || !std::isfinite(eps)) throw UsageError("eps", "must be a positive double", "give e.g. --eps 1e-9");
     std::vector<BSpline<double>> d;
     for (std::size_t k = 0; k < all.trivariates.size(); ++k) d.push_back(round_spline<double>(all.trivariates[k], all.names[k]));
-    std::cout << vmodel_to_json(glue(d, eps, all.names, ctx.limits)).dump() << "\n";
+    print_document(vrep::vmodel_document(glue(d, eps, all.names, ctx.limits)));
     return 0;
   }};
 }
@@ -385,18 +380,7 @@ Command vrep_eval(CLI::App* v) {
     const auto x = parse_number_list(vo->at, "at");
     if (x.size() != 3) throw UsageError("at", "needs three parameters", "give --at u,v,w");
     const auto r = evaluate_cell(M, vo->cell, x);
-    auto list = [](const std::vector<Rational>& v) {
-      Json a = Json::array();
-      for (const auto& y : v) a.push_back(to_fraction_string(y));
-      return a;
-    };
-    Json out{{"cell", vo->cell}, {"point", list(r.point)}, {"coordinates", list(r.coordinates)}};
-    Json f = Json::object(), c = Json::object();
-    for (const auto& [n, v] : r.fields) f[n] = list(v);
-    for (const auto& [n, v] : r.constants) c[n] = list(v);
-    out["fields"] = f;
-    out["constants"] = c;
-    std::cout << out.dump() << "\n";
+    print_document(vrep::cell_value_document(vo->cell, r));
     return 0;
   }};
 }
@@ -428,7 +412,7 @@ Command vrep_boolean(CLI::App* v) {
     rq.trim = vrep::parse_trim_mode(bo->trim);
     rq.boxes = bo->boxes;
     if (!bo->eps.empty()) rq.eps = to_double(parse_number(bo->eps, "eps"));
-    std::cout << vrep::to_json(vrep::boolean(A, B, rq, ctx.limits)).dump() << "\n";
+    print_document(vrep::document(vrep::boolean(A, B, rq, ctx.limits)));
     return 0;
   }};
 }
@@ -458,7 +442,7 @@ Command vrep_volume(CLI::App* v) {
     rq.centroid = volo->centroid;
     rq.field = volo->field;
     rq.component = volo->component;
-    std::cout << vrep::volume_document(O, rq, ctx.limits).dump() << "\n";
+    print_document(vrep::volume_document(O, rq, ctx.limits));
     return 0;
   }};
 }
@@ -474,26 +458,7 @@ Command vrep_classify(CLI::App* v) {
     const auto O = operand(clo->a, ctx);
     const auto x = parse_number_list(clo->at, "at");
     if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
-    // Cells with planar faces: which cells contain x. Otherwise the model's exact region.
-    std::optional<std::vector<std::size_t>> in_cells;
-    if (O.model && planar_region(*O.model)) in_cells = cells_containing(*O.model, x);
-    if (in_cells) {
-      Json cells = Json::array();
-      for (std::size_t c : *in_cells) cells.push_back({{"cell", c}, {"name", O.model->cells[c].name}});
-      Json out{{"inside", !cells.empty()}, {"cells", cells}};
-      if (!O.validity.complete()) out["validity"] = O.validity.verdict();
-      std::cout << out.dump() << "\n";
-      return 0;
-    }
-    if (!O.trimmed)
-      throw DomainError("file", "has curved cells and no exact region (\"implicit\"): point classification needs one",
-                        "build the model with vrep primitive or vrep boolean, which write it");
-    const Truth t = classify_point(O.trimmed->region, x);
-    Json out{{"truth", t == Truth::in ? "inside" : t == Truth::out ? "outside" : "on a surface"}};
-    if (t != Truth::mixed) out["inside"] = t == Truth::in;
-    else out["note"] = "x lies on the zero set of a polynomial that decides it: the boundary, or inside where two pieces touch";
-    if (!O.validity.complete()) out["validity"] = O.validity.verdict();
-    std::cout << out.dump() << "\n";
+    print_document(vrep::classify_document(O, x));
     return 0;
   }};
 }
@@ -513,13 +478,9 @@ Command vrep_topology(CLI::App* v) {
   topo->add_flag("--glue", tco->glue, "also glue the cells into one V-model: internal and boundary pieces of every half-V-surface, their twins, "
                                       "the V-surface counts (trimmed_glue)");
   return {topo, [tco](const Context& ctx) {
-    const Json doc = read_json_file(tco->file, ctx.read_limits);
-    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "trimmed_vmodel")
-      throw ValidationError(tco->file, "is not a trimmed V-model document (type \"trimmed_vmodel\")",
-                            "give the output of vrep boolean with trimmed cells; a V-model's own topology is in vrep info");
-    const auto M = trimmed_from_json(doc, ctx.limits, tco->file);
+    const auto M = vrep::read_trimmed_model(tco->file, ctx.limits, ctx.read_limits);
     const auto validity = validate_trimmed(M, tco->file, {}, ctx.limits);
-    std::cout << vrep::topology_document(M, validity, tco->boxes, tco->glue, ctx.limits).dump() << "\n";
+    print_document(vrep::topology_document(M, validity, tco->boxes, tco->glue, ctx.limits));
     return 0;
   }};
 }
@@ -542,13 +503,13 @@ Command vrep_teapot(CLI::App* v) {
     if (tpo->arith == "double") {
       if (!tpo->svg.empty() || !tpo->vtk.empty())
         throw UsageError("svg", "figures are drawn from the exact run", "drop --svg/--vtk or use --arith exact");
-      std::cout << teapot_document(teapot_vmodel<double>(tpo->boxes, progress)).dump() << "\n";
+      print_document(teapot_document(teapot_vmodel<double>(tpo->boxes, progress)));
       return 0;
     }
     const auto M = teapot_vmodel<Rational>(tpo->boxes, progress);
     if (!tpo->svg.empty()) write_file_atomically(tpo->svg, teapot_vmodel_svg(M));
     if (!tpo->vtk.empty()) write_file_atomically(tpo->vtk, teapot_vmodel_vtk(M));
-    std::cout << teapot_document(M).dump() << "\n";
+    print_document(teapot_document(M));
     return 0;
   }};
 }
@@ -578,41 +539,9 @@ Command vrep_ssi(CLI::App* v) {
     opt.grid = so->grid;
     auto progress = [](const std::string& line) { std::cerr << "[vrep ssi] " << line << "\n"; };
     const auto st = ssi_study(S1, S2, opt, so->judge, progress);
-    Json branches = Json::array();
-    for (const auto& b : st.result.branches) {
-      Json pts = Json::array();
-      for (const auto& x : b.points) pts.push_back({x[0], x[1], x[2], x[3]});
-      branches.push_back({{"closed", b.closed}, {"ends_meet", b.ends_meet}, {"tangential_stop", b.tangential_stop}, {"points", pts}});
-    }
-    Json out{{"branches", branches},
-             {"candidates", st.result.candidates},
-             {"seeds", st.result.seeds},
-             {"newton_failures", st.result.newton_failures},
-             {"starts_skipped", st.result.skipped},
-             {"loops_in_space", loops_in_space(S1, st.result, opt.step / 4)},
-             {"seconds", st.seconds_float},
-             {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
-    std::size_t tangential = 0;
-    for (const auto& b : st.result.branches) tangential += b.tangential_stop;
-    if (tangential > 0)
-      out["warning"] = std::to_string(tangential) + " branches stopped where the normals are parallel: tangential contact or surfaces "
-                       "that coincide over a region, where the intersection is not a curve and this method does not apply";
-    if (so->judge)
-      out["judged"] = {{"vertices", st.vertices},
-                       {"vertices_certified", st.vertices_certified},
-                       {"midpoints", st.midpoints},
-                       {"midpoints_certified", st.midpoints_certified},
-                       {"max_vertex_gap_at_most", st.max_vertex_gap},
-                       {"max_vertex_distance_at_most", st.max_vertex_distance},
-                       {"max_midpoint_gap_at_most", st.max_mid_gap},
-                       {"max_midpoint_distance_at_most", st.max_mid_distance},
-                       {"uncertified", st.uncertified},
-                       {"seconds", st.seconds_judge},
-                       {"meaning", "gap: |S1(u,v) - S2(s,t)| exactly (rounded up); distance: certified bound of |S1(u,v) - q| for the "
-                                   "unique true intersection point q Krawczyk proves in a box about the point (certified points only)"}};
     if (!so->svg.empty()) write_file_atomically(so->svg, ssi_svg(S1, S2, st.result, so->a, so->b, "vrep ssi: " + so->a + " and " + so->b));
     if (!so->obj.empty()) write_file_atomically(so->obj, ssi_obj(S1, st.result));
-    std::cout << out.dump() << "\n";
+    print_document(ssi_document(S1, st, opt, so->judge));
     return 0;
   }};
 }
@@ -635,37 +564,7 @@ Command vrep_blend(CLI::App* v) {
     const auto V1 = exact_model({blo->a}, ctx), V2 = exact_model({blo->b}, ctx);
     const auto x = parse_number_list(blo->at, "at");
     if (x.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
-    const DistanceBlend D(V1, V2);
-    const bool in1 = D.in_first(x), in2 = D.in_second(x);
-    std::vector<Rational> A1, A2;
-    Json out{{"in_first", in1}, {"in_second", in2}};
-    auto strings = [](const std::vector<Rational>& v) {
-      Json j = Json::array();
-      for (const auto& y : v) j.push_back(to_fraction_string(y));
-      return j;
-    };
-    if (in1) out["A1"] = strings(A1 = attribute_at(V1, x, blo->attribute));
-    if (in2) out["A2"] = strings(A2 = attribute_at(V2, x, blo->attribute));
-    if (!in1) A1 = A2;
-    if (!in2) A2 = A1;
-    const auto r = D.at(x, A1, A2, blo->k, blo->bits);
-    if (in1 && in2) {
-      out["d1_squared"] = to_fraction_string(r.d1_squared);
-      out["d2_squared"] = to_fraction_string(r.d2_squared);
-    }
-    out["singular"] = r.singular;
-    if (r.singular) out["note"] = "d1 = d2 = 0: the blend is undefined here (the point r of Figure 6)";
-    Json value = Json::array(), approx = Json::array();
-    for (const auto& e : r.value) {
-      if (e.exact()) value.push_back(to_fraction_string(e.lo));
-      else value.push_back({to_fraction_string(e.lo), to_fraction_string(e.hi)});
-      approx.push_back(approx_json(to_double(e.lo)));
-    }
-    if (!r.singular) {
-      out["value"] = value;
-      out["approximately"] = approx;
-    }
-    std::cout << out.dump() << "\n";
+    print_document(vrep::blend_document(V1, V2, x, blo->attribute, blo->k, blo->bits));
     return 0;
   }};
 }

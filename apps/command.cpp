@@ -19,7 +19,7 @@ std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::
 
 BSpline<Rational> read_surface_argument(const std::string& what, const std::string& field, const Context& ctx) {
   if (what.rfind("teapot:", 0) == 0) return teapot_surface(what.substr(7));
-  return spline_from_json(read_json_file(what, ctx.read_limits), ctx.limits, field);
+  return read_spline(what, ctx.limits, ctx.read_limits, field);
 }
 
 }  // namespace splinex::app

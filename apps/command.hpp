@@ -10,7 +10,7 @@
 
 #include "base/limits.hpp"
 #include "crosscheck/operations.hpp"
-#include "io/json_io.hpp"
+#include "io/documents.hpp"
 #include "io/output_path.hpp"
 
 namespace splinex::app {
@@ -40,7 +40,7 @@ using Commands = std::vector<Command>;
 
 // Each adds its subcommand(s) to app; main adds them in this order (the order of --help).
 Commands add_eval(CLI::App& app);
-Commands add_operations(CLI::App& app);  // insert-knots, elevate, extract-bezier, split, reparametrize, reverse
+Commands add_operations(CLI::App& app);  // one subcommand per row of operation_table()
 Commands add_compose(CLI::App& app);
 Commands add_crosscheck(CLI::App& app);
 Commands add_prove(CLI::App& app);

@@ -5,8 +5,9 @@
 //                verdict in the claim's report: a parameter point, two parameters with one image);
 //   undecided  - neither, with the reason (which budget ran out, which case is not built).
 // CGAL's Uncertain<T> is the model: an answer that may not be known, and make_certain() that
-// refuses to guess. A rule checked by ctest (scripts/check_size.py, placement): a new three-valued
-// enum outside base/ must not be added; use Verdict.
+// refuses to guess. A decision among several values that may not be made is an Uncertain<E>. A
+// rule checked by ctest (scripts/check_size.py, placement): a new enum with an `undecided` member
+// outside base/ must not be added; use Verdict or Uncertain<E>.
 #pragma once
 #include <string>
 #include <utility>
@@ -58,6 +59,39 @@ class Verdict {
   Verdict(Status s, std::string r) : status_(s), reason_(std::move(r)) {}
   Status status_ = Status::undecided;
   std::string reason_ = "not examined";
+};
+
+/// A decision among the values of an enumeration E that may not be made: one value, or undecided
+/// with the reason - CGAL's Uncertain<T> for an enumeration, as Verdict is for a yes/no claim (a
+/// trimmed cell is whole, empty or cut; an edge is a curve or collapsed). Compare with a value:
+/// an undecided one equals none.
+template <class E>
+class Uncertain {
+ public:
+  Uncertain(E value) : value_(value), certain_(true) {}  // NOLINT: a decided value converts implicitly
+  static Uncertain undecided(std::string reason) {
+    Uncertain u;
+    u.reason_ = std::move(reason);
+    return u;
+  }
+
+  bool is_certain() const { return certain_; }
+  /// Why it is not decided (empty when it is).
+  const std::string& reason() const { return reason_; }
+  /// The value; an undecided one throws UndecidedError naming `what` and the reason.
+  E make_certain(const std::string& what) const {
+    if (!certain_) throw UndecidedError(what, "undecided: " + reason_, "raise the budget named in the reason, or decide it another way");
+    return value_;
+  }
+
+  friend bool operator==(const Uncertain& u, E e) { return u.certain_ && u.value_ == e; }
+  friend bool operator!=(const Uncertain& u, E e) { return !(u == e); }
+
+ private:
+  Uncertain() = default;
+  E value_{};
+  bool certain_ = false;
+  std::string reason_;
 };
 
 }  // namespace splinex

@@ -27,6 +27,7 @@
 #endif
 
 #include "bench/memory_probe.hpp"
+#include "bench/ratio_reporter.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "io/json_io.hpp"
@@ -209,17 +210,6 @@ void run_occt(benchmark::State& st, const std::string& op, int p, std::size_t n)
   report_memory(st, once, items);
 }
 #endif
-
-// Collects real time per benchmark name for the ratio table.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, double> ns;
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs)
-      if (!r.error_occurred) ns[r.benchmark_name()] = r.GetAdjustedRealTime();
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
 
 }  // namespace
 

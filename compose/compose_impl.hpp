@@ -284,6 +284,35 @@ std::size_t compose_least_size(const BSpline<T>& outer, const BSpline<T>& inner,
   return least;
 }
 
+namespace detail {
+
+/// A Bezier piece of S whose control points reach x = hi in coordinate j from below, where T may
+/// jump: a DomainError when a corner the piece owns (FindSpan's half-open rule: its left ends, and
+/// its right ends only at S's domain end) lies on x, since T(S) is then no polynomial on the piece.
+template <class T>
+void refuse_owned_corner_at(const BezierPiece<T>& piece, const BSpline<T>& inner, int j, const T& hi) {
+  const BSpline<T>& S = piece.spline;
+  const int k = inner.dim();
+  const std::size_t corners = std::size_t(1) << k;
+  for (std::size_t m = 0; m < corners; ++m) {
+    bool owned = true;
+    std::size_t idx = 0, stride = 1;
+    for (int l = 0; l < k; ++l) {
+      const bool right = (m >> l) & 1;
+      if (right && !(piece.box[l].second == inner.domain_hi(l))) owned = false;
+      idx += (right ? S.count(l) - 1 : 0) * stride;
+      stride *= S.count(l);
+    }
+    if (owned && S.points[idx * S.q + j] == hi)
+      throw DomainError("inner", "a piece reaches the knot line u_" + std::to_string(j) + " = " + ArithTraits<T>::to_string(hi) +
+                                     ", where the outer spline may jump, from below at a parameter it owns: T(S) "
+                                     "is not one polynomial on that piece",
+                        "compose with --method trimmed (Algorithm 1), or insert a knot into the inner spline there");
+  }
+}
+
+}  // namespace detail
+
 template <class T>
 BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const CompositionOptions& options,
                    const Limits& limits) {
@@ -336,25 +365,8 @@ BSpline<T> compose(const BSpline<T>& outer, const BSpline<T>& inner, const Compo
       // (FindSpan's half-open rule: the left end, and the right end only at S's domain end) takes
       // the value of T's upper piece there. If T may jump at x, T(S) is then no polynomial on the
       // piece. Bernstein coefficients <= x reach x only where a corner value does.
-      if (lo < hi && hi == outer_breaks[j][c + 1] && c + 2 < outer_breaks[j].size() && outer_jumps_at(j, hi)) {
-        const std::size_t corners = std::size_t(1) << k;
-        for (std::size_t m = 0; m < corners; ++m) {
-          bool owned = true;
-          std::size_t idx = 0, stride = 1;
-          for (int l = 0; l < k; ++l) {
-            const bool right = (m >> l) & 1;
-            if (right && !(inner_pieces[pi].box[l].second == inner.domain_hi(l))) owned = false;
-            idx += (right ? S.count(l) - 1 : 0) * stride;
-            stride *= S.count(l);
-          }
-          if (owned && S.points[idx * S.q + j] == hi)
-            throw DomainError("inner", "a piece reaches the knot line u_" + std::to_string(j) + " = " +
-                                           ArithTraits<T>::to_string(hi) +
-                                           ", where the outer spline may jump, from below at a parameter it owns: T(S) "
-                                           "is not one polynomial on that piece",
-                              "compose with --method trimmed (Algorithm 1), or insert a knot into the inner spline there");
-        }
-      }
+      if (lo < hi && hi == outer_breaks[j][c + 1] && c + 2 < outer_breaks[j].size() && outer_jumps_at(j, hi))
+        detail::refuse_owned_corner_at(inner_pieces[pi], inner, j, hi);
       piece_cell[pi][j] = c;
     }
   }

@@ -12,18 +12,27 @@ namespace splinex {
 
 // ---- operations ------------------------------------------------------------------------------
 
+const std::vector<OperationRow>& operation_table() {
+  using K = Operation::Kind;
+  static const std::vector<OperationRow> rows{{"insert-knots", K::insert_knots}, {"elevate", K::elevate},
+                                              {"extract-bezier", K::extract_bezier}, {"split", K::split},
+                                              {"reparametrize", K::reparametrize}, {"reverse", K::reverse},
+                                              {"derivative", K::derivative}};
+  return rows;
+}
+
+std::string operation_names(const std::string& sep) {
+  std::string out;
+  for (const auto& r : operation_table()) out += (out.empty() ? "" : sep) + r.name;
+  return out;
+}
+
 std::string Operation::name() const {
-  switch (kind) {
-    case Kind::insert_knots: return boehm ? "insert-knots(boehm)" : "insert-knots";
-    case Kind::elevate:
-      return method == ElevationMethod::blossom ? "elevate(blossom)" : method == ElevationMethod::automatic ? "elevate(auto)" : "elevate";
-    case Kind::extract_bezier: return "extract-bezier";
-    case Kind::split: return "split";
-    case Kind::reparametrize: return "reparametrize";
-    case Kind::reverse: return "reverse";
-    case Kind::derivative: return "derivative";
-    case Kind::identity: break;
-  }
+  if (kind == Kind::insert_knots && boehm) return "insert-knots(boehm)";
+  if (kind == Kind::elevate && method != ElevationMethod::bezier_pieces)
+    return method == ElevationMethod::blossom ? "elevate(blossom)" : "elevate(auto)";
+  for (const auto& r : operation_table())
+    if (r.kind == kind) return r.name;
   return "identity";
 }
 
@@ -63,18 +72,13 @@ void use_one_method(const std::string& kind, OpOptions& o, const std::string& wh
 
 Operation Operation::parse_kind(const std::string& name) {
   Operation op;
-  if (name == "insert-knots") op.kind = Kind::insert_knots;
-  else if (name == "elevate") op.kind = Kind::elevate;
-  else if (name == "extract-bezier") op.kind = Kind::extract_bezier;
-  else if (name == "split") op.kind = Kind::split;
-  else if (name == "reparametrize") op.kind = Kind::reparametrize;
-  else if (name == "reverse") op.kind = Kind::reverse;
-  else if (name == "derivative") op.kind = Kind::derivative;
-  else if (name == "identity") op.kind = Kind::identity;
-  else
-    throw UsageError("operation", "unknown operation \"" + name + "\"",
-                     "use insert-knots, elevate, extract-bezier, split, reparametrize, reverse, derivative or identity");
-  return op;
+  if (name == "identity") return op;
+  for (const auto& r : operation_table())
+    if (name == r.name) {
+      op.kind = r.kind;
+      return op;
+    }
+  throw UsageError("operation", "unknown operation \"" + name + "\"", "use " + operation_names() + " or identity");
 }
 
 template std::vector<BSpline<Rational>> run_operation(const Operation&, const BSpline<Rational>&, const Limits&);
@@ -116,7 +120,7 @@ Json ErrorStat::to_json(int precision) const {
   return j;
 }
 
-Json CrossReport::to_json() const {
+Json CrossReport::document() const {
   Json j;
   j["operation"] = operation;
   j["arith"] = arith;

@@ -40,7 +40,7 @@ struct CrossReport {
   ErrorStat control_points, knots, grid;
   std::size_t results = 0, control_point_count = 0;
   double seconds_exact = 0, seconds_float = 0;
-  Json to_json() const;
+  Json document() const;
 };
 
 /// grid_per_dir = 0 chooses 65 (curves), 17 (surfaces), 7 (trivariates) points per direction.

@@ -27,6 +27,19 @@ struct Operation {
   static Operation parse_kind(const std::string& name);  // UsageError for unknown names
 };
 
+/// The kernel operations, one row each (issue 48: one table per extension point): the name is the
+/// command (`splinex NAME`), crosscheck's and verify's OPERATION and what Operation::parse_kind,
+/// Python and the fuzzers read. A new operation is its template, a case of run_operation
+/// (crosscheck/operations_impl.hpp), its options in OpOptions/make_op and one row here.
+struct OperationRow {
+  const char* name;
+  Operation::Kind kind;
+};
+/// In the order of --help (identity, crosscheck's baseline, is not a row).
+const std::vector<OperationRow>& operation_table();
+/// The rows' names joined by `sep` ("insert-knots, elevate, ...").
+std::string operation_names(const std::string& sep = ", ");
+
 /// An operation's options as text, as the command line, crosscheck and bench_document take them.
 struct OpOptions {
   int dir = 0;

@@ -283,7 +283,7 @@ FunctionError function_error(const BSpline<Rational>& C, const BSpline<Rational>
   }
 }
 
-Json FunctionError::to_json() const {
+Json FunctionError::document() const {
   Json j;
   j["certified"] = certified;
   // Only a certified bound is written: an uncertified "upper" (not compared, or point values only)
@@ -559,7 +559,7 @@ Json VerifyReport::verdict() const {
   return v;
 }
 
-Json VerifyReport::to_json() const {
+Json VerifyReport::document() const {
   Json j;
   j["operation"] = operation;
   j["precision"] = precision;
@@ -580,7 +580,7 @@ Json VerifyReport::to_json() const {
                         {"note", "values: checked at " + std::to_string(points_checked) + " points (a sample, not a bound)"}};
   if (area_compared) j["area_moved"] = Json{{"value", to_double(area_moved)}, {"exact", to_fraction_string(area_moved)}};
   if (!parts.empty()) j["parts"] = parts;
-  Json f = function.to_json();
+  Json f = function.document();
   // Relative to the largest reference coefficient (values: the largest exact value), and as bits
   // lost at the candidate's precision, as the coefficient errors are.
   if (const auto e = function_stat()) {
@@ -626,6 +626,49 @@ Json candidate_numbers_as_doubles(const Json& doc) {
     throw RangeError("candidate", "the number " + text.substr(0, 40) + " is beyond the range of double",
                      "read the candidate with --read-as exact if it is not a double");
   return Json(to_fraction_string(exact_from_double(d)));
+}
+
+namespace {
+
+std::vector<std::vector<Rational>> number_rows(const Json& doc, const std::string& field) {
+  if (!doc.contains(field) || !doc[field].is_array())
+    throw ValidationError("candidate." + field, "is missing or not an array", "give \"at\" and \"values\" as lists of points");
+  std::vector<std::vector<Rational>> out;
+  for (std::size_t i = 0; i < doc[field].size(); ++i) {
+    const Json& row = doc[field][i];
+    const std::string where = "candidate." + field + "[" + std::to_string(i) + "]";
+    if (!row.is_array()) throw ValidationError(where, "is not a list of numbers", "write [x0, x1, ...]");
+    std::vector<Rational> r;
+    for (std::size_t c = 0; c < row.size(); ++c) r.push_back(json_number(row[c], where + "[" + std::to_string(c) + "]"));
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+Json read_candidate(const std::string& path, bool as_doubles, const ReadLimits& read_limits) {
+  Json cand = read_json_file(path, read_limits);
+  return as_doubles ? candidate_numbers_as_doubles(cand) : cand;
+}
+
+CandidateValues candidate_values(const Json& doc) {
+  CandidateValues c;
+  c.values = number_rows(doc, "values");  // first, as the command read them before (its error names values when both are missing)
+  c.at = number_rows(doc, "at");
+  return c;
+}
+
+CandidateValues hybrid_candidate_values(const Json& cand) {
+  if (!(cand.is_object() && cand.contains("points") && !cand.contains("values"))) return candidate_values(cand);
+  Json at = Json::array(), values = Json::array();
+  for (const auto& row : cand["points"]) {
+    if (!row.is_object() || !row.contains("at") || !row.contains("point"))
+      throw ValidationError("candidate.points", "an entry has no \"at\" or \"point\"", "give {\"at\": [u, v], \"point\": [...]}");
+    at.push_back(row["at"]);
+    values.push_back(row["point"]);
+  }
+  return candidate_values(Json{{"at", at}, {"values", values}});
 }
 
 }  // namespace splinex

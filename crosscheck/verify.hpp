@@ -44,7 +44,7 @@ struct FunctionError {
   int rounds = 0;             // refinement rounds used
   bool within_factor = false; // upper <= factor * lower (or both 0)
   std::string method;
-  Json to_json() const;
+  Json document() const;
 };
 
 struct VerifyReport {
@@ -81,7 +81,7 @@ struct VerifyReport {
   /// certified bound (its bits lost are the function's in the JSON and in worst_part).
   std::optional<ErrorStat> function_stat() const;
   /// The whole report, ending with "worst_bits_lost", "worst_part" and "verdict".
-  Json to_json() const;
+  Json document() const;
 };
 
 /// Reference splines against candidate splines, one to one (a piece list for extraction, the two
@@ -91,11 +91,25 @@ VerifyReport verify_splines(const std::string& operation, const std::vector<BSpl
                             const std::vector<BSpline<Rational>>& candidate, const VerifyOptions& options = {},
                             const Limits& limits = {});
 
-/// The exact result of `op` on `input` against the candidate.
 /// A candidate document's splines, as `splinex verify` and the Python module read it: one spline
 /// document, {"splines": [...]} or {"pieces": [{"spline": ...}, ...]} (extract-bezier's output).
 std::vector<BSpline<Rational>> verify_candidate_splines(const Json& doc, const Limits& limits = {});
 
+/// A candidate document read from a file ("-": standard input); with as_doubles every decimal
+/// number is read as the double nearest to it (candidate_numbers_as_doubles, `--read-as double`).
+Json read_candidate(const std::string& path, bool as_doubles, const ReadLimits& read_limits);
+
+/// A candidate's points and values: {"at": [[x0, ...], ...], "values": [[...], ...]}, numbers read
+/// exactly (ValidationError naming candidate.at[i][c] otherwise).
+struct CandidateValues {
+  std::vector<std::vector<Rational>> at, values;
+};
+CandidateValues candidate_values(const Json& doc);
+/// The same for a hybrid patch's values; also reads the output of `splinex hybrid eval`
+/// ({"points": [{"at": [u, v], "point": [...]}, ...]}).
+CandidateValues hybrid_candidate_values(const Json& doc);
+
+/// The exact result of `op` on `input` against the candidate.
 VerifyReport verify(const Operation& op, const BSpline<Rational>& input, const std::vector<BSpline<Rational>>& candidate,
                     const VerifyOptions& options = {}, const Limits& limits = {});
 

@@ -193,6 +193,30 @@ void add_value_error(VerifyReport& rep, const std::vector<Rational>& exact, cons
 
 // ---- Algorithm 1: trimmed patches ------------------------------------------------------------------
 
+namespace {
+
+// A trimmed patch's region as the candidate gives it: conditions on S's coordinates (q of them),
+// each with "at_least", and "at_most" or "below"; numbers read exactly.
+std::vector<CellCondition<Rational>> region_from_json(const Json& reg, int q, const std::string& where) {
+  if (!reg.is_array()) throw ValidationError(where + ".region", "is not an array", "give a list of conditions");
+  std::vector<CellCondition<Rational>> out;
+  for (std::size_t c = 0; c < reg.size(); ++c) {
+    const std::string w = idx(where + ".region", c);
+    CellCondition<Rational> cc;
+    cc.coord = static_cast<int>(index_field(field(reg[c], "coordinate", w, "give the coordinate of S"), w + ".coordinate"));
+    if (cc.coord >= q) throw ValidationError(w + ".coordinate", "is beyond S's coordinates", "give 0.." + std::to_string(q - 1));
+    cc.check_lo = reg[c].contains("at_least");
+    if (cc.check_lo) cc.lo = json_number(reg[c]["at_least"], w + ".at_least");
+    cc.hi_closed = reg[c].contains("at_most");
+    cc.check_hi = cc.hi_closed || reg[c].contains("below");
+    if (cc.check_hi) cc.hi = json_number(reg[c][cc.hi_closed ? "at_most" : "below"], w + (cc.hi_closed ? ".at_most" : ".below"));
+    out.push_back(cc);
+  }
+  return out;
+}
+
+}  // namespace
+
 VerifyReport verify_trimmed_composition(const BSpline<Rational>& T, const BSpline<Rational>& S, const Json& candidate,
                                         const VerifyOptions& options, const Limits& limits) {
   const auto ref = compose_trimmed(T, S, {}, limits);
@@ -211,20 +235,7 @@ VerifyReport verify_trimmed_composition(const BSpline<Rational>& T, const BSplin
     Piece p;
     p.box = box_from_json(field(pc, "inner_box", where, "give the inner piece's parameter box"), S.dim(), where + ".inner_box");
     p.cell = index_field(field(pc, "outer_cell", where, "give the index of T's polynomial piece"), where + ".outer_cell");
-    const Json& reg = field(pc, "region", where, "give the region's conditions (an empty list for an untrimmed piece)");
-    if (!reg.is_array()) throw ValidationError(where + ".region", "is not an array", "give a list of conditions");
-    for (std::size_t c = 0; c < reg.size(); ++c) {
-      const std::string w = idx(where + ".region", c);
-      CellCondition<Rational> cc;
-      cc.coord = static_cast<int>(index_field(field(reg[c], "coordinate", w, "give the coordinate of S"), w + ".coordinate"));
-      if (cc.coord >= S.q) throw ValidationError(w + ".coordinate", "is beyond S's coordinates", "give 0.." + std::to_string(S.q - 1));
-      cc.check_lo = reg[c].contains("at_least");
-      if (cc.check_lo) cc.lo = json_number(reg[c]["at_least"], w + ".at_least");
-      cc.hi_closed = reg[c].contains("at_most");
-      cc.check_hi = cc.hi_closed || reg[c].contains("below");
-      if (cc.check_hi) cc.hi = json_number(reg[c][cc.hi_closed ? "at_most" : "below"], w + (cc.hi_closed ? ".at_most" : ".below"));
-      p.region.push_back(cc);
-    }
+    p.region = region_from_json(field(pc, "region", where, "give the region's conditions (an empty list for an untrimmed piece)"), S.q, where);
     p.patch = patch_from_json(pc, T.q, where, limits);
     if (p.patch.net.dim() != S.dim())
       throw ValidationError(where + ".patch", "has " + std::to_string(p.patch.net.dim()) + " parameters, S has " + std::to_string(S.dim()),
@@ -349,6 +360,37 @@ VerifyReport verify_trimmed_composition(const BSpline<Rational>& T, const BSplin
 
 // ---- Algorithm 2: tensor-product tiles -------------------------------------------------------------
 
+namespace {
+
+// A tile as the candidate gives it: its chains (x, y_bottom, y_top: one entry per slab boundary)
+// and, for curved chains, the Bernstein ordinates of each piece; numbers read exactly.
+Tile<Rational> tile_from_json(const Json& tile, const std::string& where) {
+  Tile<Rational> t;
+  t.x = numbers(field(tile, "x", where + ".tile", "give the slab abscissae"), where + ".tile.x");
+  t.yb = numbers(field(tile, "y_bottom", where + ".tile", "give the bottom chain"), where + ".tile.y_bottom");
+  t.yt = numbers(field(tile, "y_top", where + ".tile", "give the top chain"), where + ".tile.y_top");
+  if (t.x.size() < 2 || t.yb.size() != t.x.size() || t.yt.size() != t.x.size())
+    throw ValidationError(where + ".tile", "has chains of different lengths or fewer than two abscissae",
+                          "give x, y_bottom and y_top with one entry per slab boundary");
+  for (std::size_t m = 0; m + 1 < t.x.size(); ++m)
+    if (!(t.x[m] < t.x[m + 1])) throw ValidationError(where + ".tile.x", "is not increasing", "give increasing abscissae");
+  if (tile.contains("bottom_pieces") || tile.contains("top_pieces")) {
+    for (const char* side : {"bottom_pieces", "top_pieces"}) {
+      const Json& ps = field(tile, side, where + ".tile", "give both bottom_pieces and top_pieces");
+      if (!ps.is_array() || ps.size() + 1 != t.x.size())
+        throw ValidationError(where + ".tile." + side, "needs one piece per slab", "give the Bernstein ordinates of each chain piece");
+      auto& dst = std::string(side) == "bottom_pieces" ? t.bottom : t.top;
+      for (std::size_t m = 0; m < ps.size(); ++m) {
+        dst.push_back(numbers(ps[m], idx(where + ".tile." + side, m)));
+        if (dst.back().size() < 2) throw ValidationError(idx(where + ".tile." + side, m), "has fewer than two ordinates", "give degree >= 1");
+      }
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
 VerifyReport verify_tensor_composition(const BSpline<Rational>& T, const BSpline<Rational>& S, const Json& candidate,
                                        const VerifyOptions& options, const Limits& limits) {
   if (S.dim() != 2)
@@ -392,28 +434,7 @@ VerifyReport verify_tensor_composition(const BSpline<Rational>& T, const BSpline
     const Json& tj = tiles[i];
     const Box box = box_from_json(field(tj, "inner_box", where, "give the inner piece's parameter box"), 2, where + ".inner_box");
     const std::size_t cell = index_field(field(tj, "outer_cell", where, "give the index of T's polynomial piece"), where + ".outer_cell");
-    const Json& tile = field(tj, "tile", where, "give the tile's chains {\"x\", \"y_bottom\", \"y_top\"}");
-    Tile<Rational> t;
-    t.x = numbers(field(tile, "x", where + ".tile", "give the slab abscissae"), where + ".tile.x");
-    t.yb = numbers(field(tile, "y_bottom", where + ".tile", "give the bottom chain"), where + ".tile.y_bottom");
-    t.yt = numbers(field(tile, "y_top", where + ".tile", "give the top chain"), where + ".tile.y_top");
-    if (t.x.size() < 2 || t.yb.size() != t.x.size() || t.yt.size() != t.x.size())
-      throw ValidationError(where + ".tile", "has chains of different lengths or fewer than two abscissae",
-                            "give x, y_bottom and y_top with one entry per slab boundary");
-    for (std::size_t m = 0; m + 1 < t.x.size(); ++m)
-      if (!(t.x[m] < t.x[m + 1])) throw ValidationError(where + ".tile.x", "is not increasing", "give increasing abscissae");
-    if (tile.contains("bottom_pieces") || tile.contains("top_pieces")) {
-      for (const char* side : {"bottom_pieces", "top_pieces"}) {
-        const Json& ps = field(tile, side, where + ".tile", "give both bottom_pieces and top_pieces");
-        if (!ps.is_array() || ps.size() + 1 != t.x.size())
-          throw ValidationError(where + ".tile." + side, "needs one piece per slab", "give the Bernstein ordinates of each chain piece");
-        auto& dst = std::string(side) == "bottom_pieces" ? t.bottom : t.top;
-        for (std::size_t m = 0; m < ps.size(); ++m) {
-          dst.push_back(numbers(ps[m], idx(where + ".tile." + side, m)));
-          if (dst.back().size() < 2) throw ValidationError(idx(where + ".tile." + side, m), "has fewer than two ordinates", "give degree >= 1");
-        }
-      }
-    }
+    const Tile<Rational> t = tile_from_json(field(tj, "tile", where, "give the tile's chains {\"x\", \"y_bottom\", \"y_top\"}"), where);
     const BSpline<Rational> Q = spline_from_json(field(tj, "coons_patch", where, "give the tile's Coons patch"), limits, where + ".coons_patch");
     if (Q.dim() != 2 || Q.q != 2 || Q.is_rational())
       throw ValidationError(where + ".coons_patch", "is not a polynomial surface in the plane", "give Q(x, l) with points in S's parameters");

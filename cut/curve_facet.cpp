@@ -322,6 +322,37 @@ std::optional<int> classify_point(const Solid2<Rational>& S, const P2& x) {
   return crossings % 2 == 1 ? 1 : -1;
 }
 
+namespace {
+
+// A witness of a collision: among the suspect parameters strictly inside C's domain, the first
+// whose point is outside the solid or on its boundary (exact ray casting) refutes "no collision".
+void find_outside_witness(const Solid2<Rational>& S, const BSpline<Rational>& C, const std::vector<Rational>& suspects, ValidityResult& R) {
+  const Rational s0 = C.domain_lo(0), s1 = C.domain_hi(0);
+  for (const auto& s : suspects) {
+    if (!(s0 < s && s < s1)) continue;
+    const P2 x = at(C, s);
+    const auto cls = classify_point(S, x);
+    if (cls && *cls <= 0) {
+      R.witness_s = s;
+      R.witness = x;
+      R.witness_meaning = *cls == 0 ? "C(s) lies on the boundary, exactly" : "C(s) lies outside the solid (exact ray casting)";
+      R.inside = Verdict::refuted(R.witness_meaning);
+      return;
+    }
+  }
+}
+
+// Section 2's conditions together: valid when every one is certified, invalid when one is violated.
+Verdict overall_verdict(const ValidityResult& R) {
+  const bool valid = R.interpolates && R.tangents && R.regular.is_proved() && R.injective.is_proved() && R.inside.is_proved();
+  const bool invalid = !R.interpolates || !R.tangents || R.regular.is_refuted() || R.inside.is_refuted();
+  return valid     ? Verdict::proved("Section 2's conditions hold: interpolation, tangents, regularity, injectivity, no collision")
+         : invalid ? Verdict::refuted("a condition is violated (see the conditions)")
+                   : Verdict::undecided("a condition is undecided (see the conditions)");
+}
+
+}  // namespace
+
 ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<Rational>& cut, const BSpline<Rational>& C,
                                      const ValidityOptions& o) {
   ValidityResult R;
@@ -363,7 +394,10 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   };
   const Subdivision reg = subdivide(cp, dfs, budget(), regular, halve_piece, [](Piece&&, Left) {});
   R.pairs += reg.examined;
-  R.regular = reg.stop == Subdivision::Stop::refuted ? "violated" : reg.decided() ? "certified" : "undecided";
+  const std::string spent = "the subdivision budget (ValidityOptions: max_pairs, max_depth) ran out";
+  R.regular = reg.stop == Subdivision::Stop::refuted ? Verdict::refuted("C' = 0 at singular_at, exactly")
+              : reg.decided()                        ? Verdict::proved("x' or y' of one strict sign on every piece")
+                                                     : Verdict::undecided(spent);
 
   // Injectivity: pairs of intervals.
   struct Pair {
@@ -401,7 +435,8 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   };
   const Subdivision inj = subdivide(std::move(pairs), dfs, budget(), injective, split_pair, [](Pair&&, Left) {});
   R.pairs += inj.examined;
-  R.injective = inj.decided() ? "certified" : "undecided";
+  R.injective = inj.decided() ? Verdict::proved("every two pieces apart (disjoint boxes) or monotone along one direction together")
+                               : Verdict::undecided(spent);
 
   // No collision: curve intervals against facet pieces (split at the cut points).
   std::vector<std::pair<Piece, std::size_t>> fp;
@@ -454,25 +489,10 @@ ValidityResult certify_cutting_curve(const Solid2<Rational>& S, const CutData2<R
   };
   const Subdivision col = subdivide(std::move(cpairs), dfs, budget(), inside, split_cpair, suspect);
   R.pairs += col.examined;
-  R.inside = col.decided() ? "certified" : "undecided";
-  if (R.inside != "certified") {
-    // Witness: an exact point of C outside the solid or on its boundary.
-    for (const auto& s : suspects) {
-      if (!(s0 < s && s < s1)) continue;
-      const P2 x = at(C, s);
-      const auto cls = classify_point(S, x);
-      if (cls && *cls <= 0) {
-        R.inside = "violated";
-        R.witness_s = s;
-        R.witness = x;
-        R.witness_meaning = *cls == 0 ? "C(s) lies on the boundary, exactly" : "C(s) lies outside the solid (exact ray casting)";
-        break;
-      }
-    }
-  }
-  const bool valid = R.interpolates && R.tangents && R.regular == "certified" && R.injective == "certified" && R.inside == "certified";
-  const bool invalid = !R.interpolates || !R.tangents || R.regular == "violated" || R.inside == "violated";
-  R.verdict = valid ? "valid" : invalid ? "invalid" : "undecided";
+  R.inside = col.decided() ? Verdict::proved("no piece meets the boundary, except at the cut points, where C enters the solid")
+                            : Verdict::undecided(spent + "; no point outside the solid was found");
+  if (!R.inside.is_proved()) find_outside_witness(S, C, suspects, R);
+  R.verdict = overall_verdict(R);
   return R;
 }
 

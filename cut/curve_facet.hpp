@@ -54,15 +54,15 @@ struct ValidityOptions {
 struct ValidityResult {
   bool interpolates = false;  // C(0) = p, C(1) = q exactly
   bool tangents = false;      // C'(0) = a t_p, C'(1) = -b t_q with a, b > 0, exactly
-  std::string regular;        // certified | violated | undecided
-  std::string injective;      // certified | undecided
-  std::string inside;         // certified | violated | undecided (no collision with the boundary)
+  Verdict regular;            // C' != 0 (refuted: singular_s)
+  Verdict injective;          // no self-intersection (proved or undecided)
+  Verdict inside;             // no collision with the boundary (refuted: the witness)
   std::optional<Rational> singular_s;              // a parameter where C' = 0, exactly (regular: violated)
   std::optional<Rational> witness_s;               // a parameter where C is outside the solid or on its boundary
   std::optional<std::array<Rational, 2>> witness;  // C(witness_s), exactly
   std::string witness_meaning;
   std::size_t pairs = 0;
-  std::string verdict;  // valid | invalid | undecided
+  Verdict verdict;  // all of Section 2's conditions (certificate_word / validity_word: cut/solid.hpp)
 };
 
 ValidityResult certify_cutting_curve(const Solid2<Rational>& solid, const CutData2<Rational>& cut, const BSpline<Rational>& C,

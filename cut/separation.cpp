@@ -26,17 +26,18 @@ struct Ctx {
 // (pieces all in the strip: nothing was checked).
 template <class Result>
 void decide(Result& r) {
+  constexpr bool planar = std::is_same_v<Result, SeparationResult>;
   if (r.witness) {
-    r.verdict = "violated";
+    r.verdict = Verdict::refuted("f* has the wrong sign at the witness, an exact boundary point outside the strip");
   } else if (!r.undecided.empty()) {
-    r.verdict = "undecided";
-    r.reason = std::to_string(r.undecided.size()) + " boundary piece(s) left undecided at the subdivision budget (listed); no violation was found";
+    r.verdict = Verdict::undecided(std::to_string(r.undecided.size()) +
+                                   " boundary piece(s) left undecided at the subdivision budget (listed); no violation was found");
   } else if (r.pieces == 0) {
-    r.verdict = "undecided";
-    r.reason = "nothing was checked: every boundary piece lies in the strip around the " + std::string(std::is_same_v<Result, SeparationResult> ? "cut points" : "loop") +
-               " (" + std::to_string(r.excluded) + " excluded); narrow the strip";
+    r.verdict = Verdict::undecided("nothing was checked: every boundary piece lies in the strip around the " + std::string(planar ? "cut points" : "loop") +
+                                   " (" + std::to_string(r.excluded) + " excluded); narrow the strip");
   } else {
-    r.verdict = "certified";
+    r.verdict = Verdict::proved(planar ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
+                                       : "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip around the loop, decided exactly");
   }
 }
 

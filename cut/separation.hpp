@@ -31,8 +31,7 @@ struct SeparationWitness {
 };
 
 struct SeparationResult {
-  std::string verdict;  // "certified", "violated", "undecided" ("certified" only when some piece was certified)
-  std::string reason;   // why, when undecided
+  Verdict verdict;  // proved only when some piece was certified; refuted: the witness
   std::optional<SeparationWitness> witness;
   std::size_t pieces = 0;         // pieces certified (after subdivision)
   std::size_t excluded = 0;       // pieces inside the strip
@@ -60,8 +59,7 @@ struct SeparationWitness3 {
 };
 
 struct SeparationResult3 {
-  std::string verdict;  // "certified", "violated", "undecided" ("certified" only when some piece was certified)
-  std::string reason;   // why, when undecided
+  Verdict verdict;  // proved only when some piece was certified; refuted: the witness
   std::optional<SeparationWitness3> witness;
   std::size_t pieces = 0, excluded = 0;
   struct Open { std::size_t facet; std::array<Rational, 2> lo, hi; };

@@ -9,10 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "base/verdict.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
 
 namespace splinex {
+
+/// The cutting package's words for a verdict, as its documents and tables write them: a condition
+/// "certified" (proved), "violated" (refuted by a witness) or undecided; the whole curve or surface
+/// "valid", "invalid" or undecided.
+inline const char* certificate_word(const Verdict& v) { return v.is_proved() ? "certified" : v.is_refuted() ? "violated" : status_name(v.status()); }
+inline const char* validity_word(const Verdict& v) { return v.is_proved() ? "valid" : v.is_refuted() ? "invalid" : status_name(v.status()); }
 
 template <class T>
 struct Solid2 {

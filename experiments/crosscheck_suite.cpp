@@ -218,7 +218,7 @@ void crosscheck_section(ReportContext& ctx) {
   write_file_atomically(opt.out_dir + "/crosscheck.csv", csv(run.rows));
   Json all = Json::array();
   for (const auto& r : run.rows) {
-    Json j = r.rep.to_json();
+    Json j = r.rep.document();
     j["suite"] = r.suite;
     j["case"] = r.case_name;
     j["dim"] = r.dim;

@@ -44,7 +44,7 @@ std::string bits_lost(const std::vector<Rational>& exact, const std::vector<Rati
 }
 
 std::string witness_text(const SeparationResult3& s) {
-  if (!s.witness) return s.verdict;
+  if (!s.witness) return certificate_word(s.verdict);
   const auto& w = *s.witness;
   return "violated at (" + to_fraction_string(w.point[0]) + ", " + to_fraction_string(w.point[1]) + ", " + to_fraction_string(w.point[2]) +
          ") on " + (w.positive_side ? "b" : "b-bar") + ", f* = " + fmt(to_double(w.value));
@@ -227,12 +227,12 @@ void cut3_section(ReportContext& ctx) {
     if (R.status == QPStatus::optimal) {
       const auto s = certify_separation(R.solid, R.loop, e.cut.positive, R.f_exact, o.base.strip);
       se = witness_text(s);
-      ++runs, missed += s.verdict == "violated";
+      ++runs, missed += s.verdict.is_refuted();
     }
     if (D.status == QPStatus::optimal) {
       const auto s = certify_separation(D.solid, D.loop, e.cut.positive, D.f_exact, o.base.strip);
       sd = witness_text(s);
-      ++runs, missed += s.verdict == "violated";
+      ++runs, missed += s.verdict.is_refuted();
     }
     md << "| " << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2] << " | " << se << " | " << sd << " |\n";
   }

@@ -81,7 +81,7 @@ std::string cut_guide_svg(const Solid2<Rational>& solid, const CutData2<Rational
   }
   std::string verdict;
   if (sep) {
-    verdict = "separation: " + sep->verdict;
+    verdict = std::string("separation: ") + certificate_word(sep->verdict);
     if (sep->witness) {
       const double x = to_double(sep->witness->point[0]), y = to_double(sep->witness->point[1]);
       s << "<circle cx=\"" << X(x) << "\" cy=\"" << Y(y) << "\" r=\"7\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2.5\"/>\n";

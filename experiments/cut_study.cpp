@@ -76,7 +76,7 @@ void cut_section(ReportContext& ctx) {
     std::string sep_e = "-", sep_d = "-", validity = "-", bits = "-";
     double t_pipe = 0;
     if (R.status == QPStatus::optimal) {
-      sep_e = certify_separation(R.solid, R.cut, R.f, o.strip).verdict;
+      sep_e = certificate_word(certify_separation(R.solid, R.cut, R.f, o.strip).verdict);
       for (int cps : {8, 16}) {
         CurveFitOptions fo;
         fo.control_points = cps;
@@ -84,12 +84,12 @@ void cut_section(ReportContext& ctx) {
         try {
           const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo);
           const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
-          verdict = v.verdict;
-          if (cps == 16 || v.verdict == "valid")
+          verdict = validity_word(v.verdict);
+          if (cps == 16 || v.verdict.is_proved())
             write_file_atomically(ctx.options.out_dir + "/cut_" + name + ".svg",
                                   cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, nullptr,
                                                 "papers/004 " + name + ": guide (exact), cutting curve with " + std::to_string(cps) +
-                                                    " control points (" + v.verdict + ")",
+                                                    " control points (" + validity_word(v.verdict) + ")",
                                                 &cc.curve));
         } catch (const Error& err) {
           verdict = "no curve (the march does not reach the second point)";
@@ -106,7 +106,7 @@ void cut_section(ReportContext& ctx) {
     const auto D = guide_curve<double>(e.solid, e.cut, o);
     if (D.status == QPStatus::optimal) {
       const auto& fq = D.f_exact;
-      sep_d = certify_separation(D.solid, D.cut, fq, o.strip).verdict;
+      sep_d = certificate_word(certify_separation(D.solid, D.cut, fq, o.strip).verdict);
       if (R.status == QPStatus::optimal) {
         const auto ce = coefficient_error(R.coefficients, fq.points);
         bits = ce.max_abs_error == 0 ? "0" : fmt(ce.bits_lost, 3);
@@ -135,16 +135,16 @@ void cut_section(ReportContext& ctx) {
     const auto R = guide_curve<Rational>(e.solid, e.cut, o);
     std::string sep = "-", validity = "-";
     if (R.status == QPStatus::optimal) {
-      sep = certify_separation(R.solid, R.cut, R.f, o.strip).verdict;
+      sep = certificate_word(certify_separation(R.solid, R.cut, R.f, o.strip).verdict);
       CurveFitOptions fo;
       fo.control_points = 48;
       try {
         const auto cc = fit_cutting_curve(R.solid, R.cut, R.f, fo);
         const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
-        validity = v.verdict + " (48 control points)";
+        validity = validity_word(v.verdict) + std::string(" (48 control points)");
         write_file_atomically(ctx.options.out_dir + "/cut_snake_manual.svg",
                               cut_guide_svg(R.solid, R.cut, R.f, R.sample_points, R.samples_positive, o.strip, nullptr,
-                                            "papers/004 snake, 15 x 3 inner knots, delta 1/100: cutting curve (" + v.verdict + ")", &cc.curve));
+                                            std::string("papers/004 snake, 15 x 3 inner knots, delta 1/100: cutting curve (") + validity_word(v.verdict) + ")", &cc.curve));
       } catch (const Error&) {
         validity = "no curve (the march does not reach the second point)";
       }
@@ -175,9 +175,9 @@ void cut_section(ReportContext& ctx) {
       o.samples = samples;
       std::string ve = "infeasible", vd = "infeasible";
       const auto R = guide_curve<Rational>(e.solid, e.cut, o);
-      if (R.status == QPStatus::optimal) ve = certify_separation(R.solid, R.cut, R.f, o.strip).verdict;
+      if (R.status == QPStatus::optimal) ve = certificate_word(certify_separation(R.solid, R.cut, R.f, o.strip).verdict);
       const auto D = guide_curve<double>(e.solid, e.cut, o);
-      if (D.status == QPStatus::optimal) vd = certify_separation(D.solid, D.cut, D.f_exact, o.strip).verdict;
+      if (D.status == QPStatus::optimal) vd = certificate_word(certify_separation(D.solid, D.cut, D.f_exact, o.strip).verdict);
       for (const auto* v : {&ve, &vd})
         if (*v != "infeasible") ++runs, invalid += *v == "violated";
       md << "| " << name << " | " << samples << " | " << ve << " | " << vd << " |\n";
@@ -210,7 +210,7 @@ void cut_section(ReportContext& ctx) {
       o.lambda_reg = lr;
       const auto R = guide_curve<Rational>(L.solid, L.cut, o);
       if (R.status != QPStatus::optimal) continue;
-      const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip).verdict;
+      const std::string sep = certificate_word(certify_separation(R.solid, R.cut, R.f, o.strip).verdict);
       try {
         const auto cc = fit_cutting_curve(R.solid, R.cut, R.f);
         const double sc = to_double(R.frame.scale);

@@ -325,6 +325,24 @@ Json sweep_job_json(const SweepJob& j) {
           {"command", Json::array({"splinex", "sweep", "run", "--jobs", "JOBS.jsonl", "--only", j.id, "--dir", "DIR"})}};
 }
 
+std::string sweep_plan_lines(const std::vector<SweepJob>& jobs) {
+  std::string out;
+  for (const auto& j : jobs) out += sweep_job_json(j).dump() + "\n";
+  return out;
+}
+
+Json sweep_run_document(const SweepRunStats& st, std::size_t shard, std::size_t shards, const std::string& dir) {
+  return {{"shard", std::to_string(shard) + "/" + std::to_string(shards)}, {"jobs_in_shard", st.in_shard}, {"run", st.run}, {"skipped", st.skipped}, {"dir", dir}};
+}
+
+Json sweep_merge_document(std::size_t jobs, const std::string& merged_into, bool checks_passed) {
+  return {{"jobs", jobs}, {"merged_into", merged_into}, {"checks", checks_passed ? "passed" : "FAILED"}};
+}
+
+Json sweep_single_document(const std::string& out, bool checks_passed) {
+  return {{"out", out}, {"checks", checks_passed ? "passed" : "FAILED"}};
+}
+
 SweepJob sweep_job_from_json(const Json& j, const std::string& where) {
   if (!j.is_object()) throw ParseError(where, "is not a JSON object", "give one job per line, as sweep plan writes them");
   SweepJob s;

@@ -78,6 +78,13 @@ SweepRunStats sweep_run(const std::vector<SweepJob>& jobs, const std::string& di
 /// in the report: a proof not as expected, gaps in untrimming), true otherwise.
 bool sweep_merge(const std::vector<SweepJob>& jobs, const std::string& dir, const std::string& out_dir);
 
+/// What `splinex sweep` prints: the plan as JSON lines (one job each), and one line after a run
+/// (the shard and its counts), a merge or a single run (whether the sweep's checks passed).
+std::string sweep_plan_lines(const std::vector<SweepJob>& jobs);
+nlohmann::json sweep_run_document(const SweepRunStats& st, std::size_t shard, std::size_t shards, const std::string& dir);
+nlohmann::json sweep_merge_document(std::size_t jobs, const std::string& merged_into, bool checks_passed);
+nlohmann::json sweep_single_document(const std::string& out, bool checks_passed);
+
 /// The single-process run of a plan (what the report does), into out_dir; returns as sweep_merge.
 bool sweep_single(const std::string& name, const SweepPlanOptions& options, const std::string& out_dir,
                   const std::function<void(const std::string&)>& progress);

@@ -21,6 +21,10 @@
 #include "vrep/primitives/blend.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 namespace splinex {
 
@@ -367,7 +371,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       for (const auto& e : t.edges) {
         pieces += e.pieces;
         points += e.points;
-        odd += e.status == TrimmedTopology<R>::Edge::undecided || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
+        odd += !e.status.is_certain() || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
       }
       std::size_t face_pieces = 0, trim_pieces = 0;
       std::string face_undecided, trim_undecided;

@@ -262,4 +262,40 @@ void vrep_ssi_section(ReportContext& ctx) {
   ctx.ok = ctx.ok && ok;
 }
 
+Json ssi_document(const BSpline<Rational>& S1, const SsiStudy& st, const SsiOptions& options, bool judge) {
+  Json branches = Json::array();
+  for (const auto& b : st.result.branches) {
+    Json pts = Json::array();
+    for (const auto& x : b.points) pts.push_back({x[0], x[1], x[2], x[3]});
+    branches.push_back({{"closed", b.closed}, {"ends_meet", b.ends_meet}, {"tangential_stop", b.tangential_stop}, {"points", pts}});
+  }
+  Json out{{"branches", branches},
+           {"candidates", st.result.candidates},
+           {"seeds", st.result.seeds},
+           {"newton_failures", st.result.newton_failures},
+           {"starts_skipped", st.result.skipped},
+           {"loops_in_space", loops_in_space(S1, st.result, options.step / 4)},
+           {"seconds", st.seconds_float},
+           {"note", "computed in double on the surfaces rounded to double; points are (u, v, s, t)"}};
+  std::size_t tangential = 0;
+  for (const auto& b : st.result.branches) tangential += b.tangential_stop;
+  if (tangential > 0)
+    out["warning"] = std::to_string(tangential) + " branches stopped where the normals are parallel: tangential contact or surfaces "
+                     "that coincide over a region, where the intersection is not a curve and this method does not apply";
+  if (judge)
+    out["judged"] = {{"vertices", st.vertices},
+                     {"vertices_certified", st.vertices_certified},
+                     {"midpoints", st.midpoints},
+                     {"midpoints_certified", st.midpoints_certified},
+                     {"max_vertex_gap_at_most", st.max_vertex_gap},
+                     {"max_vertex_distance_at_most", st.max_vertex_distance},
+                     {"max_midpoint_gap_at_most", st.max_mid_gap},
+                     {"max_midpoint_distance_at_most", st.max_mid_distance},
+                     {"uncertified", st.uncertified},
+                     {"seconds", st.seconds_judge},
+                     {"meaning", "gap: |S1(u,v) - S2(s,t)| exactly (rounded up); distance: certified bound of |S1(u,v) - q| for the "
+                                 "unique true intersection point q Krawczyk proves in a box about the point (certified points only)"}};
+  return out;
+}
+
 }  // namespace splinex

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "exact/rational.hpp"
+#include "io/json_io.hpp"
 #include "spline/bspline.hpp"
 #include "vrep/boolean/ssi.hpp"
 
@@ -30,6 +31,11 @@ SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, con
 /// The loops in space: chains of branches whose end points (on S1, in double) meet within `tol`
 /// all around, closed branches included.
 std::size_t loops_in_space(const BSpline<Rational>& S1, const SsiResult& r, double tol);
+
+/// `splinex vrep ssi`'s result: the branches as (u, v, s, t) points, the counts, the loops in
+/// space (ends meeting within a quarter step), a warning for tangential stops and, with `judge`,
+/// the exact judgement of the points.
+Json ssi_document(const BSpline<Rational>& S1, const SsiStudy& st, const SsiOptions& options, bool judge);
 
 /// The branches in the two parameter planes, side by side (SVG).
 std::string ssi_svg(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiResult& r, const std::string& name1,

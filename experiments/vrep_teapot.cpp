@@ -107,7 +107,7 @@ Json teapot_document(const TeapotVModel<T>& M) {
     for (const auto& e : r.edges.edges) {
       pieces += e.pieces;
       points += e.points;
-      undecided += e.status == std::decay_t<decltype(e)>::undecided;
+      undecided += !e.status.is_certain();
       collapsed += e.status == std::decay_t<decltype(e)>::collapsed;
     }
     return Json{{"name", r.name},
@@ -298,7 +298,7 @@ void vrep_teapot_section(ReportContext& ctx) {
     for (const auto& x : e.edges.edges) {
       pieces += x.pieces;
       points += x.points;
-      undecided += x.status == FreeformEdges<Rational>::Edge::undecided;
+      undecided += !x.status.is_certain();
       collapsed += x.status == FreeformEdges<Rational>::Edge::collapsed;
     }
     md << "| " << e.name << " | " << e.edges.corners << " (" << e.edges.corners_undecided << ") | " << pieces << " | " << points << " | " << undecided

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "hybrid/hybrid_impl.hpp"
+#include "float/mpfr.hpp"
 
 namespace splinex {
 
@@ -120,5 +120,37 @@ Json hybrid_to_json(const HybridPatch<T>& P) {
 }
 
 template Json hybrid_to_json(const HybridPatch<Rational>&);
+
+template <class F>
+Json hybrid_points_document(const HybridPatch<Rational>& P, const std::vector<std::array<Rational, 2>>& xs) {
+  using Tr = ArithTraits<F>;
+  const auto cv = [](const Rational& r) { return Tr::from_rational(r); };
+  const auto Q = convert_hybrid<F>(P, cv);
+  Json pts = Json::array();
+  for (const auto& x : xs) {
+    const std::array<F, 2> xf{cv(x[0]), cv(x[1])};
+    const auto L = hybrid_local(Q, xf);
+    Json row{{"at", {ArithTraits<Rational>::to_json(x[0]), ArithTraits<Rational>::to_json(x[1])}},
+             {"point", point_to_json(hybrid_evaluate(Q, xf))},
+             {"wachspress", point_to_json(L.lambda)},
+             {"s", point_to_json(L.s)},
+             {"h", point_to_json(L.h)}};
+    bool corner = false;
+    for (const auto& v : Q.vertices) corner = corner || (v[0] == xf[0] && v[1] == xf[1]);
+    if (corner) {
+      row["derivatives"] = "none at a corner (alpha_i, beta_(i-1) are 0/0 there; see README)";
+    } else {
+      const auto D = hybrid_derivatives(Q, xf);
+      row["du"] = point_to_json(D.du);
+      row["dv"] = point_to_json(D.dv);
+    }
+    pts.push_back(row);
+  }
+  return Json{{"points", pts}, {"arith", Tr::name()}};
+}
+
+template Json hybrid_points_document<Rational>(const HybridPatch<Rational>&, const std::vector<std::array<Rational, 2>>&);
+template Json hybrid_points_document<double>(const HybridPatch<Rational>&, const std::vector<std::array<Rational, 2>>&);
+template Json hybrid_points_document<Mpfr>(const HybridPatch<Rational>&, const std::vector<std::array<Rational, 2>>&);
 
 }  // namespace splinex

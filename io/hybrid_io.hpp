@@ -21,4 +21,10 @@ HybridPatch<Rational> hybrid_from_json(const Json& doc, const Limits& limits = {
 template <class T>
 Json hybrid_to_json(const HybridPatch<T>& P);
 
+/// `splinex hybrid eval`: at each parameter x of xs the point, the Wachspress coordinates, the
+/// side parameters s and distances h and (away from the corners) the partials du, dv, evaluated
+/// in the arithmetic F (Rational, double or Mpfr; the patch is rounded to it).
+template <class F>
+Json hybrid_points_document(const HybridPatch<Rational>& P, const std::vector<std::array<Rational, 2>>& xs);
+
 }  // namespace splinex

@@ -3,6 +3,8 @@
 #include <string>
 
 #include "base/errors.hpp"
+#include "float/mpfr.hpp"
+#include "io/result_json.hpp"
 
 namespace splinex {
 
@@ -57,5 +59,48 @@ TrimmedDomain trimmed_domain_from_json(const Json& doc) {
   validate_domain(D);
   return D;
 }
+
+template <class F>
+Json untrim_document(const UntrimRun<F>& run) {
+  using Tr = ArithTraits<F>;
+  Json out_tiles = Json::array();
+  for (const auto& u : run.tiles) {
+    Json tj{{"tile", tile_to_json(u.tile)}, {"area", Tr::to_json(u.area)}, {"coons_patch", spline_to_json(u.coons)}};
+    if (u.patch) tj["patch"] = spline_to_json(*u.patch);
+    if (u.integral) tj["integral"] = Tr::to_json(*u.integral);
+    out_tiles.push_back(tj);
+  }
+  const auto error_of = [](const F& value, const Rational& exact) {
+    return to_double(Rational(abs(Rational(Tr::to_rational(value) - exact))));
+  };
+  Json out{{"tiles", out_tiles},
+           {"area", Tr::to_json(run.area)},
+           {"area_check", {{run.curved ? "green_exact_area" : "cgal_exact_area", ArithTraits<Rational>::to_json(run.exact_area)},
+                           {"abs_error", error_of(run.area, run.exact_area)}}},
+           {"tile_rule", "a tile is {(x, y): x in [x_0, x_m], y_bottom(x) <= y <= y_top(x)}; its Coons patch Q(x, l) "
+                         "= (x, y_bottom(x) + l (y_top(x) - y_bottom(x))) on [x_0, x_m] x [0, 1]; patch = surface(Q). "
+                         "y_bottom is linear between the samples, or on [x_i, x_i+1] the Bernstein polynomial with "
+                         "ordinates bottom_pieces[i] when given (likewise y_top)"}};
+  if (run.cover) {
+    const auto& cc = *run.cover;
+    out["cover_certificate"] = {{"proved", cc.ok},
+                                {"checks", "tiles pairwise interior-disjoint, no loop edge enters a tile, a point of "
+                                           "every part of every tile inside the region, tile areas add up to the region's"},
+                                {"pair_checks", cc.pair_checks},
+                                {"edge_checks", cc.edge_checks},
+                                {"samples", cc.samples}};
+    if (!cc.ok) out["cover_certificate"]["failure"] = cc.failure;
+  }
+  if (run.integral) {
+    out["integral"] = Tr::to_json(*run.integral);
+    out["integral_check"] = {{"green_exact_integral", ArithTraits<Rational>::to_json(*run.exact_integral)},
+                             {"abs_error", error_of(*run.integral, *run.exact_integral)}};
+  }
+  return out;
+}
+
+template Json untrim_document(const UntrimRun<Rational>&);
+template Json untrim_document(const UntrimRun<double>&);
+template Json untrim_document(const UntrimRun<Mpfr>&);
 
 }  // namespace splinex

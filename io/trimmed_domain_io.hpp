@@ -2,6 +2,7 @@
 #pragma once
 #include "io/json_io.hpp"
 #include "untrim/loops.hpp"
+#include "untrim/run.hpp"
 
 namespace splinex {
 
@@ -10,5 +11,11 @@ namespace splinex {
 /// i makes edge i a Bezier curve with these inner control points (untrim/curved.hpp: a polynomial
 /// graph y = f(x), control x evenly spaced between the end points).
 TrimmedDomain trimmed_domain_from_json(const Json& doc);
+
+/// `splinex untrim`'s result: the tiles (each with its area, Coons patch and, when computed, its
+/// patch in the surface and its integral), the area and integral against the exact references
+/// (absolute errors) and, in exact runs, the cover certificate. F: Rational, double or Mpfr.
+template <class F>
+Json untrim_document(const UntrimRun<F>& run);
 
 }  // namespace splinex

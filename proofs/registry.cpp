@@ -253,4 +253,10 @@ nlohmann::json proof_report_json(const ProofReport& r) {
           {"structures", r.structures}, {"undecided", r.undecided}, {"counterexample", r.counterexample}};
 }
 
+nlohmann::json proof_reports_document(const std::vector<ProofReport>& reports) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& r : reports) j.push_back(proof_report_json(r));
+  return j;
+}
+
 }  // namespace splinex

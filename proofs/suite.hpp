@@ -133,5 +133,7 @@ std::vector<ProofReport> run_proofs(const std::vector<std::string>& names, std::
 
 /// The report as `splinex prove --json` prints it (no timings: the same on any machine).
 nlohmann::json proof_report_json(const ProofReport& r);
+/// `splinex prove --json`: the reports as one array.
+nlohmann::json proof_reports_document(const std::vector<ProofReport>& reports);
 
 }  // namespace splinex

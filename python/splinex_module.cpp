@@ -220,7 +220,7 @@ struct PyReport {
 PyReport to_py(const VerifyReport& r) {
   PyReport p;
   p.structure = r.structure;
-  const Json j = r.to_json();
+  const Json j = r.document();
   p.bits_lost = r.worst_bits_lost();
   // Only a certified bound (as the JSON report): None where the functions were not compared.
   p.function_upper = r.function.certified ? fraction(r.function.upper) : py::none();

@@ -13,9 +13,14 @@ Placement: no JSON (nlohmann) in apps/ or in the algorithm folders, outside the 
 listed in the same file as allowed to (the same ratchet: the list may only shrink). No point type
 and no point algebra outside base/point.hpp (tests aside): no alias of std::array<T, 2 or 3> (use
 Point2<T>, Point3<T>), no cross product written out (use cross, dot, triple). Verdicts only
-through base/verdict.hpp: no three-valued enum (one with an `undecided` member) outside base/, and
+through base/verdict.hpp (Verdict, Uncertain<E>): no enum with an `undecided` member outside base/, and
 no verdict spelled as text ("undecided" in an algorithm folder's code); those there when the rule
 came in are listed (`verdict PATH::ENUM`, `verdict-text PATH`) and the list may only shrink.
+Instantiation (one rule, docs/ARCHITECTURE.md): a header never instantiates a template explicitly,
+and an `_impl.hpp` (template definitions) is included only by its own folder's .cpp files, other
+`_impl.hpp` files of the folder and its `instantiate.hpp`, where its templates are instantiated for
+the arithmetics the folder names; other folders compile against declarations. The includes across
+folders there when the rule came in are listed (`impl FILE INCLUDED`); the list may only shrink.
 
 Functions are found by a brace scanner, not a compiler: comments, strings and character literals
 are blanked, and a `{` at namespace or class scope that follows `)` (with qualifiers, an arrow
@@ -223,10 +228,30 @@ def verdict_breaches(rel, text, code):
     return enums, as_text
 
 
+def impl_breaches(rel, text, code):
+    """(file, included _impl.hpp) pairs breaking the instantiation rule, and explicit instantiations in a header."""
+    if rel.startswith(("tests/", "bench/", "fuzz/", "examples/")):
+        return set(), []
+    pairs = set()
+    own = rel.split("/")[0]
+    may_include = rel.endswith((".cpp", "_impl.hpp", "instantiate.hpp"))
+    for m in re.finditer(r'#\s*include\s*"([\w/]+_impl\.hpp)"', text):
+        if not may_include or m.group(1).split("/")[0] != own:
+            pairs.add((rel, m.group(1)))
+    in_header = []
+    if rel.endswith(".hpp") and not rel.endswith("instantiate.hpp"):
+        for n, line in enumerate(code.splitlines(), 1):
+            if re.match(r"template\s+(?!<)[^;{]*;\s*$", line):
+                in_header.append(f"{rel}:{n}: an explicit instantiation in a header: instantiate in a .cpp (docs/ARCHITECTURE.md)")
+    return pairs, in_header
+
+
 def measure():
     files, funcs, json_files = {}, {}, set()
     points = []
     verdicts, verdict_texts = set(), set()
+    global IMPL, IMPL_IN_HEADER
+    IMPL, IMPL_IN_HEADER = set(), []
     for p in sources():
         rel = str(p.relative_to(ROOT))
         text = p.read_text(errors="replace")
@@ -242,6 +267,9 @@ def measure():
         verdicts |= enums
         if as_text:
             verdict_texts.add(rel)
+        pairs, in_header = impl_breaches(rel, text, code)
+        IMPL |= pairs
+        IMPL_IN_HEADER += in_header
         if rel.split("/")[0] in NO_JSON and "/io/" not in rel and (re.search(r"(?i)json", code) or
                                              re.search(r'#\s*include\s*[<"](nlohmann/|io/(json_io|result_json))', text)):
             json_files.add(rel)
@@ -249,7 +277,7 @@ def measure():
 
 
 def read_allow():
-    allow = {"file": {}, "function": {}, "json": set(), "verdict": set(), "verdict-text": set()}
+    allow = {"file": {}, "function": {}, "json": set(), "verdict": set(), "verdict-text": set(), "impl": set()}
     if not ALLOW.exists():
         return allow
     for n, line in enumerate(ALLOW.read_text().splitlines(), 1):
@@ -259,11 +287,13 @@ def read_allow():
         parts = line.split()
         if parts[0] in ("json", "verdict", "verdict-text") and len(parts) == 2:
             allow[parts[0]].add(parts[1])
+        elif parts[0] == "impl" and len(parts) == 3:
+            allow["impl"].add((parts[1], parts[2]))
         elif parts[0] in ("file", "function") and len(parts) == 3:
             allow[parts[0]][parts[1]] = int(parts[2])
         else:
             sys.exit(f"{ALLOW.relative_to(ROOT)}:{n}: expected 'file PATH LINES', 'function PATH::NAME LINES', 'json PATH', "
-                     "'verdict PATH::ENUM' or 'verdict-text PATH'")
+                     "'verdict PATH::ENUM', 'verdict-text PATH' or 'impl FILE INCLUDED'")
     return allow
 
 
@@ -297,13 +327,21 @@ def self_test():
     if enums != {"cut/x.cpp::Fate"} or not as_text:
         print(f"self-test failed: verdict placement found {enums}, {as_text}")
         return 1
+    planted_impl = '#include "compose/compose_impl.hpp"\n#include "vrep/model/vmodel_impl.hpp"\ntemplate int f<int>(int);\n'
+    pairs, in_header = impl_breaches("vrep/x.hpp", planted_impl, blank(planted_impl))
+    ok_pairs, _ = impl_breaches("vrep/y.cpp", planted_impl, blank(planted_impl))
+    if pairs != {("vrep/x.hpp", "compose/compose_impl.hpp"), ("vrep/x.hpp", "vrep/model/vmodel_impl.hpp")} or len(in_header) != 1 or \
+            ok_pairs != {("vrep/y.cpp", "compose/compose_impl.hpp")}:
+        print(f"self-test failed: instantiation rule found {pairs}, {in_header}, {ok_pairs}")
+        return 1
     found = point_breaches("vrep/x.cpp", blank(planted))
     if [b.split(":")[1] for b in found] != ["1", "2"] or point_breaches("base/point.hpp", planted):
         print(f"self-test failed: point placement found {found}, expected lines 1 and 2 only")
         return 1
     print("self-test: the scanner measures planted long functions (plain, braced default arguments, braced member "
           "initialisers, operator()) and skips comments, strings, lambdas and blocks; the placement rule finds a "
-          "planted point alias, a written-out cross product, a three-valued enum and a verdict as text")
+          "planted point alias, a written-out cross product, a three-valued enum, a verdict as text, template definitions "
+          "included across folders and from a header, and an explicit instantiation in a header")
     return 0
 
 
@@ -324,6 +362,8 @@ def main():
             print(f"verdict {e}")
         for f in sorted(verdict_texts):
             print(f"verdict-text {f}")
+        for f, i in sorted(IMPL):
+            print(f"impl {f} {i}")
         return 0
     allow = read_allow()
     bad = []
@@ -346,13 +386,19 @@ def main():
         bad.append(f"{ALLOW.name}: json {f} no longer uses JSON: strike it from the list")
     bad += points
     for e in sorted(verdicts - allow["verdict"]):
-        bad.append(f"{e}: a three-valued enum: use Verdict (base/verdict.hpp)")
+        bad.append(f"{e}: an enum with an undecided member: use Verdict or Uncertain<E> (base/verdict.hpp)")
     for e in sorted(allow["verdict"] - verdicts):
         bad.append(f"{ALLOW.name}: verdict {e} is gone: strike it from the list")
     for f in sorted(verdict_texts - allow["verdict-text"]):
         bad.append(f"{f}: spells a verdict as text (\"undecided\"): use Verdict (base/verdict.hpp); text belongs in io/")
     for f in sorted(allow["verdict-text"] - verdict_texts):
         bad.append(f"{ALLOW.name}: verdict-text {f} no longer spells verdicts as text: strike it from the list")
+    for f, i in sorted(IMPL - allow["impl"]):
+        bad.append(f"{f}: includes {i}, another folder's template definitions (or from a header): instantiate them in "
+                   f"{i.split('/')[0]}/ and use the declarations (docs/ARCHITECTURE.md)")
+    for f, i in sorted(allow["impl"] - IMPL):
+        bad.append(f"{ALLOW.name}: impl {f} {i} is gone: strike it from the list")
+    bad += IMPL_IN_HEADER
     for b in bad:
         print(b)
     if not bad:
@@ -360,7 +406,8 @@ def main():
         nfn = sum(1 for n in funcs.values() if n > FUNCTION_BUDGET)
         print(f"size: {len(files)} files, {len(funcs)} functions; over the budget and allowed: "
               f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/, "
-              f"{len(allow['verdict'])} three-valued enums and {len(allow['verdict-text'])} files with verdicts as text outside base/")
+              f"{len(allow['verdict'])} three-valued enums, {len(allow['verdict-text'])} files with verdicts as text outside base/ "
+              f"and {len(allow['impl'])} template definitions included across folders")
     return 1 if bad else 0
 
 

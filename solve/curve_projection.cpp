@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "base/errors.hpp"
+#include "base/verdict.hpp"
 #include "solve/strata.hpp"
 #include "solve/testing.hpp"
 #include "spline/evaluate.hpp"
@@ -145,7 +146,7 @@ CurveProjectionResult project_curve(const BSpline<Rational>& C, const BSpline<Ra
       };
       const auto undecided = [&](const RootBox<Rational>& box, const std::string& what, const std::function<std::vector<Rational>(const std::vector<Rational>&)>& to3) {
         ProjectionSpecialPoint u;
-        u.kind = "undecided";
+        u.kind = status_name(Status::undecided);  // a box whose kind is not decided
         u.where = what;
         u.lo = to3(box.lo);
         u.hi = to3(box.hi);

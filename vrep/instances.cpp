@@ -119,7 +119,7 @@ const char* to_string(Truth t) {
 }
 
 const char* regularity_name(const Verdict& v) {
-  return v.is_proved() ? "regular" : v.is_refuted() ? "singular" : "undecided";
+  return v.is_proved() ? "regular" : v.is_refuted() ? "singular" : status_name(v.status());
 }
 
 #define SPLINEX_INSTANTIATE_VREP(T)                                                                                 \
@@ -182,7 +182,7 @@ const char* regularity_name(const Verdict& v) {
   template Truth classify_point(const Region<T>&, const std::vector<T>&, const T&);                                  \
   template TrimmedModel<T> as_trimmed(const VModel<T>&, Region<T>);                                                  \
   template TrimmedModel<T> placed_primitive(std::vector<BSpline<T>>, const Region<T>&, int, const std::vector<T>&);    \
-  template const char* to_string<T>(typename CellClass<T>::Kind);                                                    \
+  template const char* to_string<T>(const Uncertain<typename CellClass<T>::Kind>&);                                                    \
   template CellClass<T> classify_cell(const BSpline<T>&, const Region<T>&, const TrimOptions&, const T&, const Limits&); \
   template TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>&, const TrimmedModel<T>&, BooleanOp, Blend, const TrimOptions&, \
                                            const T&, const Limits&);                                                 \

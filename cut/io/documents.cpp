@@ -3,6 +3,7 @@
 #include "cut/io/documents.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "io/cut_io.hpp"
 
@@ -17,24 +18,44 @@ Json q_json(const Rational& x) {
   return j;
 }
 
-Json separation_json(const SeparationResult& s) {
-  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
+namespace {
+
+// The separation certificate of a guide, d = 2 and 3: verdict, pieces, witness, undecided pieces.
+template <class Result>
+Json separation_document(const Result& s) {
+  constexpr bool planar = std::is_same_v<Result, SeparationResult>;
+  auto fractions = [](const auto& v) {
+    Json a = Json::array();
+    for (const auto& x : v) a.push_back(to_fraction_string(x));
+    return a;
+  };
+  Json j{{"verdict", certificate_word(s.verdict)}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
   if (s.witness) {
     const auto& w = *s.witness;
     j["witness"] = Json{{"facet", w.facet},
-                        {"parameter", to_fraction_string(w.param)},
-                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1])})},
+                        {"point_normalized", fractions(w.point)},
                         {"value", q_json(w.value)},
                         {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
+    if constexpr (planar) j["witness"]["parameter"] = to_fraction_string(w.param);
+    else j["witness"]["parameters"] = fractions(w.param);
   }
   Json u = Json::array();
-  for (const auto& o : s.undecided) u.push_back(Json{{"facet", o.facet}, {"parameters", Json::array({to_fraction_string(o.lo), to_fraction_string(o.hi)})}});
+  for (const auto& o : s.undecided) {
+    if constexpr (planar)
+      u.push_back(Json{{"facet", o.facet}, {"parameters", Json::array({to_fraction_string(o.lo), to_fraction_string(o.hi)})}});
+    else
+      u.push_back(Json{{"facet", o.facet},
+                       {"parameters", Json::array({Json::array({to_fraction_string(o.lo[0]), to_fraction_string(o.hi[0])}),
+                                                   Json::array({to_fraction_string(o.lo[1]), to_fraction_string(o.hi[1])})})}});
+  }
   j["undecided"] = u;
-  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip, decided exactly"
-                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : s.reason;
+  j["meaning"] = s.verdict.reason();
   return j;
 }
+
+}  // namespace
+
+Json separation_json(const SeparationResult& s) { return separation_document(s); }
 
 // The double guide's coefficients against the exact minimizer, measured exactly.
 Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<Rational>& rounded) {
@@ -47,12 +68,12 @@ Json judged_against_exact(const std::vector<Rational>& exact, const std::vector<
 
 
 Json validity_json(const ValidityResult& v) {
-  Json j{{"verdict", v.verdict},
+  Json j{{"verdict", validity_word(v.verdict)},
          {"boundary_interpolation", v.interpolates},
          {"tangent_conditions", v.tangents},
-         {"regular", v.regular},
-         {"injective", v.injective},
-         {"no_collision", v.inside},
+         {"regular", certificate_word(v.regular)},
+         {"injective", certificate_word(v.injective)},
+         {"no_collision", certificate_word(v.inside)},
          {"pairs_examined", v.pairs}};
   if (v.singular_s) j["singular_at"] = to_fraction_string(*v.singular_s);
   if (v.witness) {
@@ -64,94 +85,72 @@ Json validity_json(const ValidityResult& v) {
   return j;
 }
 
-template <class T>
-Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& sep) {
+namespace {
+
+// A guide, d = 2 or 3 (R: GuideResult<T> or GuideResult3<T>): the program, its KKT check, the
+// verdict, the guide and, when given, the separation certificate.
+template <class T, class Result, class Separation>
+Json guide_document(const Result& R, const std::optional<Separation>& sep) {
+  constexpr bool planar = std::is_same_v<Result, GuideResult<T>>;
+  constexpr int d = planar ? 2 : 3;
   Json j;
   j["arithmetic"] = ArithTraits<T>::name();
   j["status"] = to_string(R.status);
-  j["inner_knots"] = Json::array({R.inner_knots, R.inner_knots_y});
+  if constexpr (planar) j["inner_knots"] = Json::array({R.inner_knots, R.inner_knots_y});
+  else j["inner_knots"] = R.inner_knots;
   j["inner_knots_tried"] = R.tried;
   j["variables"] = R.program.n;
   j["rows"] = R.program.rows.size();
   j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}};
-  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1])})},
+  Json lo = Json::array();
+  for (int k = 0; k < d; ++k) lo.push_back(to_fraction_string(R.frame.lo[static_cast<std::size_t>(k)]));
+  j["frame"] = Json{{"lo", lo},
                     {"scale", to_fraction_string(R.frame.scale)},
-                    {"meaning", "f* lives on [0,1]^2 in normalized coordinates (x - lo) / scale"}};
+                    {"meaning", "f* lives on [0,1]^" + std::to_string(d) + " in normalized coordinates (x - lo) / scale"}};
   j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
   j["positive_definite"] = R.positive_definite;
   if (R.status == QPStatus::optimal) {
     j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
     j["objective"] = q_json(R.solution.objective);
-    j["value_at_ends"] = Json::array({q_json(R.value_at_ends[0]), q_json(R.value_at_ends[1])});
-    j["gradient_error_squared_at_ends"] = Json::array({q_json(R.gradient_error2[0]), q_json(R.gradient_error2[1])});
+    if constexpr (planar) {
+      j["value_at_ends"] = Json::array({q_json(R.value_at_ends[0]), q_json(R.value_at_ends[1])});
+      j["gradient_error_squared_at_ends"] = Json::array({q_json(R.gradient_error2[0]), q_json(R.gradient_error2[1])});
+    } else {
+      j["max_abs_value_on_loop_samples"] = q_json(R.max_abs_value_on_loop);
+      j["max_gradient_error_squared_on_loop_samples"] = q_json(R.max_gradient_error2);
+    }
     j["guide"] = spline_to_json(R.f);
   } else {
+    std::string upto;
+    if constexpr (planar) upto = " up to " + std::to_string(R.inner_knots) + " inner knots";
     j["verdict"] = R.status == QPStatus::infeasible
-                       ? std::string("infeasible up to ") + std::to_string(R.inner_knots) + " inner knots (Farkas certificate " +
-                             (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
-                             (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") + ": raise --max-inner-knots, lower --delta, or widen --strip"
-                       : "unbounded";
-  }
-  if (sep) j["separation"] = separation_json(*sep);
-  j["seconds"] = R.seconds;
-  return j;
-}
-
-
-Json separation3_json(const SeparationResult3& s) {
-  Json j{{"verdict", s.verdict}, {"pieces_certified", s.pieces}, {"pieces_in_strip", s.excluded}};
-  if (s.witness) {
-    const auto& w = *s.witness;
-    j["witness"] = Json{{"facet", w.facet},
-                        {"parameters", Json::array({to_fraction_string(w.param[0]), to_fraction_string(w.param[1])})},
-                        {"point_normalized", Json::array({to_fraction_string(w.point[0]), to_fraction_string(w.point[1]), to_fraction_string(w.point[2])})},
-                        {"value", q_json(w.value)},
-                        {"side", w.positive_side ? "b (f* must be > 0)" : "b-bar (f* must be < 0)"}};
-  }
-  Json u = Json::array();
-  for (const auto& o : s.undecided)
-    u.push_back(Json{{"facet", o.facet},
-                     {"parameters", Json::array({Json::array({to_fraction_string(o.lo[0]), to_fraction_string(o.hi[0])}),
-                                                 Json::array({to_fraction_string(o.lo[1]), to_fraction_string(o.hi[1])})})}});
-  j["undecided"] = u;
-  j["meaning"] = s.verdict == "certified"  ? "f* > 0 on all of b and f* < 0 on all of b-bar outside the strip around the loop, decided exactly"
-                 : s.verdict == "violated" ? "f* has the wrong sign at the witness, an exact boundary point outside the strip"
-                                           : s.reason;
-  return j;
-}
-
-template <class T>
-Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3>& sep) {
-  Json j;
-  j["arithmetic"] = ArithTraits<T>::name();
-  j["status"] = to_string(R.status);
-  j["inner_knots"] = R.inner_knots;
-  j["inner_knots_tried"] = R.tried;
-  j["variables"] = R.program.n;
-  j["rows"] = R.program.rows.size();
-  j["samples"] = Json{{"b", R.samples_positive}, {"b_bar", R.samples_negative}, {"loop", R.loop_points.size()}};
-  j["loop_sides"] = R.loop.size();
-  j["frame"] = Json{{"lo", Json::array({to_fraction_string(R.frame.lo[0]), to_fraction_string(R.frame.lo[1]), to_fraction_string(R.frame.lo[2])})},
-                    {"scale", to_fraction_string(R.frame.scale)},
-                    {"meaning", "f* lives on [0,1]^3 in normalized coordinates (x - lo) / scale"}};
-  j["kkt"] = Json{{"holds", R.kkt.holds}, {"failed", R.kkt.failed}, {"active_rows", R.kkt.active}, {"method", R.solution.method}};
-  j["positive_definite"] = R.positive_definite;
-  if (R.status == QPStatus::optimal) {
-    j["verdict"] = guide_verdict(ArithTraits<T>::exact, R.program, R.kkt, R.positive_definite);
-    j["objective"] = q_json(R.solution.objective);
-    j["max_abs_value_on_loop_samples"] = q_json(R.max_abs_value_on_loop);
-    j["max_gradient_error_squared_on_loop_samples"] = q_json(R.max_gradient_error2);
-    j["guide"] = spline_to_json(R.f);
-  } else {
-    j["verdict"] = R.status == QPStatus::infeasible
-                       ? std::string("infeasible (Farkas certificate ") + (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
+                       ? "infeasible" + upto + " (Farkas certificate " + (R.kkt.holds ? "checked exactly" : "not confirmed: " + R.kkt.failed) + ")" +
                              (R.refinement_stopped_by_limit ? "; refinement stopped at the size limit" : "") +
                              ": raise --max-inner-knots, lower --delta, or widen --strip"
                        : "unbounded";
   }
-  if (sep) j["separation"] = separation3_json(*sep);
+  if constexpr (!planar) {
+    j["samples"]["loop"] = R.loop_points.size();
+    j["loop_sides"] = R.loop.size();
+  }
+  if (sep) j["separation"] = separation_document(*sep);
   j["seconds"] = R.seconds;
   return j;
+}
+
+}  // namespace
+
+template <class T>
+Json guide_json(const GuideResult<T>& R, const std::optional<SeparationResult>& sep) {
+  return guide_document<T>(R, sep);
+}
+
+
+Json separation3_json(const SeparationResult3& s) { return separation_document(s); }
+
+template <class T>
+Json guide3_json(const GuideResult3<T>& R, const std::optional<SeparationResult3>& sep) {
+  return guide_document<T>(R, sep);
 }
 
 

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     const auto B = vrep::load_operand(argv[2], Limits{}, ReadLimits{});
     vrep::BooleanRequest rq;  // intersect, exact, planar where it suffices
     const auto R = vrep::boolean(A, B, rq);
-    const Json doc = vrep::to_json(R);
+    const Json doc = vrep::document(R);
     std::cout << "intersection: " << doc.at("cells").size() << " cell(s), " << (std::holds_alternative<VModel<Rational>>(R) ? "planar cuts" : "trimmed cells")
               << "\n";
     return 0;

@@ -188,3 +188,17 @@ TEST_CASE("Verdict: one spelling of the three answers") {
   CHECK(Verdict::proved("checked") == Verdict::proved("checked"));
   CHECK_FALSE(Verdict::proved("checked") == Verdict::refuted("checked"));
 }
+
+TEST_CASE("Uncertain<E>: a decided value compares equal to it, an undecided one to none and refuses make_certain", "[verdict]") {
+  enum Kind { whole, empty, cut };
+  const Uncertain<Kind> decided = cut;
+  CHECK(decided.is_certain());
+  CHECK(decided == cut);
+  CHECK(decided != whole);
+  CHECK(decided.make_certain("the cell's kind") == cut);
+  const auto open = Uncertain<Kind>::undecided("mixed boxes left at the budget");
+  CHECK_FALSE(open.is_certain());
+  for (Kind k : {whole, empty, cut}) CHECK(open != k);
+  CHECK(open.reason() == "mixed boxes left at the budget");
+  CHECK_THROWS_AS(open.make_certain("the cell's kind"), UndecidedError);
+}

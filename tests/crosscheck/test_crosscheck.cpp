@@ -1,8 +1,10 @@
 #include <catch2/catch.hpp>
 #include <random>
+#include <set>
 
 #include "base/errors.hpp"
 #include "crosscheck/crosscheck.hpp"
+#include "crosscheck/operations.hpp"
 #include "fixtures/random_spline.hpp"
 #include "fixtures/teapot.hpp"
 #include "tests/helpers.hpp"
@@ -72,4 +74,24 @@ TEST_CASE("the teapot surfaces merge exactly from the bundled data") {
   // Patches that do not share an edge cannot be merged.
   CHECK_THROWS_AS(merge_bezier_grid(patches, {{0, 2}}, "bad"), ValidationError);
   CHECK_THROWS_AS(read_bpt("/nonexistent.bpt"), UsageError);
+}
+
+TEST_CASE("operation_table: one row per kernel operation, read back by name, every kind once", "[crosscheck][operations]") {
+  std::set<Operation::Kind> kinds;
+  for (const auto& row : operation_table()) {
+    const Operation op = Operation::parse_kind(row.name);
+    CHECK(op.kind == row.kind);
+    CHECK(op.name() == row.name);
+    CHECK(kinds.insert(row.kind).second);
+  }
+  // every kind but crosscheck's identity baseline has its row
+  CHECK(kinds.size() == 7);
+  CHECK(kinds.count(Operation::Kind::identity) == 0);
+  CHECK(Operation::parse_kind("identity").kind == Operation::Kind::identity);
+  try {
+    Operation::parse_kind("refine-all");
+    FAIL("an unknown operation was accepted");
+  } catch (const UsageError& e) {
+    CHECK(std::string(e.what()).find(operation_names() + " or identity") != std::string::npos);
+  }
 }

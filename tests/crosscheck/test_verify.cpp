@@ -91,7 +91,7 @@ TEST_CASE("verify: the exact result rounded to double loses at most a bit or two
     const auto rep2 = verify(op, S, {coefficients_only});
     CHECK(rep2.structure == "equal");
     CHECK(rep2.function.upper <= rep2.control_points.max_abs);
-    CHECK(rep2.to_json()["function"]["bits_lost"].get<double>() <= 1);
+    CHECK(rep2.document()["function"]["bits_lost"].get<double>() <= 1);
   }
 }
 

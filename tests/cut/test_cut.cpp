@@ -219,7 +219,7 @@ TEST_CASE("cut: the guiding curve exactly, certified, and in double judged exact
       else CHECK(v <= -o.delta);
     }
     const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
-    CHECK(sep.verdict == "certified");
+    CHECK(sep.verdict.is_proved());
     // Double: the same program rounded, solved by the same solver; its minimizer is close to the
     // exact one but not equal (the data are rounded), and its KKT check holds for its own program.
     const auto D = guide_curve<double>(e.solid, e.cut, o);
@@ -251,10 +251,10 @@ TEST_CASE("cut: certified separation finds a guide that leaves the solid between
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i) c[i + n * j] = (U[i + 1] + U[i + 2] + U[i + 3]) / 3 - q(1, 2);
   auto f = make_spline<Rational>({3, 3}, {U, U}, 1, c);
-  CHECK(certify_separation(R.solid, R.cut, f, o.strip).verdict == "certified");
+  CHECK(certify_separation(R.solid, R.cut, f, o.strip).verdict.is_proved());
   f.points[(n - 1) + n * 3] = q(-2);
   const auto sep = certify_separation(R.solid, R.cut, f, o.strip);
-  REQUIRE(sep.verdict == "violated");
+  REQUIRE(sep.verdict.is_refuted());
   REQUIRE(sep.witness);
   CHECK(sep.witness->positive_side);
   CHECK(sep.witness->point[0] == q(1));  // on the right edge
@@ -273,7 +273,7 @@ TEST_CASE("cut: a sample-feasible RDCP solution that leaves the solid is refuted
   REQUIRE(R.status == QPStatus::optimal);
   CHECK(R.kkt.holds);
   const auto sep = certify_separation(R.solid, R.cut, R.f, o.strip);
-  REQUIRE(sep.verdict == "violated");
+  REQUIRE(sep.verdict.is_refuted());
   REQUIRE(sep.witness);
   CHECK(sep.witness->facet == 1);  // the outer bottom
   CHECK(sep.witness->positive_side);
@@ -281,7 +281,7 @@ TEST_CASE("cut: a sample-feasible RDCP solution that leaves the solid is refuted
   o.samples = 2;
   const auto R2 = guide_curve<Rational>(e.solid, e.cut, o);
   REQUIRE(R2.status == QPStatus::optimal);
-  CHECK(certify_separation(R2.solid, R2.cut, R2.f, o.strip).verdict == "certified");
+  CHECK(certify_separation(R2.solid, R2.cut, R2.f, o.strip).verdict.is_proved());
 }
 
 TEST_CASE("cut: the cutting curve fitted to the guide, certified valid, and the solid split exactly", "[cut]") {
@@ -295,10 +295,10 @@ TEST_CASE("cut: the cutting curve fitted to the guide, certified valid, and the 
     const auto v = certify_cutting_curve(R.solid, R.cut, cc.curve);
     CHECK(v.interpolates);
     CHECK(v.tangents);
-    CHECK(v.regular == "certified");
-    CHECK(v.injective == "certified");
-    CHECK(v.inside == "certified");
-    CHECK(v.verdict == "valid");
+    CHECK(v.regular.is_proved());
+    CHECK(v.injective.is_proved());
+    CHECK(v.inside.is_proved());
+    CHECK(v.verdict.is_proved());
     const auto [S1, S2] = split_solid(R.solid, R.cut, cc.curve);
     CHECK(signed_area(S1) > 0);
     CHECK(signed_area(S2) > 0);
@@ -317,10 +317,10 @@ TEST_CASE("cut: an invalid cutting curve is refuted at an exact point outside th
   const auto v = certify_cutting_curve(e.solid, cut, C);
   CHECK(v.interpolates);
   CHECK(v.tangents);
-  CHECK(v.regular == "certified");
-  CHECK(v.injective == "certified");
-  REQUIRE(v.inside == "violated");
-  CHECK(v.verdict == "invalid");
+  CHECK(v.regular.is_proved());
+  CHECK(v.injective.is_proved());
+  REQUIRE(v.inside.is_refuted());
+  CHECK(v.verdict.is_refuted());
   REQUIRE(v.witness);
   CHECK(classify_point(e.solid, *v.witness) == -1);
   // Ray casting itself: inside, outside, on the boundary.
@@ -332,10 +332,10 @@ TEST_CASE("cut: an invalid cutting curve is refuted at an exact point outside th
   // A self-intersecting loop is not certified injective; a curve with a cusp is refuted as irregular.
   const auto loop = make_spline<Rational>({3}, {clamped_knots<Rational>(3, q(0), q(1))}, 2, {q(0), q(0), q(2), q(1), q(2), q(-1), q(0), q(1)});
   const auto vl = certify_cutting_curve(e.solid, cut, loop);
-  CHECK(vl.injective == "undecided");
+  CHECK(vl.injective.is_undecided());
   const auto cusp = make_spline<Rational>({3}, {clamped_knots<Rational>(3, q(0), q(1))}, 2, {q(0), q(0), q(1), q(1), q(0), q(1), q(1), q(0)});
   const auto vc = certify_cutting_curve(e.solid, cut, cusp);
-  CHECK(vc.regular == "violated");
+  CHECK(vc.regular.is_refuted());
   CHECK(vc.singular_s == q(1, 2));
 }
 
@@ -504,12 +504,12 @@ TEST_CASE("cut: a strip over the whole boundary leaves RDCP without rows and the
   const auto sep = certify_separation(R.solid, R.cut, R.f_exact, o.strip);
   CHECK(sep.pieces == 0);
   CHECK(sep.excluded > 0);
-  CHECK(sep.verdict == "undecided");
-  CHECK(sep.reason.find("nothing was checked") != std::string::npos);
+  CHECK(sep.verdict.is_undecided());
+  CHECK(sep.verdict.reason().find("nothing was checked") != std::string::npos);
   // With the default strip the same guide's check certifies pieces.
   const auto R2 = guide_curve<Rational>(e.solid, e.cut, GuideOptions{});
   const auto sep2 = certify_separation(R2.solid, R2.cut, R2.f_exact, GuideOptions{}.strip);
-  CHECK(sep2.verdict == "certified");
+  CHECK(sep2.verdict.is_proved());
   CHECK(sep2.pieces > 0);
 }
 
@@ -531,7 +531,7 @@ TEST_CASE("cut: the exact guide of the long-number reproducer is certified from 
   CHECK(R.program.rows.size() == 72);
   CHECK(guide_verdict(true, R.program, R.kkt, R.positive_definite) ==
         "proved: the unique minimizer of RDCP (KKT conditions exact, objective positive definite)");
-  CHECK(certify_separation(R.solid, R.cut, R.f_exact, o.strip).verdict == "certified");
+  CHECK(certify_separation(R.solid, R.cut, R.f_exact, o.strip).verdict.is_proved());
   const auto D = guide_curve<double>(S, C, o);
   REQUIRE(D.status == QPStatus::optimal);
   CHECK(D.solution.method == "exact solver on the rounded program (CGAL, Gmpzf)");

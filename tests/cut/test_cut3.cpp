@@ -155,17 +155,17 @@ TEST_CASE("cut3: certified separation of hand-made guides, one that must fail", 
   };
   const Rational strip(1, 16);
   const auto good = certify_separation(solid, loop, e.cut.positive, linear_in_z(q(-1, 2), q(1)), strip);
-  CHECK(good.verdict == "certified");
+  CHECK(good.verdict.is_proved());
   CHECK(good.excluded > 0);
   const auto high = certify_separation(solid, loop, e.cut.positive, linear_in_z(q(-3, 4), q(1)), strip);
-  REQUIRE(high.verdict == "violated");
+  REQUIRE(high.verdict.is_refuted());
   REQUIRE(high.witness);
   CHECK(high.witness->positive_side);
   CHECK(high.witness->point[2] > q(1, 2));
   CHECK(high.witness->point[2] <= q(3, 4));
   CHECK(high.witness->value == high.witness->point[2] - q(3, 4));
   const auto wrong = certify_separation(solid, loop, e.cut.positive, linear_in_z(q(1, 2), q(-1)), strip);
-  CHECK(wrong.verdict == "violated");
+  CHECK(wrong.verdict.is_refuted());
 }
 
 TEST_CASE("cut3: the guiding surface of the cube exactly (KKT, positive definite), certified, and in double judged exactly", "[cut]") {
@@ -180,7 +180,7 @@ TEST_CASE("cut3: the guiding surface of the cube exactly (KKT, positive definite
   CHECK(R.positive_definite);
   CHECK(R.samples_positive + R.samples_negative == 24 * 4);
   const auto sep = certify_separation(R.solid, R.loop, e.cut.positive, R.f_exact, o.base.strip);
-  CHECK(sep.verdict == "certified");
+  CHECK(sep.verdict.is_proved());
   // By the symmetry of the data under x -> 1 - x, y -> 1 - y and x <-> y, and the uniqueness of the
   // minimizer (Lemma 1), f* takes equal values at mirrored points.
   const std::vector<Rational> p{q(1, 5), q(2, 7), q(3, 5)}, pm{q(4, 5), q(2, 7), q(3, 5)}, ps{q(2, 7), q(1, 5), q(3, 5)};

@@ -315,9 +315,9 @@ TEST_CASE("cut planted: a guide that crosses the boundary between the samples is
   };
   const auto straight = make_spline<Rational>({1, 1}, {clamped_knots<Rational>(1, q(0), q(1)), clamped_knots<Rational>(1, q(0), q(1))}, 1,
                                               {q(-1, 2), q(1, 2), q(-1, 2), q(1, 2)});
-  CHECK(certify_separation(R.solid, R.cut, straight, GuideOptions{}.strip).verdict == "certified");
+  CHECK(certify_separation(R.solid, R.cut, straight, GuideOptions{}.strip).verdict.is_proved());
   // 2 - t: right everywhere outside the strip, certified too
-  CHECK(certify_separation(R.solid, R.cut, surface(2 - t), GuideOptions{}.strip).verdict == "certified");
+  CHECK(certify_separation(R.solid, R.cut, surface(2 - t), GuideOptions{}.strip).verdict.is_proved());
   const auto f = surface(2 + t);
   CHECK(evaluate(f, std::vector<Rational>{q(1), y0})[0] == -t / 4);
   for (std::size_t i = 0; i < R.sample_points.size(); ++i) {
@@ -326,7 +326,7 @@ TEST_CASE("cut planted: a guide that crosses the boundary between the samples is
     else CHECK(v < 0);
   }
   const auto sep = certify_separation(R.solid, R.cut, f, GuideOptions{}.strip);
-  CHECK(sep.verdict == "violated");
+  CHECK(sep.verdict.is_refuted());
   REQUIRE(sep.witness);
   CHECK(sep.witness->positive_side);
   CHECK(sep.witness->point[0] == q(1));
@@ -335,7 +335,7 @@ TEST_CASE("cut planted: a guide that crosses the boundary between the samples is
   // Flipped: f's negative is wrong on all of b and b-bar.
   auto flipped = straight;
   for (auto& v : flipped.points) v = -v;
-  CHECK(certify_separation(R.solid, R.cut, flipped, GuideOptions{}.strip).verdict == "violated");
+  CHECK(certify_separation(R.solid, R.cut, flipped, GuideOptions{}.strip).verdict.is_refuted());
 }
 
 TEST_CASE("cut planted: figure-eight facet loops are refused, their simple neighbours accepted", "[cut][planted]") {

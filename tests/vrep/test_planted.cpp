@@ -26,6 +26,9 @@
 #include "vrep/model/vmodel.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -12,6 +12,7 @@
 #include "region_helpers.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 using namespace splinex;
 using R = Rational;

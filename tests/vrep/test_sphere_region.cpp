@@ -16,6 +16,7 @@
 #include "vrep/model/vmodel.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
 
 using namespace splinex;
 using R = Rational;

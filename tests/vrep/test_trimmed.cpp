@@ -397,3 +397,18 @@ TEST_CASE("vrep trimmed: fields ride along the Booleans, the other model's named
       CHECK(e.moment.upper == R(1, 2));
     }
 }
+
+TEST_CASE("cell_kind: settled boxes decide, unsettled ones decide only cut (with a point inside and one outside)", "[vrep][trimmed]") {
+  using K = CellClass<Rational>;
+  CHECK(cell_kind<Rational>(true, true, false) == K::whole);
+  CHECK(cell_kind<Rational>(true, false, false) == K::empty);
+  CHECK(cell_kind<Rational>(true, true, true) == K::cut);
+  CHECK(cell_kind<Rational>(false, true, true) == K::cut);
+  for (bool in : {false, true}) {
+    const auto k = cell_kind<Rational>(false, in, !in);
+    CHECK_FALSE(k.is_certain());
+    CHECK(k.reason().find("without both witnesses") != std::string::npos);
+    CHECK(std::string(to_string<Rational>(k)) == "undecided");
+    CHECK_THROWS_AS(k.make_certain("the cell's kind"), UndecidedError);
+  }
+}

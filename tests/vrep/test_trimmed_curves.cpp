@@ -9,6 +9,8 @@
 #include "region_helpers.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -18,6 +18,7 @@
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 #include "vrep/trimmed/trimmed_impl.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
 
 using namespace splinex;
 using R = Rational;

@@ -533,10 +533,9 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
     has_out |= t == Truth::out;
     mixed += t == Truth::mixed;
   }
-  using K = typename CellClass<T>::Kind;
   out.cls.boxes = n;
   out.cls.mixed = mixed;
-  out.cls.kind = mixed == 0 ? (has_in && has_out ? K::cut : has_in ? K::whole : K::empty) : has_in && has_out ? K::cut : K::undecided;
+  out.cls.kind = cell_kind<T>(mixed == 0, has_in, has_out);
   // Volume: in-boxes' integral of det J, mixed boxes between none and all.
   auto& v = out.volume;
   for (std::size_t i = 0; i < n; ++i) {
@@ -666,19 +665,20 @@ FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformC
               }
               if (excluded) continue;
               if (zero) {
-                e.status = FreeformEdges<T>::Edge::undecided;
+                e.status = Uncertain<typename FreeformEdges<T>::Edge::Status>::undecided("a condition vanishes identically on the edge");
                 continue;
               }
               const SolveResult<T> r = solve_system(f, {T(0), T(0), pc.box[0].first}, {T(1), T(1), pc.box[0].second}, options.solve);
               ++out.systems;
-              if (!r.undecided.empty()) e.status = FreeformEdges<T>::Edge::undecided;
+              if (!r.undecided.empty())
+                e.status = Uncertain<typename FreeformEdges<T>::Edge::Status>::undecided("the solver left boxes undecided (tangency, an edge on the boundary)");
               for (const auto& root : r.roots) events.push_back(root.exact ? std::pair<T, T>{root.point[2], root.point[2]} : std::pair<T, T>{root.lo[2], root.hi[2]});
             }
         }
         if (e.status == FreeformEdges<T>::Edge::curve) {
           const auto runs = vrep_detail::edge_runs(events, V.domain_lo(along), V.domain_hi(along),
                                                    [&](const T& t) { return static_cast<int>(truth_at_point(point_of(C, t))); });
-          if (!runs.decided) e.status = FreeformEdges<T>::Edge::undecided;
+          if (!runs.decided) e.status = Uncertain<typename FreeformEdges<T>::Edge::Status>::undecided("the truth between the events is not decided");
           e.pieces = runs.pieces;
           e.points = runs.points;
           e.cuts = runs.cuts;

@@ -143,7 +143,8 @@ struct FreeformEdges {
   struct Edge {
     int along = 0;
     std::array<int, 3> sides{};
-    enum Status { curve, collapsed, undecided } status = curve;
+    enum Status { curve, collapsed };
+    Uncertain<Status> status = curve;  // undecided: a solver box left (tangency, an edge on the boundary)
     std::size_t pieces = 0, points = 0;
     std::vector<std::pair<T, T>> cuts;  // enclosures of the V-points' parameters
   };

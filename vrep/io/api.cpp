@@ -142,7 +142,15 @@ BooleanResult boolean(const Operand& A, const Operand& B, const BooleanRequest& 
   return trimmed_in_double();
 }
 
-Json to_json(const BooleanResult& result) {
+TrimmedModel<Rational> read_trimmed_model(const std::string& file, const Limits& limits, const ReadLimits& read_limits) {
+  const Json doc = read_json_file(file, read_limits);
+  if (!doc.is_object() || !doc.contains("type") || doc["type"] != "trimmed_vmodel")
+    throw ValidationError(file, "is not a trimmed V-model document (type \"trimmed_vmodel\")",
+                          "give the output of vrep boolean with trimmed cells; a V-model's own topology is in vrep info");
+  return trimmed_from_json(doc, limits, file);
+}
+
+Json document(const BooleanResult& result) {
   return std::visit(
       [](const auto& M) -> Json {
         using M_t = std::decay_t<decltype(M)>;

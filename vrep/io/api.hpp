@@ -63,6 +63,10 @@ struct BooleanRequest {
 using BooleanResult = std::variant<VModel<Rational>, VModel<double>, TrimmedModel<Rational>, TrimmedModel<double>>;
 BooleanResult boolean(const Operand& first, const Operand& second, const BooleanRequest& request, const Limits& limits = {});
 /// The result's document (vmodel_to_json or trimmed_to_json).
-Json to_json(const BooleanResult& result);
+Json document(const BooleanResult& result);
+
+/// A trimmed V-model document (type "trimmed_vmodel", the output of a Boolean with trimmed cells)
+/// read exactly; another document is a ValidationError naming the file.
+TrimmedModel<Rational> read_trimmed_model(const std::string& file, const Limits& limits, const ReadLimits& read_limits);
 
 }  // namespace splinex::vrep

@@ -5,6 +5,12 @@
 #include <chrono>
 
 #include "float/mpfr.hpp"
+#include "vrep/boolean/boolean.hpp"
+#include "vrep/primitives/blend.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 namespace splinex::vrep {
 
@@ -178,7 +184,7 @@ Json info_document(const VModel<Rational>& M, const ValidityReport& v) {
 Json topology_document(const TrimmedModel<Rational>& M, const ValidityReport& validity, std::size_t boxes, bool glue,
                        const Limits& limits) {
   Json cells = Json::array();
-  const char* status[] = {"curve", "collapsed", "on_trimming_surface", "undecided"};
+  const char* status[] = {"curve", "collapsed", "on_trimming_surface"};
   for (std::size_t k = 0; k < M.cells.size(); ++k) {
     const auto t = trimmed_topology(M.trivariates[M.cells[k].trivariate], M.cells[k].trim, boxes, limits);
     Json edges = Json::array(), surfaces = Json::array();
@@ -190,7 +196,7 @@ Json topology_document(const TrimmedModel<Rational>& M, const ValidityReport& va
         put_enclosure(c, "exact", lo, hi, false);
         cuts.push_back(c);
       }
-      edges.push_back({{"along", e.along}, {"sides", e.sides}, {"status", status[e.status]}, {"v_curves", e.pieces}, {"v_points", e.points}, {"cuts", cuts}});
+      edges.push_back({{"along", e.along}, {"sides", e.sides}, {"status", e.status.is_certain() ? status[e.status.make_certain("edge status")] : "undecided"}, {"v_curves", e.pieces}, {"v_points", e.points}, {"cuts", cuts}});
       pieces += e.pieces;
       points += e.points;
     }
@@ -382,6 +388,94 @@ Json volume_document(const Operand& O, const VolumeRequest& rq, const Limits& li
                                      : "target not reached: budget of " + std::to_string(rq.boxes) + " boxes per cell (" +
                                            std::to_string(R.budget) + " in all) spent; raise --boxes or --rel-width";
   out["enclosure"] = acc;
+  return out;
+}
+
+template <class F>
+Json vmodel_document(const VModel<F>& M, const std::optional<Region<F>>& implicit) {
+  Json doc = vmodel_to_json(M);
+  if (implicit) doc["implicit"] = region_to_json(*implicit);
+  return doc;
+}
+template Json vmodel_document(const VModel<Rational>&, const std::optional<Region<Rational>>&);
+template Json vmodel_document(const VModel<double>&, const std::optional<Region<double>>&);
+template Json vmodel_document(const VModel<Mpfr>&, const std::optional<Region<Mpfr>>&);
+
+Json glued_document(const LoadedModel& r) {
+  Json doc = vmodel_to_json(r.model);
+  doc["topology"]["validity"] = r.validity.verdict();  // for the reader; ignored on input
+  return doc;
+}
+
+namespace {
+
+Json fractions(const std::vector<Rational>& v) {
+  Json a = Json::array();
+  for (const auto& y : v) a.push_back(to_fraction_string(y));
+  return a;
+}
+
+}  // namespace
+
+Json cell_value_document(std::size_t cell, const CellValue<Rational>& r) {
+  Json out{{"cell", cell}, {"point", fractions(r.point)}, {"coordinates", fractions(r.coordinates)}};
+  Json f = Json::object(), c = Json::object();
+  for (const auto& [n, v] : r.fields) f[n] = fractions(v);
+  for (const auto& [n, v] : r.constants) c[n] = fractions(v);
+  out["fields"] = f;
+  out["constants"] = c;
+  return out;
+}
+
+Json classify_document(const Operand& O, const std::vector<Rational>& x) {
+  // Cells with planar faces: which cells contain x. Otherwise the model's exact region.
+  std::optional<std::vector<std::size_t>> in_cells;
+  if (O.model && planar_region(*O.model)) in_cells = cells_containing(*O.model, x);
+  if (in_cells) {
+    Json cells = Json::array();
+    for (std::size_t c : *in_cells) cells.push_back({{"cell", c}, {"name", O.model->cells[c].name}});
+    Json out{{"inside", !cells.empty()}, {"cells", cells}};
+    if (!O.validity.complete()) out["validity"] = O.validity.verdict();
+    return out;
+  }
+  if (!O.trimmed)
+    throw DomainError("file", "has curved cells and no exact region (\"implicit\"): point classification needs one",
+                      "build the model with vrep primitive or vrep boolean, which write it");
+  const Truth t = classify_point(O.trimmed->region, x);
+  Json out{{"truth", t == Truth::in ? "inside" : t == Truth::out ? "outside" : "on a surface"}};
+  if (t != Truth::mixed) out["inside"] = t == Truth::in;
+  else out["note"] = "x lies on the zero set of a polynomial that decides it: the boundary, or inside where two pieces touch";
+  if (!O.validity.complete()) out["validity"] = O.validity.verdict();
+  return out;
+}
+
+Json blend_document(const VModel<Rational>& V1, const VModel<Rational>& V2, const std::vector<Rational>& x, const std::string& attribute,
+                    int k, int bits) {
+  const DistanceBlend D(V1, V2);
+  const bool in1 = D.in_first(x), in2 = D.in_second(x);
+  std::vector<Rational> A1, A2;
+  Json out{{"in_first", in1}, {"in_second", in2}};
+  if (in1) out["A1"] = fractions(A1 = attribute_at(V1, x, attribute));
+  if (in2) out["A2"] = fractions(A2 = attribute_at(V2, x, attribute));
+  if (!in1) A1 = A2;
+  if (!in2) A2 = A1;
+  const auto r = D.at(x, A1, A2, k, bits);
+  if (in1 && in2) {
+    out["d1_squared"] = to_fraction_string(r.d1_squared);
+    out["d2_squared"] = to_fraction_string(r.d2_squared);
+  }
+  out["singular"] = r.singular;
+  if (r.singular) out["note"] = "d1 = d2 = 0: the blend is undefined here (the point r of Figure 6)";
+  Json value = Json::array(), approx = Json::array();
+  for (const auto& e : r.value) {
+    if (e.exact()) value.push_back(to_fraction_string(e.lo));
+    else value.push_back({to_fraction_string(e.lo), to_fraction_string(e.hi)});
+    approx.push_back(approx_json(to_double(e.lo)));
+  }
+  if (!r.singular) {
+    out["value"] = value;
+    out["approximately"] = approx;
+  }
   return out;
 }
 

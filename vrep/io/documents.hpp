@@ -3,12 +3,17 @@
 // cells, a V-model's summary, the topology of trimmed cells and the volume (with centroid and field
 // integrals) - written here once, for the command line, the report and Python.
 #pragma once
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "io/json_io.hpp"
 #include "vrep/io/api.hpp"
 #include "vrep/model/regularity.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
 
 namespace splinex::vrep {
 
@@ -32,6 +37,27 @@ Json curves_json(const TrimmedCurves<Rational>& c);
 /// A regularity report (verdict, reason, sign, the points and det J's numerator there).
 template <class F>
 Json report_to_json(const RegularityReport<F>& r);
+/// `vrep certify`'s result: the regularity report.
+template <class F>
+Json document(const RegularityReport<F>& r) {
+  return report_to_json(r);
+}
+
+/// A V-model (`vrep glue --eps`, a constructed primitive) and, when given, the exact region it
+/// fills ("implicit"). F: Rational, double or Mpfr.
+template <class F>
+Json vmodel_document(const VModel<F>& M, const std::optional<Region<F>>& implicit = std::nullopt);
+/// A model read and glued exactly, with its validity verdict for the reader (ignored on input).
+Json glued_document(const LoadedModel& r);
+/// `vrep eval`: a cell's point, coordinates, fields and constants at a parameter, as fractions.
+Json cell_value_document(std::size_t cell, const CellValue<Rational>& r);
+/// `vrep classify`: which cells contain the point x (cells with planar faces) or, otherwise, where
+/// x lies against the model's exact region (DomainError when the operand has neither).
+Json classify_document(const Operand& O, const std::vector<Rational>& x);
+/// `vrep blend`: Eq. 2's distance blend of `attribute` of V1 and V2 at x (order k, MPFI enclosure
+/// at `bits`), with each model's value where x is in it.
+Json blend_document(const VModel<Rational>& V1, const VModel<Rational>& V2, const std::vector<Rational>& x, const std::string& attribute,
+                    int k, int bits);
 
 /// trimmed_glue's result (halves, twins, the V-surface counts, the time taken).
 Json gluing_json(const TrimmedGluing<Rational>& G, const TrimmedModel<Rational>& M, double seconds);

@@ -126,6 +126,22 @@ template <class T>
 struct JacobianBox {
   Bernstein<T> N;
   std::array<T, 3> lo, hi;
+
+  /// f(i, x) for each corner coefficient N.c[i] - the numerator's exact value at the box's
+  /// corner x - in storage order, until f returns false.
+  template <class F>
+  void for_each_corner(F&& f) const {
+    std::vector<int> idx(3);
+    for (std::size_t i = 0; i < N.c.size(); ++i) {
+      detail::unflatten(i, N.deg, idx);
+      bool corner = true;
+      for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == N.deg[d]);
+      if (!corner) continue;
+      std::vector<T> x(3);
+      for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? lo[d] : hi[d];
+      if (!f(i, x)) return;
+    }
+  }
 };
 
 /// The roots of those subdivisions: one box per Bezier piece of V.
@@ -230,26 +246,23 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
   T global_value(0);
   std::vector<T> undecided_at;
   auto examine = [&](const Box& b, int) {
-    // The corners: exact values of the (local) numerator.
-    std::vector<int> idx(3);
     int lo_sign = 2, hi_sign = -2, corner_lo = 2, corner_hi = -2;
-    for (std::size_t i = 0; i < b.N.c.size(); ++i) {
-      const int s = vrep_detail::sign_of(b.N.c[i]);
+    for (const auto& c : b.N.c) {
+      const int s = vrep_detail::sign_of(c);
       lo_sign = std::min(lo_sign, s);
       hi_sign = std::max(hi_sign, s);
-      detail::unflatten(i, b.N.deg, idx);
-      bool corner = true;
-      for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == b.N.deg[d]);
-      if (!corner) continue;
+    }
+    // The corners: exact values of the (local) numerator.
+    bool refuted = false;
+    b.for_each_corner([&](std::size_t i, const std::vector<T>& x) {
+      const int s = vrep_detail::sign_of(b.N.c[i]);
       corner_lo = std::min(corner_lo, s);
       corner_hi = std::max(corner_hi, s);
-      std::vector<T> x(3);
-      for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
       if (s == 0) {
         rep.verdict = Verdict::refuted("det J = 0 at a corner of a Bezier box");
         rep.point = x;
         rep.value = b.N.c[i];
-        return Examined::refuted;
+        return !(refuted = true);
       }
       if (global == 0) {
         global = s;
@@ -261,9 +274,11 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
         rep.value = b.N.c[i];
         rep.other = global_point;
         rep.other_value = global_value;
-        return Examined::refuted;
+        return !(refuted = true);
       }
-    }
+      return true;
+    });
+    if (refuted) return Examined::refuted;
     if (lo_sign == hi_sign && lo_sign == global) return Examined::settled;  // certified on this box
     // Planted (tests only): the corners alone "certify" the box.
     if (vrep_testing::is_planted(vrep_testing::Plant::regularity_corners_only) && corner_lo == corner_hi && corner_lo == global)
@@ -283,11 +298,10 @@ RegularityReport<T> certify_regularity(const BSpline<T>& V, int max_levels, cons
   rep.levels = run.deepest;
   if (run.stop == Subdivision::Stop::refuted) return rep;
   const bool undecided = run.left > 0, budget_hit = run.left_alive > 0;
-  const std::size_t box_budget = budget.max_alive;
   if (undecided) {
     rep.point = undecided_at;
     rep.verdict = Verdict::undecided(budget_hit ? "Bernstein coefficients of both signs when the boxes reached the memory budget (" +
-                                  std::to_string(box_budget) + " boxes; raise --max-control-points)"
+                                  std::to_string(budget.max_alive) + " boxes; raise --max-control-points)"
                             : "Bernstein coefficients of both signs after " + std::to_string(max_levels) + " subdivision levels");
     return rep;
   }

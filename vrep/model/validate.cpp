@@ -257,10 +257,10 @@ Checked check_cells(const std::vector<BSpline<R>>& cells, const std::vector<std:
   Checked out;
   rep.cells = cells.size();
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    CellShape shape;
-    rep.regularity.push_back(certify_cell_shape(cells[c], cell_text(where, c, names), options.levels, limits, shape));
-    if (shape == CellShape::one_sign) rep.degenerate.push_back(cell_text(where, c, names) + ": " + rep.regularity.back().verdict.reason());
-    if (shape == CellShape::undecided)
+    const CellShape shape = certify_cell_shape(cells[c], cell_text(where, c, names), options.levels, limits);
+    rep.regularity.push_back(shape.regularity);
+    if (shape.degenerate) rep.degenerate.push_back(cell_text(where, c, names) + ": " + rep.regularity.back().verdict.reason());
+    if (shape.valid.is_undecided())
       rep.undecided.push_back(cell_text(where, c, names) + ": the sign of det J: " + rep.regularity.back().verdict.reason());
     out.geometry.push_back(geometry_of_cell(cells[c]));
   }
@@ -345,12 +345,10 @@ std::string ValidityReport::verdict() const {
   return "valid";
 }
 
-RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const std::string& field, int levels, const Limits& limits,
-                                              CellShape& shape) {
-  shape = CellShape::regular;
+CellShape certify_cell_shape(const BSpline<Rational>& V, const std::string& field, int levels, const Limits& limits) {
   const std::string fix = "give cells with det J of one sign (vrep certify shows it): reorder or move the control points";
   auto rep = certify_regularity(V, levels, limits);
-  if (rep.verdict.is_proved()) return rep;
+  if (rep.verdict.is_proved()) return {rep, Verdict::proved(rep.verdict.reason()), false};
   if (rep.verdict.is_refuted() && !rep.other.empty())
     throw ValidationError(field, "folds: det J changes sign (" + to_fraction_string(rep.value) + " at " + point_text(rep.point) + ", " +
                                      to_fraction_string(rep.other_value) + " at " + point_text(rep.other) + ")",
@@ -395,34 +393,18 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
       if (vrep_testing::is_planted(vrep_testing::Plant::validate_flat_skipped)) return Examined::settled;  // (planted: tests only)
       throw ValidationError(field, "is flat: det J = 0 on the parameter box " + box_text(b), fix);
     }
-    {
-      std::vector<int> idx(3);
-      for (std::size_t i = 0; i < b.N.c.size(); ++i) {
-        if (vrep_detail::sign_of(b.N.c[i]) != 0) continue;
-        detail::unflatten(i, b.N.deg, idx);
-        bool corner = true;
-        for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == b.N.deg[d]);
-        if (!corner) continue;
-        std::vector<R> x(3);
-        for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
-        if (interior(x)) refuse_interior_zero(x);
-      }
-    }
+    b.for_each_corner([&](std::size_t i, const std::vector<R>& x) {
+      if (vrep_detail::sign_of(b.N.c[i]) == 0 && interior(x)) refuse_interior_zero(x);
+      return true;
+    });
     if (lo >= 0 && pos_at.empty()) pos_at = box_text(b);
     if (hi <= 0 && neg_at.empty()) neg_at = box_text(b);
     if (lo < 0 && hi > 0) {
       // Strict corner values of both signs: a fold, exactly.
-      std::vector<int> idx(3);
-      for (std::size_t i = 0; i < b.N.c.size(); ++i) {
-        detail::unflatten(i, b.N.deg, idx);
-        bool corner = true;
-        for (int d = 0; d < 3; ++d) corner = corner && (idx[d] == 0 || idx[d] == b.N.deg[d]);
-        const int s = vrep_detail::sign_of(b.N.c[i]);
-        if (!corner || s == 0) continue;
-        std::vector<R> x(3);
-        for (int d = 0; d < 3; ++d) x[d] = idx[d] == 0 ? b.lo[d] : b.hi[d];
-        (s > 0 ? pos_at : neg_at) = "the point " + point_text(x);
-      }
+      b.for_each_corner([&](std::size_t i, const std::vector<R>& x) {
+        if (const int s = vrep_detail::sign_of(b.N.c[i]); s != 0) (s > 0 ? pos_at : neg_at) = "the point " + point_text(x);
+        return true;
+      });
     }
     if (!pos_at.empty() && !neg_at.empty())
       throw ValidationError(field, "folds: det J changes sign (> 0 on " + pos_at + ", < 0 on " + neg_at + ")", fix);
@@ -435,16 +417,14 @@ RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const 
   const bool undecided =
       subdivide(vrep_detail::jacobian_boxes(V, limits), Walk{Order::breadth_first, 8, false}, budget, examine, split, leave).left > 0;
   if (undecided) {
-    shape = CellShape::undecided;
     rep.verdict = Verdict::undecided("det J has Bernstein coefficients of both signs on " + undecided_at + " after " + std::to_string(levels) +
                                      " subdivision levels (a fold is not excluded)");
-    return rep;
+    return {rep, rep.verdict, false};
   }
   // One weak sign everywhere, nowhere identically 0: valid, degenerate where det J = 0.
-  shape = CellShape::one_sign;
   rep.verdict.add_to_reason(rep.verdict.is_refuted() ? "; elsewhere det J has that sign (certified): degenerate, not folded"
                                                       : "; det J >= 0 or <= 0 everywhere (certified), > 0 not decided: not folded");
-  return rep;
+  return {rep, Verdict::proved(rep.verdict.reason()), true};
 }
 
 ValidityReport validate_cells(const std::vector<BSpline<Rational>>& cells, const std::vector<std::string>& names, const std::string& where,
@@ -527,10 +507,10 @@ ValidityReport validate_trimmed(const TrimmedModel<Rational>& M, const std::stri
     const std::size_t t = M.cells[c].trivariate;
     if (done[t]) continue;
     done[t] = 1;
-    CellShape shape;
-    rep.regularity.push_back(certify_cell_shape(M.trivariates[t], where + ".trivariates[" + std::to_string(t) + "]", options.levels, limits, shape));
-    if (shape == CellShape::one_sign) rep.degenerate.push_back(where + ".trivariates[" + std::to_string(t) + "]: " + rep.regularity.back().verdict.reason());
-    if (shape == CellShape::undecided)
+    const CellShape shape = certify_cell_shape(M.trivariates[t], where + ".trivariates[" + std::to_string(t) + "]", options.levels, limits);
+    rep.regularity.push_back(shape.regularity);
+    if (shape.degenerate) rep.degenerate.push_back(where + ".trivariates[" + std::to_string(t) + "]: " + rep.regularity.back().verdict.reason());
+    if (shape.valid.is_undecided())
       rep.undecided.push_back(where + ".trivariates[" + std::to_string(t) + "]: the sign of det J: " + rep.regularity.back().verdict.reason());
     g[t] = geometry_of_cell(M.trivariates[t]);
   }

@@ -72,12 +72,16 @@ ValidityReport validate_vmodel(const VModel<Rational>& M, const std::string& whe
 ValidityReport validate_trimmed(const TrimmedModel<Rational>& M, const std::string& where, const ValidityOptions& options = {},
                                 const Limits& limits = {});
 
-/// det J's sign on one trivariate, certified: `regular` (det J > 0 or < 0 everywhere), `one_sign`
-/// (det J >= 0 or <= 0 everywhere and not 0 on any open set: valid, degenerate where it is 0),
-/// `undecided`; a fold or a flat part is a ValidationError naming `field`. The report is
-/// certify_regularity's (vrep/model/regularity.hpp), with the reason extended.
-enum class CellShape { regular, one_sign, undecided };
-RegularityReport<Rational> certify_cell_shape(const BSpline<Rational>& V, const std::string& field, int levels, const Limits& limits,
-                                              CellShape& shape);
+/// det J's sign on one trivariate, certified. The claim "the cell is valid" (det J >= 0 or <= 0
+/// everywhere and not 0 on any open set) is proved - regular (det J > 0 or < 0 everywhere) or
+/// degenerate (0 somewhere, e.g. on a collapsed edge) - or undecided; a fold or a flat part is
+/// refuted by a ValidationError naming `field`. `regularity` is certify_regularity's report
+/// (vrep/model/regularity.hpp) with its reason extended.
+struct CellShape {
+  RegularityReport<Rational> regularity;
+  Verdict valid;
+  bool degenerate = false;
+};
+CellShape certify_cell_shape(const BSpline<Rational>& V, const std::string& field, int levels, const Limits& limits);
 
 }  // namespace splinex

@@ -12,6 +12,7 @@
 #include "bernstein/subdivide.hpp"
 #include "bernstein/tensor.hpp"
 #include "vrep/trimmed/trimmed.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
 
 namespace splinex::vrep_detail {
 
@@ -52,6 +53,15 @@ int widest(const std::array<T, N>& lo, const std::array<T, N>& hi) {
     if ((hi[static_cast<std::size_t>(dir)] - lo[static_cast<std::size_t>(dir)]) < (hi[d] - lo[d])) dir = static_cast<int>(d);
   return dir;
 }
+
+/// A box of an N-dimensional parameter domain with the attempt's polynomials on it, in Bernstein
+/// form over the box, and its subdivision level: what the region and surface attempts subdivide.
+template <class T, std::size_t N>
+struct PolynomialBox {
+  std::array<T, N> lo, hi;
+  std::vector<Bernstein<T>> G;
+  int level = 0;
+};
 
 /// The two parts c[0], c[1] of a subdivision box (members lo, hi, level, G: its leaves on it) at
 /// the fraction `frac` of direction `dir`: ranges, polynomials and level; other members are left

@@ -60,11 +60,7 @@ class RegionRun {
   RegionRun(const CurveProblem<T, 2>& p, const T& frac) : P(p), frac_(frac), nl_(p.pieces.empty() ? 0 : p.pieces.front().G.size()) {}
 
   bool run(RegionCount& out) {
-    struct Open {
-      std::array<T, 2> lo, hi;
-      std::vector<Bernstein<T>> G;
-      int level = 0;
-    };
+    using Open = PolynomialBox<T, 2>;
     std::vector<Open> roots;
     for (const auto& pc : P.pieces) roots.push_back({pc.lo, pc.hi, pc.G, 0});
     auto examine_box = [&](Open& B, int) {

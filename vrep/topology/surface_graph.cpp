@@ -268,11 +268,7 @@ class SurfaceRun {
   SurfaceRun(const CurveProblem<T, 3>& p, std::size_t leaf, const T& frac) : P(p), k_(leaf), frac_(frac), nl_(p.pieces.empty() ? 0 : p.pieces.front().G.size()) {}
 
   bool run(RegionCount& out) {
-    struct Open {
-      std::array<T, 3> lo, hi;
-      std::vector<Bernstein<T>> G;
-      int level = 0;
-    };
+    using Open = PolynomialBox<T, 3>;
     std::vector<Open> roots;
     for (const auto& pc : P.pieces)
       if (bern_sign(pc.G[k_]) == 0) roots.push_back({pc.lo, pc.hi, pc.G, 0});

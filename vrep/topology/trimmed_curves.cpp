@@ -12,6 +12,7 @@
 #include "vrep/topology/curve_graph.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 #include "vrep/trimmed/trimmed_impl.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
 
 namespace splinex {
 

@@ -34,6 +34,7 @@
 #include "vrep/topology/box_components.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 #include "vrep/trimmed/trimmed_impl.hpp"
+#include "vrep/topology/trimmed_euler.hpp"
 
 namespace splinex {
 

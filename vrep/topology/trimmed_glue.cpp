@@ -23,6 +23,8 @@
 #include "vrep/topology/curve_graph.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 #include "vrep/trimmed/trimmed_impl.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_glue.hpp"
 
 namespace splinex {
 

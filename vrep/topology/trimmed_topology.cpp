@@ -12,6 +12,8 @@
 #include "vrep/topology/curve_graph.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 #include "vrep/trimmed/trimmed_impl.hpp"
+#include "vrep/topology/trimmed_curves.hpp"
+#include "vrep/topology/trimmed_topology.hpp"
 
 namespace splinex {
 
@@ -316,7 +318,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
               continue;
             }
             const SolveResult<T> r = solve_system(std::vector<Bernstein<T>>{g}, {sg.lo}, {sg.hi}, so);
-            if (!r.undecided.empty()) e.status = TrimmedTopology<T>::Edge::undecided;
+            if (!r.undecided.empty()) e.status = Uncertain<typename TrimmedTopology<T>::Edge::Status>::undecided("a solver box left (tangency)");
             for (const auto& root : r.roots) events.push_back(root.exact ? Event{root.point[0], root.point[0]} : Event{root.lo[0], root.hi[0]});
           }
           segs.push_back(std::move(sg));
@@ -339,7 +341,7 @@ TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, 
         std::vector<std::pair<T, T>> ev;
         for (const auto& x : events) ev.push_back({x.lo, x.hi});
         const auto runs = edge_runs(ev, V.domain_lo(along), V.domain_hi(along), truth_at);
-        if (!runs.decided) e.status = TrimmedTopology<T>::Edge::undecided;
+        if (!runs.decided) e.status = Uncertain<typename TrimmedTopology<T>::Edge::Status>::undecided("the truth between the events is not decided");
         e.pieces = runs.pieces;
         e.points = runs.points;
         e.cuts = runs.cuts;

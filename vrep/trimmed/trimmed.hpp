@@ -28,14 +28,10 @@
 // b's trivariate, which has no implicit form for a curved cell). The result's region is the Boolean
 // of the input regions, so results feed further Booleans (Figure 15: one union, two subtractions).
 //
-// The boundary structure of a trimmed cell (trimmed_topology, below): exact V-points and V-curves on
-// the trivariate's edges, certified lower bounds on its half-V-surfaces and on the trimming
-// surfaces' boundary curves on its faces, exact V-points off the edges; the V-curves between two
-// trimming surfaces and the trimming surfaces' curves on the faces exactly (trimmed_curves,
-// below). What is not built: exact counts of the half-V-surfaces, and the gluing of trimmed
-// cells. The
-// Euler characteristic of a trimmed cell and of a model's point set is exact (trimmed_euler,
-// model_euler, below).
+// The topology of trimmed cells is in vrep/topology/, one header per implementation file: the
+// boundary structure (trimmed_topology.hpp), the V-curves between two trimming surfaces
+// (trimmed_curves.hpp), the gluing into one V-model (trimmed_glue.hpp) and the Euler
+// characteristic (trimmed_euler.hpp).
 //
 // The volume of a trimmed cell (and moments, field integrals) is a certified enclosure, refined
 // adaptively where the width is (integral_enclosures, below): in-boxes exact for polynomial cells,
@@ -48,6 +44,7 @@
 #include <vector>
 
 #include "base/limits.hpp"
+#include "base/verdict.hpp"
 #include "exact/rational.hpp"
 #include "spline/bspline.hpp"
 #include "vrep/boolean/boolean.hpp"
@@ -190,12 +187,23 @@ struct TrimOptions {
 /// The decision on one trimmed cell, with exact witness parameters where they were found.
 template <class T>
 struct CellClass {
-  enum Kind { whole, empty, cut, undecided } kind = whole;
+  enum Kind { whole, empty, cut };
+  Uncertain<Kind> kind = whole;  // undecided: mixed boxes left at the budget without both witnesses
   std::size_t boxes = 0, mixed = 0;   // boxes at the end, of them mixed
   std::vector<T> inside, outside;     // witness parameters (u, v, w) strictly inside / outside
 };
 template <class T>
-const char* to_string(typename CellClass<T>::Kind k);
+const char* to_string(const Uncertain<typename CellClass<T>::Kind>& k);
+/// The kind from what the classification found: with no mixed box left (`settled`) whole, empty or
+/// cut by where the boxes lie; otherwise cut when a point inside and one outside were found, else
+/// undecided.
+template <class T>
+Uncertain<typename CellClass<T>::Kind> cell_kind(bool settled, bool in, bool out) {
+  using K = typename CellClass<T>::Kind;
+  if (settled) return in && out ? K::cut : in ? K::whole : K::empty;
+  if (in && out) return K::cut;
+  return Uncertain<K>::undecided("mixed boxes left at the budget without both witnesses (a point inside and one outside)");
+}
 
 template <class T>
 CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const TrimOptions& options = {}, const T& eps = T(0),
@@ -295,249 +303,5 @@ class ScopedEnclosurePlant {
 /// Returns the failures (empty: both hold).
 template <class T>
 std::vector<std::string> check_region(const VModel<T>& M, const Region<T>& R, const TrimOptions& options = {}, const Limits& limits = {});
-
-}  // namespace splinex
-
-namespace splinex {
-
-/// The boundary structure of a trimmed cell (issue 18: the topology of trimmed cells, in part),
-/// certified where stated (exact arithmetic; in double the same steps, uncertified):
-///   - corners: the corners of V's domain that lie in the cell (every leaf strictly decided there,
-///     the formula "in"; exact values of G);
-///   - edges: each of the 12 edges of V's domain, cut exactly at the roots of every leaf along it
-///     (univariate Bernstein polynomials, roots certified by the solver of solve/solver.hpp); the
-///     runs of the edge inside the cell are its V-curves and their ends strictly inside the edge
-///     its V-points (exact counts: `pieces`, `points`). An edge collapsed to a point, an edge on
-///     which a leaf vanishes identically (it lies on a trimming surface) and an edge with a root the
-///     solver leaves undecided (tangency) are said so and not counted;
-///   - surfaces: the six faces of V's domain restricted to the cell (2D subdivision with the faces'
-///     Bernstein coefficients) and, per leaf, its zero set where it bounds the cell (3D
-///     subdivision). For each: proved absent (no box of its cover is left), and a lower bound on the
-///     number of its connected pieces: components of its cover that hold a certified point (a face:
-///     a box decided in; a trimming surface: a box where the leaf's corner values have both strict
-///     signs, every other leaf's coefficients have one strict sign, and the formula changes with
-///     the leaf), with V's own identifications joined (vrep/topology/box_components.hpp). The cover's
-///     component count is shown beside it, not certified. Collapsed faces carry no surface;
-///   - face curves: per face and leaf, the leaf's zero set where it bounds the face's part (the
-///     trimming surface's boundary curve on that face): proved absent, or a lower bound on its
-///     pieces as above (2D boxes of the face's subdivision), and its exact count (arcs and loops,
-///     the certified curve graph of trimmed_curves in the face's two parameters; undecided at a
-///     tangency, with the reason).
-///   - V-points off the edges (below), exact where every system is decided.
-/// The V-curves between two trimming surfaces are trimmed_curves' (below). What is not built:
-/// counts of half-V-surfaces above the certified lower bounds.
-template <class T>
-struct TrimmedTopology {
-  struct Edge {
-    int along = 0;
-    std::array<int, 3> sides{};  // sides[d] for d != along: 0 domain start, 1 end
-    enum Status { curve, collapsed, on_trimming_surface, undecided } status = curve;
-    std::size_t pieces = 0;  // runs of the edge inside the cell (V-curves)
-    std::size_t points = 0;  // their ends strictly inside the edge (V-points)
-    std::vector<std::pair<T, T>> cuts;  // enclosures of those points' parameters (lo == hi: exact)
-  };
-  struct Surface {
-    std::string what;          // "face w = 0" or "leaf 2 (cylinder: side)"
-    int dir = -1, side = -1;   // a face of V's domain
-    int leaf = -1;             // or a leaf of the trim (collect order)
-    bool collapsed = false;    // a face of zero area
-    bool absent = false;       // proved: it bounds the cell nowhere
-    std::size_t at_least = 0;  // certified lower bound on its connected pieces
-    std::size_t cover = 0;     // components of its cover (not certified)
-    std::size_t boxes = 0, cover_boxes = 0;
-    /// Exact where decided (vrep/topology/curve_graph.hpp: count_region for a face of the domain,
-    /// count_surface for a trimming surface): the connected pieces of the interior of the part,
-    /// in V's parameters (parts that touch at one point, or along a curve where a further sheet
-    /// bounds, are apart); `on_identified_edges` of them reach an edge or face V identifies with
-    /// another or collapses (there the count in space may be smaller). Undecided: the reason.
-    bool decided = false;
-    std::size_t pieces = 0, on_identified_edges = 0;
-    std::string undecided_reason;
-  };
-  std::size_t corners = 0, corners_on_trimming = 0;  // in the cell; on a trimming surface (not counted)
-  struct FaceCurve {
-    int dir = 0, side = 0, leaf = 0;  // face (dir, side) of V's domain, leaf of the trim
-    bool absent = false;
-    std::size_t at_least = 0, cover = 0;
-    /// Exact (the certified curve graph of trimmed_curves, in the face's two parameters): its
-    /// pieces where the face's part depends on the leaf, cut at the face V-points where another
-    /// leaf crosses; arcs end on the face's edges or at those V-points.
-    bool decided = false;
-    std::size_t arcs = 0, loops = 0, ends_on_edges = 0, ends_at_points = 0;
-    std::string undecided_reason;
-  };
-  std::vector<Edge> edges;
-  std::vector<Surface> surfaces;
-  std::vector<FaceCurve> face_curves;  // per face (collapsed faces have none), per leaf
-  /// V-points off the edges, exact: two leaves meeting on a face of the domain, three inside it,
-  /// at a certified simple root where the formula depends on each of their signs (a corner of
-  /// the cell's boundary). `points_undecided`: roots not certified, on a piece's boundary or with
-  /// a further leaf not strictly signed near them (then the counts are lower bounds).
-  struct VPoint {
-    int dir = -1, side = -1;         // the face (dir, side) of V's domain, or -1 inside
-    std::vector<std::size_t> leaves;  // the meeting leaves (collect order)
-    std::vector<T> lo, hi;            // the root's box in V's parameters (on the face: its two directions)
-  };
-  std::size_t face_points = 0, interior_points = 0, points_undecided = 0;
-  std::vector<VPoint> inner_points;
-  std::size_t boxes = 0;  // 3D subdivision boxes of the trimming surfaces
-};
-
-template <class T>
-TrimmedTopology<T> trimmed_topology(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes = 4096, const Limits& limits = {});
-
-/// The gluing of a trimmed V-model (issue 18: Definition 3.9 for trimmed cells), exact where
-/// decided. The halves are every cell's faces of its domain (not collapsed) and its distinct
-/// trimming surfaces (proportional leaves are one surface). Per half, by certified subdivision
-/// (count_region on the face, count_surface on the surface; vrep/topology/curve_graph.hpp), the pieces of
-/// its part where the other side lies in the model (`internal`: a V-surface shared with another
-/// cell, or the cell itself across a seam) and where it does not (`boundary`). The twins:
-///   - one trivariate, the two sides of one trimming surface (a cell and its complement in a
-///     Boolean): the pieces of the surface where one cell lies on each side, exact;
-///   - faces of two trivariates equal as surfaces (exact same_surface; seams of one trivariate
-///     too): the pieces of the face where both cells lie, exact;
-///   - contacts: a face half's internal part not on an exact twin (a cell of one operand against
-///     the trimming surface of a cell of the other, which is not a parameter face of both), matched
-///     at exact witness points: rational points of the face part, each located exactly on a
-///     trimming surface's part of a cell of another trivariate (its leaves' exact signs; inside its
-///     trivariate by the exact affine inverse or the certified solver). Decided when the two halves
-///     met only each other and their unmatched parts have equal piece counts: a sampled match,
-///     said so (`witness_points`), not a proof that the two parts are one set.
-/// Counts are in the trivariates' parameters, like trimmed_topology's. The V-model counts:
-/// `boundary_v_surfaces` (the boundary pieces) and `internal_v_surfaces` (the twins' pieces).
-struct TrimmedGlueOptions {
-  std::size_t max_boxes = 4096;  // per count and attempt (count_region / count_surface)
-  std::size_t witnesses = 16;    // per face half with an unmatched part
-};
-
-template <class T>
-struct TrimmedGluing {
-  struct Half {
-    std::size_t cell = 0;
-    std::string what;
-    int dir = -1, side = -1;  // a face of the cell's domain
-    int leaf = -1;            // or a trimming surface (collect order in the cell's trim)
-    bool decided = false;
-    std::size_t internal = 0, boundary = 0;  // pieces of the part with the other side in / out of the model
-    std::size_t unmatched = 0;               // pieces of the internal part on no exact twin
-    std::string undecided_reason;
-  };
-  struct Twin {
-    std::size_t a = 0, b = 0;  // halves
-    std::string how;
-    bool decided = false;
-    std::size_t pieces = 0;     // of the shared part (V-surfaces)
-    std::size_t witnesses = 0;  // contacts: the witness points located on both
-    std::string undecided_reason;
-  };
-  std::vector<Half> halves;
-  std::vector<Twin> twins;
-  std::size_t part_pieces = 0;          // internal + boundary pieces over the halves (before twins split them)
-  std::size_t half_v_surfaces = 0;      // of the glued V-model: boundary + 2 internal
-  std::size_t boundary_v_surfaces = 0;  // boundary pieces
-  std::size_t internal_v_surfaces = 0;  // pieces of the twins' shared parts
-  std::size_t contacts = 0, witness_points = 0;  // of them matched at witness points
-  std::size_t unmatched_halves = 0;     // halves with an unmatched part and no partner found
-  bool decided = false;                 // every count above decided
-};
-
-template <class T>
-TrimmedGluing<T> trimmed_glue(const TrimmedModel<T>& M, const TrimmedGlueOptions& options = {}, const Limits& limits = {});
-
-/// The V-curves between two trimming surfaces of a trimmed cell (issue 18), per pair of leaves
-/// (i, j): the parts of the curve {g_i = g_j = 0} in the open parameter domain along which the
-/// formula depends on both signs (the two surfaces meet in an edge of the cell's boundary), cut at
-/// the V-points where a third trimming surface crosses it. Counted exactly from a certified graph:
-/// the domain is subdivided (split fraction 1/2, retried at 7/16 and 13/32 when a crossing falls
-/// on a split line) until, in every box where both leaves may vanish and the edge may matter,
-///   - one component of grad g_i x grad g_j has one strict sign (Bernstein coefficients): the
-///     curve is smooth there and monotone along that direction, so it holds no closed loop and
-///     each of its pieces in the box runs from one face of the box to another;
-///   - the crossings of the curve with the box's six faces (2x2 systems, the certified solver of
-///     solve/solver.hpp: simple roots strictly inside the face) are exactly two: one arc, or none:
-///     no curve;
-///   - every other leaf has one strict sign, or exactly one leaf k does not and
-///     det(grad g_i, grad g_j, grad g_k) has one strict sign: g_k is monotone along the arc, so
-///     the arc meets g_k = 0 at most once, exactly when g_k has opposite strict signs at its ends.
-/// Crossings on a face two boxes share are matched (every root box overlaps exactly one on the
-/// other side); an arc's activity is the formula's dependence on both signs with the other leaves
-/// at their signs there. V-points (the formula depends on all three signs) cut the curves.
-/// Components with ends (on the domain's faces or at V-points) are arcs, the others loops.
-/// The counts are in V's parameter domain: a V-curve that meets a face V identifies with another
-/// (a seam) or collapses is counted once per side (`ends_on_identified_faces` says how often).
-/// Undecided (the reason said) for a pair when a curve is tangent to a face or a split plane, two
-/// crossings cannot be told apart, a trimming surface contains a face or a split plane, more than
-/// three surfaces meet, or the box budget is spent. Exact in exact arithmetic; in double the same
-/// steps on rounded values, uncertified.
-struct CurveOptions {
-  std::size_t max_boxes = 6000;       // subdivision boxes per pair and attempt
-  int max_level = 36;                 // splits of one box (all directions together)
-  std::size_t max_total_boxes = 200000;  // over all pairs and attempts of one cell: the pairs left are undecided
-};
-template <class T>
-struct TrimmedCurves {
-  struct Pair {
-    std::size_t i = 0, j = 0;  // the leaves (collect order)
-    bool decided = false;
-    std::size_t arcs = 0, loops = 0;                    // V-curves with two ends; closed ones
-    std::size_t ends_on_faces = 0, ends_at_points = 0;  // ends of the arcs: on the domain's faces, at V-points
-    std::size_t ends_on_identified_faces = 0;           // of those on faces: on a seam or a collapsed face
-    std::size_t boxes = 0, crossings = 0;               // boxes of the deciding attempt; face crossings found
-    T split = T(0);                                     // the split fraction that decided it
-    std::string undecided_reason;
-  };
-  std::vector<Pair> pairs;  // every pair of leaves whose zero sets may meet in the domain
-  bool decided = true;      // every pair decided
-  std::size_t arcs = 0, loops = 0;  // totals over the decided pairs
-};
-template <class T>
-TrimmedCurves<T> trimmed_curves(const BSpline<T>& V, const Region<T>& trim, const CurveOptions& options = {}, const Limits& limits = {});
-
-/// The Euler characteristic of a trimmed cell, exactly (vrep/topology/trimmed_euler.cpp has the method):
-/// chi_c is additive over the open cells of a box subdivision of V's parameter domain; on an open
-/// cell where every undecided leaf is monotone along one direction and the formula closed that
-/// way, chi_c is minus that of one open face (the fibres are half-open or whole intervals), where
-/// the formula is decided it is (-1)^dim or 0, otherwise the cell is halved. The set is the
-/// closed one (leaves read g >= 0, complements g <= 0): the regularized cell wherever the trimming
-/// surfaces are regular.
-///   - chi: of the cell in V's parameter domain;
-///   - image_chi: of T(cell), V's own identifications counted once (faces equal by same_surface,
-///     edges by same_curve, corners at one point; collapsed faces and edges not at all); V is
-///     assumed injective otherwise (valid trivariate);
-///   - interior_chi_c: chi_c of the open set (strict leaves on the open domain); for a compact
-///     3-manifold with boundary it is -chi (duality: a necessary check, not a proof of regularity).
-/// Undecided (a singular point of a trimming surface, a tangency with the domain or with a split
-/// plane; the split fraction 1/2 is retried at 7/16 and 13/32) when no cell's direction is
-/// monotone within max_level halvings or the cell budget is spent. Exact in exact arithmetic; in
-/// double the same steps on rounded signs, uncertified.
-struct EulerOptions {
-  std::size_t max_cells = 400000;  // open cells visited per attempt
-  int max_level = 24;              // halvings per direction
-};
-template <class T>
-struct TrimmedEuler {
-  bool decided = false;
-  long chi = 0, image_chi = 0, interior_chi_c = 0;
-  bool duality = false;  // interior_chi_c == -chi
-  std::size_t identified_faces = 0, identified_edges = 0, identified_corners = 0;  // not counted in the image
-  std::size_t resolved_contacts = 0;    // boundary strata on a trimming surface read from inside
-  std::size_t unresolved_contacts = 0;  // ... where the sign inside is not one strict sign (left as 0)
-  std::size_t cells = 0;  // open cells visited (all attempts)
-  T split = T(0);         // the split fraction that decided it
-  std::string undecided_reason;
-};
-template <class T>
-TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options = {}, const Limits& limits = {});
-
-/// The Euler characteristic of a region of space inside the box [lo, hi] (the region as the trim
-/// of the box's identity trivariate), and of a trimmed model's point set (its region in its
-/// cells' control-point box grown by a sixteenth of its largest side, at least 1/16, all round,
-/// so no face of the box meets it): the model's chi after a Boolean, with the regularized
-/// Booleans' inclusion-exclusion chi(A u B) = chi(A) + chi(B) - chi(A n B) to check it by.
-template <class T>
-TrimmedEuler<T> region_euler(const Region<T>& R, const std::vector<T>& lo, const std::vector<T>& hi, const EulerOptions& options = {},
-                             const Limits& limits = {});
-template <class T>
-TrimmedEuler<T> model_euler(const TrimmedModel<T>& M, const EulerOptions& options = {}, const Limits& limits = {});
 
 }  // namespace splinex

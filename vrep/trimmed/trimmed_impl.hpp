@@ -9,7 +9,7 @@
 #include <optional>
 #include <queue>
 
-#include "base/errors.hpp"
+#include "base/verdict.hpp"
 #include "spline/bezier.hpp"
 #include "spline/insert.hpp"
 #include "spline/knots.hpp"
@@ -842,9 +842,7 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
   cls.boxes = todo.size() + done.size();
   cls.mixed = todo.size();
   const bool some_in = has_in || !cls.inside.empty(), some_out = has_out || !cls.outside.empty();
-  using K = typename CellClass<T>::Kind;
-  if (todo.empty()) cls.kind = has_in && has_out ? K::cut : has_in ? K::whole : K::empty;
-  else cls.kind = some_in && some_out ? K::cut : K::undecided;
+  cls.kind = todo.empty() ? cell_kind<T>(true, has_in, has_out) : cell_kind<T>(false, some_in, some_out);
   if (want_volume) {
     auto& v = out.volume;
     for (const auto& b : done) {
@@ -895,9 +893,9 @@ Region<T> conjoin(const Region<T>& trim, Region<T> extra) {
 }  // namespace vrep_detail
 
 template <class T>
-const char* to_string(typename CellClass<T>::Kind k) {
+const char* to_string(const Uncertain<typename CellClass<T>::Kind>& k) {
   using K = typename CellClass<T>::Kind;
-  return k == K::whole ? "whole" : k == K::empty ? "empty" : k == K::cut ? "cut" : "undecided";
+  return k == K::whole ? "whole" : k == K::empty ? "empty" : k == K::cut ? "cut" : status_name(Status::undecided);
 }
 
 template <class T>
@@ -1428,12 +1426,12 @@ TrimmedModel<T> trimmed_boolean(const TrimmedModel<T>& A, const TrimmedModel<T>&
                                    std::to_string(k.boxes) + " subdivision boxes stay undecided and no exact witness of both sides was found",
                           "the paper excludes tangential contact; move the models apart or through each other, or raise --boxes");
       };
-      if (alone.kind == K::undecided) refuse(alone);
+      if (!alone.kind.is_certain()) refuse(alone);
       if (alone.kind == K::empty) continue;
       Region<T> trim = alone.kind == K::whole ? cell.trim : conjoin(cell.trim, with);
       auto cls = alone;
       if (!trivially_true(trim)) cls = classify_cell(V, trim, options, eps, limits);
-      if (cls.kind == K::undecided) refuse(cls);
+      if (!cls.kind.is_certain()) refuse(cls);
       if (cls.kind == K::empty) continue;
       typename TrimmedModel<T>::Cell x;
       x.trivariate = from_a ? cell.trivariate : tb[cell.trivariate];
