@@ -1,7 +1,7 @@
 // Exact membership of a point in a solid bounded by bilinear facets (papers/004, the cutting
 // surface's collision certificate): exact ray parity, planar convex quadrilaterals as two triangles,
 // non-planar bilinear ones as themselves with their crossings as exact quadratic irrationals.
-// Internal to cut/ (surface_facet.cpp); the public entry is point_in_solid (cut/surface_facet.hpp).
+// Internal to cut/ (surface_certificate.cpp); the public entry is point_in_solid (cut/surface_facet.hpp).
 #pragma once
 #include <optional>
 #include <string>
