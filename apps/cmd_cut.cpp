@@ -249,7 +249,7 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const Sol
   // what is drawn and written: the exact run's patch, else the double run's
   const auto drawn = exact ? std::make_pair(final_patch(*exact, frame), exact->surface.domain.vertices)
                            : std::make_pair(final_patch(*dbl, frame), dbl->surface.domain.vertices);
-  const std::string verdict = exact ? final_validity(*exact).verdict : final_validity(*dbl).verdict;
+  const bool valid = exact ? final_validity(*exact).verdict.is_proved() : final_validity(*dbl).verdict.is_proved();
   if (!fo.vtk.empty()) {
     std::filesystem::create_directories(fo.vtk);
     write_file_atomically((std::filesystem::path(fo.vtk) / "solid.vtk").string(), solid3_vtk(S));
@@ -260,7 +260,7 @@ int run_facet3(const Facet3CliOptions& fo, const GuideCliOptions& gco, const Sol
     std::filesystem::create_directories(fo.out);
     write_file_atomically((std::filesystem::path(fo.out) / "surface.json").string(), document_text(cutting_surface_document(drawn.first, drawn.second), 1));
     settings.out = true;
-    if (verdict == "valid") settings.split = write_surface_split(S, C, fo.out);
+    if (valid) settings.split = write_surface_split(S, C, fo.out);
   }
   print_document(surface_facet_document(exact ? &*exact : nullptr, dbl ? &*dbl : nullptr, settings));
   return 0;
@@ -304,9 +304,10 @@ int run_certify3(const Facet3CliOptions& fo, const SolidDocument& solid, const s
 int run_split3(const SolidDocument& solid, const std::string& cut_file, const std::string& surface_file, const std::string& out_dir, const Context& ctx) {
   const auto g = read_given_surface(solid, cut_file, surface_file, ctx);
   const auto V = certify_given_surface(g, unit_frame(g.solid), SurfaceFacetOptions{});
-  if (V.verdict != "valid")
-    throw DomainError("surface", "is not certified valid (" + V.verdict + ": tangents " + V.tangents + ", regular " + V.regular + ", injective " + V.injective +
-                                     ", collision " + V.collision + ")",
+  if (!V.verdict.is_proved())
+    throw DomainError("surface", std::string("is not certified valid (") + validity_word(V.verdict) + ": tangents " + certificate_word(V.tangents) +
+                                     ", regular " + status_name(V.regular.status()) + ", injective " + status_name(V.injective.status()) +
+                                     ", collision " + collision_word(V.collision) + ")",
                       "run cut certify to see why; split along a valid cutting surface");
   std::filesystem::create_directories(out_dir);
   write_file_atomically((std::filesystem::path(out_dir) / "surface.json").string(), document_text(cutting_surface_document(g.surface.patch, g.surface.domain), 1));

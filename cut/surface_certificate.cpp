@@ -190,15 +190,16 @@ void certify_side(SurfaceValidity& V, std::size_t j, const P2& W0, const P2& W1,
       if (mid > 0) return Examined::split;
       const Rational tau = (a.lo + a.hi) / 2, s = s0 + (s1 - s0) * tau;
       const P2 w{W0[0] + s * e[0], W0[1] + s * e[1]};
-      V.tangents = "violated";
       V.witness = SurfaceValidity::Witness{"tangent", w, eval3(patch, w), mid,
                                            "t . (dp/dm) <= 0 on loop side " + std::to_string(j) + ": the prescribed tangent does not point into the patch"};
+      V.tangents = Verdict::refuted(V.witness->detail);
       return Examined::refuted;
     };
     Budget depth_only;
     depth_only.max_depth = o.max_depth;
     const Subdivision run = subdivide(std::vector<Arc>{Arc{g, Rational(0), Rational(1)}}, Walk{}, depth_only, positive, HalveArc{}, [](Arc&&, Left) {});
-    if (run.stop != Subdivision::Stop::refuted && run.left > 0) V.tangents = "undecided";
+    if (run.stop != Subdivision::Stop::refuted && run.left > 0)
+      V.tangents = Verdict::undecided("t . (dp/dm) > 0 not decided on loop side " + std::to_string(j) + " within --max-depth halvings");
   }
 }
 
@@ -206,7 +207,7 @@ void certify_side(SurfaceValidity& V, std::size_t j, const P2& W0, const P2& W1,
 void certify_boundary_and_tangents(SurfaceValidity& V, const std::vector<LoopSide3>& loop, const std::vector<P2>& W, const BSpline<Rational>& patch,
                                    const std::vector<BezierPiece<Rational>>& pieces, const std::vector<Rational>& knots_all, const SurfaceFacetOptions& o) {
   const std::size_t ns = loop.size();
-  V.tangents = "certified";
+  V.tangents = Verdict::proved("t . (dp/dm) > 0 along every loop side (Bernstein signs)");
   for (std::size_t j = 0; j < ns && !V.witness; ++j) certify_side(V, j, W[j], W[(j + 1) % ns], loop[j], patch, pieces, knots_all, o);
 }
 
@@ -303,25 +304,25 @@ bool certify_regularity(SurfaceValidity& V, const std::vector<LoopSide3>& loop, 
                                          "], [" + M[2].str() + ", " + M[3].str() + "]] the loop's projection fitted to Omega"
                                    : std::string("xyz").substr(a0, 1) + std::string("xyz").substr(a1, 1);
   if (certify_cells(true)) {
-    V.regular = V.injective = "proved";
     V.regularity_method = "P = (" + axes + ") of p has DP + DP^T positive definite on the bounding box of Omega (Bernstein signs): P is a monotone map "
                           "on a convex set, so injective, and p's normal has a non-zero " + std::string("xyz").substr(3 - a0 - a1, 1) + " component";
+    V.regular = V.injective = Verdict::proved(V.regularity_method);
   } else if (phase(o, t0, "certificate: regularity and injectivity on a grid of windows"),
              G = grid_injectivity(pieces, poly, std::min(o.max_depth / 2, 4), std::min<std::size_t>(o.max_pieces, 65536)), G.proved) {
-    V.regular = V.injective = "proved";
     V.regularity_method = "no single projection is monotone (" + axes + "); on a grid of " + std::to_string(G.cells) + " cells meeting Omega (level " +
                           std::to_string(G.level) + "), every window of 3 x 3 cells is mapped injectively with a regular Jacobian (A p monotone, A the "
                           "left inverse of Dp at the window's centre, Bernstein signs), and cells 3 or more apart have disjoint boxes";
+    V.regular = V.injective = Verdict::proved(V.regularity_method);
   } else if (certify_cells(false)) {
-    V.regular = "proved";
-    V.injective = "undecided";
     V.regularity_method = "det DP > 0 on Omega for P = (" + axes + ") of p (Bernstein signs); the monotone criterion for injectivity does not hold, "
                           "nor the grid of windows (" + G.why + ")";
+    V.regular = Verdict::proved(V.regularity_method);
+    V.injective = Verdict::undecided(V.regularity_method);
     undecided = true;
   } else {
-    V.regular = V.injective = "undecided";
     V.regularity_method = "neither DP + DP^T positive definite nor det DP > 0 could be certified for P = (" + axes + ") of p, nor the grid of windows (" +
                           G.why + ")";
+    V.regular = V.injective = Verdict::undecided(V.regularity_method);
     undecided = true;
   }
   return undecided;
@@ -408,7 +409,10 @@ bool certify_collision(SurfaceValidity& V, const Solid3<Rational>& solid, const 
       q.emplace_back(std::move(r), depth + 1);
     }
   }
-  V.collision = collided ? "violated" : col_undecided ? "undecided" : V.witness ? "not examined (another condition failed)" : "none outside the strip (certified)";
+  V.collision = collided       ? Verdict::refuted(V.witness->detail)
+                : col_undecided ? Verdict::undecided(std::to_string(V.collision_undecided) + " pieces left undecided at --max-depth")
+                : V.witness     ? Verdict::undecided("not examined (another condition failed)")
+                                : Verdict::proved("no piece of the patch outside the strip meets the solid's outside (exact ray parity)");
   return col_undecided;
 }
 
@@ -431,16 +435,17 @@ SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std
   certify_vertices(V, loop, W, patch);
   // boundary deviation and tangents, edge by edge, piece by piece
   certify_boundary_and_tangents(V, loop, W, patch, pieces, knots_all, o);
-  if (V.tangents == "undecided") undecided = true;
+  if (V.tangents.is_undecided()) undecided = true;
 
   phase(o, t0, "certificate: regularity and injectivity");
   if (certify_regularity(V, loop, domain, pieces, poly, o, t0)) undecided = true;
 
   phase(o, t0, "certificate: collision");
   if (certify_collision(V, solid, loop, patch, pieces, poly, o)) undecided = true;
-  if (V.witness) V.verdict = "invalid";
-  else if (undecided || !V.vertices_exact) V.verdict = "undecided";
-  else V.verdict = "valid";
+  if (V.witness) V.verdict = Verdict::refuted("a condition fails at the witness, an exact point (" + V.witness->condition + ")");
+  else if (undecided || !V.vertices_exact)
+    V.verdict = Verdict::undecided(V.vertices_exact ? "a condition is undecided (see the conditions)" : "the patch interpolates the loop's vertices only approximately");
+  else V.verdict = Verdict::proved("Section 2's conditions hold");
   V.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return V;
 }

@@ -62,6 +62,7 @@
 #include <string>
 #include <vector>
 
+#include "base/verdict.hpp"
 #include "cut/qp.hpp"
 #include "cut/solid3.hpp"
 #include "spline/bspline.hpp"
@@ -158,15 +159,18 @@ void validate_guided_options(const GuidedOptions& options);
 /// for f*'s evaluation.
 GuidedResult refine_with_guide(const CuttingSurface<Rational>& initial, const BSpline<double>& f, const GuidedOptions& options = {});
 
+/// Section 2's conditions of a cutting surface, each a Verdict; their words in documents and
+/// tables are certificate_word (tangents), status_name (regular, injective: proved or undecided),
+/// collision_word and validity_word (the whole surface; cut/solid.hpp).
 struct SurfaceValidity {
-  std::string verdict;  // "valid", "invalid", "undecided"
+  Verdict verdict;  // valid (proved), invalid (refuted: the witness) or undecided
   bool vertices_exact = false;
   Rational vertex_error{0};        // max |p(W_j) - L_j|_inf
   Rational boundary_deviation{0};  // upper bound of max |p(e_j(s)) - L_j(s)|_inf
-  std::string tangents;            // "certified", "violated", "undecided"
-  std::string regular, injective;  // "proved", "undecided"
+  Verdict tangents;                // refuted: the tangent witness
+  Verdict regular, injective;      // proved or undecided (the method says why)
   std::string regularity_method;
-  std::string collision;  // "none outside the strip (certified)", "violated", "undecided"
+  Verdict collision;  // no collision outside the strip; undecided: pieces left, or not examined (another condition failed)
   std::size_t collision_pieces = 0, collision_excluded = 0, collision_undecided = 0;
   std::string membership;  // how the witness test decides inside/outside, or why it cannot
   struct Witness {
@@ -179,6 +183,14 @@ struct SurfaceValidity {
   std::optional<Witness> witness;
   double seconds = 0;
 };
+
+/// The collision condition's word: "none outside the strip (certified)", "violated", "undecided", or
+/// "not examined (another condition failed)".
+inline std::string collision_word(const Verdict& v) {
+  if (v.is_proved()) return "none outside the strip (certified)";
+  if (v.is_refuted()) return "violated";
+  return v.reason().rfind("not examined", 0) == 0 ? v.reason() : status_name(v.status());
+}
 
 /// The certificates above, exactly. solid and loop normalized.
 SurfaceValidity certify_cutting_surface(const Solid3<Rational>& solid, const std::vector<LoopSide3>& loop, const DomainPolygon& domain,

@@ -230,7 +230,7 @@ std::vector<GuidedStep> refine_with_guide_sweep(const Solid3<Rational>& solid, c
     st.weight = w;
     st.result = refine_with_guide(initial, f, go);
     st.validity = certify_cutting_surface(solid, loop, initial.domain, st.result.patch, o);
-    const bool valid = st.validity.verdict == "valid";
+    const bool valid = st.validity.verdict.is_proved();
     steps.push_back(std::move(st));
     if (valid) break;
   }

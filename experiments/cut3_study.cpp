@@ -302,11 +302,11 @@ void cut3_section(ReportContext& ctx) {
                               slice_svg(*vase_guide, "papers/004, Figure 1's kind of vase (non-planar faces and loop), slice through the middle",
                                         {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
                                         "grey dashed: the initial patch (invalid); green: the guided patch, weight by the sweep (" +
-                                            std::string(steps.back().validity.verdict) + ")"));
+                                            std::string(validity_word(steps.back().validity.verdict)) + ")"));
       sweep_text += "\n- " + base + ": ";
       for (std::size_t k = 0; k < steps.size(); ++k) {
         const auto& st = steps[k];
-        sweep_text += (k ? ", " : "") + fmt(st.weight) + ": " + st.validity.verdict + " (max |f*| " + fmt(st.result.max_abs_f_after) + ")";
+        sweep_text += (k ? ", " : "") + fmt(st.weight) + ": " + validity_word(st.validity.verdict) + " (max |f*| " + fmt(st.result.max_abs_f_after) + ")";
         R.seconds += st.result.seconds + st.validity.seconds;
       }
     }
@@ -343,12 +343,12 @@ void cut3_section(ReportContext& ctx) {
     for (std::size_t i = 0; i < P.points.size(); ++i) P.points[i] = frame.lo[i % 3] + frame.scale * P.points[i];
     write_file_atomically(ctx.options.out_dir + "/" + file, surface3_vtk(P, R.domain.vertices, 40));
     if (name == "twisted-vase") write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_solid.vtk", solid3_vtk(e.solid));
-    md << "| " << name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << V.verdict << "** | "
-       << fmt(to_double(V.boundary_deviation)) << " | " << V.tangents << " | " << V.regular << ", " << V.injective << " | " << V.collision
-       << " | " << witness << " | " << fmt(D.seconds + DV.seconds) << " | " << bits << " | " << DV.verdict << " |\n";
-    scsv << "\"" << name << "\"," << R.domain.method << "," << R.seconds + V.seconds << "," << V.verdict << "," << to_double(V.boundary_deviation) << ","
-         << V.tangents << "," << V.regular << "," << V.injective << ",\"" << V.collision << "\"," << D.seconds + DV.seconds << "," << bits << ","
-         << DV.verdict << "\n";
+    md << "| " << name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << validity_word(V.verdict) << "** | "
+       << fmt(to_double(V.boundary_deviation)) << " | " << certificate_word(V.tangents) << " | " << status_name(V.regular.status()) << ", "
+       << status_name(V.injective.status()) << " | " << collision_word(V.collision) << " | " << witness << " | " << fmt(D.seconds + DV.seconds) << " | " << bits << " | " << validity_word(DV.verdict) << " |\n";
+    scsv << "\"" << name << "\"," << R.domain.method << "," << R.seconds + V.seconds << "," << validity_word(V.verdict) << "," << to_double(V.boundary_deviation)
+         << "," << certificate_word(V.tangents) << "," << status_name(V.regular.status()) << "," << status_name(V.injective.status()) << ",\""
+         << collision_word(V.collision) << "\"," << D.seconds + DV.seconds << "," << bits << "," << validity_word(DV.verdict) << "\n";
   }
   write_file_atomically(ctx.options.out_dir + "/cut3_surfaces.csv", scsv.str());
   if (!sweep_text.empty()) md << "\nThe weight sweeps (Eq. 6's weight: the refined patch's verdict):\n" << sweep_text << "\n";

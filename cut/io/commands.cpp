@@ -113,7 +113,7 @@ Json surface_run_document(const SurfaceRun<T>& r, const SurfaceRunSettings& s) {
     if (s.weight_sweep) {
       Json sweep = Json::array();
       for (const auto& st : *r.refined)
-        sweep.push_back(Json{{"weight", st.weight}, {"max_abs_f_after", st.result.max_abs_f_after}, {"verdict", st.validity.verdict}});
+        sweep.push_back(Json{{"weight", st.weight}, {"max_abs_f_after", st.result.max_abs_f_after}, {"verdict", validity_word(st.validity.verdict)}});
       j["guided"]["weight_sweep"] = sweep;
       j["guided"]["weight_meaning"] = "--weight-guide auto: Eq. 6's weight 10, 10^2, ..., 10^6 in turn, each from the initial patch, until the refined patch is "
                                       "certified valid; the last one run is the result";
@@ -127,10 +127,10 @@ Json surface_run_document(const SurfaceRun<T>& r, const SurfaceRunSettings& s) {
 
 Json surface_facet_document(const SurfaceRun<Rational>* exact, const SurfaceRun<double>* dbl, const SurfaceRunSettings& s) {
   Json out;
-  std::string verdict;
+  bool valid = false;
   if (exact) {
     out = surface_run_document(*exact, s);
-    verdict = final_validity(*exact).verdict;
+    valid = final_validity(*exact).verdict.is_proved();
     if (dbl) {
       Json d = surface_run_document(*dbl, s);
       d["judged_against_exact"] = judged_against_exact(exact->surface.coefficients, dbl->surface.coefficients);
@@ -139,7 +139,7 @@ Json surface_facet_document(const SurfaceRun<Rational>* exact, const SurfaceRun<
     }
   } else {
     out = surface_run_document(*dbl, s);
-    verdict = final_validity(*dbl).verdict;
+    valid = final_validity(*dbl).verdict.is_proved();
   }
   if (s.guided && !s.guide_found)
     out["guided"] = Json{{"guide", s.guide_status},
@@ -147,7 +147,7 @@ Json surface_facet_document(const SurfaceRun<Rational>* exact, const SurfaceRun<
                                      "the surface and validity above are the initial patch's"}};
   if (s.vtk) out["vtk"] = "solid.vtk and surface.vtk written";
   if (s.out) {
-    if (verdict == "valid" && s.split)
+    if (valid && s.split)
       out["split"] = Json{{"part1_facets", s.split->part1.size()}, {"part2_facets", s.split->part2.size()}, {"file", "split.json"}};
     else
       out["split"] = "not written: the surface is not certified valid";
@@ -162,9 +162,9 @@ Json surface_split_parts_document(const SurfaceSplit& sp) {
               {"part2", Json{{"facets", sp.part2}, {"cutting_surface", "surface.json, reversed"}, {"meaning", "the facets of b-bar and the cutting surface"}}}};
 }
 
-Json surface_split_document(const std::string& split_path, const SurfaceSplit& sp, const std::string& verdict) {
+Json surface_split_document(const std::string& split_path, const SurfaceSplit& sp, const Verdict& verdict) {
   return Json{{"split", split_path}, {"part1_facets", sp.part1.size()}, {"part2_facets", sp.part2.size()},
-              {"verdict", verdict},
+              {"verdict", validity_word(verdict)},
               {"meaning", "the surface certified valid (cut certify), the parts as facet lists with the trimmed patch (not solids: the patch is trimmed)"}};
 }
 

@@ -119,6 +119,6 @@ Json surface_validity_document(const SurfaceValidity& v, const Frame3& f);
 /// split.json: the two parts of a valid surface's split as facet lists.
 Json surface_split_parts_document(const SurfaceSplit& sp);
 /// `cut split` on a solid3d: where split.json is, the parts' sizes and the verdict.
-Json surface_split_document(const std::string& split_path, const SurfaceSplit& sp, const std::string& verdict);
+Json surface_split_document(const std::string& split_path, const SurfaceSplit& sp, const Verdict& verdict);
 
 }  // namespace splinex::cut

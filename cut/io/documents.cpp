@@ -169,17 +169,17 @@ Json point3_json(const std::array<Rational, 3>& x) {
 }
 
 Json surface_validity_json(const SurfaceValidity& v, const Frame3& f) {
-  Json j{{"verdict", v.verdict},
+  Json j{{"verdict", validity_word(v.verdict)},
          {"vertices_interpolated_exactly", v.vertices_exact},
          {"vertex_error_normalized", q_json(v.vertex_error)},
          {"boundary_deviation_bound_normalized", q_json(v.boundary_deviation)},
          {"boundary_meaning", "p interpolates the loop at Omega's vertices; between them |p(e(s)) - L(s)|_inf <= this bound (Bernstein coefficients, exact)"},
-         {"tangents", v.tangents},
+         {"tangents", certificate_word(v.tangents)},
          {"tangents_meaning", "t . (dp/dm) > 0 along every edge of Omega, m its inward normal: the prescribed tangents point into the patch"},
-         {"regular", v.regular},
-         {"injective", v.injective},
+         {"regular", status_name(v.regular.status())},
+         {"injective", status_name(v.injective.status())},
          {"regularity_method", v.regularity_method},
-         {"collision", v.collision},
+         {"collision", collision_word(v.collision)},
          {"collision_pieces", Json{{"certified", v.collision_pieces}, {"in_strip", v.collision_excluded}, {"undecided", v.collision_undecided}}},
          {"membership_test", v.membership},
          {"seconds", v.seconds}};
@@ -193,9 +193,9 @@ Json surface_validity_json(const SurfaceValidity& v, const Frame3& f) {
                         {"detail", w.detail}};
     if (w.condition == "tangent") j["witness"]["value"] = q_json(w.value);
   }
-  j["meaning"] = v.verdict == "valid" ? "Section 2's conditions hold: interpolation at the vertices exact, tangents, regularity, injectivity and no collision "
+  j["meaning"] = v.verdict.is_proved() ? "Section 2's conditions hold: interpolation at the vertices exact, tangents, regularity, injectivity and no collision "
                                         "outside the strip certified exactly"
-                 : v.verdict == "invalid" ? "a condition fails at the witness, an exact point"
+                 : v.verdict.is_refuted() ? "a condition fails at the witness, an exact point"
                                           : "no condition fails at a point found, but some could not be certified (see above)";
   return j;
 }

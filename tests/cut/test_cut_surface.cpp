@@ -194,14 +194,14 @@ TEST_CASE("cut surface: injectivity on a grid of windows where no single project
   };
   // the parabola (u, u^2): regular and injective, proved on the grid
   const auto good = certify_cutting_surface(t.solid, t.loop, D, cylinder({q(0), q(1, 2), q(1)}, {q(0), q(0), q(1)}));
-  CHECK(good.regular == "proved");
-  CHECK(good.injective == "proved");
+  CHECK(good.regular.is_proved());
+  CHECK(good.injective.is_proved());
   CHECK(good.regularity_method.find("grid") != std::string::npos);
   // a quadratic that runs out and back, x(u) = 4 u (1 - u) (Bezier 0, 2, 0), y = 0: p(u, v) = p(1 - u, v),
   // not injective and singular at u = 1/2: neither may be proved
   const auto fold = certify_cutting_surface(t.solid, t.loop, D, cylinder({q(0), q(2), q(0)}, {q(0), q(0), q(0)}));
-  CHECK(fold.regular == "undecided");
-  CHECK(fold.injective == "undecided");
+  CHECK(fold.regular.is_undecided());
+  CHECK(fold.injective.is_undecided());
   // a regular cubic that crosses itself: Bezier (0, 0), (3, 3), (-2, 3), (1, 0), i.e.
   // x = 9t - 24t^2 + 16t^3, y = 9t(1 - t): x(t) - x(1 - t) = (t - 1/2)(32t^2 - 32t + 2) vanishes at
   // t = 1/2 -+ sqrt(3)/4 (0.067, 0.933), a double point; x' and y' never vanish together. p is
@@ -213,7 +213,7 @@ TEST_CASE("cut surface: injectivity on a grid of windows where no single project
     for (int i = 0; i < 4; ++i) pts.push_back(q(c[i][0])), pts.push_back(q(c[i][1])), pts.push_back(q(j));
   const auto loopy = make_spline<Rational>({3, 1}, {U3, U1}, 3, pts);
   const auto cross = certify_cutting_surface(t.solid, t.loop, D, loopy);
-  CHECK(cross.injective == "undecided");
+  CHECK(cross.injective.is_undecided());
 }
 
 TEST_CASE("cut surface: the maiden's Eq. 5 domain gives a patch whose regularity and injectivity the grid proves", "[cut]") {
@@ -227,10 +227,10 @@ TEST_CASE("cut surface: the maiden's Eq. 5 domain gives a patch whose regularity
   const auto R = cutting_surface<double>(m.loop, o);
   CHECK(R.domain.method == "qp");
   const auto V = certify_cutting_surface(m.solid, m.loop, R.domain, R.patch, o);
-  CHECK(V.tangents == "certified");
-  CHECK(V.regular == "proved");
-  CHECK(V.injective == "proved");
-  CHECK(V.collision == "none outside the strip (certified)");
+  CHECK(V.tangents.is_proved());
+  CHECK(V.regular.is_proved());
+  CHECK(V.injective.is_proved());
+  CHECK(collision_word(V.collision) == "none outside the strip (certified)");
   CHECK(V.boundary_deviation < q(1, 32));
   CHECK(!V.witness);
 }
@@ -254,12 +254,12 @@ TEST_CASE("cut surface: the cube's patch is the plane z = 1/2 with linear precis
       CHECK(R.patch.points[k + 2] == q(1, 2));
     }
   const auto V = certify_cutting_surface(cube.solid, cube.loop, R.domain, R.patch);
-  CHECK(V.verdict == "valid");
+  CHECK(V.verdict.is_proved());
   CHECK(V.vertices_exact);
   CHECK(V.boundary_deviation == 0);
-  CHECK(V.tangents == "certified");
-  CHECK(V.regular == "proved");
-  CHECK(V.injective == "proved");
+  CHECK(V.tangents.is_proved());
+  CHECK(V.regular.is_proved());
+  CHECK(V.injective.is_proved());
   CHECK(V.collision_undecided == 0);
   CHECK(V.collision_pieces > 0);
 
@@ -284,8 +284,8 @@ TEST_CASE("cut surface: a patch whose inward derivative opposes the tangents is 
     return std::vector<Rational>{b[idx[0]], b[idx[1]], q(1, 2)};
   });
   const auto V = certify_cutting_surface(cube.solid, cube.loop, D, p);
-  CHECK(V.verdict == "invalid");
-  CHECK(V.tangents == "violated");
+  CHECK(V.verdict.is_refuted());
+  CHECK(V.tangents.is_refuted());
   REQUIRE(V.witness);
   CHECK(V.witness->condition == "tangent");
   CHECK(V.witness->value <= 0);
@@ -308,14 +308,14 @@ TEST_CASE("cut surface: a patch bulging into the slot collides, and the witness 
   const auto s = normalized("slotted");  // block [0,1] x [0,2/5] x [0,2/5] (scale 5), slot [1/5,2/5] x [0,2/5] x [1/5,2/5]
   const auto R = cutting_surface<Rational>(s.loop);
   const auto V = certify_cutting_surface(s.solid, s.loop, R.domain, R.patch);
-  CHECK(V.verdict == "valid");
+  CHECK(V.verdict.is_proved());
   // raise the interior control points by 3/10 in z: the middle of the patch rises into the slot
   auto bulged = R.patch;
   const std::size_t n = bulged.count(0);
   for (std::size_t j = 1; j + 1 < n; ++j)
     for (std::size_t i = 1; i + 1 < n; ++i) bulged.points[3 * (i + n * j) + 2] += q(3, 10);
   const auto B = certify_cutting_surface(s.solid, s.loop, R.domain, bulged);
-  CHECK(B.verdict == "invalid");
+  CHECK(B.verdict.is_refuted());
   REQUIRE(B.witness);
   CHECK(B.witness->condition == "collision");
   const auto& x = B.witness->point;
@@ -398,7 +398,7 @@ TEST_CASE("cut surface: exact membership against non-planar bilinear facets equa
   const auto loop = validate_cut(Sn, tv.cut);
   const auto R = cutting_surface<Rational>(loop);
   const auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch);
-  CHECK(V.verdict == "invalid");
+  CHECK(V.verdict.is_refuted());
   REQUIRE(V.witness);
   CHECK(V.witness->condition == "collision");
   const auto fr = unit_frame(tv.solid);
@@ -425,7 +425,7 @@ TEST_CASE("cut surface: the maiden's initial patch (the paper's quadratic soluti
   CHECK(R.kkt_holds);
   CHECK(R.domain.method == "circle");
   const auto V = certify_cutting_surface(m.solid, m.loop, R.domain, R.patch);
-  CHECK(V.verdict == "invalid");
+  CHECK(V.verdict.is_refuted());
   REQUIRE(V.witness);
   CHECK(V.vertices_exact);
   CHECK(V.boundary_deviation > q(1, 16));
