@@ -69,6 +69,17 @@ Json guide3_runs_document(const GuideRun3<Rational>* exact, const GuideRun3<doub
   return out;
 }
 
+namespace {
+
+// The two parts of a planar split: their facets and exact areas, which add up to the solid's.
+Json parts_document(const Solid2<Rational>& S1, const Solid2<Rational>& S2) {
+  return Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
+              {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
+              {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
+}
+
+}  // namespace
+
 Json curve_facet_document(const CurveFacetRun& r) {
   Json out{{"guide", guide_json(r.guide.result, r.guide.separation)},
            {"curve", spline_to_json(r.curve)},
@@ -77,14 +88,7 @@ Json curve_facet_document(const CurveFacetRun& r) {
            {"validity", validity_json(r.validity)}};
   out["guide"].erase("guide");
   if (r.out) {
-    if (r.parts) {
-      const auto& [S1, S2] = *r.parts;
-      out["split"] = Json{{"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-                          {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-                          {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
-    } else {
-      out["split"] = "not written: the curve is not certified valid";
-    }
+    out["split"] = r.parts ? parts_document(r.parts->first, r.parts->second) : Json("not written: the curve is not certified valid");
   }
   return out;
 }
@@ -92,9 +96,10 @@ Json curve_facet_document(const CurveFacetRun& r) {
 Json curve_validity_document(const ValidityResult& v) { return validity_json(v); }
 
 Json curve_split_document(const std::string& part1, const std::string& part2, const Solid2<Rational>& S1, const Solid2<Rational>& S2) {
-  return Json{{"part1", part1}, {"part2", part2}, {"part1_facets", S1.facets.size()}, {"part2_facets", S2.facets.size()},
-              {"areas", Json::array({q_json(signed_area(S1)), q_json(signed_area(S2))})},
-              {"area_check", "area(part1) + area(part2) = area(solid), exactly"}};
+  Json out = parts_document(S1, S2);
+  out["part1"] = part1;
+  out["part2"] = part2;
+  return out;
 }
 
 namespace {

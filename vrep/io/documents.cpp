@@ -407,21 +407,11 @@ Json glued_document(const LoadedModel& r) {
   return doc;
 }
 
-namespace {
-
-Json fractions(const std::vector<Rational>& v) {
-  Json a = Json::array();
-  for (const auto& y : v) a.push_back(to_fraction_string(y));
-  return a;
-}
-
-}  // namespace
-
 Json cell_value_document(std::size_t cell, const CellValue<Rational>& r) {
-  Json out{{"cell", cell}, {"point", fractions(r.point)}, {"coordinates", fractions(r.coordinates)}};
+  Json out{{"cell", cell}, {"point", point_to_json(r.point)}, {"coordinates", point_to_json(r.coordinates)}};
   Json f = Json::object(), c = Json::object();
-  for (const auto& [n, v] : r.fields) f[n] = fractions(v);
-  for (const auto& [n, v] : r.constants) c[n] = fractions(v);
+  for (const auto& [n, v] : r.fields) f[n] = point_to_json(v);
+  for (const auto& [n, v] : r.constants) c[n] = point_to_json(v);
   out["fields"] = f;
   out["constants"] = c;
   return out;
@@ -455,8 +445,8 @@ Json blend_document(const VModel<Rational>& V1, const VModel<Rational>& V2, cons
   const bool in1 = D.in_first(x), in2 = D.in_second(x);
   std::vector<Rational> A1, A2;
   Json out{{"in_first", in1}, {"in_second", in2}};
-  if (in1) out["A1"] = fractions(A1 = attribute_at(V1, x, attribute));
-  if (in2) out["A2"] = fractions(A2 = attribute_at(V2, x, attribute));
+  if (in1) out["A1"] = point_to_json(A1 = attribute_at(V1, x, attribute));
+  if (in2) out["A2"] = point_to_json(A2 = attribute_at(V2, x, attribute));
   if (!in1) A1 = A2;
   if (!in2) A2 = A1;
   const auto r = D.at(x, A1, A2, k, bits);
