@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "apps/command.hpp"
 #include "experiments/svg_plot.hpp"
@@ -24,6 +25,7 @@
 #include "vrep/model/trivariate.hpp"
 #include "vrep/model/validate.hpp"
 #include "vrep/primitives/blend.hpp"
+#include "vrep/primitives/catalog.hpp"
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 
@@ -125,39 +127,22 @@ struct PrimitiveOptions {
   int degree = 3, pieces = 4;
 };
 
-/// A primitive's cells and its exact region (vrep/trimmed/trimmed.hpp) where it has one: the sphere of
-/// seven cells has its piecewise one for patches of degree <= 4 (sphere_region: leaves of degree
-/// 2 degree <= 8) and at most 11 pieces, in exact arithmetic; the singular trivariates are not
-/// offered for Booleans.
-template <class F>
-struct Primitive {
-  std::vector<BSpline<F>> cells;
-  std::optional<Region<F>> region;
-};
-
-template <class F>
-Primitive<F> primitive_cells(const PrimitiveOptions& o) {
-  auto num = [](const std::string& text, const std::string& field) { return round_checked<F>(parse_number(text, field), field); };
-  auto list = [](const std::string& text, const std::string& field) {
-    std::vector<F> v;
-    for (const auto& x : parse_number_list(text, field)) v.push_back(round_checked<F>(x, field));
-    return v;
-  };
-  if (o.name == "cylinder") return {cylinder_cells(num(o.radius, "radius"), num(o.height, "height")), cylinder_region(num(o.radius, "radius"), num(o.height, "height"))};
-  if (o.name == "cone")
-    return {cone_cells(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height")),
-            cone_region(num(o.radius, "radius"), num(o.radius2, "radius2"), num(o.height, "height"))};
-  if (o.name == "torus") return {torus_cells(num(o.major, "major"), num(o.radius, "radius")), torus_region(num(o.major, "major"), num(o.radius, "radius"))};
-  if (o.name == "box") return {box_cells(list(o.lo, "lo"), list(o.hi, "hi")), box_region(list(o.lo, "lo"), list(o.hi, "hi"))};
-  if (o.name == "sphere") {
-    auto cells = sphere_cells(num(o.radius, "radius"), o.degree, o.pieces);  // checks degree and pieces
-    // In floating point the rounded region would not describe the rounded cells exactly; above 11
-    // pieces its 30 pieces^2 + 6 leaves pass the documents' 4096.
-    if (o.degree > 4 || o.pieces > 11 || !ArithTraits<F>::exact) return {std::move(cells), std::nullopt};
-    return {std::move(cells), sphere_region(num(o.radius, "radius"), o.degree, o.pieces)};
+/// The primitive's parameters as given: those its row reads (vrep/primitives/catalog.hpp), parsed
+/// in that order; the others keep their defaults.
+PrimitiveParameters parameters(const PrimitiveOptions& o) {
+  PrimitiveParameters p;
+  std::istringstream reads(primitive_row<Rational>(o.name).reads);
+  for (std::string field; reads >> field;) {
+    if (field == "radius") p.radius = parse_number(o.radius, "radius");
+    if (field == "radius2") p.radius2 = parse_number(o.radius2, "radius2");
+    if (field == "height") p.height = parse_number(o.height, "height");
+    if (field == "major") p.major = parse_number(o.major, "major");
+    if (field == "lo") p.lo = parse_number_list(o.lo, "lo");
+    if (field == "hi") p.hi = parse_number_list(o.hi, "hi");
   }
-  if (o.name == "singular-cylinder") return {{singular_cylinder(num(o.radius, "radius"), num(o.height, "height"))}, std::nullopt};
-  return {{singular_sphere(num(o.radius, "radius"))}, std::nullopt};
+  p.degree = o.degree;
+  p.pieces = o.pieces;
+  return p;
 }
 
 struct GlueOptions {
@@ -241,9 +226,7 @@ Command vrep_certify(CLI::App* v) {
 Command vrep_primitive(CLI::App* v) {
   auto po = std::make_shared<PrimitiveOptions>();
   auto* prim = v->add_subcommand("primitive", "a glued primitive V-model (Figure 9) or a singular single trivariate (Figure 8)");
-  prim->add_option("name", po->name, "cylinder, cone, torus (five cells each), sphere (seven), box, singular-cylinder, singular-sphere")
-      ->required()
-      ->check(CLI::IsMember({"cylinder", "cone", "torus", "sphere", "box", "singular-cylinder", "singular-sphere"}));
+  prim->add_option("name", po->name, primitive_help())->required()->check(CLI::IsMember(primitive_names()));
   add_arith_option(prim, po->arith, "exact (GMP), double or mpfr:BITS");
   prim->add_option("--radius", po->radius, "radius (torus: the tube's)")->capture_default_str();
   prim->add_option("--radius2", po->radius2, "cone: the top radius")->capture_default_str();
@@ -267,7 +250,7 @@ Command vrep_primitive(CLI::App* v) {
       std::vector<F> at;
       for (const auto& x : parse_number_list(po->at, "at")) at.push_back(round_checked<F>(x, "at"));
       if (at.size() != 3) throw UsageError("at", "needs three coordinates", "give --at x,y,z");
-      auto [cells, region] = primitive_cells<F>(*po);
+      auto [cells, region] = build_primitive<F>(po->name, parameters(*po));
       for (auto& V : cells) V = place_trivariate(V, axis, at);
       std::vector<std::string> names;
       for (std::size_t k = 0; k < cells.size(); ++k) names.push_back(po->name + " " + std::to_string(k));

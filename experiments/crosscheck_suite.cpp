@@ -112,17 +112,11 @@ std::string csv(const std::vector<Row>& rows) {
   return o.str();
 }
 
-}  // namespace
-
-void crosscheck_section(ReportContext& ctx) {
+// 1. Random curves, surfaces and trivariates of degrees 1-7.
+void run_random_suite(ReportContext& ctx, Runner& run) {
   const ReportOptions& opt = ctx.options;
   const auto& progress = ctx.progress;
   std::mt19937_64& rng = ctx.rng;
-  const std::vector<std::string> ariths = opt.full ? std::vector<std::string>{"double", "mpfr:24", "mpfr:64", "mpfr:113", "mpfr:256"}
-                                                   : std::vector<std::string>{"double", "mpfr:113"};
-  Runner run(ariths);
-
-  // 1. Random curves, surfaces and trivariates of degrees 1-7.
   const int max_deg = 7;
   for (int dim = 1; dim <= 3; ++dim) {
     for (int p = 1; p <= max_deg; ++p) {
@@ -142,9 +136,13 @@ void crosscheck_section(ReportContext& ctx) {
       }
     }
   }
+}
 
-  // 2. Error against the number of inserted knots (long refinements), degree 3 and 5 curves.
-  const std::size_t max_ins = opt.full ? 4096 : 512;
+// 2. Error against the number of inserted knots (long refinements), degree 3 and 5 curves.
+void run_refinement_sweep(ReportContext& ctx, Runner& run) {
+  const auto& progress = ctx.progress;
+  std::mt19937_64& rng = ctx.rng;
+  const std::size_t max_ins = ctx.options.full ? 4096 : 512;
   for (int p : {3, 5}) {
     RandomSplineSpec spec;
     spec.degrees = {p};
@@ -161,45 +159,48 @@ void crosscheck_section(ReportContext& ctx) {
       run.run("refinement-boehm", "curve-p" + std::to_string(p), S, op, n);
     }
   }
+}
 
-  // 3. Adversarial inputs.
-  progress("adversarial cases");
-  {
-    // Nearly coincident knots: 1/10 and 1/10 + 2^-50 (distinct in double: 64 ulps apart).
-    const Rational eps = Rational(1) / Rational(Integer(1) << 50);
-    const auto S = spline_from<Rational>({3}, {clamped_knots(3, Rational(0), Rational(1), {Rational(1, 10), Rational(1, 10) + eps, Rational(1, 2)})},
-                              2, [](const std::vector<std::size_t>& idx) {
-                                const int i = static_cast<int>(idx[0]);
-                                return std::vector<Rational>{Rational(i * i - 3 * i, 7), Rational(2 * i + 1, 3)};
-                              });
-    run.run("adversarial", "near-coincident-knots", S, op_insert(0, {Rational(1, 10) + eps / 2, Rational(1, 10) - eps}));
-    run.run("adversarial", "near-coincident-knots", S, op_elevate(0, 2));
-    Operation blossom = op_elevate(0, 2);
-    blossom.method = ElevationMethod::blossom;  // the same map by the blossom: is the loss A5.9's?
-    run.run("adversarial", "near-coincident-knots", S, blossom);
-    run.run("adversarial", "near-coincident-knots", S, op_extract());
-    // High degree: elevate a cubic to degree 15, and insert into a degree-15 curve.
-    RandomSplineSpec spec;
-    spec.degrees = {3};
-    spec.counts = {10};
-    const auto C = random_spline(spec, rng);
-    run.run("adversarial", "elevate-3-to-15", C, op_elevate(0, 12));
-    Operation blossom15 = op_elevate(0, 12);
-    blossom15.method = ElevationMethod::blossom;
-    run.run("adversarial", "elevate-3-to-15", C, blossom15);
-    spec.degrees = {15};
-    spec.counts = {24};
-    const auto H = random_spline(spec, rng);
-    run.run("adversarial", "degree-15", H, op_insert(0, random_knots(H, 0, 8, rng)));
-    run.run("adversarial", "degree-15", H, op_extract());
-    // Long refinement: 1000 knots into a cubic, all at once and near one point.
-    std::vector<Rational> cluster;
-    for (int i = 1; i <= 1000; ++i) cluster.push_back(Rational(1, 3) + Rational(i, 1000000000));
-    run.run("adversarial", "1000-clustered-knots", C, op_insert(0, cluster));
-  }
+// 3. Adversarial inputs.
+void run_adversarial_cases(ReportContext& ctx, Runner& run) {
+  std::mt19937_64& rng = ctx.rng;
+  ctx.progress("adversarial cases");
+  // Nearly coincident knots: 1/10 and 1/10 + 2^-50 (distinct in double: 64 ulps apart).
+  const Rational eps = Rational(1) / Rational(Integer(1) << 50);
+  const auto S = spline_from<Rational>({3}, {clamped_knots(3, Rational(0), Rational(1), {Rational(1, 10), Rational(1, 10) + eps, Rational(1, 2)})},
+                            2, [](const std::vector<std::size_t>& idx) {
+                              const int i = static_cast<int>(idx[0]);
+                              return std::vector<Rational>{Rational(i * i - 3 * i, 7), Rational(2 * i + 1, 3)};
+                            });
+  run.run("adversarial", "near-coincident-knots", S, op_insert(0, {Rational(1, 10) + eps / 2, Rational(1, 10) - eps}));
+  run.run("adversarial", "near-coincident-knots", S, op_elevate(0, 2));
+  Operation blossom = op_elevate(0, 2);
+  blossom.method = ElevationMethod::blossom;  // the same map by the blossom: is the loss A5.9's?
+  run.run("adversarial", "near-coincident-knots", S, blossom);
+  run.run("adversarial", "near-coincident-knots", S, op_extract());
+  // High degree: elevate a cubic to degree 15, and insert into a degree-15 curve.
+  RandomSplineSpec spec;
+  spec.degrees = {3};
+  spec.counts = {10};
+  const auto C = random_spline(spec, rng);
+  run.run("adversarial", "elevate-3-to-15", C, op_elevate(0, 12));
+  Operation blossom15 = op_elevate(0, 12);
+  blossom15.method = ElevationMethod::blossom;
+  run.run("adversarial", "elevate-3-to-15", C, blossom15);
+  spec.degrees = {15};
+  spec.counts = {24};
+  const auto H = random_spline(spec, rng);
+  run.run("adversarial", "degree-15", H, op_insert(0, random_knots(H, 0, 8, rng)));
+  run.run("adversarial", "degree-15", H, op_extract());
+  // Long refinement: 1000 knots into a cubic, all at once and near one point.
+  std::vector<Rational> cluster;
+  for (int i = 1; i <= 1000; ++i) cluster.push_back(Rational(1, 3) + Rational(i, 1000000000));
+  run.run("adversarial", "1000-clustered-knots", C, op_insert(0, cluster));
+}
 
-  // 4. The teapot: four bicubic B-spline surfaces merged exactly from data/teapot.bpt.
-  progress("teapot surfaces");
+// 4. The teapot: four bicubic B-spline surfaces merged exactly from data/teapot.bpt.
+void run_teapot_cases(ReportContext& ctx, Runner& run) {
+  ctx.progress("teapot surfaces");
   const auto patches = read_bpt(data_path("teapot.bpt"));
   for (const auto& t : teapot_surfaces(patches)) {
     const auto& S = t.surface;
@@ -210,14 +211,13 @@ void crosscheck_section(ReportContext& ctx) {
     run.run("teapot", t.name, S, op_elevate(1, 1));
     run.run("teapot", t.name, S, op_extract());
   }
+}
 
-  ctx.crosschecks = run.rows.size();
-  for (const auto& r : run.rows) ctx.float_structures_match = ctx.float_structures_match && r.rep.structure_match;
-
-  // Files: the data and the figures.
-  write_file_atomically(opt.out_dir + "/crosscheck.csv", csv(run.rows));
+// The data: crosscheck.csv and crosscheck.json.
+void write_data(const std::string& out_dir, const std::vector<Row>& rows) {
+  write_file_atomically(out_dir + "/crosscheck.csv", csv(rows));
   Json all = Json::array();
-  for (const auto& r : run.rows) {
+  for (const auto& r : rows) {
     Json j = r.rep.document();
     j["suite"] = r.suite;
     j["case"] = r.case_name;
@@ -227,8 +227,11 @@ void crosscheck_section(ReportContext& ctx) {
     j["inserted"] = r.inserted;
     all.push_back(std::move(j));
   }
-  write_file_atomically(opt.out_dir + "/crosscheck.json", all.dump(1) + "\n");
+  write_file_atomically(out_dir + "/crosscheck.json", all.dump(1) + "\n");
+}
 
+// The figures: error and bits lost against degree, error against inserted knots.
+void write_figures(const std::string& out_dir, const std::vector<Row>& rows, const std::vector<std::string>& ariths) {
   // Figures 1 and 1b: worst grid error against degree, per operation and arithmetic, as a relative
   // error (log scale) and as bits lost (linear; comparable across precisions).
   auto by_degree = [&](bool bits) {
@@ -241,7 +244,7 @@ void crosscheck_section(ReportContext& ctx) {
         s.color = kPalette[ci++ % kPaletteSize];
         s.dashed = opn == "elevate";
         std::map<int, double> worst;
-        for (const auto& r : run.rows)
+        for (const auto& r : rows)
           if (r.suite == "random" && r.rep.operation == opn && r.rep.arith == a)
             worst[r.degree] = std::max(worst[r.degree], bits ? r.rep.grid.bits_lost(r.rep.precision) : r.rep.grid.rel());
         for (auto [d, e] : worst) s.points.emplace_back(d, e);
@@ -250,11 +253,11 @@ void crosscheck_section(ReportContext& ctx) {
     return out;
   };
   const std::string note = "random curves, surfaces, trivariates; worst over dimension and rationality";
-  write_file_atomically(opt.out_dir + "/error_vs_degree.svg",
+  write_file_atomically(out_dir + "/error_vs_degree.svg",
                         svg_line_plot({"Max relative error of evaluated points vs degree", "degree",
                                        "max relative error (exact measurement)", false, true, note},
                                       by_degree(false)));
-  write_file_atomically(opt.out_dir + "/bits_lost_vs_degree.svg",
+  write_file_atomically(out_dir + "/bits_lost_vs_degree.svg",
                         svg_line_plot({"Bits lost at evaluated points vs degree", "degree", "bits lost", false, false, note},
                                       by_degree(true)));
   // Figure 2: error against number of inserted knots.
@@ -267,59 +270,62 @@ void crosscheck_section(ReportContext& ctx) {
         s.label = (suite == "refinement" ? "A5.4 " : "A5.1 ") + cname.substr(6) + ", " + a;
         s.color = kPalette[ci++ % kPaletteSize];
         s.dashed = suite != "refinement";
-        for (const auto& r : run.rows)
+        for (const auto& r : rows)
           if (r.suite == suite && r.case_name == cname && r.rep.arith == a)
             s.points.emplace_back(static_cast<double>(r.inserted), r.rep.control_points.rel());
         s2.push_back(std::move(s));
       }
-  write_file_atomically(opt.out_dir + "/error_vs_inserted_knots.svg",
+  write_file_atomically(out_dir + "/error_vs_inserted_knots.svg",
                         svg_line_plot({"Control-point relative error vs number of inserted knots", "knots inserted",
                                        "max relative error (exact measurement)", true, true,
                                        "errors that are exactly zero are drawn on the bottom line"},
                                       s2));
+}
 
-  // report.md: the introduction, the figures, the tables.
-  {
-    std::ostringstream md;
-    md << "Every number below is measured exactly: each float result is converted to the rational it is and "
-          "subtracted from the exact (GMP rational) result of the same exact input. Relative errors are normwise "
-          "(max |error| / max |exact value| over the compared set); *bits lost* is precision + log2(relative error), "
-          "clamped to [0, precision]. Inputs are rounded once to the float format, so a well-conditioned operation "
-          "shows about 0-3 bits lost.\n\n"
-       << "Arithmetics: " ;
-    for (const auto& a : ariths) md << "`" << a << "` ";
-    md << (opt.full ? "(full sweep)" : "(default sweep; `splinex report --full` runs the long one)") << ".\n\n";
-    ctx.markdown["crosscheck.intro"] = md.str();
-  }
-  ctx.markdown["crosscheck.figures"] =
-      "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
-      "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
+// report.md's introduction: how the errors are measured, which arithmetics ran.
+std::string intro_markdown(const ReportOptions& opt, const std::vector<std::string>& ariths) {
   std::ostringstream md;
-  auto table = [&](const std::string& suite, const std::string& title) {
-    md << "\n## " << title << "\n\n| case | operation | arith | control points | cp rel error | cp bits lost | grid rel error "
-          "| grid bits lost | exact s | float s |\n|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& r : run.rows) {
-      if (r.suite != suite) continue;
-      const auto& c = r.rep;
-      if (!c.structure_match) {
-        md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count
-           << " | structure differs: " << c.structure_note << " | | | | | |\n";
-        continue;
-      }
-      md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count << " | "
-         << fmt(c.control_points.rel()) << " | " << fmt1(c.control_points.bits_lost(c.precision)) << " | " << fmt(c.grid.rel())
-         << " | " << fmt1(c.grid.bits_lost(c.precision)) << " | " << fmt(c.seconds_exact) << " | " << fmt(c.seconds_float)
-         << " |\n";
+  md << "Every number below is measured exactly: each float result is converted to the rational it is and "
+        "subtracted from the exact (GMP rational) result of the same exact input. Relative errors are normwise "
+        "(max |error| / max |exact value| over the compared set); *bits lost* is precision + log2(relative error), "
+        "clamped to [0, precision]. Inputs are rounded once to the float format, so a well-conditioned operation "
+        "shows about 0-3 bits lost.\n\n"
+     << "Arithmetics: " ;
+  for (const auto& a : ariths) md << "`" << a << "` ";
+  md << (opt.full ? "(full sweep)" : "(default sweep; `splinex report --full` runs the long one)") << ".\n\n";
+  return md.str();
+}
+
+// One suite's table of report.md: every case, operation and arithmetic.
+void suite_table(std::ostringstream& md, const std::vector<Row>& rows, const std::string& suite, const std::string& title) {
+  md << "\n## " << title << "\n\n| case | operation | arith | control points | cp rel error | cp bits lost | grid rel error "
+        "| grid bits lost | exact s | float s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    if (r.suite != suite) continue;
+    const auto& c = r.rep;
+    if (!c.structure_match) {
+      md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count
+         << " | structure differs: " << c.structure_note << " | | | | | |\n";
+      continue;
     }
-  };
-  table("adversarial", "Adversarial inputs");
-  table("teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
-  table("refinement", "Refinement sweep (A5.4, all knots at once)");
-  table("refinement-boehm", "Refinement sweep (A5.1, knot by knot)");
-  table("random", "Random curves, surfaces and trivariates, degrees 1-7");
+    md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count << " | "
+       << fmt(c.control_points.rel()) << " | " << fmt1(c.control_points.bits_lost(c.precision)) << " | " << fmt(c.grid.rel())
+       << " | " << fmt1(c.grid.bits_lost(c.precision)) << " | " << fmt(c.seconds_exact) << " | " << fmt(c.seconds_float)
+       << " |\n";
+  }
+}
+
+// report.md's tables: the suites, the time summary, where the raw data is.
+std::string tables_markdown(const std::vector<Row>& rows) {
+  std::ostringstream md;
+  suite_table(md, rows, "adversarial", "Adversarial inputs");
+  suite_table(md, rows, "teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
+  suite_table(md, rows, "refinement", "Refinement sweep (A5.4, all knots at once)");
+  suite_table(md, rows, "refinement-boehm", "Refinement sweep (A5.1, knot by knot)");
+  suite_table(md, rows, "random", "Random curves, surfaces and trivariates, degrees 1-7");
   // Time ratio summary.
   std::map<std::string, std::pair<double, double>> tsum;
-  for (const auto& r : run.rows) {
+  for (const auto& r : rows) {
     tsum[r.rep.arith].first += r.rep.seconds_exact;
     tsum[r.rep.arith].second += r.rep.seconds_float;
   }
@@ -328,7 +334,35 @@ void crosscheck_section(ReportContext& ctx) {
   // No folder in the text: the same words wherever the report (or a sweep job of it) was written.
   md << "\nRaw data: `crosscheck.csv`, `crosscheck.json` in this folder. Regenerate with "
         "`build/bin/splinex report --sections crosscheck --out DIR`.\n";
-  ctx.markdown["crosscheck.tables"] = md.str();
+  return md.str();
+}
+
+}  // namespace
+
+void crosscheck_section(ReportContext& ctx) {
+  const ReportOptions& opt = ctx.options;
+  const std::vector<std::string> ariths = opt.full ? std::vector<std::string>{"double", "mpfr:24", "mpfr:64", "mpfr:113", "mpfr:256"}
+                                                   : std::vector<std::string>{"double", "mpfr:113"};
+  Runner run(ariths);
+  // The cases, in the order they draw from the seeded stream.
+  run_random_suite(ctx, run);
+  run_refinement_sweep(ctx, run);
+  run_adversarial_cases(ctx, run);
+  run_teapot_cases(ctx, run);
+
+  ctx.crosschecks = run.rows.size();
+  for (const auto& r : run.rows) ctx.float_structures_match = ctx.float_structures_match && r.rep.structure_match;
+
+  // Files: the data and the figures.
+  write_data(opt.out_dir, run.rows);
+  write_figures(opt.out_dir, run.rows, ariths);
+
+  // report.md: the introduction, the figures, the tables.
+  ctx.markdown["crosscheck.intro"] = intro_markdown(opt, ariths);
+  ctx.markdown["crosscheck.figures"] =
+      "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
+      "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
+  ctx.markdown["crosscheck.tables"] = tables_markdown(run.rows);
 }
 
 }  // namespace splinex

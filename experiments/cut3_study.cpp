@@ -154,10 +154,9 @@ std::string slice_svg(const GuideResult3<Rational>& R, const std::string& title,
   return o.str();
 }
 
-}  // namespace
-
-void cut3_section(ReportContext& ctx) {
-  std::ostringstream md, csv;
+// The guides: the examples' guiding surfaces exactly and in double, certified; the slice figures and VTK files.
+void guides_part(ReportContext& ctx, std::ostringstream& md) {
+  std::ostringstream csv;
   md << "## Cutting surfaces (papers/004, d = 3): the guiding surface exactly, certified\n\n"
         "Solids bounded by polynomial surface facets (here bilinear quads of box-built solids, `splinex cut example cube|slotted|maiden`: "
         "the iron maiden and the bi-slotted cube are modelled on Figures 11 and 13, not copied). The cutting loop is the border between "
@@ -211,8 +210,10 @@ void cut3_section(ReportContext& ctx) {
   write_file_atomically(ctx.options.out_dir + "/cut3_table.csv", csv.str());
   md << "\nFigures `cut3_NAME_slice.svg` (a slice through the middle of the solid; f* = 0 drawn in double), ParaView files "
         "`cut3_NAME_solid.vtk` and `cut3_NAME_guide.vtk` (f* on a 33^3 grid: contour it at 0), data `cut3_table.csv`.\n\n";
+}
 
-  // What coarse sampling misses: the maiden with one sample per facet and one loop point per side.
+// What coarse sampling misses: the maiden with one sample per facet and one loop point per side.
+void coarse_sampling_part(ReportContext& ctx, std::ostringstream& md) {
   md << "What coarse sampling misses (the iron maiden, one sample per facet, one point of L* per loop side; every guide below satisfies "
         "all its sample constraints):\n\n| inner knots | separation (exact) | separation (double) |\n|---|---|---|\n";
   int missed = 0, runs = 0;
@@ -237,8 +238,126 @@ void cut3_section(ReportContext& ctx) {
     md << "| " << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2] << " | " << se << " | " << sd << " |\n";
   }
   md << "\n" << missed << " of " << runs << " sample-feasible guides leave the solid's b or b-bar at an exact witness (normalized coordinates).\n\n";
+}
 
-  // The cutting surfaces: the paper's quadratic initial patch, exactly and in double, certified.
+// One example of the cutting-surface table: the solid normalized, its loop, the row's options.
+struct SurfaceCase {
+  std::string name, base;
+  bool guided = false;
+  CutExample3 e;
+  Solid3<Rational> Sn;
+  std::vector<LoopSide3> loop;
+  SurfaceFacetOptions so;
+};
+
+SurfaceCase surface_case(const std::string& name) {
+  SurfaceCase c;
+  c.name = name;
+  c.base = name.substr(0, name.find(','));
+  c.guided = name.find(", guided") != std::string::npos;
+  c.e = cut_example3(c.base);
+  c.Sn = to_frame(c.e.solid, unit_frame(c.e.solid));
+  c.loop = validate_cut(c.Sn, c.e.cut);
+  if (c.base == "vase" && name != "vase, guided, auto weight") c.so.weight_fair = Rational(1, 100);
+  if (name == "maiden, Eq. 5") c.so.domain = "qp", c.so.inner_knots = 15;
+  return c;
+}
+
+// What the rows of the cutting-surface table share: its CSV, the exact guide of the vase and the
+// text of the weight sweeps.
+struct SurfaceRows {
+  std::ostringstream csv;
+  std::optional<GuideResult3<Rational>> vase_guide;  // computed once, for both guided rows
+  std::string sweep_text;
+};
+
+// The exact patch of a row: Step 2's, bulged by hand, or refined by the exact guide (Eq. 6).
+CuttingSurface<Rational> exact_patch(ReportContext& ctx, const SurfaceCase& c, SurfaceRows& rows) {
+  auto R = cutting_surface<Rational>(c.loop, c.so);
+  ctx.ok = ctx.ok && R.kkt_holds;
+  if (c.name == "slotted, bulged") {
+    const std::size_t n = R.patch.count(0);
+    for (std::size_t j = 1; j + 1 < n; ++j)
+      for (std::size_t i = 1; i + 1 < n; ++i) R.patch.points[3 * (i + n * j) + 2] += Rational(3, 10);
+  }
+  if (c.guided && (!rows.vase_guide || c.name.rfind("twisted", 0) == 0)) {
+    // the guide (1 inner knot, one sample per facet, 2 points per loop side)
+    Setting st{c.base, 1, 1, 2, {-1, -1, -1}, ""};
+    rows.vase_guide = guide_surface<Rational>(c.e.solid, c.e.cut, options_of(st));
+    R.seconds += rows.vase_guide->seconds;
+  }
+  if (c.name.find("auto weight") != std::string::npos && rows.vase_guide->status == QPStatus::optimal) {
+    // the paper's thin-plate weight 1 and Eq. 6's weight swept (cut facet --weight-guide auto)
+    const auto steps = refine_with_guide_sweep(c.Sn, c.loop, R,
+                                               convert<double>(rows.vase_guide->f_exact, [](const Rational& x) { return to_double(x); }),
+                                               {}, {10, 1e2, 1e3, 1e4, 1e5, 1e6}, c.so);
+    const auto initial = R.patch;
+    R.patch = steps.back().result.patch;
+    if (c.base == "twisted-vase")
+      write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_surfaces_slice.svg",
+                            slice_svg(*rows.vase_guide,
+                                      "papers/004, Figure 1's kind of vase (non-planar faces and loop), slice through the middle",
+                                      {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
+                                      "grey dashed: the initial patch (invalid); green: the guided patch, weight by the sweep (" +
+                                          std::string(validity_word(steps.back().validity.verdict)) + ")"));
+    rows.sweep_text += "\n- " + c.base + ": ";
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const auto& st = steps[k];
+      rows.sweep_text += (k ? ", " : "") + fmt(st.weight) + ": " + validity_word(st.validity.verdict) + " (max |f*| " +
+                         fmt(st.result.max_abs_f_after) + ")";
+      R.seconds += st.result.seconds + st.validity.seconds;
+    }
+  }
+  if (c.name == "vase, guided") {
+    const auto& G = *rows.vase_guide;
+    if (G.status == QPStatus::optimal) {
+      GuidedOptions go;
+      go.weight_guide = 1000;
+      const auto initial = R.patch;
+      R.patch = refine_with_guide(R, convert<double>(G.f_exact, [](const Rational& x) { return to_double(x); }), go).patch;
+      write_file_atomically(ctx.options.out_dir + "/cut3_vase_surfaces_slice.svg",
+                            slice_svg(G, "papers/004, Figure 12's story on the vase (slice through the middle)",
+                                      {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
+                                      "grey dashed: the initial patch (through the cavity: invalid); green: the guided patch (valid)"));
+    }
+  }
+  return R;
+}
+
+// A row of the cutting-surface table: the exact patch certified, the double patch beside it, the VTK files.
+void surface_row(ReportContext& ctx, std::ostringstream& md, SurfaceRows& rows, const SurfaceCase& c) {
+  const auto R = exact_patch(ctx, c, rows);
+  const auto V = certify_cutting_surface(c.Sn, c.loop, R.domain, R.patch, c.so);
+  const auto D = cutting_surface<double>(c.loop, c.so);
+  const auto DV = certify_cutting_surface(c.Sn, c.loop, D.domain, D.patch, c.so);
+  std::string witness = "-";
+  if (V.witness)
+    witness = V.witness->condition + " at p(" + to_fraction_string(V.witness->param[0]) + ", " + to_fraction_string(V.witness->param[1]) + ")";
+  std::string bits = "-";
+  if (c.name != "slotted, bulged" && !c.guided) bits = bits_lost(R.coefficients, D.coefficients);
+  const std::string file = "cut3_" + c.base +
+                           (c.name == c.base                          ? ""
+                            : c.name == "vase, guided"                ? "_guided"
+                            : c.name.find("auto weight") != std::string::npos ? "_guided_auto"
+                            : c.name == "maiden, Eq. 5"               ? "_qp"
+                                                                      : "_bulged") +
+                           "_surface.vtk";
+  const auto frame = unit_frame(c.e.solid);
+  auto P = R.patch;
+  for (std::size_t i = 0; i < P.points.size(); ++i) P.points[i] = frame.lo[i % 3] + frame.scale * P.points[i];
+  write_file_atomically(ctx.options.out_dir + "/" + file, surface3_vtk(P, R.domain.vertices, 40));
+  if (c.name == "twisted-vase") write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_solid.vtk", solid3_vtk(c.e.solid));
+  md << "| " << c.name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << validity_word(V.verdict) << "** | "
+     << fmt(to_double(V.boundary_deviation)) << " | " << certificate_word(V.tangents) << " | " << status_name(V.regular.status()) << ", "
+     << status_name(V.injective.status()) << " | " << collision_word(V.collision) << " | " << witness << " | " << fmt(D.seconds + DV.seconds) << " | " << bits << " | " << validity_word(DV.verdict) << " |\n";
+  rows.csv << "\"" << c.name << "\"," << R.domain.method << "," << R.seconds + V.seconds << "," << validity_word(V.verdict) << ","
+           << to_double(V.boundary_deviation) << "," << certificate_word(V.tangents) << "," << status_name(V.regular.status()) << ","
+           << status_name(V.injective.status()) << ",\"" << collision_word(V.collision) << "\"," << D.seconds + DV.seconds << "," << bits
+           << "," << validity_word(DV.verdict) << "\n";
+}
+
+// The cutting surfaces: the paper's quadratic initial patch, exactly and in double, certified.
+void surfaces_part(ReportContext& ctx, std::ostringstream& md) {
   md << "### The cutting surface (Section 4): the initial patch, certified\n\n"
         "Step 1 projects the loop along its Newell normal's largest axis (exact) or, when a side collapses, solves Eq. 5 (side "
         "lengths closest to the loop's along its turning angles, exact rational unit directions within 2^-12 rad) or, when that fails "
@@ -263,100 +382,29 @@ void cut3_section(ReportContext& ctx) {
         "its time includes its own exact guide (1 inner knot).\n\n"
         "| example | domain | exact s | verdict | boundary deviation | tangents | regular, injective | collision | witness | double s | "
         "bits lost (double patch) | verdict (double) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::ostringstream scsv;
-  scsv << "example,domain,exact_s,verdict,boundary_deviation,tangents,regular,injective,collision,double_s,bits_lost,double_verdict\n";
-  std::optional<GuideResult3<Rational>> vase_guide;  // computed once, for both guided rows
-  std::string sweep_text;
+  SurfaceRows rows;
+  rows.csv << "example,domain,exact_s,verdict,boundary_deviation,tangents,regular,injective,collision,double_s,bits_lost,double_verdict\n";
   for (const std::string name : {"cube", "slotted", "slotted, bulged", "maiden", "maiden, Eq. 5", "vase", "vase, guided", "vase, guided, auto weight",
                                  "twisted-vase", "twisted-vase, guided, auto weight"}) {
-    const std::string base = name.substr(0, name.find(','));
     ctx.progress("cut3: cutting surface of " + name);
-    const auto e = cut_example3(base);
-    const auto Sn = to_frame(e.solid, unit_frame(e.solid));
-    const auto loop = validate_cut(Sn, e.cut);
-    SurfaceFacetOptions so;
-    if (base == "vase" && name != "vase, guided, auto weight") so.weight_fair = Rational(1, 100);
-    if (name == "maiden, Eq. 5") so.domain = "qp", so.inner_knots = 15;
-    auto R = cutting_surface<Rational>(loop, so);
-    ctx.ok = ctx.ok && R.kkt_holds;
-    if (name == "slotted, bulged") {
-      const std::size_t n = R.patch.count(0);
-      for (std::size_t j = 1; j + 1 < n; ++j)
-        for (std::size_t i = 1; i + 1 < n; ++i) R.patch.points[3 * (i + n * j) + 2] += Rational(3, 10);
-    }
-    const bool guided = name.find(", guided") != std::string::npos;
-    if (guided && (!vase_guide || name.rfind("twisted", 0) == 0)) {
-      // the guide (1 inner knot, one sample per facet, 2 points per loop side)
-      Setting st{base, 1, 1, 2, {-1, -1, -1}, ""};
-      vase_guide = guide_surface<Rational>(e.solid, e.cut, options_of(st));
-      R.seconds += vase_guide->seconds;
-    }
-    if (name.find("auto weight") != std::string::npos && vase_guide->status == QPStatus::optimal) {
-      // the paper's thin-plate weight 1 and Eq. 6's weight swept (cut facet --weight-guide auto)
-      const auto steps = refine_with_guide_sweep(Sn, loop, R, convert<double>(vase_guide->f_exact, [](const Rational& x) { return to_double(x); }), {},
-                                                 {10, 1e2, 1e3, 1e4, 1e5, 1e6}, so);
-      const auto initial = R.patch;
-      R.patch = steps.back().result.patch;
-      if (base == "twisted-vase")
-        write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_surfaces_slice.svg",
-                              slice_svg(*vase_guide, "papers/004, Figure 1's kind of vase (non-planar faces and loop), slice through the middle",
-                                        {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
-                                        "grey dashed: the initial patch (invalid); green: the guided patch, weight by the sweep (" +
-                                            std::string(validity_word(steps.back().validity.verdict)) + ")"));
-      sweep_text += "\n- " + base + ": ";
-      for (std::size_t k = 0; k < steps.size(); ++k) {
-        const auto& st = steps[k];
-        sweep_text += (k ? ", " : "") + fmt(st.weight) + ": " + validity_word(st.validity.verdict) + " (max |f*| " + fmt(st.result.max_abs_f_after) + ")";
-        R.seconds += st.result.seconds + st.validity.seconds;
-      }
-    }
-    if (name == "vase, guided") {
-      const auto& G = *vase_guide;
-      if (G.status == QPStatus::optimal) {
-        GuidedOptions go;
-        go.weight_guide = 1000;
-        const auto initial = R.patch;
-        R.patch = refine_with_guide(R, convert<double>(G.f_exact, [](const Rational& x) { return to_double(x); }), go).patch;
-        write_file_atomically(ctx.options.out_dir + "/cut3_vase_surfaces_slice.svg",
-                              slice_svg(G, "papers/004, Figure 12's story on the vase (slice through the middle)",
-                                        {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
-                                        "grey dashed: the initial patch (through the cavity: invalid); green: the guided patch (valid)"));
-      }
-    }
-    const auto V = certify_cutting_surface(Sn, loop, R.domain, R.patch, so);
-    const auto D = cutting_surface<double>(loop, so);
-    const auto DV = certify_cutting_surface(Sn, loop, D.domain, D.patch, so);
-    std::string witness = "-";
-    if (V.witness)
-      witness = V.witness->condition + " at p(" + to_fraction_string(V.witness->param[0]) + ", " + to_fraction_string(V.witness->param[1]) + ")";
-    std::string bits = "-";
-    if (name != "slotted, bulged" && !guided) bits = bits_lost(R.coefficients, D.coefficients);
-    const std::string file = "cut3_" + base +
-                             (name == base                          ? ""
-                              : name == "vase, guided"              ? "_guided"
-                              : name.find("auto weight") != std::string::npos ? "_guided_auto"
-                              : name == "maiden, Eq. 5"             ? "_qp"
-                                                                    : "_bulged") +
-                             "_surface.vtk";
-    const auto frame = unit_frame(e.solid);
-    auto P = R.patch;
-    for (std::size_t i = 0; i < P.points.size(); ++i) P.points[i] = frame.lo[i % 3] + frame.scale * P.points[i];
-    write_file_atomically(ctx.options.out_dir + "/" + file, surface3_vtk(P, R.domain.vertices, 40));
-    if (name == "twisted-vase") write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_solid.vtk", solid3_vtk(e.solid));
-    md << "| " << name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << validity_word(V.verdict) << "** | "
-       << fmt(to_double(V.boundary_deviation)) << " | " << certificate_word(V.tangents) << " | " << status_name(V.regular.status()) << ", "
-       << status_name(V.injective.status()) << " | " << collision_word(V.collision) << " | " << witness << " | " << fmt(D.seconds + DV.seconds) << " | " << bits << " | " << validity_word(DV.verdict) << " |\n";
-    scsv << "\"" << name << "\"," << R.domain.method << "," << R.seconds + V.seconds << "," << validity_word(V.verdict) << "," << to_double(V.boundary_deviation)
-         << "," << certificate_word(V.tangents) << "," << status_name(V.regular.status()) << "," << status_name(V.injective.status()) << ",\""
-         << collision_word(V.collision) << "\"," << D.seconds + DV.seconds << "," << bits << "," << validity_word(DV.verdict) << "\n";
+    surface_row(ctx, md, rows, surface_case(name));
   }
-  write_file_atomically(ctx.options.out_dir + "/cut3_surfaces.csv", scsv.str());
-  if (!sweep_text.empty()) md << "\nThe weight sweeps (Eq. 6's weight: the refined patch's verdict):\n" << sweep_text << "\n";
+  write_file_atomically(ctx.options.out_dir + "/cut3_surfaces.csv", rows.csv.str());
+  if (!rows.sweep_text.empty()) md << "\nThe weight sweeps (Eq. 6's weight: the refined patch's verdict):\n" << rows.sweep_text << "\n";
   md << "\nA double patch interpolates the loop's vertices only within rounding, so its verdict is at best `undecided` (the other "
         "certificates still run on its exact values). The maiden's wave-shaped loop cannot be followed by the 7 x 7 net over the "
         "circle: the initial patch fails, as the paper says the initial solution may; over Eq. 5's unfolded rectangle the initial "
         "patch is already valid. Figure `cut3_vase_surfaces_slice.svg`: the vase's middle slice with the guide's zero set, the initial patch through the "
         "cavity and the guided patch below it; `cut3_twisted-vase_surfaces_slice.svg` the same for the twisted vase. ParaView: `cut3_NAME_surface.vtk` with `cut3_NAME_solid.vtk`; data `cut3_surfaces.csv`.\n\n";
+}
+
+}  // namespace
+
+void cut3_section(ReportContext& ctx) {
+  std::ostringstream md;
+  guides_part(ctx, md);
+  coarse_sampling_part(ctx, md);
+  surfaces_part(ctx, md);
   ctx.markdown["cut3"] = md.str();
 }
 

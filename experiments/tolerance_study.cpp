@@ -181,9 +181,12 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
   return md.str();
 }
 
-}  // namespace
+// The tolerances of the curve and the surface case (the surface case from 1e-9 up).
+const std::vector<double> kEpsList{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
 
-std::string run_tolerance_study(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok) {
+// The curve case: a quadratic S crossing a knot of a cubic T, the trimming point found by float
+// bisection to eps.
+std::string curve_case(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok) {
   const int p = 3;
   const Rational u0(1, 2);
   // S: a quadratic from 1/5 to 4/5 crossing u0 transversally at an irrational parameter.
@@ -193,7 +196,6 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
   const auto roots = isolate_real_roots(bernstein_to_power(bern), 0, 1, 200);
   if (roots.size() != 1) throw std::logic_error("tolerance study: expected one crossing");
   const IsolatedRoot rstar = roots[0];
-  const std::vector<double> eps_list{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   std::ostringstream csv, md;
   csv << "multiplicity,continuity,eps,trimming_point,misassigned_length,max_abs_error\n" << std::setprecision(17);
   md << "\n## What a trimming tolerance costs (exact measurement)\n\n"
@@ -218,7 +220,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     ps.label = "m = " + std::to_string(m) + " (C^" + std::to_string(p - m) + ")";
     ps.color = kPalette[m - 1];
     double at6 = 0;
-    for (double eps : eps_list) {
+    for (double eps : kEpsList) {
       // Float trimming: bisection in double on s(r) - u0 until the bracket is shorter than eps.
       auto sd = [&](double r) { return 0.2 * (1 - r) * (1 - r) + 2 * 0.3 * r * (1 - r) + 0.8 * r * r - 0.5; };
       double a = 0, b = 1;
@@ -254,8 +256,33 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
                                       series));
   md << "\nm = 4 = p+1 makes T discontinuous at u0, so any misassignment costs O(1): slope 0. Data: `tolerance.csv`; "
         "figure: `tolerance.svg`.\n\n![tolerance](tolerance.svg)\n";
+  return md.str();
+}
 
-  // ---- The surface case: trimming polylines within eps --------------------------------------
+// The surface case's polylines within eps of s_u = 1/2 and their misassigned areas, by eps: they do
+// not depend on T, so they are computed once per eps.
+std::map<double, std::pair<std::vector<Segment2<double>>, AbsIntegral<Rational>>> surface_polylines(
+    const BSpline<double>& S2d, const std::function<void(const std::string&)>& progress) {
+  std::map<double, std::pair<std::vector<Segment2<double>>, AbsIntegral<Rational>>> polylines;
+  // r*(t) = 1/2 - t(1-t)/3: Bernstein coefficients 1/2, 1/3, 1/2 on [0, 1].
+  const auto rs = bezier<Rational>({2}, 1, {Rational(1, 2), Rational(1, 3), Rational(1, 2)});
+  for (double eps : kEpsList) {
+    if (eps < 1e-9) continue;
+    progress("tolerance study (surface): polyline and misassigned area for eps " + g(eps));
+    TrimmingTolerance tol;
+    tol.eps = eps;
+    tol.grid = 8;
+    auto poly = trace_level_set(S2d, 0, 0.5, tol);
+    auto area = integrate_abs(difference(polyline_graph(poly), rs), 60, Rational(1, 1000000000));
+    polylines.emplace(eps, std::make_pair(std::move(poly), std::move(area)));
+  }
+  return polylines;
+}
+
+// ---- The surface case: trimming polylines within eps --------------------------------------
+std::string surface_case(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok) {
+  const int p = 3;
+  const Rational u0(1, 2);
   // S: the parabola case (experiments/common.hpp); r*(t) is rational at rational t, which lets the
   // misassignment along the lines t = t_i be measured exactly.
   const BSpline<Rational> S2 = parabola_trimming_inner();
@@ -279,22 +306,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
          "enclosure is within 1e-9 relative; both bounds are given).\n\n"
       << "| m | continuity | fitted slope of max error | predicted p-m+1 | max misassigned length at eps=1e-6 | "
          "misassigned area at eps=1e-6 | slope of area | error at eps=1e-6 |\n|---|---|---|---|---|---|---|---|\n";
-  // The polylines and their misassigned areas do not depend on T: computed once per eps.
-  std::map<double, std::pair<std::vector<Segment2<double>>, AbsIntegral<Rational>>> polylines;
-  {
-    // r*(t) = 1/2 - t(1-t)/3: Bernstein coefficients 1/2, 1/3, 1/2 on [0, 1].
-    const auto rs = bezier<Rational>({2}, 1, {Rational(1, 2), Rational(1, 3), Rational(1, 2)});
-    for (double eps : eps_list) {
-      if (eps < 1e-9) continue;
-      progress("tolerance study (surface): polyline and misassigned area for eps " + g(eps));
-      TrimmingTolerance tol;
-      tol.eps = eps;
-      tol.grid = 8;
-      auto poly = trace_level_set(S2d, 0, 0.5, tol);
-      auto area = integrate_abs(difference(polyline_graph(poly), rs), 60, Rational(1, 1000000000));
-      polylines.emplace(eps, std::make_pair(std::move(poly), std::move(area)));
-    }
-  }
+  const auto polylines = surface_polylines(S2d, progress);
   std::vector<PlotSeries> series2;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study (surface): knot multiplicity " + std::to_string(m));
@@ -313,7 +325,7 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
     double len6 = 0, err6 = 0;
     std::string area6;
     std::vector<std::pair<double, double>> area_pts;
-    for (double eps : eps_list) {
+    for (double eps : kEpsList) {
       if (eps < 1e-9) continue;
       const auto& poly = polylines.at(eps).first;
       const auto& area = polylines.at(eps).second;
@@ -357,10 +369,18 @@ std::string run_tolerance_study(const std::string& out_dir, const std::function<
                                        "max |R_eps - T(S)| (exact)", true, true,
                                        "bicubic T, knot of multiplicity m; polyline within eps of s_u = 1/2"},
                                       series2));
-  md << md2.str()
-     << "\nThe polyline's deviation is below eps, not equal to it, so the constant differs from the curve case; the slopes "
-        "are what the continuity predicts. Data: `tolerance_surface.csv`; figure: `tolerance_surface.svg`.\n\n"
-        "![tolerance, surface](tolerance_surface.svg)\n";
+  md2 << "\nThe polyline's deviation is below eps, not equal to it, so the constant differs from the curve case; the slopes "
+         "are what the continuity predicts. Data: `tolerance_surface.csv`; figure: `tolerance_surface.svg`.\n\n"
+         "![tolerance, surface](tolerance_surface.svg)\n";
+  return md2.str();
+}
+
+}  // namespace
+
+std::string run_tolerance_study(const std::string& out_dir, const std::function<void(const std::string&)>& progress, bool& ok) {
+  std::ostringstream md;
+  md << curve_case(out_dir, progress, ok);
+  md << surface_case(out_dir, progress, ok);
   md << volume_case(out_dir, progress, ok);
   return md.str();
 }

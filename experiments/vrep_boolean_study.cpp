@@ -242,87 +242,88 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
         "In double the curved models' faces leave their rounded quadrics by rounding errors: the counts differ from the exact ones.\n\n";
 }
 
-void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
+// A model of the trimmed part: its Boolean exactly and in double, with the times and chi's check.
+struct TrimmedCase {
+  std::string name;
+  TrimmedModel<Rational> model;
+  double exact_s = 0, double_s = 0;
+  std::size_t double_cells = 0;
+  std::string double_note;
+  std::string euler;  // the model's chi and its check
+};
+
+// chi of a model's point set, exactly (model_euler), with its verdict.
+long chi_of(const TrimmedModel<Rational>& M, bool& fine) {
+  const auto e = model_euler(M);
+  fine = fine && e.decided && e.duality;
+  return e.image_chi;
+}
+
+// Figure 4: cone union a cylinder through it.
+TrimmedCase figure4_case(ReportContext& ctx) {
   using R = Rational;
-  ctx.progress("V-rep Booleans: trimmed cells (Figures 4 and 15)");
-  md << "### Cells cut along curved surfaces: trimmed V-cells on exact implicit regions\n\n"
-        "Every primitive here has an exact implicit form (box: six planes; cylinder, cone frustum: a quadric and two planes; "
-        "torus: a quartic). Composed with a cell's trivariate it is a polynomial in the cell's parameters, exactly; its "
-        "Bernstein coefficients decide boxes of the parameter domain (in, out, mixed), subdivision refines the mixed ones, and a "
-        "cell is `whole`, `empty`, `cut` (certified by an inside and an outside box or exact witness point) or undecided "
-        "(tangential contact: a typed error). Volumes are certified enclosures. The cells' own V-surfaces, V-curves and "
-        "V-points are counted below (`trimmed_topology`, `trimmed_curves`).\n\n";
-  struct Case {
-    std::string name;
-    TrimmedModel<R> model;
-    double exact_s = 0, double_s = 0;
-    std::size_t double_cells = 0;
-    std::string double_note;
-    std::string euler;  // the model's chi and its check
-  };
-  // chi of a model's point set, exactly (model_euler), with its verdict.
-  auto chi_of = [&](const TrimmedModel<R>& M, bool& fine) -> long {
-    const auto e = model_euler(M);
-    fine = fine && e.decided && e.duality;
-    return e.image_chi;
-  };
-  std::vector<Case> cases;
-  // Figure 4: cone union a cylinder through it.
+  const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
+  TrimmedCase c;
+  c.name = "Figure 4: cone (r 1 to 1/2, h 2) union cylinder (r 1/3, along x at z = 1)";
+  auto t0 = std::chrono::steady_clock::now();
+  c.model = trimmed_boolean(cone, cyl, BooleanOp::unite);
+  c.exact_s = seconds_since(t0);
   {
-    const auto cone = placed_primitive(cone_cells<R>(R(1), R(1, 2), R(2)), cone_region<R>(R(1), R(1, 2), R(2)), 2, {R(0), R(0), R(0)});
-    const auto cyl = placed_primitive(cylinder_cells<R>(R(1, 3), R(3)), cylinder_region<R>(R(1, 3), R(3)), 0, {R(-3, 2), R(0), R(1)});
-    Case c{"Figure 4: cone (r 1 to 1/2, h 2) union cylinder (r 1/3, along x at z = 1)", {}};
-    auto t0 = std::chrono::steady_clock::now();
-    c.model = trimmed_boolean(cone, cyl, BooleanOp::unite);
-    c.exact_s = seconds_since(t0);
-    {
-      bool fine = true;
-      const long a = chi_of(cone, fine), b = chi_of(cyl, fine), u = chi_of(c.model, fine), i = chi_of(trimmed_boolean(cone, cyl, BooleanOp::intersect), fine);
-      const bool holds = fine && u == a + b - i;
-      ctx.ok = ctx.ok && holds;
-      c.euler = "chi(cone u cylinder) = " + std::to_string(u) + " = chi(cone) " + std::to_string(a) + " + chi(cylinder) " + std::to_string(b) +
-                " - chi(cone n cylinder) " + std::to_string(i) + (holds ? " (all four exact and dual: inclusion-exclusion holds)" : " (CHECK FAILED)");
-    }
-    t0 = std::chrono::steady_clock::now();
-    try {
-      c.double_cells = trimmed_boolean(trimmed_to_double(cone), trimmed_to_double(cyl), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
-    } catch (const Error& e) {
-      c.double_note = e.what();
-    }
-    c.double_s = seconds_since(t0);
-    cases.push_back(std::move(c));
+    bool fine = true;
+    const long a = chi_of(cone, fine), b = chi_of(cyl, fine), u = chi_of(c.model, fine), i = chi_of(trimmed_boolean(cone, cyl, BooleanOp::intersect), fine);
+    const bool holds = fine && u == a + b - i;
+    ctx.ok = ctx.ok && holds;
+    c.euler = "chi(cone u cylinder) = " + std::to_string(u) + " = chi(cone) " + std::to_string(a) + " + chi(cylinder) " + std::to_string(b) +
+              " - chi(cone n cylinder) " + std::to_string(i) + (holds ? " (all four exact and dual: inclusion-exclusion holds)" : " (CHECK FAILED)");
   }
-  // Figure 15's kind of solid: a base plate and a post united, then two holes subtracted.
+  t0 = std::chrono::steady_clock::now();
+  try {
+    c.double_cells = trimmed_boolean(trimmed_to_double(cone), trimmed_to_double(cyl), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12).cells.size();
+  } catch (const Error& e) {
+    c.double_note = e.what();
+  }
+  c.double_s = seconds_since(t0);
+  return c;
+}
+
+// Figure 15's kind of solid: a base plate and a post united, then two holes subtracted.
+TrimmedCase figure15_case(ReportContext& ctx) {
+  using R = Rational;
+  const auto base = placed_primitive(box_cells<R>({-2, -2, 0}, {2, 2, 1}), box_region<R>({-2, -2, 0}, {2, 2, 1}), 2, {R(0), R(0), R(0)});
+  const auto post = placed_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
+  const auto hole1 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
+  const auto hole2 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
+  TrimmedCase c;
+  c.name = "Figure 15's kind: (plate union post) - hole - hole";
+  auto t0 = std::chrono::steady_clock::now();
+  c.model = trimmed_boolean(trimmed_boolean(trimmed_boolean(base, post, BooleanOp::unite), hole1, BooleanOp::subtract), hole2, BooleanOp::subtract);
   {
-    const auto base = placed_primitive(box_cells<R>({-2, -2, 0}, {2, 2, 1}), box_region<R>({-2, -2, 0}, {2, 2, 1}), 2, {R(0), R(0), R(0)});
-    const auto post = placed_primitive(cylinder_cells<R>(R(1), R(3)), cylinder_region<R>(R(1), R(3)), 2, {R(0), R(0), R(0)});
-    const auto hole1 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(3, 2), R(3, 2), R(-1)});
-    const auto hole2 = placed_primitive(cylinder_cells<R>(R(1, 4), R(3)), cylinder_region<R>(R(1, 4), R(3)), 2, {R(-3, 2), R(-3, 2), R(-1)});
-    Case c{"Figure 15's kind: (plate union post) - hole - hole", {}};
-    auto t0 = std::chrono::steady_clock::now();
-    c.model = trimmed_boolean(trimmed_boolean(trimmed_boolean(base, post, BooleanOp::unite), hole1, BooleanOp::subtract), hole2, BooleanOp::subtract);
-    {
-      bool fine = true;
-      const auto P = trimmed_boolean(base, post, BooleanOp::unite);
-      const long p = chi_of(P, fine), p1 = chi_of(trimmed_boolean(P, hole1, BooleanOp::subtract), fine), p2 = chi_of(c.model, fine);
-      const bool holds = fine && p == 1 && p1 == 0 && p2 == -1;
-      ctx.ok = ctx.ok && holds;
-      c.euler = "chi after each Boolean: plate u post " + std::to_string(p) + ", - hole " + std::to_string(p1) + ", - hole " + std::to_string(p2) +
-                (holds ? " (exact and dual; 1, 0, -1: one, then two through-holes)" : " (CHECK FAILED: expected 1, 0, -1)");
-    }
-    c.exact_s = seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
-    try {
-      const auto d = trimmed_boolean(trimmed_boolean(trimmed_boolean(trimmed_to_double(base), trimmed_to_double(post), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12),
-                                                     trimmed_to_double(hole1), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12),
-                                     trimmed_to_double(hole2), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12);
-      c.double_cells = d.cells.size();
-    } catch (const Error& e) {
-      c.double_note = e.what();
-    }
-    c.double_s = seconds_since(t0);
-    cases.push_back(std::move(c));
+    bool fine = true;
+    const auto P = trimmed_boolean(base, post, BooleanOp::unite);
+    const long p = chi_of(P, fine), p1 = chi_of(trimmed_boolean(P, hole1, BooleanOp::subtract), fine), p2 = chi_of(c.model, fine);
+    const bool holds = fine && p == 1 && p1 == 0 && p2 == -1;
+    ctx.ok = ctx.ok && holds;
+    c.euler = "chi after each Boolean: plate u post " + std::to_string(p) + ", - hole " + std::to_string(p1) + ", - hole " + std::to_string(p2) +
+              (holds ? " (exact and dual; 1, 0, -1: one, then two through-holes)" : " (CHECK FAILED: expected 1, 0, -1)");
   }
+  c.exact_s = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  try {
+    const auto d = trimmed_boolean(trimmed_boolean(trimmed_boolean(trimmed_to_double(base), trimmed_to_double(post), BooleanOp::unite, Blend::sum_clipped, {}, 1e-12),
+                                                   trimmed_to_double(hole1), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12),
+                                   trimmed_to_double(hole2), BooleanOp::subtract, Blend::sum_clipped, {}, 1e-12);
+    c.double_cells = d.cells.size();
+  } catch (const Error& e) {
+    c.double_note = e.what();
+  }
+  c.double_s = seconds_since(t0);
+  return c;
+}
+
+// The models' table: V-cells by category and status, trivariates, the certified volume, the Booleans' times.
+void models_table(std::ostringstream& md, const std::vector<TrimmedCase>& cases) {
+  using R = Rational;
   md << "| model | V-cells (only A / both / only B after the last union; whole / cut) | trivariates (degrees, control points) | volume (certified, adaptive: 1% relative width) | "
         "Boolean time exact / double (s) | V-cells in double (eps 1e-12) |\n|---|---|---|---|---|---|\n";
   for (const auto& c : cases) {
@@ -334,8 +335,11 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
       ++cat[x.category];
       whole += x.status == Truth::in;
       const auto& V = c.model.trivariates[x.trivariate];
-      ++sizes["(" + std::to_string(V.degrees[0]) + "," + std::to_string(V.degrees[1]) + "," + std::to_string(V.degrees[2]) + "), " +
-              std::to_string(V.size())];
+      // Appended to, not prepended: GCC 12 -O3 reports "(" + std::string&& here as -Wrestrict (a false positive).
+      std::string key = "(";
+      key += std::to_string(V.degrees[0]) + "," + std::to_string(V.degrees[1]) + "," + std::to_string(V.degrees[2]) + "), " +
+             std::to_string(V.size());
+      ++sizes[key];
       integrands.push_back({&V, &x.trim, nullptr});
     }
     // One adaptive run over every cell (integral_enclosures): the widest boxes refined first until
@@ -348,8 +352,66 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
        << " / " << c.model.cells.size() - whole << ") | " << sz.str() << " | [" << six_digits(lo, false) << ", " << six_digits(hi, true) << "] | " << std::setprecision(3) << c.exact_s << " / " << c.double_s << " | "
        << (c.double_note.empty() ? std::to_string(c.double_cells) : "refused: " + c.double_note) << " |\n";
   }
-  // The boundary structure of every cell (trimmed_topology): exact on the edges, lower bounds on
-  // the half-V-surfaces.
+}
+
+// One cell's row of the boundary-structure table: trimmed_topology, trimmed_curves (exact, and the
+// double run on the model rounded to double, d), trimmed_euler, with their times.
+void topology_row(std::ostringstream& md, const TrimmedCase& c, std::size_t k, const TrimmedModel<double>& d) {
+  using R = Rational;
+  const auto& x = c.model.cells[k];
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto t = trimmed_topology(c.model.trivariates[x.trivariate], x.trim, 1024);
+  std::size_t pieces = 0, points = 0, faces = 0, face_cover = 0, trims = 0, trim_cover = 0, odd = 0;
+  for (const auto& e : t.edges) {
+    pieces += e.pieces;
+    points += e.points;
+    odd += !e.status.is_certain() || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
+  }
+  std::size_t face_pieces = 0, trim_pieces = 0;
+  std::string face_undecided, trim_undecided;
+  for (const auto& sf : t.surfaces) {
+    (sf.leaf < 0 ? faces : trims) += sf.at_least, (sf.leaf < 0 ? face_cover : trim_cover) += sf.cover;
+    if (sf.collapsed) continue;
+    (sf.leaf < 0 ? face_pieces : trim_pieces) += sf.pieces;
+    if (!sf.decided) (sf.leaf < 0 ? face_undecided : trim_undecided) = sf.undecided_reason;
+  }
+  std::size_t curves = 0, curve_cover = 0, exact_curves = 0;
+  bool curves_decided = true;
+  for (const auto& fc : t.face_curves) {
+    curves += fc.at_least, curve_cover += fc.cover;
+    exact_curves += fc.arcs + fc.loops;
+    curves_decided = curves_decided && fc.decided;
+  }
+  md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
+     << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << t.face_points << " / "
+     << t.interior_points << (t.points_undecided ? " (" + std::to_string(t.points_undecided) + ")" : "") << " | " << faces << " ("
+     << face_cover << "; exact: " << (face_undecided.empty() ? std::to_string(face_pieces) : "undecided: " + face_undecided) << ") | " << trims << " (" << trim_cover << "; exact: " << (trim_undecided.empty() ? std::to_string(trim_pieces) : "undecided: " + trim_undecided) << ") | " << curves << " (" << curve_cover << "; exact: " << (curves_decided ? std::to_string(exact_curves) : std::string("undecided")) << ") | " << std::setprecision(3)
+     << seconds_since(t0) << " | ";
+  const auto tc = std::chrono::steady_clock::now();
+  const auto cv = trimmed_curves(c.model.trivariates[x.trivariate], x.trim);
+  if (cv.decided) md << cv.arcs << " / " << cv.loops;
+  else {
+    std::string why;
+    for (const auto& p : cv.pairs)
+      if (!p.decided) why = p.undecided_reason;
+    md << cv.arcs << " / " << cv.loops << " (decided pairs; undecided: " << why << ")";
+  }
+  md << " | " << std::setprecision(3) << seconds_since(tc) << " | ";
+  {
+    const auto cd = trimmed_curves(d.trivariates[x.trivariate], d.cells[k].trim);
+    const auto cmp = compare_curves(cv, cd);
+    md << cmp[0] << " / " << cmp[1] << " / " << cmp[2] << " | ";
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  const auto eu = trimmed_euler(c.model.trivariates[x.trivariate], x.trim);
+  if (eu.decided) md << eu.chi << " / " << eu.image_chi << (eu.duality ? ", dual" : ", not dual");
+  else md << "undecided: " << eu.undecided_reason;
+  md << " | " << std::setprecision(3) << seconds_since(t1) << " |\n";
+}
+
+// The boundary structure of every cell (trimmed_topology): exact on the edges, lower bounds on
+// the half-V-surfaces.
+void topology_table(std::ostringstream& md, const std::vector<TrimmedCase>& cases) {
   md << "\n**Their trimmed cells' boundary structure** (`trimmed_topology`, 1024 boxes per cell; exact: corners of the trivariate in the "
         "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
         "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
@@ -363,57 +425,66 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   std::vector<TrimmedModel<double>> D;  // the cases rounded to double, for the curves' double run
   for (const auto& c : cases) D.push_back(trimmed_to_double(c.model));
   for (const auto& c : cases)
-    for (std::size_t k = 0; k < c.model.cells.size(); ++k) {
-      const auto& x = c.model.cells[k];
-      const auto t0 = std::chrono::steady_clock::now();
-      const auto t = trimmed_topology(c.model.trivariates[x.trivariate], x.trim, 1024);
-      std::size_t pieces = 0, points = 0, faces = 0, face_cover = 0, trims = 0, trim_cover = 0, odd = 0;
-      for (const auto& e : t.edges) {
-        pieces += e.pieces;
-        points += e.points;
-        odd += !e.status.is_certain() || e.status == TrimmedTopology<R>::Edge::on_trimming_surface;
-      }
-      std::size_t face_pieces = 0, trim_pieces = 0;
-      std::string face_undecided, trim_undecided;
-      for (const auto& sf : t.surfaces) {
-        (sf.leaf < 0 ? faces : trims) += sf.at_least, (sf.leaf < 0 ? face_cover : trim_cover) += sf.cover;
-        if (sf.collapsed) continue;
-        (sf.leaf < 0 ? face_pieces : trim_pieces) += sf.pieces;
-        if (!sf.decided) (sf.leaf < 0 ? face_undecided : trim_undecided) = sf.undecided_reason;
-      }
-      std::size_t curves = 0, curve_cover = 0, exact_curves = 0;
-      bool curves_decided = true;
-      for (const auto& fc : t.face_curves) {
-        curves += fc.at_least, curve_cover += fc.cover;
-        exact_curves += fc.arcs + fc.loops;
-        curves_decided = curves_decided && fc.decided;
-      }
-      md << "| " << (k == 0 ? c.name.substr(0, c.name.find(':')) : "") << " | " << k << " (" << (x.category.empty() ? "input" : x.category) << ") | " << t.corners << " | " << pieces
-         << (odd ? " (" + std::to_string(odd) + " edges on a trimming surface or undecided)" : "") << " | " << points << " | " << t.face_points << " / "
-         << t.interior_points << (t.points_undecided ? " (" + std::to_string(t.points_undecided) + ")" : "") << " | " << faces << " ("
-         << face_cover << "; exact: " << (face_undecided.empty() ? std::to_string(face_pieces) : "undecided: " + face_undecided) << ") | " << trims << " (" << trim_cover << "; exact: " << (trim_undecided.empty() ? std::to_string(trim_pieces) : "undecided: " + trim_undecided) << ") | " << curves << " (" << curve_cover << "; exact: " << (curves_decided ? std::to_string(exact_curves) : std::string("undecided")) << ") | " << std::setprecision(3)
-         << seconds_since(t0) << " | ";
-      const auto tc = std::chrono::steady_clock::now();
-      const auto cv = trimmed_curves(c.model.trivariates[x.trivariate], x.trim);
-      if (cv.decided) md << cv.arcs << " / " << cv.loops;
-      else {
-        std::string why;
-        for (const auto& p : cv.pairs)
-          if (!p.decided) why = p.undecided_reason;
-        md << cv.arcs << " / " << cv.loops << " (decided pairs; undecided: " << why << ")";
-      }
-      md << " | " << std::setprecision(3) << seconds_since(tc) << " | ";
-      {
-        const auto cd = trimmed_curves(D[&c - cases.data()].trivariates[x.trivariate], D[&c - cases.data()].cells[k].trim);
-        const auto cmp = compare_curves(cv, cd);
-        md << cmp[0] << " / " << cmp[1] << " / " << cmp[2] << " | ";
-      }
-      const auto t1 = std::chrono::steady_clock::now();
-      const auto eu = trimmed_euler(c.model.trivariates[x.trivariate], x.trim);
-      if (eu.decided) md << eu.chi << " / " << eu.image_chi << (eu.duality ? ", dual" : ", not dual");
-      else md << "undecided: " << eu.undecided_reason;
-      md << " | " << std::setprecision(3) << seconds_since(t1) << " |\n";
+    for (std::size_t k = 0; k < c.model.cells.size(); ++k) topology_row(md, c, k, D[&c - cases.data()]);
+}
+
+// The price of tolerance at a curved contact: the plane x = 1 + g against the cylinder r = 1.
+void near_tangent_part(std::ostringstream& md) {
+  using R = Rational;
+  md << "#### Near-tangent contact: the box x >= 1 + g against the cylinder r = 1 (tangent at g = 0)\n\n"
+        "Intersection, exactly (budget 4096 boxes per cell) and in double with eps = 1e-12 and 1e-6 (coefficients within eps "
+        "count as 0). Exact arithmetic decides every g it can certify with the budget and refuses the rest; the float run "
+        "decides by eps.\n\n| g | exact | double, eps 1e-12 | double, eps 1e-6 |\n|---|---|---|---|\n";
+  const auto cyl = placed_primitive(cylinder_cells<R>(R(1), R(2)), cylinder_region<R>(R(1), R(2)), 2, {R(0), R(0), R(0)});
+  auto verdict = [](auto&& run) -> std::string {
+    try {
+      const auto M = run();
+      std::size_t cut = 0;
+      for (const auto& c : M.cells) cut += c.status != Truth::in;
+      return std::to_string(M.cells.size()) + (M.cells.size() == 1 ? " cell (" : " cells (") + std::to_string(cut) + " cut)";
+    } catch (const DomainError& e) {
+      const std::string w = e.what();
+      return w.find("tangential") != std::string::npos ? "refused: tangential" : w.find("empty") != std::string::npos ? "empty" : "refused";
     }
+  };
+  for (int sign : {-1, 0, 1})
+    for (int k : {4, 10, 20, 30, 40}) {
+      if (sign == 0 && k != 4) continue;
+      const R g = sign == 0 ? R(0) : R(sign) / R(1LL << k);
+      const auto box = placed_primitive(box_cells<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}),
+                                       box_region<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}), 2, {R(0), R(0), R(0)});
+      const std::string ex = verdict([&] { return trimmed_boolean(cyl, box, BooleanOp::intersect); });
+      const std::string d12 = verdict([&] {
+        return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-12);
+      });
+      const std::string d6 = verdict([&] {
+        return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
+      });
+      md << "| " << (sign == 0 ? std::string("0") : std::string(sign < 0 ? "-" : "") + "2^-" + std::to_string(k)) << " | " << ex << " | " << d12
+         << " | " << d6 << " |\n";
+    }
+  md << "\nThe truth: for g < 0 one sector is cut (a sliver of width |g| and volume about (8/3) sqrt 2 |g|^(3/2) over the "
+        "height 2), for g = 0 the intersection has no volume, for g > 0 it is empty. Where the float run says `empty` for "
+        "g < 0 it is wrong (the sliver exists); where exact arithmetic cannot certify within its budget it says so and never "
+        "answers wrongly.\n\n";
+}
+
+// Trimmed cells on exact regions: Figures 4 and 15, their cells' boundary structure, the models'
+// Euler characteristics, the gluing, a near-tangent contact; the figures' files.
+void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
+  ctx.progress("V-rep Booleans: trimmed cells (Figures 4 and 15)");
+  md << "### Cells cut along curved surfaces: trimmed V-cells on exact implicit regions\n\n"
+        "Every primitive here has an exact implicit form (box: six planes; cylinder, cone frustum: a quadric and two planes; "
+        "torus: a quartic). Composed with a cell's trivariate it is a polynomial in the cell's parameters, exactly; its "
+        "Bernstein coefficients decide boxes of the parameter domain (in, out, mixed), subdivision refines the mixed ones, and a "
+        "cell is `whole`, `empty`, `cut` (certified by an inside and an outside box or exact witness point) or undecided "
+        "(tangential contact: a typed error). Volumes are certified enclosures. The cells' own V-surfaces, V-curves and "
+        "V-points are counted below (`trimmed_topology`, `trimmed_curves`).\n\n";
+  std::vector<TrimmedCase> cases;
+  cases.push_back(figure4_case(ctx));
+  cases.push_back(figure15_case(ctx));
+  models_table(md, cases);
+  topology_table(md, cases);
   curves_sweep(md);
   md << "\n**The models' Euler characteristic after every Boolean** (`model_euler`: the region's chi in a box around the model, exact):\n\n";
   for (const auto& c : cases) md << "- " << c.name.substr(0, c.name.find(':')) << ": " << c.euler << "\n";
@@ -425,45 +496,7 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
         "surfaces; VTK files of the same voxels for ParaView are beside them).\n\n"
         "![Figure 4](vrep_boolean_figure4.svg)\n\n![Figure 15](vrep_boolean_figure15.svg)\n\n";
   glue_part(ctx, md, cases[0].model, cases[1].model);
-  // The price of tolerance at a curved contact: the plane x = 1 + g against the cylinder r = 1.
-  md << "#### Near-tangent contact: the box x >= 1 + g against the cylinder r = 1 (tangent at g = 0)\n\n"
-        "Intersection, exactly (budget 4096 boxes per cell) and in double with eps = 1e-12 and 1e-6 (coefficients within eps "
-        "count as 0). Exact arithmetic decides every g it can certify with the budget and refuses the rest; the float run "
-        "decides by eps.\n\n| g | exact | double, eps 1e-12 | double, eps 1e-6 |\n|---|---|---|---|\n";
-  {
-    const auto cyl = placed_primitive(cylinder_cells<R>(R(1), R(2)), cylinder_region<R>(R(1), R(2)), 2, {R(0), R(0), R(0)});
-    auto verdict = [](auto&& run) -> std::string {
-      try {
-        const auto M = run();
-        std::size_t cut = 0;
-        for (const auto& c : M.cells) cut += c.status != Truth::in;
-        return std::to_string(M.cells.size()) + (M.cells.size() == 1 ? " cell (" : " cells (") + std::to_string(cut) + " cut)";
-      } catch (const DomainError& e) {
-        const std::string w = e.what();
-        return w.find("tangential") != std::string::npos ? "refused: tangential" : w.find("empty") != std::string::npos ? "empty" : "refused";
-      }
-    };
-    for (int sign : {-1, 0, 1})
-      for (int k : {4, 10, 20, 30, 40}) {
-        if (sign == 0 && k != 4) continue;
-        const R g = sign == 0 ? R(0) : R(sign) / R(1LL << k);
-        const auto box = placed_primitive(box_cells<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}),
-                                         box_region<R>({R(1) + g, R(-2), R(-1)}, {R(2), R(2), R(3)}), 2, {R(0), R(0), R(0)});
-        const std::string ex = verdict([&] { return trimmed_boolean(cyl, box, BooleanOp::intersect); });
-        const std::string d12 = verdict([&] {
-          return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-12);
-        });
-        const std::string d6 = verdict([&] {
-          return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
-        });
-        md << "| " << (sign == 0 ? std::string("0") : std::string(sign < 0 ? "-" : "") + "2^-" + std::to_string(k)) << " | " << ex << " | " << d12
-           << " | " << d6 << " |\n";
-      }
-  }
-  md << "\nThe truth: for g < 0 one sector is cut (a sliver of width |g| and volume about (8/3) sqrt 2 |g|^(3/2) over the "
-        "height 2), for g = 0 the intersection has no volume, for g > 0 it is empty. Where the float run says `empty` for "
-        "g < 0 it is wrong (the sliver exists); where exact arithmetic cannot certify within its budget it says so and never "
-        "answers wrongly.\n\n";
+  near_tangent_part(md);
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure4.svg",
                         trimmed_svg(cases[0].model, 0.6, "Figure 4: cone union cylinder, trimmed V-cells exploded"));
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure4.vtu", trimmed_vtu(cases[0].model));
@@ -472,13 +505,8 @@ void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure15.vtu", trimmed_vtu(cases[1].model));
 }
 
-}  // namespace
-
-void vrep_boolean_section(ReportContext& ctx) {
-  ctx.progress("V-rep Booleans: Figure 3, colour blending, the price of tolerance");
-  std::ostringstream md;
-  md << "\n## V-rep Booleans (issue 18, first part: cells with planar faces, exact cuts)\n\n";
-  // Figure 3.
+// Figure 3: the paper's counts, the program's and CGAL's Nef polyhedra's.
+void figure3_part(ReportContext& ctx, std::ostringstream& md) {
   const auto O1 = exact_box({0, 0, 0}, {2, 1, 1}), O2 = exact_box({1, 0, 0}, {2, 2, 1});
   const auto U = boolean_op(O1, O2, BooleanOp::unite);
   std::size_t vc1_surfaces = 0, vc1_halves = 0, p1_curves = 0;
@@ -509,7 +537,10 @@ void vrep_boolean_section(ReportContext& ctx) {
      << "![Figure 3](vrep_boolean_figure3.svg)\n\n";
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure3.svg",
                         vmodel_svg(U, 0.35, "Figure 3: O1 union O2, three V-cells (the middle one holds both trivariates)", false));
-  // Figure 5: four coloured models, colours summed (clipped) where they overlap.
+}
+
+// Figure 5: four coloured models, colours summed (clipped) where they overlap.
+void figure5_part(ReportContext& ctx, std::ostringstream& md) {
   std::vector<VModel<Rational>> four{exact_box({0, 0, 0}, {2, 2, 1}), exact_box({1, 1, 0}, {3, 3, 1}),
                                      exact_box({1, -1, 0}, {3, 1, 1}), exact_box({-1, 1, 0}, {1, 3, 1})};
   const std::vector<std::vector<Rational>> colours{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {Rational(1, 2), Rational(1, 2), 0}};
@@ -527,65 +558,67 @@ void vrep_boolean_section(ReportContext& ctx) {
      << "![Figure 5](vrep_boolean_colours.svg)\n\n";
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_colours.svg",
                         vmodel_svg(all, 0.25, "Four boxes united, colours summed where they overlap", false));
+}
 
-  // Figure 6: Eq. 2's distance blend on a slice, with the singular points r.
-  {
-    const auto W1 = exact_box({0, 0, 0}, {2, 2, 10}), W2 = exact_box({1, 1, -1}, {3, 3, 11});
-    const DistanceBlend blend(W1, W2);
-    const std::vector<Rational> red{1, 0, 0}, blue{0, 0, 1};
-    const int n = 60;
-    const double px = 6.0, margin = 30.0;
-    std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << n * px + 2 * margin << "\" height=\"" << n * px + 2 * margin + 30
-        << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << margin << "\" y=\"20\" font-family=\"sans-serif\" "
-           "font-size=\"12\">Eq. 2, slice z = 5: V1 red, V2 blue, r circled</text>\n";
-    std::size_t singular = 0, points = 0;
-    Rational widest(0);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const std::vector<Rational> p{Rational(2 * i + 1, 2 * n) * 3, Rational(2 * j + 1, 2 * n) * 3, Rational(5)};
-        if (!blend.in_first(p) && !blend.in_second(p)) continue;
-        const auto v = blend.at(p, red, blue);
-        ++points;
-        std::string fill = "black";
-        if (v.singular) ++singular;
-        else {
-          int rgb[3];
-          for (int c = 0; c < 3; ++c) {
-            rgb[c] = static_cast<int>(255.0 * to_double((v.value[c].lo + v.value[c].hi) / 2) + 0.5);
-            if (widest < v.value[c].hi - v.value[c].lo) widest = v.value[c].hi - v.value[c].lo;
-          }
-          std::ostringstream f;
-          f << "rgb(" << rgb[0] << "," << rgb[1] << "," << rgb[2] << ")";
-          fill = f.str();
+// Figure 6: Eq. 2's distance blend on a slice, with the singular points r.
+void figure6_part(ReportContext& ctx, std::ostringstream& md) {
+  const auto W1 = exact_box({0, 0, 0}, {2, 2, 10}), W2 = exact_box({1, 1, -1}, {3, 3, 11});
+  const DistanceBlend blend(W1, W2);
+  const std::vector<Rational> red{1, 0, 0}, blue{0, 0, 1};
+  const int n = 60;
+  const double px = 6.0, margin = 30.0;
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << n * px + 2 * margin << "\" height=\"" << n * px + 2 * margin + 30
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << margin << "\" y=\"20\" font-family=\"sans-serif\" "
+         "font-size=\"12\">Eq. 2, slice z = 5: V1 red, V2 blue, r circled</text>\n";
+  std::size_t singular = 0, points = 0;
+  Rational widest(0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const std::vector<Rational> p{Rational(2 * i + 1, 2 * n) * 3, Rational(2 * j + 1, 2 * n) * 3, Rational(5)};
+      if (!blend.in_first(p) && !blend.in_second(p)) continue;
+      const auto v = blend.at(p, red, blue);
+      ++points;
+      std::string fill = "black";
+      if (v.singular) ++singular;
+      else {
+        int rgb[3];
+        for (int c = 0; c < 3; ++c) {
+          rgb[c] = static_cast<int>(255.0 * to_double((v.value[c].lo + v.value[c].hi) / 2) + 0.5);
+          if (widest < v.value[c].hi - v.value[c].lo) widest = v.value[c].hi - v.value[c].lo;
         }
-        svg << "<rect x=\"" << margin + i * px << "\" y=\"" << margin + 10 + (n - 1 - j) * px << "\" width=\"" << px << "\" height=\"" << px
-            << "\" fill=\"" << fill << "\"/>\n";
+        std::ostringstream f;
+        f << "rgb(" << rgb[0] << "," << rgb[1] << "," << rgb[2] << ")";
+        fill = f.str();
       }
-    for (const auto& r : std::vector<std::array<double, 2>>{{2, 1}, {1, 2}})
-      svg << "<circle cx=\"" << margin + r[0] / 3 * n * px << "\" cy=\"" << margin + 10 + (1 - r[1] / 3) * n * px
-          << "\" r=\"5\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"/>\n";
-    svg << "</svg>\n";
-    write_file_atomically(ctx.options.out_dir + "/vrep_boolean_eq2.svg", svg.str());
-    const auto r1 = blend.at({2, 1, 5}, red, blue), mid = blend.at({Rational(3, 2), Rational(3, 2), 5}, red, blue),
-               q = blend.at({Rational(7, 4), Rational(5, 4), 5}, red, blue), k2 = blend.at({Rational(7, 4), Rational(3, 2), 5}, red, blue, 2);
-    md << "### Figure 6: Eq. 2's distance blend, certified\n\n"
-       << "V1 = [0,2]^2 x [0,10] (red) and V2 = [1,3]^2 x [-1,11] (blue), the slice z = 5. In V1 n V2 the colour is "
-          "(d1 A1 + d2 A2) / (d1 + d2), d1 the distance to the part of V1's boundary inside V2, d2 the other way: squared "
-          "distances exact, their roots and the blend enclosed by MPFI at 128 bits (`vrep/primitives/blend.hpp`). Over "
-       << points << " sample points the widest enclosure is " << sci(to_double(widest))
-       << " wide; where d1 or d2 is exactly 0 (the interfaces) the value is exactly A2 or A1, which is the C^0 continuity "
-          "of Eq. 2 across them, checked exactly; "
-       << singular << " of the samples land on a singular point (black), and the two points r = (2, 1) and (1, 2) (circled) are: "
-       << (r1.singular ? "`at(2, 1, 5)` answers singular" : "**r is not reported singular**")
-       << ". Values: at (3/2, 3/2) red = [" << to_double(mid.value[0].lo) << ", " << to_double(mid.value[0].hi) << "] (d1^2 = "
-       << to_fraction_string(mid.d1_squared) << ", d2^2 = " << to_fraction_string(mid.d2_squared) << "); at (7/4, 5/4) red = ["
-       << to_double(q.value[0].lo) << ", " << to_double(q.value[0].hi) << "]; the k = 2 variant at (7/4, 3/2): red = ["
-       << to_double(k2.value[0].lo) << ", " << to_double(k2.value[0].hi) << "].\n\n![Eq. 2](vrep_boolean_eq2.svg)\n\n";
-  }
+      svg << "<rect x=\"" << margin + i * px << "\" y=\"" << margin + 10 + (n - 1 - j) * px << "\" width=\"" << px << "\" height=\"" << px
+          << "\" fill=\"" << fill << "\"/>\n";
+    }
+  for (const auto& r : std::vector<std::array<double, 2>>{{2, 1}, {1, 2}})
+    svg << "<circle cx=\"" << margin + r[0] / 3 * n * px << "\" cy=\"" << margin + 10 + (1 - r[1] / 3) * n * px
+        << "\" r=\"5\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"/>\n";
+  svg << "</svg>\n";
+  write_file_atomically(ctx.options.out_dir + "/vrep_boolean_eq2.svg", svg.str());
+  const auto r1 = blend.at({2, 1, 5}, red, blue), mid = blend.at({Rational(3, 2), Rational(3, 2), 5}, red, blue),
+             q = blend.at({Rational(7, 4), Rational(5, 4), 5}, red, blue), k2 = blend.at({Rational(7, 4), Rational(3, 2), 5}, red, blue, 2);
+  md << "### Figure 6: Eq. 2's distance blend, certified\n\n"
+     << "V1 = [0,2]^2 x [0,10] (red) and V2 = [1,3]^2 x [-1,11] (blue), the slice z = 5. In V1 n V2 the colour is "
+        "(d1 A1 + d2 A2) / (d1 + d2), d1 the distance to the part of V1's boundary inside V2, d2 the other way: squared "
+        "distances exact, their roots and the blend enclosed by MPFI at 128 bits (`vrep/primitives/blend.hpp`). Over "
+     << points << " sample points the widest enclosure is " << sci(to_double(widest))
+     << " wide; where d1 or d2 is exactly 0 (the interfaces) the value is exactly A2 or A1, which is the C^0 continuity "
+        "of Eq. 2 across them, checked exactly; "
+     << singular << " of the samples land on a singular point (black), and the two points r = (2, 1) and (1, 2) (circled) are: "
+     << (r1.singular ? "`at(2, 1, 5)` answers singular" : "**r is not reported singular**")
+     << ". Values: at (3/2, 3/2) red = [" << to_double(mid.value[0].lo) << ", " << to_double(mid.value[0].hi) << "] (d1^2 = "
+     << to_fraction_string(mid.d1_squared) << ", d2^2 = " << to_fraction_string(mid.d2_squared) << "); at (7/4, 5/4) red = ["
+     << to_double(q.value[0].lo) << ", " << to_double(q.value[0].hi) << "]; the k = 2 variant at (7/4, 3/2): red = ["
+     << to_double(k2.value[0].lo) << ", " << to_double(k2.value[0].hi) << "].\n\n![Eq. 2](vrep_boolean_eq2.svg)\n\n";
+}
 
-  // The price of tolerance: A = [0,1]^3 and B = [1 + g, 2] x [0,1] x [0,1] (a gap, g > 0) or
-  // overlapping by |g| (g < 0), united exactly and in double at eps.
+// The price of tolerance: A = [0,1]^3 and B = [1 + g, 2] x [0,1] x [0,1] (a gap, g > 0) or
+// overlapping by |g| (g < 0), united exactly and in double at eps.
+void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
   md << "### The price of a tolerance in Booleans: two boxes 2^-k apart or overlapping\n\n"
      << "A = [0,1]^3 and B = [1 + g, 2] x [0,1] x [0,1]: a gap of g > 0 or an overlap of -g. The union runs exactly and, on "
         "the boxes rounded to double, with the float tests at eps (|value| <= eps is 0, cuts within eps merged, gluing "
@@ -652,6 +685,18 @@ void vrep_boolean_section(ReportContext& ctx) {
         "breaks is the topology and the bookkeeping of volume, which is what a V-model adds to a B-rep.\n\n"
         "![tolerance](vrep_boolean_tolerance.svg)\n\n"
      ;
+}
+
+}  // namespace
+
+void vrep_boolean_section(ReportContext& ctx) {
+  ctx.progress("V-rep Booleans: Figure 3, colour blending, the price of tolerance");
+  std::ostringstream md;
+  md << "\n## V-rep Booleans (issue 18, first part: cells with planar faces, exact cuts)\n\n";
+  figure3_part(ctx, md);
+  figure5_part(ctx, md);
+  figure6_part(ctx, md);
+  tolerance_part(ctx, md);
   trimmed_part(ctx, md);
   md << "Not built yet (issue 18 stays open): exact counts of the half-V-surfaces of trimmed cells (their V-points, "
         "V-curves and Euler characteristic are exact, above); the gluing of "

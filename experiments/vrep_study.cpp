@@ -153,21 +153,33 @@ std::vector<Judged> judge_constructors() {
   return out;
 }
 
-}  // namespace
+// A primitive of issue 17 and its exact cells.
+struct Prim {
+  const char* name;
+  std::vector<BSpline<Rational>> cells;
+};
 
-void vrep_section(ReportContext& ctx) {
-  ctx.progress("V-rep: figures, gluing tolerance and float regularity");
-  struct Prim {
-    const char* name;
-    std::vector<BSpline<Rational>> cells;
-  };
-  const std::vector<Prim> prims{{"cylinder", cylinder_cells<Rational>(Rational(2), Rational(3))},
-                                {"cone", cone_cells<Rational>(Rational(2), Rational(1), Rational(3))},
-                                {"torus", torus_cells<Rational>(Rational(3), Rational(1))},
-                                {"sphere", sphere_cells<Rational>(Rational(2))}};
+// The primitives glued and drawn: cylinder, cone, torus, sphere.
+std::vector<Prim> primitives() {
+  return {{"cylinder", cylinder_cells<Rational>(Rational(2), Rational(3))},
+          {"cone", cone_cells<Rational>(Rational(2), Rational(1), Rational(3))},
+          {"torus", torus_cells<Rational>(Rational(3), Rational(1))},
+          {"sphere", sphere_cells<Rational>(Rational(2))}};
+}
+
+// A number for the tables: scientific, 3 digits after the point.
+std::string fmt_sci(double v) {
+  std::ostringstream o;
+  o << std::setprecision(3) << std::scientific << v;
+  return o.str();
+}
+
+// The gluing table: each primitive's internal V-surfaces moved by delta, glued exactly and in double
+// at eps; vrep_gluing.csv. Returns the cylinder's false glues against eps, per delta, for the figure.
+std::map<int, PlotSeries> gluing_table(ReportContext& ctx, std::ostringstream& md, const std::vector<Prim>& prims) {
   const std::vector<double> epss{1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
   const std::vector<int> delta_exp{-10, -20, -30, -40, -50, 0};  // 0: delta = 0
-  std::ostringstream csv, md;
+  std::ostringstream csv;
   csv << "primitive,delta,eps,internal_exact,internal_double,false_glues,missed_glues\n";
   md << "\n## V-rep: what a gluing tolerance does to the topology (issue 17)\n\n"
      << "![cylinder](vrep_cylinder.svg) ![cone](vrep_cone.svg) ![torus](vrep_torus.svg) ![sphere](vrep_sphere.svg)\n\n"
@@ -214,7 +226,11 @@ void vrep_section(ReportContext& ctx) {
     }
   }
   write_file_atomically(ctx.options.out_dir + "/vrep_gluing.csv", csv.str());
-  // Figures: the primitives exploded (Figure 9) and Figure 8's singular trivariates with det J = 0 marked.
+  return series;
+}
+
+// Figures: the primitives exploded (Figure 9) and Figure 8's singular trivariates with det J = 0 marked.
+void write_figures(ReportContext& ctx, const std::vector<Prim>& prims, const std::map<int, PlotSeries>& series) {
   for (const auto& p : prims)
     write_file_atomically(ctx.options.out_dir + "/vrep_" + p.name + ".svg",
                           vmodel_svg(glue(p.cells), 0.35,
@@ -224,20 +240,16 @@ void vrep_section(ReportContext& ctx) {
   write_file_atomically(ctx.options.out_dir + "/vrep_singular_sphere.svg",
                         vmodel_svg(glue(std::vector<BSpline<Rational>>{singular_sphere<Rational>(Rational(1))}), 0, "Figure 8 b: one trivariate, singular on its axis", true));
   std::vector<PlotSeries> plot;
-  for (auto& [e, s] : series) plot.push_back(s);
+  for (const auto& [e, s] : series) plot.push_back(s);
   write_file_atomically(ctx.options.out_dir + "/vrep_gluing.svg",
                         svg_line_plot({"Gluing the perturbed cylinder in double: false glues against eps", "eps",
                                        "false glues (of 8 internal V-surfaces)", true, false,
                                        "one corner control point of every shared face moved by delta (exactly)"},
                                       plot));
-  md << "\nExactly, nothing glues once anything is moved (every shared face differs). A glue is false as "
-        "soon as eps exceeds the displacement: the float test cannot tell a perturbation below eps from rounding. (A corner "
-        "that is the first control point of several such faces of one cell moves by 2 or 3 delta: hence the sphere's 10 "
-        "of 18 at eps just above delta.) Rounding itself "
-        "misses no glue of these primitives down to eps = 1e-15 (their shared faces are computed the same way in both "
-        "cells, so they round alike).\n\n![false glues](vrep_gluing.svg)\n\n";
+}
 
-  // The sphere's radius: certified deviation against degree and pieces.
+// The sphere's radius: certified deviation against degree and pieces.
+void sphere_radius_part(ReportContext& ctx, std::ostringstream& md) {
   md << "### The sphere of seven cells: how far its patches are from the sphere\n\n"
      << "No cube-sphere patch has rational coefficients (its corners are (+-1, +-1, +-1)/sqrt 3), so the patches are "
         "exact in direction and approximate in radius: (r s, r t, r, P(s, t)) with P the tensor spline interpolating "
@@ -247,11 +259,6 @@ void vrep_section(ReportContext& ctx) {
         "| degree | pieces | bound | witness |\n|---|---|---|---|\n";
   std::ostringstream scsv;
   scsv << "degree,pieces,bound,witness\n";
-  auto fmt_sci = [](double v) {
-    std::ostringstream o;
-    o << std::setprecision(3) << std::scientific << v;
-    return o.str();
-  };
   for (int p : {2, 3, 4, 5})
     for (int n : {1, 2, 4, 8}) {
       const auto cells = sphere_cells<Rational>(Rational(1), p, n);
@@ -261,8 +268,10 @@ void vrep_section(ReportContext& ctx) {
     }
   write_file_atomically(ctx.options.out_dir + "/vrep_sphere_radius.csv", scsv.str());
   md << "\n";
+}
 
-  // The constructors in double, judged exactly.
+// The constructors in double, judged exactly.
+void constructors_part(ReportContext& ctx, std::ostringstream& md) {
   md << "### The constructors and primitives in double, judged exactly\n\n"
      << "Each constructor runs exactly and in double on the same input (rounded to double for the double run); the "
         "double result is converted exactly and subtracted. `points`: all control point coordinates; `values`: the "
@@ -280,8 +289,10 @@ void vrep_section(ReportContext& ctx) {
   }
   write_file_atomically(ctx.options.out_dir + "/vrep_constructors.csv", kcsv.str());
   md << "\n";
+}
 
-  // Regularity in double near the singular threshold s = 1/3.
+// Regularity in double near the singular threshold s = 1/3.
+void regularity_part(ReportContext& ctx, std::ostringstream& md) {
   md << "### Certified regularity in double near a singular configuration\n\n"
      << "The trilinear unit cube with corner (1, 1, 1) moved to (1 - s)(1, 1, 1), s = 1/3 + e: det J at that corner is "
         "1 - 3s = -3e, so the cube is singular for e >= 0 and regular for e < 0. `exact` decides the exact input; "
@@ -314,6 +325,26 @@ void vrep_section(ReportContext& ctx) {
         "input is a different cube. "
      << (arithmetic == 0 ? "The double arithmetic never erred here: the input rounding made every wrong verdict.\n\n"
                          : "The double arithmetic itself erred in the cases where `double` differs from `rounded, exact`.\n\n");
+}
+
+}  // namespace
+
+void vrep_section(ReportContext& ctx) {
+  ctx.progress("V-rep: figures, gluing tolerance and float regularity");
+  const std::vector<Prim> prims = primitives();
+  std::ostringstream md;
+  const auto series = gluing_table(ctx, md, prims);
+  write_figures(ctx, prims, series);
+  md << "\nExactly, nothing glues once anything is moved (every shared face differs). A glue is false as "
+        "soon as eps exceeds the displacement: the float test cannot tell a perturbation below eps from rounding. (A corner "
+        "that is the first control point of several such faces of one cell moves by 2 or 3 delta: hence the sphere's 10 "
+        "of 18 at eps just above delta.) Rounding itself "
+        "misses no glue of these primitives down to eps = 1e-15 (their shared faces are computed the same way in both "
+        "cells, so they round alike).\n\n![false glues](vrep_gluing.svg)\n\n";
+
+  sphere_radius_part(ctx, md);
+  constructors_part(ctx, md);
+  regularity_part(ctx, md);
   ctx.markdown["vrep"] = md.str();
 }
 

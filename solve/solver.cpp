@@ -15,6 +15,7 @@
 #include "bernstein/subdivide.hpp"
 #include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
+#include "solve/krawczyk.hpp"
 #include "solve/testing.hpp"
 
 namespace splinex {
@@ -65,169 +66,14 @@ ScopedPlant::~ScopedPlant() {
 namespace {
 
 using solve_testing::Plant;
-
-template <class T>
-double dbl(const T& x) {
-  if constexpr (std::is_same_v<T, double>)
-    return x;
-  else
-    return to_double(ArithTraits<T>::to_rational(x));
-}
-
-template <class T>
-T from_dbl(double x) {
-  if constexpr (std::is_same_v<T, double>)
-    return x;
-  else
-    return ArithTraits<T>::from_rational(exact_from_double(x, "solver"));
-}
-
-/// floor(log2 |x|) within one (x != 0), from the exact value: numbers beyond double's range too.
-template <class T>
-long exponent_of(const T& x) {
-  const Rational q = ArithTraits<T>::to_rational(x);
-  return static_cast<long>(boost::multiprecision::msb(abs(boost::multiprecision::numerator(q)))) -
-         static_cast<long>(boost::multiprecision::msb(boost::multiprecision::denominator(q)));
-}
-
-/// 2^e exactly (rounded into a float arithmetic).
-template <class T>
-T pow2(long e) {
-  using boost::multiprecision::mpz_int;
-  const Rational q = e >= 0 ? Rational(mpz_int(1) << e) : Rational(1) / Rational(mpz_int(1) << -e);
-  return ArithTraits<T>::from_rational(q);
-}
-
-/// The scale 2^-e that brings the largest |x_i| near 1 (1 when all are 0).
-template <class T>
-long scale_exponent(const std::vector<T>& xs) {
-  long e = 0;
-  bool any = false;
-  for (const auto& x : xs)
-    if (!(x == T(0))) {
-      const long k = exponent_of(x);
-      e = any ? std::max(e, k) : k;
-      any = true;
-    }
-  return e;
-}
-
-template <class T>
-T tabs(const T& x) {
-  return x < T(0) ? T(T(0) - x) : x;
-}
-
-template <class T>
-const T& tmin(const T& a, const T& b) {
-  return b < a ? b : a;
-}
-template <class T>
-const T& tmax(const T& a, const T& b) {
-  return a < b ? b : a;
-}
-
-/// Krawczyk's test on [0, 1]^n (the polynomials' own box).
-template <class T>
-struct KrawczykResult {
-  enum Outcome { unknown, excluded, unique } outcome = unknown;
-  std::vector<T> lo, hi;  // K(X) (meaningful unless unknown)
-  bool contraction = false;  // ||I - Y J(X)||_inf < 1
-  bool inside_closed = false;  // K(X) inside the closed box (meaningful unless unknown)
-};
-
-/// With the centre c (default: the box's centre); c - Y F(c) + (I - Y J(X)) (X - c).
-template <class T>
-KrawczykResult<T> krawczyk(const std::vector<Bernstein<T>>& f, std::size_t neq, bool strict, std::vector<T> c = {}) {
-  const int n = static_cast<int>(neq);
-  KrawczykResult<T> out;
-  if (c.empty()) c.assign(n, T(1) / T(2));
-  std::vector<T> F(n);
-  std::vector<std::vector<Bernstein<T>>> J(n, std::vector<Bernstein<T>>(n));
-  // F'(c) with its rows scaled by 2^-e_i into double's range (D J), its inverse in double, and
-  // Y = (D J)^-1 D taken exactly: entries beyond double's range do not defeat the test.
-  Eigen::MatrixXd Jc(n, n);
-  std::vector<long> e(n);
-  for (int i = 0; i < n; ++i) {
-    F[i] = bern_value(f[i], c);
-    std::vector<T> row(n);
-    for (int j = 0; j < n; ++j) {
-      J[i][j] = bern_derivative(f[i], j);
-      row[j] = bern_value(J[i][j], c);
-    }
-    e[i] = scale_exponent(row);
-    const T s = pow2<T>(-e[i]);
-    for (int j = 0; j < n; ++j) Jc(i, j) = dbl(T(row[j] * s));
-  }
-  if (!Jc.allFinite()) return out;
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(Jc);
-  if (!lu.isInvertible()) return out;
-  const Eigen::MatrixXd Yd = lu.inverse();
-  if (!Yd.allFinite()) return out;
-  std::vector<std::vector<T>> Y(n, std::vector<T>(n));
-  for (int j = 0; j < n; ++j) {
-    const T s = pow2<T>(-e[j]);
-    for (int i = 0; i < n; ++i) Y[i][j] = from_dbl<T>(Yd(i, j)) * s;
-  }
-  std::vector<std::vector<std::pair<T, T>>> R(n, std::vector<std::pair<T, T>>(n));
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) R[i][j] = bern_range(J[i][j]);
-  out.lo.resize(n);
-  out.hi.resize(n);
-  bool inside_open = true, inside_closed = true, excluded = false;
-  // Test seams (solve/testing.hpp): the closed interior test, and c + Y F(c) for c - Y F(c).
-  const bool closed_plant = solve_testing::planted(Plant::closed_interior), sign_plant = solve_testing::planted(Plant::krawczyk_wrong_sign);
-  bool sound_open = true, sound_closed = true, sound_excluded = false;
-  out.contraction = true;
-  T reach(0);
-  for (int j = 0; j < n; ++j) reach = tmax(reach, tmax(c[j], T(T(1) - c[j])));
-  for (int i = 0; i < n; ++i) {
-    T yf(0), sum(0);
-    for (int k = 0; k < n; ++k) yf += Y[i][k] * F[k];
-    for (int j = 0; j < n; ++j) {
-      T slo(0), shi(0);  // the range of sum_k Y_ik J_kj over the box
-      for (int k = 0; k < n; ++k) {
-        const T p = Y[i][k] * R[k][j].first, q = Y[i][k] * R[k][j].second;
-        slo += tmin(p, q);
-        shi += tmax(p, q);
-      }
-      const T delta(i == j ? 1 : 0);
-      sum += tmax(tabs(T(delta - slo)), tabs(T(delta - shi)));
-    }
-    // (X - c) is within [-m, m]^n, m the larger distance of c from a side: the i-th row adds
-    // [-m sum, m sum].
-    const T mid = c[i] - yf, rad = sum * reach;
-    out.lo[i] = mid - rad;
-    out.hi[i] = mid + rad;
-    out.contraction = out.contraction && sum < T(1);
-    if (sign_plant) {
-      sound_excluded = sound_excluded || out.hi[i] < T(0) || T(1) < out.lo[i];
-      sound_open = sound_open && T(0) < out.lo[i] && out.hi[i] < T(1);
-      sound_closed = sound_closed && !(out.lo[i] < T(0)) && !(T(1) < out.hi[i]);
-      const T wrong = c[i] + yf;
-      out.lo[i] = wrong - rad;
-      out.hi[i] = wrong + rad;
-    }
-    excluded = excluded || out.hi[i] < T(0) || T(1) < out.lo[i];
-    inside_open = inside_open && T(0) < out.lo[i] && out.hi[i] < T(1);
-    inside_closed = inside_closed && !(out.lo[i] < T(0)) && !(T(1) < out.hi[i]);
-  }
-  out.inside_closed = inside_closed;
-  const auto outcome = [&](bool exc, bool open, bool closed) {
-    return exc ? KrawczykResult<T>::excluded
-               : open || (!strict && closed && out.contraction) ? KrawczykResult<T>::unique : KrawczykResult<T>::unknown;
-  };
-  out.outcome = outcome(excluded, inside_open, inside_closed);
-  if (closed_plant && !excluded && !inside_open && inside_closed && out.outcome != KrawczykResult<T>::unique) {
-    out.outcome = KrawczykResult<T>::unique;  // planted: K(X) in the closed box taken as in the open one
-    solve_testing::plant_hit();
-  }
-  if (sign_plant) {  // a hit when K(X) moved (it then steers refinement) or the outcome changed
-    bool moved = out.outcome != outcome(sound_excluded, sound_open, sound_closed);
-    for (int i = 0; i < n && !moved; ++i) moved = !(F[i] == T(0));
-    if (moved) solve_testing::plant_hit();
-  }
-  return out;
-}
+using solve_detail::dbl;
+using solve_detail::exponent_of;
+using solve_detail::krawczyk;
+using solve_detail::KrawczykResult;
+using solve_detail::pow2;
+using solve_detail::scale_exponent;
+using solve_detail::tmax;
+using solve_detail::tmin;
 
 template <class T>
 struct Node {
@@ -493,9 +339,12 @@ void halve_every_direction(Node<T>&& N, std::size_t n, Emit&& emit) {
   for (std::size_t k = parts.size(); k-- > 0;) emit(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
 }
 
+namespace {
+
+/// ValidationError (UsageError for the depth) unless f is n polynomials in n unknowns, none
+/// identically zero, on a box with no empty side.
 template <class T>
-SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
-                            const SolveOptions& options, const Pruning<T>* pruning) {
+void check_system(const std::vector<Bernstein<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi, const SolveOptions& options) {
   const std::size_t n = f.size();
   if (n == 0) throw ValidationError("system", "has no equations", "give n equations in n unknowns");
   if (lo.size() != n || hi.size() != n)
@@ -503,101 +352,122 @@ SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vecto
                           "give as many equations as unknowns");
   for (std::size_t i = 0; i < n; ++i) {
     if (f[i].deg.size() != n || f[i].c.size() != detail::tensor_size(f[i].deg))
-      throw ValidationError("system[" + std::to_string(i) + "]", "is not a polynomial in the n unknowns", "give Bernstein coefficients for every multi-index");
+      throw ValidationError("system[" + std::to_string(i) + "]", "is not a polynomial in the n unknowns",
+                            "give Bernstein coefficients for every multi-index");
     bool zero = true;
     for (const auto& x : f[i].c) zero = zero && x == T(0);
     if (zero)
-      throw ValidationError("system[" + std::to_string(i) + "]", "is identically zero: the system is degenerate (its zeros are not isolated)",
+      throw ValidationError("system[" + std::to_string(i) + "]",
+                            "is identically zero: the system is degenerate (its zeros are not isolated)",
                             "remove the equation or give a system whose solutions are points");
   }
   for (std::size_t l = 0; l < n; ++l)
     if (!(lo[l] < hi[l])) throw ValidationError("box", "has an empty side", "give lo < hi in every unknown");
   if (options.max_depth < 1 || options.max_depth > 200) throw UsageError("max-depth", "must be in [1, 200]", "use e.g. 30");
-  const std::vector<T> width0 = [&] {
-    std::vector<T> w(n);
-    for (std::size_t l = 0; l < n; ++l) w[l] = hi[l] - lo[l];
-    return w;
-  }();
+}
 
+/// What the steps of one solve share: the system's box, the options, the answer so far, and what
+/// the search hands on to the clusters.
+template <class T>
+struct SolveRun {
+  std::size_t n;             // equations and unknowns
+  const std::vector<T>& lo;  // the system's box
+  const std::vector<T>& hi;
+  const SolveOptions& options;
+  const Pruning<T>* pruning;
+  std::vector<T> width0;  // the box's widths
   SolveResult<T> out;
-  std::vector<Bernstein<T>> all = f;  // the equations and the auxiliary polynomials, split together
-  if (pruning) {
-    for (const auto& g : pruning->aux)
-      if (g.deg.size() != n || g.c.size() != detail::tensor_size(g.deg))
-        throw ValidationError("pruning", "an auxiliary polynomial is not in the n unknowns", "give it on the system's box");
-    all.insert(all.end(), pruning->aux.begin(), pruning->aux.end());
-  }
+  std::vector<Bernstein<T>> all;  // the equations and the auxiliary polynomials, split together
   std::vector<Node<T>> leaves;
   std::vector<Node<T>> certified;  // refined boxes with one root each
   std::vector<RootBox<T>> known;   // exact roots certified unique in their boxes during the search
   int recognitions = 0;
-  auto examine = [&](Node<T>& N, int) {
-    bool discarded = false;
-    for (std::size_t i = 0; i < n; ++i)
-      if (bern_sign(N.f[i]) != 0) discarded = true;
-    if (discarded) {
-      ++out.discarded_by_sign;
-      return Examined::settled;
+};
+
+/// Roots on split lines: an exact rational root in the open box N (recognized), certified as the
+/// only root of the box around it (twice N's width) by a contraction there, is listed as known.
+template <class T>
+void look_for_exact_root(SolveRun<T>& s, const Node<T>& N) {
+  const std::size_t n = s.n;
+  ++s.recognitions;  // a budget: a curve of solutions would otherwise try every other box
+  std::vector<T> r;
+  bool fresh = recognize(N, r);
+  for (const auto& k : s.known) fresh = fresh && !box_inside(r, r, k.lo, k.hi);
+  if (fresh) {
+    std::vector<T> a(n), b(n), c(n);
+    for (std::size_t l = 0; l < n; ++l) {
+      const T w = N.hi[l] - N.lo[l];
+      const T x0 = tmax(T(r[l] - w), s.lo[l]), x1 = tmin(T(r[l] + w), s.hi[l]);
+      a[l] = (x0 - s.lo[l]) / s.width0[l];
+      b[l] = (x1 - s.lo[l]) / s.width0[l];
+      c[l] = (r[l] - x0) / (x1 - x0);
     }
-    if (pruning && pruning->discard(N.f.data() + n, pruning->aux.size(), N.lo, N.hi)) {
-      ++out.discarded_by_caller;
-      return Examined::settled;
+    const Node<T> X = restrict_node(Node<T>{s.all, s.lo, s.hi, 0}, a, b);
+    bool contraction = krawczyk(X.f, n, false, c).contraction;
+    if (!contraction && solve_testing::planted(Plant::skip_krawczyk_contraction_known)) {
+      contraction = true;  // planted: the exact root taken as the box's only root without the test
+      solve_testing::plant_hit();
     }
-    // Inside the box of a known exact root, which is that box's only root: nothing more here.
-    bool in_known = false;
-    for (const auto& k : known) in_known = in_known || box_inside(N.lo, N.hi, k.lo, k.hi);
-    if (in_known) {
-      ++out.discarded_by_krawczyk;
-      return Examined::settled;
+    if (contraction) {
+      RootBox<T> rb;
+      rb.lo = X.lo;
+      rb.hi = X.hi;
+      rb.unique = rb.exact = true;
+      rb.point = r;
+      s.known.push_back(rb);
+      s.out.roots.push_back(rb);
     }
-    const auto K = krawczyk(N.f, n, true);
-    if (K.outcome == KrawczykResult<T>::excluded) {
-      ++out.discarded_by_krawczyk;
-      return Examined::settled;
-    }
-    if (K.outcome == KrawczykResult<T>::unique) {
-      bool seen = false;  // its one root is a known exact root it contains
-      for (const auto& k : known) seen = seen || box_inside(k.point, k.point, N.lo, N.hi);
-      if (!seen) certified.push_back(refine(N, K.lo, K.hi, width0, options.refine_bits));
-      return Examined::settled;
-    }
-    // A root where boxes are split (on the line between them) keeps every box around it open down
-    // to the depth limit. Look for an exact rational root now and then: a contraction on the box
-    // around it (twice this box's width) makes it that box's only root, and the search then skips
-    // what lies inside.
-    if (options.recognize_rationals && N.depth >= 2 && N.depth % 2 == 0 && recognitions < 256) {
-      ++recognitions;  // a budget: a curve of solutions would otherwise try every other box
-      std::vector<T> r;
-      bool fresh = recognize(N, r);
-      for (const auto& k : known) fresh = fresh && !box_inside(r, r, k.lo, k.hi);
-      if (fresh) {
-        std::vector<T> a(n), b(n), c(n);
-        for (std::size_t l = 0; l < n; ++l) {
-          const T w = N.hi[l] - N.lo[l];
-          const T x0 = tmax(T(r[l] - w), lo[l]), x1 = tmin(T(r[l] + w), hi[l]);
-          a[l] = (x0 - lo[l]) / width0[l];
-          b[l] = (x1 - lo[l]) / width0[l];
-          c[l] = (r[l] - x0) / (x1 - x0);
-        }
-        const Node<T> X = restrict_node(Node<T>{all, lo, hi, 0}, a, b);
-        bool contraction = krawczyk(X.f, n, false, c).contraction;
-        if (!contraction && solve_testing::planted(Plant::skip_krawczyk_contraction_known)) {
-          contraction = true;  // planted: the exact root taken as the box's only root without the test
-          solve_testing::plant_hit();
-        }
-        if (contraction) {
-          RootBox<T> rb;
-          rb.lo = X.lo;
-          rb.hi = X.hi;
-          rb.unique = rb.exact = true;
-          rb.point = r;
-          known.push_back(rb);
-          out.roots.push_back(rb);
-        }
-      }
-    }
-    return Examined::split;
-  };
+  }
+}
+
+/// One box of the search: 1. sign, the caller's pruning and the boxes of known exact roots;
+/// 2. Krawczyk; 3. otherwise split.
+template <class T>
+Examined examine_box(SolveRun<T>& s, Node<T>& N) {
+  const std::size_t n = s.n;
+  bool discarded = false;
+  for (std::size_t i = 0; i < n; ++i)
+    if (bern_sign(N.f[i]) != 0) discarded = true;
+  if (discarded) {
+    ++s.out.discarded_by_sign;
+    return Examined::settled;
+  }
+  if (s.pruning && s.pruning->discard(N.f.data() + n, s.pruning->aux.size(), N.lo, N.hi)) {
+    ++s.out.discarded_by_caller;
+    return Examined::settled;
+  }
+  // Inside the box of a known exact root, which is that box's only root: nothing more here.
+  bool in_known = false;
+  for (const auto& k : s.known) in_known = in_known || box_inside(N.lo, N.hi, k.lo, k.hi);
+  if (in_known) {
+    ++s.out.discarded_by_krawczyk;
+    return Examined::settled;
+  }
+  const auto K = krawczyk(N.f, n, true);
+  if (K.outcome == KrawczykResult<T>::excluded) {
+    ++s.out.discarded_by_krawczyk;
+    return Examined::settled;
+  }
+  if (K.outcome == KrawczykResult<T>::unique) {
+    bool seen = false;  // its one root is a known exact root it contains
+    for (const auto& k : s.known) seen = seen || box_inside(k.point, k.point, N.lo, N.hi);
+    if (!seen) s.certified.push_back(refine(N, K.lo, K.hi, s.width0, s.options.refine_bits));
+    return Examined::settled;
+  }
+  // A root where boxes are split (on the line between them) keeps every box around it open down
+  // to the depth limit. Look for an exact rational root now and then: a contraction on the box
+  // around it (twice this box's width) makes it that box's only root, and the search then skips
+  // what lies inside.
+  if (s.options.recognize_rationals && N.depth >= 2 && N.depth % 2 == 0 && s.recognitions < 256) look_for_exact_root(s, N);
+  return Examined::split;
+}
+
+/// The subdivision of the system's box: certified roots into the answer, the boxes left open
+/// (at the depth limit, or when the budget is spent) into `leaves`.
+template <class T>
+void search_roots(SolveRun<T>& s) {
+  const std::size_t n = s.n;
+  auto examine = [&](Node<T>& N, int) { return examine_box(s, N); };
   auto split = [&](Node<T>&& N, int, auto&& emit) { halve_every_direction(std::move(N), n, emit); };
   // A box left (the depth reached, or the budget spent) is enough as it is: clusters restrict anew.
   bool dropped = false;
@@ -607,24 +477,28 @@ SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vecto
       dropped = true;
       return;
     }
-    leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
+    s.leaves.push_back(Node<T>{{}, std::move(N.lo), std::move(N.hi), N.depth});
   };
   Budget budget;
-  budget.max_boxes = options.max_boxes;
-  budget.max_depth = options.max_depth;
-  std::vector<Node<T>> roots{Node<T>{all, lo, hi, 0}};
-  const Subdivision run = subdivide(std::move(roots), Walk{Order::depth_first, n < 64 ? std::size_t(1) << n : std::numeric_limits<std::size_t>::max(), false}, budget, examine, split, leave);
-  out.boxes = run.examined;
-  out.budget_exhausted = run.stop == Subdivision::Stop::boxes;
-  for (const auto& N : certified) {
+  budget.max_boxes = s.options.max_boxes;
+  budget.max_depth = s.options.max_depth;
+  std::vector<Node<T>> roots{Node<T>{s.all, s.lo, s.hi, 0}};
+  const Subdivision run =
+      subdivide(std::move(roots), Walk{Order::depth_first, n < 64 ? std::size_t(1) << n : std::numeric_limits<std::size_t>::max(), false},
+                budget, examine, split, leave);
+  s.out.boxes = run.examined;
+  s.out.budget_exhausted = run.stop == Subdivision::Stop::boxes;
+  for (const auto& N : s.certified) {
     // Found before a known exact root whose box holds it: the same root.
     bool seen = false;
-    for (const auto& k : known) seen = seen || (box_inside(k.point, k.point, N.lo, N.hi) || box_inside(N.lo, N.hi, k.lo, k.hi));
-    if (!seen) out.roots.push_back(root_of(N, true, options.recognize_rationals));
+    for (const auto& k : s.known) seen = seen || (box_inside(k.point, k.point, N.lo, N.hi) || box_inside(N.lo, N.hi, k.lo, k.hi));
+    if (!seen) s.out.roots.push_back(root_of(N, true, s.options.recognize_rationals));
   }
+}
 
-  // Undecided leaves: clusters of touching boxes (a sweep along direction 0), then the closed test
-  // on each cluster's hull.
+/// Clusters of touching leaves (a sweep along direction 0), as indices into `leaves`.
+template <class T>
+std::vector<std::vector<std::size_t>> cluster_leaves(const std::vector<Node<T>>& leaves) {
   std::vector<std::size_t> order(leaves.size()), parent(leaves.size());
   std::iota(order.begin(), order.end(), 0);
   std::iota(parent.begin(), parent.end(), 0);
@@ -653,93 +527,141 @@ SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vecto
       clusters[index[r]].push_back(i);
     }
   }
-  const Node<T> root{all, lo, hi, 0};
+  return clusters;
+}
+
+/// Planted (solve/testing.hpp): K(X) in the closed hull taken as one root without the contraction.
+template <class T>
+void skip_contraction(KrawczykResult<T>& k) {
+  if (solve_testing::planted(Plant::skip_krawczyk_contraction_merged) && k.outcome == KrawczykResult<T>::unknown && k.inside_closed) {
+    k.outcome = KrawczykResult<T>::unique;
+    solve_testing::plant_hit();
+  }
+}
+
+/// The closed test on a cluster's hull H (local box [a, b] of the system's root node), and on the
+/// hull inflated when it fails. True when that settles the hull: no root, or its one root listed
+/// (now, or before); false when the hull is left to `exact_root_in_hull`.
+template <class T>
+bool closed_test(SolveRun<T>& s, const Node<T>& root, const Node<T>& H, const std::vector<T>& a, const std::vector<T>& b) {
+  const std::size_t n = s.n;
+  auto K = s.out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
+  skip_contraction(K);
+  if (K.outcome == KrawczykResult<T>::excluded) return true;
+  Node<T> G = H;  // the box the test speaks of
+  if (K.outcome == KrawczykResult<T>::unknown && !s.out.budget_exhausted) {
+    // Epsilon-inflation (Rump): a root 1e-25 from a face of the hull (just beside a split line)
+    // is never inside K(X) of so small a hull; the hull widened by its width on each side
+    // (within the system's box) can hold it well inside.
+    std::vector<T> a2(n), b2(n);
+    for (std::size_t l = 0; l < n; ++l) {
+      const T w = b[l] - a[l];
+      a2[l] = tmax(T(a[l] - w), T(0));
+      b2[l] = tmin(T(b[l] + w), T(1));
+    }
+    Node<T> H2 = restrict_node(root, a2, b2);
+    auto K2 = krawczyk(H2.f, n, false);
+    skip_contraction(K2);
+    if (K2.outcome == KrawczykResult<T>::excluded) return true;
+    if (K2.outcome == KrawczykResult<T>::unique) {
+      K = K2;
+      G = std::move(H2);
+    }
+  }
+  if (K.outcome == KrawczykResult<T>::unique) {
+    const Node<T> R = refine(G, K.lo, K.hi, s.width0, s.options.refine_bits);
+    // A certified root already found in the hull is this one; one that may straddle it is
+    // left undecided.
+    bool same = false, unclear = false;
+    for (const auto& r : s.out.roots) {
+      if (r.exact) {  // a known exact root: the hull's one root if the hull holds it
+        same = same || box_inside(r.point, r.point, G.lo, G.hi);
+        continue;
+      }
+      if (!boxes_touch(r.lo, r.hi, G.lo, G.hi)) continue;
+      if (box_inside(r.lo, r.hi, G.lo, G.hi))
+        same = true;
+      else
+        unclear = true;
+    }
+    if (same && !unclear) return true;
+    if (!unclear) {
+      s.out.roots.push_back(root_of(R, true, s.options.recognize_rationals));
+      return true;
+    }
+  }
+  return false;
+}
+
+/// A hull the closed test left open: undecided, and an exact root in it listed (certified simple
+/// when Krawczyk about it contracts the hull).
+template <class T>
+void exact_root_in_hull(SolveRun<T>& s, const Node<T>& H) {
+  const std::size_t n = s.n;
+  RootBox<T> u = root_of(H, false, s.options.recognize_rationals);
+  if (u.exact) {
+    // Krawczyk about the exact root r (F(r) = 0): a contraction on the hull means r is its only
+    // root, and a simple one.
+    std::vector<T> c(n);
+    for (std::size_t l = 0; l < n; ++l) c[l] = (u.point[l] - H.lo[l]) / (H.hi[l] - H.lo[l]);
+    const auto Kr = krawczyk(H.f, n, false, c);
+    u.unique = Kr.contraction;
+    if (!u.unique && solve_testing::planted(Plant::skip_krawczyk_contraction_merged)) {
+      u.unique = true;  // planted: the hull's exact root taken as its only, simple root without the test
+      solve_testing::plant_hit();
+    }
+  }
+  // An exact root that is not certified simple is a root of unknown multiplicity, and its hull
+  // stays undecided (it may hold more). One found before is not listed twice.
+  bool listed = false;
+  for (const auto& r : s.out.roots) listed = listed || (u.exact && r.exact && r.point == u.point);
+  if (u.exact && !listed) s.out.roots.push_back(u);
+  if (!u.unique) s.out.undecided.push_back(std::move(u));
+}
+
+/// Undecided leaves: clusters of touching boxes, then the closed test on each cluster's hull.
+template <class T>
+void decide_clusters(SolveRun<T>& s) {
+  const std::size_t n = s.n;
+  const std::vector<std::vector<std::size_t>> clusters = cluster_leaves(s.leaves);
+  const Node<T> root{s.all, s.lo, s.hi, 0};
   for (const auto& members : clusters) {
-    std::vector<T> clo = leaves[members[0]].lo, chi = leaves[members[0]].hi;
+    std::vector<T> clo = s.leaves[members[0]].lo, chi = s.leaves[members[0]].hi;
     for (std::size_t m : members)
       for (std::size_t l = 0; l < n; ++l) {
-        clo[l] = tmin(clo[l], leaves[m].lo[l]);
-        chi[l] = tmax(chi[l], leaves[m].hi[l]);
+        clo[l] = tmin(clo[l], s.leaves[m].lo[l]);
+        chi[l] = tmax(chi[l], s.leaves[m].hi[l]);
       }
     std::vector<T> a(n), b(n);
     for (std::size_t l = 0; l < n; ++l) {
-      a[l] = (clo[l] - lo[l]) / width0[l];
-      b[l] = (chi[l] - lo[l]) / width0[l];
+      a[l] = (clo[l] - s.lo[l]) / s.width0[l];
+      b[l] = (chi[l] - s.lo[l]) / s.width0[l];
     }
     const Node<T> H = restrict_node(root, a, b);
-    // Planted (solve/testing.hpp): K(X) in the closed hull taken as one root without the contraction.
-    const auto skip_contraction = [](KrawczykResult<T>& k) {
-      if (solve_testing::planted(Plant::skip_krawczyk_contraction_merged) && k.outcome == KrawczykResult<T>::unknown && k.inside_closed) {
-        k.outcome = KrawczykResult<T>::unique;
-        solve_testing::plant_hit();
-      }
-    };
-    auto K = out.budget_exhausted ? KrawczykResult<T>{} : krawczyk(H.f, n, false);
-    skip_contraction(K);
-    if (K.outcome == KrawczykResult<T>::excluded) continue;
-    Node<T> G = H;  // the box the test speaks of
-    if (K.outcome == KrawczykResult<T>::unknown && !out.budget_exhausted) {
-      // Epsilon-inflation (Rump): a root 1e-25 from a face of the hull (just beside a split line)
-      // is never inside K(X) of so small a hull; the hull widened by its width on each side
-      // (within the system's box) can hold it well inside.
-      std::vector<T> a2(n), b2(n);
-      for (std::size_t l = 0; l < n; ++l) {
-        const T w = b[l] - a[l];
-        a2[l] = tmax(T(a[l] - w), T(0));
-        b2[l] = tmin(T(b[l] + w), T(1));
-      }
-      Node<T> H2 = restrict_node(root, a2, b2);
-      auto K2 = krawczyk(H2.f, n, false);
-      skip_contraction(K2);
-      if (K2.outcome == KrawczykResult<T>::excluded) continue;
-      if (K2.outcome == KrawczykResult<T>::unique) {
-        K = K2;
-        G = std::move(H2);
-      }
-    }
-    if (K.outcome == KrawczykResult<T>::unique) {
-      const Node<T> R = refine(G, K.lo, K.hi, width0, options.refine_bits);
-      // A certified root already found in the hull is this one; one that may straddle it is
-      // left undecided.
-      bool same = false, unclear = false;
-      for (const auto& r : out.roots) {
-        if (r.exact) {  // a known exact root: the hull's one root if the hull holds it
-          same = same || box_inside(r.point, r.point, G.lo, G.hi);
-          continue;
-        }
-        if (!boxes_touch(r.lo, r.hi, G.lo, G.hi)) continue;
-        if (box_inside(r.lo, r.hi, G.lo, G.hi))
-          same = true;
-        else
-          unclear = true;
-      }
-      if (same && !unclear) continue;
-      if (!unclear) {
-        out.roots.push_back(root_of(R, true, options.recognize_rationals));
-        continue;
-      }
-    }
-    RootBox<T> u = root_of(H, false, options.recognize_rationals);
-    if (u.exact) {
-      // Krawczyk about the exact root r (F(r) = 0): a contraction on the hull means r is its only
-      // root, and a simple one.
-      std::vector<T> c(n);
-      for (std::size_t l = 0; l < n; ++l) c[l] = (u.point[l] - H.lo[l]) / (H.hi[l] - H.lo[l]);
-      const auto Kr = krawczyk(H.f, n, false, c);
-      u.unique = Kr.contraction;
-      if (!u.unique && solve_testing::planted(Plant::skip_krawczyk_contraction_merged)) {
-        u.unique = true;  // planted: the hull's exact root taken as its only, simple root without the test
-        solve_testing::plant_hit();
-      }
-    }
-    // An exact root that is not certified simple is a root of unknown multiplicity, and its hull
-    // stays undecided (it may hold more). One found before is not listed twice.
-    bool listed = false;
-    for (const auto& r : out.roots) listed = listed || (u.exact && r.exact && r.point == u.point);
-    if (u.exact && !listed) out.roots.push_back(u);
-    if (!u.unique) out.undecided.push_back(std::move(u));
+    if (!closed_test(s, root, H, a, b)) exact_root_in_hull(s, H);
   }
-  return out;
+}
+
+}  // namespace
+
+template <class T>
+SolveResult<T> solve_system(const std::vector<Bernstein<T>>& f, const std::vector<T>& lo, const std::vector<T>& hi,
+                            const SolveOptions& options, const Pruning<T>* pruning) {
+  check_system(f, lo, hi, options);
+  const std::size_t n = f.size();
+  SolveRun<T> s{n, lo, hi, options, pruning, std::vector<T>(n), {}, f, {}, {}, {}, 0};
+  for (std::size_t l = 0; l < n; ++l) s.width0[l] = hi[l] - lo[l];
+  if (pruning) {
+    for (const auto& g : pruning->aux)
+      if (g.deg.size() != n || g.c.size() != detail::tensor_size(g.deg))
+        throw ValidationError("pruning", "an auxiliary polynomial is not in the n unknowns", "give it on the system's box");
+    s.all.insert(s.all.end(), pruning->aux.begin(), pruning->aux.end());
+  }
+  search_roots(s);
+  // Undecided leaves: clusters of touching boxes (a sweep along direction 0), then the closed test
+  // on each cluster's hull.
+  decide_clusters(s);
+  return std::move(s.out);
 }
 
 template struct SolveResult<Rational>;

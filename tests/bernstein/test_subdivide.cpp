@@ -27,7 +27,12 @@ auto halves = [](Interval&& b, int, auto&& emit) {
   emit(Interval{m, b.hi});
 };
 
-std::string text(const Interval& b) { return "[" + to_fraction_string(b.lo) + ", " + to_fraction_string(b.hi) + "]"; }
+std::string text(const Interval& b) {
+  std::string s = to_fraction_string(b.lo);
+  s.insert(0, 1, '[');
+  s.append(", ").append(to_fraction_string(b.hi)).push_back(']');
+  return s;
+}
 
 /// p > 0 on [0, 1], decided by Bernstein signs on halves: proved, refuted at a box whose midpoint
 /// value is <= 0, or undecided when the depth runs out. `corners_only` plants the classic bug of
@@ -176,6 +181,171 @@ TEST_CASE("subdivide: a positivity certificate on the engine, and the planted bu
   CHECK(u.is_undecided());
   CHECK_THROWS_AS(u.make_certain("p > 0"), UndecidedError);
   CHECK(close.decide(deep).is_proved());
+}
+
+namespace {
+
+/// An enclosure of the integral of p over [0, 1] by a refinement of [0, 1]: per box its length
+/// times p's extreme Bernstein coefficients there, best first by the width, until the summed
+/// widths are at most `width`. `corners_only` plants the bug of bounding p by its end values.
+struct Quadrature {
+  explicit Quadrature(Bernstein<Rational> p_, bool corners_only_ = false) : p(std::move(p_)), corners_only(corners_only_) {}
+  Bernstein<Rational> p;
+  bool corners_only = false;
+  Rational lo{0}, hi{0};
+  std::vector<std::string> split_order;
+
+  Subdivision run(const Rational& width, std::size_t max_boxes) {
+    struct Piece {
+      Bernstein<Rational> p;
+      Interval x;
+      Rational lo{0}, hi{0};
+    };
+    lo = hi = Rational(0);
+    auto bounds = [&](Piece& b) {
+      const Rational len = b.x.hi - b.x.lo;
+      Rational mn = b.p.c.front(), mx = b.p.c.front();
+      for (const auto& c : corners_only ? std::vector<Rational>{b.p.c.front(), b.p.c.back()} : b.p.c) {
+        mn = std::min(mn, c);
+        mx = std::max(mx, c);
+      }
+      b.lo = len * mn;
+      b.hi = len * mx;
+      lo += b.lo;
+      hi += b.hi;
+      return b.lo == b.hi ? Examined::settled : Examined::split;
+    };
+    auto split = [&](Piece&& b, int, auto&& emit) {
+      lo -= b.lo;
+      hi -= b.hi;
+      split_order.push_back(text(b.x));
+      auto [l, r] = bern_split(b.p, 0, Rational(1, 2));
+      const Rational m = (b.x.lo + b.x.hi) / 2;
+      emit(Piece{std::move(l), {b.x.lo, m}});
+      emit(Piece{std::move(r), {m, b.x.hi}});
+    };
+    Budget budget;
+    budget.max_boxes = max_boxes;
+    return refine(std::vector<Piece>{Piece{p, {Rational(0), Rational(1)}}}, Order::best_first, budget, bounds, split,
+                  [&]() { return hi - lo <= width; }, [](Piece&&, bool) {}, [](const Piece& b) -> Rational { return b.hi - b.lo; });
+  }
+};
+
+}  // namespace
+
+TEST_CASE("refine: breadth first, every box examined when made, the partition's budget and the goal") {
+  std::vector<std::string> made, closed, open;
+  auto wide_split = [&](const Interval& b) {
+    made.push_back(text(b));
+    return b.hi - b.lo > Rational(1, 4) ? Examined::split : Examined::settled;
+  };
+  auto close = [&](Interval&& b, bool is_open) { (is_open ? open : closed).push_back(text(b)); };
+  auto never = []() { return false; };
+  SECTION("complete: every box settled") {
+    const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::breadth_first, Budget{}, wide_split, halves, never, close);
+    CHECK(r.stop == Subdivision::Stop::complete);
+    CHECK(r.examined == 7);
+    CHECK(r.boxes == 4);
+    CHECK(r.left == 0);
+    CHECK(made == std::vector<std::string>{"[0, 1]", "[0, 1/2]", "[1/2, 1]", "[0, 1/4]", "[1/4, 1/2]", "[1/2, 3/4]", "[3/4, 1]"});
+    CHECK(closed == std::vector<std::string>{"[0, 1/4]", "[1/4, 1/2]", "[1/2, 3/4]", "[3/4, 1]"});
+  }
+  SECTION("boxes: the partition may not grow past max_boxes; the open boxes are handed over in order") {
+    Budget b;
+    b.max_boxes = 3;
+    const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::breadth_first, b, wide_split, halves, never, close);
+    CHECK(r.stop == Subdivision::Stop::boxes);
+    CHECK(r.boxes == 3);
+    CHECK(r.left == 1);
+    CHECK(closed == std::vector<std::string>{"[0, 1/4]", "[1/4, 1/2]"});
+    CHECK(open == std::vector<std::string>{"[1/2, 1]"});
+  }
+  SECTION("reached: the goal of the whole ends it before the next split") {
+    const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::breadth_first, Budget{}, wide_split, halves,
+                          [&]() { return made.size() >= 3; }, close);
+    CHECK(r.stop == Subdivision::Stop::reached);
+    CHECK(r.examined == 3);
+    CHECK(open == std::vector<std::string>{"[0, 1/2]", "[1/2, 1]"});
+  }
+  SECTION("depth: an open box at max_depth is kept open, not split") {
+    Budget b;
+    b.max_depth = 1;
+    const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::breadth_first, b, wide_split, halves, never, close);
+    CHECK(r.stop == Subdivision::Stop::complete);
+    CHECK(r.left == 2);
+    CHECK(r.left_depth == 2);
+    CHECK(open == std::vector<std::string>{"[0, 1/2]", "[1/2, 1]"});
+  }
+  SECTION("replace: a replaced box is split at once and is no part of the partition; refuted stops") {
+    auto replace_root = [&](const Interval& b) {
+      made.push_back(text(b));
+      if (b.hi - b.lo == 1) return Examined::replace;
+      return b.lo == Rational(1, 2) ? Examined::refuted : Examined::split;
+    };
+    const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::breadth_first, Budget{}, replace_root, halves, never, close);
+    CHECK(r.stop == Subdivision::Stop::refuted);
+    CHECK(made == std::vector<std::string>{"[0, 1]", "[0, 1/2]", "[1/2, 1]"});
+    CHECK(r.boxes == 2);
+    CHECK(closed == std::vector<std::string>{"[1/2, 1]"});
+    CHECK(open == std::vector<std::string>{"[0, 1/2]"});
+  }
+  SECTION("a depth-first refinement is refused, as are a best-first subdivision and a replaced box in one") {
+    CHECK_THROWS_AS(refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::depth_first, Budget{}, wide_split, halves, never, close),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{Order::best_first, 2, false}, Budget{},
+                              [](const Interval&, int) { return Examined::split; }, halves, [](Interval&&, Left) {}),
+                    std::invalid_argument);    CHECK_THROWS_AS(subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{}, Budget{},
+                              [](const Interval&, int) { return Examined::replace; }, halves, [](Interval&&, Left) {}),
+                    std::invalid_argument);
+  }
+}
+
+TEST_CASE("refine: best first, equal keys by slot, and an integral's enclosure on it refutes a planted bug") {
+  // p = (x - 1/2)^2 on [0, 1], its integral exactly 1/12.
+  const Bernstein<Rational> p = quadratic(Rational(1, 4), Rational(-1), Rational(1));
+  const Rational exact(1, 12);
+  Quadrature q{p};
+  const auto r = q.run(Rational(1, 1000), 1000);
+  CHECK(r.stop == Subdivision::Stop::reached);
+  CHECK(q.lo <= exact);
+  CHECK(exact <= q.hi);
+  CHECK(q.hi - q.lo <= Rational(1, 1000));
+  // The widest box first; of the two equal halves of [0, 1] the one made last (the higher slot).
+  REQUIRE(q.split_order.size() >= 3);
+  CHECK(q.split_order[0] == "[0, 1]");
+  CHECK(q.split_order[1] == "[1/2, 1]");
+  CHECK(q.split_order[2] == "[0, 1/2]");
+  // Planted: the end values bound nothing in between: the enclosure misses the exact integral.
+  Quadrature planted{p, true};
+  planted.run(Rational(1, 1000), 1000);
+  CHECK_FALSE((planted.lo <= exact && exact <= planted.hi));
+  // The budget: at most 5 boxes, the width not reached.
+  Quadrature small{p};
+  const auto s = small.run(Rational(0), 5);
+  CHECK(s.stop == Subdivision::Stop::boxes);
+  CHECK(s.boxes == 5);
+  CHECK(small.lo <= exact);
+  CHECK(exact <= small.hi);
+}
+
+TEST_CASE("refine: equal keys go to the higher slot, freed slots are taken last freed first") {
+  // Every box has key 1; boxes longer than 1/8 are split. The order of splits is the pool's rule:
+  // [0, 1] in slot 0 makes [0, 1/2] (slot 0 again) and [1/2, 1] (slot 1); slot 1 first: its halves
+  // take slots 1 and 2; [3/4, 1] (slot 2), then [1/2, 3/4] (slot 1), whose halves are settled,
+  // leave slots 2 and 1 free; [0, 1/2] frees slot 0 and its halves take 0 ([0, 1/4]) and 1
+  // ([1/4, 1/2]), so [1/4, 1/2] comes first (slots taken first freed first would put [0, 1/4] in
+  // slot 2, ahead of it).
+  std::vector<std::string> order;
+  auto examine = [](const Interval& b) { return b.hi - b.lo > Rational(1, 8) ? Examined::split : Examined::settled; };
+  auto split = [&](Interval&& b, int d, auto&& emit) {
+    order.push_back(text(b));
+    halves(std::move(b), d, emit);
+  };
+  const auto r = refine(std::vector<Interval>{{Rational(0), Rational(1)}}, Order::best_first, Budget{}, examine, split, []() { return false; },
+                        [](Interval&&, bool) {}, [](const Interval&) { return 1; });
+  CHECK(r.stop == Subdivision::Stop::complete);
+  CHECK(order == std::vector<std::string>{"[0, 1]", "[1/2, 1]", "[3/4, 1]", "[1/2, 3/4]", "[0, 1/2]", "[1/4, 1/2]", "[0, 1/4]"});
+  CHECK(r.boxes == 8);
 }
 
 TEST_CASE("Verdict: one spelling of the three answers") {

@@ -1,9 +1,9 @@
 // Booleans on V-models (vrep/boolean/boolean.hpp): the templates, instantiated in vrep/instances.cpp.
+// The volumes of cells are in vrep/boolean/volume_impl.hpp.
 #pragma once
 #include <algorithm>
 #include <map>
 #include <optional>
-#include <queue>
 #include <set>
 
 #include "base/errors.hpp"
@@ -12,12 +12,11 @@
 #include "compose/compose.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
-#include "spline/integrate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean/boolean.hpp"
 #include "vrep/boolean/boolean_junctions.hpp"  // vrep_detail::find_corner_junctions
+#include "vrep/boolean/volume_impl.hpp"  // cell_volume, volume_enclosure, vrep_detail::box_integral_bounds
 #include "vrep/model/planted.hpp"
-#include "vrep/model/regularity_impl.hpp"  // vrep_detail::jacobian_numerator, split_half
 #include "vrep/model/trivariate_impl.hpp"  // vrep_detail::greville
 #include "vrep/model/vmodel_impl.hpp"      // vrep_detail::magnitude, centre_of
 
@@ -220,78 +219,6 @@ std::vector<Piece<T>> pieces_of(const BSpline<T>& V, const std::string& vname, c
   return out;
 }
 
-/// Bounds lo <= integral <= hi of N / W^power (det J: power 4) over a box that is the share `vol`
-/// of its piece's unit cube (N, W in Bernstein form on the box): see volume_enclosure. `plain`:
-/// the extreme coefficients' ratios only, without the Jensen / chord bounds' product N W.
-template <class T>
-void box_integral_bounds(const Bernstein<T>& N, const Bernstein<T>& W, const T& vol, T& lo, T& hi, int power = 4, bool plain = false) {
-  T nmin = N.c.front(), nmax = nmin, wmin = W.c.front(), wmax = wmin;
-  for (const auto& x : N.c) {
-    if (x < nmin) nmin = x;
-    if (nmax < x) nmax = x;
-  }
-  for (const auto& x : W.c) {
-    if (x < wmin) wmin = x;
-    if (wmax < x) wmax = x;
-  }
-  if (!(T(0) < wmin)) throw DomainError("trivariate.weights", "has a weight bound that is not positive", "give positive weights");
-  // (f(W) = W^-power; power 4 for det J, 5 for a coordinate's moment X_c N / W^5.)
-  T w4min(1), w4max(1);  // W^power at the ends
-  for (int k = 0; k < power; ++k) {
-    w4min *= wmin;
-    w4max *= wmax;
-  }
-  if (!plain && (!(nmin < T(0)) || !(T(0) < nmax))) {
-    // N of one sign on the box (sg N >= 0, sg = +-1): f(W) = W^-4 is convex, so with the
-    // weight |N| Jensen gives the lower bound I f(J / I) (I = int |N|, J = int |N| W) and the
-    // chord of f over [min W, max W] the upper bound; both integrals are exact (means of
-    // Bernstein coefficients), and the gap shrinks with the square of the box.
-    const T sg = nmax < T(0) || (nmax == T(0) && nmin < T(0)) ? T(-1) : T(1);
-    T si(0);
-    for (const auto& x : N.c) si += x;
-    const T I = sg * vol * si / T(static_cast<long>(N.c.size()));
-    // J = int |N| W; W constant (a polynomial cell: W = 1) needs no product.
-    T J = I * wmin;
-    if (!(wmax == wmin)) {
-      T sj(0);
-      const Bernstein<T> NW = vrep_detail::mul(N, W);
-      for (const auto& x : NW.c) sj += x;
-      J = sg * vol * sj / T(static_cast<long>(NW.c.size()));
-    }
-    if (I == T(0)) {
-      lo = hi = T(0);
-      return;
-    }
-    const T m = J / I;
-    T mp(1);
-    for (int k = 0; k < power; ++k) mp *= m;
-    const T lower = I / mp;
-    const T fa = T(1) / w4min, fb = T(1) / w4max;
-    const T upper = wmax == wmin ? T(I * fa) : T(fa * I + (fb - fa) / (wmax - wmin) * (J - wmin * I));
-    lo = sg < T(0) ? T(-upper) : lower;
-    hi = sg < T(0) ? T(-lower) : upper;
-    return;
-  }
-  lo = vol * (T(0) < nmin ? T(nmin / w4max) : T(nmin / w4min));
-  hi = vol * (T(0) < nmax ? T(nmax / w4min) : T(nmax / w4max));
-}
-
-/// The largest difference of neighbouring coefficients along direction l: where a Bernstein
-/// polynomial varies most (the direction to halve a box across).
-template <class T>
-T coefficient_variation(const Bernstein<T>& b, int l) {
-  std::size_t stride = 1;
-  for (int k = 0; k < l; ++k) stride *= b.deg[k] + 1;
-  T v(0);
-  for (std::size_t i = 0; i < b.c.size(); ++i) {
-    if ((i / stride) % (b.deg[l] + 1) == static_cast<std::size_t>(b.deg[l])) continue;
-    const T d = b.c[i + stride] - b.c[i];
-    const T a = d < T(0) ? T(-d) : d;
-    if (v < a) v = a;
-  }
-  return v;
-}
-
 template <class T>
 void merge_constants(Attributes<T>& into, const Attributes<T>& from, Blend blend) {
   for (const auto& [name, v] : from.constants) {
@@ -478,80 +405,161 @@ std::vector<std::vector<T>> face_corners(const BSpline<T>& V, int dir, int side)
   return out;
 }
 
+namespace vrep_detail {
+
+/// One round's tiling (boolean_op, Algorithms 1-3): the pieces the operation keeps, in order, with
+/// their names, their source cells in A and B, and the planes that split each source cell.
 template <class T>
-VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const T& eps, Blend blend, const Limits& limits,
-                     BooleanStats<T>* stats) {
-  using namespace vrep_detail;
-  if (eps < T(0)) throw ValidationError("eps", "must not be negative", "give eps >= 0");
-  // Only valid V-models in, only valid V-models out: a degenerate or inconsistent input is a
-  // typed error here, not an invalid result later.
-  for (const auto* X : {&A, &B}) {
-    const auto chk = check_invariants(*X, limits);
-    if (!chk.ok())
-      throw DomainError(X == &A ? "A" : "B", "is not a valid V-model: " + chk.failures.front(),
-                        "give regular cells glued face to face (vrep info shows the invariants)");
-  }
-  const auto planesA = model_planes(A, eps), planesB = model_planes(B, eps);
+struct Tiling {
   struct Source {
     std::optional<std::size_t> a, b;
   };
-  // Cuts forced on a source cell by a neighbour's tiling (a T-junction found in an earlier round):
-  // the planes that split the cell on the other side of the junction, and its face planes. They only grow, and there
-  // are finitely many planes, so the rounds end.
-  std::vector<std::vector<HalfSpace<T>>> forced[2] = {std::vector<std::vector<HalfSpace<T>>>(A.cells.size()),
-                                                      std::vector<std::vector<HalfSpace<T>>>(B.cells.size())};
-  for (int round = 0;; ++round) {
-    std::vector<BSpline<T>> cells;
-    std::vector<std::string> names;
-    std::vector<Source> sources;
-    std::vector<std::pair<int, std::size_t>> origin;  // (model, cell) whose tiling made the piece
-    std::vector<std::vector<HalfSpace<T>>> splitting[2] = {std::vector<std::vector<HalfSpace<T>>>(A.cells.size()),
-                                                           std::vector<std::vector<HalfSpace<T>>>(B.cells.size())};
-    std::size_t cut_count = 0;
+  std::vector<BSpline<T>> cells;
+  std::vector<std::string> names;
+  std::vector<Source> sources;
+  std::vector<std::pair<int, std::size_t>> origin;  // (model, cell) whose tiling made the piece
+  std::vector<std::vector<HalfSpace<T>>> splitting[2];
+  std::size_t cut_count = 0;
+};
+
+/// The junctions a round's conformity pass found: pairs of source cells (model, cell) whose pieces
+/// meet without being glued, and the first one found, in words.
+struct Junctions {
+  std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> pairs;
+  std::string first;
+};
+
+/// A boundary face of a piece that lies in a plane.
+template <class T>
+struct BoundaryFace {
+  std::size_t cell;
+  HalfSpace<T> H;  // the inner side of the piece's face plane
+  std::vector<std::vector<T>> corners;
+  std::string text;
+};
+
+/// Whether two boundary faces overlap with positive area in one plane from opposite sides.
+template <class T>
+bool boundary_faces_overlap(const BoundaryFace<T>& f, const BoundaryFace<T>& g, const T& eps) {
+  if (!(f.H.n[0] * g.H.n[0] + f.H.n[1] * g.H.n[1] + f.H.n[2] * g.H.n[2] < T(0))) return false;
+  const T tol = plane_tol(g.H, eps);
+  for (const auto& c : f.corners)
+    if (tol < magnitude(plane_at(g.H, c.data()))) return false;
+  // Positive-area overlap of two convex quadrilaterals in the plane (projected along the
+  // normal's largest coordinate): no edge of either separates them.
+  int drop = 0;
+  for (int d = 1; d < 3; ++d)
+    if (magnitude(f.H.n[drop]) < magnitude(f.H.n[d])) drop = d;
+  const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+  auto separates = [&](const std::vector<std::vector<T>>& P, const std::vector<std::vector<T>>& Q) {
+    T cu(0), cv(0);
+    for (const auto& p : P) {
+      cu += p[u];
+      cv += p[v];
+    }
+    cu /= T(4);
+    cv /= T(4);
+    for (int k = 0; k < 4; ++k) {
+      const auto &A = P[k], &B = P[(k + 1) % 4];
+      const T eu = B[u] - A[u], ev = B[v] - A[v];
+      auto side = [&](const T& x, const T& y) { return eu * (y - A[v]) - ev * (x - A[u]); };
+      const T inner = side(cu, cv);
+      const T etol = eps * (magnitude(eu) + magnitude(ev));
+      bool all_out = true;
+      for (const auto& q : Q) all_out = all_out && !(etol < (inner < T(0) ? T(-side(q[u], q[v])) : side(q[u], q[v])));
+      if (all_out) return true;
+    }
+    return false;
+  };
+  return !separates(f.corners, g.corners) && !separates(g.corners, f.corners);
+}
+
+/// The planar Boolean of two valid V-models (boolean_op), round by round: what its steps share are
+/// the operands, the planes of their cells and the cuts forced on their cells by earlier rounds.
+template <class T>
+class PlanarBoolean {
+ public:
+  PlanarBoolean(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const T& eps, Blend blend, const Limits& limits)
+      : A(A), B(B), op(op), eps(eps), blend(blend), limits(limits), planesA(model_planes(A, eps)), planesB(model_planes(B, eps)),
+        forced{std::vector<std::vector<HalfSpace<T>>>(A.cells.size()), std::vector<std::vector<HalfSpace<T>>>(B.cells.size())} {}
+
+  /// The rounds: tiling, gluing and conformity, until no junction is left; then the result's
+  /// invariants, the statistics and the sources and attributes of its cells.
+  VModel<T> run(BooleanStats<T>* stats) {
+    for (int round = 0;; ++round) {
+      const Tiling<T> tiling = tile();
+      if (tiling.cells.empty())
+        throw DomainError("result", "is empty (the models do not overlap where the operation keeps anything)", "check the operands and the operation");
+      VModel<T> M = glue(tiling.cells, eps, tiling.names, limits);
+      // No T-junctions: two boundary faces of different pieces may not overlap in one plane (with
+      // opposite sides). Where they do (a cut that splits one face and not the other, or two cells
+      // touching on faces that overlap in part), both source cells take each other's planes and the
+      // round is repeated.
+      Junctions junctions = face_junctions(M, tiling);
+      if (junctions.pairs.empty()) find_corner_junctions(M, tiling.origin, tiling.names, eps, junctions.pairs, junctions.first);
+      if (!junctions.pairs.empty()) {
+        if (take_each_others_planes(junctions, tiling) && round < 16) continue;
+        throw NotPlanarError("result", junctions.first + " (a T-junction the cuboid tiling could not resolve)",
+                             "cut as trimmed cells on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
+      }
+      const auto result_check = check_invariants(M, limits);
+      if (!result_check.ok())
+        throw DomainError("result", "fails the V-model invariants: " + result_check.failures.front(),
+                          "check that the inputs' cells are regular (vrep certify); please report it if they are");
+      if (stats) {
+        stats->pieces = tiling.cells.size();
+        stats->cuts = tiling.cut_count;
+        stats->rounds = static_cast<std::size_t>(round) + 1;
+      }
+      add_sources_and_attributes(M, tiling);
+      return M;
+    }
+  }
+
+ private:
+  /// Algorithms 1-3: each cell of A cut by the planes of the cells of B that overlap it (and by the
+  /// cuts forced on it), the pieces the operation keeps; in a union also B's pieces outside A.
+  Tiling<T> tile() const {
+    Tiling<T> tiling;
+    tiling.splitting[0] = std::vector<std::vector<HalfSpace<T>>>(A.cells.size());
+    tiling.splitting[1] = std::vector<std::vector<HalfSpace<T>>>(B.cells.size());
     for (std::size_t a = 0; a < A.cells.size(); ++a) {
       const auto& V = A.trivariates[A.cells[a].trivariates.front()];
-      for (auto& p : pieces_of(V, "A.cells[" + std::to_string(a) + "]", B, "B", planesB, forced[0][a], eps, limits, cut_count,
-                               splitting[0][a])) {
+      for (auto& p : pieces_of(V, "A.cells[" + std::to_string(a) + "]", B, "B", planesB, forced[0][a], eps, limits, tiling.cut_count,
+                               tiling.splitting[0][a])) {
         const bool keep = p.in ? op != BooleanOp::subtract : op != BooleanOp::intersect;
         if (!keep) continue;
-        names.push_back("A" + std::to_string(a) + (p.in ? "*B" + std::to_string(*p.in) : std::string()));
-        sources.push_back({a, p.in});
-        origin.push_back({0, a});
-        cells.push_back(std::move(p.V));
+        tiling.names.push_back("A" + std::to_string(a) + (p.in ? "*B" + std::to_string(*p.in) : std::string()));
+        tiling.sources.push_back({a, p.in});
+        tiling.origin.push_back({0, a});
+        tiling.cells.push_back(std::move(p.V));
       }
     }
     if (op == BooleanOp::unite)
       for (std::size_t b = 0; b < B.cells.size(); ++b) {
         const auto& V = B.trivariates[B.cells[b].trivariates.front()];
-        for (auto& p : pieces_of(V, "B.cells[" + std::to_string(b) + "]", A, "A", planesA, forced[1][b], eps, limits, cut_count,
-                                 splitting[1][b])) {
+        for (auto& p : pieces_of(V, "B.cells[" + std::to_string(b) + "]", A, "A", planesA, forced[1][b], eps, limits, tiling.cut_count,
+                                 tiling.splitting[1][b])) {
           if (p.in) continue;  // the intersection came from A's side
-          names.push_back("B" + std::to_string(b));
-          sources.push_back({std::nullopt, b});
-          origin.push_back({1, b});
-          cells.push_back(std::move(p.V));
+          tiling.names.push_back("B" + std::to_string(b));
+          tiling.sources.push_back({std::nullopt, b});
+          tiling.origin.push_back({1, b});
+          tiling.cells.push_back(std::move(p.V));
         }
       }
-    if (cells.empty())
-      throw DomainError("result", "is empty (the models do not overlap where the operation keeps anything)", "check the operands and the operation");
-    VModel<T> M = glue(cells, eps, names, limits);
-    // No T-junctions: two boundary faces of different pieces may not overlap in one plane (with
-    // opposite sides). Where they do (a cut that splits one face and not the other, or two cells
-    // touching on faces that overlap in part), both source cells take each other's planes and the
-    // round is repeated.
-    struct BoundaryFace {
-      std::size_t cell;
-      HalfSpace<T> H;  // the inner side of the piece's face plane
-      std::vector<std::vector<T>> corners;
-      std::string text;
-    };
-    std::vector<BoundaryFace> faces;
-    std::set<std::pair<std::pair<int, std::size_t>, std::pair<int, std::size_t>>> junctions;
-    std::string first_junction;
+    return tiling;
+  }
+
+  /// Conformity, the faces (find_corner_junctions looks at corners): a curved boundary face on a
+  /// face of its source cell that was glued in the input, and two planar boundary faces of
+  /// different pieces that overlap in part.
+  Junctions face_junctions(const VModel<T>& M, const Tiling<T>& tiling) const {
+    Junctions junctions;
+    std::vector<BoundaryFace<T>> faces;
     for (const auto& h : M.half_surfaces) {
       if (h.twin) continue;
       const auto& V = M.trivariates[h.trivariate];
-      const std::string text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + names[h.cell];
+      const std::string text = "face (" + std::to_string(h.dir) + ", " + std::to_string(h.side) + ") of piece " + tiling.names[h.cell];
       const auto H = face_plane(V, h.dir, h.side, eps);
       if (H) {
         faces.push_back({h.cell, *H, face_corners(V, h.dir, h.side), text});
@@ -560,7 +568,7 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       // A curved face (of a curved cell of A; B's cells are planar): a part of its source cell's
       // face, since cuts are planar. If that face was internal in A, the neighbour's pieces must
       // have the same part: a face left unglued here is a junction between the two source cells.
-      const auto [model, src] = origin[h.cell];
+      const auto [model, src] = tiling.origin[h.cell];
       const VModel<T>& S = model == 0 ? A : B;
       const auto& SV = S.trivariates[S.cells[src].trivariates.front()];
       const T end = h.side ? SV.domain_hi(h.dir) : SV.domain_lo(h.dir);
@@ -568,85 +576,49 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       if (!(end == here)) continue;
       for (const auto& sh : S.half_surfaces)
         if (sh.cell == src && sh.dir == h.dir && sh.side == h.side && sh.twin) {
-          junctions.insert({origin[h.cell], {model, S.half_surfaces[*sh.twin].cell}});
-          if (first_junction.empty()) first_junction = text + " lies on a face that was glued in the input and is not glued in the result";
+          junctions.pairs.insert({tiling.origin[h.cell], {model, S.half_surfaces[*sh.twin].cell}});
+          if (junctions.first.empty()) junctions.first = text + " lies on a face that was glued in the input and is not glued in the result";
         }
     }
-    auto overlap = [&](const BoundaryFace& f, const BoundaryFace& g) {
-      if (!(f.H.n[0] * g.H.n[0] + f.H.n[1] * g.H.n[1] + f.H.n[2] * g.H.n[2] < T(0))) return false;
-      const T tol = plane_tol(g.H, eps);
-      for (const auto& c : f.corners)
-        if (tol < magnitude(plane_at(g.H, c.data()))) return false;
-      // Positive-area overlap of two convex quadrilaterals in the plane (projected along the
-      // normal's largest coordinate): no edge of either separates them.
-      int drop = 0;
-      for (int d = 1; d < 3; ++d)
-        if (magnitude(f.H.n[drop]) < magnitude(f.H.n[d])) drop = d;
-      const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
-      auto separates = [&](const std::vector<std::vector<T>>& P, const std::vector<std::vector<T>>& Q) {
-        T cu(0), cv(0);
-        for (const auto& p : P) {
-          cu += p[u];
-          cv += p[v];
-        }
-        cu /= T(4);
-        cv /= T(4);
-        for (int k = 0; k < 4; ++k) {
-          const auto &A = P[k], &B = P[(k + 1) % 4];
-          const T eu = B[u] - A[u], ev = B[v] - A[v];
-          auto side = [&](const T& x, const T& y) { return eu * (y - A[v]) - ev * (x - A[u]); };
-          const T inner = side(cu, cv);
-          const T etol = eps * (magnitude(eu) + magnitude(ev));
-          bool all_out = true;
-          for (const auto& q : Q) all_out = all_out && !(etol < (inner < T(0) ? T(-side(q[u], q[v])) : side(q[u], q[v])));
-          if (all_out) return true;
-        }
-        return false;
-      };
-      return !separates(f.corners, g.corners) && !separates(g.corners, f.corners);
-    };
     for (std::size_t i = 0; i < faces.size(); ++i)
       for (std::size_t j = i + 1; j < faces.size(); ++j) {
-        if (faces[i].cell == faces[j].cell || !overlap(faces[i], faces[j])) continue;
-        junctions.insert({origin[faces[i].cell], origin[faces[j].cell]});
-        if (first_junction.empty()) first_junction = faces[i].text + " overlaps " + faces[j].text + " without being glued to it";
+        if (faces[i].cell == faces[j].cell || !boundary_faces_overlap(faces[i], faces[j], eps)) continue;
+        junctions.pairs.insert({tiling.origin[faces[i].cell], tiling.origin[faces[j].cell]});
+        if (junctions.first.empty()) junctions.first = faces[i].text + " overlaps " + faces[j].text + " without being glued to it";
       }
-    if (junctions.empty()) find_corner_junctions(M, origin, names, eps, junctions, first_junction);
-    if (!junctions.empty()) {
-      bool grew = false;
-      // The planes of a source cell's tiling: its splitting planes and its own face planes (two
-      // cells touching on faces that overlap only in part are cut to the common part).
-      auto give = [&](std::pair<int, std::size_t> from, std::pair<int, std::size_t> to) {
-        auto& f = forced[to.first][to.second];
-        std::vector<HalfSpace<T>> planes = splitting[from.first][from.second];
-        const auto& own = (from.first == 0 ? planesA : planesB)[from.second];
-        if (own) planes.insert(planes.end(), own->begin(), own->end());
-        for (const auto& H : planes) {
-          bool have = false;
-          for (const auto& G : f) have = have || (G.n == H.n && G.d == H.d);
-          if (!have) {
-            f.push_back(H);
-            grew = true;
-          }
+    return junctions;
+  }
+
+  /// The two source cells of each junction take each other's planes (forced on them from the next
+  /// round on). Whether any forced plane is new.
+  bool take_each_others_planes(const Junctions& junctions, const Tiling<T>& tiling) {
+    bool grew = false;
+    // The planes of a source cell's tiling: its splitting planes and its own face planes (two
+    // cells touching on faces that overlap only in part are cut to the common part).
+    auto give = [&](std::pair<int, std::size_t> from, std::pair<int, std::size_t> to) {
+      auto& f = forced[to.first][to.second];
+      std::vector<HalfSpace<T>> planes = tiling.splitting[from.first][from.second];
+      const auto& own = (from.first == 0 ? planesA : planesB)[from.second];
+      if (own) planes.insert(planes.end(), own->begin(), own->end());
+      for (const auto& H : planes) {
+        bool have = false;
+        for (const auto& G : f) have = have || (G.n == H.n && G.d == H.d);
+        if (!have) {
+          f.push_back(H);
+          grew = true;
         }
-      };
-      for (const auto& [x, y] : junctions) {
-        give(x, y);
-        give(y, x);
       }
-      if (grew && round < 16) continue;
-      throw NotPlanarError("result", first_junction + " (a T-junction the cuboid tiling could not resolve)",
-                           "cut as trimmed cells on the models' exact regions (vrep/trimmed/trimmed.hpp; vrep boolean --trim auto)");
+    };
+    for (const auto& [x, y] : junctions.pairs) {
+      give(x, y);
+      give(y, x);
     }
-    const auto result_check = check_invariants(M, limits);
-    if (!result_check.ok())
-      throw DomainError("result", "fails the V-model invariants: " + result_check.failures.front(),
-                        "check that the inputs' cells are regular (vrep certify); please report it if they are");
-    if (stats) {
-      stats->pieces = cells.size();
-      stats->cuts = cut_count;
-      stats->rounds = static_cast<std::size_t>(round) + 1;
-    }
+    return grew;
+  }
+
+  /// Each result cell holds its piece first and then the trivariates of its sources (Section 4), and
+  /// its sources' attributes by category (Figures 4, 5).
+  void add_sources_and_attributes(VModel<T>& M, const Tiling<T>& tiling) const {
     // The source trivariates, each once, and the attributes by category.
     std::map<std::pair<int, std::size_t>, std::size_t> added;
     auto source_index = [&](int model, std::size_t t) {
@@ -668,21 +640,21 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
       }
       // Fields: the piece's own model's restricted to the piece (the same parameters), the other
       // model's pulled back where its cell is affine (else named in not_carried).
-      const int own = origin[k].first;
+      const int own = tiling.origin[k].first;
       const VModel<T>& O = own == 0 ? A : B;
-      for (const auto& [name, F] : O.cells[origin[k].second].attributes.fields)
+      for (const auto& [name, F] : O.cells[tiling.origin[k].second].attributes.fields)
         cell.attributes.fields.emplace(name, restrict_to_box(F, lo.data(), hi.data(), limits));
-      if (sources[k].a) {
-        for (std::size_t t : A.cells[*sources[k].a].trivariates) cell.trivariates.push_back(source_index(0, t));
-        merge_constants(cell.attributes, A.cells[*sources[k].a].attributes, blend);
+      if (tiling.sources[k].a) {
+        for (std::size_t t : A.cells[*tiling.sources[k].a].trivariates) cell.trivariates.push_back(source_index(0, t));
+        merge_constants(cell.attributes, A.cells[*tiling.sources[k].a].attributes, blend);
       }
-      if (sources[k].b) {
-        for (std::size_t t : B.cells[*sources[k].b].trivariates) cell.trivariates.push_back(source_index(1, t));
-        merge_constants(cell.attributes, B.cells[*sources[k].b].attributes, blend);
+      if (tiling.sources[k].b) {
+        for (std::size_t t : B.cells[*tiling.sources[k].b].trivariates) cell.trivariates.push_back(source_index(1, t));
+        merge_constants(cell.attributes, B.cells[*tiling.sources[k].b].attributes, blend);
       }
-      if (sources[k].a && sources[k].b) {
+      if (tiling.sources[k].a && tiling.sources[k].b) {
         const VModel<T>& X = own == 0 ? B : A;
-        const std::size_t xc = own == 0 ? *sources[k].b : *sources[k].a;
+        const std::size_t xc = own == 0 ? *tiling.sources[k].b : *tiling.sources[k].a;
         const auto& fields = X.cells[xc].attributes.fields;
         if (fields.empty()) continue;
         const auto inv = affine_inverse(X.trivariates[X.cells[xc].trivariates.front()]);
@@ -696,99 +668,37 @@ VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const
         merge_fields(cell.attributes.fields, std::move(pulled), blend, limits);
       }
     }
-    return M;
   }
-}
+
+  const VModel<T>& A;
+  const VModel<T>& B;
+  const BooleanOp op;
+  const T& eps;
+  const Blend blend;
+  const Limits& limits;
+  const std::vector<std::optional<std::vector<HalfSpace<T>>>> planesA, planesB;
+  // Cuts forced on a source cell by a neighbour's tiling (a T-junction found in an earlier round):
+  // the planes that split the cell on the other side of the junction, and its face planes. They only grow, and there
+  // are finitely many planes, so the rounds end.
+  std::vector<std::vector<HalfSpace<T>>> forced[2];
+};
+
+}  // namespace vrep_detail
 
 template <class T>
-T cell_volume(const VModel<T>& M, std::size_t cell, const Limits& limits) {
-  if (cell >= M.cells.size()) throw ValidationError("cell", "is not a cell of the model", "give 0 <= cell < the number of cells");
-  const auto& V = M.trivariates[M.cells[cell].trivariates.front()];
-  if (V.is_rational())
-    throw DomainError("cells[" + std::to_string(cell) + "]", "is rational: its volume is not a rational number in general and the certified enclosure is not built yet",
-                      "use polynomial cells for exact volumes");
-  const T v = integrate(jacobian_determinant(V, limits))[0];
-  return v < T(0) ? T(-v) : v;
-}
-
-template <class T>
-VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, const Limits& limits) {
-  vrep_detail::require_jacobian_input(V, limits);
-  if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
-  // Per Bezier piece, in local coordinates s in [0, 1]^3 (the volume is the integral of the local
-  // det J over the unit cube): det J = N / W^4, N and W in Bernstein form.
-  struct Box {
-    Bernstein<T> N, W;
-    T vol, lo, hi;  // the box's share of the unit cube and the bounds of its integral
-  };
-  auto bounds = [](Box& b) { vrep_detail::box_integral_bounds(b.N, b.W, b.vol, b.lo, b.hi); };
-  const auto variation = [](const Bernstein<T>& b, int l) { return vrep_detail::coefficient_variation(b, l); };
-  auto wider = [](const Box& a, const Box& b) { return (a.hi - a.lo) < (b.hi - b.lo); };
-  std::priority_queue<Box, std::vector<Box>, decltype(wider)> queue(wider);
-  VolumeEnclosure<T> out;
-  const auto pieces = extract_bezier(V, limits);
-  for (const auto& pc : pieces) {
-    Box b{vrep_detail::jacobian_numerator(pc.spline), vrep_detail::homogeneous(pc.spline, 0), T(1), T(0), T(0)};
-    if (!V.is_rational()) {
-      // Polynomial: the integral of N over the unit cube is the mean of its coefficients, exactly.
-      T sum(0);
-      for (const auto& x : b.N.c) sum += x;
-      out.lower += sum / T(static_cast<long>(b.N.c.size()));
-      continue;
-    }
-    bounds(b);
-    queue.push(std::move(b));
+VModel<T> boolean_op(const VModel<T>& A, const VModel<T>& B, BooleanOp op, const T& eps, Blend blend, const Limits& limits,
+                     BooleanStats<T>* stats) {
+  using namespace vrep_detail;
+  if (eps < T(0)) throw ValidationError("eps", "must not be negative", "give eps >= 0");
+  // Only valid V-models in, only valid V-models out: a degenerate or inconsistent input is a
+  // typed error here, not an invalid result later.
+  for (const auto* X : {&A, &B}) {
+    const auto chk = check_invariants(*X, limits);
+    if (!chk.ok())
+      throw DomainError(X == &A ? "A" : "B", "is not a valid V-model: " + chk.failures.front(),
+                        "give regular cells glued face to face (vrep info shows the invariants)");
   }
-  if (!V.is_rational()) {
-    out.upper = out.lower;
-    if (out.lower < T(0)) out.lower = out.upper = -out.lower;
-    out.boxes = pieces.size();
-    return out;
-  }
-  while (queue.size() < max_boxes) {
-    Box b = queue.top();
-    if (b.hi == b.lo) break;
-    queue.pop();
-    // Halve it across the direction where W varies most (N's if W is constant there).
-    int dir = 0;
-    T best(-1);
-    for (int l = 0; l < 3; ++l) {
-      const T v = b.W.deg[l] > 0 ? variation(b.W, l) : T(0);
-      if (best < v) {
-        best = v;
-        dir = l;
-      }
-    }
-    if (best == T(0)) {
-      best = T(-1);
-      for (int l = 0; l < 3; ++l) {
-        const T v = b.N.deg[l] > 0 ? variation(b.N, l) : T(0);
-        if (best < v) {
-          best = v;
-          dir = l;
-        }
-      }
-    }
-    auto [N0, N1] = vrep_detail::split_half(b.N, dir);
-    auto [W0, W1] = vrep_detail::split_half(b.W, dir);
-    Box c0{std::move(N0), std::move(W0), b.vol / T(2), T(0), T(0)}, c1{std::move(N1), std::move(W1), b.vol / T(2), T(0), T(0)};
-    bounds(c0);
-    bounds(c1);
-    queue.push(std::move(c0));
-    queue.push(std::move(c1));
-  }
-  out.boxes = queue.size();
-  while (!queue.empty()) {
-    out.lower += queue.top().lo;
-    out.upper += queue.top().hi;
-    queue.pop();
-  }
-  if (out.upper < T(0)) {  // negatively oriented: the volume is the integral's magnitude
-    const T l = -out.upper;
-    out.upper = -out.lower;
-    out.lower = l;
-  }
-  return out;
+  return PlanarBoolean<T>(A, B, op, eps, blend, limits).run(stats);
 }
 
 template <class T>

@@ -354,132 +354,168 @@ namespace {
 
 Rational rabs(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 
-}  // namespace
+/// judge_point's steps on what they share: the surfaces, the point x~ and the domains, F(x~), the
+/// square system's unknowns and direction, and Y = F'(x~)^-1 taken exactly.
+class PointJudge {
+ public:
+  PointJudge(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const Limits& limits) : S1_(S1), S2_(S2), limits_(limits) {}
 
-SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiParams& xd, const SsiParams& dir,
-                         const Limits& limits) {
-  for (const auto* S : {&S1, &S2}) {
-    validate(*S, limits);
-    if (S->dim() != 2 || S->q < 3) throw ValidationError(S == &S1 ? "first" : "second", "is not a surface in R^3", "give a spline surface with points x,y,z");
-  }
-  SsiJudgement out;
-  std::array<Rational, 4> x, dlo, dhi;  // the point and the domains of (u, v, s, t)
-  for (int i = 0; i < 4; ++i) x[i] = exact_from_double(xd[i], "point");
-  for (int d = 0; d < 2; ++d) {
-    dlo[d] = S1.domain_lo(d);
-    dhi[d] = S1.domain_hi(d);
-    dlo[d + 2] = S2.domain_lo(d);
-    dhi[d + 2] = S2.domain_hi(d);
-  }
-  for (int i = 0; i < 4; ++i)
-    if (x[i] < dlo[i] || dhi[i] < x[i]) throw ValidationError("point", "lies outside the surfaces' domains", "give parameters inside both domains");
-  const auto p1 = evaluate(S1, {x[0], x[1]}), p2 = evaluate(S2, {x[2], x[3]});
-  Rational F[4];
-  for (int c = 0; c < 3; ++c) {
-    F[c] = p1[c] - p2[c];
-    out.gap2 += F[c] * F[c];
-  }
-  F[3] = 0;
-  if (S1.is_rational() || S2.is_rational()) {
-    out.why_not = "rational surfaces: the derivative ranges are not built";
-    return out;
-  }
-  for (int d = 0; d < 2; ++d)
-    if (S1.degrees[d] == 0 || S2.degrees[d] == 0) {
-      out.why_not = "a surface of degree 0 in a direction has no tangent plane";
-      return out;
+  /// The gap, then Krawczyk's test at radii from 4 |Y F| up (see judge_point).
+  SsiJudgement judge(const SsiParams& xd, const SsiParams& dir) {
+    measure_gap(xd);
+    if (!derivatives_ranged() || !choose_system(dir) || !invert_derivative()) return out_;
+    // Radii from 4 |Y F| up, by factors of 4.
+    if (!std::isfinite(yf_max_) || yf_max_ > 1) {
+      out_.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
+      return out_;
     }
+    int e = -44;
+    if (yf_max_ > 0) e = std::max(e, static_cast<int>(std::ceil(std::log2(4 * yf_max_))));
+    if (e > -2) out_.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
+    for (int attempt = 0; attempt < 4; ++attempt, e += 2) {
+      if (e > -2) break;
+      const Rational r = exact_from_double(std::ldexp(1.0, e), "radius");
+      std::array<Rational, 4> lo, hi;
+      if (!box_inside(r, lo, hi)) {
+        out_.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point near the boundary)";
+        break;
+      }
+      const auto R1 = restrict_to_box(S1_, &lo[0], &hi[0], limits_), R2 = restrict_to_box(S2_, &lo[2], &hi[2], limits_);
+      Rational rho[4];  // K(X) about x~: the root lies within |YF_i| + r sum_i of x~ in unknown i
+      if (!krawczyk(r, R1, R2, rho)) {
+        out_.why_not = "Krawczyk's test fails up to radius 2^" + std::to_string(e);
+        continue;
+      }
+      out_.certified = true;
+      out_.radius = r;
+      out_.why_not.clear();
+      out_.distance2_bound = distance_bound(R1, lo, hi, rho);
+      return out_;
+    }
+    return out_;
+  }
+
+ private:
+  // The point exactly, inside both domains, and its gap |S1 - S2|^2 (F(x~)).
+  void measure_gap(const SsiParams& xd) {
+    for (int i = 0; i < 4; ++i) x_[i] = exact_from_double(xd[i], "point");
+    for (int d = 0; d < 2; ++d) {
+      dlo_[d] = S1_.domain_lo(d);
+      dhi_[d] = S1_.domain_hi(d);
+      dlo_[d + 2] = S2_.domain_lo(d);
+      dhi_[d + 2] = S2_.domain_hi(d);
+    }
+    for (int i = 0; i < 4; ++i)
+      if (x_[i] < dlo_[i] || dhi_[i] < x_[i])
+        throw ValidationError("point", "lies outside the surfaces' domains", "give parameters inside both domains");
+    p1_ = evaluate(S1_, {x_[0], x_[1]});
+    const auto p2 = evaluate(S2_, {x_[2], x_[3]});
+    for (int c = 0; c < 3; ++c) {
+      F_[c] = p1_[c] - p2[c];
+      out_.gap2 += F_[c] * F_[c];
+    }
+    F_[3] = 0;
+  }
+
+  // The derivative ranges are built for polynomial surfaces with a tangent plane.
+  bool derivatives_ranged() {
+    if (S1_.is_rational() || S2_.is_rational()) {
+      out_.why_not = "rational surfaces: the derivative ranges are not built";
+      return false;
+    }
+    for (int d = 0; d < 2; ++d)
+      if (S1_.degrees[d] == 0 || S2_.degrees[d] == 0) {
+        out_.why_not = "a surface of degree 0 in a direction has no tangent plane";
+        return false;
+      }
+    return true;
+  }
+
   // A point on a domain boundary (where a branch ends): that parameter is fixed there and the
   // three equations S1 - S2 = 0 are solved for the other three; inside, the fourth equation
   // a.(x - x~) = 0 fixes the point along the curve.
-  int fixed = -1;
-  for (int i = 0; i < 4 && fixed < 0; ++i)
-    if (x[i] == dlo[i] || x[i] == dhi[i]) fixed = i;
-  std::vector<int> vars;
-  for (int i = 0; i < 4; ++i)
-    if (i != fixed) vars.push_back(i);
-  const int n = static_cast<int>(vars.size());  // unknowns and equations
-  std::array<double, 4> a{};
-  if (fixed < 0) {
-    double an = 0;
-    for (int i = 0; i < 4; ++i) an = std::max(an, std::abs(dir[i]));
-    if (!(an > 0) || !std::isfinite(an)) {
-      out.why_not = "no direction along the curve";
-      return out;
+  bool choose_system(const SsiParams& dir) {
+    for (int i = 0; i < 4 && fixed_ < 0; ++i)
+      if (x_[i] == dlo_[i] || x_[i] == dhi_[i]) fixed_ = i;
+    for (int i = 0; i < 4; ++i)
+      if (i != fixed_) vars_.push_back(i);
+    n_ = static_cast<int>(vars_.size());  // unknowns and equations
+    if (fixed_ < 0) {
+      double an = 0;
+      for (int i = 0; i < 4; ++i) an = std::max(an, std::abs(dir[i]));
+      if (!(an > 0) || !std::isfinite(an)) {
+        out_.why_not = "no direction along the curve";
+        return false;
+      }
+      for (int i = 0; i < 4; ++i) a_[i] = dir[i] / an;
     }
-    for (int i = 0; i < 4; ++i) a[i] = dir[i] / an;
+    return true;
   }
+
   // F'(x~) in double (the columns of the unknowns) and its inverse Y, taken exactly.
-  Eigen::Matrix4d J4;
-  {
-    const std::vector<Rational> u1{x[0], x[1]}, u2{x[2], x[3]};
-    const auto d1u = derivative(S1, u1, {1, 0}), d1v = derivative(S1, u1, {0, 1}), d2s = derivative(S2, u2, {1, 0}), d2t = derivative(S2, u2, {0, 1});
-    for (int c = 0; c < 3; ++c) {
-      J4(c, 0) = to_double(d1u[c]);
-      J4(c, 1) = to_double(d1v[c]);
-      J4(c, 2) = -to_double(d2s[c]);
-      J4(c, 3) = -to_double(d2t[c]);
+  bool invert_derivative() {
+    Eigen::Matrix4d J4;
+    {
+      const std::vector<Rational> u1{x_[0], x_[1]}, u2{x_[2], x_[3]};
+      const auto d1u = derivative(S1_, u1, {1, 0}), d1v = derivative(S1_, u1, {0, 1}), d2s = derivative(S2_, u2, {1, 0}),
+                 d2t = derivative(S2_, u2, {0, 1});
+      for (int c = 0; c < 3; ++c) {
+        J4(c, 0) = to_double(d1u[c]);
+        J4(c, 1) = to_double(d1v[c]);
+        J4(c, 2) = -to_double(d2s[c]);
+        J4(c, 3) = -to_double(d2t[c]);
+      }
+      for (int j = 0; j < 4; ++j) J4(3, j) = a_[j];
     }
-    for (int j = 0; j < 4; ++j) J4(3, j) = a[j];
+    Eigen::MatrixXd Jd(n_, n_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) Jd(i, j) = J4(i, vars_[j]);
+    if (!Jd.allFinite()) {
+      out_.why_not = "F' is beyond double's range at the point";
+      return false;
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(Jd);
+    if (!lu.isInvertible()) {
+      out_.why_not = "F' is singular at the point (tangential intersection?)";
+      return false;
+    }
+    const Eigen::MatrixXd Yd = lu.inverse();
+    if (!Yd.allFinite()) {
+      out_.why_not = "F' is beyond double's range at the point";
+      return false;
+    }
+    Y_.assign(n_, std::vector<Rational>(n_));
+    for (int i = 0; i < 4; ++i) A_[i] = exact_from_double(a_[i], "direction");
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) Y_[i][j] = exact_from_double(Yd(i, j), "Y");
+    YF_.resize(n_);
+    for (int i = 0; i < n_; ++i) {
+      for (int k = 0; k < n_; ++k) YF_[i] += Y_[i][k] * F_[k];
+      yf_max_ = std::max(yf_max_, std::abs(to_double(YF_[i])));
+    }
+    return true;
   }
-  Eigen::MatrixXd Jd(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) Jd(i, j) = J4(i, vars[j]);
-  if (!Jd.allFinite()) {
-    out.why_not = "F' is beyond double's range at the point";
-    return out;
-  }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(Jd);
-  if (!lu.isInvertible()) {
-    out.why_not = "F' is singular at the point (tangential intersection?)";
-    return out;
-  }
-  const Eigen::MatrixXd Yd = lu.inverse();
-  if (!Yd.allFinite()) {
-    out.why_not = "F' is beyond double's range at the point";
-    return out;
-  }
-  std::vector<std::vector<Rational>> Y(n, std::vector<Rational>(n));
-  Rational A[4];
-  for (int i = 0; i < 4; ++i) A[i] = exact_from_double(a[i], "direction");
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) Y[i][j] = exact_from_double(Yd(i, j), "Y");
-  std::vector<Rational> YF(n);
-  double yf_max = 0;
-  for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < n; ++k) YF[i] += Y[i][k] * F[k];
-    yf_max = std::max(yf_max, std::abs(to_double(YF[i])));
-  }
-  // Radii from 4 |Y F| up, by factors of 4.
-  if (!std::isfinite(yf_max) || yf_max > 1) {
-    out.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
-    return out;
-  }
-  int e = -44;
-  if (yf_max > 0) e = std::max(e, static_cast<int>(std::ceil(std::log2(4 * yf_max))));
-  if (e > -2) out.why_not = "the point is too far from the intersection (|F'(x)^-1 F(x)| > 1/16)";
-  for (int attempt = 0; attempt < 4; ++attempt, e += 2) {
-    if (e > -2) break;
-    const Rational r = exact_from_double(std::ldexp(1.0, e), "radius");
-    // The box: x~ +- r in the unknowns; the fixed parameter's side of width r inside the domain
-    // (a superset of the line it is fixed on: the ranges stay valid).
-    std::array<Rational, 4> lo, hi;
+
+  // The box: x~ +- r in the unknowns; the fixed parameter's side of width r inside the domain
+  // (a superset of the line it is fixed on: the ranges stay valid).
+  bool box_inside(const Rational& r, std::array<Rational, 4>& lo, std::array<Rational, 4>& hi) const {
     bool in = true;
     for (int i = 0; i < 4; ++i) {
-      if (i == fixed) {
-        lo[i] = x[i] == dlo[i] ? x[i] : Rational(x[i] - r);
-        hi[i] = x[i] == dlo[i] ? Rational(x[i] + r) : x[i];
+      if (i == fixed_) {
+        lo[i] = x_[i] == dlo_[i] ? x_[i] : Rational(x_[i] - r);
+        hi[i] = x_[i] == dlo_[i] ? Rational(x_[i] + r) : x_[i];
       } else {
-        lo[i] = x[i] - r;
-        hi[i] = x[i] + r;
+        lo[i] = x_[i] - r;
+        hi[i] = x_[i] + r;
       }
-      in = in && !(lo[i] < dlo[i]) && !(dhi[i] < hi[i]);
+      in = in && !(lo[i] < dlo_[i]) && !(dhi_[i] < hi[i]);
     }
-    if (!in) {
-      out.why_not = "the box of radius 2^" + std::to_string(e) + " leaves a domain (a point near the boundary)";
-      break;
-    }
-    const auto R1 = restrict_to_box(S1, &lo[0], &hi[0], limits), R2 = restrict_to_box(S2, &lo[2], &hi[2], limits);
+    return in;
+  }
+
+  // Krawczyk's test on the box x~ +- r (R1, R2: the surfaces restricted to it): K(X) inside the box,
+  // with rho its reach from x~ in each unknown.
+  bool krawczyk(const Rational& r, const BSpline<Rational>& R1, const BSpline<Rational>& R2, Rational rho[4]) const {
     // Interval Jacobian over the box: rows 0-2 the hodographs' coefficient ranges, row 3 the direction.
     Rational Jlo[4][4], Jhi[4][4];
     {
@@ -491,16 +527,15 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
           Jhi[c][j] = j < 2 ? b[c + 3] : Rational(-b[c]);
         }
       }
-      for (int j = 0; j < 4; ++j) Jlo[3][j] = Jhi[3][j] = A[j];
+      for (int j = 0; j < 4; ++j) Jlo[3][j] = Jhi[3][j] = A_[j];
     }
     bool ok = true;
-    Rational rho[4];  // K(X) about x~: the root lies within |YF_i| + r sum_i of x~ in unknown i
-    for (int i = 0; i < n && ok; ++i) {
+    for (int i = 0; i < n_ && ok; ++i) {
       Rational sum(0);
-      for (int j = 0; j < n; ++j) {
+      for (int j = 0; j < n_; ++j) {
         Rational slo(0), shi(0);  // the range of sum_k Y_ik J_k,vars[j]
-        for (int k = 0; k < n; ++k) {
-          const Rational p = Y[i][k] * Jlo[k][vars[j]], q = Y[i][k] * Jhi[k][vars[j]];
+        for (int k = 0; k < n_; ++k) {
+          const Rational p = Y_[i][k] * Jlo[k][vars_[j]], q = Y_[i][k] * Jhi[k][vars_[j]];
           slo += std::min(p, q);
           shi += std::max(p, q);
         }
@@ -508,41 +543,64 @@ SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S
         sum += std::max(rabs(delta - slo), rabs(delta - shi));
       }
       // K_i lies in x~_i - YF_i + [-r sum, r sum]; inside (x~_i - r, x~_i + r) when |YF_i| + r sum < r.
-      rho[vars[i]] = rabs(YF[i]) + r * sum;
-      ok = rho[vars[i]] < r;
+      rho[vars_[i]] = rabs(YF_[i]) + r * sum;
+      ok = rho[vars_[i]] < r;
     }
-    if (!ok) {
-      out.why_not = "Krawczyk's test fails up to radius 2^" + std::to_string(e);
-      continue;
-    }
-    out.certified = true;
-    out.radius = r;
-    out.why_not.clear();
-    // The true point S1(u*, v*): (u*, v*) in K(X) (the fixed parameter at its value); the hull of
-    // S1 on that smaller box bounds its distance from S1(u~, v~).
+    return ok;
+  }
+
+  // The true point S1(u*, v*): (u*, v*) in K(X) (the fixed parameter at its value); the hull of
+  // S1 on that smaller box bounds its distance from S1(u~, v~).
+  Rational distance_bound(const BSpline<Rational>& R1, const std::array<Rational, 4>& lo, const std::array<Rational, 4>& hi,
+                          const Rational rho[4]) const {
     Rational klo[2], khi[2];
     bool point_box = false;
     for (int d = 0; d < 2; ++d) {
-      if (d == fixed) {
+      if (d == fixed_) {
         klo[d] = lo[d];
         khi[d] = hi[d];
       } else {
-        klo[d] = x[d] - rho[d];
-        khi[d] = x[d] + rho[d];
+        klo[d] = x_[d] - rho[d];
+        khi[d] = x_[d] + rho[d];
         point_box = point_box || rho[d] == 0;
       }
     }
-    const BSpline<Rational> RK = point_box ? R1 : restrict_to_box(R1, klo, khi, limits);
+    const BSpline<Rational> RK = point_box ? R1 : restrict_to_box(R1, klo, khi, limits_);
     const auto box = control_bounds(RK);
     Rational bound(0);
     for (int c = 0; c < 3; ++c) {
-      const Rational m = std::max(rabs(box[c] - p1[c]), rabs(box[c + 3] - p1[c]));
+      const Rational m = std::max(rabs(box[c] - p1_[c]), rabs(box[c + 3] - p1_[c]));
       bound += m * m;
     }
-    out.distance2_bound = bound;
-    return out;
+    return bound;
   }
-  return out;
+
+  const BSpline<Rational>& S1_;
+  const BSpline<Rational>& S2_;
+  const Limits& limits_;
+  SsiJudgement out_;
+  std::array<Rational, 4> x_, dlo_, dhi_;  // the point and the domains of (u, v, s, t)
+  std::vector<Rational> p1_;               // S1(u~, v~)
+  Rational F_[4];                          // F(x~)
+  int fixed_ = -1;                         // the parameter fixed on a domain boundary, or -1
+  std::vector<int> vars_;                  // the unknowns
+  int n_ = 0;                              // unknowns and equations
+  std::array<double, 4> a_{};              // the direction along the curve (inside)
+  Rational A_[4];                          // a, exactly
+  std::vector<std::vector<Rational>> Y_;   // F'(x~)^-1, exactly
+  std::vector<Rational> YF_;               // Y F(x~)
+  double yf_max_ = 0;                      // max |Y F(x~)|, in double
+};
+
+}  // namespace
+
+SsiJudgement judge_point(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiParams& xd, const SsiParams& dir,
+                         const Limits& limits) {
+  for (const auto* S : {&S1, &S2}) {
+    validate(*S, limits);
+    if (S->dim() != 2 || S->q < 3) throw ValidationError(S == &S1 ? "first" : "second", "is not a surface in R^3", "give a spline surface with points x,y,z");
+  }
+  return PointJudge(S1, S2, limits).judge(xd, dir);
 }
 
 }  // namespace splinex

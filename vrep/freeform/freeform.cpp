@@ -281,40 +281,153 @@ Truth classify_point_freeform(const FreeformSolid<T>& S, const std::vector<T>& x
   return Truth::mixed;
 }
 
+namespace {
+
 template <class T>
-FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
-                              const Limits& limits) {
-  require_cell(V, "trivariate", limits);
-  if (options.max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
-  for (std::size_t j = 0; j < conditions.size(); ++j)
-    if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
-  const std::size_t nc = conditions.size();
-  using PatchPtr = std::shared_ptr<const typename FreeformSolid<T>::Patch>;
-  std::vector<std::vector<PatchPtr>> roots(nc);
-  for (std::size_t j = 0; j < nc; ++j)
-    for (const auto& p : conditions[j].solid->boundary) roots[j].push_back(std::make_shared<typename FreeformSolid<T>::Patch>(p));
-  struct Box {
-    H4<T> h;
-    Bernstein<T> N;
-    std::array<T, 3> lo, hi;
-    T vol;
-    std::array<T, 6> image;
-    std::vector<std::vector<PatchPtr>> cand;  // per condition: boundary pieces whose bounds meet the image's
-    std::vector<char> clear;                  // per condition: no candidate left
-  };
+using PatchPtr = std::shared_ptr<const typename FreeformSolid<T>::Patch>;
+
+/// A parameter box of the trimmed cell (freeform_cell): its piece's homogeneous net and det J's
+/// numerator, its parameters, the share of the piece's volume it holds, its image's bounds and its
+/// candidates.
+template <class T>
+struct CellBox {
+  H4<T> h;
+  Bernstein<T> N;
+  std::array<T, 3> lo, hi;
+  T vol;
+  std::array<T, 6> image;
+  std::vector<std::vector<PatchPtr<T>>> cand;  // per condition: boundary pieces whose bounds meet the image's
+  std::vector<char> clear;                     // per condition: no candidate left
+};
+
+// Settled: clear of every boundary, and det J's coefficients of one sign (then the box's volume
+// is exact for a polynomial V, Jensen / chord bounds for a rational one: see box_integral_bounds).
+template <class T>
+bool settled(const CellBox<T>& b) {
+  if (!std::all_of(b.clear.begin(), b.clear.end(), [](char c) { return c != 0; })) return false;
+  bool pos = false, neg = false;
+  for (const auto& x : b.N.c) {
+    pos |= T(0) < x;
+    neg |= x < T(0);
+  }
+  return !(pos && neg);
+}
+
+// The direction in which a box's image is longest: the largest step between neighbouring
+// control points along it (L1, times the degree: a bound on the speed), where halving helps most.
+template <class T>
+int longest_direction(const CellBox<T>& b) {
+  int best = 0;
+  T top(-1);
+  const auto& deg = b.h[0].deg;
+  for (int d = 0; d < 3; ++d) {
+    if (deg[d] == 0) continue;
+    const std::size_t stride = detail::tensor_stride(deg, d);
+    T m(0);
+    std::vector<int> idx(deg.size());
+    for (std::size_t i = 0; i < b.h[0].c.size(); ++i) {
+      detail::unflatten(i, deg, idx);
+      if (idx[d] == deg[d]) continue;
+      const std::size_t j = i + stride;
+      T step(0);
+      for (int k = 1; k < 4; ++k) {
+        const T a = b.h[k].c[i] / b.h[0].c[i], c = b.h[k].c[j] / b.h[0].c[j];
+        step += c < a ? T(a - c) : T(c - a);
+      }
+      if (m < step) m = step;
+    }
+    m *= T(deg[d]);
+    if (top < m) {
+      top = m;
+      best = d;
+    }
+  }
+  return best;
+}
+
+// The volume a box may hold: the upper bound of |det J| over it (the order of splitting).
+template <class T>
+T split_weight(const CellBox<T>& b) {
+  T l, h;
+  vrep_detail::box_integral_bounds(b.N, b.h[0], b.vol, l, h, 4, true);
+  return std::max(T(l < T(0) ? T(-l) : l), T(h < T(0) ? T(-h) : h));
+}
+
+template <class T>
+struct Queued {
+  T weight;
+  std::size_t at;
+  bool operator<(const Queued& o) const { return weight < o.weight; }
+};
+
+/// freeform_cell's steps on what they share: V's boxes are halved (subdivide), then decided by the
+/// conditions and measured (classify).
+template <class T>
+class CellTrimming {
+ public:
+  CellTrimming(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
+               const Limits& limits)
+      : V_(V), conditions_(conditions), options_(options), limits_(limits), nc_(conditions.size()), roots_(nc_) {
+    for (std::size_t j = 0; j < nc_; ++j)
+      for (const auto& p : conditions_[j].solid->boundary) roots_[j].push_back(std::make_shared<typename FreeformSolid<T>::Patch>(p));
+  }
+
+  /// The boxes, split until each is settled or the budget is spent: the settled ones, then the live
+  /// mixed ones.
+  void subdivide() {
+    require_box_limits();
+    start_boxes();
+    auto clock = std::chrono::steady_clock::now();
+    // Halve the boxes that are not settled, the one that may hold the most volume first, across the direction of its image's longest
+    // extent, until none is left or the budget is spent.
+    live_ = todo_.size();
+    while (live_ > 0 && live_ + done_.size() < options_.max_boxes) {
+      const std::size_t at = order_.top().at;
+      order_.pop();
+      split(at);
+      if (options_.progress && std::chrono::steady_clock::now() - clock > std::chrono::seconds(2)) {
+        clock = std::chrono::steady_clock::now();
+        options_.progress("freeform cell: " + std::to_string(done_.size() + live_) + " of " + std::to_string(options_.max_boxes) +
+                          " boxes, " + std::to_string(live_) + " near a boundary or not yet integrated");
+      }
+    }
+    boxes_ = std::move(done_);
+    while (!order_.empty()) {  // the live mixed boxes (a slot emptied by a split that left none is not queued)
+      boxes_.push_back(std::move(todo_[order_.top().at]));
+      order_.pop();
+    }
+    const std::size_t n = boxes_.size();
+    lo_.resize(n);
+    hi_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      lo_[i] = boxes_[i].lo;
+      hi_[i] = boxes_[i].hi;
+    }
+  }
+
+  /// The boxes decided (point queries per group of clear boxes, Kleene's and), the volume enclosed
+  /// and the components of the cover.
+  FreeformCell<T> classify() {
+    box_truths(condition_truths());
+    enclose_volume();
+    cover_components();
+    return std::move(out_);
+  }
+
+ private:
   // Filters a box's candidates to those meeting its image's bounds; pieces larger than the image
   // are halved in both directions (exact de Casteljau) first.
-  auto evaluate = [&](Box& b) {
+  void filter_candidates(CellBox<T>& b) const {
     b.image = bounds_of(b.h);
     const T size = extent(b.image);
-    b.clear.assign(nc, 0);
-    for (std::size_t j = 0; j < nc; ++j) {
-      std::vector<PatchPtr> keep, todo = std::move(b.cand[j]);
+    b.clear.assign(nc_, 0);
+    for (std::size_t j = 0; j < nc_; ++j) {
+      std::vector<PatchPtr<T>> keep, todo = std::move(b.cand[j]);
       while (!todo.empty()) {
-        PatchPtr p = std::move(todo.back());
+        PatchPtr<T> p = std::move(todo.back());
         todo.pop_back();
         if (!overlap(p->box, b.image)) continue;
-        if (size < extent(p->box) && keep.size() + todo.size() < options.max_candidates) {
+        if (size < extent(p->box) && keep.size() + todo.size() < options_.max_candidates) {
           auto [a, c] = split_h(p->h, 0);
           for (auto* half : {&a, &c}) {
             auto [e, f] = split_h(*half, 1);
@@ -332,105 +445,52 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
       b.cand[j] = std::move(keep);
       b.clear[j] = b.cand[j].empty();
     }
-  };
-  // Settled: clear of every boundary, and det J's coefficients of one sign (then the box's volume
-  // is exact for a polynomial V, Jensen / chord bounds for a rational one: see box_integral_bounds).
-  auto settled = [&](const Box& b) {
-    if (!std::all_of(b.clear.begin(), b.clear.end(), [](char c) { return c != 0; })) return false;
-    bool pos = false, neg = false;
-    for (const auto& x : b.N.c) {
-      pos |= T(0) < x;
-      neg |= x < T(0);
-    }
-    return !(pos && neg);
-  };
+  }
 
-  // The direction in which a box's image is longest: the largest step between neighbouring
-  // control points along it (L1, times the degree: a bound on the speed), where halving helps most.
-  auto longest = [](const Box& b) {
-    int best = 0;
-    T top(-1);
-    const auto& deg = b.h[0].deg;
-    for (int d = 0; d < 3; ++d) {
-      if (deg[d] == 0) continue;
-      const std::size_t stride = detail::tensor_stride(deg, d);
-      T m(0);
-      std::vector<int> idx(deg.size());
-      for (std::size_t i = 0; i < b.h[0].c.size(); ++i) {
-        detail::unflatten(i, deg, idx);
-        if (idx[d] == deg[d]) continue;
-        const std::size_t j = i + stride;
-        T step(0);
-        for (int k = 1; k < 4; ++k) {
-          const T a = b.h[k].c[i] / b.h[0].c[i], c = b.h[k].c[j] / b.h[0].c[j];
-          step += c < a ? T(a - c) : T(c - a);
-        }
-        if (m < step) m = step;
-      }
-      m *= T(deg[d]);
-      if (top < m) {
-        top = m;
-        best = d;
-      }
-    }
-    return best;
-  };
-  // The volume a box may hold: the upper bound of |det J| over it (the order of splitting).
-  auto weight = [](const Box& b) {
-    T l, h;
-    vrep_detail::box_integral_bounds(b.N, b.h[0], b.vol, l, h, 4, true);
-    return std::max(T(l < T(0) ? T(-l) : l), T(h < T(0) ? T(-h) : h));
-  };
-  struct Queued {
-    T weight;
-    std::size_t at;
-    bool operator<(const Queued& o) const { return weight < o.weight; }
-  };
   // Limits before the work: every box holds its homogeneous net and det J's numerator.
-  {
+  void require_box_limits() const {
     std::size_t h = 1, n = 1;
     for (int d = 0; d < 3; ++d) {
-      h = checked_product(h, static_cast<std::size_t>(V.degrees[d] + 1), limits, "trivariate piece");
-      n = checked_product(n, static_cast<std::size_t>((V.is_rational() ? 4 : 3) * V.degrees[d]), limits, "det J's numerator");
+      h = checked_product(h, static_cast<std::size_t>(V_.degrees[d] + 1), limits_, "trivariate piece");
+      n = checked_product(n, static_cast<std::size_t>((V_.is_rational() ? 4 : 3) * V_.degrees[d]), limits_, "det J's numerator");
     }
-    checked_product(4 * h + n, options.max_boxes, limits, "subdivision boxes of the cell (boxes times coefficients per box)");
+    checked_product(4 * h + n, options_.max_boxes, limits_, "subdivision boxes of the cell (boxes times coefficients per box)");
   }
-  const BezierForm<T> F = bezier_form(V, limits);
-  std::vector<Box> todo;  // mixed boxes, split largest weight first
-  std::priority_queue<Queued> order;
-  std::vector<Box> done;
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    Box b;
-    b.h = homogeneous_form(pc.spline);
-    b.N = vrep_detail::jacobian_numerator(pc.spline);
-    for (int d = 0; d < 3; ++d) {
-      b.lo[d] = pc.box[d].first;
-      b.hi[d] = pc.box[d].second;
-    }
-    b.vol = T(1);
-    b.cand = roots;
-    evaluate(b);
-    if (settled(b)) done.push_back(std::move(b));
-    else {
-      order.push({weight(b), todo.size()});
-      todo.push_back(std::move(b));
+
+  // The first boxes: V's Bezier pieces, each with every boundary piece of every condition as candidates.
+  void start_boxes() {
+    const BezierForm<T> F = bezier_form(V_, limits_);
+    for (std::size_t k = 0; k < F.size(); ++k) {
+      const auto pc = F.piece(k);
+      CellBox<T> b;
+      b.h = homogeneous_form(pc.spline);
+      b.N = vrep_detail::jacobian_numerator(pc.spline);
+      for (int d = 0; d < 3; ++d) {
+        b.lo[d] = pc.box[d].first;
+        b.hi[d] = pc.box[d].second;
+      }
+      b.vol = T(1);
+      b.cand = roots_;
+      filter_candidates(b);
+      if (settled(b))
+        done_.push_back(std::move(b));
+      else {
+        order_.push({split_weight(b), todo_.size()});
+        todo_.push_back(std::move(b));
+      }
     }
   }
-  auto clock = std::chrono::steady_clock::now();
-  // Halve the boxes that are not settled, the one that may hold the most volume first, across the direction of its image's longest extent, until none is left or the budget
-  // is spent.
-  std::size_t live = todo.size();
-  while (live > 0 && live + done.size() < options.max_boxes) {
-    const std::size_t at = order.top().at;
-    order.pop();
-    Box b = std::move(todo[at]);
-    --live;
-    const int dir = longest(b);
+
+  // The box in slot `at` halved across the direction in which its image is longest; a settled half
+  // is done, a mixed one queued.
+  void split(std::size_t at) {
+    CellBox<T> b = std::move(todo_[at]);
+    --live_;
+    const int dir = longest_direction(b);
     auto [h0, h1] = split_h(b.h, dir);
     auto [n0, n1] = vrep_detail::split_half(b.N, dir);
     const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
-    Box c[2];
+    CellBox<T> c[2];
     c[0].h = std::move(h0);
     c[1].h = std::move(h1);
     c[0].N = std::move(n0);
@@ -445,147 +505,183 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
     c[1].lo[dir] = mid;
     bool reuse = true;  // the first mixed half takes the parent's slot
     for (auto& x : c) {
-      evaluate(x);
+      filter_candidates(x);
       if (settled(x)) {
-        done.push_back(std::move(x));
+        done_.push_back(std::move(x));
         continue;
       }
-      const std::size_t slot = reuse ? at : todo.size();
-      order.push({weight(x), slot});
-      if (reuse) todo[at] = std::move(x);
-      else todo.push_back(std::move(x));
+      const std::size_t slot = reuse ? at : todo_.size();
+      order_.push({split_weight(x), slot});
+      if (reuse)
+        todo_[at] = std::move(x);
+      else
+        todo_.push_back(std::move(x));
       reuse = false;
-      ++live;
-    }
-    if (options.progress && std::chrono::steady_clock::now() - clock > std::chrono::seconds(2)) {
-      clock = std::chrono::steady_clock::now();
-      options.progress("freeform cell: " + std::to_string(done.size() + live) + " of " + std::to_string(options.max_boxes) + " boxes, " +
-                       std::to_string(live) + " near a boundary or not yet integrated");
+      ++live_;
     }
   }
-  std::vector<Box> boxes = std::move(done);
-  while (!order.empty()) {  // the live mixed boxes (a slot emptied by a split that left none is not queued)
-    boxes.push_back(std::move(todo[order.top().at]));
-    order.pop();
-  }
-  const std::size_t n = boxes.size();
-  std::vector<std::array<T, 3>> lo(n), hi(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    lo[i] = boxes[i].lo;
-    hi[i] = boxes[i].hi;
-  }
-  FreeformCell<T> out;
+
   // Per condition: the clear boxes in groups that touch, one point query per group.
-  std::vector<std::vector<Truth>> truth(nc, std::vector<Truth>(n, Truth::mixed));
-  for (std::size_t j = 0; j < nc; ++j) {
-    std::vector<std::size_t> ids;
-    for (std::size_t i = 0; i < n; ++i)
-      if (boxes[i].clear[j]) ids.push_back(i);
-    UnionFind uf(n);
-    join_touching(lo, hi, ids, uf);
-    std::vector<std::vector<std::size_t>> groups;
-    std::vector<long> group_of(n, -1);
-    for (std::size_t i : ids) {
-      const std::size_t r = uf.find(i);
-      if (group_of[r] < 0) {
-        group_of[r] = static_cast<long>(groups.size());
-        groups.emplace_back();
-      }
-      groups[static_cast<std::size_t>(group_of[r])].push_back(i);
-    }
-    for (const auto& g : groups) {
-      Truth t = Truth::mixed;
-      // Corners of up to eight of its boxes (spread over the group) until one is decided.
-      const std::size_t tries = std::min<std::size_t>(g.size(), 8);
-      for (std::size_t a = 0; a < tries && t == Truth::mixed; ++a) {
-        const Box& b = boxes[g[a * g.size() / tries]];
-        for (int s = 0; s < 8 && t == Truth::mixed; s += 7) {
-          // Corner s of the box: its control point (an exact point of the image).
-          const int i0 = s & 1 ? b.h[0].deg[0] : 0, i1 = (s >> 1) & 1 ? b.h[0].deg[1] : 0, i2 = s >> 2 ? b.h[0].deg[2] : 0;
-          const std::size_t idx = static_cast<std::size_t>(i0 + (b.h[0].deg[0] + 1) * (i1 + (b.h[0].deg[1] + 1) * i2));
-          std::vector<T> x(3);
-          for (int k = 0; k < 3; ++k) x[k] = b.h[k + 1].c[idx] / b.h[0].c[idx];
-          ++out.queries;
-          t = classify_point_freeform(*conditions[j].solid, x, options.solve, &out.systems);
-          if (t == Truth::mixed) ++out.undecided_queries;
+  std::vector<std::vector<Truth>> condition_truths() {
+    const std::size_t n = boxes_.size();
+    std::vector<std::vector<Truth>> truth(nc_, std::vector<Truth>(n, Truth::mixed));
+    for (std::size_t j = 0; j < nc_; ++j) {
+      std::vector<std::size_t> ids;
+      for (std::size_t i = 0; i < n; ++i)
+        if (boxes_[i].clear[j]) ids.push_back(i);
+      UnionFind uf(n);
+      join_touching(lo_, hi_, ids, uf);
+      std::vector<std::vector<std::size_t>> groups;
+      std::vector<long> group_of(n, -1);
+      for (std::size_t i : ids) {
+        const std::size_t r = uf.find(i);
+        if (group_of[r] < 0) {
+          group_of[r] = static_cast<long>(groups.size());
+          groups.emplace_back();
         }
+        groups[static_cast<std::size_t>(group_of[r])].push_back(i);
       }
-      for (std::size_t i : g) truth[j][i] = t;
+      for (const auto& g : groups) {
+        const Truth t = group_truth(j, g);
+        for (std::size_t i : g) truth[j][i] = t;
+      }
     }
+    return truth;
   }
+
+  // Condition j on a group of clear boxes that touch: one point query decides them all.
+  Truth group_truth(std::size_t j, const std::vector<std::size_t>& g) {
+    Truth t = Truth::mixed;
+    // Corners of up to eight of its boxes (spread over the group) until one is decided.
+    const std::size_t tries = std::min<std::size_t>(g.size(), 8);
+    for (std::size_t a = 0; a < tries && t == Truth::mixed; ++a) {
+      const CellBox<T>& b = boxes_[g[a * g.size() / tries]];
+      for (int s = 0; s < 8 && t == Truth::mixed; s += 7) {
+        // Corner s of the box: its control point (an exact point of the image).
+        const int i0 = s & 1 ? b.h[0].deg[0] : 0, i1 = (s >> 1) & 1 ? b.h[0].deg[1] : 0, i2 = s >> 2 ? b.h[0].deg[2] : 0;
+        const std::size_t idx = static_cast<std::size_t>(i0 + (b.h[0].deg[0] + 1) * (i1 + (b.h[0].deg[1] + 1) * i2));
+        std::vector<T> x(3);
+        for (int k = 0; k < 3; ++k) x[k] = b.h[k + 1].c[idx] / b.h[0].c[idx];
+        ++out_.queries;
+        t = classify_point_freeform(*conditions_[j].solid, x, options_.solve, &out_.systems);
+        if (t == Truth::mixed) ++out_.undecided_queries;
+      }
+    }
+    return t;
+  }
+
   // Each box: in when every condition holds, out when one fails (Kleene's and).
-  std::vector<Truth> box_truth(n);
-  bool has_in = false, has_out = false;
-  std::size_t mixed = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    Truth t = Truth::in;
-    for (std::size_t j = 0; j < nc; ++j) {
-      Truth c = truth[j][i];
-      if (!conditions[j].inside) c = c == Truth::in ? Truth::out : c == Truth::out ? Truth::in : Truth::mixed;
-      if (c == Truth::out) {
-        t = Truth::out;
-        break;
+  void box_truths(const std::vector<std::vector<Truth>>& truth) {
+    const std::size_t n = boxes_.size();
+    box_truth_ = std::vector<Truth>(n);
+    bool has_in = false, has_out = false;
+    std::size_t mixed = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      Truth t = Truth::in;
+      for (std::size_t j = 0; j < nc_; ++j) {
+        Truth c = truth[j][i];
+        if (!conditions_[j].inside) c = c == Truth::in ? Truth::out : c == Truth::out ? Truth::in : Truth::mixed;
+        if (c == Truth::out) {
+          t = Truth::out;
+          break;
+        }
+        if (c == Truth::mixed) t = Truth::mixed;
       }
-      if (c == Truth::mixed) t = Truth::mixed;
+      box_truth_[i] = t;
+      has_in |= t == Truth::in;
+      has_out |= t == Truth::out;
+      mixed += t == Truth::mixed;
     }
-    box_truth[i] = t;
-    has_in |= t == Truth::in;
-    has_out |= t == Truth::out;
-    mixed += t == Truth::mixed;
+    out_.cls.boxes = n;
+    out_.cls.mixed = mixed;
+    out_.cls.kind = cell_kind<T>(mixed == 0, has_in, has_out);
   }
-  out.cls.boxes = n;
-  out.cls.mixed = mixed;
-  out.cls.kind = cell_kind<T>(mixed == 0, has_in, has_out);
+
   // Volume: in-boxes' integral of det J, mixed boxes between none and all.
-  auto& v = out.volume;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (box_truth[i] == Truth::out) continue;
-    T l, h;
-    vrep_detail::box_integral_bounds(boxes[i].N, boxes[i].h[0], boxes[i].vol, l, h, 4, box_truth[i] == Truth::mixed);
-    if (box_truth[i] == Truth::mixed) {
-      l = std::min(T(0), l);
-      h = std::max(T(0), h);
+  void enclose_volume() {
+    const std::size_t n = boxes_.size();
+    auto& v = out_.volume;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (box_truth_[i] == Truth::out) continue;
+      T l, h;
+      vrep_detail::box_integral_bounds(boxes_[i].N, boxes_[i].h[0], boxes_[i].vol, l, h, 4, box_truth_[i] == Truth::mixed);
+      if (box_truth_[i] == Truth::mixed) {
+        l = std::min(T(0), l);
+        h = std::max(T(0), h);
+      }
+      v.lower += l;
+      v.upper += h;
     }
-    v.lower += l;
-    v.upper += h;
+    if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {
+      const T l = -v.upper;
+      v.upper = -v.lower;
+      v.lower = l;
+    }
+    v.boxes = n;
   }
-  if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {
-    const T l = -v.upper;
-    v.upper = -v.lower;
-    v.lower = l;
-  }
-  v.boxes = n;
+
   // Components of the cover (the boxes that are not out), with V's own identifications.
-  std::vector<std::size_t> cover;
-  for (std::size_t i = 0; i < n; ++i)
-    if (box_truth[i] != Truth::out) cover.push_back(i);
-  UnionFind uf(n);
-  join_touching(lo, hi, cover, uf);
-  join_identified(V, lo, hi, cover, uf, limits);
-  std::vector<long> comp(n, -1);
-  std::vector<char> comp_has_in;
-  for (std::size_t i : cover) {
-    const std::size_t r = uf.find(i);
-    if (comp[r] < 0) {
-      comp[r] = static_cast<long>(comp_has_in.size());
-      comp_has_in.push_back(0);
+  void cover_components() {
+    const std::size_t n = boxes_.size();
+    std::vector<std::size_t> cover;
+    for (std::size_t i = 0; i < n; ++i)
+      if (box_truth_[i] != Truth::out) cover.push_back(i);
+    UnionFind uf(n);
+    join_touching(lo_, hi_, cover, uf);
+    join_identified(V_, lo_, hi_, cover, uf, limits_);
+    std::vector<long> comp(n, -1);
+    std::vector<char> comp_has_in;
+    for (std::size_t i : cover) {
+      const std::size_t r = uf.find(i);
+      if (comp[r] < 0) {
+        comp[r] = static_cast<long>(comp_has_in.size());
+        comp_has_in.push_back(0);
+      }
+      if (box_truth_[i] == Truth::in) comp_has_in[static_cast<std::size_t>(comp[r])] = 1;
     }
-    if (box_truth[i] == Truth::in) comp_has_in[static_cast<std::size_t>(comp[r])] = 1;
+    out_.cover_components = comp_has_in.size();
+    out_.components = static_cast<std::size_t>(std::count(comp_has_in.begin(), comp_has_in.end(), 1));
+    for (std::size_t i : cover) {
+      typename FreeformCell<T>::Box b;
+      b.lo = lo_[i];
+      b.hi = hi_[i];
+      b.truth = box_truth_[i];
+      b.component = static_cast<int>(comp[uf.find(i)]);
+      out_.boxes.push_back(b);
+      if (b.truth == Truth::in && out_.cls.inside.empty()) out_.cls.inside = {lo_[i][0], lo_[i][1], lo_[i][2]};
+    }
+    for (std::size_t i = 0; i < n && out_.cls.outside.empty(); ++i)
+      if (box_truth_[i] == Truth::out) out_.cls.outside = {lo_[i][0], lo_[i][1], lo_[i][2]};
   }
-  out.cover_components = comp_has_in.size();
-  out.components = static_cast<std::size_t>(std::count(comp_has_in.begin(), comp_has_in.end(), 1));
-  for (std::size_t i : cover) {
-    typename FreeformCell<T>::Box b;
-    b.lo = lo[i];
-    b.hi = hi[i];
-    b.truth = box_truth[i];
-    b.component = static_cast<int>(comp[uf.find(i)]);
-    out.boxes.push_back(b);
-    if (b.truth == Truth::in && out.cls.inside.empty()) out.cls.inside = {lo[i][0], lo[i][1], lo[i][2]};
-  }
-  for (std::size_t i = 0; i < n && out.cls.outside.empty(); ++i)
-    if (box_truth[i] == Truth::out) out.cls.outside = {lo[i][0], lo[i][1], lo[i][2]};
-  return out;
+
+  const BSpline<T>& V_;
+  const std::vector<FreeformCondition<T>>& conditions_;
+  const FreeformOptions& options_;
+  const Limits& limits_;
+  const std::size_t nc_;
+  std::vector<std::vector<PatchPtr<T>>> roots_;  // per condition: its solid's boundary pieces
+  std::vector<CellBox<T>> todo_;                 // mixed boxes, split largest weight first
+  std::priority_queue<Queued<T>> order_;
+  std::vector<CellBox<T>> done_;
+  std::size_t live_ = 0;                   // the queued (mixed) boxes
+  std::vector<CellBox<T>> boxes_;          // after subdivide: the settled boxes, then the live mixed ones
+  std::vector<std::array<T, 3>> lo_, hi_;  // their parameter bounds
+  std::vector<Truth> box_truth_;
+  FreeformCell<T> out_;
+};
+
+}  // namespace
+
+template <class T>
+FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
+                              const Limits& limits) {
+  require_cell(V, "trivariate", limits);
+  if (options.max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
+  for (std::size_t j = 0; j < conditions.size(); ++j)
+    if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
+  CellTrimming<T> cell(V, conditions, options, limits);
+  cell.subdivide();
+  return cell.classify();
 }
 
 template <class T>

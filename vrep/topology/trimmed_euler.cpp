@@ -308,35 +308,16 @@ class EulerRun {
   std::size_t cells_ = 0;
 };
 
-}  // namespace
+/// V's identifications (geometry): kept faces, edges and corners of the domain.
+struct Kept {
+  std::array<std::array<bool, 2>, 3> face{};
+  std::array<std::array<std::array<bool, 2>, 2>, 3> edge{};  // [along][side of the lower other][side of the upper other]
+  std::array<bool, 8> corner{};
+};
 
 template <class T>
-TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options, const Limits& limits) {
-  require_jacobian_input(V, limits);
-  require_clamped(V);
-  if (options.max_cells < 1) throw ValidationError("cells", "must be at least 1", "give a positive cell budget");
-  if (options.max_level < 1 || options.max_level > 60) throw ValidationError("level", "must be in 1..60", "give a halving depth in 1..60");
-  require_positive_weights(V);
-  require_continuous(V);
-  std::vector<const Poly3<T>*> leaves;
-  collect_leaves(trim, leaves);
-  // Limits before the work, as the classification checks them.
-  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
-  int next = 0;
-  const Nnf f = to_nnf(trim, false, next);
-  const BezierForm<T> F = bezier_form(V, limits);
-  checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
-  std::array<std::size_t, 3> n{};
-  for (int d = 0; d < 3; ++d) n[d] = F.breaks[d].size() - 1;
-  std::vector<std::vector<Bernstein<T>>> G(F.size());
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    for (const auto* g : leaves) G[k].push_back(compose_leaf(*g, pc.spline));
-  }
-
-  // V's identifications (geometry): kept faces, edges and corners of the domain.
-  TrimmedEuler<T> out;
-  std::array<std::array<bool, 2>, 3> face_kept{};
+Kept kept_cells(const BSpline<T>& V, const Limits& limits, TrimmedEuler<T>& out) {
+  Kept kept;
   std::vector<BSpline<T>> kept_faces;
   for (int d = 0; d < 3; ++d)
     for (int s = 0; s < 2; ++s) {
@@ -345,10 +326,9 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
       for (const auto& K : kept_faces)
         if (keep && corner_set(K) == corner_set(S) && same_surface(K, S, T(0), limits)) keep = false;
       if (keep) kept_faces.push_back(S);
-      face_kept[d][s] = keep;
+      kept.face[d][s] = keep;
       if (!keep) ++out.identified_faces;
     }
-  std::array<std::array<std::array<bool, 2>, 2>, 3> edge_kept{};  // [along][side of the lower other][side of the upper other]
   std::vector<BSpline<T>> kept_edges;
   for (int along = 0; along < 3; ++along)
     for (int s1 = 0; s1 < 2; ++s1)
@@ -362,31 +342,40 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
         for (const auto& K : kept_edges)
           if (keep && same_curve(K, C, T(0), true, limits)) keep = false;
         if (keep) kept_edges.push_back(C);
-        edge_kept[along][s1][s2] = keep;
+        kept.edge[along][s1][s2] = keep;
         if (!keep) ++out.identified_edges;
       }
-  std::array<bool, 8> corner_kept{};
   std::vector<std::vector<T>> kept_corners;
   for (int c = 0; c < 8; ++c) {
     std::vector<T> x(3);
     for (int d = 0; d < 3; ++d) x[d] = (c >> d) & 1 ? V.domain_hi(d) : V.domain_lo(d);
     std::vector<T> p = evaluate(V, x);
     p.resize(3);
-    corner_kept[c] = std::find(kept_corners.begin(), kept_corners.end(), p) == kept_corners.end();
-    if (corner_kept[c]) kept_corners.push_back(p);
+    kept.corner[c] = std::find(kept_corners.begin(), kept_corners.end(), p) == kept_corners.end();
+    if (kept.corner[c]) kept_corners.push_back(p);
     else ++out.identified_corners;
   }
+  return kept;
+}
 
-  // The strata of the piece grid: per direction, the open segment (state 0), its start (1) or, for
-  // the last segment, its end (2); each with its leaves, box, place on the domain's boundary.
-  struct Stratum {
-    std::vector<Bernstein<T>> H;
-    std::vector<int> dirs;
-    std::array<T, 3> lo, hi;
-    bool inside = false;  // in the open domain (the interior's chi_c counts it)
-    bool kept = true;     // counted in the image
-  };
-  std::vector<Stratum> strata;
+/// A stratum of the piece grid with its leaves, box, place on the domain's boundary.
+template <class T>
+struct GridStratum {
+  std::vector<Bernstein<T>> H;
+  std::vector<int> dirs;
+  std::array<T, 3> lo, hi;
+  bool inside = false;  // in the open domain (the interior's chi_c counts it)
+  bool kept = true;     // counted in the image
+};
+
+/// The strata of the piece grid: per direction, the open segment (state 0), its start (1) or, for
+/// the last segment, its end (2); each with its leaves, box, place on the domain's boundary.
+template <class T>
+std::vector<GridStratum<T>> grid_strata(const BezierForm<T>& F, const std::vector<std::vector<Bernstein<T>>>& G, const Kept& kept,
+                                        TrimmedEuler<T>& out) {
+  std::array<std::size_t, 3> n{};
+  for (int d = 0; d < 3; ++d) n[d] = F.breaks[d].size() - 1;
+  std::vector<GridStratum<T>> strata;
   for (std::size_t k = 0; k < F.size(); ++k) {
     const std::array<std::size_t, 3> idx{k % n[0], (k / n[0]) % n[1], k / (n[0] * n[1])};
     for (int st = 0; st < 27; ++st) {
@@ -394,7 +383,7 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
       bool valid = true;
       for (int d = 0; d < 3; ++d) valid = valid && (state[d] != 2 || idx[d] + 1 == n[d]);
       if (!valid) continue;
-      Stratum z;
+      GridStratum<T> z;
       z.H = G[k];
       std::vector<std::pair<int, int>> boundary;  // (direction, side) of the domain it lies on
       for (int d = 0; d < 3; ++d) {
@@ -455,17 +444,22 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
         }
       }
       z.inside = boundary.empty();
-      if (boundary.size() == 1) z.kept = face_kept[boundary[0].first][boundary[0].second];
-      else if (boundary.size() == 2) z.kept = edge_kept[3 - boundary[0].first - boundary[1].first][boundary[0].second][boundary[1].second];
-      else if (boundary.size() == 3) z.kept = corner_kept[boundary[0].second | (boundary[1].second << 1) | (boundary[2].second << 2)];
+      if (boundary.size() == 1) z.kept = kept.face[boundary[0].first][boundary[0].second];
+      else if (boundary.size() == 2) z.kept = kept.edge[3 - boundary[0].first - boundary[1].first][boundary[0].second][boundary[1].second];
+      else if (boundary.size() == 3) z.kept = kept.corner[boundary[0].second | (boundary[1].second << 1) | (boundary[2].second << 2)];
       strata.push_back(std::move(z));
     }
   }
+  return strata;
+}
 
-  // chi_c summed over the strata; a split fraction that leaves a cell undecided is retried.
+/// chi_c summed over the strata; a split fraction that leaves a cell undecided is retried.
+template <class T>
+void sum_over_strata(const Nnf& f, std::size_t leaves, const std::vector<GridStratum<T>>& strata, const EulerOptions& options,
+                     TrimmedEuler<T>& out) {
   const std::vector<T> fractions{T(1) / T(2), T(7) / T(16), T(13) / T(32)};
   for (const T& split : fractions) {
-    EulerRun<T> run(f, leaves.size(), options.max_cells, options.max_level, split);
+    EulerRun<T> run(f, leaves, options.max_cells, options.max_level, split);
     try {
       long param = 0, image = 0, interior = 0;
       for (const auto& z : strata) {
@@ -482,12 +476,46 @@ TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const 
       out.split = split;
       out.cells += run.cells();
       out.undecided_reason.clear();
-      return out;
+      return;
     } catch (const Undecided& u) {
       out.cells += run.cells();
       out.undecided_reason = u.where;
     }
   }
+}
+
+}  // namespace
+
+template <class T>
+TrimmedEuler<T> trimmed_euler(const BSpline<T>& V, const Region<T>& trim, const EulerOptions& options, const Limits& limits) {
+  require_jacobian_input(V, limits);
+  require_clamped(V);
+  if (options.max_cells < 1) throw ValidationError("cells", "must be at least 1", "give a positive cell budget");
+  if (options.max_level < 1 || options.max_level > 60) throw ValidationError("level", "must be in 1..60", "give a halving depth in 1..60");
+  require_positive_weights(V);
+  require_continuous(V);
+  std::vector<const Poly3<T>*> leaves;
+  collect_leaves(trim, leaves);
+  // Limits before the work, as the classification checks them.
+  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
+  int next = 0;
+  const Nnf f = to_nnf(trim, false, next);
+  const BezierForm<T> F = bezier_form(V, limits);
+  checked_product(per_piece, F.size(), limits, "region composed with the trivariate's pieces");
+  std::vector<std::vector<Bernstein<T>>> G(F.size());
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto pc = F.piece(k);
+    for (const auto* g : leaves) G[k].push_back(compose_leaf(*g, pc.spline));
+  }
+
+  // V's identifications (geometry): kept faces, edges and corners of the domain.
+  TrimmedEuler<T> out;
+  const Kept kept = kept_cells(V, limits, out);
+
+  const std::vector<GridStratum<T>> strata = grid_strata(F, G, kept, out);
+
+  // chi_c summed over the strata; a split fraction that leaves a cell undecided is retried.
+  sum_over_strata(f, leaves.size(), strata, options, out);
   return out;
 }
 

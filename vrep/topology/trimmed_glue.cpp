@@ -120,7 +120,25 @@ class Gluer {
 
   TrimmedGluing<T> run() {
     TrimmedGluing<T> out;
-    // The halves: every cell's faces (not collapsed) and distinct trimming surfaces.
+    add_halves(out);
+    surface_twins(out);
+    glued_face_twins(out);
+    unmatched_parts(out);
+    Contacts contacts = locate_contacts(out);
+    contact_twins(out, contacts);
+    totals(out, contacts.partners);
+    return out;
+  }
+
+ private:
+  /// Where the face halves' unmatched parts met halves of other trivariates at witness points.
+  struct Contacts {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> met;  // (face half, surface half) -> witnesses
+    std::map<std::size_t, std::set<std::size_t>> partners;
+  };
+
+  /// The halves: every cell's faces (not collapsed) and distinct trimming surfaces.
+  void add_halves(TrimmedGluing<T>& out) const {
     for (std::size_t c = 0; c < M_.cells.size(); ++c) {
       const auto& V = M_.trivariates.at(M_.cells[c].trivariate);
       for (int d = 0; d < 3; ++d)
@@ -153,21 +171,26 @@ class Gluer {
         out.halves.push_back(h);
       }
     }
-    auto half_of = [&](std::size_t c, int d, int s, const Poly3<T>* g) -> std::optional<std::size_t> {
-      for (std::size_t i = 0; i < out.halves.size(); ++i) {
-        const auto& h = out.halves[i];
-        if (h.cell != c) continue;
-        if (g ? (h.leaf >= 0 && proportional(poly(h), *g) != 0) : (h.leaf < 0 && h.dir == d && h.side == s)) return i;
-      }
-      return std::nullopt;
-    };
-    // Exact twins (1): two cells of one trivariate on the two sides of one trimming surface.
+  }
+
+  /// The half of cell c on its face (d, s) (g null) or on its trimming surface g, if there is one.
+  std::optional<std::size_t> half_of(const TrimmedGluing<T>& out, std::size_t c, int d, int s, const Poly3<T>* g) const {
+    for (std::size_t i = 0; i < out.halves.size(); ++i) {
+      const auto& h = out.halves[i];
+      if (h.cell != c) continue;
+      if (g ? (h.leaf >= 0 && proportional(poly(h), *g) != 0) : (h.leaf < 0 && h.dir == d && h.side == s)) return i;
+    }
+    return std::nullopt;
+  }
+
+  /// Exact twins (1): two cells of one trivariate on the two sides of one trimming surface.
+  void surface_twins(TrimmedGluing<T>& out) const {
     for (std::size_t i = 0; i < out.halves.size(); ++i) {
       const auto& h = out.halves[i];
       if (h.leaf < 0 || (h.decided && h.internal == 0)) continue;
       for (std::size_t c2 = h.cell + 1; c2 < M_.cells.size(); ++c2) {
         if (tri(c2) != tri(h.cell)) continue;
-        const auto j = half_of(c2, -1, -1, &poly(h));
+        const auto j = half_of(out, c2, -1, -1, &poly(h));
         if (!j) continue;
         typename TrimmedGluing<T>::Twin t;
         t.a = i;
@@ -180,16 +203,19 @@ class Gluer {
         out.twins.push_back(t);
       }
     }
-    // Exact twins (2): faces of the trivariates glued exactly (seams of one trivariate included).
+  }
+
+  /// Exact twins (2): faces of the trivariates glued exactly (seams of one trivariate included).
+  void glued_face_twins(TrimmedGluing<T>& out) const {
     const auto glued = glued_faces();
     for (const auto& [fa, fb] : glued) {
       for (std::size_t c1 = 0; c1 < M_.cells.size(); ++c1) {
         if (tri(c1) != static_cast<std::size_t>(fa[0])) continue;
-        const auto i = half_of(c1, fa[1], fa[2], nullptr);
+        const auto i = half_of(out, c1, fa[1], fa[2], nullptr);
         if (!i || (out.halves[*i].decided && out.halves[*i].internal == 0)) continue;
         for (std::size_t c2 = 0; c2 < M_.cells.size(); ++c2) {
           if (tri(c2) != static_cast<std::size_t>(fb[0])) continue;
-          const auto j = half_of(c2, fb[1], fb[2], nullptr);
+          const auto j = half_of(out, c2, fb[1], fb[2], nullptr);
           if (!j) continue;
           typename TrimmedGluing<T>::Twin t;
           t.a = *i;
@@ -203,8 +229,11 @@ class Gluer {
         }
       }
     }
-    // What the exact twins leave of each half's internal part: contacts with cells of other
-    // trivariates across a surface that is not a parameter face of both.
+  }
+
+  /// What the exact twins leave of each half's internal part: contacts with cells of other
+  /// trivariates across a surface that is not a parameter face of both.
+  void unmatched_parts(TrimmedGluing<T>& out) const {
     for (std::size_t i = 0; i < out.halves.size(); ++i) {
       auto& h = out.halves[i];
       if (!h.decided || h.internal == 0) continue;
@@ -224,11 +253,15 @@ class Gluer {
       }
       h.unmatched = n;
     }
-    // Contacts, matched at witness points: rational points of a face half's unmatched part, located
-    // on the trimming surfaces of cells of other trivariates, or on their faces (affine
-    // trivariates: faces that overlap in part, which exact face gluing does not pair).
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> met;  // (face half, surface half) -> witnesses
-    std::map<std::size_t, std::set<std::size_t>> partners;
+  }
+
+  /// Contacts, matched at witness points: rational points of a face half's unmatched part, located
+  /// on the trimming surfaces of cells of other trivariates, or on their faces (affine
+  /// trivariates: faces that overlap in part, which exact face gluing does not pair).
+  Contacts locate_contacts(const TrimmedGluing<T>& out) const {
+    Contacts contacts;
+    auto& met = contacts.met;
+    auto& partners = contacts.partners;
     for (std::size_t i = 0; i < out.halves.size(); ++i) {
       const auto& h = out.halves[i];
       if (h.leaf >= 0 || !h.decided || h.unmatched == 0) continue;
@@ -243,11 +276,16 @@ class Gluer {
         }
       }
     }
-    // A contact between two halves that met only each other: one set (sampled), equal piece
-    // counts. A half that met several (one part of a cell against the trimming surfaces of several
-    // cells of the other operand, or the other way round), each of which met only it: its part is
-    // split among them, and the V-surfaces are theirs (each of its pieces holds at least one).
-    for (const auto& [ij, n] : met) {
+    return contacts;
+  }
+
+  /// A contact between two halves that met only each other: one set (sampled), equal piece
+  /// counts. A half that met several (one part of a cell against the trimming surfaces of several
+  /// cells of the other operand, or the other way round), each of which met only it: its part is
+  /// split among them, and the V-surfaces are theirs (each of its pieces holds at least one).
+  static void contact_twins(TrimmedGluing<T>& out, Contacts& contacts) {
+    auto& partners = contacts.partners;
+    for (const auto& [ij, n] : contacts.met) {
       typename TrimmedGluing<T>::Twin t;
       t.a = ij.first;
       t.b = ij.second;
@@ -281,7 +319,10 @@ class Gluer {
       }
       out.twins.push_back(t);
     }
-    // Totals.
+  }
+
+  /// Totals.
+  static void totals(TrimmedGluing<T>& out, const std::map<std::size_t, std::set<std::size_t>>& partners) {
     out.decided = true;
     for (const auto& h : out.halves) {
       out.decided = out.decided && h.decided;
@@ -303,10 +344,7 @@ class Gluer {
       }
     }
     out.half_v_surfaces = out.boundary_v_surfaces + 2 * out.internal_v_surfaces;
-    return out;
   }
-
- private:
   const TrimmedModel<T>& M_;
   TrimmedGlueOptions opt_;
   Limits limits_;

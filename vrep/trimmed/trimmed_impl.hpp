@@ -1,650 +1,37 @@
 // Trimmed V-cells on exact implicit regions (vrep/trimmed/trimmed.hpp): the templates, instantiated in
 // vrep/instances.cpp.
 #pragma once
-#include <algorithm>
-#include <functional>
-#include <map>
-#include <deque>
-#include <iterator>
-#include <optional>
-#include <queue>
-
-#include "base/verdict.hpp"
-#include "spline/bezier.hpp"
-#include "spline/insert.hpp"
-#include "spline/knots.hpp"
-#include "vrep/boolean/boolean_impl.hpp"
-#include "vrep/model/planted.hpp"
-#include "vrep/primitives/primitives_impl.hpp"
-#include "vrep/trimmed/trimmed.hpp"
+#include "vrep/trimmed/compose_leaf_impl.hpp"
+#include "vrep/trimmed/primitive_regions_impl.hpp"
 
 namespace splinex {
 
-template <class T>
-int Poly3<T>::degree() const {
-  int k = -1;
-  for (const auto& [e, c] : terms) k = std::max(k, e[0] + e[1] + e[2]);
-  return k;
-}
-
-template <class T>
-Region<T> region_leaf(Poly3<T> g, std::string label) {
-  for (auto it = g.terms.begin(); it != g.terms.end();)
-    it = it->second == T(0) ? g.terms.erase(it) : std::next(it);
-  if (g.terms.empty()) throw ValidationError("region" + (label.empty() ? std::string() : " (" + label + ")"), "has the zero polynomial as a leaf",
-                                             "give a non-zero polynomial g (the leaf is g >= 0)");
-  for (const auto& [e, c] : g.terms)
-    if (e[0] < 0 || e[1] < 0 || e[2] < 0) throw ValidationError("region", "has a negative exponent", "give exponents >= 0");
-  Region<T> r;
-  r.kind = Region<T>::leaf;
-  r.g = std::move(g);
-  r.label = std::move(label);
-  return r;
-}
-namespace vrep_detail {
-template <class T>
-Region<T> region_of(typename Region<T>::Kind kind, std::vector<Region<T>> parts) {
-  Region<T> r;
-  r.kind = kind;
-  r.parts = std::move(parts);
-  return r;
-}
-}  // namespace vrep_detail
-template <class T>
-Region<T> region_and(std::vector<Region<T>> parts) {
-  return vrep_detail::region_of(Region<T>::all_of, std::move(parts));
-}
-template <class T>
-Region<T> region_or(std::vector<Region<T>> parts) {
-  return vrep_detail::region_of(Region<T>::any_of, std::move(parts));
-}
-template <class T>
-Region<T> region_not(Region<T> x) {
-  if (x.kind == Region<T>::complement) return std::move(x.parts.front());
-  Region<T> r;
-  r.kind = Region<T>::complement;
-  r.parts.push_back(std::move(x));
-  return r;
-}
-
-template <class T>
-Region<T> region_cases(std::vector<std::pair<Region<T>, Region<T>>> cases) {
-  Region<T> r;
-  r.kind = Region<T>::cases;
-  for (auto& [piece, formula] : cases) {
-    r.parts.push_back(std::move(piece));
-    r.parts.push_back(std::move(formula));
-  }
-  return r;
-}
-
 namespace vrep_detail {
 
+/// The classification of one trivariate against a region by a refinement of its Bezier pieces
+/// (bernstein/subdivide.hpp: refine, breadth first): a box is decided where every leaf the formula
+/// depends on has Bernstein coefficients of one sign (beyond eps), and mixed boxes are halved across
+/// their widest parameter side until none is left, the budget is spent or both sides are
+/// certified (an in- or out-box, or an exact witness at a corner).
 template <class T>
-Poly3<T> poly_add(Poly3<T> a, const Poly3<T>& b, const T& s = T(1)) {
-  for (const auto& [e, c] : b.terms) {
-    T& x = a.terms[e];
-    x += s * c;
-  }
-  for (auto it = a.terms.begin(); it != a.terms.end();)
-    it = it->second == T(0) ? a.terms.erase(it) : std::next(it);
-  return a;
-}
-template <class T>
-Poly3<T> poly_mul(const Poly3<T>& a, const Poly3<T>& b) {
-  Poly3<T> r;
-  for (const auto& [e, c] : a.terms)
-    for (const auto& [f, d] : b.terms) r.terms[{e[0] + f[0], e[1] + f[1], e[2] + f[2]}] += c * d;
-  for (auto it = r.terms.begin(); it != r.terms.end();)
-    it = it->second == T(0) ? r.terms.erase(it) : std::next(it);
-  return r;
-}
-/// c0 + c1 x + c2 y + c3 z.
-template <class T>
-Poly3<T> poly_linear(const T& c0, const T& c1, const T& c2, const T& c3) {
-  Poly3<T> p;
-  if (c0 != T(0)) p.terms[{0, 0, 0}] = c0;
-  if (c1 != T(0)) p.terms[{1, 0, 0}] = c1;
-  if (c2 != T(0)) p.terms[{0, 1, 0}] = c2;
-  if (c3 != T(0)) p.terms[{0, 0, 1}] = c3;
-  return p;
-}
-template <class T>
-Poly3<T> poly_pow(const Poly3<T>& p, int k) {
-  Poly3<T> r = poly_linear(T(1), T(0), T(0), T(0));
-  for (int i = 0; i < k; ++i) r = poly_mul(r, p);
-  return r;
-}
-
-/// The leaves of a region in depth-first order.
-template <class T>
-void collect_leaves(const Region<T>& R, std::vector<const Poly3<T>*>& out) {
-  if (R.kind == Region<T>::leaf) {
-    if (R.alias < 0) out.push_back(&R.g);
-    return;
-  }
-  for (const auto& p : R.parts) collect_leaves(p, out);
-}
-
-/// Kleene's three-valued combination of the leaves' truths (consumed in collect_leaves' order).
-template <class T>
-Truth combine(const Region<T>& R, const std::vector<Truth>& leaf, std::size_t& k) {
-  switch (R.kind) {
-    case Region<T>::leaf: {
-      if (R.alias < 0) return leaf[k++];
-      const Truth t = leaf[static_cast<std::size_t>(R.alias)];
-      return !R.flip ? t : t == Truth::in ? Truth::out : t == Truth::out ? Truth::in : Truth::mixed;
-    }
-    case Region<T>::complement: {
-      const Truth t = combine(R.parts.front(), leaf, k);
-      return t == Truth::in ? Truth::out : t == Truth::out ? Truth::in : Truth::mixed;
-    }
-    case Region<T>::all_of: {
-      Truth t = Truth::in;
-      for (const auto& p : R.parts) t = std::min(t, combine(p, leaf, k));
-      return t;
-    }
-    case Region<T>::any_of: {
-      Truth t = Truth::out;
-      for (const auto& p : R.parts) t = std::max(t, combine(p, leaf, k));
-      return t;
-    }
-    case Region<T>::cases: {
-      // In: every case has its piece out or its formula in; out: its piece out or its formula out.
-      bool in = true, out = true, some_piece = false, some_in = false;
-      const bool planted = vrep_testing::is_planted(vrep_testing::Plant::cases_ignore_pieces);
-      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
-        const Truth c = combine(R.parts[i], leaf, k), f = combine(R.parts[i + 1], leaf, k);
-        some_in = some_in || f == Truth::in;
-        if (planted) continue;
-        if (c == Truth::out) continue;
-        some_piece = true;
-        in = in && f == Truth::in;
-        out = out && f == Truth::out;
-      }
-      if (planted) return some_in ? Truth::in : Truth::mixed;
-      // No piece at all (a sign pattern the pieces' cover rules out, which callers that force
-      // leaves may ask about): the union reading, out.
-      if (!some_piece) return Truth::out;
-      return in ? Truth::in : out ? Truth::out : Truth::mixed;
-    }
-  }
-  return Truth::mixed;
-}
-
-/// Which leaves can still change the formula's truth, given their truths on a box (`lt`, collect
-/// order; mixed: open): not a leaf under a part the others decide (a false part of an all_of, a
-/// true part of an any_of, the formula of a case whose piece is out). Marks the open leaves that
-/// can in `marks`; returns the part's value (1 true, 0 false) or -1 (open). A leaf that is not live
-/// may keep any truth Kleene's logic allows it (its last one): the formula's truth does not change.
-template <class T>
-int mark_live(const Region<T>& R, const std::vector<Truth>& lt, std::size_t& k, std::vector<std::size_t>& marks) {
-  auto value = [](Truth t) { return t == Truth::in ? 1 : t == Truth::out ? 0 : -1; };
-  switch (R.kind) {
-    case Region<T>::leaf: {
-      const std::size_t at = R.alias < 0 ? k++ : static_cast<std::size_t>(R.alias);
-      const int v = value(lt[at]);
-      if (v >= 0) return R.flip ? 1 - v : v;
-      marks.push_back(at);
-      return -1;
-    }
-    case Region<T>::complement: {
-      const int v = mark_live(R.parts.front(), lt, k, marks);
-      return v < 0 ? v : 1 - v;
-    }
-    case Region<T>::all_of:
-    case Region<T>::any_of: {
-      const int absorbing = R.kind == Region<T>::all_of ? 0 : 1;
-      const std::size_t first = marks.size();
-      bool open = false, absorbed = false;
-      for (const auto& p : R.parts) {
-        const int v = mark_live(p, lt, k, marks);  // (every part: k must pass all leaves)
-        if (v == absorbing) absorbed = true;
-        else if (v < 0) open = true;
-      }
-      if (absorbed || !open) {
-        marks.resize(first);
-        return absorbed ? absorbing : 1 - absorbing;
-      }
-      return -1;
-    }
-    case Region<T>::cases: {
-      const std::size_t first = marks.size();
-      int common = -2;  // the formulas' common value over the cases whose piece is not out (-1: differ or open)
-      bool any = false;
-      for (std::size_t i = 0; i + 1 < R.parts.size(); i += 2) {
-        const std::size_t before = marks.size();
-        const int c = mark_live(R.parts[i], lt, k, marks);
-        const int f = mark_live(R.parts[i + 1], lt, k, marks);
-        if (c == 0) {
-          marks.resize(before);
-          continue;
-        }
-        any = true;
-        common = common == -2 ? f : common == f ? f : -1;
-      }
-      if (!any || common >= 0) {
-        marks.resize(first);
-        return any ? common : 0;
-      }
-      return -1;
-    }
-  }
-  return -1;
-}
-
-/// The leaves live on a box (mark_live over the whole formula); true when the formula is open.
-template <class T>
-bool live_leaves(const Region<T>& R, const std::vector<Truth>& lt, std::vector<char>& live) {
-  live.assign(lt.size(), 0);
-  std::vector<std::size_t> marks;
-  std::size_t k = 0;
-  const int v = mark_live(R, lt, k, marks);
-  for (std::size_t at : marks) live[at] = 1;
-  return v < 0;
-}
-
-/// Whether the formula, the leaves outside `which` fixed at `fixed`, is decided for every sign
-/// pattern of the leaves in `which` and depends on each of them (they meet at a corner or along
-/// an edge of the cell's boundary there, rather than one passing the other by).
-template <class T>
-bool depends_on_each(const Region<T>& R, std::vector<Truth> fixed, const std::vector<std::size_t>& which) {
-  const std::size_t m = which.size();
-  std::vector<Truth> value(std::size_t(1) << m);
-  for (std::size_t pattern = 0; pattern < value.size(); ++pattern) {
-    for (std::size_t q = 0; q < m; ++q) fixed[which[q]] = (pattern >> q) & 1 ? Truth::in : Truth::out;
-    std::size_t k = 0;
-    value[pattern] = combine(R, fixed, k);
-    if (value[pattern] == Truth::mixed) return false;
-  }
-  for (std::size_t q = 0; q < m; ++q) {
-    bool depends = false;
-    for (std::size_t pattern = 0; pattern < value.size(); ++pattern) depends = depends || value[pattern] != value[pattern ^ (std::size_t(1) << q)];
-    if (!depends) return false;
-  }
-  return true;
-}
-
-template <class T>
-Truth value_truth(const T& v, const T& eps) {
-  return eps < v ? Truth::in : v < -eps ? Truth::out : Truth::mixed;
-}
-
-/// The truth of G >= 0 on a box from its Bernstein coefficients (within eps in float).
-template <class T>
-Truth coefficient_truth(const Bernstein<T>& G, const T& eps) {
-  bool nonneg = true, nonpos = true;
-  for (const auto& x : G.c) {
-    nonneg = nonneg && !(x < -eps);
-    nonpos = nonpos && !(eps < x);
-  }
-  if (nonpos) return Truth::out;  // also when G = 0 within eps: no interior there
-  return nonneg ? Truth::in : Truth::mixed;
-}
-
-/// The coefficients of the region's leaves that the subdivision boxes alive carry, against the
-/// limit (counted as they are made: a box carries only the leaves that can still change its truth).
-struct CarriedCoefficients {
-  const Limits& limits;
-  std::size_t n = 0;
-  template <class Leaves>
-  static std::size_t of(const Leaves& G) {
-    std::size_t k = 0;
-    for (const auto& g : G) k += g.c.size();
-    return k;
-  }
-  void add(std::size_t k, const std::string& who = "the boxes") {
-    n += k;
-    if (n > limits.max_control_points)
-      throw SizeLimitError("region composed on the subdivision boxes",
-                           who + " would carry " + std::to_string(n) + " coefficients of the region's leaves, above the limit of " +
-                               std::to_string(limits.max_control_points),
-                           "lower --boxes, or raise the limit with --max-control-points");
-  }
-  void remove(std::size_t k) { n -= k; }
-};
-
-/// Whether every Bernstein coefficient is > eps or every one < -eps (then every value is too).
-template <class T>
-bool strictly_signed(const Bernstein<T>& G, const T& eps) {
-  bool pos = true, neg = true;
-  for (const auto& x : G.c) {
-    pos = pos && eps < x;
-    neg = neg && x < -eps;
-  }
-  return !G.c.empty() && (pos || neg);
-}
-
-/// Positive weights: then the sign of g o T is the sign of the composed numerator W^k g(X/W, ...).
-template <class T>
-void require_positive_weights(const BSpline<T>& V) {
-  for (const auto& w : V.weights)
-    if (!(T(0) < w))
-      throw DomainError("trivariate.weights", "has a weight that is not positive: the sign of g o T is not the sign of its numerator", "give positive weights");
-}
-
-/// Clamped in every direction, so that the faces and edges of V's domain are layers of its net.
-template <class T>
-void require_clamped(const BSpline<T>& V) {
-  for (int d = 0; d < V.dim(); ++d)
-    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
-      throw ValidationError("trivariate.knots[" + std::to_string(d) + "]", "is not clamped: its faces and edges are not layers of the net",
-                            "clamp the trivariate first");
-}
-
-template <class T>
-bool all_zero(const Bernstein<T>& G) {
-  return std::all_of(G.c.begin(), G.c.end(), [](const T& x) { return x == T(0); });
-}
-
-/// Limits before the work: each leaf composed with V has prod (k p_d + 1) coefficients per Bezier
-/// piece; all leaves together are bounded like one spline's control points. Returns that count.
-template <class T>
-std::size_t composed_leaves_size(const BSpline<T>& V, const std::vector<const Poly3<T>*>& leaves, const Limits& limits) {
-  std::size_t per_piece = 0;
-  for (const auto* g : leaves) {
-    if (g->degree() > 8) throw SizeLimitError("region", "has a leaf of degree " + std::to_string(g->degree()) + " (at most 8)", "give polynomials of degree <= 8");
-    std::size_t n = 1;
-    for (int d = 0; d < 3; ++d) {
-      limits.check_degree(static_cast<long>(g->degree()) * V.degrees[d], "region composed with the trivariate");
-      n = checked_product(n, static_cast<std::size_t>(g->degree() * V.degrees[d] + 1), limits, "region composed with the trivariate");
-    }
-    per_piece += n;
-  }
-  limits.check_count(per_piece, "region composed with the trivariate");
-  return per_piece;
-}
-
-/// A tensor polynomial in the scaled Bernstein form with integer coefficients: s_i = c_i prod_d
-/// C(n_d, i_d) times a common positive factor. Products are plain convolutions (no division, no
-/// gcd: the exact composition's cost is integer multiplication, as in fraction-free elimination).
-struct IntTensor {
-  std::array<int, 3> deg{0, 0, 0};
-  std::vector<Integer> c;
-};
-
-inline IntTensor int_product(const IntTensor& a, const IntTensor& b) {
-  IntTensor r;
-  for (int d = 0; d < 3; ++d) r.deg[d] = a.deg[d] + b.deg[d];
-  const std::size_t a0 = a.deg[0] + 1, a1 = a.deg[1] + 1, a2 = a.deg[2] + 1;
-  const std::size_t b0 = b.deg[0] + 1, b1 = b.deg[1] + 1, b2 = b.deg[2] + 1;
-  const std::size_t r0 = r.deg[0] + 1, r1 = r.deg[1] + 1;
-  r.c.assign(r0 * r1 * (r.deg[2] + 1), Integer(0));
-  for (std::size_t i2 = 0; i2 < a2; ++i2)
-    for (std::size_t i1 = 0; i1 < a1; ++i1)
-      for (std::size_t i0 = 0; i0 < a0; ++i0) {
-        const Integer& x = a.c[i0 + a0 * (i1 + a1 * i2)];
-        if (x == 0) continue;
-        for (std::size_t j2 = 0; j2 < b2; ++j2)
-          for (std::size_t j1 = 0; j1 < b1; ++j1) {
-            Integer* out = &r.c[i0 + r0 * ((i1 + j1) + r1 * (i2 + j2))];
-            const Integer* y = &b.c[b0 * (j1 + b1 * j2)];
-            for (std::size_t j0 = 0; j0 < b0; ++j0)
-              mpz_addmul(out[j0].backend().data(), x.backend().data(), y[j0].backend().data());
-          }
-      }
-  return r;
-}
-
-/// Integer tables for exact arithmetic: binomials (kept per thread).
-inline const std::vector<Integer>& integer_binomials(int n) {
-  thread_local std::map<int, std::vector<Integer>> cache;
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  std::vector<Integer> row(static_cast<std::size_t>(n) + 1);
-  for (int k = 0; k <= n; ++k) mpz_bin_uiui(row[k].backend().data(), static_cast<unsigned long>(n), static_cast<unsigned long>(k));
-  return cache.emplace(n, std::move(row)).first->second;
-}
-
-/// prod_l C(deg_l, idx_l) for every flat index (integers), kept per thread.
-inline const std::vector<Integer>& tensor_binomial_integers(const std::vector<int>& deg) {
-  thread_local std::map<std::vector<int>, std::vector<Integer>> cache;
-  auto it = cache.find(deg);
-  if (it != cache.end()) return it->second;
-  std::vector<Integer> out(detail::tensor_size(deg), Integer(1));
-  std::vector<int> idx(deg.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    detail::unflatten(i, deg, idx);
-    for (std::size_t l = 0; l < deg.size(); ++l) out[i] *= integer_binomials(deg[l])[idx[l]];
-  }
-  return cache.emplace(deg, std::move(out)).first->second;
-}
-
-/// The powers 0..k of a Bezier piece's homogeneous coordinates W, X, Y, Z and their products,
-/// made once per piece and extended as leaves of higher degree ask (a piece's many leaves share
-/// them). In exact arithmetic as integer tensors (IntTensor) over the piece's common denominator.
-template <class T>
-struct PiecePowers {
-  const BSpline<T>* piece = nullptr;
-  std::array<std::vector<Bernstein<T>>, 4> pw;  // pw[c][i]: coordinate c (0 = W) to the power i
-  // Exact arithmetic: the coordinates times D (the lcm of their denominators) as integer tensors;
-  // products X^a Y^b and Z^c W^d by their exponents.
-  Integer D{1};
-  std::array<IntTensor, 4> base;
-  std::map<std::pair<int, int>, IntTensor> xy, zw;
-  bool integer_ready = false;
-  explicit PiecePowers(const BSpline<T>& p) : piece(&p) {}
-  const Bernstein<T>& at(int c, int i) {
-    if (pw[c].empty()) pw[c].push_back(Bernstein<T>{{0, 0, 0}, {T(1)}});
-    while (static_cast<int>(pw[c].size()) <= i) {
-      if (pw[c].size() == 1) pw[c].push_back(homogeneous(*piece, c));
-      else pw[c].push_back(mul(pw[c].back(), pw[c][1]));
-    }
-    return pw[c][static_cast<std::size_t>(i)];
-  }
-  void prepare_integer() {
-    if (integer_ready) return;
-    integer_ready = true;
-    std::array<const Bernstein<T>*, 4> h;
-    for (int c = 0; c < 4; ++c) {
-      h[c] = &at(c, 1);
-      for (const auto& x : h[c]->c) mpz_lcm(D.backend().data(), D.backend().data(), boost::multiprecision::denominator(x).backend().data());
-    }
-    for (int c = 0; c < 4; ++c) {
-      for (int d = 0; d < 3; ++d) base[c].deg[d] = h[c]->deg[d];
-      const auto& binom = tensor_binomial_integers({base[c].deg[0], base[c].deg[1], base[c].deg[2]});
-      for (std::size_t i = 0; i < h[c]->c.size(); ++i) {
-        const T v = h[c]->c[i] * T(D);
-        base[c].c.push_back(boost::multiprecision::numerator(v) * binom[i]);
-      }
-    }
-  }
-  /// a^i b^j for coordinates a, b (IntTensor; i = j = 0: the constant 1).
-  const IntTensor& pair_power(std::map<std::pair<int, int>, IntTensor>& cache, int a, int b, int i, int j) {
-    const auto key = std::make_pair(i, j);
-    auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
-    IntTensor r;
-    r.c = {Integer(1)};
-    if (i > 0) r = pair_power(cache, a, b, i - 1, j), r = int_product(r, base[a]);
-    else if (j > 0) r = pair_power(cache, a, b, i, j - 1), r = int_product(r, base[b]);
-    return cache.emplace(key, std::move(r)).first->second;
-  }
-};
-
-/// W^k g(X / W, Y / W, Z / W) on a Bezier piece (k the degree of g), exact.
-template <class T>
-Bernstein<T> compose_leaf(const Poly3<T>& g, PiecePowers<T>& P) {
-  const int k = g.degree();
-  std::vector<int> deg(3);
-  for (int d = 0; d < 3; ++d) deg[d] = k * P.piece->degrees[d];
-  Bernstein<T> G{deg, std::vector<T>(detail::tensor_size(deg), T(0))};
-  if (k == 1) {  // a plane: c0 W + c1 X + c2 Y + c3 Z, no products
-    for (const auto& [e, c] : g.terms) {
-      const int coord = e[0] ? 1 : e[1] ? 2 : e[2] ? 3 : 0;
-      const Bernstein<T>& h = P.at(coord, 1);
-      for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * h.c[i];
-    }
-    return G;
-  }
-  if constexpr (std::is_same_v<T, Rational>) {
-    // Integer tensors: g's coefficients times E (the lcm of their denominators); the terms grouped
-    // by their Z and W exponents, sum c X^a Y^b within a group, one product with Z^c W^d each.
-    P.prepare_integer();
-    Integer E(1);
-    for (const auto& [e, c] : g.terms) mpz_lcm(E.backend().data(), E.backend().data(), boost::multiprecision::denominator(c).backend().data());
-    std::map<std::pair<int, int>, IntTensor> groups;
-    for (const auto& [e, c] : g.terms) {
-      const IntTensor& xy = P.pair_power(P.xy, 1, 2, e[0], e[1]);
-      IntTensor& sum = groups[{e[2], k - e[0] - e[1] - e[2]}];
-      if (sum.c.empty()) {
-        sum.deg = xy.deg;
-        sum.c.assign(xy.c.size(), Integer(0));
-      }
-      const Integer ci = boost::multiprecision::numerator(T(c * T(E)));
-      for (std::size_t i = 0; i < xy.c.size(); ++i) mpz_addmul(sum.c[i].backend().data(), ci.backend().data(), xy.c[i].backend().data());
-    }
-    std::vector<Integer> S(G.c.size(), Integer(0));
-    for (const auto& [zw, sum] : groups) {
-      const IntTensor t = int_product(sum, P.pair_power(P.zw, 3, 0, zw.first, zw.second));
-      for (std::size_t i = 0; i < S.size(); ++i) S[i] += t.c[i];
-    }
-    // Back to the Bernstein coefficients' exact values: S / (prod C(k n_d, i_d) D^k E).
-    const auto& binom = tensor_binomial_integers(deg);
-    Integer scale = E;
-    for (int i = 0; i < k; ++i) scale *= P.D;
-    for (std::size_t i = 0; i < S.size(); ++i) G.c[i] = T(S[i]) / T(binom[i] * scale);
-    return G;
-  } else {
-    for (const auto& [e, c] : g.terms) {
-      const Bernstein<T> t = mul(mul(P.at(1, e[0]), P.at(2, e[1])), mul(P.at(3, e[2]), P.at(0, k - e[0] - e[1] - e[2])));
-      for (std::size_t i = 0; i < G.c.size(); ++i) G.c[i] += c * t.c[i];
-    }
-    return G;
-  }
-}
-template <class T>
-Bernstein<T> compose_leaf(const Poly3<T>& g, const BSpline<T>& piece) {
-  PiecePowers<T> P(piece);
-  return compose_leaf(g, P);
-}
-
-/// The corner coefficient (s0, s1, s2) of a tensor Bernstein polynomial: its value there.
-/// No inner knot of multiplicity above the degree: a trivariate that jumps there (C^-1) has a cell
-/// that is not a closed set, and its pieces' polynomials do not meet across the joint.
-template <class T>
-void require_continuous(const BSpline<T>& V) {
-  for (int d = 0; d < 3; ++d)
-    for (const T& b : breakpoints(V.knots[d], V.degrees[d], V.count(d)))
-      if (V.domain_lo(d) < b && b < V.domain_hi(d) && multiplicity(V.knots[d], b) > static_cast<std::size_t>(V.degrees[d]))
-        throw DomainError("trivariate.knots", "has an inner knot of multiplicity above the degree: the trivariate jumps there and its cell is not a closed set",
-                          "give a trivariate continuous across its inner knots");
-}
-
-/// The checks before a trimmed cell's subdivision, before any work (trimmed_topology,
-/// trimmed_curves): V a valid Jacobian input, clamped, with positive weights, continuous across
-/// its inner knots; a box budget of at least 8; the region composed on every box within the
-/// limits. The region's leaves (collect order).
-template <class T>
-std::vector<const Poly3<T>*> checked_trim_leaves(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const Limits& limits) {
+CellClass<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t max_boxes, const T& eps, const Limits& limits) {
   require_jacobian_input(V, limits);
-  if (max_boxes < 8) throw ValidationError("boxes", "must be at least 8", "give a larger box budget");
-  require_clamped(V);
-  require_positive_weights(V);
-  require_continuous(V);
-  std::vector<const Poly3<T>*> leaves;
-  collect_leaves(trim, leaves);
-  checked_product(composed_leaves_size(V, leaves, limits) + 1, max_boxes, limits, "region composed on the subdivision boxes");
-  return leaves;
-}
-
-/// The leaves composed with V on each Bezier piece of V, with the piece's parameter box.
-template <class T>
-struct LeafPiece {
-  std::vector<Bernstein<T>> G;  // per leaf (collect order), Bernstein form on the piece
-  std::array<T, 3> lo, hi;
-};
-template <class T>
-std::vector<LeafPiece<T>> leaf_pieces(const BSpline<T>& V, const std::vector<const Poly3<T>*>& leaves, const Limits& limits) {
-  const BezierForm<T> F = bezier_form(V, limits);
-  std::vector<LeafPiece<T>> pieces(F.size());
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    for (const auto* g : leaves) pieces[k].G.push_back(compose_leaf(*g, pc.spline));
-    for (int d = 0; d < 3; ++d) {
-      pieces[k].lo[d] = pc.box[d].first;
-      pieces[k].hi[d] = pc.box[d].second;
-    }
-  }
-  return pieces;
-}
-
-template <class T>
-const T& corner(const Bernstein<T>& b, int s0, int s1, int s2) {
-  const std::size_t n0 = b.deg[0] + 1, n1 = b.deg[1] + 1;
-  return b.c[(s0 ? b.deg[0] : 0) + n0 * ((s1 ? b.deg[1] : 0) + n1 * (s2 ? b.deg[2] : 0))];
-}
-
-/// Subdivision of one trivariate against a region: classification and, optionally, the volume.
-template <class T>
-struct TrimRun {
-  CellClass<T> cls;
-  VolumeEnclosure<T> volume, moment;  // moment: of the point coordinate `coordinate` (if >= 0)
-};
-
-/// V and a field on its domain refined to the same breakpoints (each missing breakpoint inserted
-/// once; bezier_form raises the multiplicities), so that their Bezier pieces correspond one to one.
-template <class T>
-std::pair<BSpline<T>, BSpline<T>> common_breakpoints(const BSpline<T>& V, const BSpline<T>& F, const Limits& limits) {
-  BSpline<T> a = V, b = F;
-  for (int d = 0; d < 3; ++d) {
-    const auto ba = breakpoints(V.knots[d], V.degrees[d], V.count(d)), bb = breakpoints(F.knots[d], F.degrees[d], F.count(d));
-    std::vector<T> to_a, to_b;
-    std::set_difference(bb.begin(), bb.end(), ba.begin(), ba.end(), std::back_inserter(to_a));
-    std::set_difference(ba.begin(), ba.end(), bb.begin(), bb.end(), std::back_inserter(to_b));
-    if (!to_a.empty()) a = refine_knots(a, d, to_a, limits);
-    if (!to_b.empty()) b = refine_knots(b, d, to_b, limits);
-  }
-  return {std::move(a), std::move(b)};
-}
-
-/// The checks of an integrand field against its cell's trivariate (`name` for messages).
-template <class T>
-void require_field(const BSpline<T>& V, const BSpline<T>& F, int component, const std::string& name, const Limits& limits) {
-  require_field_on(V, F, name, limits);
-  if (component < 0 || component >= F.q)
-    throw ValidationError(name + ".component", "is not a component of the field (it has " + std::to_string(F.q) + ")",
-                          "give 0 <= component < " + std::to_string(F.q));
-  if (F.is_rational())
-    throw DomainError(name, "is rational: the integrand F N / (w W^4) has a second denominator and its enclosure is not built",
-                      "give a polynomial field");
-}
-
-template <class T>
-TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max_boxes, bool want_volume, const T& eps, const Limits& limits,
-                    int coordinate = -1, const BSpline<T>* field = nullptr) {
-  require_jacobian_input(V0, limits);
-  // With a field the integrand is its component `coordinate` times det J = N / W^4 (power 4);
-  // without one, the point coordinate X_c / W times det J (power 5).
-  std::optional<std::pair<BSpline<T>, BSpline<T>>> refined;
-  if (field) {
-    require_field(V0, *field, coordinate, "field", limits);
-    refined = common_breakpoints(V0, *field, limits);
-  }
-  const BSpline<T>& V = refined ? refined->first : V0;
-  const int power = field ? 4 : 5;
   if (max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
   require_positive_weights(V);
   std::vector<const Poly3<T>*> leaves;
   collect_leaves(trim, leaves);
   // Limits before the work: all leaves composed on one piece; the boxes' compositions are counted
   // as they are made (a box carries only the leaves that can still change its truth).
-  const std::size_t per_piece = composed_leaves_size(V, leaves, limits);
-  if (!field && coordinate >= V.q) throw ValidationError("coordinate", "is not a point coordinate of the trivariate", "give 0 <= coordinate < q");
+  composed_leaves_size(V, leaves, limits);
   struct Box {
-    std::vector<Bernstein<T>> G;   // per leaf: its composition, or empty where it is not carried
-    std::vector<Truth> lt;    // per leaf: its truth on the box (not carried: its last one)
-    Bernstein<T> N, W, Q;  // Q = X_c N: the moment's numerator (over W^5)
-    std::array<T, 3> lo, hi;  // in the trivariate's parameters
-    T vol;                    // share of its piece's unit cube
+    std::vector<Bernstein<T>> G;  // per leaf: its composition, or empty where it is not carried
+    std::vector<Truth> lt;        // per leaf: its truth on the box (not carried: its last one)
+    std::array<T, 3> lo, hi;      // in the trivariate's parameters
     Truth truth = Truth::mixed;
   };
-  TrimRun<T> out;
-  auto& cls = out.cls;
+  CellClass<T> cls;
   bool has_in = false, has_out = false;
   CarriedCoefficients carried{limits};
-  auto count = [](const Box& b) { return CarriedCoefficients::of(b.G); };
-  auto take = [&](std::size_t n) { carried.add(n); };
   auto evaluate = [&](Box& b) {
     for (std::size_t l = 0; l < b.G.size(); ++l)
       if (!b.G[l].c.empty()) b.lt[l] = coefficient_truth(b.G[l], eps);
@@ -680,198 +67,68 @@ TrimRun<T> run_trim(const BSpline<T>& V0, const Region<T>& trim, std::size_t max
       if (b.lt[l] == Truth::mixed || strictly_signed(b.G[l], eps)) b.G[l] = Bernstein<T>{};
     }
   };
-  std::deque<Box> todo;
-  std::vector<Box> done;
-  // Halves of a box across direction dir (exact de Casteljau on everything it carries).
-  auto split_box = [&](const Box& b, int dir, Box* c) {
+  auto examine = [&](Box& b) {
+    evaluate(b);
+    carried.add(CarriedCoefficients::of(b.G));
+    return b.truth == Truth::mixed ? Examined::split : Examined::settled;
+  };
+  // Halves across the widest parameter side (exact de Casteljau on the leaves it carries).
+  auto split = [&](Box&& b, int, auto&& emit) {
+    carried.remove(CarriedCoefficients::of(b.G));
+    int dir = 0;
+    for (int d = 1; d < 3; ++d)
+      if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
+    Box c[2];
     for (int h = 0; h < 2; ++h) {
       c[h].lo = b.lo;
       c[h].hi = b.hi;
-      c[h].vol = b.vol / T(2);
       c[h].G.resize(b.G.size());
       c[h].lt = b.lt;
     }
     for (std::size_t l = 0; l < b.G.size(); ++l)
       if (!b.G[l].c.empty()) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
-    if (want_volume) {
-      std::tie(c[0].N, c[1].N) = split_half(b.N, dir);
-      std::tie(c[0].W, c[1].W) = split_half(b.W, dir);
-      if (coordinate >= 0) std::tie(c[0].Q, c[1].Q) = split_half(b.Q, dir);
-    }
     const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
     c[0].hi[dir] = mid;
     c[1].lo[dir] = mid;
+    emit(std::move(c[0]));
+    emit(std::move(c[1]));
   };
   const BezierForm<T> F = bezier_form(V, limits);
-  std::optional<BezierForm<T>> FF;
-  if (field && want_volume) FF = bezier_form(refined->second, limits);
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    Box b;
-    // The planes first (cheap); then only the leaves the formula may still depend on.
-    b.G.resize(leaves.size());
-    b.lt.assign(leaves.size(), Truth::mixed);
-    PiecePowers<T> powers(pc.spline);
-    for (std::size_t l = 0; l < leaves.size(); ++l)
-      if (leaves[l]->degree() <= 1) {
-        b.G[l] = compose_leaf(*leaves[l], powers);
-        b.lt[l] = coefficient_truth(b.G[l], eps);
+  // The roots, each examined as it is made: every Bezier piece.
+  auto roots = [&](auto&& emit) {
+    for (std::size_t k = 0; k < F.size(); ++k) {
+      const auto pc = F.piece(k);
+      Box b;
+      // The planes first (cheap); then only the leaves the formula may still depend on.
+      b.G.resize(leaves.size());
+      b.lt.assign(leaves.size(), Truth::mixed);
+      PiecePowers<T> powers(pc.spline);
+      for (std::size_t l = 0; l < leaves.size(); ++l)
+        if (leaves[l]->degree() <= 1) {
+          b.G[l] = compose_leaf(*leaves[l], powers);
+          b.lt[l] = coefficient_truth(b.G[l], eps);
+        }
+      std::vector<char> live;
+      live_leaves(trim, b.lt, live);
+      for (std::size_t l = 0; l < leaves.size(); ++l)
+        if (leaves[l]->degree() > 1 && live[l]) b.G[l] = compose_leaf(*leaves[l], powers);
+      for (int d = 0; d < 3; ++d) {
+        b.lo[d] = pc.box[d].first;
+        b.hi[d] = pc.box[d].second;
       }
-    std::vector<char> live;
-    live_leaves(trim, b.lt, live);
-    for (std::size_t l = 0; l < leaves.size(); ++l)
-      if (leaves[l]->degree() > 1 && live[l]) b.G[l] = compose_leaf(*leaves[l], powers);
-    if (want_volume) {
-      b.N = jacobian_numerator(pc.spline);
-      b.W = homogeneous(pc.spline, 0);
-      if (FF) b.Q = mul(homogeneous(FF->piece(k).spline, coordinate + 1), b.N);
-      else if (coordinate >= 0) b.Q = mul(homogeneous(pc.spline, coordinate + 1), b.N);
-    }
-    for (int d = 0; d < 3; ++d) {
-      b.lo[d] = pc.box[d].first;
-      b.hi[d] = pc.box[d].second;
-    }
-    b.vol = T(1);
-    evaluate(b);
-    take(count(b));
-    (b.truth == Truth::mixed ? todo.push_back(std::move(b)) : done.push_back(std::move(b)));
-  }
-  // Breadth first: halve mixed boxes across their widest parameter side until none is left or
-  // the budget is spent.
-  // (Classification only: stop as soon as both sides are certified.)
-  while (!todo.empty() && todo.size() + done.size() < max_boxes &&
-         (want_volume || !((has_in || !cls.inside.empty()) && (has_out || !cls.outside.empty())))) {
-    Box b = std::move(todo.front());
-    todo.pop_front();
-    carried.remove(count(b));
-    int dir = 0;
-    for (int d = 1; d < 3; ++d)
-      if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
-    Box c[2];
-    split_box(b, dir, c);
-    for (auto& x : c) {
-      evaluate(x);
-      take(count(x));
-      (x.truth == Truth::mixed ? todo.push_back(std::move(x)) : done.push_back(std::move(x)));
-    }
-  }
-  // The moment's bounds on a box: exact for a polynomial cell's in-box (the mean of Q's
-  // coefficients), else the bounds of Q / W^power (Jensen / chord where Q has one sign, the extreme
-  // coefficients' ratios otherwise); a mixed box holds between none and all of it.
-  auto moment_bounds = [&](const Box& b, T& lo, T& hi) {
-    if (!V.is_rational() && b.truth == Truth::in) {
-      T sum(0);
-      for (const auto& x : b.Q.c) sum += x;
-      lo = hi = b.vol * sum / T(static_cast<long>(b.Q.c.size()));
-      return;
-    }
-    // Jensen / chord of W^-power with the weight |Q| where Q has one sign (box_integral_bounds), the
-    // plain ratio of extreme coefficients otherwise.
-    box_integral_bounds(b.Q, b.W, b.vol, lo, hi, power);
-    if (b.truth == Truth::mixed) {
-      lo = std::min(T(0), lo);
-      hi = std::max(T(0), hi);
+      emit(std::move(b));
     }
   };
-  if (want_volume && coordinate >= 0) {
-    // The rest of the budget: split the boxes (in or mixed) whose moment bounds are widest.
-    struct Wide {
-      T gap;
-      std::size_t at;
-      bool operator<(const Wide& o) const { return gap < o.gap; }
-    };
-    std::vector<Box> all;
-    for (auto& b : done)
-      if (b.truth != Truth::out) all.push_back(std::move(b));
-    for (auto& b : todo) all.push_back(std::move(b));
-    done.clear();
-    todo.clear();
-    std::priority_queue<Wide> wide;
-    auto push = [&](std::size_t i) {
-      if (all[i].truth == Truth::out) return;  // holds nothing: never split again
-      T lo, hi;
-      moment_bounds(all[i], lo, hi);
-      wide.push({hi - lo, i});
-    };
-    for (std::size_t i = 0; i < all.size(); ++i) push(i);
-    while (!wide.empty() && all.size() < max_boxes && T(0) < wide.top().gap) {
-      const std::size_t i = wide.top().at;
-      wide.pop();
-      Box b = std::move(all[i]);
-      // Across the direction where Q and W vary most (the moment's bounds are widest there).
-      int dir = 0;
-      T best(-1);
-      for (int d = 0; d < 3; ++d) {
-        T v = b.Q.deg[d] > 0 ? coefficient_variation(b.Q, d) : T(0);
-        if (b.W.deg[d] > 0) v += coefficient_variation(b.W, d);
-        if (best < v) {
-          best = v;
-          dir = d;
-        }
-      }
-      Box c[2];
-      carried.remove(count(b));
-      split_box(b, dir, c);
-      for (int h = 0; h < 2; ++h) {
-        if (b.truth == Truth::in) c[h].truth = Truth::in;  // in stays in
-        else evaluate(c[h]);
-        take(count(c[h]));
-      }
-      all[i] = std::move(c[0]);
-      push(i);
-      if (c[1].truth != Truth::out) {
-        all.push_back(std::move(c[1]));
-        push(all.size() - 1);
-      }
-    }
-    for (auto& b : all) (b.truth == Truth::mixed ? todo.push_back(std::move(b)) : done.push_back(std::move(b)));
-    for (const auto& b : done) {
-      if (b.truth != Truth::in) continue;
-      T lo, hi;
-      moment_bounds(b, lo, hi);
-      out.moment.lower += lo;
-      out.moment.upper += hi;
-    }
-    for (const auto& b : todo) {
-      T lo, hi;
-      moment_bounds(b, lo, hi);
-      out.moment.lower += lo;
-      out.moment.upper += hi;
-    }
-  }
-  cls.boxes = todo.size() + done.size();
-  cls.mixed = todo.size();
+  Budget budget;
+  budget.max_boxes = max_boxes;
+  // Classification only: both sides certified ends it.
+  auto both_sides = [&]() { return (has_in || !cls.inside.empty()) && (has_out || !cls.outside.empty()); };
+  const Subdivision run = refine_from<Box>(roots, Order::breadth_first, budget, examine, split, both_sides, [](Box&&, bool) {});
+  cls.boxes = run.boxes;
+  cls.mixed = run.left;
   const bool some_in = has_in || !cls.inside.empty(), some_out = has_out || !cls.outside.empty();
-  cls.kind = todo.empty() ? cell_kind<T>(true, has_in, has_out) : cell_kind<T>(false, some_in, some_out);
-  if (want_volume) {
-    auto& v = out.volume;
-    for (const auto& b : done) {
-      if (b.truth != Truth::in) continue;
-      T lo, hi;
-      box_integral_bounds(b.N, b.W, b.vol, lo, hi);
-      v.lower += lo;
-      v.upper += hi;
-    }
-    // A mixed box holds between none and all of its volume: [min(0, lo), max(0, hi)] with the plain
-    // bounds vol min N / max W^4 .. vol max N / min W^4 (no product: these boxes are many and small).
-    for (const auto& b : todo) {
-      T lo, hi;
-      box_integral_bounds(b.N, b.W, b.vol, lo, hi, 4, true);
-      v.lower += std::min(T(0), lo);
-      v.upper += std::max(T(0), hi);
-    }
-    if (v.upper < T(0) || (v.upper == T(0) && v.lower < T(0))) {  // negatively oriented: det J < 0
-      const T l = -v.upper;
-      v.upper = -v.lower;
-      v.lower = l;
-      const T m = -out.moment.upper;
-      out.moment.upper = -out.moment.lower;
-      out.moment.lower = m;
-    }
-    out.moment.boxes = cls.boxes;
-    v.boxes = cls.boxes;
-  }
-  return out;
+  cls.kind = run.left == 0 ? cell_kind<T>(true, has_in, has_out) : cell_kind<T>(false, some_in, some_out);
+  return cls;
 }
 
 template <class T>
@@ -919,179 +176,6 @@ Truth classify_point(const Region<T>& R, const std::vector<T>& x, const T& eps) 
   for (const auto* g : leaves) t.push_back(vrep_detail::value_truth(poly_at(*g, x.data()), eps));
   std::size_t k = 0;
   return vrep_detail::combine(R, t, k);
-}
-
-template <class T>
-Region<T> box_region(const std::vector<T>& lo, const std::vector<T>& hi) {
-  using vrep_detail::poly_linear;
-  if (lo.size() != 3 || hi.size() != 3) throw ValidationError("box", "needs three coordinates per corner", "give lo and hi as x,y,z");
-  std::vector<Region<T>> parts;
-  const char* axis[3] = {"x", "y", "z"};
-  for (int a = 0; a < 3; ++a) {
-    if (!(lo[a] < hi[a])) throw ValidationError("box", "has lo >= hi", "give lo < hi in every coordinate");
-    T e[3] = {T(0), T(0), T(0)};
-    e[a] = T(1);
-    parts.push_back(region_leaf(poly_linear(T(-lo[a]), e[0], e[1], e[2]), std::string("box: ") + axis[a] + " >= lo"));
-    parts.push_back(region_leaf(poly_linear(hi[a], T(-e[0]), T(-e[1]), T(-e[2])), std::string("box: ") + axis[a] + " <= hi"));
-  }
-  return region_and(std::move(parts));
-}
-
-template <class T>
-Region<T> ball_region(const std::array<T, 3>& c, const T& r) {
-  Poly3<T> g;
-  T k = r * r;
-  for (int d = 0; d < 3; ++d) {
-    std::array<int, 3> e{}, e2{};
-    e[d] = 1;
-    e2[d] = 2;
-    g.terms[e2] = T(-1);
-    g.terms[e] = T(2) * c[d];
-    k -= c[d] * c[d];
-  }
-  g.terms[{0, 0, 0}] = k;
-  return region_leaf(g, "ball");
-}
-
-template <class T>
-Region<T> cylinder_region(const T& r, const T& h) {
-  return cone_region(r, r, h);
-}
-
-template <class T>
-Region<T> cone_region(const T& r0, const T& r1, const T& h) {
-  using namespace vrep_detail;
-  if (!(T(0) < r0) || !(T(0) < r1) || !(T(0) < h)) throw ValidationError("cone", "needs positive radii and height", "give r0, r1, h > 0");
-  // (r0 h + (r1 - r0) z)^2 - h^2 (x^2 + y^2) >= 0 and 0 <= z <= h (the radius is positive on [0, h]).
-  const Poly3<T> rz = poly_linear(T(r0 * h), T(0), T(0), T(r1 - r0));
-  Poly3<T> g = poly_mul(rz, rz);
-  Poly3<T> xy;
-  xy.terms[{2, 0, 0}] = h * h;
-  xy.terms[{0, 2, 0}] = h * h;
-  g = poly_add(g, xy, T(-1));
-  const std::string what = r0 == r1 ? "cylinder" : "cone";
-  return region_and<T>({region_leaf(g, what + ": side"), region_leaf(poly_linear(T(0), T(0), T(0), T(1)), what + ": z >= 0"),
-                        region_leaf(poly_linear(h, T(0), T(0), T(-1)), what + ": z <= h")});
-}
-
-template <class T>
-Region<T> torus_region(const T& R, const T& r) {
-  using namespace vrep_detail;
-  if (!(T(0) < r) || !(r < R)) throw ValidationError("torus", "needs 0 < r < R", "give a tube radius below the major radius");
-  // 4 R^2 (x^2 + y^2) - (x^2 + y^2 + z^2 + R^2 - r^2)^2 >= 0.
-  Poly3<T> s;
-  s.terms[{2, 0, 0}] = T(1);
-  s.terms[{0, 2, 0}] = T(1);
-  s.terms[{0, 0, 2}] = T(1);
-  s.terms[{0, 0, 0}] = R * R - r * r;
-  Poly3<T> xy;
-  xy.terms[{2, 0, 0}] = T(4) * R * R;
-  xy.terms[{0, 2, 0}] = T(4) * R * R;
-  return region_and<T>({region_leaf(poly_add(xy, poly_mul(s, s), T(-1)), "torus")});
-}
-
-template <class T>
-Region<T> sphere_region(const T& r, int degree, int pieces) {
-  using namespace vrep_detail;
-  if (!(T(0) < r)) throw ValidationError("radius", "must be positive", "give a positive radius");
-  const CubeSphereWeights W = cube_sphere_weights(degree, pieces);  // checks degree and pieces
-  if (degree > 4)
-    throw ValidationError("degree", "the sphere's exact region needs patches of degree <= 4 (its leaves have degree 2 degree, at most 8)",
-                          "give --degree 2, 3 or 4");
-  auto num = [](const Rational& x) { return ArithTraits<T>::from_rational(x); };
-  // The weight function P(u, v) on [0, 1]^2 (s = 2u - 1, t = 2v - 1) and its Bezier pieces.
-  BSpline<Rational> P;
-  P.degrees = {degree, degree};
-  P.knots = {W.knots, W.knots};
-  P.q = 1;
-  const std::size_t n = W.s.size();
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i) P.points.push_back(W.P[i][j]);
-  // Univariate polynomials in s (coefficients of s^0, s^1, ...).
-  using Upoly = std::vector<Rational>;
-  auto umul = [](const Upoly& a, const Upoly& b) {
-    Upoly c(a.size() + b.size() - 1, Rational(0));
-    for (std::size_t i = 0; i < a.size(); ++i)
-      for (std::size_t k = 0; k < b.size(); ++k) c[i + k] += a[i] * b[k];
-    return c;
-  };
-  // The Bernstein polynomials of degree p on the parameter interval [ua, ub], in s.
-  auto bernstein_in_s = [&](const Rational& ua, const Rational& ub) {
-    const Rational sa = Rational(2) * ua - Rational(1), sb = Rational(2) * ub - Rational(1), h = sb - sa;
-    const Upoly sigma{Rational(-sa / h), Rational(Rational(1) / h)}, rest{Rational(sb / h), Rational(Rational(-1) / h)};
-    std::vector<Upoly> B;
-    for (int k = 0; k <= degree; ++k) {
-      Upoly b{Rational(integer_binomials(degree)[static_cast<std::size_t>(k)])};
-      for (int e = 0; e < k; ++e) b = umul(b, sigma);
-      for (int e = k; e < degree; ++e) b = umul(b, rest);
-      B.push_back(std::move(b));
-    }
-    return std::make_pair(std::array<Rational, 2>{sa, sb}, B);
-  };
-  // Face +z: per piece, its cone's four planes and its leaf.
-  struct Piece {
-    std::array<Poly3<T>, 4> planes;
-    Poly3<T> leaf;
-    int i = 0, j = 0;
-  };
-  std::vector<Piece> top;
-  const int p2 = 2 * degree;
-  for (const auto& pc : extract_bezier(P)) {
-    const auto [srange, Bs] = bernstein_in_s(pc.box[0].first, pc.box[0].second);
-    const auto [trange, Bt] = bernstein_in_s(pc.box[1].first, pc.box[1].second);
-    std::vector<std::vector<Rational>> m(degree + 1, std::vector<Rational>(degree + 1, Rational(0)));  // P = sum m[a][b] s^a t^b
-    for (int l = 0; l <= degree; ++l)
-      for (int k = 0; k <= degree; ++k) {
-        const Rational& b = pc.spline.points[static_cast<std::size_t>(k + (degree + 1) * l)];
-        for (int a = 0; a <= degree; ++a)
-          for (int c = 0; c <= degree; ++c) m[a][c] += b * Bs[k][a] * Bt[l][c];
-      }
-    Piece x;
-    x.planes = {poly_linear(T(0), T(1), T(0), num(-srange[0])), poly_linear(T(0), T(-1), T(0), num(srange[1])),
-                poly_linear(T(0), T(0), T(1), num(-trange[0])), poly_linear(T(0), T(0), T(-1), num(trange[1]))};
-    // r z^(2p - 1) - sum m[a][b] x^a y^b z^(2p - a - b) >= 0.
-    x.leaf.terms[{0, 0, p2 - 1}] = r;
-    for (int a = 0; a <= degree; ++a)
-      for (int c = 0; c <= degree; ++c)
-        if (m[a][c] != Rational(0)) x.leaf.terms[{a, c, p2 - a - c}] = num(-m[a][c]);
-    x.i = static_cast<int>(top.size()) % pieces;
-    x.j = static_cast<int>(top.size()) / pieces;
-    top.push_back(std::move(x));
-  }
-  // The faces by the rotations of sphere_cells: x'_a = sign_a x_perm_a, so g'(x') has the exponent
-  // e[perm_a] at a and the sign prod sign_a^e[perm_a].
-  const auto& perm = cube_face_perm;
-  const auto& sign = cube_face_sign;
-  const char* face_name[6] = {"+z", "-z", "+x", "-x", "+y", "-y"};
-  auto rotate = [&](const Poly3<T>& g, int f) {
-    Poly3<T> out;
-    for (const auto& [e, c] : g.terms) {
-      std::array<int, 3> e2{};
-      bool negate = false;
-      for (int a = 0; a < 3; ++a) {
-        e2[a] = e[perm[f][a]];
-        if (sign[f][a] < 0 && e2[a] % 2 == 1) negate = !negate;
-      }
-      out.terms[e2] = negate ? T(-c) : c;
-    }
-    return out;
-  };
-  std::vector<std::pair<Region<T>, Region<T>>> cases;
-  for (int f = 0; f < 6; ++f)
-    for (const auto& x : top) {
-      const std::string where = std::string("sphere: face ") + face_name[f] + " piece (" + std::to_string(x.i) + ", " + std::to_string(x.j) + ")";
-      std::vector<Region<T>> planes;
-      for (const auto& h : x.planes) planes.push_back(region_leaf(rotate(h, f), where + " cone"));
-      cases.emplace_back(region_and(std::move(planes)), region_leaf(rotate(x.leaf, f), where));
-    }
-  Region<T> piecewise = region_cases(std::move(cases));
-  piecewise.label = "sphere: faces";
-  const T c = r / T(2);
-  Region<T> cube = box_region(std::vector<T>{-c, -c, -c}, std::vector<T>{c, c, c});
-  cube.label = "sphere: cube";
-  Region<T> out = region_or<T>({std::move(cube), std::move(piecewise)});
-  out.label = "sphere";
-  return out;
 }
 
 template <class T>
@@ -1388,7 +472,7 @@ Region<T> localized_region(const BSpline<T>& V, const Region<T>& R, const T& eps
 template <class T>
 CellClass<T> classify_cell(const BSpline<T>& V, const Region<T>& trim, const TrimOptions& options, const T& eps, const Limits& limits) {
   // On the region localized to V: a cell of a large model costs what it meets (issue 47).
-  return vrep_detail::run_trim(V, vrep_detail::localized_region(V, trim, eps, limits), options.max_boxes, false, eps, limits).cls;
+  return vrep_detail::run_trim(V, vrep_detail::localized_region(V, trim, eps, limits), options.max_boxes, eps, limits);
 }
 
 // trimmed_volume, trimmed_moment, trimmed_field_integral: vrep/trimmed/enclosure_impl.hpp.
