@@ -5,9 +5,11 @@
 #include "bernstein/tensor.hpp"
 #include "compose/compose.hpp"
 #include "spline/arith.hpp"
-#include "spline/bezier_impl.hpp"
-#include "spline/elevate_impl.hpp"
-#include "spline/evaluate_impl.hpp"
+#include "spline/basis_sum.hpp"
+#include "spline/bernstein.hpp"
+#include "spline/bezier.hpp"
+#include "spline/elevate.hpp"
+#include "spline/evaluate.hpp"
 
 namespace splinex {
 namespace detail {
@@ -148,9 +150,7 @@ std::vector<T> evaluate_bezier_anywhere(const BSpline<T>& B, const std::vector<T
     span[j] = B.degrees[j];
     ptr[j] = &basis[j];
   }
-  std::vector<T> out;
-  detail::tensor_sum(B, span, ptr, out);
-  return out;
+  return basis_sum(B, span, ptr);
 }
 
 template <class T>

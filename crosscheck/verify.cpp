@@ -8,7 +8,8 @@
 #include <optional>
 
 #include "bernstein/tensor.hpp"  // Bernstein, bern_product, bern_coordinate
-#include "compose/compose_impl.hpp"
+#include "compose/compose.hpp"
+#include "spline/bezier.hpp"
 #include "float/mpfr.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"

@@ -11,6 +11,7 @@
 #include "fixtures/teapot.hpp"
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/teapot_stars.hpp"
 #include "compose/trimmed_compose.hpp"
@@ -37,18 +38,6 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
   csv << "surface,eps,stars,alg1_patches,alg1_control_points,alg1_seconds,alg2_tiles,alg2_control_points,alg2_seconds,"
          "orders,max_abs_deviation,gap_area,overlap_area,cover_defect\n"
       << std::setprecision(17);
-  md << "\n## Algorithm 2: tensor-product patches by untrimming (papers/000, Figure 5)\n\n"
-     << "Each trimmed piece of Algorithm 1 is untrimmed: its trimming curves become polylines within eps (straight "
-        "ones stay exact), the piece's box is tiled by the vertical line sweep into quads with vertical sides and "
-        "polyline tops and bottoms (a side may degenerate: triangles), each tile's Coons patch Q (degree (1, 1)) is "
-        "composed into the piece's patch T_j^e(S_i). Run in double on the " << opt.tiles << " x " << opt.tiles
-     << " star pattern of every teapot surface. *Deviation*: max |R_tile(x, l) - T(S(Q(x, l)))| at 4 interior points "
-        "per tile, the double tile against the exact composition at the exact point Q(x, l), measured exactly: it is "
-        "the tolerance's price (points between polyline and true trimming curve use the neighbouring piece) plus "
-        "rounding. *Gap / overlap*: parameter area no region / two regions claim (polylines of different knots "
-        "crossing); *cover defect*: |sum of tile areas + gap - overlap - 1| per star domain, exact from the doubles.\n\n"
-     << "| surface | eps | Alg. 1 patches | Alg. 1 control points | Alg. 1 s | Alg. 2 tiles | Alg. 2 control points | "
-        "Alg. 2 s | orders | max deviation | gap area | overlap area |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::set<std::pair<int, int>> all_orders;
   const auto surfaces = teapot_surfaces(patches);
   for (const auto& surf : surfaces) {
@@ -118,10 +107,7 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
     }
   }
   ok = ok && all_orders == std::set<std::pair<int, int>>{{25, 25}};
-  md << "\nOrders: the star is bi-quadratic and the teapot bi-cubic, so Algorithm 1's patches have degree 2 x (3 + 3) "
-        "= 12 (orders (13, 13)); a tile's Coons patch has degree (1, 1), so T_j^e(S_i(Q)) has degree 1 x (12 + 12) = 24 "
-        "per direction: orders (25, 25), the paper's. The price is the control-point count: a tile's bottom and top "
-        "are polylines, so its patch has one Bezier piece per polyline vertex.\n";
+  std::string exact_star;
   if (opt.exact_star) {
     // One star exactly: the cost ratio of Algorithm 2 in rationals (same double polylines).
     progress("algorithm 2: one star on the body, exact");
@@ -143,12 +129,16 @@ std::string run_algorithm2_stars(const Algorithm2StarsOptions& opt, const std::f
         ++coefs;
       }
     const double te = std::chrono::duration<double>(c1 - c0).count(), td = std::chrono::duration<double>(c2 - c1).count();
-    md << "\nOne star (body, tile (0, 2), eps = 1e-2) exactly: " << A.tiles.size() << " tiles in " << g(te) << " s vs "
-       << g(td) << " s in double (ratio " << g(te / td) << "); the exact control points of the composed tiles average "
-       << g(static_cast<double>(bits) / static_cast<double>(coefs)) << " bits (numerator + denominator).\n";
+    exact_star = ReportTemplate("algorithm2-stars.exact-star")
+                     .set("tiles", A.tiles.size())
+                     .set("t_exact", g(te))
+                     .set("t_double", g(td))
+                     .set("ratio", g(te / td))
+                     .set("bits", g(static_cast<double>(bits) / static_cast<double>(coefs)))
+                     .render();
   }
   write_file_atomically(opt.out_dir + "/algorithm2_stars.csv", csv.str());
-  return md.str();
+  return ReportTemplate("algorithm2-stars").set("grid", opt.tiles).set("rows", md.str()).set("exact_star", exact_star).render();
 }
 
 void algorithm2_stars_section(ReportContext& ctx) {

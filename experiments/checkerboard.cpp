@@ -10,6 +10,8 @@
 
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
+#include "experiments/svg.hpp"
 #include "experiments/svg_plot.hpp"
 #include "compose/trimmed_compose.hpp"
 #include "spline/kernel.hpp"
@@ -24,7 +26,7 @@ constexpr int kSub = 6;     // drawn quads per texture square and direction
 
 std::string g(double v) { return fmt(v, 3); }
 
-struct Canvas {
+struct View {  // texture plane -> figure pixels
   double x0, y0, scale, ox, oy;
   std::pair<double, double> map(const std::vector<Rational>& p) const {
     return {ox + (to_double(p[0]) - x0) * scale, oy - (to_double(p[1]) - y0) * scale};
@@ -33,28 +35,24 @@ struct Canvas {
 
 // A quad of the texture cell (i, j) at texture coordinates [u0, u1] x [v0, v1], mapped by f.
 template <class F>
-void quad(std::ostringstream& svg, const Canvas& c, F&& f, const Rational& u0, const Rational& u1, const Rational& v0,
+void quad(svg::Canvas& out, const View& c, F&& f, const Rational& u0, const Rational& u1, const Rational& v0,
           const Rational& v1, bool dark) {
-  svg << "<polygon fill=\"" << (dark ? "#4a6fa5" : "#f2e6c9") << "\" stroke=\"" << (dark ? "#4a6fa5" : "#f2e6c9")
-      << "\" stroke-width=\"0.4\" points=\"";
-  for (const auto& [u, v] : {std::pair{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}) {
-    const auto [X, Y] = c.map(f(u, v));
-    svg << X << "," << Y << " ";
-  }
-  svg << "\"/>\n";
+  svg::Points pts;
+  for (const auto& [u, v] : {std::pair{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}) pts.push_back(c.map(f(u, v)));
+  const char* colour = dark ? "#4a6fa5" : "#f2e6c9";
+  out.polygon(pts, svg::attr("fill", colour) + svg::attr("stroke", colour) + svg::attr("stroke-width", 0.4));
 }
 
 template <class F>
-void label(std::ostringstream& svg, const Canvas& c, F&& f, const Rational& u, const Rational& v, int number, bool dark) {
+void label(svg::Canvas& out, const View& c, F&& f, const Rational& u, const Rational& v, int number, bool dark) {
   const auto [X, Y] = c.map(f(u, v));
-  svg << "<text x=\"" << X << "\" y=\"" << Y + 4 << "\" font-size=\"11\" text-anchor=\"middle\" fill=\""
-      << (dark ? "#ffffff" : "#222222") << "\" font-family=\"sans-serif\">" << number << "</text>\n";
+  out.text(X, Y + 4, std::to_string(number), 11, svg::Anchor::middle, svg::attr("fill", dark ? "#ffffff" : "#222222"));
 }
 
 // Draws the texture on [0,1]^2 mapped by f, clipped to the texture coordinates inside(u, v); adds 1
 // to counts[k] for every number k of which it draws a part.
 template <class F, class In>
-void texture(std::ostringstream& svg, const Canvas& c, F&& f, In&& inside, std::map<int, int>& counts) {
+void texture(svg::Canvas& out, const View& c, F&& f, In&& inside, std::map<int, int>& counts) {
   const int n = kCells * kSub;
   std::set<int> seen;  // the numbers this call draws (any part of their square)
   for (int j = 0; j < n; ++j)
@@ -62,14 +60,14 @@ void texture(std::ostringstream& svg, const Canvas& c, F&& f, In&& inside, std::
       const Rational u0(i, n), u1(i + 1, n), v0(j, n), v1(j + 1, n);
       if (!inside((u0 + u1) / 2, (v0 + v1) / 2)) continue;
       const int ci = i / kSub, cj = j / kSub;
-      quad(svg, c, f, u0, u1, v0, v1, (ci + cj) % 2 == 0);
+      quad(out, c, f, u0, u1, v0, v1, (ci + cj) % 2 == 0);
       seen.insert(cj * kCells + ci + 1);
     }
   for (int cj = 0; cj < kCells; ++cj)
     for (int ci = 0; ci < kCells; ++ci) {
       const Rational u(2 * ci + 1, 2 * kCells), v(2 * cj + 1, 2 * kCells);
       if (!inside(u, v)) continue;
-      label(svg, c, f, u, v, cj * kCells + ci + 1, (ci + cj) % 2 == 0);
+      label(out, c, f, u, v, cj * kCells + ci + 1, (ci + cj) % 2 == 0);
     }
   for (int k : seen) ++counts[k];
 }
@@ -102,24 +100,19 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
       ymax = std::max(ymax, to_double(p[1]));
     }
   const double W = 360, margin = 30, scale = W / std::max(xmax - xmin, ymax - ymin);
-  std::ostringstream svg;
-  svg << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * W + 4 * margin << "\" height=\""
-      << W + 3 * margin << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  // Each panel's title on two lines within the panel's width (one line overlapped the other panel).
-  auto title = [&](double x, const std::string& first, const std::string& second) {
-    svg << "<text x=\"" << x << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"13\">" << first << "</text>\n"
-        << "<text x=\"" << x << "\" y=\"35\" font-family=\"sans-serif\" font-size=\"13\">" << second << "</text>\n";
-  };
-  title(margin, "(a) Algorithm 1: trimmed patches,", "texture by S's parameters (Definition 1 holds)");
-  title(W + 3 * margin, "(b) Algorithm 2: " + std::to_string(A.tiles.size()) + " tensor-product tiles,", "texture by each tile's parameters");
+  // Two panels side by side, each titled within its own width (wrapped by the canvas).
+  svg::Canvas fig(2 * W + 4 * margin, W + 2 * margin);
+  fig.panel_title(margin, W + margin - 10, "(a) Algorithm 1: trimmed patches, texture by S's parameters (Definition 1 holds)");
+  fig.panel_title(W + 3 * margin, W + margin - 10,
+                  "(b) Algorithm 2: " + std::to_string(A.tiles.size()) + " tensor-product tiles, texture by each tile's parameters");
   // (a) Algorithm 1: each patch draws the part of the texture its region owns.
   std::map<int, int> counts1, counts2;
-  const Canvas ca{xmin, ymin, scale, margin, W + 2 * margin};
+  const View ca{xmin, ymin, scale, margin, W + margin};
   Rational loss1(0);
   for (std::size_t k = 0; k < C.patches.size(); ++k) {
     auto f = [&](const Rational& u, const Rational& v) { return evaluate_patch(C.patches[k], {u, v}); };
     auto in = [&](const Rational& u, const Rational& v) { return C.locate({u, v}) == k; };
-    texture(svg, ca, f, in, counts1);
+    texture(fig, ca, f, in, counts1);
   }
   // Algorithm 1 at the texture points: the owning patch equals T(S) exactly (Definition 1).
   for (int j = 0; j <= 8; ++j)
@@ -129,7 +122,7 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
       for (int d = 0; d < 2; ++d) loss1 = std::max(loss1, Rational(abs(Rational(p[d] - q[d]))));
     }
   // (b) Algorithm 2: each tile draws the whole texture in its own parameters.
-  const Canvas cb{xmin, ymin, scale, W + 3 * margin, W + 2 * margin};
+  const View cb{xmin, ymin, scale, W + 3 * margin, W + margin};
   Rational loss2(0), sum2(0);
   std::size_t n2 = 0;
   for (std::size_t k = 0; k < A.tiles.size(); ++k) {
@@ -137,7 +130,7 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
     auto f = [&](const Rational& u, const Rational& v) {
       return A.evaluate_tile(k, {t.x.front() + (t.x.back() - t.x.front()) * u, v});
     };
-    texture(svg, cb, f, [](const Rational&, const Rational&) { return true; }, counts2);
+    texture(fig, cb, f, [](const Rational&, const Rational&) { return true; }, counts2);
     // The loss: the tile's point at texture coordinate (u, v) against T(S(u, v)), exactly.
     for (int j = 0; j <= 8; ++j)
       for (int i = 0; i <= 8; ++i) {
@@ -150,8 +143,7 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
         ++n2;
       }
   }
-  svg << "</svg>\n";
-  write_file_atomically(out_dir + "/checkerboard.svg", svg.str());
+  write_file_atomically(out_dir + "/checkerboard.svg", fig.str());
   ok = ok && loss1 == 0;
   int min1 = 1 << 30, max1 = 0, min2 = 1 << 30, max2 = 0;
   for (int num = 1; num <= kCells * kCells; ++num) {
@@ -160,19 +152,18 @@ std::string run_checkerboard(const std::string& out_dir, bool& ok) {
     min2 = std::min(min2, counts2[num]);
     max2 = std::max(max2, counts2[num]);
   }
-  std::ostringstream md;
-  md << "\n## Definition 1 and texture mapping (papers/000, Figure 3)\n\n"
-     << "A numbered " << kCells << " x " << kCells << " checkerboard on S (affine, a rotated square crossing both knot lines "
-        "of a biquadratic planar T; everything exact). (a) Algorithm 1: each trimmed patch is textured by S's own "
-        "parameters, the patches stitch into one texture: number k is drawn by " << min1 << "-" << max1
-     << " patches (pieces of one square split by a knot line), and at 81 texture points the owning patch equals "
-        "T(S) exactly (loss " << g(to_double(loss1)) << "). (b) Algorithm 2: " << A.tiles.size()
-     << " tiles, each textured by its own parameters (x mapped to [0, 1], l): every tile shows the whole board, "
-        "number k appears " << min2 << "-" << max2 << " times. The loss of the parametrization, |R_tile(x(u), l = v) - "
-        "T(S(u, v))| at 81 texture points per tile, exact: max " << g(to_double(loss2)) << ", mean "
-     << g(to_double(sum2 / Rational(static_cast<long>(n2)))) << " (T(S) spans about " << g(std::max(xmax - xmin, ymax - ymin))
-     << "). Figure: `checkerboard.svg`.\n\n![checkerboard](checkerboard.svg)\n";
-  return md.str();
+  return ReportTemplate("checkerboard")
+      .set("cells", kCells)
+      .set("alg1_min", min1)
+      .set("alg1_max", max1)
+      .set("alg1_loss", g(to_double(loss1)))
+      .set("tiles", A.tiles.size())
+      .set("alg2_min", min2)
+      .set("alg2_max", max2)
+      .set("alg2_loss_max", g(to_double(loss2)))
+      .set("alg2_loss_mean", g(to_double(sum2 / Rational(static_cast<long>(n2)))))
+      .set("span", g(std::max(xmax - xmin, ymax - ymin)))
+      .render();
 }
 
 void checkerboard_section(ReportContext& ctx) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "crosscheck/crosscheck.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/random_spline.hpp"
@@ -241,7 +242,7 @@ void write_figures(const std::string& out_dir, const std::vector<Row>& rows, con
       for (const auto& a : ariths) {
         PlotSeries s;
         s.label = opn + ", " + a;
-        s.color = kPalette[ci++ % kPaletteSize];
+        s.color = svg::palette(ci++);
         s.dashed = opn == "elevate";
         std::map<int, double> worst;
         for (const auto& r : rows)
@@ -268,7 +269,7 @@ void write_figures(const std::string& out_dir, const std::vector<Row>& rows, con
       for (const auto& a : ariths) {
         PlotSeries s;
         s.label = (suite == "refinement" ? "A5.4 " : "A5.1 ") + cname.substr(6) + ", " + a;
-        s.color = kPalette[ci++ % kPaletteSize];
+        s.color = svg::palette(ci++);
         s.dashed = suite != "refinement";
         for (const auto& r : rows)
           if (r.suite == suite && r.case_name == cname && r.rep.arith == a)
@@ -284,28 +285,25 @@ void write_figures(const std::string& out_dir, const std::vector<Row>& rows, con
 
 // report.md's introduction: how the errors are measured, which arithmetics ran.
 std::string intro_markdown(const ReportOptions& opt, const std::vector<std::string>& ariths) {
-  std::ostringstream md;
-  md << "Every number below is measured exactly: each float result is converted to the rational it is and "
-        "subtracted from the exact (GMP rational) result of the same exact input. Relative errors are normwise "
-        "(max |error| / max |exact value| over the compared set); *bits lost* is precision + log2(relative error), "
-        "clamped to [0, precision]. Inputs are rounded once to the float format, so a well-conditioned operation "
-        "shows about 0-3 bits lost.\n\n"
-     << "Arithmetics: " ;
-  for (const auto& a : ariths) md << "`" << a << "` ";
-  md << (opt.full ? "(full sweep)" : "(default sweep; `splinex report --full` runs the long one)") << ".\n\n";
-  return md.str();
+  std::string arithmetics;
+  for (const auto& a : ariths) arithmetics += "`" + a + "` ";
+  return ReportTemplate("crosscheck.intro").set("arithmetics", arithmetics).when("full", opt.full).render();
 }
 
-// One suite's table of report.md: every case, operation and arithmetic.
-void suite_table(std::ostringstream& md, const std::vector<Row>& rows, const std::string& suite, const std::string& title) {
-  md << "\n## " << title << "\n\n| case | operation | arith | control points | cp rel error | cp bits lost | grid rel error "
-        "| grid bits lost | exact s | float s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+// The rows of one suite's table of report.md: every case, operation and arithmetic.
+std::string suite_rows(const std::vector<Row>& rows, const std::string& suite) {
+  std::ostringstream md;
   for (const auto& r : rows) {
     if (r.suite != suite) continue;
     const auto& c = r.rep;
     if (!c.structure_match) {
-      md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count
-         << " | structure differs: " << c.structure_note << " | | | | | |\n";
+      md << ReportTemplate("crosscheck.tables.structure-differs")
+                .set("case", r.case_name)
+                .set("operation", c.operation)
+                .set("arith", c.arith)
+                .set("control_points", c.control_point_count)
+                .set("note", c.structure_note)
+                .render();
       continue;
     }
     md << "| " << r.case_name << " | " << c.operation << " | " << c.arith << " | " << c.control_point_count << " | "
@@ -313,28 +311,28 @@ void suite_table(std::ostringstream& md, const std::vector<Row>& rows, const std
        << " | " << fmt1(c.grid.bits_lost(c.precision)) << " | " << fmt(c.seconds_exact) << " | " << fmt(c.seconds_float)
        << " |\n";
   }
+  return md.str();
 }
 
 // report.md's tables: the suites, the time summary, where the raw data is.
 std::string tables_markdown(const std::vector<Row>& rows) {
-  std::ostringstream md;
-  suite_table(md, rows, "adversarial", "Adversarial inputs");
-  suite_table(md, rows, "teapot", "Teapot (body, handle, spout, lid as bicubic B-spline surfaces)");
-  suite_table(md, rows, "refinement", "Refinement sweep (A5.4, all knots at once)");
-  suite_table(md, rows, "refinement-boehm", "Refinement sweep (A5.1, knot by knot)");
-  suite_table(md, rows, "random", "Random curves, surfaces and trivariates, degrees 1-7");
   // Time ratio summary.
   std::map<std::string, std::pair<double, double>> tsum;
   for (const auto& r : rows) {
     tsum[r.rep.arith].first += r.rep.seconds_exact;
     tsum[r.rep.arith].second += r.rep.seconds_float;
   }
-  md << "\n## Time (whole suite, wall clock; Google Benchmark in `bench/` for real timings)\n\n| arith | exact s | float s | exact/float |\n|---|---|---|---|\n";
-  for (auto [a, t] : tsum) md << "| " << a << " | " << fmt(t.first) << " | " << fmt(t.second) << " | " << fmt1(t.first / t.second) << " |\n";
-  // No folder in the text: the same words wherever the report (or a sweep job of it) was written.
-  md << "\nRaw data: `crosscheck.csv`, `crosscheck.json` in this folder. Regenerate with "
-        "`build/bin/splinex report --sections crosscheck --out DIR`.\n";
-  return md.str();
+  std::ostringstream time_rows;
+  for (auto [a, t] : tsum) time_rows << "| " << a << " | " << fmt(t.first) << " | " << fmt(t.second) << " | " << fmt1(t.first / t.second) << " |\n";
+  // No folder in the text (crosscheck.tables.md): the same words wherever the report (or a sweep job of it) was written.
+  return ReportTemplate("crosscheck.tables")
+      .set("adversarial_rows", suite_rows(rows, "adversarial"))
+      .set("teapot_rows", suite_rows(rows, "teapot"))
+      .set("refinement_rows", suite_rows(rows, "refinement"))
+      .set("refinement_boehm_rows", suite_rows(rows, "refinement-boehm"))
+      .set("random_rows", suite_rows(rows, "random"))
+      .set("time_rows", time_rows.str())
+      .render();
 }
 
 }  // namespace
@@ -359,9 +357,7 @@ void crosscheck_section(ReportContext& ctx) {
 
   // report.md: the introduction, the figures, the tables.
   ctx.markdown["crosscheck.intro"] = intro_markdown(opt, ariths);
-  ctx.markdown["crosscheck.figures"] =
-      "\n## Figures\n\n![error vs degree](error_vs_degree.svg)\n\n![bits lost vs degree](bits_lost_vs_degree.svg)\n\n"
-      "![error vs inserted knots](error_vs_inserted_knots.svg)\n";
+  ctx.markdown["crosscheck.figures"] = ReportTemplate("crosscheck.figures").render();
   ctx.markdown["crosscheck.tables"] = tables_markdown(run.rows);
 }
 

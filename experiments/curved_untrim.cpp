@@ -8,6 +8,8 @@
 #include "io/json_io.hpp"
 #include "io/trimmed_domain_io.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
+#include "experiments/svg.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
 #include "untrim/tile_integrals.hpp"
@@ -22,8 +24,6 @@ const char* kDomain = R"({"type": "trimmed_domain", "domain": [[0, 1], [0, 1]],
  "loops": [[[0.1, 0.5], {"controls": [["11/30", 0.1], ["19/30", 0.2]]}, [0.9, 0.5], {"controls": [["19/30", 0.95], ["11/30", 0.8]]}],
            [[0.4, 0.45], [0.6, 0.45], [0.5, 0.6]]]}
 )";
-
-const char* kFill[] = {"#a6cee3", "#b2df8a", "#fb9a99", "#fdbf6f", "#cab2d6", "#ffff99", "#8dd3c7", "#bebada", "#80b1d3", "#fccde5"};
 
 }  // namespace
 
@@ -101,9 +101,8 @@ std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
   const double W = 520, m = 30;
   const auto X = [&](const Rational& x) { return m + W * to_double(x); };
   const auto Y = [&](const Rational& y) { return m + W * (1 - to_double(y)); };
-  std::ostringstream svg;
-  svg << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W + 2 * m << "\" height=\"" << W + 2 * m + 40
-      << "\">\n<rect x=\"" << m << "\" y=\"" << m << "\" width=\"" << W << "\" height=\"" << W << "\" fill=\"white\" stroke=\"black\"/>\n";
+  svg::Canvas fig(W + 2 * m, W + 2 * m);
+  fig.rect(m, m, W, W, svg::attr("fill", "white") + svg::attr("stroke", "black"));
   for (std::size_t k = 0; k < tiles.size(); ++k) {
     const auto& t = tiles[k];
     std::vector<std::pair<double, double>> pts;
@@ -119,49 +118,37 @@ std::string run_curved_untrim(const std::string& out_dir, bool& ok) {
       if (side == 1) std::reverse(chain.begin(), chain.end());
       pts.insert(pts.end(), chain.begin(), chain.end());
     }
-    svg << "<polygon fill=\"" << kFill[k % 10] << "\" stroke=\"#333\" stroke-width=\"1\" points=\"";
-    for (const auto& [px, py] : pts) svg << px << "," << py << " ";
-    svg << "\"/>\n";
+    fig.polygon(pts, svg::attr("fill", svg::palette_light(k)) + svg::attr("stroke", "#333") + svg::attr("stroke-width", 1));
     const std::size_t mid = (t.x.size() - 1) / 2;
     const Rational cx = (t.x[mid] + t.x[mid + 1]) / 2;
     const auto yb = poly::bernstein_eval(t.bottom_piece(mid), h), yt = poly::bernstein_eval(t.top_piece(mid), h);
-    svg << "<text x=\"" << X(cx) << "\" y=\"" << Y(Rational((yb + yt) / 2)) + 4 << "\" font-size=\"11\" text-anchor=\"middle\">" << k
-        << "</text>\n";
+    fig.text(X(cx), Y(Rational((yb + yt) / 2)) + 4, std::to_string(k), 11, svg::Anchor::middle);
   }
   for (const auto& k : kl[0])
-    svg << "<line x1=\"" << X(k) << "\" y1=\"" << m << "\" x2=\"" << X(k) << "\" y2=\"" << m + W
-        << "\" stroke=\"#d62728\" stroke-dasharray=\"5,4\"/>\n";
+    fig.line(X(k), m, X(k), m + W, svg::attr("stroke", "#d62728") + svg::attr("stroke-dasharray", "5,4"));
   for (const auto& k : kl[1])
-    svg << "<line x1=\"" << m << "\" y1=\"" << Y(k) << "\" x2=\"" << m + W << "\" y2=\"" << Y(k)
-        << "\" stroke=\"#d62728\" stroke-dasharray=\"5,4\"/>\n";
-  svg << "<text x=\"" << m << "\" y=\"" << W + 2 * m + 15 << "\" font-family=\"sans-serif\" font-size=\"12\">" << tiles.size()
-      << " exact tiles with cubic sides (Coons patches of degree (" << dmax << ", 1));</text>\n<text x=\"" << m << "\" y=\""
-      << W + 2 * m + 32 << "\" font-family=\"sans-serif\" font-size=\"12\">dashed: knot lines (tiles end at them); cover "
-      << (cc.ok ? "proved exactly" : "NOT proved") << "</text>\n";
-  svg << "</svg>\n";
-  write_file_atomically(out_dir + "/untrim_curved.svg", svg.str());
+    fig.line(m, Y(k), m + W, Y(k), svg::attr("stroke", "#d62728") + svg::attr("stroke-dasharray", "5,4"));
+  fig.caption(std::to_string(tiles.size()) + " exact tiles with cubic sides (Coons patches of degree (" + std::to_string(dmax) +
+              ", 1)); dashed: knot lines (tiles end at them); cover " + (cc.ok ? "proved exactly" : "NOT proved"), 12);
+  write_file_atomically(out_dir + "/untrim_curved.svg", fig.str());
 
-  std::ostringstream md;
-  md << "\n## Untrimming with curved tile sides (exact)\n\n"
-     << "Domain `untrim_curved_domain.json` (run it with `splinex untrim --monomial a,b untrim_curved_domain.json`): an outer loop "
-        "of two cubic graph arcs y = f(x) with a triangular hole, split by the knot lines x = 1/4, 1/2, 2/3 and y = 1/2. The "
-        "vertical line sweep of `untrim/curved.hpp` runs in rationals: the arcs are cut at rational x (de Casteljau), crossings "
-        "with horizontal lines are exact rational roots (CGAL root isolation plus a denominator bound), and every tile's sides "
-        "are pieces of the trimming curves themselves.\n\n"
-     << "- " << tiles.size() << " tiles, Coons patches of degree up to (" << dmax << ", 1); tiling " << fmt(t_tiles) << " s.\n"
-     << "- Cover certificate: " << (cc.ok ? "**proved**" : "**FAILED: " + cc.failure + "**") << " (" << cc.pair_checks
-     << " tile-pair and " << cc.edge_checks << " edge-tile sign questions by exact root isolation, " << cc.samples
-     << " interior samples; " << fmt(t_cert) << " s). Tile areas add up to " << to_fraction_string(cc.tile_area_sum)
-     << " = the region's area by Green's theorem, " << to_fraction_string(cc.region_area) << ".\n"
-     << "- A knot line y = 3/10 crosses the cubics at irrational x: exact untrimming refuses it (`" << refused
-     << "`); the float arithmetics end the tiles at a rational within 2^-69 of the crossing instead. There the curve misses "
-        "the knot line, and the tiles next to the crossing cross the knot line by up to "
-     << fmt(to_double(stray)) << " (their patches evaluate the knot cell's polynomial beyond the cell, Step 7 of Algorithm 2); "
-        "the slivers cancel between the tiles on the two sides, the total area differs from the region's by "
-     << fmt(to_double(area_err)) << ".\n\n"
-     << "| density | exact integral | tiles (exact) vs Green | double abs error | MPFR 113 abs error |\n|---|---|---|---|---|\n"
-     << rows.str() << "\nFigure: `untrim_curved.svg`.\n\n![curved tiles](untrim_curved.svg)\n";
-  return md.str();
+  return ReportTemplate("curved-untrim")
+      .set("tiles", tiles.size())
+      .set("dmax", dmax)
+      .set("t_tiles", fmt(t_tiles))
+      .when("cover", cc.ok)
+      .set("failure", cc.failure)
+      .set("pair_checks", cc.pair_checks)
+      .set("edge_checks", cc.edge_checks)
+      .set("samples", cc.samples)
+      .set("t_cert", fmt(t_cert))
+      .set("tile_area_sum", to_fraction_string(cc.tile_area_sum))
+      .set("region_area", to_fraction_string(cc.region_area))
+      .set("refused", refused)
+      .set("stray", fmt(to_double(stray)))
+      .set("area_err", fmt(to_double(area_err)))
+      .set("rows", rows.str())
+      .render();
 }
 
 void curved_untrim_section(ReportContext& ctx) {

@@ -11,7 +11,9 @@
 #include "cut/separation.hpp"
 #include "cut/surface_facet.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
+#include "experiments/svg.hpp"
 #include "experiments/svg_plot.hpp"
 #include "io/cut_io.hpp"
 #include "io/json_io.hpp"
@@ -61,7 +63,7 @@ struct SlicedPatch {
 };
 
 template <class FX, class FY>
-void patch_slice(std::ostringstream& o, const SlicedPatch& sp, double ym, FX&& X, FY&& Y) {
+void patch_slice(svg::Canvas& o, const SlicedPatch& sp, double ym, FX&& X, FY&& Y) {
   const auto D = convert<double>(*sp.patch, [](const Rational& x) { return to_double(x); });
   std::vector<std::array<double, 2>> poly;
   for (const auto& w : *sp.domain) poly.push_back({to_double(w[0]), to_double(w[1])});
@@ -75,8 +77,7 @@ void patch_slice(std::ostringstream& o, const SlicedPatch& sp, double ym, FX&& X
   std::vector<double> g((n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) g[i + (n + 1) * j] = evaluate(D, std::vector<double>{double(i) / n, double(j) / n})[1] - ym;
-  o << "<path fill=\"none\" stroke=\"" << sp.colour << "\" stroke-width=\"2\"" << (sp.dash.empty() ? "" : " stroke-dasharray=\"" + sp.dash + "\"")
-    << " d=\"";
+  std::string path;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const double u0 = double(i) / n, u1 = double(i + 1) / n, v0 = double(j) / n, v1 = double(j + 1) / n;
@@ -90,34 +91,31 @@ void patch_slice(std::ostringstream& o, const SlicedPatch& sp, double ym, FX&& X
         }
       };
       edge(a, b, u0, v0, u1, v0), edge(b, c, u1, v0, u1, v1), edge(c, d, u1, v1, u0, v1), edge(d, a, u0, v1, u0, v0);
-      for (std::size_t k = 0; k + 1 < p.size(); k += 2) o << "M" << X(p[k][0]) << " " << Y(p[k][2]) << "L" << X(p[k + 1][0]) << " " << Y(p[k + 1][2]);
+      for (std::size_t k = 0; k + 1 < p.size(); k += 2) path += o.move_to(X(p[k][0]), Y(p[k][2])) + o.line_to(X(p[k + 1][0]), Y(p[k + 1][2]));
     }
-  o << "\"/>\n";
+  o.path(path, svg::attr("stroke", sp.colour) + svg::attr("stroke-width", 2) + (sp.dash.empty() ? "" : svg::attr("stroke-dasharray", sp.dash)));
 }
 
 std::string slice_svg(const GuideResult3<Rational>& R, const std::string& title, const std::vector<SlicedPatch>& patches = {},
                       const std::string& patches_legend = "") {
-  const double W = 860, H = 400, pad = 40;  // wide enough for the legend
+  const double W = 860, H = 360, pad = 40, padv = 20;  // wide enough for the legend; the title and legend are bands
   double ylo = 1e300, yhi = -1e300, zmax = 0;
   for (const auto& F : R.solid.facets)
     for (std::size_t i = 0; i < F.size(); ++i) {
       ylo = std::min(ylo, to_double(F.points[3 * i + 1])), yhi = std::max(yhi, to_double(F.points[3 * i + 1]));
       zmax = std::max(zmax, to_double(F.points[3 * i + 2]));
     }
-  const double ym = (ylo + yhi) / 2, s = std::min((W - 2 * pad) / 1.0, (H - 2 * pad) / std::max(zmax, 1e-9));
+  const double ym = (ylo + yhi) / 2, s = std::min((W - 2 * pad) / 1.0, (H - 2 * padv) / std::max(zmax, 1e-9));
   auto X = [&](double x) { return pad + s * x; };
-  auto Y = [&](double z) { return H - pad - s * z; };
-  std::ostringstream o;
-  o << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << pad << "\" y=\"22\" font-size=\"13\" font-family=\"sans-serif\">"
-    << svg_escape(title) << "</text>\n";
+  auto Y = [&](double z) { return H - padv - s * z; };
+  svg::Canvas o(W, H);
+  o.title(title, 13);
   for (const auto& F : R.solid.facets) {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (std::size_t i = 0; i < F.size(); ++i)
       for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], to_double(F.points[3 * i + c])), hi[c] = std::max(hi[c], to_double(F.points[3 * i + c]));
     if (!(lo[1] < ym && ym < hi[1])) continue;
-    o << "<line x1=\"" << X(lo[0]) << "\" y1=\"" << Y(lo[2]) << "\" x2=\"" << X(hi[0]) << "\" y2=\"" << Y(hi[2])
-      << "\" stroke=\"black\" stroke-width=\"2\"/>\n";
+    o.line(X(lo[0]), Y(lo[2]), X(hi[0]), Y(hi[2]), svg::attr("stroke", "black") + svg::attr("stroke-width", 2));
   }
   // f* = 0 in the slice: marching squares on a 160 x 100 grid (a picture, in double).
   const auto fd = convert<double>(R.f_exact, [](const Rational& x) { return to_double(x); });
@@ -125,7 +123,7 @@ std::string slice_svg(const GuideResult3<Rational>& R, const std::string& title,
   std::vector<double> v((nx + 1) * (nz + 1));
   for (int j = 0; j <= nz; ++j)
     for (int i = 0; i <= nx; ++i) v[i + (nx + 1) * j] = evaluate(fd, std::vector<double>{double(i) / nx, ym, zmax * j / nz})[0];
-  o << "<path fill=\"none\" stroke=\"#c0392b\" stroke-width=\"1.5\" d=\"";
+  std::string path;
   for (int j = 0; j < nz; ++j)
     for (int i = 0; i < nx; ++i) {
       const double x0 = double(i) / nx, x1 = double(i + 1) / nx, z0 = zmax * j / nz, z1 = zmax * (j + 1) / nz;
@@ -139,42 +137,28 @@ std::string slice_svg(const GuideResult3<Rational>& R, const std::string& title,
       };
       edge(a, b, x0, z0, x1, z0), edge(b, c, x1, z0, x1, z1), edge(c, d, x1, z1, x0, z1), edge(d, a, x0, z1, x0, z0);
       for (std::size_t k = 0; k + 1 < p.size(); k += 2)
-        o << "M" << X(p[k].first) << " " << Y(p[k].second) << "L" << X(p[k + 1].first) << " " << Y(p[k + 1].second);
+        path += o.move_to(X(p[k].first), Y(p[k].second)) + o.line_to(X(p[k + 1].first), Y(p[k + 1].second));
     }
-  o << "\"/>\n";
+  o.path(path, svg::attr("stroke", "#c0392b") + svg::attr("stroke-width", 1.5));
   for (const auto& sp : patches) patch_slice(o, sp, ym, X, Y);
   for (const auto& x : R.loop_points)
     if (std::abs(to_double(x[1]) - ylo) < 1e-12)
-      o << "<circle cx=\"" << X(to_double(x[0])) << "\" cy=\"" << Y(to_double(x[2])) << "\" r=\"3\" fill=\"#2471a3\"/>\n";
-  o << "<text x=\"" << pad << "\" y=\"" << H - 10 << "\" font-size=\"11\" font-family=\"sans-serif\">black: the solid's facets in the slice y = "
-    << fmt(ym) << " (normalized); red: f* = 0 there (marching squares in double); blue: L* on the front face</text>\n";
-  if (!patches_legend.empty())
-    o << "<text x=\"" << pad << "\" y=\"" << H - 24 << "\" font-size=\"11\" font-family=\"sans-serif\">" << svg_escape(patches_legend) << "</text>\n";
-  o << "</svg>\n";
+      o.circle(X(to_double(x[0])), Y(to_double(x[2])), 3, svg::attr("fill", "#2471a3"));
+  if (!patches_legend.empty()) o.caption(patches_legend);
+  o.caption("black: the solid's facets in the slice y = " + fmt(ym) +
+            " (normalized); red: f* = 0 there (marching squares in double); blue: L* on the front face");
   return o.str();
 }
 
 // The guides: the examples' guiding surfaces exactly and in double, certified; the slice figures and VTK files.
 void guides_part(ReportContext& ctx, std::ostringstream& md) {
   std::ostringstream csv;
-  md << "## Cutting surfaces (papers/004, d = 3): the guiding surface exactly, certified\n\n"
-        "Solids bounded by polynomial surface facets (here bilinear quads of box-built solids, `splinex cut example cube|slotted|maiden`: "
-        "the iron maiden and the bi-slotted cube are modelled on Figures 11 and 13, not copied). The cutting loop is the border between "
-        "the facets of b and the rest (one cycle of straight sides, each with a tangent certified to point into the solid). RDCP in "
-        "three variables (thin-plate energy from exact Gram matrices) is solved in floating point (a dual active-set method), the "
-        "active set's KKT system solved exactly and the minimizer **proved** (KKT exact on the whole program, objective positive "
-        "definite by an exact congruence certificate), with CGAL's exact QP solver only when that fails (the `proved` column names the "
-        "path); in double the program assembled in double is solved by CGAL's solver on the doubles (Gmpzf) and judged against the "
-        "exact one. The separation is **certified** on every facet outside the strip (max-norm distance 1/16 from the loop) "
-        "by composing f* with the facets, or **violated** at an exact point. The cutting surfaces themselves (Section 4) follow below the "
-        "guides.\n\n";
+  std::ostringstream rows;
   const std::vector<Setting> settings{
       {"cube", 0, 2, 2, {-1, -1, -1}, "no inner knots, 2 x 2 samples per facet"},
       {"slotted", 0, 1, 2, {-1, -1, -1}, "no inner knots, one sample per facet"},
       {"maiden", 3, 1, 2, {3, 0, 0}, "3 x 0 x 0 inner knots (the wave runs along x), one sample per facet"},
   };
-  md << "| example | facets | loop sides | settings | variables x rows | exact s | proved | separation (exact) | double s | bits lost | separation "
-        "(double) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "example,facets,loop_sides,variables,rows,exact_s,proved,exact_separation,double_s,bits_lost,double_separation\n";
   for (const auto& st : settings) {
     ctx.progress("cut3: " + st.name);
@@ -201,21 +185,19 @@ void guides_part(ReportContext& ctx, std::ostringstream& md) {
     }
     std::ostringstream k;
     k << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2];
-    md << "| " << st.name << " | " << e.solid.facets.size() << " | " << R.loop.size() << " | " << st.why << " (" << k.str() << " used) | "
+    rows << "| " << st.name << " | " << e.solid.facets.size() << " | " << R.loop.size() << " | " << st.why << " (" << k.str() << " used) | "
        << R.program.n << " x " << R.program.rows.size() << " | " << fmt(R.seconds) << " | " << proved << " | " << sep_e << " | " << fmt(t_d)
        << " | " << bits << " | " << sep_d << " |\n";
     csv << st.name << "," << e.solid.facets.size() << "," << R.loop.size() << "," << R.program.n << "," << R.program.rows.size() << ","
         << R.seconds << ",\"" << proved << "\",\"" << sep_e << "\"," << t_d << "," << bits << ",\"" << sep_d << "\"\n";
   }
   write_file_atomically(ctx.options.out_dir + "/cut3_table.csv", csv.str());
-  md << "\nFigures `cut3_NAME_slice.svg` (a slice through the middle of the solid; f* = 0 drawn in double), ParaView files "
-        "`cut3_NAME_solid.vtk` and `cut3_NAME_guide.vtk` (f* on a 33^3 grid: contour it at 0), data `cut3_table.csv`.\n\n";
+  md << ReportTemplate("cut3").set("rows", rows.str()).render();
 }
 
 // What coarse sampling misses: the maiden with one sample per facet and one loop point per side.
 void coarse_sampling_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "What coarse sampling misses (the iron maiden, one sample per facet, one point of L* per loop side; every guide below satisfies "
-        "all its sample constraints):\n\n| inner knots | separation (exact) | separation (double) |\n|---|---|---|\n";
+  std::ostringstream rows;
   int missed = 0, runs = 0;
   for (const std::array<int, 3> kk : {std::array<int, 3>{0, 0, 0}, std::array<int, 3>{1, 0, 1}}) {
     Setting st{"maiden", kk[0], 1, 1, kk, ""};
@@ -235,9 +217,9 @@ void coarse_sampling_part(ReportContext& ctx, std::ostringstream& md) {
       sd = witness_text(s);
       ++runs, missed += s.verdict.is_refuted();
     }
-    md << "| " << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2] << " | " << se << " | " << sd << " |\n";
+    rows << "| " << R.inner_knots[0] << "x" << R.inner_knots[1] << "x" << R.inner_knots[2] << " | " << se << " | " << sd << " |\n";
   }
-  md << "\n" << missed << " of " << runs << " sample-feasible guides leave the solid's b or b-bar at an exact witness (normalized coordinates).\n\n";
+  md << ReportTemplate("cut3.coarse").set("rows", rows.str()).set("missed", missed).set("guides", runs).render();
 }
 
 // One example of the cutting-surface table: the solid normalized, its loop, the row's options.
@@ -300,13 +282,17 @@ CuttingSurface<Rational> exact_patch(ReportContext& ctx, const SurfaceCase& c, S
                                       {{&initial, &R.domain.vertices, "#7f8c8d", "6 4"}, {&R.patch, &R.domain.vertices, "#1e8449", ""}},
                                       "grey dashed: the initial patch (invalid); green: the guided patch, weight by the sweep (" +
                                           std::string(validity_word(steps.back().validity.verdict)) + ")"));
-    rows.sweep_text += "\n- " + c.base + ": ";
+    std::string sweep;
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const auto& st = steps[k];
-      rows.sweep_text += (k ? ", " : "") + fmt(st.weight) + ": " + validity_word(st.validity.verdict) + " (max |f*| " +
-                         fmt(st.result.max_abs_f_after) + ")";
+      sweep += (k ? ", " : "") + ReportTemplate("cut3.surfaces.sweep-step")
+                                     .set("weight", fmt(st.weight))
+                                     .set("verdict", validity_word(st.validity.verdict))
+                                     .set("max_f", fmt(st.result.max_abs_f_after))
+                                     .render();
       R.seconds += st.result.seconds + st.validity.seconds;
     }
+    rows.sweep_text += ReportTemplate("cut3.surfaces.sweep").set("example", c.base).set("steps", sweep).render();
   }
   if (c.name == "vase, guided") {
     const auto& G = *rows.vase_guide;
@@ -325,7 +311,7 @@ CuttingSurface<Rational> exact_patch(ReportContext& ctx, const SurfaceCase& c, S
 }
 
 // A row of the cutting-surface table: the exact patch certified, the double patch beside it, the VTK files.
-void surface_row(ReportContext& ctx, std::ostringstream& md, SurfaceRows& rows, const SurfaceCase& c) {
+void surface_row(ReportContext& ctx, std::ostringstream& table, SurfaceRows& rows, const SurfaceCase& c) {
   const auto R = exact_patch(ctx, c, rows);
   const auto V = certify_cutting_surface(c.Sn, c.loop, R.domain, R.patch, c.so);
   const auto D = cutting_surface<double>(c.loop, c.so);
@@ -347,7 +333,7 @@ void surface_row(ReportContext& ctx, std::ostringstream& md, SurfaceRows& rows, 
   for (std::size_t i = 0; i < P.points.size(); ++i) P.points[i] = frame.lo[i % 3] + frame.scale * P.points[i];
   write_file_atomically(ctx.options.out_dir + "/" + file, surface3_vtk(P, R.domain.vertices, 40));
   if (c.name == "twisted-vase") write_file_atomically(ctx.options.out_dir + "/cut3_twisted-vase_solid.vtk", solid3_vtk(c.e.solid));
-  md << "| " << c.name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << validity_word(V.verdict) << "** | "
+  table << "| " << c.name << " | " << R.domain.method << " | " << fmt(R.seconds + V.seconds) << " | **" << validity_word(V.verdict) << "** | "
      << fmt(to_double(V.boundary_deviation)) << " | " << certificate_word(V.tangents) << " | " << status_name(V.regular.status()) << ", "
      << status_name(V.injective.status()) << " | " << collision_word(V.collision) << " | " << witness << " | " << fmt(D.seconds + DV.seconds) << " | " << bits << " | " << validity_word(DV.verdict) << " |\n";
   rows.csv << "\"" << c.name << "\"," << R.domain.method << "," << R.seconds + V.seconds << "," << validity_word(V.verdict) << ","
@@ -358,44 +344,20 @@ void surface_row(ReportContext& ctx, std::ostringstream& md, SurfaceRows& rows, 
 
 // The cutting surfaces: the paper's quadratic initial patch, exactly and in double, certified.
 void surfaces_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "### The cutting surface (Section 4): the initial patch, certified\n\n"
-        "Step 1 projects the loop along its Newell normal's largest axis (exact) or, when a side collapses, solves Eq. 5 (side "
-        "lengths closest to the loop's along its turning angles, exact rational unit directions within 2^-12 rad) or, when that fails "
-        "or its vertices cannot be interpolated by the net, places the vertices on a circle; Step 2 solves the quadratic program (Eq. 7 as a mean over 4 samples per side, thin-plate energy, weights (1, 1), vertex "
-        "equalities, tangent inequalities) by an active-set method on exact KKT systems; the patch is a bicubic with 3 inner knots per "
-        "direction (the paper's). The certificates are exact: vertices, a bound of the boundary's deviation from the loop, the tangents, "
-        "regularity and injectivity (monotone projection), no collision outside the strip. `slotted, bulged` is the slotted patch with "
-        "its interior control points raised by 3/10 (normalized) into the slot: the invalid counterpart of the valid surface (Figure 13 "
-        "shows a valid and an invalid segmentation of the bi-slotted cube; the invalid one here is made by hand, not the paper's). "
-        "`vase` is modelled on Figure 12 (a cube-shaped vase, a planar loop above the cavity's floor): the initial patch is the loop's "
-        "plane and cuts through the cavity; `vase, guided` adds Eq. 6 with the exact guide (1 inner knot) and weights (1000, 1, 1/100) "
-        "(the paper's (10, 1, 1) barely move the patch at this scaling), and the refined patch bends below the cavity. Its time "
-        "includes the guide's; its double column is the unguided double patch. `maiden, Eq. 5` takes Eq. 5's domain (the wave "
-        "unfolded: a 1 x 1/10 rectangle) with 15 inner knots (a 19 x 19 net; 3 cannot interpolate the 17 vertices on each long "
-        "side); the surface turns through 90 degrees at the wave's steps, so no single projection is monotone and regularity and "
-        "injectivity come from the grid of 3 x 3 windows (docs/cut.md). `vase, guided, auto weight` keeps the paper's thin-plate "
-        "weight 1 and sweeps Eq. 6's weight (`cut facet --weight-guide auto`: 10, 10^2, ... until valid), its time including "
-        "every step's refinement and certificates (the guide's time is in the row above). `twisted-vase` is modelled on Figure 1: "
-        "the vase's vertices moved by a polynomial map, so its faces are non-planar bilinear patches and the loop is a non-planar "
-        "saddle; its initial patch is refuted in the cavity (membership by exact ray parity against the bilinear facets, roots of a "
-        "quadratic as exact quadratic irrationals), the guided one (thin-plate weight 1, Eq. 6's weight swept) is certified valid; "
-        "its time includes its own exact guide (1 inner knot).\n\n"
-        "| example | domain | exact s | verdict | boundary deviation | tangents | regular, injective | collision | witness | double s | "
-        "bits lost (double patch) | verdict (double) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream table;
   SurfaceRows rows;
   rows.csv << "example,domain,exact_s,verdict,boundary_deviation,tangents,regular,injective,collision,double_s,bits_lost,double_verdict\n";
   for (const std::string name : {"cube", "slotted", "slotted, bulged", "maiden", "maiden, Eq. 5", "vase", "vase, guided", "vase, guided, auto weight",
                                  "twisted-vase", "twisted-vase, guided, auto weight"}) {
     ctx.progress("cut3: cutting surface of " + name);
-    surface_row(ctx, md, rows, surface_case(name));
+    surface_row(ctx, table, rows, surface_case(name));
   }
   write_file_atomically(ctx.options.out_dir + "/cut3_surfaces.csv", rows.csv.str());
-  if (!rows.sweep_text.empty()) md << "\nThe weight sweeps (Eq. 6's weight: the refined patch's verdict):\n" << rows.sweep_text << "\n";
-  md << "\nA double patch interpolates the loop's vertices only within rounding, so its verdict is at best `undecided` (the other "
-        "certificates still run on its exact values). The maiden's wave-shaped loop cannot be followed by the 7 x 7 net over the "
-        "circle: the initial patch fails, as the paper says the initial solution may; over Eq. 5's unfolded rectangle the initial "
-        "patch is already valid. Figure `cut3_vase_surfaces_slice.svg`: the vase's middle slice with the guide's zero set, the initial patch through the "
-        "cavity and the guided patch below it; `cut3_twisted-vase_surfaces_slice.svg` the same for the twisted vase. ParaView: `cut3_NAME_surface.vtk` with `cut3_NAME_solid.vtk`; data `cut3_surfaces.csv`.\n\n";
+  md << ReportTemplate("cut3.surfaces")
+            .set("rows", table.str())
+            .when("swept", !rows.sweep_text.empty())
+            .set("sweeps", rows.sweep_text)
+            .render();
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "cut/separation.hpp"
 #include "experiments/common.hpp"
 #include "experiments/cut_figure.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/rounding.hpp"
@@ -139,19 +140,15 @@ void snake_by_hand_row(ReportContext& ctx, std::ostringstream& md, std::ostrings
       << t_pipe << "\n";
 }
 
-// Table 1: every example, then the snake by hand; cut_examples.csv.
+// The section's introduction and Table 1: every example, then the snake by hand; cut_examples.csv.
 void table1_part(ReportContext& ctx, std::ostringstream& md) {
   std::ostringstream csv;
   const std::map<std::string, std::string> paper{{"U", "9"}, {"J", "10"}, {"K", "11"}, {"maze", "15"}, {"snake", "27"}};
-  md << "| example | facets | variables x rows | guide exact s | separation (exact) | guide double s | bits lost (double vs exact) | "
-        "separation (double) | cutting curve, 8 / 16 control points | pipeline s | paper's s (new method) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   csv << "example,facets,variables,rows,exact_s,exact_separation,double_s,bits_lost,double_separation,curve_validity,pipeline_s\n";
-  for (const auto& name : cut_example_names()) table1_row(ctx, md, csv, name, paper.count(name) ? paper.at(name) : "-");
-  snake_by_hand_row(ctx, md, csv);
-  md << "\nFigures: `cut_<example>.svg` (boundary, samples, f* = 0, the cutting curve dashed). The paper's times are Matlab's "
-        "fmincon plus its parameterization on its own solids (ours are modelled, not the same), so only the order of magnitude "
-        "compares. The double guide runs the same exact solver on the rounded program (CGAL's QP solver is exact inside), so its "
-        "time is not a float method's; its coefficients differ from the exact minimizer by the bits lost shown.\n\n";
+  for (const auto& name : cut_example_names()) table1_row(ctx, rows, csv, name, paper.count(name) ? paper.at(name) : "-");
+  snake_by_hand_row(ctx, rows, csv);
+  md << ReportTemplate("cut").set("rows", rows.str()).render();
   write_file_atomically(ctx.options.out_dir + "/cut_examples.csv", csv.str());
 }
 
@@ -160,8 +157,7 @@ void sampling_part(ReportContext& ctx, std::ostringstream& md) {
   ctx.progress("cut: sampling density");
   std::ostringstream dcsv;
   dcsv << "example,samples_per_facet,arithmetic,status,separation\n";
-  md << "### How often the samples miss: a sample-feasible guide decided on the whole boundary\n\n"
-        "| example | samples per facet | exact: separation | double: separation |\n|---|---|---|---|\n";
+  std::ostringstream rows;
   int invalid = 0, runs = 0;
   for (const std::string name : {"L", "U", "J", "K"}) {
     const auto e = cut_example(name);
@@ -175,13 +171,12 @@ void sampling_part(ReportContext& ctx, std::ostringstream& md) {
       if (D.status == QPStatus::optimal) vd = certificate_word(certify_separation(D.solid, D.cut, D.f_exact, o.strip).verdict);
       for (const auto* v : {&ve, &vd})
         if (*v != "infeasible") ++runs, invalid += *v == "violated";
-      md << "| " << name << " | " << samples << " | " << ve << " | " << vd << " |\n";
+      rows << "| " << name << " | " << samples << " | " << ve << " | " << vd << " |\n";
       dcsv << name << "," << samples << ",exact," << to_string(R.status) << "," << ve << "\n";
       dcsv << name << "," << samples << ",double," << to_string(D.status) << "," << vd << "\n";
     }
   }
-  md << "\n" << invalid << " of " << runs << " sample-feasible guides are violated somewhere on the boundary; each violation has an exact "
-     << "witness point (`splinex cut guide --samples N`). CSV: `cut_sampling.csv`.\n\n";
+  md << ReportTemplate("cut.sampling").set("rows", rows.str()).set("violated", invalid).set("guides", runs).render();
   write_file_atomically(ctx.options.out_dir + "/cut_sampling.csv", dcsv.str());
 }
 
@@ -202,9 +197,12 @@ void figure10_trends(std::ostringstream& md, const std::vector<PlotSeries>& dist
       ++curv_pairs;
       curv_down += cs.points[k + 1].second < cs.points[k].second;
     }
-  md << "\nRead from the table: a larger delta moved the curve away from the corner in " << dist_up << " of " << dist_pairs
-     << " steps (the paper: always); a larger lambda_reg lowered the largest curvature in " << curv_down << " of " << curv_pairs
-     << " steps (the paper: it does). Figures `cut_figure10_distance.svg`, `cut_figure10_curvature.svg`, data `cut_figure10.csv`.\n\n";
+  md << ReportTemplate("cut.figure10-trends")
+            .set("distance_up", dist_up)
+            .set("distance_steps", dist_pairs)
+            .set("curvature_down", curv_down)
+            .set("curvature_steps", curv_pairs)
+            .render();
 }
 
 // Figure 10: lambda_reg and delta on the L.
@@ -214,15 +212,13 @@ void figure10_part(ReportContext& ctx, std::ostringstream& md) {
   std::ostringstream fcsv;
   fcsv << "lambda_reg,delta,corner_distance,max_curvature,separation\n";
   std::vector<PlotSeries> dist_series, curv_series;
-  md << "### Figure 10: the influence of lambda_reg and delta (L-shaped domain)\n\nDistance from the reflex corner (1, 1) to f* = 0 "
-        "and the largest curvature of f* = 0, both measured in double at the march's points (a picture's numbers, in the solid's "
-        "units); the guide itself exact.\n\n| lambda_reg | delta | corner distance | max curvature | separation |\n|---|---|---|---|---|\n";
+  std::ostringstream rows;
   const Rational deltas[] = {Rational(1, 40), Rational(1, 20), Rational(1, 10)};
   const Rational lambdas[] = {Rational(1, 1000), Rational(1, 100), Rational(1, 10), Rational(1), Rational(10)};
   for (std::size_t di = 0; di < 3; ++di) {
     PlotSeries ds, cs;
     ds.label = cs.label = "delta = " + to_fraction_string(deltas[di]);
-    ds.color = cs.color = kPalette[di % kPaletteSize];
+    ds.color = cs.color = svg::palette(di);
     for (const auto& lr : lambdas) {
       GuideOptions o;
       o.delta = deltas[di];
@@ -239,16 +235,17 @@ void figure10_part(ReportContext& ctx, std::ostringstream& md) {
         s.max_curvature /= sc;
         ds.points.push_back({to_double(lr), s.corner_distance});
         cs.points.push_back({to_double(lr), s.max_curvature});
-        md << "| " << to_fraction_string(lr) << " | " << to_fraction_string(deltas[di]) << " | " << fmt(s.corner_distance, 4) << " | "
+        rows << "| " << to_fraction_string(lr) << " | " << to_fraction_string(deltas[di]) << " | " << fmt(s.corner_distance, 4) << " | "
            << fmt(s.max_curvature, 4) << " | " << sep << " |\n";
         fcsv << to_double(lr) << "," << to_double(deltas[di]) << "," << s.corner_distance << "," << s.max_curvature << "," << sep << "\n";
       } catch (const Error&) {
-        md << "| " << to_fraction_string(lr) << " | " << to_fraction_string(deltas[di]) << " | no curve | - | " << sep << " |\n";
+        rows << "| " << to_fraction_string(lr) << " | " << to_fraction_string(deltas[di]) << " | no curve | - | " << sep << " |\n";
       }
     }
     dist_series.push_back(ds);
     curv_series.push_back(cs);
   }
+  md << ReportTemplate("cut.figure10").set("rows", rows.str()).render();
   write_file_atomically(ctx.options.out_dir + "/cut_figure10.csv", fcsv.str());
   write_file_atomically(ctx.options.out_dir + "/cut_figure10_distance.svg",
                         svg_line_plot({"Figure 10: distance from the reflex corner to f* = 0", "lambda_reg", "distance", true, false, ""}, dist_series));
@@ -261,17 +258,6 @@ void figure10_part(ReportContext& ctx, std::ostringstream& md) {
 
 void cut_section(ReportContext& ctx) {
   std::ostringstream md;
-  md << "## Cutting curves (papers/004, d = 2): the guide exactly, certified\n\n"
-        "The implicit guiding curve f* = 0 solves RDCP (Eq. 2 with the sample constraints). Here it is assembled exactly and solved by "
-        "CGAL's exact QP solver; the KKT conditions and the positive definiteness of the objective are checked exactly, so the "
-        "minimizer is **proved** (Lemma 1: unique). In double the same program is assembled in double and solved by the same "
-        "solver on the doubles; its coefficients are judged against the exact ones. The samples only approximate \"f* > 0 on b\": "
-        "the separation is **certified** on the whole boundary (outside the strip around the cut points) by composing f* with "
-        "every facet piece, or **violated** at an exact boundary point. The cutting curve is traced on the exact guide (march in "
-        "double), fitted by exact least squares with its ends and end tangents imposed, and its validity (Section 2: "
-        "interpolation, tangents, regularity, injectivity, no collision) decided exactly. Default settings: 3 inner knots "
-        "(refined dyadically to 7 when infeasible), 16 samples per facet, delta 1/20, strip 1/16, weights 1, 1, 1/100; 8 control "
-        "points. Solids from exact data: `splinex cut example NAME` (descriptions there).\n\n";
   table1_part(ctx, md);
   sampling_part(ctx, md);
   figure10_part(ctx, md);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "crosscheck/crosscheck.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/random_spline.hpp"
@@ -87,7 +88,7 @@ void elevation_accuracy_section(ReportContext& ctx) {
     for (std::size_t n : counts) {
       PlotSeries s;
       s.label = std::string(m.name) + ", n = " + std::to_string(n);
-      s.color = kPalette[ci++ % kPaletteSize];
+      s.color = svg::palette(ci++);
       s.dashed = std::string(m.name) == "blossom";
       for (int p : degrees) s.points.emplace_back(p, bits(m.name, p, n));
       by_degree.push_back(std::move(s));
@@ -97,7 +98,7 @@ void elevation_accuracy_section(ReportContext& ctx) {
     for (int p : {3, 5, 7, 9}) {
       PlotSeries s;
       s.label = std::string(m.name) + ", p = " + std::to_string(p);
-      s.color = kPalette[ci++ % kPaletteSize];
+      s.color = svg::palette(ci++);
       s.dashed = std::string(m.name) == "blossom";
       for (std::size_t n : counts) s.points.emplace_back(static_cast<double>(n), bits(m.name, p, n));
       by_count.push_back(std::move(s));
@@ -113,28 +114,23 @@ void elevation_accuracy_section(ReportContext& ctx) {
                                        "bits lost", true, false, note},
                                       by_count));
 
-  std::ostringstream md;
-  md << "\n## Degree elevation in double: which method loses fewer bits\n\n"
-     << "Elevation by one of random clamped curves in R^3 (simple knots, dyadic knots and coordinates, so the input is "
-        "exact in double and every bit lost is the method's), " << seeds
-     << " curves per cell, each control point compared exactly with the exact elevation; the cell shows the worst "
-        "normwise relative error as bits lost of 53 (A5.9 / blossom). A5.9 removes the surplus knots of the elevated "
-        "Bezier pieces by extrapolation (factors (u_b - u_i)/(u_a - u_i) > 1, compounded up to p - 1 times); the "
-        "blossom takes only convex combinations. The kernel's default (`ElevationMethod::automatic`, the CLI's "
-        "`--method auto`) is therefore the blossom in floating point and A5.9 in exact arithmetic, where both give the "
-        "same rationals and A5.9 is faster. Every value: `elevation_accuracy.csv`.\n\n"
-     << "![bits lost vs degree](elevation_bits_vs_degree.svg)\n\n![bits lost vs control points](elevation_bits_vs_count.svg)\n\n"
-     << "| p |";
-  for (std::size_t n : counts) md << " n = " << n << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < counts.size(); ++i) md << "---|";
-  md << "\n";
-  for (int p : degrees) {
-    md << "| " << p << " |";
-    for (std::size_t n : counts) md << " " << fixed1(bits("A5.9", p, n)) << " / " << fixed1(bits("blossom", p, n)) << " |";
-    md << "\n";
+  std::string count_columns, count_rules;
+  for (std::size_t n : counts) {
+    count_columns += ReportTemplate("elevation-accuracy.column").set("n", n).render();
+    count_rules += "---|";
   }
-  ctx.markdown["elevation-accuracy"] = md.str();
+  std::ostringstream rows;
+  for (int p : degrees) {
+    rows << "| " << p << " |";
+    for (std::size_t n : counts) rows << " " << fixed1(bits("A5.9", p, n)) << " / " << fixed1(bits("blossom", p, n)) << " |";
+    rows << "\n";
+  }
+  ctx.markdown["elevation-accuracy"] = ReportTemplate("elevation-accuracy")
+                                           .set("curves", seeds)
+                                           .set("count_columns", count_columns)
+                                           .set("count_rules", count_rules)
+                                           .set("rows", rows.str())
+                                           .render();
 }
 
 }  // namespace splinex

@@ -1,5 +1,6 @@
 #include "experiments/hybrid_experiment.hpp"
 #include "base/point.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "experiments/svg.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/hybrid_examples.hpp"
 #include "float/mpfr.hpp"
@@ -104,24 +106,17 @@ Frame frame(const HybridPatch<Rational>& P, double size) {
   return {x0, y1, size / std::max(x1 - x0, y1 - y0)};
 }
 
-std::string polygon_svg(const HybridPatch<Rational>& P, const Frame& f) {
-  std::ostringstream o;
-  o << "<polygon fill=\"none\" stroke=\"black\" stroke-width=\"2\" points=\"";
-  for (const auto& v : P.vertices) {
-    const auto [a, b] = f(to_double(v[0]), to_double(v[1]));
-    o << a << "," << b << " ";
-  }
-  o << "\"/>\n";
-  return o.str();
+void polygon_svg(svg::Canvas& o, const HybridPatch<Rational>& P, const Frame& f) {
+  svg::Points pts;
+  for (const auto& v : P.vertices) pts.push_back(f(to_double(v[0]), to_double(v[1])));
+  o.polygon(pts, svg::attr("fill", "none") + svg::attr("stroke", "black") + svg::attr("stroke-width", 2));
 }
 
 // Iso-lines of s_0 (straight, through O_0) and h_0 (curves), traced in double for the picture.
 std::string isolines_svg(const HybridPatch<Rational>& P) {
   const auto Pd = convert_hybrid<double>(P, [](const Rational& r) { return to_double(r); });
   const Frame f = frame(P, 520);
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" height=\"640\" font-family=\"sans-serif\" font-size=\"13\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg::Canvas o(600, 600);
   const int N = 160;
   // Sample a grid of the bounding box, keep inside points, and draw short contour pieces by
   // marching squares on s_0 and h_0.
@@ -154,17 +149,16 @@ std::string isolines_svg(const HybridPatch<Rational>& P) {
         if (cut.size() == 2) {
           auto [x1, y1] = f(xmin + span * cut[0].first / N, ymax - span * cut[0].second / N);
           auto [x2, y2] = f(xmin + span * cut[1].first / N, ymax - span * cut[1].second / N);
-          o << "<line x1=\"" << x1 << "\" y1=\"" << y1 << "\" x2=\"" << x2 << "\" y2=\"" << y2 << "\" stroke=\"" << color << "\"/>\n";
+          o.line(x1, y1, x2, y2, svg::attr("stroke", color));
         }
       }
   };
   for (int k = 1; k < 10; ++k) contour(S, k / 10.0, "#1f78b4");
   for (int k = 1; k < 10; ++k) contour(H, k / 10.0, "#e31a1c");
-  o << polygon_svg(P, f);
+  polygon_svg(o, P, f);
   const auto [lx, ly] = f(to_double(P.vertices[0][0]), to_double(P.vertices[0][1]));
-  o << "<text x=\"" << lx << "\" y=\"" << ly + 18 << "\">V_0</text>\n";
-  o << "<text x=\"20\" y=\"605\">Example 2.1 domain: iso-lines s_0 = 0.1..0.9 (blue: lines through the meeting point of</text>\n"
-       "<text x=\"20\" y=\"625\">sides 4 and 1, here parallel), h_0 = 0.1..0.9 (red); side 0 runs from V_0</text>\n</svg>\n";
+  o.text(lx, ly + 18, "V_0", 13);
+  o.caption(ReportTemplate("hybrid.isolines.caption").render(), 13);
   return o.str();
 }
 
@@ -176,23 +170,19 @@ std::string height_svg(const HybridPatch<Rational>& P, const Fan& F, const std::
     zmin = std::min(zmin, p[2]);
     zmax = std::max(zmax, p[2]);
   }
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" height=\"640\" font-family=\"sans-serif\" font-size=\"13\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg::Canvas o(600, 600);
   for (const auto& t : F.tri) {
     double z = 0;
     for (auto k : t) z += pts[k][2] / 3;
     const double u = zmax > zmin ? (z - zmin) / (zmax - zmin) : 0.5;
     const int r = static_cast<int>(40 + 215 * u), g = static_cast<int>(60 + 170 * u), b = static_cast<int>(200 - 160 * u);
-    o << "<polygon stroke-width=\"0.6\" stroke=\"rgb(" << r << "," << g << "," << b << ")\" fill=\"rgb(" << r << "," << g << "," << b << ")\" points=\"";
-    for (auto k : t) {
-      const auto [x, y] = f(to_double(F.x[k][0]), to_double(F.x[k][1]));
-      o << x << "," << y << " ";
-    }
-    o << "\"/>\n";
+    svg::Points tri;
+    for (auto k : t) tri.push_back(f(to_double(F.x[k][0]), to_double(F.x[k][1])));
+    const std::string colour = svg::rgb({r, g, b});
+    o.polygon(tri, svg::attr("stroke-width", 0.6) + svg::attr("stroke", colour) + svg::attr("fill", colour));
   }
-  o << polygon_svg(P, f) << "<text x=\"20\" y=\"620\">" << title << " (z from " << sci(zmin) << " blue to " << sci(zmax)
-    << " yellow)</text>\n</svg>\n";
+  polygon_svg(o, P, f);
+  o.caption(title + " (z from " + sci(zmin) + " blue to " + sci(zmax) + " yellow)", 13);
   return o.str();
 }
 
@@ -290,22 +280,24 @@ void write_hole_mesh(const std::string& out_dir, int n, const HybridHole& H) {
 
 // Example 3.2: holes between tensor-product B-spline patches. Returns the holes' data for the JSON.
 Json holes_part(std::ostringstream& md, const std::string& out_dir) {
-  md << "### Example 3.2: filling holes between tensor-product B-spline patches\n\n"
-     << "Neighbours A_i are exact B-spline patches of degree (p_i, 2) on a quadratic host surface; the patch takes its ribbons from "
-        "them (T_i = -dA_i/dt), shared twists averaged. Mismatch along each side, exact, at 8 interior points per knot span (and the "
-        "corner derivative -P'_{i-1}(1)): C1 = max-norm of dS/dh_i + dA_i/dt; G1 = det(P_i', dA_i/dt, dS/dh_i) (0 iff the tangent "
-        "planes agree; the angle between the normals is shown in degrees, computed in double from the exact vectors).\n\n"
-     << "| hole | side | C1 mismatch max | G1 det max | normal angle max (deg) | spans with exactly zero mismatch | corner C1 mismatch |\n"
-        "|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   Json holes = Json::object();
   for (int n : {5, 6}) {
     const auto H = hybrid_hole_example_3_2(n);
     const auto& P = H.patch;
     for (std::size_t i = 0; i < P.sides(); ++i) {
       const auto s = side_mismatch(H, i);
-      md << "| " << n << "-sided (d = " << P.d << ") | " << i << " | " << frac_or_sci(s.c1max) << " | "
-         << sci(to_double(s.detmax)) << " | " << sci(s.angmax) << " | " << s.zero_spans << " of " << s.spans << " | "
-         << to_fraction_string(s.corner) << " |\n";
+      rows << ReportTemplate("hybrid.holes.side")
+                  .set("n", n)
+                  .set("d", P.d)
+                  .set("side", i)
+                  .set("c1_max", frac_or_sci(s.c1max))
+                  .set("g1_det_max", sci(to_double(s.detmax)))
+                  .set("angle_max", sci(s.angmax))
+                  .set("zero_spans", s.zero_spans)
+                  .set("spans", s.spans)
+                  .set("corner_c1", to_fraction_string(s.corner))
+                  .render();
       holes[std::to_string(n)]["sides"].push_back({{"side", i},
                                                    {"c1_max", to_fraction_string(s.c1max)},
                                                    {"g1_det_max", to_fraction_string(s.detmax)},
@@ -315,16 +307,14 @@ Json holes_part(std::ostringstream& md, const std::string& out_dir) {
     holes[std::to_string(n)]["twist_conflicts"] = H.conflicts;
     holes[std::to_string(n)]["max_conflict"] = to_fraction_string(H.max_conflict);
     holes[std::to_string(n)]["patch"] = hybrid_to_json(P);
-    md << "| " << n << "-sided | | shared twists demanded differently by the two neighbours: " << H.conflicts << ", largest difference "
-       << to_fraction_string(H.max_conflict) << " | | | | |\n";
+    rows << ReportTemplate("hybrid.holes.conflict")
+                .set("n", n)
+                .set("conflicts", H.conflicts)
+                .set("max_conflict", to_fraction_string(H.max_conflict))
+                .render();
     write_hole_mesh(out_dir, n, H);
   }
-  md << "\nThe only points on which the two neighbours of a corner disagree are the shared twists C^i_{1,1} = C^{i-1}_{d-1,1}; "
-        "their mean moves T_i by tau_i (mean - demand) N_1 and N_{d-1}, so the mismatch is exactly zero on the knot spans outside "
-        "those two basis functions' supports (none for p = 2 with four spans) and nonzero on the others. At the corners the C1 mismatch "
-        "is Theorem 3.2's corner effect: zero where sigma_{i-1} = tau_i (the pentagon's symmetric knots), nonzero where the "
-        "hexagon's neighbouring sides have different p. The G1 determinant is nonzero wherever C1 fails here: the averaged twist "
-        "also tilts the tangent plane.\n\n";
+  md << ReportTemplate("hybrid.holes").set("rows", rows.str()).render();
   return holes;
 }
 
@@ -340,9 +330,7 @@ std::vector<Shape> example_shapes(const HybridPatch<Rational>& P21) {
 
 // Examples 4.1 and 4.2 on each domain: the counts, exact equality at sample points, the times.
 Json examples_4_part(std::ostringstream& md, const std::vector<Shape>& shapes, bool& ok) {
-  md << "### Examples 4.1 and 4.2, Salvi's original elevation\n\n"
-     << "| patch | operation | interior degree | ribbon p | ribbon coefficients per side | exact equality at sample points | time |\n"
-        "|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   Json ex4 = Json::array();
   for (const auto& [name, P] : shapes) {
     const auto F = hybrid_form(P);
@@ -354,8 +342,15 @@ Json examples_4_part(std::ostringstream& md, const std::vector<Shape>& shapes, b
     std::size_t same = 0;
     for (const auto& x : xs) same += hybrid_form_evaluate(G, x) == hybrid_evaluate(P, x) ? 1 : 0;
     ok = ok && same == xs.size();
-    md << "| " << name << " S^{6,2} | Example 4.1: elevate 3 times | " << G.sides[0].du << " | " << G.sides[0].p << " | " << G.sides[0].count_b()
-       << " | " << same << " of " << xs.size() << " | " << sci(te) << " s |\n";
+    rows << ReportTemplate("hybrid.examples-4.elevate")
+                .set("patch", name)
+                .set("interior_degree", G.sides[0].du)
+                .set("ribbon_p", G.sides[0].p)
+                .set("ribbon_coefficients", G.sides[0].count_b())
+                .set("equal", same)
+                .set("samples", xs.size())
+                .set("seconds", sci(te))
+                .render();
     t0 = std::chrono::steady_clock::now();
     auto R = F;
     for (int k = 0; k < 5; ++k) R = hybrid_insert(R, Rational(k + 1, 6), Rational(k + 1, 6), Rational(2 * k + 1, 10));
@@ -363,22 +358,26 @@ Json examples_4_part(std::ostringstream& md, const std::vector<Shape>& shapes, b
     same = 0;
     for (const auto& x : xs) same += hybrid_form_evaluate(R, x) == hybrid_evaluate(P, x) ? 1 : 0;
     ok = ok && same == xs.size();
-    md << "| " << name << " S^{6,2} | Example 4.2: insert 5 knots in U, V, U^b | " << R.sides[0].du << " (" << R.sides[0].count_u() << " x "
-       << R.sides[0].count_h() << " B-splines) | " << R.sides[0].p << " | " << R.sides[0].count_b() << " | " << same << " of " << xs.size() << " | "
-       << sci(ti) << " s |\n";
+    rows << ReportTemplate("hybrid.examples-4.insert")
+                .set("patch", name)
+                .set("interior_degree", R.sides[0].du)
+                .set("count_u", R.sides[0].count_u())
+                .set("count_h", R.sides[0].count_h())
+                .set("ribbon_p", R.sides[0].p)
+                .set("ribbon_coefficients", R.sides[0].count_b())
+                .set("equal", same)
+                .set("samples", xs.size())
+                .set("seconds", sci(ti))
+                .render();
     ex4.push_back({{"patch", name}, {"elevated_interior_degree", G.sides[0].du}, {"elevated_p", G.sides[0].p}, {"refined_ribbon_count", R.sides[0].count_b()}});
   }
-  md << "\nExample 4.1's counts: S^{6,2} -> S^{11,3} -> S^{16,4} -> S^{21,5} (h = 5: six distinct knots), as the paper's S^{21,5}. "
-        "Eq. 4.6, taken literally with 0/0 := 0, gives exactly the kernel's elevated coefficients (A5.9); Eq. 4.10-4.12 exactly the "
-        "kernel's inserted ones (A5.1).\n\n";
+  md << ReportTemplate("hybrid.examples-4").set("rows", rows.str()).render();
   return ex4;
 }
 
 // Salvi's original elevation (Bezier sides, d = 5 -> 6) against the improved one, measured exactly.
 Json salvi_part(std::ostringstream& md, const std::vector<Shape>& shapes, bool& ok) {
-  md << "Salvi's original elevation (Bezier sides, d = 5 -> 6, dome control points over the three domains), measured exactly over a "
-        "fan sample of the domain (12 subdivisions, 79 points per triangle) and at the vertex centroid:\n\n"
-     << "| domain | max-norm displacement over the sample | at the centroid (exact) | improved elevation (Theorem 4.1) |\n|---|---|---|---|\n";
+  std::ostringstream rows;
   Json salvi = Json::array();
   for (const auto& [name, Pshape] : shapes) {
     const auto B = hybrid_dome(Pshape.vertices, 5, std::vector<int>(Pshape.sides(), 5),
@@ -395,16 +394,16 @@ Json salvi_part(std::ostringstream& md, const std::vector<Shape>& shapes, bool& 
     const P2 g = centroid(B);
     const Rational at_g = max_norm_diff(hybrid_evaluate(B, g), hybrid_evaluate(Q, g));
     ok = ok && improved == 0 && worst > 0;
-    md << "| " << name << " | " << frac_or_sci(worst) << " | " << frac_or_sci(at_g) << " | " << to_fraction_string(improved) << " |\n";
+    rows << "| " << name << " | " << frac_or_sci(worst) << " | " << frac_or_sci(at_g) << " | " << to_fraction_string(improved) << " |\n";
     salvi.push_back({{"domain", name}, {"max_displacement", to_fraction_string(worst)}, {"centroid_displacement", to_fraction_string(at_g)},
                      {"improved_displacement", to_fraction_string(improved)}});
   }
+  md << ReportTemplate("hybrid.salvi").set("rows", rows.str()).render();
   return salvi;
 }
 
 // Double and MPFR against exact: values and derivatives.
 void rounding_part(std::ostringstream& md, const HybridPatch<Rational>& P21) {
-  md << "\n### Rounding, measured exactly (Example 2.1, fan sample, 6 subdivisions)\n\n| arith | value abs error max | derivative abs error max | bits lost (value) |\n|---|---|---|---|\n";
   const auto F = fan(P21, 6);
   std::vector<P2> xs;
   for (const auto& x : F.x) {
@@ -412,6 +411,7 @@ void rounding_part(std::ostringstream& md, const HybridPatch<Rational>& P21) {
     for (const auto& v : P21.vertices) corner = corner || (v[0] == x[0] && v[1] == x[1]);
     if (!corner) xs.push_back(x);
   }
+  std::ostringstream rows;
   auto measure = [&](auto tag, const std::string& name) {
     using T = decltype(tag);
     const auto Q = convert_hybrid<T>(P21, [](const Rational& r) { return ArithTraits<T>::from_rational(r); });
@@ -427,24 +427,21 @@ void rounding_part(std::ostringstream& md, const HybridPatch<Rational>& P21) {
       }
     }
     const double bits = ev == 0 ? 0 : ArithTraits<T>::precision_bits() + std::log2(to_double(ev / scale));
-    md << "| " << name << " | " << sci(to_double(ev)) << " | " << sci(to_double(ed)) << " | " << sci(std::max(0.0, bits)) << " |\n";
+    rows << "| " << name << " | " << sci(to_double(ev)) << " | " << sci(to_double(ed)) << " | " << sci(std::max(0.0, bits)) << " |\n";
   };
   measure(double{}, "double");
   {
     Mpfr::Precision guard(113);
     measure(Mpfr{}, "mpfr:113");
   }
-  md << "\n(" << xs.size() << " points, corners excluded; derivatives by dual numbers in each arithmetic.)\n\n";
+  md << ReportTemplate("hybrid.rounding").set("rows", rows.str()).set("points", xs.size()).render();
 }
 
 }  // namespace
 
-std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
+std::string run_hybrid_experiment(const std::string& out_dir, bool& ok, bool proofs_ran) {
   std::ostringstream md;
-  md << "## The hybrid patch with B-spline boundaries (papers/003, issue 5)\n\n"
-     << "Control points are constructed (the paper prints none; `fixtures/hybrid_examples.hpp` says how). Proofs: `hybrid-thm-3.1`, "
-        "`hybrid-thm-3.2` (as stated: refuted at corners), `hybrid-thm-3.2-corrected`, `hybrid-thm-4.1`, `hybrid-thm-4.2`, "
-        "`hybrid-salvi-elevation` in the proof table above.\n\n";
+  md << ReportTemplate("hybrid.intro").when("ran:proofs", proofs_ran).render();
   const auto P21 = hybrid_example_2_1();
 
   const Json holes = holes_part(md, out_dir);
@@ -466,14 +463,13 @@ std::string run_hybrid_experiment(const std::string& out_dir, bool& ok) {
   }
   Json all{{"example_3_2", holes}, {"examples_4", ex4}, {"salvi_elevation", salvi}};
   write_file_atomically(out_dir + "/hybrid_examples.json", all.dump(1) + "\n");
-  md << "Figures: `hybrid_isolines.svg` (iso-lines of s_0 and h_0), `hybrid_height.svg` (height-shaded patch); meshes for ParaView: "
-        "`hybrid_example_2_1.obj`, `hybrid_hole_5.obj`, `hybrid_hole_6.obj` (patch and neighbours); data: `hybrid_examples.json`.\n\n";
+  md << ReportTemplate("hybrid.figures").render();
   return md.str();
 }
 
 void hybrid_section(ReportContext& ctx) {
   ctx.progress("hybrid patch (papers/003)");
-  ctx.markdown["hybrid"] = run_hybrid_experiment(ctx.options.out_dir, ctx.ok);
+  ctx.markdown["hybrid"] = run_hybrid_experiment(ctx.options.out_dir, ctx.ok, ctx.ran("proofs"));
 }
 
 }  // namespace splinex

@@ -9,7 +9,8 @@ namespace splinex {
 
 /// Writes hybrid_isolines.svg, hybrid_height.svg, hybrid_example_2_1.obj, hybrid_hole_5.obj,
 /// hybrid_hole_6.obj and hybrid_examples.json into out_dir; returns a Markdown section. ok is
-/// false if an exact equality the theorems promise fails.
-std::string run_hybrid_experiment(const std::string& out_dir, bool& ok);
+/// false if an exact equality the theorems promise fails. proofs_ran: whether the report's proof
+/// table is there to refer to.
+std::string run_hybrid_experiment(const std::string& out_dir, bool& ok, bool proofs_ran);
 
 }  // namespace splinex

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 
@@ -13,21 +14,17 @@ namespace splinex {
 
 void peers_section(ReportContext& ctx) {
   namespace fs = std::filesystem;
-  std::ostringstream md;
-  md << "## Peers judged exactly (splinex verify)\n\n";
   const std::string& dir = ctx.options.peers_dir;
   if (dir.empty()) {
-    md << "Not included in this run. `scripts/run.sh peers` judges SciPy, the Octave NURBS toolbox and OpenCASCADE "
-          "on the structured and ordinary cases and writes `results/peers/`; `splinex report --peers results/peers` "
-          "includes their tables and figures here (docs/verify.md holds the last measured tables).\n\n";
-    ctx.markdown["peers"] = md.str();
+    ctx.markdown["peers"] = ReportTemplate("peers").when("included", false).set("peers", "").render();
     return;
   }
+  std::ostringstream md;
   ctx.progress("peers from " + dir);
   for (const char* name : {"scipy", "octave", "occt"}) {
     const fs::path table = fs::path(dir) / (std::string(name) + ".md");
     if (!fs::exists(table)) {
-      md << "- " << name << ": no results in " << dir << "\n\n";
+      md << ReportTemplate("peers.missing").set("peer", name).set("dir", dir).render();
       continue;
     }
     std::ifstream in(table);
@@ -40,7 +37,7 @@ void peers_section(ReportContext& ctx) {
         fs::copy_file(src, fs::path(ctx.options.out_dir) / src.filename(), fs::copy_options::overwrite_existing);
     }
   }
-  ctx.markdown["peers"] = md.str();
+  ctx.markdown["peers"] = ReportTemplate("peers").when("included", true).set("peers", md.str()).render();
 }
 
 }  // namespace splinex

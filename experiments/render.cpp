@@ -1,6 +1,6 @@
 #include "experiments/render.hpp"
 #include "base/point.hpp"
-#include "experiments/svg_plot.hpp"
+#include "experiments/svg.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,12 +12,6 @@
 #include "vrep/model/trivariate.hpp"
 
 namespace splinex {
-
-std::array<int, 3> palette_rgb(std::size_t i) {
-  static const std::array<int, 3> colours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189}, {255, 127, 14},
-                                               {140, 86, 75},  {23, 190, 207}, {188, 189, 34}, {227, 119, 194}, {127, 127, 127}};
-  return colours[i % (sizeof(colours) / sizeof(colours[0]))];
-}
 
 std::string render_svg(const std::vector<Triangle3>& triangles, const std::vector<Marker3>& markers, const RenderView& view) {
   const double pi = 3.14159265358979323846, az = view.azimuth_deg * pi / 180, el = view.elevation_deg * pi / 180;
@@ -37,10 +31,11 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
     for (const auto& p : t.p) grow(p);
   for (const auto& m : markers) grow(m.at);
   if (xmax < xmin) xmin = ymin = 0, xmax = ymax = 1;
-  const double margin = 30, top = view.title.empty() ? 10 : 34, bottom = view.note.empty() ? 10 : 30;
-  const double sx = (view.width - 2 * margin) / std::max(xmax - xmin, 1e-300), sy = (view.height - top - bottom) / std::max(ymax - ymin, 1e-300);
+  // The drawing area (the title and the note are the canvas's bands around it).
+  const double margin = 30, pad = 10, Wd = view.width, Hd = std::max(100.0, view.height - (view.title.empty() ? 0.0 : 30.0) - (view.note.empty() ? 0.0 : 20.0));
+  const double sx = (Wd - 2 * margin) / std::max(xmax - xmin, 1e-300), sy = (Hd - 2 * pad) / std::max(ymax - ymin, 1e-300);
   const double s = std::min(sx, sy);
-  const double cx = view.width / 2.0 - s * (xmin + xmax) / 2, cy = top + (view.height - top - bottom) / 2.0 + s * (ymin + ymax) / 2;
+  const double cx = Wd / 2.0 - s * (xmin + xmax) / 2, cy = Hd / 2.0 + s * (ymin + ymax) / 2;
   auto screen = [&](const std::array<double, 3>& p) { return std::array<double, 2>{cx + s * dot(p, r), cy - s * dot(p, u)}; };
   // Light from the viewer's upper left.
   std::array<double, 3> light{d[0] + 0.5 * u[0] - 0.4 * r[0], d[1] + 0.5 * u[1] - 0.4 * r[1], d[2] + 0.5 * u[2] - 0.4 * r[2]};
@@ -55,11 +50,9 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
     order.emplace_back(dot(c, d), i);
   }
   std::sort(order.begin(), order.end());
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << view.width << "\" height=\"" << view.height
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if (!view.title.empty()) o << "<text x=\"" << view.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << svg_escape(view.title) << "</text>\n";
-  char buf[256];
+  svg::Canvas canvas(Wd, Hd, 4);  // 4 digits: a tenth of a pixel
+  if (!view.title.empty()) canvas.title(view.title);
+  if (!view.note.empty()) canvas.caption(view.note, 12);
   for (const auto& [depth, i] : order) {
     (void)depth;
     const auto& t = triangles[i];
@@ -72,23 +65,17 @@ std::string render_svg(const std::vector<Triangle3>& triangles, const std::vecto
     const double nl = std::sqrt(dot(nrm, nrm));
     const double lambert = nl > 0 ? std::abs(dot(nrm, light)) / nl : 0;  // two-sided
     const double f = 0.35 + 0.65 * lambert;
-    int c[3];
+    std::array<int, 3> c{};
     for (int k = 0; k < 3; ++k) c[k] = std::min(255, static_cast<int>(t.rgb[k] * f));
     const auto p0 = screen(t.p[0]), p1 = screen(t.p[1]), p2 = screen(t.p[2]);
-    std::snprintf(buf, sizeof buf, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"rgb(%d,%d,%d)\" stroke=\"rgb(%d,%d,%d)\" stroke-width=\"0.3\"/>\n",
-                  p0[0], p0[1], p1[0], p1[1], p2[0], p2[1], c[0], c[1], c[2], c[0], c[1], c[2]);
-    o << buf;
+    const std::string colour = svg::rgb(c);
+    canvas.polygon({{p0[0], p0[1]}, {p1[0], p1[1]}, {p2[0], p2[1]}}, svg::attr("fill", colour) + svg::attr("stroke", colour) + svg::attr("stroke-width", 0.3));
   }
   for (const auto& m : markers) {
     const auto p = screen(m.at);
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"rgb(%d,%d,%d)\"/>\n", p[0], p[1], m.radius, m.rgb[0],
-                  m.rgb[1], m.rgb[2]);
-    o << buf;
+    canvas.circle(p[0], p[1], m.radius, svg::attr("fill", svg::rgb(m.rgb)));
   }
-  if (!view.note.empty())
-    o << "<text x=\"" << view.width / 2 << "\" y=\"" << view.height - 10 << "\" text-anchor=\"middle\" fill=\"#555\">" << svg_escape(view.note) << "</text>\n";
-  o << "</svg>\n";
-  return o.str();
+  return canvas.str();
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/svg.hpp"  // svg::palette_rgb: a distinct colour per index (cells, stars)
 #include "spline/bspline.hpp"
 
 namespace splinex {
@@ -41,8 +42,5 @@ void add_trivariate_boundary(std::vector<Triangle3>& out, const BSpline<T>& V, c
 template <class T>
 void add_surface(std::vector<Triangle3>& out, const BSpline<T>& S, const std::array<int, 3>& rgb, int n,
                  const std::array<double, 3>& offset = {0, 0, 0});
-
-/// A distinct colour per index (cells, stars).
-std::array<int, 3> palette_rgb(std::size_t i);
 
 }  // namespace splinex

@@ -23,6 +23,7 @@
 #include "base/errors.hpp"
 #include "base/parallel.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "proofs/suite.hpp"
@@ -33,9 +34,6 @@ void proofs_section(ReportContext& ctx) {
   ctx.progress("exact proofs");
   const auto proofs = run_proofs({}, ctx.options.full ? 40 : 12);
   std::ostringstream md;
-  md << "## Proofs (exact, by identity)\n\n`proved`: an identity argument (degree bound, enough points per cell) covers "
-        "the claim on every case; `checked at N points`: sampled, no identity argument; `refuted`: with the exact "
-        "counterexample.\n\n| proof | verdict | cases | exact comparisons | degree bound | input structures |\n|---|---|---|---|---|---|\n";
   for (const auto& p : proofs) {
     ctx.proofs_as_expected = ctx.proofs_as_expected && p.as_expected();
     std::string structures;
@@ -44,7 +42,7 @@ void proofs_section(ReportContext& ctx) {
        << (p.as_expected() ? "" : " **UNEXPECTED**") << " | " << p.cases << " | "
        << p.points << " | " << p.degree_bound << " | " << structures << " |\n";
   }
-  ctx.markdown["proofs"] = md.str();
+  ctx.markdown["proofs"] = ReportTemplate("proofs").set("rows", md.str()).render();
   ctx.ok = ctx.ok && ctx.proofs_as_expected;
 }
 
@@ -170,16 +168,26 @@ int write_report(const ReportOptions& opt, ReportContext& ctx) {
   const std::time_t now = std::time(nullptr);
   char when[32];
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::string md = "# splinex report\n\nRun: splinex " SPLINEX_VERSION " on " + std::string(when) + ", `" + command + "`.\n\n";
+  std::string md = ReportTemplate("report.title").set("version", SPLINEX_VERSION).set("when", when).set("command", command).render();
+  // Parts join with a blank line between them (one is added where a part ends and the next begins
+  // without one: which parts meet depends on the sections chosen).
+  const auto append = [&md](const std::string& text) {
+    if (!text.empty() && text.front() != '\n' && md.size() >= 2 && md.compare(md.size() - 2, 2, "\n\n") != 0) md += "\n";
+    md += text;
+  };
   for (const char* part : kDocument)
-    if (ctx.markdown.count(part)) md += ctx.markdown.at(part);
+    if (ctx.markdown.count(part)) append(ctx.markdown.at(part));
   std::string list;
   for (std::size_t i = 0; i < ran.size(); ++i) list += (i ? ", " : "") + ran[i];
-  md += "---\n\nThis report ran " + std::to_string(ran.size()) + " of " + std::to_string(kSectionCount) + " sections (" + list + "); " +
-        (ctx.ok ? "every section's own checks held" : "**some section's own checks failed** (see above)") + "; " +
-        (!chosen[kSectionCount - 1] ? std::string("proofs not run")
-         : ctx.proofs_as_expected   ? std::string("proofs as expected")
-                                    : std::string("**proofs with an unexpected verdict**")) + "; " + std::to_string(ctx.crosschecks) + " crosschecks.\n";
+  append(ReportTemplate("report.closing")
+            .set("ran", ran.size())
+            .set("sections", kSectionCount)
+            .set("list", list)
+            .when("ok", ctx.ok)
+            .when("ran:proofs", chosen[kSectionCount - 1] != 0)
+            .when("proofs_as_expected", ctx.proofs_as_expected)
+            .set("crosschecks", ctx.crosschecks)
+            .render());
   write_file_atomically(opt.out_dir + "/report.md", md);
   {
     std::ostringstream mf;
@@ -222,9 +230,9 @@ std::string report_section_table(bool markdown) {
   for (const auto& x : kSectionTable)
     if (std::string(x.name) != "peers") total += x.seconds;
   if (markdown) {
-    o << "| section | reproduces | time |\n|---|---|---|\n";
-    for (const auto& x : kSectionTable) o << "| " << x.name << " | " << x.reproduces << " | " << (std::string(x.name) == "peers" ? "-" : time(x.seconds)) << " |\n";
-    o << "| all (`--jobs 1`, without peers) | | " << time(total) << " |\n";
+    std::ostringstream rows;
+    for (const auto& x : kSectionTable) rows << "| " << x.name << " | " << x.reproduces << " | " << (std::string(x.name) == "peers" ? "-" : time(x.seconds)) << " |\n";
+    o << ReportTemplate("report.sections").set("rows", rows.str()).set("total", time(total)).render();
   } else {
     o << "Sections (what each reproduces; time alone with --jobs 1 on 2 cores under load, 2026-12-06):\n";
     for (const auto& x : kSectionTable)

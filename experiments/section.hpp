@@ -2,6 +2,7 @@
 // output folder and its part(s) of report.md into the context. experiments/report.cpp holds the
 // list of sections (the order they run in) and the order of report.md's parts.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -22,6 +23,11 @@ struct ReportContext {
   /// crosscheck suite, then the composition orders).
   std::mt19937_64 rng{20261121};
   std::map<std::string, std::string> markdown;  // report.md's parts by name
+  /// Whether the section NAME runs in this report: text that refers to another section's results
+  /// says so only then ({{?ran:NAME}} in a template, experiments/report_template.hpp).
+  bool ran(const std::string& name) const {
+    return options.sections.empty() || std::find(options.sections.begin(), options.sections.end(), name) != options.sections.end();
+  }
   bool ok = true;                                // every section's own checks held
   /// For the closing progress line.
   std::size_t crosschecks = 0;

@@ -6,6 +6,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_ssi.hpp"
@@ -53,29 +55,28 @@ std::string curve_projection_svg(const BSpline<Rational>& C0, const BSpline<Rati
                                  const std::string& title) {
   const auto S = round_spline<double>(S0, "surface"), C = round_spline<double>(C0, "curve");
   const int W = 360, H = 360, M = 40;
-  std::ostringstream s;
-  s << std::setprecision(6);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * W + 3 * M << "\" height=\"" << H + 2 * M + 40
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << M
-    << "\" y=\"20\" font-size=\"14\">" << title << "</text>\n";
+  svg::Canvas s(2 * W + 3 * M, H + 20);
+  s.title(title);
   // Left: the parameter domain.
   const double u0 = S.domain_lo(0), u1 = S.domain_hi(0), v0 = S.domain_lo(1), v1 = S.domain_hi(1);
-  const int oy = M + 10;
+  const int oy = 10;
   const auto px = [&](double u) { return M + (u - u0) / (u1 - u0) * W; };
   const auto py = [&](double v) { return oy + H - (v - v0) / (v1 - v0) * H; };
-  s << "<rect x=\"" << M << "\" y=\"" << oy << "\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#f7f7f7\" stroke=\"black\"/>\n";
+  s.rect(M, oy, W, H, svg::attr("fill", "#f7f7f7") + svg::attr("stroke", "black"));
   for (const auto& b : r.branches) {
-    s << "<polyline fill=\"none\" stroke-width=\"2.5\" stroke=\"" << kPalette[static_cast<std::size_t>(std::max(0, b.component)) % kPaletteSize] << "\" points=\"";
-    for (const auto& x : b.points) s << px(x[0]) << "," << py(x[1]) << " ";
-    s << "\"/>\n";
+    svg::Points pts;
+    for (const auto& x : b.points) pts.emplace_back(px(x[0]), py(x[1]));
+    s.polyline(pts, svg::attr("stroke-width", 2.5) + svg::attr("stroke", svg::palette(static_cast<std::size_t>(std::max(0, b.component)))));
   }
   for (const auto& p : r.special) {
     const double u = to_double((p.lo[0] + p.hi[0]) / 2), v = to_double((p.lo[1] + p.hi[1]) / 2);
     const char* fill = p.kind == "turning point" ? "#ff7f0e" : p.kind == "joint" ? "white" : "black";
-    s << "<circle cx=\"" << px(u) << "\" cy=\"" << py(v) << "\" r=\"3.5\" fill=\"" << fill << "\" stroke=\"black\"/>\n";
+    s.circle(px(u), py(v), 3.5, svg::attr("fill", fill) + svg::attr("stroke", "black"));
   }
-  s << "<text x=\"" << M << "\" y=\"" << oy + H + 16 << "\">the surface's parameters (u, v) in [" << u0 << ", " << u1 << "] x [" << v0 << ", " << v1
-    << "]</text>\n<text x=\"" << M << "\" y=\"" << oy + H + 32 << "\">dots: ends (black), joints (white), turning points (orange)</text>\n";
+  // Under each panel what it shows, wrapped to the panel's width.
+  std::size_t below = s.text_block(M, oy + H + 16, "the surface's parameters (u, v) in [" + svg::num(u0) + ", " + svg::num(u1) + "] x [" +
+                                                       svg::num(v0) + ", " + svg::num(v1) + "]", W);
+  below += s.text_block(M, oy + H + 16 + 15.0 * static_cast<double>(below), "dots: ends (black), joints (white), turning points (orange)", W);
   // Right: the top view.
   std::vector<std::array<double, 3>> all = curve_points(C);
   for (const auto& e : boundary(S)) all.insert(all.end(), e.begin(), e.end());
@@ -87,21 +88,21 @@ std::string curve_projection_svg(const BSpline<Rational>& C0, const BSpline<Rati
   const int ox = 2 * M + W;
   const auto qx = [&](double x) { return ox + (x - cx) / span * W + W / 2.0; };
   const auto qy = [&](double y) { return oy + H / 2.0 - (y - cy) / span * H; };
-  s << "<rect x=\"" << ox << "\" y=\"" << oy << "\" width=\"" << W << "\" height=\"" << H << "\" fill=\"white\" stroke=\"black\"/>\n";
+  s.rect(ox, oy, W, H, svg::attr("fill", "white") + svg::attr("stroke", "black"));
   const auto line = [&](const std::vector<std::array<double, 3>>& pts, const std::string& stroke, double width, bool dashed) {
-    s << "<polyline fill=\"none\" stroke-width=\"" << width << "\" stroke=\"" << stroke << "\"" << (dashed ? " stroke-dasharray=\"4,3\"" : "") << " points=\"";
-    for (const auto& p : pts) s << qx(p[0]) << "," << qy(p[1]) << " ";
-    s << "\"/>\n";
+    svg::Points q;
+    for (const auto& p : pts) q.emplace_back(qx(p[0]), qy(p[1]));
+    s.polyline(q, svg::attr("stroke-width", width) + svg::attr("stroke", stroke) + (dashed ? svg::attr("stroke-dasharray", "4,3") : ""));
   };
   for (const auto& e : boundary(S)) line(e, "black", 1, false);
   line(curve_points(C), "#888888", 1.5, true);
   for (const auto& b : r.branches) {
     std::vector<std::array<double, 3>> pts;
     for (const auto& x : b.points) pts.push_back(at3(S, {x[0], x[1]}));
-    line(pts, kPalette[static_cast<std::size_t>(std::max(0, b.component)) % kPaletteSize], 2.5, false);
+    line(pts, svg::palette(static_cast<std::size_t>(std::max(0, b.component))), 2.5, false);
   }
-  s << "<text x=\"" << ox << "\" y=\"" << oy + H + 16 << "\">top view (x, y): C dashed, the projection coloured</text>\n";
-  s << "</svg>\n";
+  below = std::max(below, s.text_block(ox, oy + H + 16, "top view (x, y): C dashed, the projection coloured", W));
+  s.set_height(oy + H + 8 + 15.0 * static_cast<double>(below));
   return s.str();
 }
 
@@ -241,6 +242,7 @@ struct SolveReport {
   explicit SolveReport(ReportContext& c) : ctx(c) { deep.max_depth = 64; }
   ReportContext& ctx;
   std::ostringstream md, csv;
+  std::ostringstream rows;  // the projection table's
   bool ok = true;
   SolveOptions deep;  // boxes down to 2^-64 of the domain: roots 2^-40 apart are separated
 };
@@ -278,7 +280,7 @@ std::array<FloatJudgement, 3> projection_row(SolveReport& rep, const ProjectionC
   row << "| " << c.name << " | " << interior << " (" << exact << ") / " << cert.undecided.size() << " | " << ms_exact << " | " << js.found << " / "
       << js.missed << " / " << js.spurious << ", " << js.max_error << " | " << js.ms << " | " << j16.found << " / " << j16.missed << " / " << j16.spurious
       << ", " << j16.max_error << ", " << j16.max_residual << " | " << j16.ms << " | " << j64.missed << " / " << j64.spurious << " | " << j64.ms << " |\n";
-  if (table) rep.md << row.str();
+  if (table) rep.rows << row.str();
   rep.csv << "\"" << c.name << "\"," << interior << "," << exact << "," << cert.undecided.size() << "," << ms_exact << "," << js.found
           << "," << js.missed << "," << js.spurious << "," << js.max_error << "," << js.ms << "," << j16.found << "," << j16.missed << ","
           << j16.spurious << "," << j16.max_error << "," << j16.max_residual << "," << j16.ms << "," << j64.missed << "," << j64.spurious
@@ -288,7 +290,7 @@ std::array<FloatJudgement, 3> projection_row(SolveReport& rep, const ProjectionC
 
 // The separation family: the feet 2^-k apart, k = 2 .. 40.
 void separation_part(SolveReport& rep) {
-  PlotSeries sm{"double subdivision", {}, kPalette[0]}, s16{"Newton 16 x 16", {}, kPalette[1]}, s64{"Newton 64 x 64", {}, kPalette[2]};
+  PlotSeries sm{"double subdivision", {}, svg::palette(0)}, s16{"Newton 16 x 16", {}, svg::palette(1)}, s64{"Newton 64 x 64", {}, svg::palette(2)};
   std::size_t certified_all = 0, family = 0;
   for (int k = 2; k <= 40; k += 2) {
     const auto c = separated(k);
@@ -303,15 +305,7 @@ void separation_part(SolveReport& rep) {
     s64.points.push_back({double(k), double(j[2].missed)});
   }
   rep.ok = rep.ok && certified_all == family;
-  rep.md << "\n**Roots 2^-k apart** (the parabolic cylinder z = x^2 and a point whose feet are x = 1/4, 1/4 + 2^-k and -(1/2 + 2^-k), all "
-          "rational): the certified solver finds all three exactly and certified simple for "
-       << certified_all << " of " << family << " values of k = 2, 4, ..., 40. How many the float solvers miss:\n\n"
-       << "![separation](solve_separation.svg)\n\n"
-          "Newton from a grid loses one of the two close feet once they are closer than about 2^-28 (the square root of double's "
-          "precision: near a double root Newton's result is that inaccurate, so starts scatter between the two and resolve neither). "
-          "The double subdivision misses roots at every separation: where a root lies on one of its split lines (a dyadic number "
-          "such as -9/16 for k = 4) the boxes beside it stay open in double, where the exact solver recognises the rational root and "
-          "certifies it (the undecided boxes of double are not counted as found).\n\n";
+  rep.md << ReportTemplate("solve.separation").set("certified", certified_all).set("cases", family).render();
   write_file_atomically(rep.ctx.options.out_dir + "/solve_separation.svg",
                         svg_line_plot({"Stationary points 2^-k apart: missed by the float solvers", "k (the feet are 2^-k apart)", "missed (of 3)", false, false,
                                        "the certified solver finds all three exactly for every k"},
@@ -336,13 +330,17 @@ void contact_part(SolveReport& rep) {
   const double ms_double = ms_since(t0);
   const R d = exact_from_double(dbl.distance2_hi, "d2");
   const R err = d < cert.distance2_lo ? R(cert.distance2_lo - d) : cert.distance2_hi < d ? R(d - cert.distance2_hi) : R(0);
-  md << "**Contact (Eq. 4)**: the exact sphere patch and its copy reflected through (3/4, 3/4, z): the minimum distance is 3/sqrt 2 - 2 "
-        "(irrational). Certified: d^2 in ["
-     << std::setprecision(17) << to_double(cert.distance2_lo) << ", " << to_double(cert.distance2_hi) << "] (width "
-     << std::setprecision(3) << to_double(R(cert.distance2_hi - cert.distance2_lo)) << "), closest pair " << (cert.closest_certified ? "certified" : "NOT certified")
-     << ", " << cert.pairs_solved << " of " << cert.strata_pairs << " pairs of strata solved (the rest skipped by their bounding boxes), "
-     << std::setprecision(3) << ms_exact << " ms. The same in double: " << ms_double << " ms, its d^2 outside the certified enclosure by "
-     << to_double(err) << " (exactly measured).\n\n";
+  md << ReportTemplate("solve.contact")
+            .set("d2_lo", fmt(to_double(cert.distance2_lo), 17))
+            .set("d2_hi", fmt(to_double(cert.distance2_hi), 17))
+            .set("width", fmt(to_double(R(cert.distance2_hi - cert.distance2_lo))))
+            .when("closest_certified", cert.closest_certified)
+            .set("pairs_solved", cert.pairs_solved)
+            .set("strata_pairs", cert.strata_pairs)
+            .set("ms_exact", fmt(ms_exact))
+            .set("ms_double", fmt(ms_double))
+            .set("d2_error", fmt(to_double(err)))
+            .render();
   rep.ok = rep.ok && cert.closest_certified;
   rep.csv << "\"contact: spheres\",,,," << ms_exact << ",,,," << to_double(err) << "," << ms_double << ",,,,,,,,,\n";
 }
@@ -359,13 +357,6 @@ void curve_projection_part(SolveReport& rep) {
   write_file_atomically(rep.ctx.options.out_dir + "/solve_figure12.svg",
                         curve_projection_svg(C, S, r, "Figure 12's situation: a circle (radius 13/5, z = 1/2) projected onto z = (x^2 - y^2)/8"));
   write_file_atomically(rep.ctx.options.out_dir + "/solve_figure12.obj", curve_projection_obj(C, S, r));
-  md << "**Curve projection (Eq. 3, Figure 12's situation)**: the exact circle of radius 13/5 at height 1/2 projected onto the saddle "
-        "z = (x^2 - y^2)/8 over [-2, 2]^2 gives "
-     << r.segments << " disjoint segments and " << r.loops << " loops (the paper's figure: four segments), "
-     << r.special.size() << " certified end points, the branch counts between them " << (r.certified_counts ? "certified" : "NOT certified")
-     << ", the traced joins " << (r.consistent ? "consistent with them" : "NOT consistent") << "; the " << r.traced_points
-     << " traced points are within |cos| <= " << std::setprecision(2) << r.max_cosine << " of orthogonal (measured exactly); " << std::setprecision(3) << ms
-     << " ms.\n\n![figure 12](solve_figure12.svg)\n\n";
   ok = ok && r.segments == 4 && r.certified_counts && r.consistent;
   // The same circle around the teapot's body (real data: 48 pairs of pieces, seams, knot lines),
   // once turned by the rational angle (3/5, 4/5), once starting on the body's seam (angle 0).
@@ -377,47 +368,47 @@ void curve_projection_part(SolveReport& rep) {
     turned.points[3 * i] = R(3, 5) * x - R(4, 5) * y;
     turned.points[3 * i + 1] = R(4, 5) * x + R(3, 5) * y;
   }
+  std::string circles;
   for (const BSpline<R>* c : {static_cast<const BSpline<R>*>(&turned), &C}) {
     t0 = std::chrono::steady_clock::now();
     const auto rb = project_curve(*c, body);
-    md << "- the same circle around the teapot's body" << (c == &C ? ", not turned (its start on the body's seam)" : ", turned by the angle (3/5, 4/5)") << ": "
-       << rb.segments << " segments and " << rb.loops << " loops (branches of nearest and farthest points, cut at the seam and at the curve's ends), "
-       << rb.special.size() << " certified special points, " << rb.undecided.size() << " undecided boxes, counts "
-       << (rb.certified_counts ? "certified" : "NOT certified") << ", joins " << (rb.consistent ? "consistent" : "NOT consistent") << ", "
-       << std::setprecision(3) << ms_since(t0) << " ms"
-       << (c == &C ? " (the circle's knots lie at quarter turns, where the body's seam and knot lines are: every end point lies on an "
-                     "edge of its box with an irrational coordinate, and such points stay undecided, see docs/solve.md)"
-                   : "")
-       << ";\n";
+    circles += ReportTemplate("solve.teapot-circle")
+                   .when("on_seam", c == &C)
+                   .set("segments", rb.segments)
+                   .set("loops", rb.loops)
+                   .set("special_points", rb.special.size())
+                   .set("undecided", rb.undecided.size())
+                   .when("counts_certified", rb.certified_counts)
+                   .when("consistent", rb.consistent)
+                   .set("ms", fmt(ms_since(t0)))
+                   .render();
     if (c == &turned) ok = ok && rb.certified_counts && rb.consistent;
   }
-  md << "\n";
+  md << ReportTemplate("solve.figure12")
+            .set("segments", r.segments)
+            .set("loops", r.loops)
+            .set("end_points", r.special.size())
+            .when("counts_certified", r.certified_counts)
+            .when("consistent", r.consistent)
+            .set("traced_points", r.traced_points)
+            .set("max_cosine", fmt(r.max_cosine, 2))
+            .set("ms", fmt(ms))
+            .set("teapot_circles", circles)
+            .render();
 }
 
 }  // namespace
 
 void solve_section(ReportContext& ctx) {
   SolveReport rep(ctx);
-  rep.md << "## Certified solving: projection and contact (papers/002 Section 5.2-5.3, issue 19)\n\n"
-          "The paper solves its projection (Eq. 3) and contact (Eq. 4) systems with IRIT's floating-point multivariate solver. Here a "
-          "subdivision solver in exact rational arithmetic (`solve/solver.hpp`) certifies every answer: Bernstein coefficients of one "
-          "sign discard a box, Krawczyk's test in exact interval arithmetic proves one simple root in a box, rational roots are "
-          "recognised exactly, and what stays open at the depth limit (here 64 halvings) is reported undecided. Beside it two float solvers: the same "
-          "subdivision in double (no certificate), and what a CAD kernel does: Newton from a 16 x 16 (and 64 x 64) grid of starts. "
-          "Each float stationary point is matched to a certified one (within 10^-6 of the domain and within half the distance to the "
-          "nearest other root, exactly measured); missed, spurious (including points that resolve neither of two close roots) "
-          "and the error of the matched ones (the exact max-norm distance from the certified box, and the exact residual of Eq. 3) "
-          "are counted. Interior critical points only (the strata's edges and corners are not what the float solvers look for).\n\n"
-          "| case | certified: interior roots (exact) / undecided | ms | double subdivision: found / missed / spurious, max error | ms | "
-          "Newton 16x16: found / missed / spurious, max error, max residual | ms | Newton 64x64: missed / spurious | ms |\n|---|---|---|---|---|---|---|---|---|\n";
   rep.csv << "case,certified_interior,certified_exact,undecided,ms_exact,sub_found,sub_missed,sub_spurious,sub_max_error,ms_sub,"
            "grid16_found,grid16_missed,grid16_spurious,grid16_max_error,grid16_max_residual,ms_grid16,grid64_missed,grid64_spurious,ms_grid64\n";
   for (const auto& c : projection_suite()) projection_row(rep, c, true);
+  rep.md << ReportTemplate("solve").set("rows", rep.rows.str()).render();
   separation_part(rep);
   contact_part(rep);
   curve_projection_part(rep);
-  rep.md << "Data: `solve.csv`; the projection as OBJ polylines for ParaView: `solve_figure12.obj`. `splinex project --point`, `splinex "
-          "project --curve` and `splinex contact` run single cases.\n\n";
+  rep.md << ReportTemplate("solve.data").render();
   write_file_atomically(ctx.options.out_dir + "/solve.csv", rep.csv.str());
   ctx.markdown["solve"] = rep.md.str();
   ctx.ok = ctx.ok && rep.ok;

@@ -8,31 +8,14 @@
 #include <sstream>
 
 #include "base/errors.hpp"
+#include "experiments/svg.hpp"
 
 namespace splinex {
 
-std::string svg_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else o += c;
-  }
-  return o;
-}
-
-namespace {
-std::string esc(const std::string& s) { return svg_escape(s); }
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", v);
-  return b;
-}
-}  // namespace
-
 std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& series) {
-  const double W = 720, H = 460, L = 80, R = 200, T = 40, B = 70;
+  // The plot's drawing: axes box [L, W - R] x [T, H - B], the legend in the right column; the title
+  // and the note are the canvas's bands (wrapped to its width).
+  const double W = 720, H = 400, L = 80, R = 200, T = 10, B = 50;
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   auto tx = [&](double x) { return spec.logx ? std::log10(x) : x; };
   for (const auto& s : series)
@@ -56,57 +39,65 @@ std::string svg_line_plot(const PlotSpec& spec, const std::vector<PlotSeries>& s
     const double v = spec.logy ? (y > 0 ? std::log10(y) : floor_v) : y;
     return T + (1 - (v - ymin) / (ymax - ymin)) * (H - T - B);
   };
-  std::ostringstream o;
-  o << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H << "' font-family='sans-serif' font-size='12'>\n";
-  o << "<rect width='100%' height='100%' fill='white'/>\n";
-  o << "<text x='" << W / 2 - R / 2 << "' y='22' text-anchor='middle' font-size='15'>" << esc(spec.title) << "</text>\n";
+  svg::Canvas c(W, H);
+  c.title(spec.title, 15);
+  if (!spec.note.empty()) c.caption(spec.note);
   // Grid and ticks.
+  const std::string grid = svg::attr("stroke", "#ddd");
   if (spec.logy) {
     // At most about 12 labelled decades; grid lines at every labelled one.
     const int step = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / 12)));
     for (int e = static_cast<int>(ymin); e <= static_cast<int>(ymax); e += step) {
       const double y = T + (1 - (e - ymin) / (ymax - ymin)) * (H - T - B);
-      o << "<line x1='" << L << "' x2='" << W - R << "' y1='" << num(y) << "' y2='" << num(y) << "' stroke='#ddd'/>";
-      o << "<text x='" << L - 6 << "' y='" << num(y + 4) << "' text-anchor='end'>" << (e == static_cast<int>(ymin) ? "0 / " : "")
-        << "1e" << e << "</text>\n";
+      c.line(L, y, W - R, y, grid);
+      c.text(L - 6, y + 4, (e == static_cast<int>(ymin) ? "0 / " : "") + std::string("1e") + std::to_string(e), 12, svg::Anchor::end);
     }
   } else {
+    // Enough decimals that neighbouring ticks read differently (at least one).
+    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10((ymax - ymin) / 5))), 1, 6);
     for (int i = 0; i <= 5; ++i) {
       const double v = ymin + (ymax - ymin) * i / 5, y = T + (1 - i / 5.0) * (H - T - B);
-      o << "<line x1='" << L << "' x2='" << W - R << "' y1='" << num(y) << "' y2='" << num(y) << "' stroke='#ddd'/>";
-      o << "<text x='" << L - 6 << "' y='" << num(y + 4) << "' text-anchor='end'>" << num(v) << "</text>\n";
+      c.line(L, y, W - R, y, grid);
+      char b[32];
+      std::snprintf(b, sizeof b, "%.*f", decimals, v);
+      c.text(L - 6, y + 4, b, 12, svg::Anchor::end);
     }
   }
   std::vector<double> xt;
   if (spec.logx) for (int e = static_cast<int>(std::floor(xmin)); e <= static_cast<int>(std::ceil(xmax)); ++e) xt.push_back(std::pow(10.0, e));
   else for (int i = 0; i <= 6; ++i) xt.push_back(xmin + (xmax - xmin) * i / 6);
+  double last_right = -1e300;  // a tick label that would touch the previous one is left out (its grid line stays)
   for (double x : xt) {
     if (tx(x) < xmin - 1e-9 || tx(x) > xmax + 1e-9) continue;
-    o << "<line x1='" << num(X(x)) << "' x2='" << num(X(x)) << "' y1='" << T << "' y2='" << H - B << "' stroke='#eee'/>";
+    c.line(X(x), T, X(x), H - B, svg::attr("stroke", "#eee"));
+    // Decades as 1eK, as on the y axis (%g would write 1e-05 beside 0.0001).
     char b[32];
-    std::snprintf(b, sizeof b, spec.logx ? "%g" : "%.3g", x);
-    o << "<text x='" << num(X(x)) << "' y='" << H - B + 16 << "' text-anchor='middle'>" << b << "</text>\n";
+    if (spec.logx) std::snprintf(b, sizeof b, "1e%d", static_cast<int>(std::lround(std::log10(x))));
+    else std::snprintf(b, sizeof b, "%.3g", x);
+    const double half = svg::text_width(b, 12) / 2;
+    if (X(x) - half < last_right + 4) continue;
+    c.text(X(x), H - B + 16, b, 12, svg::Anchor::middle);
+    last_right = X(x) + half;
   }
-  o << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
-    << "' fill='none' stroke='black'/>\n";
-  o << "<text x='" << (L + W - R) / 2 << "' y='" << H - B + 38 << "' text-anchor='middle'>" << esc(spec.xlabel) << "</text>\n";
-  o << "<text transform='translate(18," << (T + H - B) / 2 << ") rotate(-90)' text-anchor='middle'>" << esc(spec.ylabel) << "</text>\n";
-  if (!spec.note.empty()) o << "<text x='" << L << "' y='" << H - 8 << "' font-size='11' fill='#555'>" << esc(spec.note) << "</text>\n";
-  int li = 0;
+  c.rect(L, T, W - L - R, H - T - B, svg::attr("fill", "none") + svg::attr("stroke", "black"));
+  c.text((L + W - R) / 2, H - B + 38, spec.xlabel, 12, svg::Anchor::middle);
+  // The y label runs along the axis: smaller type when it is longer than the axis.
+  const double ylabel_px = std::min(12.0, 12.0 * (H - T - B) / std::max(1.0, svg::text_width(spec.ylabel, 12)));
+  c.text(0, 0, spec.ylabel, std::floor(ylabel_px * 10) / 10, svg::Anchor::middle,
+         svg::attr("transform", "translate(18," + svg::num((T + H - B) / 2) + ") rotate(-90)"));
+  double ly = T + 14;  // the legend's next baseline; a long label wraps within the legend column
   for (const auto& s : series) {
     std::vector<std::pair<double, double>> pts = s.points;
     std::sort(pts.begin(), pts.end());
-    o << "<polyline fill='none' stroke='" << s.color << "' stroke-width='2'" << (s.dashed ? " stroke-dasharray='6,4'" : "") << " points='";
-    for (auto [x, y] : pts) o << num(X(x)) << "," << num(Y(y)) << " ";
-    o << "'/>\n";
-    for (auto [x, y] : pts) o << "<circle cx='" << num(X(x)) << "' cy='" << num(Y(y)) << "' r='3' fill='" << s.color << "'/>";
-    const double ly = T + 14 + 18 * li++;
-    o << "\n<line x1='" << W - R + 12 << "' x2='" << W - R + 36 << "' y1='" << ly - 4 << "' y2='" << ly - 4 << "' stroke='" << s.color
-      << "' stroke-width='2'" << (s.dashed ? " stroke-dasharray='6,4'" : "") << "/><text x='" << W - R + 42 << "' y='" << ly << "'>"
-      << esc(s.label) << "</text>\n";
+    const std::string stroke = svg::attr("stroke", s.color) + svg::attr("stroke-width", 2) + (s.dashed ? svg::attr("stroke-dasharray", "6,4") : "");
+    svg::Points line;
+    for (auto [x, y] : pts) line.emplace_back(X(x), Y(y));
+    c.polyline(line, stroke);
+    for (auto [x, y] : line) c.circle(x, y, 3, svg::attr("fill", s.color));
+    c.line(W - R + 12, ly - 4, W - R + 36, ly - 4, stroke);
+    ly += 15.0 * static_cast<double>(c.text_block(W - R + 42, ly, s.label, R - 42 - 6)) + 3;
   }
-  o << "</svg>\n";
-  return o.str();
+  return c.str();
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {

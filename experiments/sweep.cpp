@@ -19,6 +19,7 @@
 #include "base/errors.hpp"
 #include "base/parallel.hpp"
 #include "experiments/report.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/untrim_tolerance.hpp"
 #include "io/output_path.hpp"
@@ -155,17 +156,16 @@ const ProofEntry& proof_entry(const std::string& name) {
 bool merge_proofs(const std::vector<Json>& rows, std::size_t cases, const std::string& out_dir) {
   bool ok = true;
   Json all = Json::array();
-  std::ostringstream md;
-  md << "# The named proofs on " << cases << " random exact cases each\n\n| proof | verdict | expected | cases | cells | points |\n|---|---|---|---|---|---|\n";
+  std::ostringstream table;
   for (const auto& r : rows) {
     all.push_back(r);
     ok = ok && r.at("as_expected").get<bool>();
-    md << "| " << r.at("name").get<std::string>() << " | " << r.at("verdict").get<std::string>() << (r.at("as_expected").get<bool>() ? "" : " (NOT AS EXPECTED)")
-       << " | " << r.at("expected").get<std::string>() << " | " << r.at("cases").get<std::size_t>() << " | " << r.at("cells").get<std::size_t>() << " | "
-       << r.at("points").get<std::size_t>() << " |\n";
+    table << "| " << r.at("name").get<std::string>() << " | " << r.at("verdict").get<std::string>() << (r.at("as_expected").get<bool>() ? "" : " (NOT AS EXPECTED)")
+          << " | " << r.at("expected").get<std::string>() << " | " << r.at("cases").get<std::size_t>() << " | " << r.at("cells").get<std::size_t>() << " | "
+          << r.at("points").get<std::size_t>() << " |\n";
   }
   write_file_atomically(out_dir + "/proofs.json", all.dump(2) + "\n");
-  write_file_atomically(out_dir + "/proofs.md", md.str());
+  write_file_atomically(out_dir + "/proofs.md", ReportTemplate("sweep.proofs").set("cases", cases).set("rows", table.str()).render());
   return ok;
 }
 

@@ -10,6 +10,7 @@
 
 #include "fixtures/teapot.hpp"
 #include "experiments/render.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
 #include "untrim/trimming_polyline.hpp"
@@ -39,9 +40,6 @@ BSpline<Rational> star_in_tile(int i, int j, int n, const Rational& w, const Rat
 }
 
 namespace {
-
-const char* kCellColors[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948", "#b07aa1", "#ff9da7",
-                             "#9c755f", "#bab0ac", "#1f77b4", "#aec7e8"};
 
 std::string f3(double v) {
   std::ostringstream o;
@@ -83,7 +81,8 @@ struct SurfaceRun {
   std::set<std::pair<int, int>> orders;
   Rational max_abs{0}, max_ref{0};
   double t_exact = 0, t_double = 0;
-  std::ostringstream svg, obj;
+  svg::Canvas fig;  // the parameter domain's figure
+  std::ostringstream obj;
   std::size_t vbase = 1;
   std::vector<PolyStat> poly_stats = std::vector<PolyStat>(kPolylineEps.size());
 };
@@ -97,7 +96,8 @@ SurfaceRun::SurfaceRun(const TeapotSurface& surf, const std::array<int, 3>& rgb)
       base_rgb(rgb),
       sx(720.0 / to_double(W)),
       sy(720.0 / to_double(W) * 1.0),
-      Hpx(to_double(H) * sy) {}
+      Hpx(to_double(H) * sy),
+      fig(760, Hpx + 20) {}
 
 // Float trimming by polylines: the double pieces classify samples by polyline sides (no
 // sign conditions); the chosen piece's exact patch is compared with T(S(r)) exactly, so
@@ -164,10 +164,8 @@ void draw_star(SurfaceRun& s, const BSpline<Rational>& S, const TrimmedCompositi
       const std::vector<Rational> r{Rational(2 * a + 1, 2 * F), Rational(2 * b + 1, 2 * F)};
       const auto v = evaluate(S, r);
       const auto cell = C.patches[C.locate(r)].outer_cell;
-      s.svg << "<circle cx='" << f3(to_double(v[0]) * s.sx) << "' cy='" << f3(s.Hpx - to_double(v[1]) * s.sy) << "' r='1.3' fill='"
-            << kCellColors[cell % 12] << "'/>";
+      s.fig.circle(to_double(v[0]) * s.sx, s.Hpx - to_double(v[1]) * s.sy, 1.3, svg::attr("fill", svg::palette(cell)));
     }
-  s.svg << "\n";
 }
 
 // Mesh: a 17 x 17 grid per star through the evaluation structure (vertices are exact
@@ -258,19 +256,16 @@ void run_star(PatternRun& run, SurfaceRun& s, int i, int j) {
 void run_surface(PatternRun& run, const TeapotSurface& surf, const std::array<int, 3>& base_rgb) {
   const StarPatternOptions& opt = run.opt;
   SurfaceRun s(surf, base_rgb);
-  s.svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << 760 << "' height='" << s.Hpx + 60
-        << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
-        << "<text x='20' y='18'>" << surf.name << ": parameter domain, stars coloured by the polynomial piece of the surface "
-        << "(trimmed patches); grey lines: knot lines</text>\n<g transform='translate(20,30)'>\n";
-  for (int u = 0; u <= static_cast<int>(to_double(s.W)); ++u)
-    s.svg << "<line x1='" << u * s.sx << "' y1='0' x2='" << u * s.sx << "' y2='" << s.Hpx << "' stroke='#999'/>\n";
+  s.fig.title(surf.name + ": parameter domain, stars coloured by the polynomial piece of the surface (trimmed patches); grey lines: knot lines",
+              12);
+  s.fig.open_group(svg::attr("transform", "translate(20,10)"));
+  for (int u = 0; u <= static_cast<int>(to_double(s.W)); ++u) s.fig.line(u * s.sx, 0, u * s.sx, s.Hpx, svg::attr("stroke", "#999"));
   for (int v = 0; v <= static_cast<int>(to_double(s.H)); ++v)
-    s.svg << "<line x1='0' y1='" << s.Hpx - v * s.sy << "' x2='" << to_double(s.W) * s.sx << "' y2='" << s.Hpx - v * s.sy
-          << "' stroke='#999'/>\n";
+    s.fig.line(0, s.Hpx - v * s.sy, to_double(s.W) * s.sx, s.Hpx - v * s.sy, svg::attr("stroke", "#999"));
   for (int j = 0; j < opt.tiles; ++j)
     for (int i = 0; i < opt.tiles; ++i) run_star(run, s, i, j);
-  s.svg << "</g>\n</svg>\n";
-  write_file_atomically(opt.out_dir + "/stars_" + surf.name + ".svg", s.svg.str());
+  s.fig.close_group();
+  write_file_atomically(opt.out_dir + "/stars_" + surf.name + ".svg", s.fig.str());
   if (opt.write_meshes) write_file_atomically(opt.out_dir + "/stars_" + surf.name + ".obj", s.obj.str());
   std::string ord;
   for (auto [a, b] : s.orders) ord += "(" + std::to_string(a) + ", " + std::to_string(b) + ") ";
@@ -294,29 +289,10 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
   const auto patches = read_bpt(data_path("teapot.bpt"));
   PatternRun run(opt, progress, ok);
   std::ostringstream &md = run.md, &csv = run.csv, &poly_md = run.poly_md;
-  poly_md << "\n### Float trimming by polylines on the star pattern\n\nThe double pieces classify 25 x 25 samples per star "
-             "by the sides of trimming polylines within eps (`polyline_side`), instead of sign conditions. A sample is "
-             "misassigned when that piece's cell differs from the exact one; its error is the exact patch of the chosen "
-             "piece against T(S(r)), computed exactly (tolerance only, no rounding). Ambiguous: no or two pieces claim "
-             "the sample. The teapot's interior knots have multiplicity 3 = p (C^0), so the error is of the order of "
-             "the misplacement. Samples lying exactly on a knot line belong to the upper piece by the half-open rule while a "
-             "polyline through them may put them on either side; there both pieces agree exactly (T is C^0), so they "
-             "count as misassigned with error 0 (the constant counts on handle, spout and lid: star centres on u = 1)."
-             "\n\n| surface | eps | samples | misassigned | ambiguous | max error (exact) |\n"
-             "|---|---|---|---|---|---|\n";
   csv << "surface,star_i,star_j,patches,trimmed,untrimmed,unproven,isoparametric_splits,orders_u,orders_v,"
          "max_abs_error,max_rel_error,misassigned_samples,samples,seconds_exact,seconds_double\n";
-  md << "\n## Teapot star pattern (papers/000, Figure 4)\n\n"
-     << "A bi-quadratic Bezier star (corners of the unit square as tips, edge middles pulled a quarter inwards, "
-        "centre (1/2, 1/2)) is replicated " << opt.tiles << " x " << opt.tiles << " over each surface's parameter "
-        "domain (1/20 tile margin) and composed by Algorithm 1 across the surfaces' knot lines, exactly and in double. "
-        "Errors compare the double result with the exact one at 9 x 9 rational samples per star (exact R(r) vs the "
-        "double evaluation structure at the rounded parameter, measured exactly); *misassigned* counts samples that "
-        "double puts into another trimmed piece than exact.\n\n"
-     << "| surface | stars | trimmed patches | untrimmed | unproven | orders | max abs error (double) | max rel error | "
-        "misassigned samples | exact s | double s |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::size_t surface_index = 0;
-  for (const auto& surf : teapot_surfaces(patches)) run_surface(run, surf, palette_rgb(surface_index++));
+  for (const auto& surf : teapot_surfaces(patches)) run_surface(run, surf, svg::palette_rgb(surface_index++));
   write_file_atomically(opt.out_dir + "/stars.csv", csv.str());
   if (opt.write_meshes) {
     RenderView view;
@@ -328,12 +304,7 @@ std::string run_teapot_stars(const StarPatternOptions& opt, const std::function<
     view.note = "vertices: exact images of a 5 x 5 grid per star rounded to double; flat shading, painter's order";
     write_file_atomically(opt.out_dir + "/stars_teapot_3d.svg", render_svg(run.teapot_triangles, {}, view));
   }
-  md << poly_md.str();
-  md << "\nThe paper reports orders (13, 13) for these patches. Figures: `stars_body.svg`, `stars_handle.svg`, "
-        "`stars_spout.svg`, `stars_lid.svg`; meshes (OBJ, one group per star): `stars_*.obj`; per-star data: "
-        "`stars.csv`; the stars on the 3D teapot: `stars_teapot_3d.svg`.\n\n![body](stars_body.svg)\n\n"
-        "![stars on the teapot](stars_teapot_3d.svg)\n";
-  return md.str();
+  return ReportTemplate("teapot-stars").set("grid", opt.tiles).set("rows", md.str()).set("polyline_rows", poly_md.str()).render();
 }
 
 void teapot_stars_section(ReportContext& ctx) {

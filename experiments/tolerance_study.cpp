@@ -10,6 +10,7 @@
 #include "exact/rational.hpp"
 #include "exact/root_isolation.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/svg_plot.hpp"
 #include "untrim/trimming_polyline.hpp"
 #include "compose/trimmed_compose.hpp"
@@ -115,17 +116,6 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
   std::ostringstream csv, md;
   csv << "multiplicity,eps,grid,misassigned_volume_lower,misassigned_volume_upper,undecided_cells,max_abs_error\n"
       << std::setprecision(17);
-  md << "\n### Volume case: a trivariate S crossing a knot plane of a trivariate T\n\n"
-     << "S: degrees (1, 2, 2), s_u = 1/5 + 3/5 r + 1/5 t(1-t) + 1/5 w(1-w), s_v = 1/10 + 4/5 t, s_w = 1/10 + 4/5 w; "
-        "T: degrees (3, 1, 1) into R^2 with the knot u0 = 1/2 of multiplicity m. Exact trimming surface "
-        "r*(t, w) = 1/2 - t(1-t)/3 - w(1-w)/3. Float trimming surface: a height field h(t, w) on a G x G grid "
-        "(crossings bisected in double to eps at the nodes, bilinear between, G chosen so the interpolation error "
-        "is at most eps/2). Misassigned volume = integral of |h - r*| over [0,1]^2, an exact quadratic spline "
-        "integrated by `integrate_abs` (certified-sign cells exact, mixed cells halved until the enclosure is within 1% "
-        "or 8 levels deep). The error "
-        "|R_eps - T(S)| is exact at 7 rational points between r* and h on each of 16 lines (t, w) fixed.\n\n"
-     << "| m | continuity | fitted slope of max error | predicted p-m+1 | misassigned volume at eps=1e-4 | slope of volume "
-        "| error at eps=1e-4 |\n|---|---|---|---|---|---|---|\n";
   std::vector<PlotSeries> series;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study (volume): knot multiplicity " + std::to_string(m));
@@ -139,7 +129,7 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
     const auto C = compose_trimmed(T, S);
     PlotSeries ps;
     ps.label = "trivariate, m = " + std::to_string(m);
-    ps.color = kPalette[m - 1];
+    ps.color = svg::palette(m - 1);
     ps.dashed = true;
     std::string vol4;
     double err4 = 0;
@@ -176,9 +166,7 @@ std::string volume_case(const std::string& out_dir, const std::function<void(con
                                        "max |R_eps - T(S)| (exact)", true, true,
                                        "T degrees (3,1,1), knot plane of multiplicity m; height field within eps"},
                                       series));
-  md << "\nThe volume does not depend on m (same trimming surface); it shrinks like eps (slope 1). Data: "
-        "`tolerance_volume.csv`; figure: `tolerance_volume.svg`.\n\n![tolerance, volume](tolerance_volume.svg)\n";
-  return md.str();
+  return ReportTemplate("tolerance.volume").set("rows", md.str()).render();
 }
 
 // The tolerances of the curve and the surface case (the surface case from 1e-9 up).
@@ -198,14 +186,6 @@ std::string curve_case(const std::string& out_dir, const std::function<void(cons
   const IsolatedRoot rstar = roots[0];
   std::ostringstream csv, md;
   csv << "multiplicity,continuity,eps,trimming_point,misassigned_length,max_abs_error\n" << std::setprecision(17);
-  md << "\n## What a trimming tolerance costs (exact measurement)\n\n"
-     << "T: a cubic B-spline function with values in R^2 and the knot u0 = 1/2 of multiplicity m (C^(3-m) there); S: the "
-        "quadratic 1/5, 3/10, 4/5 on [0, 1], crossing u0 at the irrational r* (isolated by CGAL to 2^-200). A float "
-        "trimming step finds the crossing by bisection in double until the bracket is shorter than eps and takes the "
-        "far end, so the boundary moves by up to eps; parameters between r* and that point are evaluated with the "
-        "other polynomial piece. Measured exactly against the exact pieces: the misassigned length and the largest "
-        "|R_eps(r) - T(S(r))| over 17 rational samples in the misassigned interval. Prediction: error ~ eps^(p-m+1).\n\n"
-     << "| m | continuity | fitted slope | predicted p-m+1 | error at eps=1e-6 |\n|---|---|---|---|---|\n";
   std::vector<PlotSeries> series;
   for (int m = 1; m <= p + 1; ++m) {
     progress("tolerance study: knot multiplicity " + std::to_string(m));
@@ -218,7 +198,7 @@ std::string curve_case(const std::string& out_dir, const std::function<void(cons
     const std::size_t left = C.locate({Rational(0)});
     PlotSeries ps;
     ps.label = "m = " + std::to_string(m) + " (C^" + std::to_string(p - m) + ")";
-    ps.color = kPalette[m - 1];
+    ps.color = svg::palette(m - 1);
     double at6 = 0;
     for (double eps : kEpsList) {
       // Float trimming: bisection in double on s(r) - u0 until the bracket is shorter than eps.
@@ -254,9 +234,7 @@ std::string curve_case(const std::string& out_dir, const std::function<void(cons
                                        "max |R_eps - T(S)| (exact)", true, true,
                                        "cubic T, knot of multiplicity m crossed by a quadratic S; slopes p-m+1"},
                                       series));
-  md << "\nm = 4 = p+1 makes T discontinuous at u0, so any misassignment costs O(1): slope 0. Data: `tolerance.csv`; "
-        "figure: `tolerance.svg`.\n\n![tolerance](tolerance.svg)\n";
-  return md.str();
+  return ReportTemplate("tolerance.curve").set("rows", md.str()).render();
 }
 
 // The surface case's polylines within eps of s_u = 1/2 and their misassigned areas, by eps: they do
@@ -293,19 +271,6 @@ std::string surface_case(const std::string& out_dir, const std::function<void(co
           "max_abs_error\n"
        << std::setprecision(17);
   std::ostringstream md2;
-  md2 << "\n### Surface case: trimming polylines within eps\n\n"
-      << "S: degrees (1, 2), s_u = 1/5 + 3/5 r + 1/5 t(1-t), s_v = 1/10 + 4/5 t; T: bicubic surface in R^2 with the "
-         "knot u0 = 1/2 of multiplicity m. The float trimming curve is a polyline within eps of s_u = 1/2 "
-         "(`untrim/trimming_polyline.hpp`: marching squares on 8 x 8 cells, crossings bisected to eps, chords refined "
-         "until their midpoints are within eps/2 of the curve). Along " << L << " lines t = t_i the exact crossing r*(t_i) "
-         "is rational, so the misassigned length |r_poly - r*| and the error |R_eps - T(S)| at 15 points between them "
-         "are exact. The misassigned area is the integral of |h(t) - r*(t)|, h the polyline as a graph over t "
-         "(piecewise linear between the exact values of its double vertices) and r* the exact trimming curve: their "
-         "difference is one exact quadratic spline, integrated by `integrate_abs` (exact on cells of one certified "
-         "sign, an enclosure on the cells where the sign changes, split at the control polygon's zero until the "
-         "enclosure is within 1e-9 relative; both bounds are given).\n\n"
-      << "| m | continuity | fitted slope of max error | predicted p-m+1 | max misassigned length at eps=1e-6 | "
-         "misassigned area at eps=1e-6 | slope of area | error at eps=1e-6 |\n|---|---|---|---|---|---|---|---|\n";
   const auto polylines = surface_polylines(S2d, progress);
   std::vector<PlotSeries> series2;
   for (int m = 1; m <= p + 1; ++m) {
@@ -320,7 +285,7 @@ std::string surface_case(const std::string& out_dir, const std::function<void(co
     const auto C = compose_trimmed(T, S2);
     PlotSeries ps;
     ps.label = "surface, m = " + std::to_string(m);
-    ps.color = kPalette[m - 1];
+    ps.color = svg::palette(m - 1);
     ps.dashed = true;
     double len6 = 0, err6 = 0;
     std::string area6;
@@ -369,10 +334,7 @@ std::string surface_case(const std::string& out_dir, const std::function<void(co
                                        "max |R_eps - T(S)| (exact)", true, true,
                                        "bicubic T, knot of multiplicity m; polyline within eps of s_u = 1/2"},
                                       series2));
-  md2 << "\nThe polyline's deviation is below eps, not equal to it, so the constant differs from the curve case; the slopes "
-         "are what the continuity predicts. Data: `tolerance_surface.csv`; figure: `tolerance_surface.svg`.\n\n"
-         "![tolerance, surface](tolerance_surface.svg)\n";
-  return md2.str();
+  return ReportTemplate("tolerance.surface").set("lines", L).set("rows", md2.str()).render();
 }
 
 }  // namespace

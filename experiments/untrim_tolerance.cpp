@@ -15,6 +15,7 @@
 #include "compose/trimmed_compose.hpp"
 #include "exact/rational.hpp"
 #include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/svg_plot.hpp"
 #include "float/mpfr.hpp"
 #include "spline/kernel.hpp"
@@ -317,11 +318,11 @@ std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, 
     if (std::find(ariths.begin(), ariths.end(), r.arith) == ariths.end()) ariths.push_back(r.arith);
   std::vector<PlotSeries> series, cost;
   std::ostringstream table;
-  table << "| m | continuity | predicted slope |";
-  for (const auto& a : ariths) table << " slope " << a << " | smallest deviation (" << a << ") |";
-  table << " judged slope (highest precision) |\n|---|---|---|";
-  for (std::size_t i = 0; i < ariths.size(); ++i) table << "---|---|";
-  table << "---|\n";
+  std::string arith_columns, arith_rules;
+  for (const auto& a : ariths) {
+    arith_columns += ReportTemplate("untrim-tolerance.column").set("arith", a).render();
+    for (int k = 0; k < 2; ++k) arith_rules += "---|";
+  }
   Rational worst_gap(0), worst_overlap(0);
   for (const auto& r : rows) {
     worst_gap = std::max(worst_gap, Rational(abs(r.gap)));
@@ -335,7 +336,7 @@ std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, 
     for (std::size_t ai = 0; ai < ariths.size(); ++ai) {
       PlotSeries s;
       s.label = "m = " + std::to_string(m) + ", " + ariths[ai];
-      s.color = kPalette[m - 1];
+      s.color = svg::palette(m - 1);
       s.dashed = ai == 0;
       std::string last = "-";
       double last_eps = 1;
@@ -395,39 +396,34 @@ std::string untrim_tolerance_merge(const std::vector<nlohmann::json>& row_docs, 
       if (!first) first = &r;
       lastrow = &r;
     }
-  md << "\n## The tolerance of untrimming (Algorithm 2), measured exactly\n\n"
-     << "S: degrees (1, 2), s_u = 1/5 + 3/5 r + 1/5 t(1-t), s_v = 1/10 + 4/5 t, so the trimming curve s_u = 1/2 is a "
-        "parabola; T: degrees (3, 1) in R^2 with the knot u0 = 1/2 of multiplicity m. Algorithm 2 runs entirely in the "
-        "named arithmetic (polylines within eps, line-sweep tiles, Coons patches, composition into T_j^e); its output "
-        "is judged exactly: the *deviation* is max |R(x, l) - T(S(Q(x, l)))| with R's control points and the tile "
-        "vertices taken as the exact rationals they are, at every vertex and chord midpoint of the tiles' bottom and "
-        "top chains (every k-th beyond " << opt.max_boundary_samples / 2 << " per chain) and a 4 x 4 interior grid; "
-        "*gap* = area of the domain minus the exact area of the union of the tiles, *overlap* = sum of tile areas minus "
-        "that union (CGAL Boolean operations over exact rationals).\n\n"
-     << table.str()
-     << "\nThe slope at the highest precision is what the continuity predicts (p - m + 1, 0 for the discontinuous "
-        "T): points of the sliver between polyline and true curve are mapped by the neighbouring polynomial piece. "
-        "Double reaches its rounding floor where eps^(p-m+1) drops below ~1e-16 and then no longer shows the slope. "
-     << "Largest gap over all runs: " << g(to_double(worst_gap)) << "; largest overlap: " << g(to_double(worst_overlap))
-     << (worst_gap == 0 && worst_overlap == 0
-             ? " (exactly 0: the tiles of each piece partition its box, also when built in floating point, because "
-               "float tiles keep every slab sample and adjacent tiles therefore share identical computed vertices; a "
-               "version that dropped samples by a rounded collinearity test left a gap of 2.8e-23 at eps 1e-6, one "
-               "that dropped them where the same two segments continue a gap of 8e-21 and an overlap of 2.9e-20)"
-             : " (NOT 0: the float tiles do not partition the domain)")
-     << ".\n\n";
+  std::string cost_md;
   if (first && lastrow)
-    md << "Cost (m = 1, " << ariths.front() << "): eps " << g(first->eps) << ": " << first->tiles << " tiles of degree ("
-       << first->deg_x << ", " << first->deg_l << "), " << first->max_chain << " chain vertices at most, "
-       << first->control_points << " control points, " << g(first->cpu_seconds) << " s; eps " << g(lastrow->eps) << ": "
-       << lastrow->tiles << " tiles, " << lastrow->max_chain << " chain vertices, " << lastrow->control_points
-       << " control points, " << g(lastrow->cpu_seconds) << " s. Control points grow like eps^" << g(loglog_slope(cp_pts))
-       << " (a polyline within eps of a curved trimming curve needs ~eps^(-1/2) chords, each a Bezier piece of every "
-          "tile along it).\n\n";
-  md << "Times are the CPU time of the composition on the job's thread (they do not depend on other jobs running "
-        "beside it), not the exact measurement that follows it.\n\n"
-     << "Data: `untrim_tolerance.csv`; figures: `untrim_tolerance.svg`, `untrim_tolerance_cost.svg`.\n\n"
-     << "![untrimming tolerance](untrim_tolerance.svg)\n\n![untrimming cost](untrim_tolerance_cost.svg)\n";
+    cost_md = ReportTemplate("untrim-tolerance.cost")
+                  .set("arith", ariths.front())
+                  .set("eps_first", g(first->eps))
+                  .set("tiles_first", first->tiles)
+                  .set("degree_x", first->deg_x)
+                  .set("degree_l", first->deg_l)
+                  .set("chain_first", first->max_chain)
+                  .set("control_points_first", first->control_points)
+                  .set("seconds_first", g(first->cpu_seconds))
+                  .set("eps_last", g(lastrow->eps))
+                  .set("tiles_last", lastrow->tiles)
+                  .set("chain_last", lastrow->max_chain)
+                  .set("control_points_last", lastrow->control_points)
+                  .set("seconds_last", g(lastrow->cpu_seconds))
+                  .set("control_points_slope", g(loglog_slope(cp_pts)))
+                  .render();
+  md << ReportTemplate("untrim-tolerance")
+            .set("boundary_samples", opt.max_boundary_samples / 2)
+            .set("arith_columns", arith_columns)
+            .set("arith_rules", arith_rules)
+            .set("rows", table.str())
+            .set("gap", g(to_double(worst_gap)))
+            .set("overlap", g(to_double(worst_overlap)))
+            .when("partition", worst_gap == 0 && worst_overlap == 0)
+            .set("cost", cost_md)
+            .render();
   write_file_atomically(opt.out_dir + "/untrim_tolerance.md", "# Untrimming tolerance study\n" + md.str());
   return md.str();
 }

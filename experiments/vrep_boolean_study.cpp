@@ -11,6 +11,8 @@
 #include <map>
 #include <sstream>
 
+#include "experiments/common.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_figures.hpp"
@@ -156,29 +158,36 @@ void curves_sweep(std::ostringstream& md) {
       ++surf[!d.decided ? 1 : d.pieces == e.pieces ? 0 : 2];
     }
   }
-  md << "\n**V-curves in double** (`trimmed_curves` on 40 random cells: two balls and a half-space z >= h in the cube [0, 2]^3, "
-        "data in sixteenths, exact and on the region rounded to double): "
-     << pairs << " pairs whose surfaces may meet, " << undecided_exact << " undecided in exact arithmetic";
-  if (!reasons.empty()) {
-    md << " (";
-    for (auto it = reasons.begin(); it != reasons.end(); ++it) md << (it == reasons.begin() ? "" : "; ") << it->first << ": " << it->second;
-    md << ")";
-  }
-  md << ", the others " << arcs << " arcs and " << loops << " loops. Against them, double: " << total[0]
-     << " pairs agree, " << total[1] << " undecided, " << total[2] << " wrong (decided, other counts)"
-     << (total[2] == 0 ? ": here the rounded run fails safe, its graph checks catch what rounding breaks. " : ": silently wrong topology in double. ") << std::setprecision(3) << exact_s
-     << " s exact, " << double_s << " s double.\n";
-  md << "\n**Half-V-surfaces in double** (`trimmed_topology` on the same 40 cells, exact and rounded to double: the pieces of "
-        "the cell's part of each face of the domain and of each trimming surface): "
-     << surfaces << " parts, " << surf_undecided << " undecided in exact arithmetic";
-  if (!surf_reasons.empty()) {
-    md << " (";
-    for (auto it = surf_reasons.begin(); it != surf_reasons.end(); ++it) md << (it == surf_reasons.begin() ? "" : "; ") << it->first << ": " << it->second;
-    md << ")";
-  }
-  md << ", the others " << surf_pieces << " pieces. Against them, double: " << surf[0] << " parts agree, " << surf[1] << " undecided, " << surf[2]
-     << " wrong (decided, another count)" << (surf[2] == 0 ? "" : ": silently wrong topology in double") << ". " << std::setprecision(3)
-     << surf_exact_s << " s exact, " << surf_double_s << " s double (the whole topology: edges, V-points, curves on faces, pieces).\n";
+  auto list = [](const std::map<std::string, std::size_t>& why) {
+    std::ostringstream o;
+    for (auto it = why.begin(); it != why.end(); ++it) o << (it == why.begin() ? "" : "; ") << it->first << ": " << it->second;
+    return o.str();
+  };
+  md << ReportTemplate("vrep-boolean.curves")
+            .set("pairs", pairs)
+            .set("pairs_undecided", undecided_exact)
+            .when("pair_reasons", !reasons.empty())
+            .set("pair_reasons", list(reasons))
+            .set("arcs", arcs)
+            .set("loops", loops)
+            .set("pairs_agree", total[0])
+            .set("pairs_double_undecided", total[1])
+            .set("pairs_wrong", total[2])
+            .when("pairs_fail_safe", total[2] == 0)
+            .set("pairs_exact_s", fmt(exact_s))
+            .set("pairs_double_s", fmt(double_s))
+            .set("parts", surfaces)
+            .set("parts_undecided", surf_undecided)
+            .when("part_reasons", !surf_reasons.empty())
+            .set("part_reasons", list(surf_reasons))
+            .set("pieces", surf_pieces)
+            .set("parts_agree", surf[0])
+            .set("parts_double_undecided", surf[1])
+            .set("parts_wrong", surf[2])
+            .when("parts_wrong_any", surf[2] != 0)
+            .set("parts_exact_s", fmt(surf_exact_s))
+            .set("parts_double_s", fmt(surf_double_s))
+            .render();
 }
 
 /// The gluing of trimmed cells into one V-model (trimmed_glue), exact and in double, with the time
@@ -203,13 +212,7 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
                     "24 + 27 (docs/vrep/topology.md)"});
   models.push_back({"Figure 4 (cone u cylinder)", figure4, ""});
   models.push_back({"Figure 15's kind", figure15, "18 + 14 (docs/vrep/topology.md)"});
-  md << "**Gluing the trimmed cells into one V-model** (`trimmed_glue`, `vrep topology --glue`; 2048 boxes per count): every "
-        "half-V-surface's pieces where the other side lies in the model (internal) or not (boundary), certified subdivision counts; "
-        "twins exact where two cells share a trivariate (the two sides of a trimming surface) or glued faces of two trivariates, and "
-        "contacts between the operands' cells matched at exact witness points (sampled, not a proof). V-surfaces = boundary + "
-        "internal pieces. Table 1's gluing time, exact and double:\n\n"
-        "| model | cells | half-V-surfaces (boundary + 2 internal) | V-surfaces: boundary + internal (exact twins / contacts) | decided | by hand | gluing s exact | "
-        "double: boundary + internal, decided | gluing s double | double vs exact |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   TrimmedGlueOptions go;
   go.max_boxes = 2048;
   for (const auto& m : models) {
@@ -223,7 +226,7 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
     std::size_t undecided_twins = 0, undecided_halves = 0;
     for (const auto& t : e.twins) undecided_twins += !t.decided;
     for (const auto& h : e.halves) undecided_halves += !h.decided;
-    md << "| " << m.name << " | " << m.model.cells.size() << " | " << e.half_v_surfaces << " | " << e.boundary_v_surfaces << " + " << e.internal_v_surfaces
+    rows << "| " << m.name << " | " << m.model.cells.size() << " | " << e.half_v_surfaces << " | " << e.boundary_v_surfaces << " + " << e.internal_v_surfaces
        << " (" << e.internal_v_surfaces - e.contacts << " / " << e.contacts << ") | "
        << (e.decided ? "yes" : "no: " + std::to_string(undecided_halves) + " halves, " + std::to_string(undecided_twins) + " contacts undecided")
        << " | " << (m.expected.empty() ? "-" : m.expected) << " | " << std::setprecision(3) << es << " | " << d.boundary_v_surfaces << " + "
@@ -233,13 +236,11 @@ void glue_part(ReportContext& ctx, std::ostringstream& md, const TrimmedModel<Ra
       const std::string got = std::to_string(e.boundary_v_surfaces) + " + " + std::to_string(e.internal_v_surfaces);
       if (m.expected.rfind(got, 0) != 0) {
         ctx.ok = false;
-        md << "\nCHECK FAILED: " << m.name << " glued to " << got << ", counted by hand " << m.expected << ".\n";
+        rows << ReportTemplate("vrep-boolean.glue.check-failed").set("model", m.name).set("got", got).set("expected", m.expected).render();
       }
     }
   }
-  md << "\nFigure 4's cone faces inside the cylinder meet the sections of several cylinder cells, which meet several cone faces: the "
-        "contacts form no star and stay undecided (the paper's pairwise cells a n b would separate them; they need b's inverse). "
-        "In double the curved models' faces leave their rounded quadrics by rounding errors: the counts differ from the exact ones.\n\n";
+  md << ReportTemplate("vrep-boolean.glue").set("rows", rows.str()).render();
 }
 
 // A model of the trimmed part: its Boolean exactly and in double, with the times and chi's check.
@@ -274,8 +275,13 @@ TrimmedCase figure4_case(ReportContext& ctx) {
     const long a = chi_of(cone, fine), b = chi_of(cyl, fine), u = chi_of(c.model, fine), i = chi_of(trimmed_boolean(cone, cyl, BooleanOp::intersect), fine);
     const bool holds = fine && u == a + b - i;
     ctx.ok = ctx.ok && holds;
-    c.euler = "chi(cone u cylinder) = " + std::to_string(u) + " = chi(cone) " + std::to_string(a) + " + chi(cylinder) " + std::to_string(b) +
-              " - chi(cone n cylinder) " + std::to_string(i) + (holds ? " (all four exact and dual: inclusion-exclusion holds)" : " (CHECK FAILED)");
+    c.euler = ReportTemplate("vrep-boolean.euler.figure4")
+                  .set("union", u)
+                  .set("cone", a)
+                  .set("cylinder", b)
+                  .set("intersection", i)
+                  .when("holds", holds)
+                  .render();
   }
   t0 = std::chrono::steady_clock::now();
   try {
@@ -304,8 +310,7 @@ TrimmedCase figure15_case(ReportContext& ctx) {
     const long p = chi_of(P, fine), p1 = chi_of(trimmed_boolean(P, hole1, BooleanOp::subtract), fine), p2 = chi_of(c.model, fine);
     const bool holds = fine && p == 1 && p1 == 0 && p2 == -1;
     ctx.ok = ctx.ok && holds;
-    c.euler = "chi after each Boolean: plate u post " + std::to_string(p) + ", - hole " + std::to_string(p1) + ", - hole " + std::to_string(p2) +
-              (holds ? " (exact and dual; 1, 0, -1: one, then two through-holes)" : " (CHECK FAILED: expected 1, 0, -1)");
+    c.euler = ReportTemplate("vrep-boolean.euler.figure15").set("plate_post", p).set("one_hole", p1).set("two_holes", p2).when("holds", holds).render();
   }
   c.exact_s = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
@@ -321,11 +326,10 @@ TrimmedCase figure15_case(ReportContext& ctx) {
   return c;
 }
 
-// The models' table: V-cells by category and status, trivariates, the certified volume, the Booleans' times.
+// The trimmed part's introduction and the models' table: V-cells by category and status, trivariates, the certified volume, the Booleans' times.
 void models_table(std::ostringstream& md, const std::vector<TrimmedCase>& cases) {
   using R = Rational;
-  md << "| model | V-cells (only A / both / only B after the last union; whole / cut) | trivariates (degrees, control points) | volume (certified, adaptive: 1% relative width) | "
-        "Boolean time exact / double (s) | V-cells in double (eps 1e-12) |\n|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   for (const auto& c : cases) {
     std::map<std::string, std::size_t> cat;
     std::size_t whole = 0;
@@ -348,10 +352,11 @@ void models_table(std::ostringstream& md, const std::vector<TrimmedCase>& cases)
     const R lo = E.total.lower, hi = E.total.upper;
     std::ostringstream sz;
     for (const auto& [k, n] : sizes) sz << (sz.tellp() > 0 ? "; " : "") << n << " x " << k;
-    md << "| " << c.name << " | " << c.model.cells.size() << " (" << cat["A"] << " / " << cat["both"] << " / " << cat["B"] << "; " << whole
+    rows << "| " << c.name << " | " << c.model.cells.size() << " (" << cat["A"] << " / " << cat["both"] << " / " << cat["B"] << "; " << whole
        << " / " << c.model.cells.size() - whole << ") | " << sz.str() << " | [" << six_digits(lo, false) << ", " << six_digits(hi, true) << "] | " << std::setprecision(3) << c.exact_s << " / " << c.double_s << " | "
        << (c.double_note.empty() ? std::to_string(c.double_cells) : "refused: " + c.double_note) << " |\n";
   }
+  md << ReportTemplate("vrep-boolean.trimmed").set("rows", rows.str()).render();
 }
 
 // One cell's row of the boundary-structure table: trimmed_topology, trimmed_curves (exact, and the
@@ -412,29 +417,18 @@ void topology_row(std::ostringstream& md, const TrimmedCase& c, std::size_t k, c
 // The boundary structure of every cell (trimmed_topology): exact on the edges, lower bounds on
 // the half-V-surfaces.
 void topology_table(std::ostringstream& md, const std::vector<TrimmedCase>& cases) {
-  md << "\n**Their trimmed cells' boundary structure** (`trimmed_topology`, 1024 boxes per cell; exact: corners of the trivariate in the "
-        "cell, V-curves and V-points on its edges (roots of every region polynomial along each edge, certified); certified lower bounds: "
-        "half-V-surfaces, faces of the trivariate restricted to the cell and trimming surfaces where they bound it; the covers' own counts "
-        "in brackets, not certified, and the exact count of the parts' pieces (`count_region` on each face, `count_surface` on each "
-        "trimming surface: certified subdivisions, in the trivariate's parameters); and the trimming surfaces' boundary curves on the faces, certified lower bounds (the covers' counts and the exact count, arcs and loops of a certified curve graph, in brackets); exact: V-points off "
-        "the edges, two trimming surfaces meeting on a face or three inside, roots not certified in brackets); the V-curves between two "
-        "trimming surfaces, exact (`trimmed_curves`: arcs / closed loops, from a certified graph of each pair's curve); and the cell's Euler characteristic, exact (`trimmed_euler`: "
-        "chi in the trivariate's parameters / chi of the cell in space, V's identifications counted once; \"dual\" where the interior's "
-        "chi_c is -chi, as for a 3-manifold with boundary):\n\n"
-        "| model | cell (category) | corners | edge V-curves | edge V-points | V-points on faces / inside (undecided) | face half-V-surfaces >= (cover; exact) | trimming half-V-surfaces >= (cover; exact) | trimming curves on faces >= | s | V-curves between trimming surfaces (arcs / loops) | s | double: pairs agreeing / undecided / wrong | chi (parameters / space) | s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   std::vector<TrimmedModel<double>> D;  // the cases rounded to double, for the curves' double run
   for (const auto& c : cases) D.push_back(trimmed_to_double(c.model));
   for (const auto& c : cases)
-    for (std::size_t k = 0; k < c.model.cells.size(); ++k) topology_row(md, c, k, D[&c - cases.data()]);
+    for (std::size_t k = 0; k < c.model.cells.size(); ++k) topology_row(rows, c, k, D[&c - cases.data()]);
+  md << ReportTemplate("vrep-boolean.topology").set("rows", rows.str()).render();
 }
 
 // The price of tolerance at a curved contact: the plane x = 1 + g against the cylinder r = 1.
 void near_tangent_part(std::ostringstream& md) {
   using R = Rational;
-  md << "#### Near-tangent contact: the box x >= 1 + g against the cylinder r = 1 (tangent at g = 0)\n\n"
-        "Intersection, exactly (budget 4096 boxes per cell) and in double with eps = 1e-12 and 1e-6 (coefficients within eps "
-        "count as 0). Exact arithmetic decides every g it can certify with the budget and refuses the rest; the float run "
-        "decides by eps.\n\n| g | exact | double, eps 1e-12 | double, eps 1e-6 |\n|---|---|---|---|\n";
+  std::ostringstream rows;
   const auto cyl = placed_primitive(cylinder_cells<R>(R(1), R(2)), cylinder_region<R>(R(1), R(2)), 2, {R(0), R(0), R(0)});
   auto verdict = [](auto&& run) -> std::string {
     try {
@@ -460,41 +454,25 @@ void near_tangent_part(std::ostringstream& md) {
       const std::string d6 = verdict([&] {
         return trimmed_boolean(trimmed_to_double(cyl), trimmed_to_double(box), BooleanOp::intersect, Blend::sum_clipped, {}, 1e-6);
       });
-      md << "| " << (sign == 0 ? std::string("0") : std::string(sign < 0 ? "-" : "") + "2^-" + std::to_string(k)) << " | " << ex << " | " << d12
+      rows << "| " << (sign == 0 ? std::string("0") : std::string(sign < 0 ? "-" : "") + "2^-" + std::to_string(k)) << " | " << ex << " | " << d12
          << " | " << d6 << " |\n";
     }
-  md << "\nThe truth: for g < 0 one sector is cut (a sliver of width |g| and volume about (8/3) sqrt 2 |g|^(3/2) over the "
-        "height 2), for g = 0 the intersection has no volume, for g > 0 it is empty. Where the float run says `empty` for "
-        "g < 0 it is wrong (the sliver exists); where exact arithmetic cannot certify within its budget it says so and never "
-        "answers wrongly.\n\n";
+  md << ReportTemplate("vrep-boolean.near-tangent").set("rows", rows.str()).render();
 }
 
 // Trimmed cells on exact regions: Figures 4 and 15, their cells' boundary structure, the models'
 // Euler characteristics, the gluing, a near-tangent contact; the figures' files.
 void trimmed_part(ReportContext& ctx, std::ostringstream& md) {
   ctx.progress("V-rep Booleans: trimmed cells (Figures 4 and 15)");
-  md << "### Cells cut along curved surfaces: trimmed V-cells on exact implicit regions\n\n"
-        "Every primitive here has an exact implicit form (box: six planes; cylinder, cone frustum: a quadric and two planes; "
-        "torus: a quartic). Composed with a cell's trivariate it is a polynomial in the cell's parameters, exactly; its "
-        "Bernstein coefficients decide boxes of the parameter domain (in, out, mixed), subdivision refines the mixed ones, and a "
-        "cell is `whole`, `empty`, `cut` (certified by an inside and an outside box or exact witness point) or undecided "
-        "(tangential contact: a typed error). Volumes are certified enclosures. The cells' own V-surfaces, V-curves and "
-        "V-points are counted below (`trimmed_topology`, `trimmed_curves`).\n\n";
   std::vector<TrimmedCase> cases;
   cases.push_back(figure4_case(ctx));
   cases.push_back(figure15_case(ctx));
   models_table(md, cases);
   topology_table(md, cases);
   curves_sweep(md);
-  md << "\n**The models' Euler characteristic after every Boolean** (`model_euler`: the region's chi in a box around the model, exact):\n\n";
-  for (const auto& c : cases) md << "- " << c.name.substr(0, c.name.find(':')) << ": " << c.euler << "\n";
-  md << "\nThe second model is built like the paper's Figure 15 (one union and two subtractions of non-singular "
-        "primitives, 7 V-cells), but the paper gives no dimensions: plate [-2,2]^2 x [0,1], post r 1, h 3, holes r 1/4 at "
-        "(+-3/2, +-3/2). Its volume is 16 + 15 pi / 8 = " << std::setprecision(8) << 16 + 15 * M_PI / 8
-     << ", inside the enclosure. A cell in both models holds its own trivariate and those of the other model's cells whose "
-        "bounding boxes meet it. The figures show the cells sampled on parameter voxels (stair-stepped at the trimming "
-        "surfaces; VTK files of the same voxels for ParaView are beside them).\n\n"
-        "![Figure 4](vrep_boolean_figure4.svg)\n\n![Figure 15](vrep_boolean_figure15.svg)\n\n";
+  std::string items;
+  for (const auto& c : cases) items += ReportTemplate("vrep-boolean.euler.item").set("model", c.name.substr(0, c.name.find(':'))).set("euler", c.euler).render();
+  md << ReportTemplate("vrep-boolean.euler").set("items", items).set("figure15_volume", fmt(16 + 15 * M_PI / 8, 8)).render();
   glue_part(ctx, md, cases[0].model, cases[1].model);
   near_tangent_part(md);
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure4.svg",
@@ -520,21 +498,26 @@ void figure3_part(ReportContext& ctx, std::ostringstream& md) {
     }
   }
   const auto nef = nef_boolean(O1, O2, BooleanOp::unite), mine = boundary_counts(U);
-  md << "### Figure 3: O1 = [0,2]x[0,1]x[0,1] union O2 = [1,2]x[0,2]x[0,1]\n\n"
-     << "| | paper | program |\n|---|---|---|\n"
-     << "| V-cells | 3 | " << U.cells.size() << " |\n"
-     << "| half-V-surfaces | 18 | " << U.half_surfaces.size() << " |\n"
-     << "| internal / boundary V-surfaces | 2 / 14 | " << U.internal_surfaces() << " / " << U.boundary_surfaces() << " |\n"
-     << "| V-points | 16 | " << U.points.size() << " |\n"
-     << "| V-curves | 28 | " << U.curves.size() << " |\n"
-     << "| V-curve 1: V-surfaces, half-V-surfaces | 4, 6 | " << vc1_surfaces << ", " << vc1_halves << " |\n"
-     << "| V-curves at V-curve 1's V-points | 5 | " << p1_curves << " |\n"
-     << "| Euler characteristic | 1 | " << U.euler_characteristic() << " |\n\n"
-     << "The boundary as a polyhedron (coplanar neighbouring V-surfaces merged): " << mine.vertices << " vertices, " << mine.edges
-     << " edges, " << mine.facets << " facets, volume " << to_fraction_string(mine.volume) << "; CGAL's Nef_polyhedron_3: "
-     << nef.vertices << ", " << nef.edges << ", " << nef.facets << ", " << to_fraction_string(nef.volume)
-     << ". The faces y = 0, z = 0, z = 1 and x = 2 are partly coplanar; exact arithmetic decides that contact exactly.\n\n"
-     << "![Figure 3](vrep_boolean_figure3.svg)\n\n";
+  md << ReportTemplate("vrep-boolean.figure3")
+            .set("cells", U.cells.size())
+            .set("half_surfaces", U.half_surfaces.size())
+            .set("internal", U.internal_surfaces())
+            .set("boundary", U.boundary_surfaces())
+            .set("points", U.points.size())
+            .set("curves", U.curves.size())
+            .set("vc1_surfaces", vc1_surfaces)
+            .set("vc1_halves", vc1_halves)
+            .set("p1_curves", p1_curves)
+            .set("euler", U.euler_characteristic())
+            .set("vertices", mine.vertices)
+            .set("edges", mine.edges)
+            .set("facets", mine.facets)
+            .set("volume", to_fraction_string(mine.volume))
+            .set("nef_vertices", nef.vertices)
+            .set("nef_edges", nef.edges)
+            .set("nef_facets", nef.facets)
+            .set("nef_volume", to_fraction_string(nef.volume))
+            .render();
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_figure3.svg",
                         vmodel_svg(U, 0.35, "Figure 3: O1 union O2, three V-cells (the middle one holds both trivariates)", false));
 }
@@ -549,13 +532,15 @@ void figure5_part(ReportContext& ctx, std::ostringstream& md) {
   for (std::size_t k = 1; k < four.size(); ++k) all = boolean_op(all, four[k], BooleanOp::unite);
   std::map<std::size_t, std::size_t> by_sources;
   for (const auto& c : all.cells) ++by_sources[c.trivariates.size() - 1];
-  md << "### Figure 5: attributes through Booleans (summing blend, clipped)\n\n"
-     << "Four boxes coloured red, green, blue and olive, united one after the other; a cell inherits the colours of every "
-        "model it lies in, summed and clipped to 1 (`--blend sum-clipped`). "
-     << all.cells.size() << " V-cells: ";
-  for (const auto& [n, count] : by_sources) md << count << " in " << n << " source model" << (n == 1 ? "" : "s") << "; ";
-  md << "volume " << to_fraction_string(model_volume(all)) << ", Euler characteristic " << all.euler_characteristic() << ".\n\n"
-     << "![Figure 5](vrep_boolean_colours.svg)\n\n";
+  std::string sources;
+  for (const auto& [n, count] : by_sources)
+    sources += ReportTemplate("vrep-boolean.figure5.sources").set("cells", count).set("sources", n).when("plural", n != 1).render() + "; ";
+  md << ReportTemplate("vrep-boolean.figure5")
+            .set("cells", all.cells.size())
+            .set("by_sources", sources)
+            .set("volume", to_fraction_string(model_volume(all)))
+            .set("euler", all.euler_characteristic())
+            .render();
   write_file_atomically(ctx.options.out_dir + "/vrep_boolean_colours.svg",
                         vmodel_svg(all, 0.25, "Four boxes united, colours summed where they overlap", false));
 }
@@ -566,11 +551,9 @@ void figure6_part(ReportContext& ctx, std::ostringstream& md) {
   const DistanceBlend blend(W1, W2);
   const std::vector<Rational> red{1, 0, 0}, blue{0, 0, 1};
   const int n = 60;
-  const double px = 6.0, margin = 30.0;
-  std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << n * px + 2 * margin << "\" height=\"" << n * px + 2 * margin + 30
-      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << margin << "\" y=\"20\" font-family=\"sans-serif\" "
-         "font-size=\"12\">Eq. 2, slice z = 5: V1 red, V2 blue, r circled</text>\n";
+  const double px = 6.0, margin = 30.0, top = 10.0;
+  svg::Canvas fig(n * px + 2 * margin, n * px + 2 * top);
+  fig.title("Eq. 2, slice z = 5: V1 red, V2 blue, r circled", 12);
   std::size_t singular = 0, points = 0;
   Rational widest(0);
   for (int i = 0; i < n; ++i)
@@ -591,44 +574,33 @@ void figure6_part(ReportContext& ctx, std::ostringstream& md) {
         f << "rgb(" << rgb[0] << "," << rgb[1] << "," << rgb[2] << ")";
         fill = f.str();
       }
-      svg << "<rect x=\"" << margin + i * px << "\" y=\"" << margin + 10 + (n - 1 - j) * px << "\" width=\"" << px << "\" height=\"" << px
-          << "\" fill=\"" << fill << "\"/>\n";
+      fig.rect(margin + i * px, top + (n - 1 - j) * px, px, px, svg::attr("fill", fill));
     }
   for (const auto& r : std::vector<std::array<double, 2>>{{2, 1}, {1, 2}})
-    svg << "<circle cx=\"" << margin + r[0] / 3 * n * px << "\" cy=\"" << margin + 10 + (1 - r[1] / 3) * n * px
-        << "\" r=\"5\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"/>\n";
-  svg << "</svg>\n";
-  write_file_atomically(ctx.options.out_dir + "/vrep_boolean_eq2.svg", svg.str());
+    fig.circle(margin + r[0] / 3 * n * px, top + (1 - r[1] / 3) * n * px, 5, svg::attr("fill", "none") + svg::attr("stroke", "black") + svg::attr("stroke-width", 2));
+  write_file_atomically(ctx.options.out_dir + "/vrep_boolean_eq2.svg", fig.str());
   const auto r1 = blend.at({2, 1, 5}, red, blue), mid = blend.at({Rational(3, 2), Rational(3, 2), 5}, red, blue),
              q = blend.at({Rational(7, 4), Rational(5, 4), 5}, red, blue), k2 = blend.at({Rational(7, 4), Rational(3, 2), 5}, red, blue, 2);
-  md << "### Figure 6: Eq. 2's distance blend, certified\n\n"
-     << "V1 = [0,2]^2 x [0,10] (red) and V2 = [1,3]^2 x [-1,11] (blue), the slice z = 5. In V1 n V2 the colour is "
-        "(d1 A1 + d2 A2) / (d1 + d2), d1 the distance to the part of V1's boundary inside V2, d2 the other way: squared "
-        "distances exact, their roots and the blend enclosed by MPFI at 128 bits (`vrep/primitives/blend.hpp`). Over "
-     << points << " sample points the widest enclosure is " << sci(to_double(widest))
-     << " wide; where d1 or d2 is exactly 0 (the interfaces) the value is exactly A2 or A1, which is the C^0 continuity "
-        "of Eq. 2 across them, checked exactly; "
-     << singular << " of the samples land on a singular point (black), and the two points r = (2, 1) and (1, 2) (circled) are: "
-     << (r1.singular ? "`at(2, 1, 5)` answers singular" : "**r is not reported singular**")
-     << ". Values: at (3/2, 3/2) red = [" << to_double(mid.value[0].lo) << ", " << to_double(mid.value[0].hi) << "] (d1^2 = "
-     << to_fraction_string(mid.d1_squared) << ", d2^2 = " << to_fraction_string(mid.d2_squared) << "); at (7/4, 5/4) red = ["
-     << to_double(q.value[0].lo) << ", " << to_double(q.value[0].hi) << "]; the k = 2 variant at (7/4, 3/2): red = ["
-     << to_double(k2.value[0].lo) << ", " << to_double(k2.value[0].hi) << "].\n\n![Eq. 2](vrep_boolean_eq2.svg)\n\n";
+  md << ReportTemplate("vrep-boolean.figure6")
+            .set("points", points)
+            .set("widest", sci(to_double(widest)))
+            .set("singular", singular)
+            .when("r_singular", r1.singular)
+            .set("mid_lo", fmt(to_double(mid.value[0].lo), 6))
+            .set("mid_hi", fmt(to_double(mid.value[0].hi), 6))
+            .set("mid_d1_squared", to_fraction_string(mid.d1_squared))
+            .set("mid_d2_squared", to_fraction_string(mid.d2_squared))
+            .set("q_lo", fmt(to_double(q.value[0].lo), 6))
+            .set("q_hi", fmt(to_double(q.value[0].hi), 6))
+            .set("k2_lo", fmt(to_double(k2.value[0].lo), 6))
+            .set("k2_hi", fmt(to_double(k2.value[0].hi), 6))
+            .render();
 }
 
 // The price of tolerance: A = [0,1]^3 and B = [1 + g, 2] x [0,1] x [0,1] (a gap, g > 0) or
 // overlapping by |g| (g < 0), united exactly and in double at eps.
 void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "### The price of a tolerance in Booleans: two boxes 2^-k apart or overlapping\n\n"
-     << "A = [0,1]^3 and B = [1 + g, 2] x [0,1] x [0,1]: a gap of g > 0 or an overlap of -g. The union runs exactly and, on "
-        "the boxes rounded to double, with the float tests at eps (|value| <= eps is 0, cuts within eps merged, gluing "
-        "within eps). Measured exactly on the double result converted to rationals: internal V-surfaces (exactly: 0 for a "
-        "gap, 2 for an overlap), the sum of the cells' volumes minus the true volume, and the misclassified volume "
-        "vol(exact - double) + vol(double - exact) of the point sets, by CGAL's Nef polyhedra. `vrep_boolean_tolerance.csv`.\n\n"
-     << "The Euler characteristic column is the V-model's own, V-points - V-curves + V-surfaces - V-cells (exactly 2 for "
-        "the gap, two solids; 1 for the overlap).\n\n"
-     << "| g | eps | cells exact / double | internal exact / double | chi exact / double | sum of cell volumes - true | misclassified volume |\n"
-        "|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   std::ostringstream csv;
   csv << "g,eps,cells_exact,cells_double,internal_exact,internal_double,volume_error,misclassified\n";
   std::map<int, PlotSeries> series;
@@ -641,7 +613,7 @@ void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
       const Rational truth = model_volume(E);
       PlotSeries& ps = series[sign * k];
       ps.label = std::string(sign > 0 ? "gap" : "overlap") + " 2^-" + std::to_string(k);
-      ps.color = kPalette[ci++ % kPaletteSize];
+      ps.color = svg::palette(ci++);
       for (double eps : {1e-15, 1e-12, 1e-9, 1e-6, 1e-3}) {
         std::string cells_d = "error", internal_d = "error", verr = "-", mis = "-", chi_d = "-";
         double verr_value = 0;
@@ -659,7 +631,7 @@ void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
         } catch (const Error& e) {
           cells_d = "refused";
         }
-        md << "| " << (sign > 0 ? "" : "-") << "2^-" << k << " | " << eps << " | " << E.cells.size() << " / " << cells_d << " | "
+        rows << "| " << (sign > 0 ? "" : "-") << "2^-" << k << " | " << fmt(eps, 6) << " | " << E.cells.size() << " / " << cells_d << " | "
            << E.internal_surfaces() << " / " << internal_d << " | " << check_invariants(E).euler << " / " << chi_d << " | " << verr << " | " << mis << " |\n";
         csv << (sign > 0 ? "" : "-") << std::ldexp(1.0, -k) << "," << eps << "," << E.cells.size() << "," << cells_d << ","
             << E.internal_surfaces() << "," << internal_d << "," << verr << "," << mis << "\n";
@@ -675,16 +647,7 @@ void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
                                        "sum of cell volumes - true volume (exact; 1e-20 drawn for 0)", true, true,
                                        "A = [0,1]^3, B = [1-2^-k,2]x[0,1]^2"},
                                       plot));
-  md << "\nExactly, a gap of any size keeps the boxes apart (two cells, nothing internal) and an overlap of any size makes "
-        "three cells (the slab in both holds both trivariates). In double, eps decides: once eps exceeds |g| the float test "
-        "glues across a gap (a false internal V-surface: the V-model claims material continuity where there is a gap, and its "
-        "Euler characteristic says one solid where there are two) or "
-        "drops the overlap's cuts (two cells that overlap, so a volume or an integral over the cells counts the slab twice: "
-        "the error is |g| exactly, the figure). A g below the rounding of 1 + g (2^-53) would be gone before the Boolean "
-        "starts. The point set itself stays right here (misclassified volume 0 throughout, by Nef): what the tolerance "
-        "breaks is the topology and the bookkeeping of volume, which is what a V-model adds to a B-rep.\n\n"
-        "![tolerance](vrep_boolean_tolerance.svg)\n\n"
-     ;
+  md << ReportTemplate("vrep-boolean.tolerance").set("rows", rows.str()).render();
 }
 
 }  // namespace
@@ -692,15 +655,13 @@ void tolerance_part(ReportContext& ctx, std::ostringstream& md) {
 void vrep_boolean_section(ReportContext& ctx) {
   ctx.progress("V-rep Booleans: Figure 3, colour blending, the price of tolerance");
   std::ostringstream md;
-  md << "\n## V-rep Booleans (issue 18, first part: cells with planar faces, exact cuts)\n\n";
+  md << ReportTemplate("vrep-boolean").render();
   figure3_part(ctx, md);
   figure5_part(ctx, md);
   figure6_part(ctx, md);
   tolerance_part(ctx, md);
   trimmed_part(ctx, md);
-  md << "Not built yet (issue 18 stays open): exact counts of the half-V-surfaces of trimmed cells (their V-points, "
-        "V-curves and Euler characteristic are exact, above); the gluing of "
-        "trimmed cells; the topology of freeform-trimmed cells beyond their edges (the teapot's section).\n\n";
+  md << ReportTemplate("vrep-boolean.not-built").when("ran:vrep-teapot", ctx.ran("vrep-teapot")).render();
   ctx.markdown["vrep-boolean"] = md.str();
 }
 

@@ -26,7 +26,7 @@ std::string vmodel_svg(const VModel<Rational>& M, double explode, const std::str
     std::array<double, 3> off{};
     for (int k = 0; k < 3; ++k) off[k] = explode * (centre[c][k] - all[k]);
     // A cell's "colour" attribute (three values in [0, 1], Figure 5) if it has one.
-    std::array<int, 3> rgb = palette_rgb(c);
+    std::array<int, 3> rgb = svg::palette_rgb(c);
     const auto col = M.cells[c].attributes.constants.find("colour");
     if (col != M.cells[c].attributes.constants.end() && col->second.size() == 3)
       for (int k = 0; k < 3; ++k) {
@@ -105,7 +105,7 @@ std::array<int, 3> category_rgb(const std::string& category, std::size_t c) {
   if (category == "A") return {150, 90, 200};
   if (category == "both") return {60, 200, 220};
   if (category == "B") return {90, 190, 90};
-  return palette_rgb(c);
+  return svg::palette_rgb(c);
 }
 
 }  // namespace

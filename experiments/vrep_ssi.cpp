@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/errors.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/teapot.hpp"
@@ -122,26 +123,24 @@ SsiStudy ssi_study(const BSpline<Rational>& S1, const BSpline<Rational>& S2, con
 std::string ssi_svg(const BSpline<Rational>& S1, const BSpline<Rational>& S2, const SsiResult& r, const std::string& name1,
                     const std::string& name2, const std::string& title) {
   const int W = 360, H = 360, M = 40;
-  std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * W + 3 * M << "\" height=\"" << H + 2 * M + 20 << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << M << "\" y=\"20\" font-size=\"14\">" << title << "</text>\n";
+  svg::Canvas s(2 * W + 3 * M, H + 20);
+  s.title(title);
+  std::size_t below = 0;  // lines of text under the panels
   for (int side = 0; side < 2; ++side) {
     const auto& S = side == 0 ? S1 : S2;
     const double u0 = to_double(S.domain_lo(0)), u1 = to_double(S.domain_hi(0)), v0 = to_double(S.domain_lo(1)), v1 = to_double(S.domain_hi(1));
-    const int ox = M + side * (W + M), oy = M + 10;
-    s << "<rect x=\"" << ox << "\" y=\"" << oy << "\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#f7f7f7\" stroke=\"black\"/>\n";
-    s << "<text x=\"" << ox << "\" y=\"" << oy + H + 16 << "\">" << (side == 0 ? name1 : name2) << ": (" << (side == 0 ? "u, v" : "s, t")
-      << ") in [" << u0 << ", " << u1 << "] x [" << v0 << ", " << v1 << "]</text>\n";
+    const int ox = M + side * (W + M), oy = 10;
+    s.rect(ox, oy, W, H, svg::attr("fill", "#f7f7f7") + svg::attr("stroke", "black"));
+    below = std::max(below, s.text_block(ox, oy + H + 16, (side == 0 ? name1 : name2) + ": (" + (side == 0 ? "u, v" : "s, t") + ") in [" + svg::num(u0) +
+                                                              ", " + svg::num(u1) + "] x [" + svg::num(v0) + ", " + svg::num(v1) + "]", W));
     for (std::size_t b = 0; b < r.branches.size(); ++b) {
-      s << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kPalette[b % kPaletteSize] << "\" points=\"";
-      for (const auto& x : r.branches[b].points) {
-        const double px = ox + (x[2 * side] - u0) / (u1 - u0) * W, py = oy + H - (x[2 * side + 1] - v0) / (v1 - v0) * H;
-        s << std::setprecision(6) << px << "," << py << " ";
-      }
-      s << "\"/>\n";
+      svg::Points pts;
+      for (const auto& x : r.branches[b].points)
+        pts.emplace_back(ox + (x[2 * side] - u0) / (u1 - u0) * W, oy + H - (x[2 * side + 1] - v0) / (v1 - v0) * H);
+      s.polyline(pts, svg::attr("stroke-width", 2) + svg::attr("stroke", svg::palette(b)));
     }
   }
-  s << "</svg>\n";
+  s.set_height(10 + H + 8 + 15.0 * static_cast<double>(below));
   return s.str();
 }
 
@@ -175,20 +174,7 @@ BSpline<Rational> teapot_surface(const std::string& name) {
 namespace splinex {
 
 void vrep_ssi_section(ReportContext& ctx) {
-  std::ostringstream md, csv;
-  md << "## Freeform boundaries: the teapot's handle and spout meet its body (float SSI, judged exactly)\n\n"
-        "Boundaries without an implicit form (papers/002 Figures 10 and 14: the teapot's handle and body) are intersected the way a CAD "
-        "kernel does it, in double (`vrep/boolean/ssi.hpp`: seeds from a 48 x 48 grid of cells per surface whose bounding boxes overlap, Newton, "
-        "then marching with a chord `step` and a Newton corrector to `tolerance`, on the exact data rounded to double). Every computed "
-        "point and every midpoint of the polylines' segments (the trimming curves between the points, in both parameter planes) is then "
-        "judged against the exact surfaces: the gap |S1(u,v) - S2(s,t)| exactly, and a **certificate**: Krawczyk's test in exact "
-        "rational interval arithmetic proves a unique true intersection point in a box about the point, and the convex hull of the "
-        "restricted surface bounds the distance from the computed point to it. A point on a domain boundary (where a branch ends) is "
-        "certified with that parameter fixed (Krawczyk on the other three); points near a boundary whose box would leave the domain "
-        "stay uncertified and are counted. Gaps and distances are upper bounds rounded up. `splinex vrep ssi "
-        "teapot:handle teapot:body --judge` reproduces a row.\n\n";
-  md << "| surfaces | step | branches (loops in space) | vertices certified | max vertex gap | max vertex distance | midpoints certified | max midpoint gap | max midpoint distance | double s | judge s |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream step_rows, csv;
   csv << "surfaces,step,tolerance,branches,closed,vertices,vertices_certified,max_vertex_gap,max_vertex_distance,midpoints,midpoints_certified,"
          "max_midpoint_gap,max_midpoint_distance,seconds_double,seconds_judge\n";
   const auto body = teapot_surface("body");
@@ -203,7 +189,7 @@ void vrep_ssi_section(ReportContext& ctx) {
     std::ostringstream r;
     r << std::setprecision(3);
     if (table)
-      md << "| " << name << " | 1/" << std::lround(1 / step) << " | " << st.result.branches.size() << " (" << closed << ") | "
+      step_rows << "| " << name << " | 1/" << std::lround(1 / step) << " | " << st.result.branches.size() << " (" << closed << ") | "
          << st.vertices_certified << "/" << st.vertices << " | " << st.max_vertex_gap << " | " << st.max_vertex_distance << " | "
          << st.midpoints_certified << "/" << st.midpoints << " | " << st.max_mid_gap << " | " << st.max_mid_distance << " | "
          << std::setprecision(3) << st.seconds_float << " | " << st.seconds_judge << " |\n";
@@ -217,8 +203,8 @@ void vrep_ssi_section(ReportContext& ctx) {
   const double steps[] = {1.0 / 4, 1.0 / 8, 1.0 / 16, 1.0 / 32, 1.0 / 64, 1.0 / 128};
   for (const std::string name : {"handle", "spout"}) {
     const auto S = teapot_surface(name);
-    PlotSeries mid{name + ": certified midpoint distance", {}, kPalette[name == "handle" ? 0 : 1]};
-    PlotSeries gap{name + ": midpoint gap", {}, kPalette[name == "handle" ? 0 : 1], true};
+    PlotSeries mid{name + ": certified midpoint distance", {}, svg::palette(name == "handle" ? 0 : 1)};
+    PlotSeries gap{name + ": midpoint gap", {}, svg::palette(name == "handle" ? 0 : 1), true};
     for (double h : steps) {
       ctx.progress("vrep ssi: " + name + " and body, step 1/" + std::to_string(std::lround(1 / h)));
       const auto st = row(name, S, h, 1e-12, true);
@@ -234,31 +220,29 @@ void vrep_ssi_section(ReportContext& ctx) {
     series.push_back(mid);
     series.push_back(gap);
   }
-  md << "\nSlopes of the largest certified midpoint distance against the step (log-log, steps 1/16 to 1/128): ";
-  for (std::size_t k = 0; k < series.size(); k += 2) md << (k ? ", " : "") << series[k].label << " " << std::setprecision(3) << loglog_slope(series[k].points);
-  md << " (a chord's deviation from a smooth curve falls as step^2).\n\n";
-  md << "The tolerance of Newton (handle and body, step 1/16): the gaps at the vertices follow it only down to where Newton's "
-        "quadratic convergence overshoots it; the midpoints do not care (the chord dominates).\n\n"
-        "| tolerance | max vertex gap | max vertex distance | max midpoint distance |\n|---|---|---|---|\n";
+  std::ostringstream slopes;
+  for (std::size_t k = 0; k < series.size(); k += 2) slopes << (k ? ", " : "") << series[k].label << " " << std::setprecision(3) << loglog_slope(series[k].points);
+  std::ostringstream tolerance_rows;
+  tolerance_rows << std::setprecision(3);  // as the step table's last column leaves its stream
   const auto handle = teapot_surface("handle");
   for (double tol : {1e-2, 1e-4, 1e-8, 1e-12}) {
     std::ostringstream t;
     t << tol;
     ctx.progress("vrep ssi: tolerance " + t.str());
     const auto st = row("handle", handle, 1.0 / 16, tol, false);
-    md << "| " << tol << " | " << st.max_vertex_gap << " | " << st.max_vertex_distance << " | " << st.max_mid_distance << " |\n";
+    tolerance_rows << "| " << tol << " | " << st.max_vertex_gap << " | " << st.max_vertex_distance << " | " << st.max_mid_distance << " |\n";
   }
   write_file_atomically(ctx.options.out_dir + "/vrep_ssi.csv", csv.str());
   write_file_atomically(ctx.options.out_dir + "/vrep_ssi_steps.svg",
                         svg_line_plot({"Trimming curves of the teapot from a float SSI: exact distance from the true intersection", "marching step",
                                        "largest bound / gap at segment midpoints", true, true, "dashed: the exact gap |S1 - S2|; solid: the certified distance bound"},
                                       series));
-  md << "\n![branches](vrep_ssi_handle_body.svg)\n\n![steps](vrep_ssi_steps.svg)\n\n"
-        "Data: `vrep_ssi.csv`; the branches as polylines for ParaView: `vrep_ssi_handle_body.obj`. Coarse steps break the loops into "
-        "several branches (the marching jumps or stalls; counted above), fine steps give two loops per pair; a loop is open in the parameters where it crosses a seam (the handle's and spout's u = 0 / u = 2, the body's s = 0 / s = 4 at the spout) and closed in space: the column counts the chains of branches whose ends meet (within step / 4) all around. What this does not "
-        "certify: that no further intersection loop exists (the seeds are sampled). The teapot's V-cells themselves (Figure 14: the trivariates of handle and body trimmed by each other) "
-        "are built without this SSI, by subdivision against the other solid and point membership by the certified solver: next section.\n\n";
-  ctx.markdown["vrep-ssi"] = md.str();
+  ctx.markdown["vrep-ssi"] = ReportTemplate("vrep-ssi")
+                                 .set("step_rows", step_rows.str())
+                                 .set("slopes", slopes.str())
+                                 .set("tolerance_rows", tolerance_rows.str())
+                                 .when("ran:vrep-teapot", ctx.ran("vrep-teapot"))
+                                 .render();
   ctx.ok = ctx.ok && ok;
 }
 

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "crosscheck/crosscheck.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "experiments/vrep_figures.hpp"
@@ -181,16 +182,7 @@ std::map<int, PlotSeries> gluing_table(ReportContext& ctx, std::ostringstream& m
   const std::vector<int> delta_exp{-10, -20, -30, -40, -50, 0};  // 0: delta = 0
   std::ostringstream csv;
   csv << "primitive,delta,eps,internal_exact,internal_double,false_glues,missed_glues\n";
-  md << "\n## V-rep: what a gluing tolerance does to the topology (issue 17)\n\n"
-     << "![cylinder](vrep_cylinder.svg) ![cone](vrep_cone.svg) ![torus](vrep_torus.svg) ![sphere](vrep_sphere.svg)\n\n"
-        "![singular cylinder](vrep_singular_cylinder.svg) ![singular sphere](vrep_singular_sphere.svg)\n\n"
-     << "Each primitive is glued exactly (cylinder, cone: five cells, 8 internal V-surfaces, Euler characteristic 1; "
-        "torus: five cells, 13 internal, Euler characteristic 0; sphere: seven cells, 18 internal, Euler characteristic 1). Then one corner control point of the second half of every internal "
-        "V-surface is moved by delta along z, exactly; the perturbed cells are glued exactly (the truth) and, rounded to "
-        "double, with the float test at eps (every control point within eps after a common function space, as IRIT "
-        "does). False glues: twin pairs the float test makes that exact gluing does not; missed: the other way. Every "
-        "value: `vrep_gluing.csv`. A cell: internal V-surfaces glued in double (false glues, missed glues).\n\n"
-        "| primitive | delta | glued exactly | eps = 1e-15 | 1e-12 | 1e-9 | 1e-6 | 1e-3 |\n|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   std::map<int, PlotSeries> series;  // cylinder: false glues vs eps per delta
   int ci = 0;
   for (const auto& p : prims) {
@@ -206,11 +198,11 @@ std::map<int, PlotSeries> gluing_table(ReportContext& ctx, std::ostringstream& m
       const auto truth = twin_pairs(glue(moved));
       std::vector<BSpline<double>> dbl;
       for (const auto& V : moved) dbl.push_back(round_spline<double>(V));
-      md << "| " << p.name << " | " << (e == 0 ? std::string("0") : "2^" + std::to_string(e)) << " | " << truth.size() << " |";
+      rows << "| " << p.name << " | " << (e == 0 ? std::string("0") : "2^" + std::to_string(e)) << " | " << truth.size() << " |";
       PlotSeries& ps = series[e];
       if (ps.label.empty()) {
         ps.label = e == 0 ? "delta = 0" : "delta = 2^" + std::to_string(e);
-        ps.color = kPalette[ci++ % kPaletteSize];
+        ps.color = svg::palette(ci++);
       }
       for (double eps : epss) {
         const auto got = twin_pairs(glue(dbl, eps));
@@ -219,12 +211,13 @@ std::map<int, PlotSeries> gluing_table(ReportContext& ctx, std::ostringstream& m
         for (const auto& x : truth) missed += got.count(x) == 0;
         csv << p.name << "," << (e == 0 ? 0.0 : std::ldexp(1.0, e)) << "," << eps << "," << truth.size() << "," << got.size() << ","
             << false_glues << "," << missed << "\n";
-        md << " " << got.size() << " (" << false_glues << ", " << missed << ") |";
+        rows << " " << got.size() << " (" << false_glues << ", " << missed << ") |";
         if (std::string(p.name) == "cylinder") ps.points.emplace_back(eps, static_cast<double>(false_glues));
       }
-      md << "\n";
+      rows << "\n";
     }
   }
+  md << ReportTemplate("vrep.gluing").set("rows", rows.str()).render();
   write_file_atomically(ctx.options.out_dir + "/vrep_gluing.csv", csv.str());
   return series;
 }
@@ -250,54 +243,39 @@ void write_figures(ReportContext& ctx, const std::vector<Prim>& prims, const std
 
 // The sphere's radius: certified deviation against degree and pieces.
 void sphere_radius_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "### The sphere of seven cells: how far its patches are from the sphere\n\n"
-     << "No cube-sphere patch has rational coefficients (its corners are (+-1, +-1, +-1)/sqrt 3), so the patches are "
-        "exact in direction and approximate in radius: (r s, r t, r, P(s, t)) with P the tensor spline interpolating "
-        "sqrt(1 + s^2 + t^2) (vrep/primitives/primitives.hpp). `bound` is certified (Bernstein coefficients, exact): "
-        "| |x|^2 / r^2 - 1 | <= bound on the whole patch; `witness` is the largest exact value of it at 17 x 17 "
-        "parameters, so the truth lies between them. The default is degree 3 with 4 pieces.\n\n"
-        "| degree | pieces | bound | witness |\n|---|---|---|---|\n";
+  std::ostringstream rows;
   std::ostringstream scsv;
   scsv << "degree,pieces,bound,witness\n";
   for (int p : {2, 3, 4, 5})
     for (int n : {1, 2, 4, 8}) {
       const auto cells = sphere_cells<Rational>(Rational(1), p, n);
       const auto d = sphere_deviation(face(cells[1], 2, 1), {Rational(0), Rational(0), Rational(0)}, Rational(1));
-      md << "| " << p << " | " << n << " | " << fmt_sci(to_double(d.bound)) << " | " << fmt_sci(to_double(d.witness)) << " |\n";
+      rows << "| " << p << " | " << n << " | " << fmt_sci(to_double(d.bound)) << " | " << fmt_sci(to_double(d.witness)) << " |\n";
       scsv << p << "," << n << "," << to_double(d.bound) << "," << to_double(d.witness) << "\n";
     }
   write_file_atomically(ctx.options.out_dir + "/vrep_sphere_radius.csv", scsv.str());
-  md << "\n";
+  md << ReportTemplate("vrep.sphere").set("rows", rows.str()).render();
 }
 
 // The constructors in double, judged exactly.
 void constructors_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "### The constructors and primitives in double, judged exactly\n\n"
-     << "Each constructor runs exactly and in double on the same input (rounded to double for the double run); the "
-        "double result is converted exactly and subtracted. `points`: all control point coordinates; `values`: the "
-        "points at 5 x 5 x 5 parameters (i/4 of each domain). rel = max |error| / max |exact value|; bits lost = "
-        "53 + log2 rel (the rounding of the input included). `vrep_constructors.csv`.\n\n"
-        "| constructor | points: max abs | rel | bits lost | values: max abs | rel | bits lost |\n|---|---|---|---|---|---|---|\n";
+  std::ostringstream rows;
   std::ostringstream kcsv;
   kcsv << "constructor,points_abs,points_rel,points_bits_lost,values_abs,values_rel,values_bits_lost\n";
   for (const auto& j : judge_constructors()) {
-    md << "| " << j.name << " | " << fmt_sci(j.points.abs()) << " | " << fmt_sci(j.points.rel()) << " | " << std::fixed
+    rows << "| " << j.name << " | " << fmt_sci(j.points.abs()) << " | " << fmt_sci(j.points.rel()) << " | " << std::fixed
        << std::setprecision(1) << j.points.bits_lost(53) << " | " << fmt_sci(j.values.abs()) << " | " << fmt_sci(j.values.rel())
        << " | " << std::fixed << std::setprecision(1) << j.values.bits_lost(53) << " |\n";
     kcsv << "\"" << j.name << "\"," << j.points.abs() << "," << j.points.rel() << "," << j.points.bits_lost(53) << "," << j.values.abs()
          << "," << j.values.rel() << "," << j.values.bits_lost(53) << "\n";
   }
   write_file_atomically(ctx.options.out_dir + "/vrep_constructors.csv", kcsv.str());
-  md << "\n";
+  md << ReportTemplate("vrep.constructors").set("rows", rows.str()).render();
 }
 
 // Regularity in double near the singular threshold s = 1/3.
 void regularity_part(ReportContext& ctx, std::ostringstream& md) {
-  md << "### Certified regularity in double near a singular configuration\n\n"
-     << "The trilinear unit cube with corner (1, 1, 1) moved to (1 - s)(1, 1, 1), s = 1/3 + e: det J at that corner is "
-        "1 - 3s = -3e, so the cube is singular for e >= 0 and regular for e < 0. `exact` decides the exact input; "
-        "`rounded` decides the input rounded to double, exactly; `double` runs the same Bernstein test in double on the "
-        "rounded input.\n\n| e | exact | rounded, exact | double | double wrong about the exact input |\n|---|---|---|---|---|\n";
+  std::ostringstream table;
   std::ostringstream rcsv;
   rcsv << "e,exact,rounded_exact,double\n";
   int wrong = 0, rows = 0, arithmetic = 0;
@@ -314,17 +292,18 @@ void regularity_part(ReportContext& ctx, std::ostringstream& md) {
       ++rows;
       wrong += db.status() != ex.status();
       arithmetic += db.status() != re.status();
-      md << "| " << (sign < 0 ? "-" : "+") << "2^-" << k << " | " << regularity_name(ex) << " | " << regularity_name(re) << " | "
+      table << "| " << (sign < 0 ? "-" : "+") << "2^-" << k << " | " << regularity_name(ex) << " | " << regularity_name(re) << " | "
          << regularity_name(db) << " | " << (db.status() != ex.status() ? "**yes**" : "no") << " |\n";
       rcsv << (sign < 0 ? "-" : "") << "2^-" << k << "," << regularity_name(ex) << "," << regularity_name(re) << "," << regularity_name(db) << "\n";
     }
   write_file_atomically(ctx.options.out_dir + "/vrep_regularity.csv", rcsv.str());
-  md << "\nDouble decides wrongly about the exact input in " << wrong << " of " << rows
-     << " cases, and differs from the exact verdict on the same rounded input in " << arithmetic
-     << ": where e is below the rounding of s (1/3 is not a double; its rounding is 2^-54.4 below it), the rounded "
-        "input is a different cube. "
-     << (arithmetic == 0 ? "The double arithmetic never erred here: the input rounding made every wrong verdict.\n\n"
-                         : "The double arithmetic itself erred in the cases where `double` differs from `rounded, exact`.\n\n");
+  md << ReportTemplate("vrep.regularity")
+            .set("rows", table.str())
+            .set("wrong", wrong)
+            .set("cases", rows)
+            .set("arithmetic", arithmetic)
+            .when("double_never_erred", arithmetic == 0)
+            .render();
 }
 
 }  // namespace
@@ -335,13 +314,6 @@ void vrep_section(ReportContext& ctx) {
   std::ostringstream md;
   const auto series = gluing_table(ctx, md, prims);
   write_figures(ctx, prims, series);
-  md << "\nExactly, nothing glues once anything is moved (every shared face differs). A glue is false as "
-        "soon as eps exceeds the displacement: the float test cannot tell a perturbation below eps from rounding. (A corner "
-        "that is the first control point of several such faces of one cell moves by 2 or 3 delta: hence the sphere's 10 "
-        "of 18 at eps just above delta.) Rounding itself "
-        "misses no glue of these primitives down to eps = 1e-15 (their shared faces are computed the same way in both "
-        "cells, so they round alike).\n\n![false glues](vrep_gluing.svg)\n\n";
-
   sphere_radius_part(ctx, md);
   constructors_part(ctx, md);
   regularity_part(ctx, md);

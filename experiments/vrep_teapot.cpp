@@ -11,6 +11,7 @@
 
 #include "experiments/common.hpp"
 #include "experiments/render.hpp"
+#include "experiments/report_template.hpp"
 #include "experiments/section.hpp"
 #include "experiments/svg_plot.hpp"
 #include "fixtures/teapot_vmodel.hpp"
@@ -152,7 +153,7 @@ std::string teapot_vmodel_svg(const TeapotVModel<Rational>& M) {
     const auto& row = M.cells[k];
     const auto& V = M.trivariates.at(row.trivariate);
     const BSpline<double> Vd = round_spline<double>(V, "teapot trivariate");
-    const auto rgb = palette_rgb(k);
+    const auto rgb = svg::palette_rgb(k);
     const std::array<int, 3> pale{(rgb[0] + 2 * 255) / 3, (rgb[1] + 2 * 255) / 3, (rgb[2] + 2 * 255) / 3};
     for (const auto& b : row.cell.boxes)
       for (int d = 0; d < 3; ++d)
@@ -243,24 +244,10 @@ std::string bounds_text(double lo, double hi) {
 
 void vrep_teapot_section(ReportContext& ctx) {
   const std::size_t boxes = ctx.options.full ? 16384 : 4096;  // 16384: within the default limits for the body's boxes
-  std::ostringstream md, csv;
+  std::ostringstream cell_rows, edge_rows, volume_rows, csv;
   auto progress = [&](const std::string& line) { ctx.progress(line); };
   const auto E = teapot_vmodel<Rational>(boxes, progress);
   const auto D = teapot_vmodel<double>(boxes);
-  md << "## The teapot's V-model from trivariates without an implicit form (papers/002 Figure 14, Table 1)\n\n"
-        "The teapot's solids (`fixtures/teapot_vmodel.hpp`, exact from the data): the body a shell ruled between the body surface below "
-        "the rim and its copy scaled by 9/10 towards the axis (the paper's small offset, which is not rational), handle and spout solid "
-        "tubes ruled between the two halves of their surfaces (the spout without its tip), and the cavity inside the shell, subtracted "
-        "so that nothing of handle or spout pokes into the pot: (body + handle + spout) - cavity. The rim's lip and the spout's tip "
-        "curl over, and built this way they fold (det J changes sign: certified by two exact values and refused), so they are left "
-        "out. No solid has an implicit form, so each cell is trimmed by the other solids "
-        "directly (`vrep/freeform/freeform.hpp`): its parameter boxes are halved until their images' bounding boxes miss the other solid's "
-        "boundary pieces (which are halved alongside), and each connected group of such clear boxes is classified by one point query, "
-        "T(u, v, w) = x solved by the certified solver. Exact arithmetic certifies the kinds, the volume enclosures and a lower bound on "
-        "each cell's components; double runs the same steps in floats. "
-     << boxes << " boxes per cell; `splinex vrep teapot` reproduces the table.\n\n";
-  md << "| cell | trivariate | conditions | kind | V-cells (certified >= / cover) | volume (certified) | boxes near a trimming surface | exact s | "
-        "double: volume bounds | double's bounds - exact's (exactly) | double s |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "cell,trivariate,conditions,arith,kind,components,cover_components,volume_lower,volume_upper,boxes,mixed,queries,systems,seconds\n";
   std::size_t vcells = 0, cover = 0;
   double exact_s = 0, double_s = 0;
@@ -277,7 +264,7 @@ void vrep_teapot_section(ReportContext& ctx) {
     cover += e.cell.cover_components;
     exact_s += e.seconds;
     double_s += d.seconds;
-    md << "| " << e.name << " | " << e.trivariate << " | " << e.conditions << " | " << to_string<Rational>(e.cell.cls.kind) << " | "
+    cell_rows << "| " << e.name << " | " << e.trivariate << " | " << e.conditions << " | " << to_string<Rational>(e.cell.cls.kind) << " | "
        << e.cell.components << " / " << e.cell.cover_components << " | " << bounds_text(to_double(e.cell.volume.lower), to_double(e.cell.volume.upper))
        << " | " << e.cell.cls.mixed << " of " << e.cell.cls.boxes << " | " << fmt(e.seconds) << " | "
        << bounds_text(d.cell.volume.lower, d.cell.volume.upper) << " | "
@@ -289,10 +276,6 @@ void vrep_teapot_section(ReportContext& ctx) {
         << "," << d.cell.cls.mixed << "," << d.cell.queries << "," << d.cell.systems << "," << d.seconds << "\n";
   }
   for (const auto& e : E.removed) put_csv(e, "exact");
-  md << "\n**On the trivariates' edges, exactly** (`freeform_edges`: crossings of each edge with the other solids' boundary pieces "
-        "as 3 x 3 systems for the certified solver, runs decided by point queries): corners of the trivariate in the cell, V-curves "
-        "and V-points on its edges, and the edges the solver leaves undecided or that collapse to a point.\n\n"
-        "| cell | corners (undecided) | edge V-curves | edge V-points | undecided edges | collapsed edges | s |\n|---|---|---|---|---|---|---|\n";
   for (const auto& e : E.cells) {
     std::size_t pieces = 0, points = 0, undecided = 0, collapsed = 0;
     for (const auto& x : e.edges.edges) {
@@ -301,15 +284,9 @@ void vrep_teapot_section(ReportContext& ctx) {
       undecided += !x.status.is_certain();
       collapsed += x.status == FreeformEdges<Rational>::Edge::collapsed;
     }
-    md << "| " << e.name << " | " << e.edges.corners << " (" << e.edges.corners_undecided << ") | " << pieces << " | " << points << " | " << undecided
+    edge_rows << "| " << e.name << " | " << e.edges.corners << " (" << e.edges.corners_undecided << ") | " << pieces << " | " << points << " | " << undecided
        << " | " << collapsed << " | " << fmt(e.seconds_edges) << " |\n";
   }
-  md << "\nUndecided, and why: the handle's and spout's seams (their collapsed faces and the edges along them) lie in the data's "
-        "symmetry plane y = 0, which is also where the body's patches meet (u = 2) and where its own seam runs (u = 0, at the spout). "
-        "There a crossing is not an isolated root of the 3 x 3 system (an equation vanishes identically) or lies on a piece "
-        "boundary with irrational coordinates, which the solver does not certify; points whose preimage lies on such a plane are "
-        "decided by the two-equation system on the face (the handle's corners are). One handle corner, (-2, 0, 9/10), is a control "
-        "point of the body's outer surface: exactly on its boundary. The subdivision above is not affected.\n";
   // The volume balance: each trivariate's exact volume against the sum of its cells' enclosures.
   auto whole = [&](const char* name) { return volume_enclosure(E.trivariates.at(name)).lower; };
   auto find = [&](const std::string& name) -> const FreeformCell<Rational>& {
@@ -319,8 +296,6 @@ void vrep_teapot_section(ReportContext& ctx) {
     throw std::logic_error("no cell " + name);
   };
   bool balance = true;
-  md << "\n**Volumes add up** (proved: exact volumes of the whole trivariates, certified enclosures of the cells; the body, the cavity "
-        "and the handle's and spout's parts meet in surfaces only):\n\n| trivariate | exact volume | its cells | sum of the enclosures |\n|---|---|---|---|\n";
   for (const auto& [tv, parts] : std::vector<std::pair<const char*, std::vector<std::string>>>{
            {"handle", {"handle & body", "handle - body - cavity", "handle & cavity"}},
            {"spout", {"spout & body", "spout - body - cavity", "spout & cavity"}}}) {
@@ -334,42 +309,45 @@ void vrep_teapot_section(ReportContext& ctx) {
     const Rational v = whole(tv);
     const bool holds = lo <= v && v <= hi;
     balance = balance && holds;
-    md << "| " << tv << " | " << to_fraction_string(v) << " = " << fmt(to_double(v), 6) << " | " << names << " | " << bounds_text(to_double(lo), to_double(hi))
+    volume_rows << "| " << tv << " | " << to_fraction_string(v) << " = " << fmt(to_double(v), 6) << " | " << names << " | " << bounds_text(to_double(lo), to_double(hi))
        << (holds ? " holds it" : " **misses it**") << " |\n";
   }
   ctx.ok = ctx.ok && balance;
   // How the enclosure narrows with the budget (handle & body, exact).
-  md << "\nThe enclosure of handle & body against the budget (exact): ";
+  std::string budgets;
   for (std::size_t b : {std::size_t(1024), std::size_t(2048), boxes}) {
     const auto T = teapot_solids();
     const auto body = freeform_solid<Rational>("body", {T.body});
     FreeformOptions o;
     o.max_boxes = b;
     const auto c = freeform_cell(T.handle, {{&body, true}}, o);
-    md << b << " boxes " << bounds_text(to_double(c.volume.lower), to_double(c.volume.upper)) << " (components: " << c.components << ")"
-       << (b == boxes ? ".\n\n" : ", ");
+    budgets += (budgets.empty() ? "" : ", ") + ReportTemplate("vrep-teapot.budget")
+                                                   .set("boxes", b)
+                                                   .set("bounds", bounds_text(to_double(c.volume.lower), to_double(c.volume.upper)))
+                                                   .set("components", c.components)
+                                                   .render();
   }
-  md << "**Table 1, the teapot row** (the paper's model has 7 V-cells with the lid, which is not modelled here):\n\n"
-        "| model | V-cells | trivariates (control points, degrees) | gluing | Booleans exact | Booleans double | exact / double |\n|---|---|---|---|---|---|---|\n"
-     << "| teapot (body + handle + spout - cavity) | " << vcells << " certified (" << cover << " in the cover) | ";
+  std::ostringstream trivariates;
   for (const char* name : {"body", "handle", "spout", "cavity"}) {
     const auto& V = E.trivariates.at(name);
-    md << name << " " << V.count(0) << "x" << V.count(1) << "x" << V.count(2) << " (" << V.degrees[0] << "," << V.degrees[1] << "," << V.degrees[2] << ") ";
+    trivariates << name << " " << V.count(0) << "x" << V.count(1) << "x" << V.count(2) << " (" << V.degrees[0] << "," << V.degrees[1] << "," << V.degrees[2] << ") ";
   }
-  md << "| not built (the trimmed cells' V-surfaces are not) | " << fmt(exact_s + E.seconds_solids) << " s | " << fmt(double_s + D.seconds_solids) << " s | "
-     << fmt((exact_s + E.seconds_solids) / std::max(1e-9, double_s + D.seconds_solids), 3) << " |\n\n";
-  md << "Reading it: handle & body is certified to have at least two components, the paper's two V-cells shared by handle and body "
-        "(Figure 10 shows the bottom one); the other cells have at least one each. A component count above the certified one would "
-        "need the mixed boxes resolved, which subdivision alone does not do. The double run makes the same kind of decisions in "
-        "floats; its bounds are not certified (rounded bounding boxes and solver answers). Here it decides every box as the exact run "
-        "does and its bounds differ from the exact ones by rounding only (the column above): for these well separated boundaries the "
-        "tolerance costs nothing here, which only the exact run can tell. What is not built: the V-surfaces, V-curves and V-points of these "
-        "trimmed cells, the rim, the spout's tip and the lid.\n\n"
-        "![teapot V-model](vrep_teapot.svg)\n\nData: `vrep_teapot.csv`; the cells' boxes as hexahedra for ParaView: `vrep_teapot.vtk`.\n\n";
   write_file_atomically(ctx.options.out_dir + "/vrep_teapot.csv", csv.str());
   write_file_atomically(ctx.options.out_dir + "/vrep_teapot.svg", teapot_vmodel_svg(E));
   write_file_atomically(ctx.options.out_dir + "/vrep_teapot.vtk", teapot_vmodel_vtk(E));
-  ctx.markdown["vrep-teapot"] = md.str();
+  ctx.markdown["vrep-teapot"] = ReportTemplate("vrep-teapot")
+                                    .set("boxes", boxes)
+                                    .set("cell_rows", cell_rows.str())
+                                    .set("edge_rows", edge_rows.str())
+                                    .set("volume_rows", volume_rows.str())
+                                    .set("budgets", budgets)
+                                    .set("vcells", vcells)
+                                    .set("cover", cover)
+                                    .set("trivariates", trivariates.str())
+                                    .set("exact_s", fmt(exact_s + E.seconds_solids))
+                                    .set("double_s", fmt(double_s + D.seconds_solids))
+                                    .set("exact_over_double", fmt((exact_s + E.seconds_solids) / std::max(1e-9, double_s + D.seconds_solids), 3))
+                                    .render();
 }
 
 }  // namespace splinex

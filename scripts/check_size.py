@@ -21,6 +21,11 @@ and an `_impl.hpp` (template definitions) is included only by its own folder's .
 `_impl.hpp` files of the folder and its `instantiate.hpp`, where its templates are instantiated for
 the arithmetics the folder names; other folders compile against declarations. The includes across
 folders there when the rule came in are listed (`impl FILE INCLUDED`); the list may only shrink.
+Prose (issue 48 item 9): report.md's words live in experiments/report/*.md templates
+(experiments/report_template.hpp), not in C++ string literals: no literal in experiments/ (adjacent
+literals joined, raw strings skipped) that holds Markdown prose (a `##` heading, a table rule `|---`,
+a link or image `](`, a paragraph break followed by text) or a sentence of 25 words or more outside
+an SVG element; files that still hold some are listed (`prose PATH COUNT`), and the list may only shrink.
 
 Functions are found by a brace scanner, not a compiler: comments, strings and character literals
 are blanked, and a `{` at namespace or class scope that follows `)` (with qualifiers, an arrow
@@ -246,8 +251,73 @@ def impl_breaches(rel, text, code):
     return pairs, in_header
 
 
+def string_literals(text):
+    """The C++ string literals of `text` as (line, value), adjacent ones joined as the compiler joins
+    them; comments, character literals and raw strings (data: embedded documents) skipped."""
+    out, i, n, line, open_at = [], 0, len(text), 1, None
+    while i < n:
+        c = text[i]
+        if c == "\n":
+            line, i = line + 1, i + 1
+            continue
+        if text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        if text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            line, i = line + text.count("\n", i, j), j
+            continue
+        if c == "R" and text.startswith('"', i + 1) and not (i and (text[i - 1].isalnum() or text[i - 1] == "_")):
+            k = text.find("(", i + 2)
+            end = text.find(")" + text[i + 2:k] + '"', k)
+            j = n if k < 0 or end < 0 else end + k - i
+            line, i, open_at = line + text.count("\n", i, j), j, None
+            continue
+        if c == "'" and not (i and text[i - 1].isalnum()):  # (a digit separator is not a literal)
+            j = i + 1
+            while j < n and text[j] not in "'\n":
+                j += 2 if text[j] == "\\" else 1
+            i = j + 1
+            continue
+        if c == '"':
+            j, value = i + 1, []
+            while j < n and text[j] != '"':
+                if text[j] == "\\" and j + 1 < n:
+                    value.append({"n": "\n", "t": "\t"}.get(text[j + 1], text[j + 1]))
+                    j += 2
+                else:
+                    value.append(text[j])
+                    j += 1
+            if open_at is not None and text[open_at:i].strip() == "":
+                out[-1] = (out[-1][0], out[-1][1] + "".join(value))
+            else:
+                out.append((line, "".join(value)))
+            line, i = line + text.count("\n", i, j), j + 1
+            open_at = i
+            continue
+        if not c.isspace():
+            open_at = None
+        i += 1
+    return out
+
+
+MARKDOWN = re.compile(r"(^|\n)#{2,4} \w|\|---|\]\(|\n\n[*\w(`!-]")
+
+
+def prose_count(rel, text):
+    """How many string literals of an experiments/ source hold report prose (the docstring's rule)."""
+    if not rel.startswith("experiments/"):
+        return 0
+    return sum(1 for _, v in string_literals(text)
+               if MARKDOWN.search(v) or (len(v.split()) >= 25 and not v.lstrip().startswith("<")))
+
+
 def measure():
     files, funcs, json_files = {}, {}, set()
+    global PROSE
+    PROSE = {}
     points = []
     verdicts, verdict_texts = set(), set()
     global IMPL, IMPL_IN_HEADER
@@ -262,6 +332,8 @@ def measure():
             if size > funcs.get(key, 0):
                 funcs[key] = size
         code = blank(text)
+        if prose_count(rel, text):
+            PROSE[rel] = prose_count(rel, text)
         points += point_breaches(rel, code)
         enums, as_text = verdict_breaches(rel, text, code)
         verdicts |= enums
@@ -277,7 +349,7 @@ def measure():
 
 
 def read_allow():
-    allow = {"file": {}, "function": {}, "json": set(), "verdict": set(), "verdict-text": set(), "impl": set()}
+    allow = {"file": {}, "function": {}, "json": set(), "verdict": set(), "verdict-text": set(), "impl": set(), "prose": {}}
     if not ALLOW.exists():
         return allow
     for n, line in enumerate(ALLOW.read_text().splitlines(), 1):
@@ -289,11 +361,11 @@ def read_allow():
             allow[parts[0]].add(parts[1])
         elif parts[0] == "impl" and len(parts) == 3:
             allow["impl"].add((parts[1], parts[2]))
-        elif parts[0] in ("file", "function") and len(parts) == 3:
+        elif parts[0] in ("file", "function", "prose") and len(parts) == 3:
             allow[parts[0]][parts[1]] = int(parts[2])
         else:
             sys.exit(f"{ALLOW.relative_to(ROOT)}:{n}: expected 'file PATH LINES', 'function PATH::NAME LINES', 'json PATH', "
-                     "'verdict PATH::ENUM', 'verdict-text PATH' or 'impl FILE INCLUDED'")
+                     "'verdict PATH::ENUM', 'verdict-text PATH', 'impl FILE INCLUDED' or 'prose PATH COUNT'")
     return allow
 
 
@@ -334,6 +406,14 @@ def self_test():
             ok_pairs != {("vrep/y.cpp", "compose/compose_impl.hpp")}:
         print(f"self-test failed: instantiation rule found {pairs}, {in_header}, {ok_pairs}")
         return 1
+    planted_prose = ('// "## not a literal"\nmd << "\\n## Heading\\n\\n" "Text";\nconst char* d = R"(## data)";\n'
+                     'o << "<text>" "a b c d e f g h i j k l m n o p q r s t u v w x y</text>";\n'
+                     'w << "a b c d e f g h i j k l m n o p q r s t u v w x y z";\nchar q = \'"\';\n')
+    lits = string_literals(planted_prose)
+    if prose_count("experiments/x.cpp", planted_prose) != 2 or [l for l, _ in lits] != [2, 4, 5] or lits[0][1] != "\n## Heading\n\nText" \
+            or prose_count("vrep/x.cpp", planted_prose):
+        print(f"self-test failed: the prose rule found {lits}")
+        return 1
     found = point_breaches("vrep/x.cpp", blank(planted))
     if [b.split(":")[1] for b in found] != ["1", "2"] or point_breaches("base/point.hpp", planted):
         print(f"self-test failed: point placement found {found}, expected lines 1 and 2 only")
@@ -341,7 +421,8 @@ def self_test():
     print("self-test: the scanner measures planted long functions (plain, braced default arguments, braced member "
           "initialisers, operator()) and skips comments, strings, lambdas and blocks; the placement rule finds a "
           "planted point alias, a written-out cross product, a three-valued enum, a verdict as text, template definitions "
-          "included across folders and from a header, and an explicit instantiation in a header")
+          "included across folders and from a header, an explicit instantiation in a header, and report prose in joined "
+          "string literals (not in comments, raw strings or SVG text)")
     return 0
 
 
@@ -364,6 +445,8 @@ def main():
             print(f"verdict-text {f}")
         for f, i in sorted(IMPL):
             print(f"impl {f} {i}")
+        for f, k in sorted(PROSE.items()):
+            print(f"prose {f} {k}")
         return 0
     allow = read_allow()
     bad = []
@@ -399,6 +482,16 @@ def main():
     for f, i in sorted(allow["impl"] - IMPL):
         bad.append(f"{ALLOW.name}: impl {f} {i} is gone: strike it from the list")
     bad += IMPL_IN_HEADER
+    for f, k in sorted(PROSE.items()):
+        if f not in allow["prose"]:
+            bad.append(f"{f}: {k} string literal(s) of report prose: move the words into a template, experiments/report/*.md "
+                       "(experiments/report_template.hpp)")
+        elif k > allow["prose"][f]:
+            bad.append(f"{f}: {k} string literals of report prose, more than its allowance of {allow['prose'][f]}: the list may only shrink")
+    for f, was in sorted(allow["prose"].items()):
+        if PROSE.get(f, 0) < was:
+            bad.append(f"{ALLOW.name}: prose {f} holds {PROSE.get(f, 0)} literal(s) of prose now: lower its allowance from {was} "
+                       "(strike it at 0)")
     for b in bad:
         print(b)
     if not bad:
@@ -406,8 +499,9 @@ def main():
         nfn = sum(1 for n in funcs.values() if n > FUNCTION_BUDGET)
         print(f"size: {len(files)} files, {len(funcs)} functions; over the budget and allowed: "
               f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/, "
-              f"{len(allow['verdict'])} three-valued enums, {len(allow['verdict-text'])} files with verdicts as text outside base/ "
-              f"and {len(allow['impl'])} template definitions included across folders")
+              f"{len(allow['verdict'])} three-valued enums, {len(allow['verdict-text'])} files with verdicts as text outside base/, "
+              f"{len(allow['impl'])} template definitions included across folders and {sum(allow['prose'].values())} literals of "
+              "report prose outside the templates")
     return 1 if bad else 0
 
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "spline/basis.hpp"
+#include "spline/basis_sum.hpp"
 #include "spline/bernstein.hpp"
 #include "spline/evaluate.hpp"
 
@@ -158,6 +159,13 @@ void evaluate_homogeneous_into(const BSpline<T>& S, const T* x, T* out, EvalScra
 }
 
 }  // namespace detail
+
+template <class T>
+std::vector<T> basis_sum(const BSpline<T>& S, const std::vector<std::size_t>& span, const std::vector<const std::vector<T>*>& B) {
+  std::vector<T> out;
+  detail::tensor_sum(S, span, B, out);
+  return out;
+}
 
 template <class T>
 std::vector<T> evaluate_homogeneous(const BSpline<T>& S, const std::vector<T>& x) {

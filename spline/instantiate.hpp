@@ -13,6 +13,8 @@
   template std::vector<T> evaluate_de_boor(const BSpline<T>&, const std::vector<T>&);                         \
   template std::vector<T> evaluate_points(const BSpline<T>&, const std::vector<T>&);                          \
   template std::vector<T> evaluate_homogeneous(const BSpline<T>&, const std::vector<T>&);                      \
+  template std::vector<T> basis_sum(const BSpline<T>&, const std::vector<std::size_t>&,                        \
+                                    const std::vector<const std::vector<T>*>&);                                \
   template std::vector<T> derivative(const BSpline<T>&, const std::vector<T>&, const std::vector<int>&);        \
   template BSpline<T> insert_knot(const BSpline<T>&, int, const T&, int, const Limits&);                       \
   template BSpline<T> refine_knots(const BSpline<T>&, int, std::vector<T>, const Limits&);                     \

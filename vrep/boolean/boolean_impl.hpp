@@ -14,7 +14,7 @@
 #include "spline/evaluate.hpp"
 #include "spline/knots.hpp"
 #include "vrep/boolean/boolean.hpp"
-#include "vrep/boolean/boolean_junctions.hpp"  // vrep_detail::find_corner_junctions
+#include "vrep/boolean/boolean_junctions_impl.hpp"  // vrep_detail::find_corner_junctions
 #include "vrep/boolean/volume_impl.hpp"  // cell_volume, volume_enclosure, vrep_detail::box_integral_bounds
 #include "vrep/model/planted.hpp"
 #include "vrep/model/trivariate_impl.hpp"  // vrep_detail::greville

@@ -2,11 +2,14 @@
 #pragma once
 #include <array>
 #include <deque>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "base/errors.hpp"
 #include "bernstein/subdivide.hpp"
 #include "bernstein/tensor.hpp"
-#include "compose/compose_impl.hpp"
+#include "compose/compose.hpp"
 #include "spline/bezier.hpp"
 #include "spline/knots.hpp"
 #include "vrep/model/brackets.hpp"
@@ -90,6 +93,28 @@ Bernstein<T> jacobian_numerator(const BSpline<T>& piece) {
 template <class T>
 std::pair<Bernstein<T>, Bernstein<T>> split_half(const Bernstein<T>& b, int l) {
   return bern_split(b, l, T(1) / T(2));
+}
+
+/// The halves of a subdivision box across its widest parameter side (the first of equal ones):
+/// each keeps the box's other members, takes half of its range [lo, hi], and every leaf
+/// polynomial the box carries (G[l]; an empty one is not carried and stays empty) is split there
+/// (split_half). Used by the trimmed classification and the trimmed topology's covers.
+template <class Box>
+void halve_widest(Box x, Box (&c)[2]) {
+  int dir = 0;
+  for (int d = 1; d < static_cast<int>(x.lo.size()); ++d)
+    if ((x.hi[dir] - x.lo[dir]) < (x.hi[d] - x.lo[d])) dir = d;
+  using T = std::decay_t<decltype(x.lo[0])>;
+  const T mid = (x.lo[dir] + x.hi[dir]) / T(2);
+  auto G = std::move(x.G);
+  x.G.clear();
+  c[0] = x;
+  c[1] = std::move(x);
+  c[0].hi[dir] = mid;
+  c[1].lo[dir] = mid;
+  for (Box& h : c) h.G.resize(G.size());
+  for (std::size_t l = 0; l < G.size(); ++l)
+    if (!G[l].c.empty()) std::tie(c[0].G[l], c[1].G[l]) = split_half(G[l], dir);
 }
 
 /// det J's numerator degrees, checked against the limits before any work: the degree limit per

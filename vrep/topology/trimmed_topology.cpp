@@ -134,24 +134,6 @@ Truth forced_truth(const Region<T>& R, std::vector<Truth> leaf, std::size_t k, T
 
 const char* kDirName[3] = {"u", "v", "w"};
 
-/// The halves of a subdivision box (its leaves' polynomials and its parameter range) across its
-/// widest parameter direction.
-template <class Box>
-void halve(const Box& x, Box (&c)[2]) {
-  int dir = 0;
-  for (int d = 1; d < static_cast<int>(x.lo.size()); ++d)
-    if ((x.hi[dir] - x.lo[dir]) < (x.hi[d] - x.lo[d])) dir = d;
-  for (auto& h : c) {
-    h.lo = x.lo;
-    h.hi = x.hi;
-    h.G.resize(x.G.size());
-  }
-  for (std::size_t l = 0; l < x.G.size(); ++l) std::tie(c[0].G[l], c[1].G[l]) = vrep_detail::split_half(x.G[l], dir);
-  const auto mid = (x.lo[dir] + x.hi[dir]) / 2;
-  c[0].hi[dir] = mid;
-  c[1].lo[dir] = mid;
-}
-
 /// A cover by a breadth-first refinement (bernstein/subdivide.hpp): the boxes roots(emit) makes,
 /// halved while open(box) says the box is undecided and the cover has fewer than `budget` boxes;
 /// the cover's boxes, the decided ones in the order they were made, then the undecided ones.
@@ -164,7 +146,7 @@ std::vector<Box> refine_cover(Roots&& roots, std::size_t budget, Open&& open) {
       roots, Order::breadth_first, b, [&](Box& x) { return open(x) ? Examined::split : Examined::settled; },
       [](Box&& x, int, auto&& emit) {
         Box c[2];
-        halve(x, c);
+        vrep_detail::halve_widest(std::move(x), c);
         emit(std::move(c[0]));
         emit(std::move(c[1]));
       },

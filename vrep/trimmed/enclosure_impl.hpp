@@ -389,17 +389,24 @@ class IntegralRun {
     return false;
   }
 
+  // The range of the integrand Q / W^p over the box from its coefficients: Q's coefficient range,
+  // divided by W^p's for a rational cell (ratio_bounds).
+  void integrand_range(const Cell& cell, const SBern<T>& Q, int p, const T& wmin, const T& wmax, T& lo, T& hi) const {
+    T qmin, qmax;
+    coefficient_range(Q, qmin, qmax);
+    if (cell.rational) {
+      ratio_bounds(qmin, qmax, wmin, wmax, p, lo, hi);
+    } else {
+      lo = qmin;
+      hi = qmax;
+    }
+  }
+
   // One surface the formula follows, a graph over a face of the box (GraphCut).
   void graph_bounds(Box& b, Cell& cell, const T& wmin, const T& wmax, GraphCut<T>& graph) {
     // The whole box's integral of Q / W^p between none and all of it (the coefficient ratios).
     auto trivial = [&](const SBern<T>& Q, int p, T& lo, T& hi) {
-      T qmin, qmax;
-      coefficient_range(Q, qmin, qmax);
-      if (cell.rational) ratio_bounds(qmin, qmax, wmin, wmax, p, lo, hi);
-      else {
-        lo = qmin;
-        hi = qmax;
-      }
+      integrand_range(cell, Q, p, wmin, wmax, lo, hi);
       lo = std::min(T(0), lo);
       hi = std::max(T(0), hi);
     };
@@ -502,13 +509,7 @@ class IntegralRun {
     }
     T dmin, dmax;
     auto part = [&](const SBern<T>& Q, int p, T& lo, T& hi) {
-      T qmin, qmax;
-      coefficient_range(Q, qmin, qmax);
-      if (cell.rational) ratio_bounds(qmin, qmax, wmin, wmax, p, dmin, dmax);
-      else {
-        dmin = qmin;
-        dmax = qmax;
-      }
+      integrand_range(cell, Q, p, wmin, wmax, dmin, dmax);
       lo = b.vol * (f_lo * dmin + (f_hi - f_lo) * std::min(T(0), dmin));
       hi = b.vol * (f_lo * dmax + (f_hi - f_lo) * std::max(T(0), dmax));
       if (plant == vrep_testing::EnclosurePlant::drop_crossing) lo = hi = T(0);

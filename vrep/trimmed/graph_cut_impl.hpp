@@ -229,7 +229,7 @@ bool graph_along(const SBern<T>& G, int k, int sign_k, const T& m, bool part_is_
     const std::size_t n[3] = {static_cast<std::size_t>(G.deg[0]) + 1, static_cast<std::size_t>(G.deg[1]) + 1,
                               static_cast<std::size_t>(G.deg[2]) + 1};
     const std::size_t stride[3] = {1, n[0], n[0] * n[1]};
-    T lo, hi;
+    T lo(0), hi(0);  // (degree 0 along k: no difference, and no monotonicity claimed below)
     bool first = true;
     for (std::size_t i = 0; i < v.c.size(); ++i) {
       if ((i / stride[k]) % n[k] == n[k] - 1) continue;

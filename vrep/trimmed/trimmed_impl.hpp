@@ -75,21 +75,8 @@ CellClass<T> run_trim(const BSpline<T>& V, const Region<T>& trim, std::size_t ma
   // Halves across the widest parameter side (exact de Casteljau on the leaves it carries).
   auto split = [&](Box&& b, int, auto&& emit) {
     carried.remove(CarriedCoefficients::of(b.G));
-    int dir = 0;
-    for (int d = 1; d < 3; ++d)
-      if ((b.hi[dir] - b.lo[dir]) < (b.hi[d] - b.lo[d])) dir = d;
     Box c[2];
-    for (int h = 0; h < 2; ++h) {
-      c[h].lo = b.lo;
-      c[h].hi = b.hi;
-      c[h].G.resize(b.G.size());
-      c[h].lt = b.lt;
-    }
-    for (std::size_t l = 0; l < b.G.size(); ++l)
-      if (!b.G[l].c.empty()) std::tie(c[0].G[l], c[1].G[l]) = split_half(b.G[l], dir);
-    const T mid = (b.lo[dir] + b.hi[dir]) / T(2);
-    c[0].hi[dir] = mid;
-    c[1].lo[dir] = mid;
+    halve_widest(std::move(b), c);
     emit(std::move(c[0]));
     emit(std::move(c[1]));
   };
