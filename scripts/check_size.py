@@ -332,8 +332,9 @@ def measure():
             if size > funcs.get(key, 0):
                 funcs[key] = size
         code = blank(text)
-        if prose_count(rel, text):
-            PROSE[rel] = prose_count(rel, text)
+        prose = prose_count(rel, text)
+        if prose:
+            PROSE[rel] = prose
         points += point_breaches(rel, code)
         enums, as_text = verdict_breaches(rel, text, code)
         verdicts |= enums
