@@ -27,14 +27,14 @@ auto run_compose(const Options& o, const Context& ctx) {
     TensorOptions to;
     to.boundary = o.eps_option->count() > 0 ? TrimBoundary::polyline : TrimBoundary::exact;
     to.eps = o.eps;
-    return with_arith_except_flint(spec, "compose --method tensor", [&](auto tag) {
+    return with_arith<TensorArithmetics>(spec, "compose --method tensor", [&](auto tag) {
       using F = typename decltype(tag)::type;
       return document(
           compose_tensor(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), to, ctx.limits));
     });
   }
   if (o.method == "trimmed")
-    return with_arith(spec, [&](auto tag) {
+    return with_arith<ComposeArithmetics>(spec, "compose", [&](auto tag) {
       using F = typename decltype(tag)::type;
       return document(
           compose_trimmed(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), {}, ctx.limits), o.eps);
@@ -42,7 +42,7 @@ auto run_compose(const Options& o, const Context& ctx) {
   CompositionOptions co;
   co.method = o.method == "interpolation" ? CompositionMethod::interpolation : CompositionMethod::symbolic;
   co.expand = o.expand;
-  return with_arith(spec, [&](auto tag) {
+  return with_arith<ComposeArithmetics>(spec, "compose", [&](auto tag) {
     using F = typename decltype(tag)::type;
     return document(compose(round_spline<F>(T, "outer"), round_spline<F>(S, "inner"), co, ctx.limits));
   });

@@ -30,7 +30,7 @@ Commands add_eval(CLI::App& app) {
                ord = whole_numbers(parse_number_list(o->orders, "derivative"), "derivative", 1000,
                                    "orders must be whole numbers in [0, 1000]", "write e.g. --derivative \"1,0\"");
              const auto spec = ArithSpec::parse(o->arith);
-             print_document(with_arith(spec, [&](auto tag) {
+             print_document(with_arith<KernelArithmetics>(spec, "eval", [&](auto tag) {
                using T = typename decltype(tag)::type;
                const auto Sf = round_spline<T>(S);
                const std::vector<T> xf = round_values<T>(x, "at");

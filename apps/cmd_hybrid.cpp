@@ -37,7 +37,7 @@ int run_eval(const Options& o, const Context& ctx) {
     xs.push_back({v[0], v[1]});
   }
   const auto spec = ArithSpec::parse(o.arith);
-  print_document(with_arith_except_flint(spec, "hybrid eval", [&](auto tag) {
+  print_document(with_arith<HybridArithmetics>(spec, "hybrid eval", [&](auto tag) {
     return hybrid_points_document<typename decltype(tag)::type>(P, xs);
   }));
   return 0;

@@ -36,7 +36,7 @@ void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
 }
 
 auto run_op_document(const Operation& op, const BSpline<Rational>& S, const ArithSpec& spec, const Limits& limits) {
-  return with_arith(spec, [&](auto tag) {
+  return with_arith<KernelArithmetics>(spec, op.name(), [&](auto tag) {
     using T = typename decltype(tag)::type;
     const BSpline<T> in = round_spline<T>(S);
     if (op.kind == Operation::Kind::extract_bezier) return document(extract_bezier(in, limits));

@@ -40,7 +40,7 @@ int run_untrim(const Options& o, const Context& ctx) {
   }
   if (f && f->q != 1) throw ValidationError("density", "has " + std::to_string(f->q) + " coordinates", "give a scalar density (q = 1)");
   const auto spec = ArithSpec::parse(o.arith);
-  print_document(with_arith_except_flint(spec, "untrim", [&](auto tag) {
+  print_document(with_arith<UntrimArithmetics>(spec, "untrim", [&](auto tag) {
     return untrim_document(untrim_run<typename decltype(tag)::type>(D, S, f, knot_lines, ctx.limits));
   }));
   return 0;

@@ -64,7 +64,7 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
     need(o.vector, "vector", o.kind);
     const auto S = read_spline(o.surface, "surface", ctx);
     const auto V = parse_number_list(o.vector, "vector");
-    return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
       using F = typename decltype(tag)::type;
       std::vector<F> v;
       for (const auto& x : V) v.push_back(round_checked<F>(x, "vector"));
@@ -75,7 +75,7 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
     need(o.first, "first", o.kind);
     need(o.second, "second", o.kind);
     const auto A = read_spline(o.first, "first", ctx), B = read_spline(o.second, "second", ctx);
-    return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
       using F = typename decltype(tag)::type;
       return document(ruled(round_spline<F>(A, "first"), round_spline<F>(B, "second"), ctx.limits));
     });
@@ -84,7 +84,7 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
     need(o.surface, "surface", o.kind);
     const auto S = read_spline(o.surface, "surface", ctx);
     const int axis = o.axis == "x" ? 0 : o.axis == "y" ? 1 : 2;
-    return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
       using F = typename decltype(tag)::type;
       return document(revolve(round_spline<F>(S, "surface"), axis, o.quarters, ctx.limits));
     });
@@ -97,7 +97,7 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
     const char* names[6] = {"u0", "u1", "v0", "v1", "w0", "w1"};
     std::array<std::array<BSpline<Rational>, 2>, 3> F;
     for (int k = 0; k < 6; ++k) F[k / 2][k % 2] = read_spline(files[k], names[k], ctx);
-    return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
       using T = typename decltype(tag)::type;
       std::array<std::array<BSpline<T>, 2>, 3> G;
       for (int k = 0; k < 6; ++k) G[k / 2][k % 2] = round_spline<T>(F[k / 2][k % 2], names[k]);
@@ -111,7 +111,7 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
   const auto files = split_list(o.surfaces);
   for (std::size_t k = 0; k < files.size(); ++k) S.push_back(read_spline(files[k], "surfaces[" + std::to_string(k) + "]", ctx));
   const auto at = parse_number_list(o.at, "at");
-  return with_arith_except_flint(spec, "vrep construct", [&](auto tag) {
+  return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
     using F = typename decltype(tag)::type;
     std::vector<BSpline<F>> s;
     for (std::size_t k = 0; k < S.size(); ++k) s.push_back(round_spline<F>(S[k], "surfaces[" + std::to_string(k) + "]"));
@@ -214,7 +214,7 @@ Command vrep_certify(CLI::App* v) {
   return {cert, [co](const Context& ctx) {
     const auto V = read_spline(co->file, "trivariate", ctx);
     const auto spec = ArithSpec::parse(co->arith);
-    print_document(with_arith_except_flint(spec, "vrep certify", [&](auto tag) {
+    print_document(with_arith<VrepArithmetics>(spec, "vrep certify", [&](auto tag) {
       using F = typename decltype(tag)::type;
       return vrep::document(certify_regularity(round_spline<F>(V, "trivariate"), co->levels, ctx.limits));
     }), 2);
@@ -244,7 +244,7 @@ Command vrep_primitive(CLI::App* v) {
 
   return {prim, [po](const Context& ctx) {
     const auto spec = ArithSpec::parse(po->arith);
-    print_document(with_arith_except_flint(spec, "vrep primitive", [&](auto tag) {
+    print_document(with_arith<VrepArithmetics>(spec, "vrep primitive", [&](auto tag) {
       using F = typename decltype(tag)::type;
       const int axis = po->axis == "x" ? 0 : po->axis == "y" ? 1 : 2;
       std::vector<F> at;

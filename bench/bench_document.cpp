@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
       const std::string a = rest.substr(0, comma);
       rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
       const ArithSpec spec = ArithSpec::parse(a);
-      with_arith(spec, [&](auto tag) {
+      with_arith<KernelArithmetics>(spec, "bench_document", [&](auto tag) {
         using T = typename decltype(tag)::type;
         auto in = std::make_shared<BSpline<T>>(round_spline<T>(S, "input"));
         run_operation<T>(o, *in, Limits{});  // a bad operation is an error here, not inside the timing

@@ -1,6 +1,7 @@
 // The certified subdivision engine: one loop for every budgeted examination of boxes (regularity
-// of trivariates, cell shapes, the V-rep's trimming curves and regions, the subdivision solver,
-// the cutting checks). Each use supplies what a box is, how it is examined and how it splits, as
+// of trivariates, cell shapes, the V-rep's trimming curves, regions, surface traces, Euler
+// characteristic and glue witnesses, the subdivision solver, the cutting checks and separation
+// certificates). Each use supplies what a box is, how it is examined and how it splits, as
 // Arrangement_2 writes its sweep once against a traits class; the engine owns the order, the
 // budget and the stop reason.
 //
@@ -15,14 +16,17 @@
 // would make more than max_alive boxes wait at once (Left::alive, the memory budget); the loop
 // goes on with the others, or stops at the first box left when the walk says so (a claim that one
 // undecided box already leaves undecided). After max_boxes examinations it stops, and every
-// waiting box is left (Left::boxes). Depth-first pops the last child emitted first; breadth-first
-// the first. The result is deterministic: it depends on the order, never on timing.
+// waiting box is left (Left::boxes): with depth first, the last one left is the one that would
+// have been examined next. A goal of the whole, reached(), ends the walk before the next
+// examination (Stop::reached; the waiting boxes are dropped). Depth-first pops the last child
+// emitted first (emit the children in reverse to examine them in order, as a recursion would);
+// breadth-first the first. The result is deterministic: it depends on the order, never on timing.
 //
 // The second form, refine(), refines a partition (adaptive quadrature, covers of a region): every
 // box is examined once, when it is made, and stays in the partition until it is split; the budget
 // counts the partition's boxes, and a goal of the whole (a width reached, both sides witnessed)
 // can end it. Its uses: the V-rep's trimmed classification, the covers of trimmed topology, the
-// enclosures of integrals over trimmed and freeform cells.
+// enclosures of integrals over trimmed cells and of rational cells' volumes.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -66,7 +70,7 @@ struct Walk {
 
 /// What a subdivision did, and why it stopped.
 struct Subdivision {
-  enum class Stop { complete, refuted, boxes, left, reached };  // reached: refine()'s goal
+  enum class Stop { complete, refuted, boxes, left, reached };  // reached: the goal of the whole
   Stop stop = Stop::complete;
   std::size_t examined = 0;    // boxes examined
   std::size_t boxes = 0;       // refine(): the partition's boxes at the end (open ones included)
@@ -78,10 +82,17 @@ struct Subdivision {
   bool decided() const { return stop == Stop::complete && left == 0; }
 };
 
-/// One subdivision from `roots` (depth 0).
-template <class Box, class Examine, class Split, class Leave>
+/// No goal of the whole: a subdivision runs until no box waits, a refutation, or the budget.
+struct NoGoal {
+  bool operator()() const { return false; }
+};
+
+/// One subdivision from `roots` (depth 0). reached(), checked before each examination, is a goal of
+/// the whole (enough witnesses found): when it holds the walk stops (Stop::reached) and the boxes
+/// still waiting are dropped, neither examined nor left.
+template <class Box, class Examine, class Split, class Leave, class Reached = NoGoal>
 Subdivision subdivide(std::vector<Box> roots, const Walk& walk, const Budget& budget, Examine&& examine, Split&& split,
-                      Leave&& leave) {
+                      Leave&& leave, Reached&& reached = Reached{}) {
   struct Node {
     Box box;
     int depth;
@@ -100,6 +111,10 @@ Subdivision subdivide(std::vector<Box> roots, const Walk& walk, const Budget& bu
     return out.stop == Subdivision::Stop::left;
   };
   while (!waiting.empty()) {
+    if (reached()) {
+      out.stop = Subdivision::Stop::reached;
+      break;
+    }
     if (out.examined >= budget.max_boxes) {
       out.stop = Subdivision::Stop::boxes;
       while (!waiting.empty()) {

@@ -224,7 +224,7 @@ CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, cons
   const auto E = run_operation(op, input, limits);
   rep.seconds_exact = std::chrono::duration<double>(clock::now() - t0).count();
   rep.results = E.size();
-  with_arith(fl, [&](auto tag) {
+  with_arith<KernelArithmetics>(fl, "crosscheck", [&](auto tag) {
     using T = typename decltype(tag)::type;
     rep.precision = ArithTraits<T>::precision_bits();
     const auto t1 = clock::now();

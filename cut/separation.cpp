@@ -1,7 +1,10 @@
 #include "cut/separation.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <type_traits>
 
+#include "bernstein/subdivide.hpp"
 #include "compose/compose.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
@@ -63,12 +66,35 @@ bool point_in_strip(const Ctx& c, const std::array<Rational, 2>& x) {
   return false;
 }
 
-// A Bezier piece of a facet on [s0, s1] (its own knots), on side `positive`.
-bool examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool positive, int depth) {
-  if (++c.examined > c.options.max_pieces) {
-    c.result.undecided.push_back({facet, piece.domain_lo(0), piece.domain_hi(0)});
+// One boundary piece's certificate, depth first on the engine (bernstein/subdivide.hpp), halves in
+// order: check(piece, depth) settles it (in the strip, or f*'s Bezier coefficients of the right
+// sign on it), refutes it (a witness) or splits it at halve(piece, depth); a piece at
+// options.max_depth is recorded undecided and the walk goes on. The budget of options.max_pieces
+// counts the pieces of all boundary pieces (c.examined); the piece found over it is recorded
+// undecided and ends the certificate. False when the certificate ends (a witness or the budget).
+template <class C, class Check, class Halve, class Record>
+bool walk_piece(C& c, const BSpline<Rational>& root, Check&& check, Halve&& halve, Record&& record) {
+  Budget budget;
+  budget.max_boxes = c.options.max_pieces - std::min(c.examined, c.options.max_pieces);
+  budget.max_depth = c.options.max_depth;
+  std::optional<BSpline<Rational>> next;  // the piece that would have been examined next
+  auto leave = [&](BSpline<Rational>&& piece, Left why) {
+    if (why == Left::boxes) next = std::move(piece);
+    else record(piece);
+  };
+  const Subdivision run =
+      subdivide(std::vector<BSpline<Rational>>{root}, Walk{Order::depth_first, 2, false}, budget, check, halve, leave);
+  c.examined += run.examined;
+  if (run.stop == Subdivision::Stop::boxes) {
+    ++c.examined;
+    record(*next);
     return false;
   }
+  return run.stop != Subdivision::Stop::refuted;
+}
+
+// A Bezier piece of a facet on [s0, s1] (its own knots), on side `positive`.
+Examined examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool positive) {
   Rational lo[2], hi[2];
   for (int a = 0; a < 2; ++a) lo[a] = hi[a] = piece.points[a];
   for (std::size_t i = 0; i < piece.size(); ++i)
@@ -79,7 +105,7 @@ bool examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool pos
     }
   if (box_in_strip(c, lo, hi)) {
     ++c.result.excluded;
-    return true;
+    return Examined::settled;
   }
   const auto [x0, x1] = segments_meeting(c.form.breaks[0], lo[0], hi[0]);
   const auto [y0, y1] = segments_meeting(c.form.breaks[1], lo[1], hi[1]);
@@ -97,7 +123,7 @@ bool examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool pos
     }
   if (all) {
     ++c.result.pieces;
-    return true;
+    return Examined::settled;
   }
   // Witnesses: exact values at the ends and the middle.
   const Rational s0 = piece.domain_lo(0), s1 = piece.domain_hi(0), sm = (s0 + s1) / 2;
@@ -108,16 +134,18 @@ bool examine(Ctx& c, std::size_t facet, const BSpline<Rational>& piece, bool pos
     const Rational v = evaluate(c.f, std::vector<Rational>{x[0], x[1]})[0];
     if (positive ? !(v > 0) : !(v < 0)) {
       c.result.witness = SeparationWitness{facet, s, x, v, positive};
-      return false;
+      return Examined::refuted;
     }
   }
-  if (depth >= c.options.max_depth) {
-    c.result.undecided.push_back({facet, s0, s1});
-    return true;  // go on: a violation elsewhere still decides
-  }
-  const auto [a, b] = split_at(piece, 0, sm);
-  return examine(c, facet, a, positive, depth + 1) && examine(c, facet, b, positive, depth + 1);
+  return Examined::split;  // at max_depth: undecided, and the walk goes on (a violation elsewhere still decides)
 }
+
+// Depth first takes the last half emitted first: the first half, then the second.
+const auto halve_curve = [](BSpline<Rational>&& piece, int, auto&& emit) {
+  auto [a, b] = split_at(piece, 0, (piece.domain_lo(0) + piece.domain_hi(0)) / 2);
+  emit(std::move(b));
+  emit(std::move(a));
+};
 
 }  // namespace
 
@@ -133,7 +161,10 @@ SeparationResult certify_separation(const Solid2<Rational>& solid, const CutData
     for (const auto& bz : extract_bezier(P.curve)) {
       const Rational mid = (bz.spline.domain_lo(0) + bz.spline.domain_hi(0)) / 2;
       const bool positive = on_arc(P.facet, mid, cut.ends[0], cut.ends[1]);
-      if (!examine(c, P.facet, bz.spline, positive, 0)) {
+      const std::size_t facet = P.facet;
+      if (!walk_piece(
+              c, bz.spline, [&](const BSpline<Rational>& piece, int) { return examine(c, facet, piece, positive); }, halve_curve,
+              [&](const BSpline<Rational>& piece) { c.result.undecided.push_back({facet, piece.domain_lo(0), piece.domain_hi(0)}); })) {
         go = false;
         break;
       }
@@ -157,17 +188,13 @@ struct Ctx3 {
   std::size_t examined = 0;
 };
 
-bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool positive, int depth) {
+Examined examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool positive) {
   const std::array<Rational, 2> plo{piece.domain_lo(0), piece.domain_lo(1)}, phi{piece.domain_hi(0), piece.domain_hi(1)};
-  if (++c.examined > c.options.max_pieces) {
-    c.result.undecided.push_back({facet, plo, phi});
-    return false;
-  }
   const auto box = control_bounds(piece);
   const std::array<Rational, 3> lo{box[0], box[1], box[2]}, hi{box[3], box[4], box[5]};
   if (box_in_loop_strip(c.loop, lo, hi, c.strip)) {
     ++c.result.excluded;
-    return true;
+    return Examined::settled;
   }
   std::array<std::pair<std::size_t, std::size_t>, 3> range;
   for (int a = 0; a < 3; ++a) range[a] = segments_meeting(c.form.breaks[a], lo[a], hi[a]);
@@ -185,7 +212,7 @@ bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool p
       }
   if (all) {
     ++c.result.pieces;
-    return true;
+    return Examined::settled;
   }
   // Witnesses: exact values at the corners and the middle.
   const std::array<Rational, 2> mid{(plo[0] + phi[0]) / 2, (plo[1] + phi[1]) / 2};
@@ -197,17 +224,19 @@ bool examine3(Ctx3& c, std::size_t facet, const BSpline<Rational>& piece, bool p
     const Rational v = evaluate(c.f, std::vector<Rational>{x[0], x[1], x[2]})[0];
     if (positive ? !(v > 0) : !(v < 0)) {
       c.result.witness = SeparationWitness3{facet, s, x, v, positive};
-      return false;
+      return Examined::refuted;
     }
   }
-  if (depth >= c.options.max_depth) {
-    c.result.undecided.push_back({facet, plo, phi});
-    return true;
-  }
-  const int d = depth % 2;
-  const auto [a, b] = split_at(piece, d, mid[d]);
-  return examine3(c, facet, a, positive, depth + 1) && examine3(c, facet, b, positive, depth + 1);
+  return Examined::split;
 }
+
+// Halved across s and t in turn; the first half first.
+const auto halve_patch = [](BSpline<Rational>&& piece, int depth, auto&& emit) {
+  const int d = depth % 2;
+  auto [a, b] = split_at(piece, d, (piece.domain_lo(d) + piece.domain_hi(d)) / 2);
+  emit(std::move(b));
+  emit(std::move(a));
+};
 
 }  // namespace
 
@@ -219,7 +248,11 @@ SeparationResult3 certify_separation(const Solid3<Rational>& solid, const std::v
   bool go = true;
   for (std::size_t i = 0; i < solid.facets.size() && go; ++i)
     for (const auto& bz : extract_bezier(solid.facets[i]))
-      if (!examine3(c, i, bz.spline, in_b[i], 0)) {
+      if (!walk_piece(
+              c, bz.spline, [&](const BSpline<Rational>& piece, int) { return examine3(c, i, piece, in_b[i]); }, halve_patch,
+              [&](const BSpline<Rational>& piece) {
+                c.result.undecided.push_back({i, {piece.domain_lo(0), piece.domain_lo(1)}, {piece.domain_hi(0), piece.domain_hi(1)}});
+              })) {
         go = false;
         break;
       }

@@ -485,20 +485,25 @@ std::vector<LoopElem> loop_elements(const Solid2<Rational>& S, const SimpleLoopO
         throw ValidationError(facet_field(i), "has a piece of zero length on parameters [" + to_fraction_string(e.s0) + ", " + to_fraction_string(e.s1) +
                                                   "] (all its control points are " + point_text(e.p[0], true) + ")",
                               "remove the repeated control points or knots, so every piece of the facet is a curve");
-      std::vector<LoopElem> todo{std::move(e)};
-      while (!todo.empty()) {
-        LoopElem x = std::move(todo.back());
-        todo.pop_back();
-        if (injective(x.p)) {
-          out.push_back(std::move(x));
-          continue;
-        }
-        if (x.depth >= o.max_depth)
-          throw ValidationError(facet_field(i), "turns back on itself (a cusp, its direction reversing) near parameter " + to_fraction_string(x.s0) + ": the loop is not simple",
-                                "give facets whose direction does not reverse");
+      // Halved depth first on the engine until every piece is injective; one that is not at
+      // o.max_depth turns back on itself.
+      Budget depth_only;
+      depth_only.max_depth = o.max_depth;
+      auto examine = [&](LoopElem& x, int) {
+        if (!injective(x.p)) return Examined::split;
+        out.push_back(std::move(x));
+        return Examined::settled;
+      };
+      auto split = [](LoopElem&& x, int, auto&& emit) {
         auto [l, r] = halves(x);
-        todo.push_back(std::move(r)), todo.push_back(std::move(l));
-      }
+        emit(std::move(r));  // depth first: the left half first
+        emit(std::move(l));
+      };
+      auto leave = [&](LoopElem&& x, Left) {
+        throw ValidationError(facet_field(i), "turns back on itself (a cusp, its direction reversing) near parameter " + to_fraction_string(x.s0) + ": the loop is not simple",
+                              "give facets whose direction does not reverse");
+      };
+      subdivide(std::vector<LoopElem>{std::move(e)}, Walk{Order::depth_first, 2, true}, depth_only, examine, split, leave);
     }
   length = Rational(k);
   return out;

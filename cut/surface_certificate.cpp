@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <deque>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -354,23 +353,20 @@ bool certify_collision(SurfaceValidity& V, const Solid3<Rational>& solid, const 
     for (const auto& bz : extract_bezier(solid.facets[i])) fboxes.push_back({i, control_bounds(bz.spline)});
   bool collided = false, col_undecided = false;
   if (!V.witness) {
-    std::deque<std::pair<BSpline<Rational>, int>> q;
-    for (const auto& pc : pieces) q.emplace_back(pc.spline, 0);
+    // Breadth first on the engine: a piece that meets Omega is examined against the budget of
+    // o.max_pieces (pieces outside Omega are not counted) and split until o.max_depth; a piece left
+    // at either limit is counted undecided.
     std::size_t examined = 0;
-    while (!q.empty()) {
-      auto [pc, depth] = q.front();
-      q.pop_front();
+    Budget budget;
+    budget.max_depth = o.max_depth;
+    auto examine = [&](const BSpline<Rational>& pc, int) {
       const P2 lo{pc.domain_lo(0), pc.domain_lo(1)}, hi{pc.domain_hi(0), pc.domain_hi(1)};
-      if (!box_meets_polygon(lo, hi, poly)) continue;
-      if (++examined > o.max_pieces) {
-        ++V.collision_undecided;
-        col_undecided = true;
-        continue;
-      }
+      if (!box_meets_polygon(lo, hi, poly)) return Examined::settled;
+      if (++examined > o.max_pieces) return Examined::left;
       const auto box = control_bounds(pc);
       if (box_in_loop_strip(loop, {box[0], box[1], box[2]}, {box[3], box[4], box[5]}, o.strip)) {
         ++V.collision_excluded;
-        continue;
+        return Examined::settled;
       }
       bool meets = false;
       for (const auto& fb : fboxes)
@@ -380,7 +376,7 @@ bool certify_collision(SurfaceValidity& V, const Solid3<Rational>& solid, const 
         }
       if (!meets) {
         ++V.collision_pieces;
-        continue;
+        return Examined::settled;
       }
       if (membership) {
         const P2 w{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
@@ -393,21 +389,27 @@ bool certify_collision(SurfaceValidity& V, const Solid3<Rational>& solid, const 
                                                    *mb == Membership::outside ? "p(w) lies outside the solid (exact ray parity): the surface crosses the boundary"
                                                                               : "p(w) lies on a facet, away from the loop"};
               collided = true;
-              break;
+              return Examined::refuted;
             }
           }
         }
       }
-      if (depth >= o.max_depth) {
-        ++V.collision_undecided;
-        col_undecided = true;
-        continue;
-      }
+      return Examined::split;
+    };
+    auto split = [](BSpline<Rational>&& pc, int, auto&& emit) {
+      const P2 lo{pc.domain_lo(0), pc.domain_lo(1)}, hi{pc.domain_hi(0), pc.domain_hi(1)};
       const int d = (hi[0] - lo[0] >= hi[1] - lo[1]) ? 0 : 1;
       auto [l, r] = split_at(pc, d, Rational((lo[d] + hi[d]) / 2));
-      q.emplace_back(std::move(l), depth + 1);
-      q.emplace_back(std::move(r), depth + 1);
-    }
+      emit(std::move(l));
+      emit(std::move(r));
+    };
+    auto leave = [&](BSpline<Rational>&&, Left) {
+      ++V.collision_undecided;
+      col_undecided = true;
+    };
+    std::vector<BSpline<Rational>> roots;
+    for (const auto& pc : pieces) roots.push_back(pc.spline);
+    subdivide(std::move(roots), Walk{Order::breadth_first, 2, false}, budget, examine, split, leave);
   }
   V.collision = collided       ? Verdict::refuted(V.witness->detail)
                 : col_undecided ? Verdict::undecided(std::to_string(V.collision_undecided) + " pieces left undecided at --max-depth")

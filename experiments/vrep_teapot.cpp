@@ -257,9 +257,15 @@ void vrep_teapot_section(ReportContext& ctx) {
         << to_double(row.cell.volume.upper) << "," << row.cell.cls.boxes << "," << row.cell.cls.mixed << "," << row.cell.queries << ","
         << row.cell.systems << "," << row.seconds << "\n";
   };
+  std::string differing;
+  std::size_t n_differing = 0;
   for (std::size_t k = 0; k < E.cells.size(); ++k) {
     const auto& e = E.cells[k];
     const auto& d = D.cells[k];
+    if (!same_boxes(e.cell, d.cell)) {
+      differing += (differing.empty() ? "" : ", ") + e.name;
+      ++n_differing;
+    }
     vcells += e.cell.components;
     cover += e.cell.cover_components;
     exact_s += e.seconds;
@@ -347,6 +353,8 @@ void vrep_teapot_section(ReportContext& ctx) {
                                     .set("exact_s", fmt(exact_s + E.seconds_solids))
                                     .set("double_s", fmt(double_s + D.seconds_solids))
                                     .set("exact_over_double", fmt((exact_s + E.seconds_solids) / std::max(1e-9, double_s + D.seconds_solids), 3))
+                                    .when("same_partition", n_differing == 0)
+                                    .set("differing", n_differing == 0 ? std::string("") : std::to_string(n_differing) + " of " + std::to_string(E.cells.size()) + " cells (" + differing + ")")
                                     .render();
 }
 

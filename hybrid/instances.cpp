@@ -1,13 +1,10 @@
-// The hybrid patch and its form (papers/003) instantiated for every standard arithmetic, so client
-// code compiles against declarations only.
-#include "exact/rational.hpp"
-#include "float/mpfr.hpp"
+// The hybrid patch and its form (papers/003) instantiated for the hybrid package's arithmetics
+// (SPLINEX_HYBRID_ARITHMETICS, float/arith_spec.hpp), so client code compiles against declarations only.
+#include "float/arith_spec.hpp"
 #include "hybrid/instantiate.hpp"
 
 namespace splinex {
 
-SPLINEX_INSTANTIATE_HYBRID(Rational)
-SPLINEX_INSTANTIATE_HYBRID(double)
-SPLINEX_INSTANTIATE_HYBRID(Mpfr)
+SPLINEX_HYBRID_ARITHMETICS(SPLINEX_INSTANTIATE_HYBRID)
 
 }  // namespace splinex

@@ -1,9 +1,7 @@
 #!/usr/bin/env python3
 """Checks that every #include "folder/..." in a library folder names a folder it may depend on
-(docs/ARCHITECTURE.md): the dependency direction of the targets, enforced on the sources.
-And one placement: SVG is written only by experiments/svg.cpp (svg::Canvas: a viewBox, titles and
-captions wrapped to the width); no other C++ source opens an svg element, in code or in a string.
-The SVG rule is checked on a planted text at every run."""
+(docs/ARCHITECTURE.md): the dependency direction of the targets, enforced on the sources. The
+placement rules (JSON, points, verdicts, instantiation, report prose, SVG) are scripts/check_size.py's."""
 import re
 import sys
 from pathlib import Path
@@ -41,23 +39,6 @@ def layer_of(path):
     return parts[0] if len(parts) > 1 else None
 
 
-SVG_WRITER = "experiments/svg.cpp"
-SVG_OPEN = re.compile(r"<svg\b")
-
-
-def svg_breaches(rel, text):
-    """Lines of a C++ source other than the one SVG writer that open an svg element."""
-    if rel == SVG_WRITER:
-        return []
-    return [f"{rel}:{n}: writes SVG by hand: draw on svg::Canvas (experiments/svg.hpp), the one SVG writer"
-            for n, line in enumerate(text.splitlines(), 1) if SVG_OPEN.search(line)]
-
-
-def svg_rule_finds_planted():
-    planted = 'o << "<svg xmlns=\\"http://www.w3.org/2000/svg\\" width=\\"" << W << "\\">";\no << "</svg>\\n";\n'
-    return [b.split(":")[1] for b in svg_breaches("experiments/x.cpp", planted)] == ["1"] and not svg_breaches(SVG_WRITER, planted)
-
-
 def closure(folder):
     seen, todo = {folder}, [folder]
     while todo:
@@ -81,18 +62,10 @@ def main():
                 if target in DIRECT and target not in allowed:
                     bad.append(f"{f.relative_to(ROOT)}:{n}: includes {target}/, but {folder}/ may depend only on "
                                + ", ".join(sorted(allowed - {folder})))
-    if not svg_rule_finds_planted():
-        bad.append("check_layering.py: the SVG rule missed a planted hand-written svg element")
-    sources = set()
-    for folder in {d.split("/")[0] for d in DIRECT} | {"bench", "examples", "fuzz", "tests"}:
-        if (ROOT / folder).is_dir():
-            sources |= set((ROOT / folder).rglob("*.[ch]pp"))
-    for f in sorted(sources):
-        bad += svg_breaches(str(f.relative_to(ROOT)), f.read_text(errors="replace"))
     for b in bad:
         print(b)
     if not bad:
-        print(f"layering: {len(DIRECT)} folders, every include points down; SVG only from {SVG_WRITER}")
+        print(f"layering: {len(DIRECT)} folders, every include points down")
     return 1 if bad else 0
 
 

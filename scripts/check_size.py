@@ -26,6 +26,9 @@ Prose (issue 48 item 9): report.md's words live in experiments/report/*.md templ
 literals joined, raw strings skipped) that holds Markdown prose (a `##` heading, a table rule `|---`,
 a link or image `](`, a paragraph break followed by text) or a sentence of 25 words or more outside
 an SVG element; files that still hold some are listed (`prose PATH COUNT`), and the list may only shrink.
+SVG (issue 48 item 9): written only by experiments/svg.cpp (svg::Canvas: a viewBox, titles and
+captions wrapped to their width); no other C++ source opens an svg element, in code or in a string
+(no allowance).
 
 Functions are found by a brace scanner, not a compiler: comments, strings and character literals
 are blanked, and a `{` at namespace or class scope that follows `)` (with qualifiers, an arrow
@@ -306,6 +309,18 @@ def string_literals(text):
 MARKDOWN = re.compile(r"(^|\n)#{2,4} \w|\|---|\]\(|\n\n[*\w(`!-]")
 
 
+SVG_WRITER = "experiments/svg.cpp"
+SVG_OPEN = re.compile(r"<svg\b")
+
+
+def svg_breaches(rel, text):
+    """Lines of a C++ source other than the one SVG writer that open an svg element."""
+    if rel == SVG_WRITER:
+        return []
+    return [f"{rel}:{n}: writes SVG by hand: draw on svg::Canvas (experiments/svg.hpp), the one SVG writer"
+            for n, line in enumerate(text.splitlines(), 1) if SVG_OPEN.search(line)]
+
+
 def prose_count(rel, text):
     """How many string literals of an experiments/ source hold report prose (the docstring's rule)."""
     if not rel.startswith("experiments/"):
@@ -319,6 +334,8 @@ def measure():
     global PROSE
     PROSE = {}
     points = []
+    global SVG
+    SVG = []
     verdicts, verdict_texts = set(), set()
     global IMPL, IMPL_IN_HEADER
     IMPL, IMPL_IN_HEADER = set(), []
@@ -336,6 +353,7 @@ def measure():
         if prose:
             PROSE[rel] = prose
         points += point_breaches(rel, code)
+        SVG += svg_breaches(rel, text)
         enums, as_text = verdict_breaches(rel, text, code)
         verdicts |= enums
         if as_text:
@@ -415,6 +433,11 @@ def self_test():
             or prose_count("vrep/x.cpp", planted_prose):
         print(f"self-test failed: the prose rule found {lits}")
         return 1
+    planted_svg = 'o << "<svg xmlns=\\"http://www.w3.org/2000/svg\\" width=\\"" << W << "\\">";\no << "</svg>\\n";\n'
+    got_svg = [b.split(":")[1] for b in svg_breaches("experiments/x.cpp", planted_svg)]
+    if got_svg != ["1"] or svg_breaches(SVG_WRITER, planted_svg):
+        print(f"self-test failed: the SVG rule found lines {got_svg} of a planted hand-written svg element")
+        return 1
     found = point_breaches("vrep/x.cpp", blank(planted))
     if [b.split(":")[1] for b in found] != ["1", "2"] or point_breaches("base/point.hpp", planted):
         print(f"self-test failed: point placement found {found}, expected lines 1 and 2 only")
@@ -422,8 +445,8 @@ def self_test():
     print("self-test: the scanner measures planted long functions (plain, braced default arguments, braced member "
           "initialisers, operator()) and skips comments, strings, lambdas and blocks; the placement rule finds a "
           "planted point alias, a written-out cross product, a three-valued enum, a verdict as text, template definitions "
-          "included across folders and from a header, an explicit instantiation in a header, and report prose in joined "
-          "string literals (not in comments, raw strings or SVG text)")
+          "included across folders and from a header, an explicit instantiation in a header, report prose in joined "
+          "string literals (not in comments, raw strings or SVG text) and a hand-written svg element")
     return 0
 
 
@@ -483,6 +506,7 @@ def main():
     for f, i in sorted(allow["impl"] - IMPL):
         bad.append(f"{ALLOW.name}: impl {f} {i} is gone: strike it from the list")
     bad += IMPL_IN_HEADER
+    bad += SVG
     for f, k in sorted(PROSE.items()):
         if f not in allow["prose"]:
             bad.append(f"{f}: {k} string literal(s) of report prose: move the words into a template, experiments/report/*.md "
@@ -502,7 +526,7 @@ def main():
               f"{nf} files, {nfn} functions, {len(allow['json'])} files with JSON outside io/, "
               f"{len(allow['verdict'])} three-valued enums, {len(allow['verdict-text'])} files with verdicts as text outside base/, "
               f"{len(allow['impl'])} template definitions included across folders and {sum(allow['prose'].values())} literals of "
-              "report prose outside the templates")
+              "report prose outside the templates; SVG only from " + SVG_WRITER)
     return 1 if bad else 0
 
 

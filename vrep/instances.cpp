@@ -1,4 +1,6 @@
-// The V-rep templates instantiated for the exact and float arithmetics.
+// The V-rep templates instantiated for the V-rep's arithmetics (SPLINEX_VREP_ARITHMETICS,
+// float/arith_spec.hpp).
+#include "float/arith_spec.hpp"
 #include "float/mpfr.hpp"
 #include "float/rounding.hpp"
 #include "spline/bezier.hpp"
@@ -192,12 +194,7 @@ const char* regularity_name(const Verdict& v) {
   template IntegralEnclosures<T> integral_enclosures(const std::vector<IntegrandCell<T>>&, const std::vector<int>&, const T&, std::size_t, const Limits&); \
   template std::vector<std::string> check_region(const VModel<T>&, const Region<T>&, const TrimOptions&, const Limits&);
 
-SPLINEX_INSTANTIATE_TRIMMED(Rational)
-SPLINEX_INSTANTIATE_TRIMMED(double)
-SPLINEX_INSTANTIATE_TRIMMED(Mpfr)
-
-SPLINEX_INSTANTIATE_VREP(Rational)
-SPLINEX_INSTANTIATE_VREP(double)
-SPLINEX_INSTANTIATE_VREP(Mpfr)
+SPLINEX_VREP_ARITHMETICS(SPLINEX_INSTANTIATE_TRIMMED)
+SPLINEX_VREP_ARITHMETICS(SPLINEX_INSTANTIATE_VREP)
 
 }  // namespace splinex

@@ -129,6 +129,21 @@ TEST_CASE("subdivide: every budget names itself, and the walk goes on or stops a
     CHECK(r.left == 6);  // the root and 10 children made, 5 of them examined: 6 waiting
     CHECK(why == std::vector<Left>(6, Left::boxes));
   }
+  SECTION("boxes, depth first: the last box left is the one that would have been examined next") {
+    // Depth first from [0, 1] examines [0, 1], [1/2, 1], [3/4, 1], [7/8, 1], ... ; after 3, [7/8, 1] is next.
+    std::vector<std::string> left_boxes, seen;
+    auto record = [&](const Interval& b, int) {
+      seen.push_back(text(b));
+      return Examined::split;
+    };
+    Budget b;
+    b.max_boxes = 3;
+    const auto r = subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{Order::depth_first, 2, false}, b, record, halves,
+                             [&](Interval&& x, Left) { left_boxes.push_back(text(x)); });
+    CHECK(r.stop == Subdivision::Stop::boxes);
+    CHECK(seen == std::vector<std::string>{"[0, 1]", "[1/2, 1]", "[3/4, 1]"});
+    CHECK(left_boxes == std::vector<std::string>{"[0, 1/2]", "[1/2, 3/4]", "[3/4, 7/8]", "[7/8, 1]"});
+  }
   SECTION("alive: a split that would make too many boxes wait leaves the box instead") {
     Budget b;
     b.max_alive = 4;
@@ -152,6 +167,30 @@ TEST_CASE("subdivide: every budget names itself, and the walk goes on or stops a
     CHECK(r.stop == Subdivision::Stop::refuted);
     CHECK(r.examined == 2);
     CHECK(r.left == 0);
+  }
+  SECTION("reached: the goal of the whole, checked before each examination, ends the walk; the waiting boxes are dropped") {
+    // Witnesses: boxes of width 1/4 (found in breadth-first order); three are enough.
+    std::vector<std::string> found;
+    auto find = [&](const Interval& b, int) {
+      if (b.hi - b.lo != Rational(1, 4)) return Examined::split;
+      found.push_back(text(b));
+      return Examined::settled;
+    };
+    const auto r = subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{}, Budget{}, find, halves, leave,
+                             [&]() { return found.size() >= 3; });
+    CHECK(r.stop == Subdivision::Stop::reached);
+    CHECK(r.examined == 6);  // the root, two halves, three quarters
+    CHECK(r.left == 0);
+    CHECK(why.empty());
+    CHECK(found == std::vector<std::string>{"[0, 1/4]", "[1/4, 1/2]", "[1/2, 3/4]"});
+    // A goal that holds at once examines nothing; one never reached runs to completion.
+    found.clear();
+    const auto none = subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{}, Budget{}, find, halves, leave, []() { return true; });
+    CHECK(none.stop == Subdivision::Stop::reached);
+    CHECK(none.examined == 0);
+    const auto all = subdivide(std::vector<Interval>{{Rational(0), Rational(1)}}, Walk{}, Budget{}, find, halves, leave, []() { return false; });
+    CHECK(all.stop == Subdivision::Stop::complete);
+    CHECK(found.size() == 4);
   }
 }
 

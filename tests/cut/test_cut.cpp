@@ -282,6 +282,18 @@ TEST_CASE("cut: a sample-feasible RDCP solution that leaves the solid is refuted
   const auto R2 = guide_curve<Rational>(e.solid, e.cut, o);
   REQUIRE(R2.status == QPStatus::optimal);
   CHECK(certify_separation(R2.solid, R2.cut, R2.f, o.strip).verdict.is_proved());
+  // The budget of pieces counts every piece of every boundary piece; the one found over it is
+  // listed undecided and ends the certificate (no witness, no proof).
+  for (std::size_t budget : {std::size_t(1), std::size_t(2)}) {
+    SeparationOptions tight;
+    tight.max_pieces = budget;
+    const auto cut_short = certify_separation(R2.solid, R2.cut, R2.f, o.strip, tight);
+    CHECK(cut_short.verdict.is_undecided());
+    CHECK_FALSE(cut_short.witness);
+    CHECK(cut_short.undecided.size() == 1);
+    CHECK(cut_short.pieces + cut_short.excluded <= budget);
+    CHECK(cut_short.verdict.reason().rfind("1 boundary piece(s) left undecided at the subdivision budget", 0) == 0);
+  }
 }
 
 TEST_CASE("cut: the cutting curve fitted to the guide, certified valid, and the solid split exactly", "[cut]") {

@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "float/arith_spec.hpp"
@@ -73,11 +76,97 @@ TEST_CASE("MPFR values have exactly the requested precision and convert exactly"
   CHECK_THROWS_AS(Mpfr::Precision(23), UsageError);
 }
 
-TEST_CASE("arithmetic names") {
+TEST_CASE("arithmetic names", "[arith]") {
   CHECK(ArithSpec::parse("exact").is_exact());
   CHECK(ArithSpec::parse("double").kind == ArithSpec::Kind::dbl);
   CHECK(ArithSpec::parse("mpfr:24").bits == 24);
   CHECK(ArithSpec::parse("mpfr:4096").name() == "mpfr:4096");
   for (const char* bad : {"float", "mpfr", "mpfr:", "mpfr:23", "mpfr:abc", "mpfr:99999999", "Exact"})
     CHECK_THROWS_AS(ArithSpec::parse(bad), UsageError);
+}
+
+namespace {
+
+/// The spec naming T (mpfr at 77 bits, so the precision scope is seen).
+template <class T>
+ArithSpec spec_of() {
+  return ArithSpec::parse(std::is_same_v<T, Mpfr> ? std::string("mpfr:77") : std::string(ArithOf<T>::name));
+}
+
+/// with_arith<List> runs f in T for every T of the list: the tag's type, the row's name, MPFR's bits.
+template <class... T>
+void check_dispatch(Arithmetics<T...>) {
+  using List = Arithmetics<T...>;
+  auto one = [](auto want) {
+    using W = typename decltype(want)::type;
+    const std::string got = with_arith<List>(spec_of<W>(), "test", [](auto tag) {
+      using G = typename decltype(tag)::type;
+      static_assert((std::is_same_v<G, T> || ...), "f instantiated for an arithmetic outside the list");
+      CHECK(std::is_same_v<G, W>);
+      return ArithTraits<G>::name();
+    });
+    CHECK(got == spec_of<W>().name());
+  };
+  (one(ArithTag<T>{}), ...);
+}
+
+std::string refusal(const std::string& arith, auto list) {
+  try {
+    with_arith<decltype(list)>(ArithSpec::parse(arith), "vrep construct", [](auto) { return 0; });
+  } catch (const UsageError& e) {
+    CHECK(e.field() == "arith");
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("the arithmetics are one table: every row's name round-trips", "[arith]") {
+  std::vector<ArithSpec::Kind> kinds;
+  for (const auto& row : arith_rows) {
+    const std::string name = row.kind == ArithSpec::Kind::mpfr ? "mpfr:113" : row.name;
+    CAPTURE(name);
+    const auto spec = ArithSpec::parse(name);
+    CHECK(spec.kind == row.kind);
+    CHECK(spec.name() == name);
+    // The row's type carries the row's name: a row naming the wrong type fails here.
+    CHECK(with_arith<KernelArithmetics>(spec, "test", [](auto tag) { return ArithTraits<typename decltype(tag)::type>::name(); }) == name);
+    for (auto k : kinds) CHECK(k != row.kind);
+    kinds.push_back(row.kind);
+  }
+  CHECK(kinds.size() == 4);
+  CHECK(std::string(arith_rows[3].name) == "mpfr:BITS");
+  CHECK(ArithSpec::parse("flint").is_exact());
+  CHECK(!ArithSpec::parse("mpfr:64").is_exact());
+  CHECK_THROWS_WITH(ArithSpec::parse("quad"),
+                    "arith: unknown arithmetic \"quad\" (fix: use exact, flint, double, or mpfr:BITS with 24 <= BITS <= 1000000)");
+}
+
+TEST_CASE("with_arith dispatches each package's list to its types", "[arith]") {
+  const auto bits = Mpfr::current_bits();
+  REQUIRE(bits != 77);
+  check_dispatch(KernelArithmetics{});
+  check_dispatch(ComposeArithmetics{});
+  check_dispatch(TensorArithmetics{});
+  check_dispatch(UntrimArithmetics{});
+  check_dispatch(HybridArithmetics{});
+  check_dispatch(VrepArithmetics{});
+  check_dispatch(Arithmetics<double>{});
+  CHECK(std::is_same_v<VrepArithmetics, Arithmetics<Rational, double, Mpfr>>);
+  CHECK(std::is_same_v<HybridArithmetics, Arithmetics<Rational, double, Mpfr>>);
+  CHECK(Mpfr::current_bits() == bits);  // the scope (mpfr:77, checked by the name) ended with the call
+}
+
+TEST_CASE("with_arith refuses an arithmetic outside the list, naming the list", "[arith]") {
+  CHECK(refusal("flint", VrepArithmetics{}) ==
+        "arith: vrep construct runs in exact, double or mpfr:BITS (not flint) (fix: use --arith exact, double or mpfr:BITS)");
+  CHECK(refusal("exact", Arithmetics<double>{}) == "arith: vrep construct runs in double (not exact) (fix: use --arith double)");
+  CHECK(refusal("flint", Arithmetics<double>{}) == "arith: vrep construct runs in double (not flint) (fix: use --arith double)");
+  CHECK(refusal("mpfr:64", Arithmetics<double>{}) == "arith: vrep construct runs in double (not mpfr:64) (fix: use --arith double)");
+  CHECK(refusal("double", Arithmetics<double>{}) == "no error");
+  CHECK(refusal("exact", Arithmetics<Rational, Mpfr>{}) == "no error");
+  CHECK(refusal("double", Arithmetics<Rational, Mpfr>{}) ==
+        "arith: vrep construct runs in exact or mpfr:BITS (not double) (fix: use --arith exact or mpfr:BITS)");
+  for (const char* a : {"exact", "flint", "double", "mpfr:64"}) CHECK(refusal(a, KernelArithmetics{}) == "no error");
 }

@@ -3,6 +3,7 @@
 // implicit path, certified component counts, the teapot's handle meeting its body twice.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "base/errors.hpp"
@@ -90,6 +91,35 @@ TEST_CASE("vrep freeform: boxes cut by a freeform box: exact volumes enclosed, t
   CHECK(none.cls.kind == CellClass<R>::empty);
   CHECK(none.volume.upper == R(0));
   CHECK(none.components == 0);
+}
+
+TEST_CASE("vrep freeform: same_boxes tells a double run that decided every box as the exact one from planted differences") {
+  const auto V = box({R(0), R(0), R(0)}, {R(2), R(2), R(2)});
+  // Dyadic data: the double run reads exactly the exact run's input.
+  const auto U = freeform_solid<R>("U", {box({R(1, 4), R(-1), R(-1)}, {R(3), R(3), R(3)})});
+  const auto e = cell(V, {{&U, true}}, 256);
+  const auto Vd = box_cells<double>({0, 0, 0}, {2, 2, 2}).front();
+  const auto Ud = freeform_solid<double>("U", {box_cells<double>({0.25, -1, -1}, {3, 3, 3}).front()});
+  FreeformOptions o;
+  o.max_boxes = 256;
+  const auto d = freeform_cell(Vd, {{&Ud, true}}, o);
+  REQUIRE(e.boxes.size() > 2);
+  CHECK(same_boxes(e, d));
+  auto moved = d;  // one bound an ulp off
+  moved.boxes[1].hi[0] = std::nextafter(moved.boxes[1].hi[0], 10.0);
+  CHECK_FALSE(same_boxes(e, moved));
+  auto flipped = d;  // one truth changed
+  flipped.boxes[0].truth = flipped.boxes[0].truth == Truth::in ? Truth::mixed : Truth::in;
+  CHECK_FALSE(same_boxes(e, flipped));
+  auto fewer = d;  // one box missing
+  fewer.boxes.pop_back();
+  CHECK_FALSE(same_boxes(e, fewer));
+  auto swapped = d;  // the same boxes in another order
+  std::swap(swapped.boxes.front(), swapped.boxes.back());
+  CHECK(same_boxes(e, swapped));
+  auto doubled = d;  // a box twice in place of another
+  doubled.boxes.back() = doubled.boxes.front();
+  CHECK_FALSE(same_boxes(e, doubled));
 }
 
 TEST_CASE("vrep freeform: component counts are certified lower bounds (two slabs through a bar)") {

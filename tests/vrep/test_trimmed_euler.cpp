@@ -81,6 +81,26 @@ TEST_CASE("vrep trimmed euler: a box, with a cavity, two cavities, a tunnel, cut
   require_decided(trimmed_euler(V, region_not(region_or<R>({rod(R(1), R(1), R(1, 3)), ball({R(1), R(1), R(1)}, R(2, 3))}))), 0);
 }
 
+TEST_CASE("vrep trimmed euler: each budget names itself, per attempt and in all") {
+  // A ball strictly inside the first octant of every split fraction (1/2, 7/16, 13/32 of [0, 2]):
+  // one halving per direction cannot make every leaf monotone on the cell holding its centre.
+  const auto V = box(R(0), R(2));
+  const auto trim = ball({R(2, 3), R(2, 3), R(2, 3)}, R(1, 4));
+  require_decided(trimmed_euler(V, trim), 1);
+  EulerOptions shallow;
+  shallow.max_level = 1;
+  const auto e = trimmed_euler(V, trim, shallow);
+  CHECK_FALSE(e.decided);
+  CHECK(e.undecided_reason.rfind("no monotone direction within 1 halvings near (u, v, w) = (", 0) == 0);
+  // The cell budget: each of the three attempts examines max_cells cells and meets one more.
+  EulerOptions few;
+  few.max_cells = 5;
+  const auto f = trimmed_euler(V, trim, few);
+  CHECK_FALSE(f.decided);
+  CHECK(f.undecided_reason.rfind("the budget of 5 cells is spent near (u, v, w) = (", 0) == 0);
+  CHECK(f.cells == 3 * 6);
+}
+
 TEST_CASE("vrep trimmed euler: genus by tunnels, exactly") {
   const auto V = box(R(0), R(2));
   // Two parallel tunnels along z: genus 2, chi = 1 - 2.

@@ -3,11 +3,11 @@
 // box_integral_bounds is also used by vrep/freeform/freeform.cpp). Internal: template definitions,
 // included by vrep/boolean/boolean_impl.hpp and instantiated in vrep/instances.cpp.
 #pragma once
-#include <queue>
 #include <string>
 #include <vector>
 
 #include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
 #include "spline/bezier.hpp"
 #include "spline/integrate.hpp"
 #include "vrep/boolean/boolean.hpp"
@@ -114,32 +114,28 @@ VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, 
   };
   auto bounds = [](Box& b) { vrep_detail::box_integral_bounds(b.N, b.W, b.vol, b.lo, b.hi); };
   const auto variation = [](const Bernstein<T>& b, int l) { return vrep_detail::coefficient_variation(b, l); };
-  auto wider = [](const Box& a, const Box& b) { return (a.hi - a.lo) < (b.hi - b.lo); };
-  std::priority_queue<Box, std::vector<Box>, decltype(wider)> queue(wider);
   VolumeEnclosure<T> out;
   const auto pieces = extract_bezier(V, limits);
-  for (const auto& pc : pieces) {
-    Box b{vrep_detail::jacobian_numerator(pc.spline), vrep_detail::homogeneous(pc.spline, 0), T(1), T(0), T(0)};
-    if (!V.is_rational()) {
-      // Polynomial: the integral of N over the unit cube is the mean of its coefficients, exactly.
-      T sum(0);
-      for (const auto& x : b.N.c) sum += x;
-      out.lower += sum / T(static_cast<long>(b.N.c.size()));
-      continue;
-    }
-    bounds(b);
-    queue.push(std::move(b));
-  }
   if (!V.is_rational()) {
+    // Polynomial: the integral of N over the unit cube is the mean of its coefficients, exactly.
+    for (const auto& pc : pieces) {
+      const Bernstein<T> N = vrep_detail::jacobian_numerator(pc.spline);
+      T sum(0);
+      for (const auto& x : N.c) sum += x;
+      out.lower += sum / T(static_cast<long>(N.c.size()));
+    }
     out.upper = out.lower;
     if (out.lower < T(0)) out.lower = out.upper = -out.lower;
     out.boxes = pieces.size();
     return out;
   }
-  while (queue.size() < max_boxes) {
-    Box b = queue.top();
-    if (b.hi == b.lo) break;
-    queue.pop();
+  // Rational: best first on the engine (bernstein/subdivide.hpp: refine), the widest enclosure
+  // halved first, until the partition holds max_boxes boxes or every box's bounds meet.
+  auto examine = [&](Box& b) {
+    bounds(b);
+    return b.hi == b.lo ? Examined::settled : Examined::split;
+  };
+  auto halve = [&](Box&& b, int, auto&& emit) {
     // Halve it across the direction where W varies most (N's if W is constant there).
     int dir = 0;
     T best(-1);
@@ -162,18 +158,21 @@ VolumeEnclosure<T> volume_enclosure(const BSpline<T>& V, std::size_t max_boxes, 
     }
     auto [N0, N1] = vrep_detail::split_half(b.N, dir);
     auto [W0, W1] = vrep_detail::split_half(b.W, dir);
-    Box c0{std::move(N0), std::move(W0), b.vol / T(2), T(0), T(0)}, c1{std::move(N1), std::move(W1), b.vol / T(2), T(0), T(0)};
-    bounds(c0);
-    bounds(c1);
-    queue.push(std::move(c0));
-    queue.push(std::move(c1));
-  }
-  out.boxes = queue.size();
-  while (!queue.empty()) {
-    out.lower += queue.top().lo;
-    out.upper += queue.top().hi;
-    queue.pop();
-  }
+    emit(Box{std::move(N0), std::move(W0), b.vol / T(2), T(0), T(0)});
+    emit(Box{std::move(N1), std::move(W1), b.vol / T(2), T(0), T(0)});
+  };
+  auto close = [&](Box&& b, bool) {
+    out.lower += b.lo;
+    out.upper += b.hi;
+  };
+  Budget budget;
+  budget.max_boxes = max_boxes;
+  const Subdivision run = refine_from<Box>(
+      [&](auto&& emit) {
+        for (const auto& pc : pieces) emit(Box{vrep_detail::jacobian_numerator(pc.spline), vrep_detail::homogeneous(pc.spline, 0), T(1), T(0), T(0)});
+      },
+      Order::best_first, budget, examine, halve, []() { return false; }, close, [](const Box& b) { return T(b.hi - b.lo); });
+  out.boxes = run.boxes;
   if (out.upper < T(0)) {  // negatively oriented: the volume is the integral's magnitude
     const T l = -out.upper;
     out.upper = -out.lower;

@@ -130,6 +130,11 @@ template <class T>
 FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options = {},
                               const Limits& limits = {});
 
+/// Whether a double run of freeform_cell decided every box as the exact run did: the same boxes
+/// (the double bounds exactly equal to the exact ones) with the same truths, in any order.
+/// Where it holds, the runs' volume bounds differ by rounding only.
+bool same_boxes(const FreeformCell<Rational>& exact, const FreeformCell<double>& dbl);
+
 /// The edges of a freeform-trimmed cell, exactly (the part of the cell's topology on V's edges, as
 /// trimmed_topology gives it for implicit trims): the corners of V's domain inside the cell (every
 /// condition decided by a point query), and per edge of V's domain its V-curves (runs inside the

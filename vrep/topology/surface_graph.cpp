@@ -144,41 +144,27 @@ struct Trace {
 
 template <class T>
 bool trace(const Bernstein<T>& h0, const std::vector<Bernstein<T>>& tracked0, int max_depth, std::size_t& budget, Trace& out) {
+  static const char* const unresolved =
+      "the trace of a trimming surface on a face of a box stays unresolved (tangent to the face, singular, or crossed by two surfaces at one point)";
   const std::size_t nt = tracked0.size();
   out.crossings.assign(nt, 0);
+  // Depth first on the engine, halving across u and v in turn; `budget` (shared by the caller's
+  // traces) counts the halvings. A rectangle that stays open at max_depth or with the budget spent
+  // ends the trace (false).
   struct Q {
     Bernstein<T> h;
     std::vector<Bernstein<T>> o;
-    int depth;
   };
-  std::vector<Q> stack{{h0, tracked0, 0}};
   const T half = T(1) / T(2);
-  while (!stack.empty()) {
-    Q q = std::move(stack.back());
-    stack.pop_back();
-    if (bern_sign(q.h) != 0) continue;
+  auto examine = [&](const Q& q, int) {
+    if (bern_sign(q.h) != 0) return Examined::settled;
     if (all_zero(q.h)) {
       out.why = "a trimming surface contains a split plane or a face of the domain";
-      return false;
+      return Examined::left;
     }
-    auto split = [&]() {
-      if (q.depth >= max_depth || budget == 0) return false;
-      --budget;
-      const int dir = q.depth % 2;
-      Q c[2];
-      std::tie(c[0].h, c[1].h) = bern_split(q.h, dir, half);
-      for (auto& x : c) {
-        x.o.resize(nt);
-        x.depth = q.depth + 1;
-      }
-      for (std::size_t l = 0; l < nt; ++l) std::tie(c[0].o[l], c[1].o[l]) = bern_split(q.o[l], dir, half);
-      stack.push_back(std::move(c[0]));
-      stack.push_back(std::move(c[1]));
-      return true;
-    };
-    auto fail = [&]() {
-      out.why = "the trace of a trimming surface on a face of a box stays unresolved (tangent to the face, singular, or crossed by two surfaces at one point)";
-      return false;
+    const auto open = [&]() {
+      if (budget == 0) out.why = unresolved;
+      return budget == 0 ? Examined::left : Examined::split;
     };
     // The tracked leaves' signs here; at most one changes.
     std::vector<int> sign(nt);
@@ -213,11 +199,8 @@ bool trace(const Bernstein<T>& h0, const std::vector<Bernstein<T>>& tracked0, in
                                            bern_product(bern_derivative(q.h, 1), bern_derivative(o, 0)));
       ok = bern_sign(det) != 0;
     }
-    if (!ok) {
-      if (!split()) return fail();
-      continue;
-    }
-    if (ends.empty()) continue;
+    if (!ok) return open();
+    if (ends.empty()) return Examined::settled;
     // The pattern at each end: the changing leaf's sign on a refined bracket.
     unsigned pat[2] = {0, 0};
     for (std::size_t k = 0; k < 2 && ok; ++k) {
@@ -241,14 +224,28 @@ bool trace(const Bernstein<T>& h0, const std::vector<Bernstein<T>>& tracked0, in
       }
       pat[k] = p;
     }
-    if (!ok) {
-      if (!split()) return fail();
-      continue;
-    }
+    if (!ok) return open();
     out.patterns |= (1u << pat[0]) | (1u << pat[1]);
     if (pat[0] != pat[1]) ++out.crossings[mixed];
-  }
-  return true;
+    return Examined::settled;
+  };
+  auto split = [&](Q&& q, int depth, auto&& emit) {
+    --budget;
+    const int dir = depth % 2;
+    Q c[2];
+    std::tie(c[0].h, c[1].h) = bern_split(q.h, dir, half);
+    for (auto& x : c) x.o.resize(nt);
+    for (std::size_t l = 0; l < nt; ++l) std::tie(c[0].o[l], c[1].o[l]) = bern_split(q.o[l], dir, half);
+    emit(std::move(c[0]));  // depth first: the second half is examined first
+    emit(std::move(c[1]));
+  };
+  auto leave = [&](Q&&, Left why) {
+    if (why == Left::depth) out.why = unresolved;
+  };
+  Budget depth_only;
+  depth_only.max_depth = max_depth;
+  return subdivide(std::vector<Q>{Q{h0, tracked0}}, Walk{Order::depth_first, 2, true}, depth_only, examine, split, leave).stop ==
+         Subdivision::Stop::complete;
 }
 
 template <class T>

@@ -26,6 +26,7 @@
 #include <functional>
 
 #include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/model/planted.hpp"
@@ -226,71 +227,111 @@ class EulerRun {
       : f_(f), leaves_(leaves), max_cells_(max_cells), max_level_(max_level), split_(std::move(split)) {}
 
   /// chi_c of the formula's set on an open cell: G[l] the leaves on it (Bernstein over [0, 1]^d), dirs
-  /// the V directions of its free directions in order, lo/hi its parameter box in V, level the
-  /// halvings per V direction so far.
-  long chi(std::vector<Bernstein<T>> G, std::vector<int> dirs, std::array<T, 3> lo, std::array<T, 3> hi, std::array<int, 3> level, bool strict) {
-    if (++cells_ > max_cells_) throw Undecided{"the budget of " + std::to_string(max_cells_) + " cells is spent" + at(lo, hi)};
-    const int d = static_cast<int>(dirs.size());
-    std::vector<Signs> s(leaves_);
-    for (std::size_t l = 0; l < leaves_; ++l) s[l] = signs_of(G[l]);
-    const Truth t = eval(f_, s, strict);
-    if (t == Truth::in) return d % 2 ? -1 : 1;
-    if (t == Truth::out) return 0;
-    std::vector<char> open(leaves_, 0);
-    undecided_leaves(f_, s, strict, open);
-    // A direction along which every undecided leaf is monotone, the formula closed the same way.
-    for (int j = 0; j < d; ++j) {
-      std::vector<int> mono(leaves_, 0);
-      bool ok = true;
-      for (std::size_t l = 0; l < leaves_ && ok; ++l) {
-        if (!open[l]) continue;
-        mono[l] = monotone(bern_derivative(G[l], j));
-        ok = mono[l] != 2;
+  /// the V directions of its free directions in order, lo/hi its parameter box in V. Depth first on
+  /// the engine (bernstein/subdivide.hpp), in the order of the recursion chi(A) + chi(B) + chi(M) it
+  /// is: a cell decided in counts (-1)^d times its sign, one decided out 0; a cell with a monotone
+  /// direction is replaced by its face there with the sign turned (chi_c(cell) = -chi_c(face)); any
+  /// other is halved across the direction halved least so far, into two open halves and the open
+  /// middle face between them. The budget of max_cells counts every cell of the run (all calls).
+  long chi(std::vector<Bernstein<T>> G, std::vector<int> dirs, std::array<T, 3> lo, std::array<T, 3> hi, bool strict) {
+    struct Cell {
+      std::vector<Bernstein<T>> G;
+      std::vector<int> dirs;
+      std::array<T, 3> lo, hi;
+      std::array<int, 3> level{};
+      long sign = 1;
+      int face = -1, side = 0;  // examine's choice: the monotone direction's face, or -1: halve
+    };
+    long sum = 0;
+    std::string why;
+    auto examine = [&](Cell& c, int) {
+      const int d = static_cast<int>(c.dirs.size());
+      std::vector<Signs> s(leaves_);
+      for (std::size_t l = 0; l < leaves_; ++l) s[l] = signs_of(c.G[l]);
+      const Truth t = eval(f_, s, strict);
+      if (t == Truth::in) sum += c.sign * (d % 2 ? -1 : 1);
+      if (t != Truth::mixed) return Examined::settled;
+      std::vector<char> open(leaves_, 0);
+      undecided_leaves(f_, s, strict, open);
+      // A direction along which every undecided leaf is monotone, the formula closed the same way.
+      for (int j = 0; j < d; ++j) {
+        std::vector<int> mono(leaves_, 0);
+        bool ok = true;
+        for (std::size_t l = 0; l < leaves_ && ok; ++l) {
+          if (!open[l]) continue;
+          mono[l] = monotone(bern_derivative(c.G[l], j));
+          ok = mono[l] != 2;
+        }
+        int sense = 0;
+        if (!ok || !sense_of(f_, s, strict, mono, sense)) continue;
+        // Closed: up -> the face at the start; strict: up -> the face at the end.
+        c.face = j;
+        c.side = sense == 0 ? 0 : ((sense > 0) == strict ? 1 : 0);
+        return Examined::split;
       }
-      int sense = 0;
-      if (!ok || !sense_of(f_, s, strict, mono, sense)) continue;
-      // Closed: up -> the face at the start; strict: up -> the face at the end.
-      const int side = sense == 0 ? 0 : ((sense > 0) == strict ? 1 : 0);
-      for (auto& g : G) g = bern_face(g, j, side);
-      const int vd = dirs[static_cast<std::size_t>(j)];
-      if (side) lo[vd] = hi[vd];
-      else hi[vd] = lo[vd];
-      dirs.erase(dirs.begin() + j);
-      const long down = chi(std::move(G), std::move(dirs), lo, hi, level, strict);
-      return vrep_testing::is_planted(vrep_testing::Plant::euler_monotone_sign) ? down : -down;  // (planted: tests only)
+      if (c.level[c.dirs[least_halved(c)]] >= max_level_) {
+        why = "no monotone direction within " + std::to_string(max_level_) + " halvings" + at(c.lo, c.hi) +
+              " (a singular or tangential point of the trimming surfaces)";
+        return Examined::left;
+      }
+      return Examined::split;
+    };
+    auto split = [&](Cell&& c, int, auto&& emit) {
+      if (c.face >= 0) {
+        const int j = c.face, vd = c.dirs[static_cast<std::size_t>(j)];
+        for (auto& g : c.G) g = bern_face(g, j, c.side);
+        if (c.side) c.lo[vd] = c.hi[vd];
+        else c.hi[vd] = c.lo[vd];
+        c.dirs.erase(c.dirs.begin() + j);
+        c.sign = vrep_testing::is_planted(vrep_testing::Plant::euler_monotone_sign) ? c.sign : -c.sign;  // (planted: tests only)
+        c.face = -1;
+        emit(std::move(c));
+        return;
+      }
+      const int j = least_halved(c), vd = c.dirs[static_cast<std::size_t>(j)];
+      Cell A{std::vector<Bernstein<T>>(leaves_), c.dirs, c.lo, c.hi, c.level, c.sign}, B = A, M = A;
+      for (std::size_t l = 0; l < leaves_; ++l) {
+        std::tie(A.G[l], B.G[l]) = bern_split(c.G[l], j, split_);
+        M.G[l] = bern_face(A.G[l], j, 1);
+      }
+      const T mid = c.lo[vd] + split_ * (c.hi[vd] - c.lo[vd]);
+      for (Cell* x : {&A, &B, &M}) ++x->level[vd];
+      A.hi[vd] = B.lo[vd] = M.lo[vd] = M.hi[vd] = mid;
+      M.dirs.erase(M.dirs.begin() + j);
+      // Depth first takes the last child first: A, then B, then M.
+      if (!vrep_testing::is_planted(vrep_testing::Plant::euler_drops_mid_face)) emit(std::move(M));  // (planted: tests only)
+      emit(std::move(B));
+      emit(std::move(A));
+    };
+    // The cell that would have been examined next when the budget ran out: the last one left.
+    std::array<T, 3> next_lo{}, next_hi{};
+    auto leave = [&](Cell&& c, Left) { next_lo = c.lo, next_hi = c.hi; };
+    Budget budget;
+    budget.max_boxes = max_cells_ - cells_;
+    std::vector<Cell> root(1);
+    root[0].G = std::move(G), root[0].dirs = std::move(dirs), root[0].lo = lo, root[0].hi = hi;
+    const Subdivision run = subdivide(std::move(root), Walk{Order::depth_first, 3, true}, budget, examine, split, leave);
+    cells_ += run.examined;
+    if (run.stop == Subdivision::Stop::boxes) {
+      ++cells_;  // the cell found over the budget
+      throw Undecided{"the budget of " + std::to_string(max_cells_) + " cells is spent" + at(next_lo, next_hi)};
     }
-    // Halve across the direction halved least so far.
-    int j = 0;
-    for (int k = 1; k < d; ++k)
-      if (level[dirs[k]] < level[dirs[j]]) j = k;
-    const int vd = dirs[static_cast<std::size_t>(j)];
-    if (level[vd] >= max_level_)
-      throw Undecided{"no monotone direction within " + std::to_string(max_level_) + " halvings" + at(lo, hi) +
-                      " (a singular or tangential point of the trimming surfaces)"};
-    std::vector<Bernstein<T>> A(leaves_), B(leaves_), M(leaves_);
-    for (std::size_t l = 0; l < leaves_; ++l) {
-      std::tie(A[l], B[l]) = bern_split(G[l], j, split_);
-      M[l] = bern_face(A[l], j, 1);
-    }
-    G.clear();
-    const T mid = lo[vd] + split_ * (hi[vd] - lo[vd]);
-    ++level[vd];
-    auto hA = hi, lB = lo, lM = lo, hM = hi;
-    hA[vd] = mid;
-    lB[vd] = mid;
-    lM[vd] = hM[vd] = mid;
-    auto mdirs = dirs;
-    mdirs.erase(mdirs.begin() + j);
-    long sum = chi(std::move(A), dirs, lo, hA, level, strict);
-    sum += chi(std::move(B), dirs, lB, hi, level, strict);
-    if (!vrep_testing::is_planted(vrep_testing::Plant::euler_drops_mid_face))  // (planted: tests only)
-      sum += chi(std::move(M), std::move(mdirs), lM, hM, level, strict);
+    if (run.stop == Subdivision::Stop::left) throw Undecided{why};
     return sum;
   }
 
   std::size_t cells() const { return cells_; }
 
  private:
+  /// The free direction halved least so far (the first of equals).
+  template <class Cell>
+  static int least_halved(const Cell& c) {
+    int j = 0;
+    for (int k = 1; k < static_cast<int>(c.dirs.size()); ++k)
+      if (c.level[c.dirs[k]] < c.level[c.dirs[j]]) j = k;
+    return j;
+  }
+
   static std::string at(const std::array<T, 3>& lo, const std::array<T, 3>& hi) {
     std::string s = " near (u, v, w) = (";
     for (int d = 0; d < 3; ++d) {
@@ -463,10 +504,10 @@ void sum_over_strata(const Nnf& f, std::size_t leaves, const std::vector<GridStr
     try {
       long param = 0, image = 0, interior = 0;
       for (const auto& z : strata) {
-        const long c = run.chi(z.H, z.dirs, z.lo, z.hi, {}, false);
+        const long c = run.chi(z.H, z.dirs, z.lo, z.hi, false);
         param += c;
         if (z.kept) image += c;
-        if (z.inside) interior += run.chi(z.H, z.dirs, z.lo, z.hi, {}, true);
+        if (z.inside) interior += run.chi(z.H, z.dirs, z.lo, z.hi, true);
       }
       out.decided = true;
       out.chi = param;

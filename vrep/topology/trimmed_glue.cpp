@@ -8,13 +8,13 @@
 // (Region::alias), so that coincident surfaces (a cut and its complement, coplanar box faces) do
 // not stop it.
 #include <algorithm>
-#include <deque>
 #include <map>
 #include <optional>
 #include <set>
 #include <type_traits>
 
 #include "base/errors.hpp"
+#include "bernstein/subdivide.hpp"
 #include "spline/evaluate.hpp"
 #include "vrep/boolean/boolean_impl.hpp"
 #include "vrep/freeform/freeform.hpp"
@@ -561,34 +561,39 @@ class Gluer {
       std::array<T, 2> lo, hi;
       int level = 0;
     };
-    std::deque<Box> todo;  // breadth first: a box touching the part's boundary is never strict
-    for (const auto& p : problem.pieces) todo.push_back({p.G, p.lo, p.hi, 0});
+    // Breadth first: a box touching the part's boundary is never strict, so the witnesses come from
+    // the largest boxes decided in; the walk ends when enough are found or the budget is spent.
+    std::vector<Box> roots;
+    for (const auto& p : problem.pieces) roots.push_back({p.G, p.lo, p.hi, 0});
     std::vector<std::vector<T>> out;
-    std::size_t spent = 0;
-    while (!todo.empty() && out.size() < opt_.witnesses && spent < opt_.max_boxes) {
-      Box x = std::move(todo.front());
-      todo.pop_front();
-      ++spent;
+    Budget budget;
+    budget.max_boxes = opt_.max_boxes;
+    auto examine = [&](const Box& x, int) {
       std::vector<Truth> t;
       for (const auto& G : x.G) t.push_back(coefficient_truth(G, T(0)));
       bool strict = true;
       for (const auto& G : x.G) strict = strict && bern_sign(G) != 0;
       std::size_t k = 0;
       const Truth f = combine(formula, t, k);
-      if (f == Truth::out) continue;
+      if (f == Truth::out) return Examined::settled;
       if (f == Truth::in && strict) {
         std::vector<T> u(3);
         u[static_cast<std::size_t>(d)] = at;
         u[static_cast<std::size_t>(a)] = (x.lo[0] + x.hi[0]) / 2;
         u[static_cast<std::size_t>(b)] = (x.lo[1] + x.hi[1]) / 2;
         out.push_back(evaluate(V, u));
-        continue;
+        return Examined::settled;
       }
+      return Examined::split;
+    };
+    auto split = [&](Box&& x, int, auto&& emit) {
       Box c[2];
       split_box(x, widest(x.lo, x.hi), T(1) / T(2), c);
-      todo.push_back(std::move(c[0]));
-      todo.push_back(std::move(c[1]));
-    }
+      emit(std::move(c[0]));
+      emit(std::move(c[1]));
+    };
+    subdivide(std::move(roots), Walk{Order::breadth_first, 2, false}, budget, examine, split, [](Box&&, Left) {},
+              [&]() { return out.size() >= opt_.witnesses; });
     return out;
   }
 
