@@ -28,6 +28,7 @@
 
 #include "bench/memory_probe.hpp"
 #include "bench/ratio_reporter.hpp"
+#include "exact/ffnet.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
 #include "io/json_io.hpp"
@@ -124,6 +125,30 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
   const long items = static_cast<long>(op == "eval" ? in.at.size() : 1);
   st.SetItemsProcessed(st.iterations() * items);
   report_memory(st, once, items);
+}
+
+/// The fraction-free net (exact/ffnet.hpp, issue 49): converted from the exact case outside the
+/// timed loop, as the double input is. Only the operations ported so far; `bytes_per_coef` is the
+/// result's heap bytes per stored rational value (coordinates, weights and knots).
+bool ff_has(const std::string& op) { return op == "insert" || op == "refine" || op == "eval"; }
+
+void run_ff(benchmark::State& st, const std::string& op, int p, std::size_t n) {
+  const Case& c = get_case(p, n);
+  const ff::FFNet F = ff::from_bspline(c.exact);
+  auto once = [&] {
+    if (op == "insert") benchmark::DoNotOptimize(ff::insert_knot(F, 0, c.knot, 1));
+    else if (op == "refine") benchmark::DoNotOptimize(ff::refine_knots(F, 0, c.refine));
+    else benchmark::DoNotOptimize(ff::evaluate_points(F, c.at));
+  };
+  for (auto _ : st) once();
+  const long items = static_cast<long>(op == "eval" ? c.at.size() : 1);
+  st.SetItemsProcessed(st.iterations() * items);
+  report_memory(st, once, items);
+  if (op != "eval") {
+    const ff::FFNet R = op == "insert" ? ff::insert_knot(F, 0, c.knot, 1) : ff::refine_knots(F, 0, c.refine);
+    const double values = static_cast<double>(R.size() * (R.q + (R.rational ? 1 : 0)) + R.knots[0].size());
+    st.counters["bytes_per_coef"] = static_cast<double>(ff::heap_bytes(R)) / values;
+  }
 }
 
 #ifdef SPLINEX_HAVE_SISL
@@ -242,7 +267,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "pieces", "eval"};
   const std::vector<int> degrees{1, 3, 5, 7};
   const std::vector<std::size_t> sizes{10, 100, 1000, 10000};
-  std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}};
+  std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}, {"ff", 0}};
 #ifdef SPLINEX_HAVE_SISL
   ariths.emplace_back("sisl", 0);
 #endif
@@ -255,12 +280,14 @@ int main(int argc, char** argv) {
         if (n < static_cast<std::size_t>(p) + 1) continue;
         for (const auto& [a, bits] : ariths) {
           if (op == "pieces" && (a == "sisl" || a == "occt")) continue;
+          if (a == "ff" && !ff_has(op)) continue;
           const std::string name = op + "/" + a + "/p" + std::to_string(p) + "/n" + std::to_string(n);
           const long b = bits;
           benchmark::RegisterBenchmark(name.c_str(), [op, p, n, a, b](benchmark::State& st) {
             if (a == "double") run_op<double>(st, op, p, n, 0);
             else if (a == "exact") run_op<Rational>(st, op, p, n, 0);
             else if (a == "flint") run_op<FlintRational>(st, op, p, n, 0);
+            else if (a == "ff") run_ff(st, op, p, n);
 #ifdef SPLINEX_HAVE_SISL
             else if (a == "sisl") run_sisl(st, op, p, n);
 #endif
@@ -276,17 +303,17 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&rep);
   std::cout << "\nTime ratios (" << (g_dyadic ? "dyadic" : "decimal") << " data) against double:\n";
   std::cout << std::left << std::setw(10) << "op" << std::setw(5) << "p" << std::setw(8) << "n" << std::setw(16) << "exact(GMP)/double"
-            << std::setw(18) << " flint/double" << "mpfr128/double\n";
+            << std::setw(18) << " flint/double" << std::setw(16) << "ff/double" << "mpfr128/double\n";
   for (const auto& op : ops)
     for (int p : degrees)
       for (std::size_t n : sizes) {
         const std::string tail = "/p" + std::to_string(p) + "/n" + std::to_string(n);
         auto d = rep.ns.find(op + "/double" + tail), e = rep.ns.find(op + "/exact" + tail), m = rep.ns.find(op + "/mpfr128" + tail),
-             f = rep.ns.find(op + "/flint" + tail);
+             f = rep.ns.find(op + "/flint" + tail), ffr = rep.ns.find(op + "/ff" + tail);
         if (d == rep.ns.end()) continue;
         auto ratio = [&](decltype(d) it) { return it == rep.ns.end() ? std::string("-") : std::to_string(it->second / d->second).substr(0, 6); };
         std::cout << std::setw(10) << op << std::setw(5) << p << std::setw(8) << n << std::setw(18) << ratio(e) << std::setw(18) << ratio(f)
-                  << ratio(m);
+                  << std::setw(16) << ratio(ffr) << ratio(m);
         std::cout << "\n";
       }
   benchmark::Shutdown();

@@ -1,0 +1,184 @@
+// The integer steps of the fraction-free kernel (exact/ffnet.hpp), private to exact/ff_*.cpp.
+//
+// Every step has a small path on FLINT's inline words (|v| <= COEFF_MAX = 2^62 - 1): products in
+// 128 bits, the result checked against the small range before it is stored. When an operand is
+// big or the result leaves the range, the step is redone with FLINT's integer calls (counted in
+// ff::promotions()). No signed 64-bit operation can overflow: every product and sum of two
+// small words is computed in __int128, where it fits.
+#pragma once
+#include <flint/fmpz.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "exact/ffnet.hpp"
+
+namespace splinex::ff::detail {
+
+__extension__ typedef __int128 i128;  // GCC's 128-bit integer (-Wpedantic: an extension)
+
+inline bool small(const fmpz* a) { return !COEFF_IS_MPZ(*a); }
+inline bool fast() { return policy().tier == Tier::small_first; }
+inline bool fits(i128 v) { return v >= -static_cast<i128>(COEFF_MAX) && v <= static_cast<i128>(COEFF_MAX); }
+
+/// out = v for a value known to fit the small range.
+inline void set_small(fmpz* out, slong v) {
+  if (COEFF_IS_MPZ(*out)) _fmpz_demote(out);
+  *out = v;
+}
+
+inline void set(fmpz* out, const fmpz* a) {
+  if (small(a) && small(out)) *out = *a;
+  else fmpz_set(out, a);
+}
+
+/// Whether any of n words holds a big value (a tagged mpz pointer, which FLINT stores as a word
+/// above COEFF_MAX). One branch-free pass the compiler vectorises.
+inline bool any_big(const fmpz* p, std::size_t n) {
+  // A big word has its top two bits 01; a small value 00 (>= 0) or 11 (< 0). Bit 63 of
+  // ~w & (w << 1) is set exactly for 01: plain bit operations, vectorised on any x86-64.
+  std::uint64_t acc = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto w = static_cast<std::uint64_t>(p[i]);
+    acc |= ~w & (w << 1);
+  }
+  return (acc >> 63) != 0;
+}
+
+/// Copies n values into words that hold no big value (zeros or small values): a memcpy, and for
+/// big values their own copies (the words are zeroed first, so an allocation failure part way
+/// leaves only valid words behind).
+inline void init_copy(fmpz* dst, const fmpz* src, std::size_t n) {
+  std::uint64_t acc = 0;  // any_big, fused with the copy: one pass over the words
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto w = static_cast<std::uint64_t>(src[i]);
+    acc |= ~w & (w << 1);
+    dst[i] = src[i];
+  }
+  if ((acc >> 63) == 0) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!small(src + i)) dst[i] = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!small(src + i)) fmpz_set(dst + i, src + i);
+}
+
+/// out = a*x + b*y (out may alias any operand).
+inline void lin2(fmpz* out, const fmpz* a, const fmpz* x, const fmpz* b, const fmpz* y) {
+  if (fast() && small(a) && small(x) && small(b) && small(y)) {
+    const i128 v = static_cast<i128>(*a) * *x + static_cast<i128>(*b) * *y;
+    if (fits(v)) return set_small(out, static_cast<slong>(v));
+    ++promotions();
+  }
+  fmpz_t t;
+  fmpz_init(t);
+  fmpz_mul(t, a, x);
+  fmpz_addmul(t, b, y);
+  fmpz_swap(out, t);
+  fmpz_clear(t);
+}
+
+/// out = a*b (out may alias).
+inline void mul(fmpz* out, const fmpz* a, const fmpz* b) {
+  if (fast() && small(a) && small(b)) {
+    const i128 v = static_cast<i128>(*a) * *b;
+    if (fits(v)) return set_small(out, static_cast<slong>(v));
+    ++promotions();
+  }
+  fmpz_mul(out, a, b);
+}
+
+/// out = a - b (out may alias).
+inline void sub(fmpz* out, const fmpz* a, const fmpz* b) {
+  if (fast() && small(a) && small(b)) {
+    const i128 v = static_cast<i128>(*a) - *b;
+    if (fits(v)) return set_small(out, static_cast<slong>(v));
+    ++promotions();
+  }
+  fmpz_sub(out, a, b);
+}
+
+/// out = a*x - b*y (out may alias).
+inline void cross(fmpz* out, const fmpz* a, const fmpz* x, const fmpz* b, const fmpz* y) {
+  if (fast() && small(a) && small(x) && small(b) && small(y)) {
+    const i128 v = static_cast<i128>(*a) * *x - static_cast<i128>(*b) * *y;
+    if (fits(v)) return set_small(out, static_cast<slong>(v));
+    ++promotions();
+  }
+  fmpz_t t;
+  fmpz_init(t);
+  fmpz_mul(t, a, x);
+  fmpz_submul(t, b, y);
+  fmpz_swap(out, t);
+  fmpz_clear(t);
+}
+
+inline int cmp(const fmpz* a, const fmpz* b) {
+  if (small(a) && small(b)) return (*a > *b) - (*a < *b);
+  return fmpz_cmp(a, b);
+}
+
+inline std::uint64_t small_abs(slong v) { return v < 0 ? -static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v); }
+
+inline std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+
+/// Divides the m numerators and the denominator (at p[m], > 0) of one point by their gcd, so
+/// that the point's representation is the unique reduced one.
+inline void reduce_point(fmpz* p, std::size_t m) {
+  bool all_small = true;
+  for (std::size_t c = 0; c <= m && all_small; ++c) all_small = small(p + c);
+  if (all_small) {
+    std::uint64_t g = static_cast<std::uint64_t>(p[m]);
+    for (std::size_t c = 0; c < m && g != 1; ++c) g = binary_gcd(g, small_abs(p[c]));
+    if (g <= 1) return;
+    const slong gs = static_cast<slong>(g);
+    for (std::size_t c = 0; c <= m; ++c) p[c] /= gs;
+    return;
+  }
+  fmpz_t g;
+  fmpz_init_set(g, p + m);
+  for (std::size_t c = 0; c < m && !fmpz_is_one(g); ++c) fmpz_gcd(g, g, p + c);
+  if (!fmpz_is_one(g))
+    for (std::size_t c = 0; c <= m; ++c) fmpz_divexact(p + c, p + c, g);
+  fmpz_clear(g);
+}
+
+/// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
+/// denominator: out = ((t - s) P + s Q) / t with t > 0, reduced. `out` may be P or Q. `a`, `c1`,
+/// `c2`, `e` are scratch integers of the caller.
+struct Blend {
+  fmpz_t a, c1, c2, e;
+  Blend() { fmpz_init(a); fmpz_init(c1); fmpz_init(c2); fmpz_init(e); }
+  ~Blend() { fmpz_clear(a); fmpz_clear(c1); fmpz_clear(c2); fmpz_clear(e); }
+  Blend(const Blend&) = delete;
+  Blend& operator=(const Blend&) = delete;
+
+  void operator()(fmpz* out, const fmpz* P, const fmpz* Q, const fmpz* s, const fmpz* t, std::size_t m) {
+    sub(a, t, s);
+    if (cmp(P + m, Q + m) == 0) {
+      // Same denominator E: N = (t - s) N_P + s N_Q over t E.
+      for (std::size_t c = 0; c < m; ++c) lin2(out + c, a, P + c, s, Q + c);
+      mul(out + m, t, P + m);
+    } else {
+      // N = (t - s) E_Q N_P + s E_P N_Q over t E_P E_Q.
+      mul(c1, a, Q + m);
+      mul(c2, s, P + m);
+      mul(e, P + m, Q + m);
+      for (std::size_t c = 0; c < m; ++c) lin2(out + c, c1, P + c, c2, Q + c);
+      mul(out + m, t, e);
+    }
+    reduce_point(out, m);
+  }
+};
+
+}  // namespace splinex::ff::detail
