@@ -128,24 +128,28 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
 }
 
 /// The fraction-free net (exact/ffnet.hpp, issue 49): converted from the exact case outside the
-/// timed loop, as the double input is. Only the operations ported so far; `bytes_per_coef` is the
+/// timed loop, as the double input is; `bytes_per_coef` is the
 /// result's heap bytes per stored rational value (coordinates, weights and knots).
-bool ff_has(const std::string& op) { return op == "insert" || op == "refine" || op == "eval"; }
-
 void run_ff(benchmark::State& st, const std::string& op, int p, std::size_t n) {
   const Case& c = get_case(p, n);
   const ff::FFNet F = ff::from_bspline(c.exact);
   auto once = [&] {
     if (op == "insert") benchmark::DoNotOptimize(ff::insert_knot(F, 0, c.knot, 1));
     else if (op == "refine") benchmark::DoNotOptimize(ff::refine_knots(F, 0, c.refine));
+    else if (op == "elevate") benchmark::DoNotOptimize(ff::elevate_degree(F, 0, 1));
+    else if (op == "extract") benchmark::DoNotOptimize(ff::bezier_form(F));
+    else if (op == "pieces") benchmark::DoNotOptimize(ff::extract_bezier(F));
     else benchmark::DoNotOptimize(ff::evaluate_points(F, c.at));
   };
   for (auto _ : st) once();
   const long items = static_cast<long>(op == "eval" ? c.at.size() : 1);
   st.SetItemsProcessed(st.iterations() * items);
   report_memory(st, once, items);
-  if (op != "eval") {
-    const ff::FFNet R = op == "insert" ? ff::insert_knot(F, 0, c.knot, 1) : ff::refine_knots(F, 0, c.refine);
+  if (op == "insert" || op == "refine" || op == "elevate" || op == "extract") {
+    const ff::FFNet R = op == "insert"    ? ff::insert_knot(F, 0, c.knot, 1)
+                        : op == "refine"  ? ff::refine_knots(F, 0, c.refine)
+                        : op == "elevate" ? ff::elevate_degree(F, 0, 1)
+                                          : ff::bezier_form(F).spline;
     const double values = static_cast<double>(R.size() * (R.q + (R.rational ? 1 : 0)) + R.knots[0].size());
     st.counters["bytes_per_coef"] = static_cast<double>(ff::heap_bytes(R)) / values;
   }
@@ -280,7 +284,6 @@ int main(int argc, char** argv) {
         if (n < static_cast<std::size_t>(p) + 1) continue;
         for (const auto& [a, bits] : ariths) {
           if (op == "pieces" && (a == "sisl" || a == "occt")) continue;
-          if (a == "ff" && !ff_has(op)) continue;
           const std::string name = op + "/" + a + "/p" + std::to_string(p) + "/n" + std::to_string(n);
           const long b = bits;
           benchmark::RegisterBenchmark(name.c_str(), [op, p, n, a, b](benchmark::State& st) {

@@ -1,5 +1,6 @@
 // Knot-vector steps shared by the fraction-free operations (exact/ff_*.cpp), private.
 #pragma once
+#include <flint/fmpz_vec.h>
 #include <gmp.h>
 
 #include <string>
@@ -66,6 +67,17 @@ inline std::vector<Z> onto_knots(const FFKnots& K, FFKnots& scaled, const std::v
   return out;
 }
 
+/// K over the lcm of its knots' reduced denominators, which is K / gcd(K, k_0, ..., k_last):
+/// the unique form, after an operation that dropped knots.
+inline void normalize(FFKnots& K) {
+  Z g;
+  _fmpz_vec_content(g.get(), K.k.data(), static_cast<slong>(K.size()));
+  fmpz_gcd(g.get(), g.get(), K.den.data());
+  if (fmpz_is_one(g.get())) return;
+  _fmpz_vec_scalar_divexact_fmpz(K.k.data(), K.k.data(), static_cast<slong>(K.size()), g.get());
+  fmpz_divexact(K.den.data(), K.den.data(), g.get());
+}
+
 /// Index of the first knot > x (std::upper_bound on the integers).
 inline std::size_t upper(const FFKnots& U, const fmpz* x) {
   std::size_t lo = 0, hi = U.size();
@@ -85,5 +97,19 @@ inline std::size_t lower(const FFKnots& U, const fmpz* x) {
   return lo;
 }
 inline std::size_t multiplicity(const FFKnots& U, const fmpz* x) { return upper(U, x) - lower(U, x); }
+
+/// insert_knot and refine_knots after their knots are on one denominator: U is direction d's knot
+/// vector over it (F's own, or F's rewritten), xk / xs the numerators (xs sorted). The checks,
+/// errors and limits of the public functions.
+FFNet insert_on(const FFNet& F, int d, const FFKnots& U, const fmpz* xk, int times, const Limits& limits);
+FFNet refine_on(const FFNet& F, int d, const FFKnots& U, const std::vector<Z>& xs, const Limits& limits);
+
+/// The control points [first, first + n_new) of direction d, with that direction's knots V.
+FFNet slice_direction(const FFNet& F, int d, std::size_t first, std::size_t n_new, FFKnots V);
+
+/// spline/knots.hpp's is_clamped and breakpoints on integer knots (breakpoints as indices into U
+/// of the first knot of each distinct value in the domain).
+bool is_clamped(const FFKnots& U, int p, std::size_t n);
+std::vector<std::size_t> breakpoints(const FFKnots& U, int p, std::size_t n);
 
 }  // namespace splinex::ff::detail

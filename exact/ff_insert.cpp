@@ -104,15 +104,7 @@ struct Step {
 
 }  // namespace
 
-FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times, const Limits& limits) {
-  check_direction(F, d);
-  if (times < 0) throw UsageError("times", "is negative", "insert a knot 0 or more times");
-  if (times == 0) return F;
-  /// The knots are copied only when x's denominator does not divide theirs.
-  FFKnots scaled;
-  const std::vector<Z> xs = onto_knots(F.knots[d], scaled, {x});
-  const FFKnots& U = scaled.size() ? scaled : F.knots[d];
-  const fmpz* xk = xs[0].get();
+FFNet detail::insert_on(const FFNet& F, int d, const FFKnots& U, const fmpz* xk, int times, const Limits& limits) {
   const int p = F.degrees[d];
   check_insertable(U, p, F.count(d), d, xk, times, "knots");
   limits.check_count(F.size() / F.count(d) * (F.count(d) + times), "knots");
@@ -125,12 +117,25 @@ FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times, const Lim
   return R;
 }
 
+FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times, const Limits& limits) {
+  check_direction(F, d);
+  if (times < 0) throw UsageError("times", "is negative", "insert a knot 0 or more times");
+  if (times == 0) return F;
+  /// The knots are copied only when x's denominator does not divide theirs.
+  FFKnots scaled;
+  const std::vector<Z> xs = onto_knots(F.knots[d], scaled, {x});
+  return insert_on(F, d, scaled.size() ? scaled : F.knots[d], xs[0].get(), times, limits);
+}
+
 FFNet refine_knots(const FFNet& F, int d, std::vector<Rational> X, const Limits& limits) {
   check_direction(F, d);
   std::sort(X.begin(), X.end(), [](const Rational& a, const Rational& b) { return a < b; });
   FFKnots scaled;
   const std::vector<Z> xs = onto_knots(F.knots[d], scaled, X);
-  const FFKnots& U = scaled.size() ? scaled : F.knots[d];
+  return refine_on(F, d, scaled.size() ? scaled : F.knots[d], xs, limits);
+}
+
+FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vector<Z>& xs, const Limits& limits) {
   const int p = F.degrees[d];
   const std::size_t count = F.count(d);
   for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -139,13 +144,13 @@ FFNet refine_knots(const FFNet& F, int d, std::vector<Rational> X, const Limits&
     check_insertable(U, p, count, d, xs[i].get(), same, "knots[" + std::to_string(i) + "]");
     i += same - 1;
   }
-  limits.check_count(F.size() / count * (count + X.size()), "knots");
-  if (X.empty()) return F;
+  limits.check_count(F.size() / count * (count + xs.size()), "knots");
+  if (xs.empty()) return F;
   /// The new knot vector is the merge of U and X; A5.4's point loop reads only entries of it that
   /// it has already set, so it is built first, once.
-  const std::size_t nn = count - 1, r = X.size() - 1;
+  const std::size_t nn = count - 1, r = xs.size() - 1;
   FFKnots V;
-  V.k = ZVec(U.size() + X.size());
+  V.k = ZVec(U.size() + xs.size());
   fmpz_set(V.den.data(), U.den.data());
   {
     std::size_t i = 0, j = 0, o = 0;

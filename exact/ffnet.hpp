@@ -18,9 +18,9 @@
 // Conversions to and from BSpline<Rational> are exact and are the boundary (I/O, JSON, the GMP
 // kernel as the reference): `to_bspline(from_bspline(S)) == S` field by field.
 //
-// Status: knot insertion (one knot any number of times; many knots at once, A5.4), evaluation
-// (de Boor, any dimension) and the conversions. Elevation, Bezier extraction, derivatives and the
-// certified engines are not ported; `--arith exact` still runs GMP (see docs/speed.md).
+// Status: knot insertion (one knot any number of times; many knots at once, A5.4), clamping,
+// Bezier form and pieces, degree elevation (A5.9), evaluation (de Boor, any dimension) and the
+// conversions. Derivatives, integration and the certified engines are not ported.
 #pragma once
 #include <flint/fmpz.h>
 
@@ -129,5 +129,31 @@ FFNet refine_knots(const FFNet& F, int d, std::vector<Rational> X, const Limits&
 /// The kernel's evaluate_points: `params` holds N points of dim() parameters each; the same
 /// checks and error fields ("params[i]"). The values are homogeneous and reduced.
 FFPoints evaluate_points(const FFNet& F, const std::vector<Rational>& params);
+
+/// The kernel's clamp (spline/insert.hpp): both domain ends of direction d raised to
+/// multiplicity p+1 and the net cut there; the net itself when already clamped.
+FFNet clamp(const FFNet& F, int d, const Limits& limits = {});
+
+/// The kernel's BezierForm (spline/bezier.hpp): every interior breakpoint of every direction at
+/// multiplicity p (A5.4), its breakpoints as numerators over that direction's knot denominator,
+/// and the first control point of every segment.
+struct FFBezierForm {
+  FFNet spline;
+  std::vector<ZVec> breaks;
+  std::vector<std::vector<std::size_t>> first;
+  std::size_t size() const;
+  /// Piece k (direction 0 fastest) as a net of its own.
+  FFNet piece(std::size_t k) const;
+  /// The breakpoints as rationals (the boundary).
+  std::vector<std::vector<Rational>> break_values() const;
+};
+FFBezierForm bezier_form(const FFNet& F, const Limits& limits = {});
+/// Every piece (extract_bezier): bezier_form, then one net per piece.
+std::vector<FFNet> extract_bezier(const FFNet& F, const Limits& limits = {});
+
+/// The kernel's elevate_degree (spline/elevate.hpp) by A5.9 on the clamped net, cut at C^-1 knots
+/// as the kernel cuts it: the same result (values are exact, so the kernel's `method` does not
+/// change them), errors and limits.
+FFNet elevate_degree(const FFNet& F, int d, int t, const Limits& limits = {});
 
 }  // namespace splinex::ff

@@ -222,3 +222,63 @@ TEST_CASE("ff: heap bytes of a small-valued net are 8 per stored integer") {
   const auto F = ff::from_bspline(random_spline(spec, rng));
   CHECK(ff::heap_bytes(F) == 8 * (F.size() * F.stride() + F.knots[0].size() + 1));
 }
+
+TEST_CASE("ff: clamp, Bezier form and pieces equal the GMP kernel exactly, both tiers") {
+  std::mt19937_64 rng(49057);
+  std::size_t pieces_compared = 0;
+  for (int it = 0; it < 250; ++it) {
+    const auto c = structured_case(rng);
+    const BSpline<Rational>& S = c.spline;
+    const ff::FFNet F = ff::from_bspline(S);
+    for (const ff::Tier tier : tiers) {
+      ff::PolicyScope scope({tier});
+      INFO("case " << it);
+      const int d = static_cast<int>(rng() % S.dim());
+      require_same(ff::clamp(F, d), clamp(S, d));
+      const Limits small{.max_control_points = 20000};
+      if (same_outcome([&] { ff::bezier_form(F, small); }, [&] { bezier_form(S, small); })) continue;
+      const auto B = ff::bezier_form(F, small);
+      const auto K = bezier_form(S, small);
+      require_same(B.spline, K.spline);
+      REQUIRE(B.break_values() == K.breaks);
+      REQUIRE(B.first == K.first);
+      REQUIRE(B.size() == K.size());
+      if (K.size() > 64) continue;
+      const auto P = ff::extract_bezier(F);
+      const auto Q = extract_bezier(S);
+      REQUIRE(P.size() == Q.size());
+      for (std::size_t i = 0; i < P.size(); ++i) require_same(P[i], Q[i].spline);
+      pieces_compared += P.size();
+    }
+  }
+  CHECK(pieces_compared > 1000);
+}
+
+TEST_CASE("ff: elevate_degree (A5.9) equals the GMP kernel exactly, both tiers, C^-1 knots and degree 0") {
+  std::mt19937_64 rng(49058);
+  std::size_t compared = 0;
+  for (int it = 0; it < 250; ++it) {
+    const auto c = structured_case(rng);
+    const BSpline<Rational>& S = c.spline;
+    const ff::FFNet F = ff::from_bspline(S);
+    const int d = static_cast<int>(rng() % S.dim());
+    const int t = static_cast<int>(rng() % 4);
+    for (const ff::Tier tier : tiers) {
+      ff::PolicyScope scope({tier});
+      INFO("case " << it << " dir " << d << " by " << t);
+      const Limits lim{.max_control_points = 50000};
+      if (same_outcome([&] { ff::elevate_degree(F, d, t, lim); }, [&] { elevate_degree(S, d, t, ElevationMethod::automatic, lim); }))
+        continue;
+      require_same(ff::elevate_degree(F, d, t, lim), elevate_degree(S, d, t, ElevationMethod::automatic, lim));
+      ++compared;
+    }
+  }
+  CHECK(compared > 400);
+  // The kernel's errors for illegal amounts and directions.
+  std::mt19937_64 r2(1);
+  const auto S = structured_case(r2).spline;
+  const auto F = ff::from_bspline(S);
+  CHECK(same_outcome([&] { ff::elevate_degree(F, 0, -1); }, [&] { elevate_degree(S, 0, -1); }));
+  CHECK(same_outcome([&] { ff::elevate_degree(F, 5, 1); }, [&] { elevate_degree(S, 5, 1); }));
+  CHECK(same_outcome([&] { ff::elevate_degree(F, 0, 200); }, [&] { elevate_degree(S, 0, 200); }));
+}
