@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/command.hpp"
+#include "crosscheck/operations_ff.hpp"
 #include "float/arith_spec.hpp"
 #include "float/rounding.hpp"
 #include "spline/evaluate.hpp"
@@ -15,7 +16,7 @@ Commands add_eval(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* c = app.add_subcommand("eval", "evaluate a spline (or a partial derivative) at a parameter");
-  add_arith_option(c, o->arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS");
+  add_arith_option(c, o->arith, kernel_arith_help);
   c->add_option("--at", o->at, "parameter \"x0,x1,...\"")->required();
   c->add_option("--derivative", o->orders, "derivative orders per direction, e.g. \"1,0\"");
   c->add_option("--method", o->method, "basis (A2.2 basis functions) or deboor (de Boor's algorithm)")
@@ -32,14 +33,21 @@ Commands add_eval(CLI::App& app) {
              const auto spec = ArithSpec::parse(o->arith);
              print_document(with_arith<KernelArithmetics>(spec, "eval", [&](auto tag) {
                using T = typename decltype(tag)::type;
-               const auto Sf = round_spline<T>(S);
-               const std::vector<T> xf = round_values<T>(x, "at");
-               if (!ord.empty() && o->method == "deboor")
-                 throw UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
-               const auto p = !ord.empty()              ? derivative(Sf, xf, ord)
-                              : o->method == "deboor" ? evaluate_de_boor(Sf, xf)
-                                                      : evaluate(Sf, xf);
-               return point_document(p);
+               if constexpr (std::is_same_v<T, ExactFF>) {
+                 if (!ord.empty() && o->method == "deboor")
+                   throw UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
+                 // Derivatives are not written fraction-free: GMP, the same values.
+                 return point_document(ord.empty() ? evaluate_exact(S, x) : derivative(S, x, ord));
+               } else {
+                 const auto Sf = round_spline<T>(S);
+                 const std::vector<T> xf = round_values<T>(x, "at");
+                 if (!ord.empty() && o->method == "deboor")
+                   throw UsageError("method", "de Boor evaluation gives values only", "use --method basis with --derivative");
+                 const auto p = !ord.empty()              ? derivative(Sf, xf, ord)
+                                : o->method == "deboor" ? evaluate_de_boor(Sf, xf)
+                                                        : evaluate(Sf, xf);
+                 return point_document(p);
+               }
              }));
              return 0;
            }}};

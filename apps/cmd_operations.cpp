@@ -5,6 +5,7 @@
 
 #include "apps/command.hpp"
 #include "crosscheck/operations.hpp"
+#include "crosscheck/operations_ff.hpp"
 #include "float/arith_spec.hpp"
 #include "float/rounding.hpp"
 
@@ -38,9 +39,14 @@ void add_op_options(CLI::App* c, OpOptions& o, const std::string& kind) {
 auto run_op_document(const Operation& op, const BSpline<Rational>& S, const ArithSpec& spec, const Limits& limits) {
   return with_arith<KernelArithmetics>(spec, op.name(), [&](auto tag) {
     using T = typename decltype(tag)::type;
-    const BSpline<T> in = round_spline<T>(S);
-    if (op.kind == Operation::Kind::extract_bezier) return document(extract_bezier(in, limits));
-    return splines_document(run_operation(op, in, limits));
+    if constexpr (std::is_same_v<T, ExactFF>) {
+      if (op.kind == Operation::Kind::extract_bezier) return document(extract_bezier_exact(S, limits));
+      return splines_document(run_operation_exact(op, S, limits));
+    } else {
+      const BSpline<T> in = round_spline<T>(S);
+      if (op.kind == Operation::Kind::extract_bezier) return document(extract_bezier(in, limits));
+      return splines_document(run_operation(op, in, limits));
+    }
   });
 }
 
@@ -56,7 +62,7 @@ Commands add_operations(CLI::App& app) {
     auto o = std::make_shared<Options>();
     const std::string kind = row.name;
     auto* c = app.add_subcommand(kind, "spline document -> " + kind + " result");
-    add_arith_option(c, o->arith, "exact (GMP), flint (exact, FLINT), double or mpfr:BITS");
+    add_arith_option(c, o->arith, kernel_arith_help);
     add_op_options(c, o->op, kind);
     c->add_option("file", o->file, "spline document, - for stdin")->required();
     out.push_back({c, [o, kind](const Context& ctx) {

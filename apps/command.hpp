@@ -65,6 +65,11 @@ BSpline<Rational> read_surface_argument(const std::string& what, const std::stri
 std::vector<int> whole_numbers(const std::vector<Rational>& numbers, const std::string& field, int hi,
                                const std::string& what, const std::string& fix);
 
+/// --arith's help for the kernel's commands (KernelArithmetics).
+inline const char* const kernel_arith_help =
+    "exact (fraction-free integers; GMP where an operation is not written so), gmp (GMP mpq per coefficient), "
+    "flint (FLINT fmpq per coefficient), double or mpfr:BITS";
+
 /// The option every computing command has.
 inline CLI::Option* add_arith_option(CLI::App* c, std::string& arith, const std::string& which) {
   return c->add_option("--arith", arith, which)->capture_default_str();

@@ -1,5 +1,5 @@
 // bench_document: Google Benchmark of one kernel operation on your own spline document, in every
-// arithmetic (exact GMP, exact FLINT, double, MPFR), and the CPU-time ratio of each to double -
+// arithmetic (exact = fraction-free, gmp, flint, double, MPFR), and the CPU-time ratio of each to double -
 // the measure of docs/speed.md, on your input instead of its generated cases.
 //
 //   build/bin/bench_document elevate --by 1 tests/data/curve.json
@@ -19,6 +19,7 @@
 
 #include "bench/ratio_reporter.hpp"
 #include "crosscheck/operations.hpp"
+#include "crosscheck/operations_ff.hpp"
 #include "float/arith_spec.hpp"
 #include "float/rounding.hpp"
 #include "io/json_io.hpp"
@@ -27,13 +28,13 @@ using namespace splinex;
 
 int main(int argc, char** argv) {
   CLI::App app{"bench_document: one kernel operation on your spline document in every arithmetic, CPU-time ratios to double"};
-  std::string kind, file, ariths = "exact,flint,double,mpfr:53";
+  std::string kind, file, ariths = "exact,gmp,flint,double,mpfr:53";
   OpOptions op;
   app.add_option("operation", kind, "insert-knots, elevate, extract-bezier, split, reparametrize, reverse, derivative")
       ->required()
       ->check(CLI::IsMember({"insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse", "derivative"}));
   app.add_option("file", file, "the spline document")->required();
-  app.add_option("--arith", ariths, "comma-separated arithmetics (exact, flint, double, mpfr:BITS)")->capture_default_str();
+  app.add_option("--arith", ariths, "comma-separated arithmetics (exact, gmp, flint, double, mpfr:BITS)")->capture_default_str();
   app.add_option("--dir", op.dir, "parametric direction");
   app.add_option("--knots", op.knots, "insert-knots: comma-separated knots");
   app.add_option("--method", op.insert_method, "insert-knots: a54|boehm; elevate: auto|a59|blossom")
@@ -72,6 +73,21 @@ int main(int argc, char** argv) {
       const ArithSpec spec = ArithSpec::parse(a);
       with_arith<KernelArithmetics>(spec, "bench_document", [&](auto tag) {
         using T = typename decltype(tag)::type;
+        if constexpr (std::is_same_v<T, ExactFF>) {
+          // The fraction-free net, converted once as the float inputs are; the operations it
+          // lacks run on GMP (run_operation_exact), timed as such.
+          auto in = std::make_shared<ff::FFNet>(ff::from_bspline(S));
+          auto gin = std::make_shared<BSpline<Rational>>(S);
+          run_operation_exact(o, S, Limits{});
+          const std::string name = kind + "/" + spec.name();
+          names.push_back(name);
+          benchmark::RegisterBenchmark(name.c_str(), [o, in, gin](benchmark::State& st) {
+            for (auto _ : st)
+              if (runs_fraction_free(o)) benchmark::DoNotOptimize(run_operation_ff(o, *in, Limits{}));
+              else benchmark::DoNotOptimize(run_operation<Rational>(o, *gin, Limits{}));
+          });
+          return;
+        } else {
         auto in = std::make_shared<BSpline<T>>(round_spline<T>(S, "input"));
         run_operation<T>(o, *in, Limits{});  // a bad operation is an error here, not inside the timing
         const long bits = spec.bits;
@@ -82,6 +98,7 @@ int main(int argc, char** argv) {
           if constexpr (std::is_same_v<T, Mpfr>) scope.emplace(bits);
           for (auto _ : st) benchmark::DoNotOptimize(run_operation<T>(o, *in, Limits{}));
         });
+        }
       });
     }
   } catch (const std::exception& e) {

@@ -1,11 +1,13 @@
-// Kernel timings in double, MPFR(128) and exact rationals (Google Benchmark), followed by a table
-// of exact/double and mpfr/double time ratios. Inputs: random clamped curves with dyadic knots and
+// Kernel timings in double, MPFR(128) and exact arithmetic (Google Benchmark): "exact" is the
+// fraction-free kernel (exact/ffnet.hpp), "gmp" and "flint" the naive exact engines (one mpq / fmpq
+// per coefficient, the generic kernel); followed by a table of time ratios to double. Inputs: random clamped curves with dyadic knots and
 // coordinates (k/1024), the case the issue's target names; pass --decimal for k/1000 data.
 //
 //   build/bin/bench_kernel                      all operations, degrees 1,3,5,7, n = 10..10000
 //   build/bin/bench_kernel --benchmark_filter=insert   (any Google Benchmark flag works)
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
@@ -28,6 +30,8 @@
 
 #include "bench/memory_probe.hpp"
 #include "bench/ratio_reporter.hpp"
+#include <flint/fmpz_vec.h>
+
 #include "exact/ffnet.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
@@ -127,7 +131,7 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
   report_memory(st, once, items);
 }
 
-/// The fraction-free net (exact/ffnet.hpp, issue 49): converted from the exact case outside the
+/// "exact": the fraction-free net (exact/ffnet.hpp, issue 49), converted from the exact case outside the
 /// timed loop, as the double input is; `bytes_per_coef` is the
 /// result's heap bytes per stored rational value (coordinates, weights and knots).
 void run_ff(benchmark::State& st, const std::string& op, int p, std::size_t n) {
@@ -145,6 +149,9 @@ void run_ff(benchmark::State& st, const std::string& op, int p, std::size_t n) {
   const long items = static_cast<long>(op == "eval" ? c.at.size() : 1);
   st.SetItemsProcessed(st.iterations() * items);
   report_memory(st, once, items);
+  ff::promotions() = 0;
+  once();
+  st.counters["promotions"] = static_cast<double>(ff::promotions());  // small products that overflowed, one run
   if (op == "insert" || op == "refine" || op == "elevate" || op == "extract") {
     const ff::FFNet R = op == "insert"    ? ff::insert_knot(F, 0, c.knot, 1)
                         : op == "refine"  ? ff::refine_knots(F, 0, c.refine)
@@ -152,6 +159,8 @@ void run_ff(benchmark::State& st, const std::string& op, int p, std::size_t n) {
                                           : ff::bezier_form(F).spline;
     const double values = static_cast<double>(R.size() * (R.q + (R.rational ? 1 : 0)) + R.knots[0].size());
     st.counters["bytes_per_coef"] = static_cast<double>(ff::heap_bytes(R)) / values;
+    // The longest integer of the result (bits): past 62 the words hold FLINT's big integers.
+    st.counters["max_bits"] = static_cast<double>(std::abs(_fmpz_vec_max_bits(R.words.data(), static_cast<slong>(R.words.size()))));
   }
 }
 
@@ -271,7 +280,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> ops{"insert", "refine", "elevate", "extract", "pieces", "eval"};
   const std::vector<int> degrees{1, 3, 5, 7};
   const std::vector<std::size_t> sizes{10, 100, 1000, 10000};
-  std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"exact", 0}, {"flint", 0}, {"ff", 0}};
+  std::vector<std::pair<std::string, long>> ariths{{"double", 0}, {"mpfr128", 128}, {"gmp", 0}, {"flint", 0}, {"exact", 0}};
 #ifdef SPLINEX_HAVE_SISL
   ariths.emplace_back("sisl", 0);
 #endif
@@ -288,9 +297,9 @@ int main(int argc, char** argv) {
           const long b = bits;
           benchmark::RegisterBenchmark(name.c_str(), [op, p, n, a, b](benchmark::State& st) {
             if (a == "double") run_op<double>(st, op, p, n, 0);
-            else if (a == "exact") run_op<Rational>(st, op, p, n, 0);
+            else if (a == "gmp") run_op<Rational>(st, op, p, n, 0);
             else if (a == "flint") run_op<FlintRational>(st, op, p, n, 0);
-            else if (a == "ff") run_ff(st, op, p, n);
+            else if (a == "exact") run_ff(st, op, p, n);
 #ifdef SPLINEX_HAVE_SISL
             else if (a == "sisl") run_sisl(st, op, p, n);
 #endif
@@ -305,14 +314,14 @@ int main(int argc, char** argv) {
   RatioReporter rep;
   benchmark::RunSpecifiedBenchmarks(&rep);
   std::cout << "\nTime ratios (" << (g_dyadic ? "dyadic" : "decimal") << " data) against double:\n";
-  std::cout << std::left << std::setw(10) << "op" << std::setw(5) << "p" << std::setw(8) << "n" << std::setw(16) << "exact(GMP)/double"
-            << std::setw(18) << " flint/double" << std::setw(16) << "ff/double" << "mpfr128/double\n";
+  std::cout << std::left << std::setw(10) << "op" << std::setw(5) << "p" << std::setw(8) << "n" << std::setw(16) << "gmp/double"
+            << std::setw(18) << " flint/double" << std::setw(16) << "exact/double" << "mpfr128/double\n";
   for (const auto& op : ops)
     for (int p : degrees)
       for (std::size_t n : sizes) {
         const std::string tail = "/p" + std::to_string(p) + "/n" + std::to_string(n);
-        auto d = rep.ns.find(op + "/double" + tail), e = rep.ns.find(op + "/exact" + tail), m = rep.ns.find(op + "/mpfr128" + tail),
-             f = rep.ns.find(op + "/flint" + tail), ffr = rep.ns.find(op + "/ff" + tail);
+        auto d = rep.ns.find(op + "/double" + tail), e = rep.ns.find(op + "/gmp" + tail), m = rep.ns.find(op + "/mpfr128" + tail),
+             f = rep.ns.find(op + "/flint" + tail), ffr = rep.ns.find(op + "/exact" + tail);
         if (d == rep.ns.end()) continue;
         auto ratio = [&](decltype(d) it) { return it == rep.ns.end() ? std::string("-") : std::to_string(it->second / d->second).substr(0, 6); };
         std::cout << std::setw(10) << op << std::setw(5) << p << std::setw(8) << n << std::setw(18) << ratio(e) << std::setw(18) << ratio(f)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "crosscheck/operations_ff.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "io/json_io.hpp"
 #include "spline/evaluate.hpp"
@@ -205,7 +206,10 @@ void compare(const std::vector<BSpline<Rational>>& E, const std::vector<BSpline<
 
 CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, const ArithSpec& fl, int grid_per_dir,
                        const Limits& limits) {
-  if (fl.kind == ArithSpec::Kind::exact) throw UsageError("float", "the crosscheck compares exact (GMP) with another arithmetic", "use --float double, mpfr:BITS or flint");
+  // The reference is GMP mpq (an oracle independent of the fraction-free kernel): --float exact
+  // compares the fraction-free kernel with it (zero error, or a bug), --float gmp is refused.
+  if (fl.kind == ArithSpec::Kind::gmp)
+    throw UsageError("float", "the crosscheck compares exact (GMP) with another arithmetic", "use --float exact, flint, double or mpfr:BITS");
   // The grid is checked before any work: G^k points per result, G >= 2 (both domain ends).
   if (grid_per_dir == 1 || grid_per_dir < 0)
     throw UsageError("grid", std::to_string(grid_per_dir) + " points per direction cannot span a domain", "use --grid 0 (automatic) or >= 2");
@@ -226,12 +230,18 @@ CrossReport crosscheck(const Operation& op, const BSpline<Rational>& input, cons
   rep.results = E.size();
   with_arith<KernelArithmetics>(fl, "crosscheck", [&](auto tag) {
     using T = typename decltype(tag)::type;
+    constexpr bool ff = std::is_same_v<T, ExactFF>;
+    using V = std::conditional_t<ff, Rational, T>;  // the results' scalar
     rep.precision = ArithTraits<T>::precision_bits();
     const auto t1 = clock::now();
-    std::vector<BSpline<T>> F;
+    std::vector<BSpline<V>> F;
     try {
-      const BSpline<T> in = round_spline<T>(input);
-      F = run_operation(op, in, limits);
+      if constexpr (ff) {
+        F = run_operation_exact(op, input, limits);
+      } else {
+        const BSpline<T> in = round_spline<T>(input);
+        F = run_operation(op, in, limits);
+      }
     } catch (const Error& e) {
       // Rounding can merge knots that differ exactly (round_spline refuses that), overflow, or
       // push a parameter out of the domain: the float run fails where the exact one succeeds.

@@ -22,7 +22,8 @@ struct Curve {
   std::size_t count = 0;
 };
 
-/// out = sum_j c_j P_j / div over homogeneous points (numerators m, denominator last), reduced.
+/// out = sum_j c_j P_j / div over homogeneous points (numerators m, denominator last), reduced
+/// when long (reduce_if_long: a59 reduces the points it returns).
 class Combination {
  public:
   explicit Combination(std::size_t m) : m_(m), acc_(m + 1) { fmpz_one(one_.get()); }
@@ -36,23 +37,26 @@ class Combination {
     } else if (cmp(a + m_, P + m_) == 0) {
       for (std::size_t k = 0; k < m_; ++k) lin2(a + k, one_.get(), a + k, c, P + k);
     } else {
-      // a/E_a + c P/E_P = (a E_P + c E_a P) / (E_a E_P)
-      mul(ce_.get(), c, a + m_);
-      for (std::size_t k = 0; k < m_; ++k) lin2(a + k, P + m_, a + k, ce_.get(), P + k);
-      mul(a + m_, a + m_, P + m_);
+      // Over the lcm, g = gcd(E_a, E_P): a/E_a + c P/E_P = (a (E_P/g) + c (E_a/g) P) / (E_a E_P/g).
+      fmpz_gcd(g_.get(), a + m_, P + m_);
+      fmpz_divexact(fp_.get(), P + m_, g_.get());
+      fmpz_divexact(ce_.get(), a + m_, g_.get());
+      mul(ce_.get(), c, ce_.get());
+      for (std::size_t k = 0; k < m_; ++k) lin2(a + k, fp_.get(), a + k, ce_.get(), P + k);
+      mul(a + m_, a + m_, fp_.get());
     }
   }
   void finish(const fmpz* div, fmpz* out) {
     fmpz* a = acc_.data();
     mul(a + m_, a + m_, div);
-    reduce_point(a, m_);
+    reduce_if_long(a, m_);
     for (std::size_t k = 0; k <= m_; ++k) set(out + k, a + k);
   }
 
  private:
   std::size_t m_;
   ZVec acc_;
-  Z one_, ce_;
+  Z one_, ce_, g_, fp_;
   bool first_ = true;
 };
 
@@ -103,6 +107,7 @@ Curve a59(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t count, std
     for (std::size_t c = 0; c < w; ++c) set(dst + c, src + c);
   };
   Blend blend;
+  blend.lazy = true;  // the output points are reduced at the end
   Combination comb(m);
   Z numer, den, sn, tn, ns, nt, bet;
 
@@ -179,6 +184,7 @@ Curve a59(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t count, std
   const int nh = mh - ph - 1;
   out.U.resize(nh + ph + 2);
   out.count = static_cast<std::size_t>(nh + 1);
+  for (std::size_t i = 0; i < out.count; ++i) reduce_point(qt(static_cast<int>(i)), m);
   return out;
 }
 

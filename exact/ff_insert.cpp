@@ -64,6 +64,7 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
   }
   ZVec Rw((p - s + 1) * w);
   Blend blend;
+  blend.lazy = true;
   for (std::size_t b = 0; b < f.after; ++b) {
     const fmpz* src = F.words + b * n * ps;
     fmpz* dst = R.words + b * (n + r) * ps;
@@ -76,6 +77,7 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
       auto Q = [&](std::size_t i) { return dst + i * ps + a * w; };
       auto put = [&](std::size_t i, const fmpz* from) {
         for (std::size_t c = 0; c < w; ++c) set(Q(i) + c, from + c);
+        reduce_point(Q(i), m);  // the triangle's points are reduced lazily; a stored one always
       };
       for (int i = 0; i <= p - s; ++i)
         for (std::size_t c = 0; c < w; ++c) set(Rw + i * w + c, P(k - p + i) + c);
@@ -197,6 +199,13 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
   const std::size_t w = F.stride(), m = F.m(), ps = f.before * w, n = f.n, n2 = n + r + 1;
   FFNet R = with_knots(F, d, std::move(V), n2);
   Blend blend;
+  blend.lazy = true;
+  /// The points a blend wrote (or a copy of one): reduced once after the walk.
+  std::vector<std::size_t> touched;
+  for (const Step& st : prog)
+    if (st.kind != Step::copy_p) touched.push_back(st.to);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (std::size_t b = 0; b < f.after; ++b) {
     const fmpz* src = F.words + b * n * ps;
     fmpz* dst = R.words + b * n2 * ps;
@@ -214,6 +223,8 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
           blend(to, dst + st.from * ps + a * w, to, coef[st.coef].get(), coef[st.coef + 1].get(), m);
         }
       }
+    for (std::size_t a = 0; a < f.before; ++a)
+      for (const std::size_t i : touched) reduce_point(dst + i * ps + a * w, m);
   }
   return R;
 }

@@ -153,13 +153,21 @@ inline void reduce_point(fmpz* p, std::size_t m) {
   fmpz_clear(g);
 }
 
+/// reduce_point only when the denominator has grown past 2^30 (or is big): for scratch points of
+/// a triangle, whose integers then stay short enough for 64-bit products without a gcd per step.
+/// A point stored in a net is always reduced with reduce_point.
+inline void reduce_if_long(fmpz* p, std::size_t m) {
+  if (!small(p + m) || p[m] > (slong(1) << 30)) reduce_point(p, m);
+}
+
 /// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
-/// denominator: out = ((t - s) P + s Q) / t with t > 0, reduced. `out` may be P or Q. `a`, `c1`,
-/// `c2`, `e` are scratch integers of the caller.
+/// denominator: out = ((t - s) P + s Q) / t with t > 0. `out` may be P or Q. Reduced, unless
+/// `lazy` (then reduce_if_long: the caller reduces what it stores).
 struct Blend {
-  fmpz_t a, c1, c2, e;
-  Blend() { fmpz_init(a); fmpz_init(c1); fmpz_init(c2); fmpz_init(e); }
-  ~Blend() { fmpz_clear(a); fmpz_clear(c1); fmpz_clear(c2); fmpz_clear(e); }
+  bool lazy = false;
+  fmpz_t a, c1, c2, e, g;
+  Blend() { fmpz_init(a); fmpz_init(c1); fmpz_init(c2); fmpz_init(e); fmpz_init(g); }
+  ~Blend() { fmpz_clear(a); fmpz_clear(c1); fmpz_clear(c2); fmpz_clear(e); fmpz_clear(g); }
   Blend(const Blend&) = delete;
   Blend& operator=(const Blend&) = delete;
 
@@ -170,14 +178,26 @@ struct Blend {
       for (std::size_t c = 0; c < m; ++c) lin2(out + c, a, P + c, s, Q + c);
       mul(out + m, t, P + m);
     } else {
-      // N = (t - s) E_Q N_P + s E_P N_Q over t E_P E_Q.
-      mul(c1, a, Q + m);
-      mul(c2, s, P + m);
-      mul(e, P + m, Q + m);
+      // Over the lcm: with g = gcd(E_P, E_Q), N = (t - s)(E_Q/g) N_P + s (E_P/g) N_Q over
+      // t (E_P/g) E_Q. The products stay smaller than over E_P E_Q, so more of them fit 62 bits.
+      if (small(P + m) && small(Q + m)) {
+        const slong gs = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(P[m]), static_cast<std::uint64_t>(Q[m])));
+        set_small(g, gs);
+        set_small(c2, P[m] / gs);  // E_P / g
+        set_small(e, Q[m] / gs);   // E_Q / g
+      } else {
+        fmpz_gcd(g, P + m, Q + m);
+        fmpz_divexact(c2, P + m, g);
+        fmpz_divexact(e, Q + m, g);
+      }
+      mul(c1, a, e);        // (t - s) E_Q / g
+      mul(e, c2, Q + m);    // (E_P / g) E_Q: the lcm
+      mul(c2, s, c2);       // s E_P / g
       for (std::size_t c = 0; c < m; ++c) lin2(out + c, c1, P + c, c2, Q + c);
       mul(out + m, t, e);
     }
-    reduce_point(out, m);
+    if (lazy) reduce_if_long(out, m);
+    else reduce_point(out, m);
   }
 };
 

@@ -84,16 +84,6 @@ std::size_t FFNet::size() const {
   return s;
 }
 
-Policy& policy() {
-  thread_local Policy p;
-  return p;
-}
-
-std::size_t& promotions() {
-  thread_local std::size_t n = 0;
-  return n;
-}
-
 namespace {
 
 const __mpq_struct* mpq(const Rational& x) { return x.backend().data(); }

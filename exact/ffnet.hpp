@@ -109,7 +109,8 @@ struct Policy {
   Tier tier = Tier::small_first;
 };
 /// This thread's policy (tests change it through PolicyScope).
-Policy& policy();
+inline thread_local Policy current_policy;
+inline Policy& policy() { return current_policy; }
 struct PolicyScope {
   explicit PolicyScope(Policy p) : saved_(policy()) { policy() = p; }
   ~PolicyScope() { policy() = saved_; }
@@ -120,7 +121,8 @@ struct PolicyScope {
   Policy saved_;
 };
 /// Counts of this thread's small-range products that overflowed into FLINT's big integers.
-std::size_t& promotions();
+inline thread_local std::size_t promotion_count = 0;
+inline std::size_t& promotions() { return promotion_count; }
 
 /// The kernel's insert_knot (spline/insert.hpp): the same result, errors and limits.
 FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times = 1, const Limits& limits = {});

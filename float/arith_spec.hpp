@@ -1,12 +1,19 @@
-// The arithmetics, one table (issue 48 item 7): their names on the command line ("exact", "flint",
-// "double", "mpfr:BITS"), their types, which arithmetics each package runs in, and the one
+// The arithmetics, one table (issue 48 item 7): their names on the command line ("exact", "gmp",
+// "flint", "double", "mpfr:BITS"), their types, which arithmetics each package runs in, and the one
 // dispatcher from a name to generic code.
+//
+// "exact" is the best exact engine a package has: the fraction-free kernel (ExactFF,
+// exact/exact_ff.hpp) where its operations are written, GMP mpq (Rational) elsewhere, with the
+// same values. "gmp" and "flint" are the naive exact engines (one rational per coefficient), kept
+// selectable so that benchmarks and reports can show what a naive exact kernel costs.
 #pragma once
 #include <cstddef>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "base/errors.hpp"
+#include "exact/exact_ff.hpp"
 #include "exact/flint_rational.hpp"
 #include "exact/rational.hpp"
 #include "float/mpfr.hpp"
@@ -18,7 +25,8 @@
 // A new arithmetic is its type's file (ArithTraits, in exact/ or float/), one row here, and an entry
 // in the lists below of the packages that run in it, with their instantiation files.
 #define SPLINEX_ARITHMETICS(X)       \
-  X(exact, "exact", Rational)        \
+  X(exact, "exact", ExactFF)         \
+  X(gmp, "gmp", Rational)            \
   X(flint, "flint", FlintRational)   \
   X(dbl, "double", double)           \
   X(mpfr, "mpfr:BITS", Mpfr)
@@ -75,6 +83,17 @@ struct ArithTag {
   using type = T;
 };
 
+/// The type a row's name runs in a package that lacks the row's own type: "exact" runs Rational
+/// where the fraction-free kernel is not written (void: no fallback).
+template <class T>
+struct ArithFallback {
+  using type = void;
+};
+template <>
+struct ArithFallback<ExactFF> {
+  using type = Rational;
+};
+
 /// A list of arithmetics (a package's): has<T>, and their names for messages ("exact, double or
 /// mpfr:BITS"). add<U> appends, so a list is derived from a package's X-list above.
 template <class... T>
@@ -83,20 +102,29 @@ struct Arithmetics {
   static constexpr bool has = (std::is_same_v<T, U> || ...);
   template <class U>
   using add = Arithmetics<T..., U>;
+  /// Whether the name of the row of type R is accepted (its type, or its fallback, is listed).
+  template <class R>
+  static constexpr bool accepts = has<R> || has<typename ArithFallback<R>::type>;
+  /// The accepted names in the table's order: "exact, gmp, double or mpfr:BITS".
   static std::string names() {
-    const char* all[] = {ArithOf<T>::name...};
+#define SPLINEX_ARITH_NAME(k, n, R) \
+  if (accepts<R>) all.push_back(n);
+    std::vector<const char*> all;
+    SPLINEX_ARITHMETICS(SPLINEX_ARITH_NAME)
+#undef SPLINEX_ARITH_NAME
     std::string out;
-    for (std::size_t k = 0; k < sizeof...(T); ++k)
-      out += (k == 0 ? "" : k + 1 == sizeof...(T) ? " or " : ", ") + std::string(all[k]);
+    for (std::size_t k = 0; k < all.size(); ++k)
+      out += (k == 0 ? "" : k + 1 == all.size() ? " or " : ", ") + std::string(all[k]);
     return out;
   }
 };
-
 #define SPLINEX_ARITH_ADD(T) ::add<T>
 /// The kernel (spline/), in every arithmetic: eval, the operations, crosscheck, bench_document. Split
 /// one TU per arithmetic (build time; exact/ may not include float/): exact/kernel_rational.cpp,
 /// exact/kernel_flint.cpp, float/kernel_double.cpp, float/kernel_mpfr.cpp.
-using KernelArithmetics = Arithmetics<Rational, FlintRational, double, Mpfr>;
+/// "exact" is the fraction-free kernel here (ExactFF; the call sites convert at the boundary and fall
+/// back to Rational for the operations it lacks: crosscheck/operations_ff.hpp).
+using KernelArithmetics = Arithmetics<ExactFF, Rational, FlintRational, double, Mpfr>;
 /// Composition (compose/: compose --method symbolic, interpolation, trimmed), in every arithmetic.
 /// Split by build time: compose/instances_exact.cpp (Rational, FlintRational) and
 /// compose/instances_float.cpp (double, Mpfr).
@@ -130,9 +158,11 @@ decltype(auto) call_in(const ArithSpec& spec, F& f) {
 template <class List, class F>
 decltype(auto) with_arith(const ArithSpec& spec, const std::string& what, F&& f) {
   switch (spec.kind) {
-#define SPLINEX_ARITH_CASE(k, n, T)                                             \
-  case ArithSpec::Kind::k:                                                      \
-    if constexpr (List::template has<T>) return detail::call_in<T>(spec, f);    \
+#define SPLINEX_ARITH_CASE(k, n, T)                                                          \
+  case ArithSpec::Kind::k:                                                                   \
+    if constexpr (List::template has<T>) return detail::call_in<T>(spec, f);                 \
+    else if constexpr (List::template has<typename ArithFallback<T>::type>)                  \
+      return detail::call_in<typename ArithFallback<T>::type>(spec, f);                      \
     break;
     SPLINEX_ARITHMETICS(SPLINEX_ARITH_CASE)
 #undef SPLINEX_ARITH_CASE

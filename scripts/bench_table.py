@@ -52,8 +52,8 @@ def fmt(x):
     return "-" if x is None else f"{x:.3g}"
 
 
-def targets(t, compose, hybrid, vrep=None):
-    """Issue 15's targets against this run: each one's measured value, the bound, met or how far."""
+def targets(t, compose, hybrid, vrep=None, mem=None):
+    """Issues 15's and 49's targets against this run: each one's measured value, the bound, met or how far."""
     rows = []
 
     def add(what, value, bound, better="<="):
@@ -74,14 +74,26 @@ def targets(t, compose, hybrid, vrep=None):
             if r:
                 add(f"{op}: worst double/{peer.upper()} over p, n ({sum(x > 1 for x in r)} of {len(r)} cases above 1)",
                     max(r), 1.0)
-    for op, bound in (("insert", 10), ("refine", 10), ("extract", 10), ("eval", 10), ("elevate", 40)):
+    # Issue 49: the bounds on the best exact arithmetic (exact = fraction-free, gmp, flint).
+    exacts = ("exact", "gmp", "flint")
+    for op, bound in (("insert", 2), ("refine", 5), ("eval", 3), ("elevate", 4), ("extract", 10)):
         d = t.get((op, "double", 3, 1000))
-        best = min((t[(op, a, 3, 1000)] for a in ("exact", "flint") if (op, a, 3, 1000) in t), default=None)
+        best = min((t[(op, a, 3, 1000)] for a in exacts if (op, a, 3, 1000) in t), default=None)
         add(f"{op}: best exact arithmetic / double at p = 3, n = 1000", best / d if best and d else None, bound)
+    for op in ORDER:
+        r = [min(t[(op, a, 7, n)] for a in exacts if (op, a, 7, n) in t) / t[(op, "double", 7, n)]
+             for (o, p, n) in cases if o == op and p == 7 and any((op, a, 7, n) in t for a in exacts)]
+        add(f"{op}: worst best-exact / double at p = 7 over n", max(r) if r else None, 25)
+    r = [t[("insert", "fraction", p, n)] / t[("insert", "exact", p, n)] for (o, p, n) in cases
+         if o == "insert" and n >= 1000 and ("insert", "fraction", p, n) in t and ("insert", "exact", p, n) in t]
+    add("insert: worst Python Fraction / exact over p, n >= 1000 (how many times faster)", min(r) if r else None, 20, ">=")
     for op, bound in (("insert", 1.0), ("eval", 0.1)):
-        r = [t[(op, "exact", p, n)] / t[(op, "fraction", p, n)] for (o, p, n) in cases
-             if o == op and (op, "fraction", p, n) in t and (op, "exact", p, n) in t]
+        r = [t[(op, "gmp", p, n)] / t[(op, "fraction", p, n)] for (o, p, n) in cases
+             if o == op and (op, "fraction", p, n) in t and (op, "gmp", p, n) in t]
         add(f"{op}: worst GMP / Python Fraction over p, n", max(r) if r else None, bound)
+    if mem:
+        b = [v["bytes_per_coef"] for (op, a, p, n), v in mem.items() if a == "exact" and n == 10000 and "bytes_per_coef" in v]
+        add("exact: worst bytes per coefficient of a result, n = 10^4", max(b) if b else None, 16)
     if compose:
         for a in ("exact", "flint"):
             tot = [v for k, v in compose.items() if k.startswith(f"stars/{a}/")]
@@ -131,24 +143,28 @@ def main():
         t[(op, arith, int(p[1:]), int(n[1:]))] = b["cpu_time"] * scale
         if "allocs" in b:
             mem[(op, arith, int(p[1:]), int(n[1:]))] = {k: b[k] for k in ("allocs", "allocs_per_item", "heap_peak_kib",
-                                                                            "rss_peak_mib") if k in b}
+                                                                            "rss_peak_mib", "bytes_per_coef") if k in b}
+    # Runs before issue 49 named GMP "exact" and had no fraction-free kernel: read them so.
+    if not any(k[1] == "gmp" for k in t):
+        t = {(o, "gmp" if a == "exact" else a, p, n): v for (o, a, p, n), v in t.items()}
+        mem = {(o, "gmp" if a == "exact" else a, p, n): v for (o, a, p, n), v in mem.items()}
     python = None
     if len(sys.argv) == 4:
         python = json.load(open(sys.argv[3]))
         for c in python["cases"]:
             t[(c["op"], "fraction", c["p"], c["n"])] = c["seconds"]
     present = {k[1] for k in t}
-    ariths = [a for a in ("exact", "flint", "mpfr128") if a in present]
+    ariths = [a for a in ("exact", "gmp", "flint", "mpfr128") if a in present]
     peers = [a for a in ("sisl", "occt") if a in present]
     ops = sorted({k[0] for k in t}, key=ORDER.index)
     # Columns: double against each peer, each exact/float arithmetic against double, the exact ones
     # against SISL (the fastest double peer).
     cols = [("double", pr) for pr in peers] + [(a, "double") for a in ariths]
     if "sisl" in peers:
-        cols += [(a, "sisl") for a in ("exact", "flint") if a in ariths]
+        cols += [(a, "sisl") for a in ("exact", "gmp", "flint") if a in ariths]
     if "fraction" in present:
-        cols += [(a, "fraction") for a in ("exact", "flint") if a in ariths]
-    names = {"exact": "GMP", "flint": "flint", "mpfr128": "mpfr128", "double": "double", "sisl": "SISL", "occt": "OCCT",
+        cols += [(a, "fraction") for a in ("exact", "gmp", "flint") if a in ariths]
+    names = {"exact": "exact", "gmp": "GMP", "flint": "flint", "mpfr128": "mpfr128", "double": "double", "sisl": "SISL", "occt": "OCCT",
              "fraction": "Fraction"}
     rows, geo = [], defaultdict(list)
     for (op, arith, p, n), sec in sorted(t.items(), key=lambda kv: (ORDER.index(kv[0][0]), kv[0][2], kv[0][3])):
@@ -192,7 +208,9 @@ def main():
           "OCCT modifies in place, so its insert/refine/elevate include a copy of the curve; `extract` is the Bezier "
           "form in one object (splinex `bezier_form`, SISL s1730; OCCT's converter makes one arc object per piece), "
           "`pieces` one BSpline per piece (splinex `extract_bezier`); elevation is splinex's default method (A5.9 in "
-          "exact arithmetic, the blossom in floating point).", "",
+          "exact arithmetic, the blossom in floating point). `exact` is the fraction-free kernel (exact/ffnet.hpp: "
+          "integers over one denominator per point and per knot vector), `GMP` and `flint` the naive exact kernels "
+          "(one mpq / fmpq per coefficient).", "",
           "## Geometric mean over p and n", "",
           "| operation | " + " | ".join(head) + " |", "|---|" + "---|" * len(cols)]
     for op in ops:
@@ -203,7 +221,7 @@ def main():
         md.append(f"| {r['op']} | {r['p']} | {r['n']} | {r['double_us']:.3g} | " +
                   " | ".join(f"{r[f'{a}/{b_}']:.3g}" if f"{a}/{b_}" in r else "-" for a, b_ in cols) + " |")
     # Memory: one more run of each case with the allocator counted (bench/memory_probe.hpp).
-    mem_ariths = [a for a in ("double", "exact", "flint", "mpfr128", "sisl", "occt") if any(k[1] == a for k in mem)]
+    mem_ariths = [a for a in ("double", "exact", "gmp", "flint", "mpfr128", "sisl", "occt") if any(k[1] == a for k in mem)]
     mem_md = []
     if mem:
         md += ["", "## Memory of one operation", "",
@@ -227,8 +245,8 @@ def main():
                 c = mem.get((r["op"], a, r["p"], r["n"]))
                 if c:
                     r[f"{a}_memory"] = c
-    target_rows = targets(t, extra.get("--compose"), extra.get("--hybrid"), extra.get("--vrep"))
-    target_md = ["## Issue 15's targets in this run", "",
+    target_rows = targets(t, extra.get("--compose"), extra.get("--hybrid"), extra.get("--vrep"), mem)
+    target_md = ["## Targets of issues 15 and 49 in this run", "",
                  "| target | measured | bound | verdict |", "|---|---|---|---|"] + \
                 [f"| {w} | {v} | {b} | {m} |" for w, v, b, m in target_rows]
     md[8 + len(ops):8 + len(ops)] = [""] + target_md

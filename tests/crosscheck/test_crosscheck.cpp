@@ -31,7 +31,13 @@ TEST_CASE("crosscheck measures double error exactly: tiny but not zero for decim
   CHECK(m.control_points.max_abs < d.control_points.max_abs);
   CHECK(m.control_points.rel() < 1e-55);
   CHECK(m.control_points.bits_lost(200) < 8);
-  CHECK_THROWS_AS(crosscheck(op, S, ArithSpec::parse("exact")), UsageError);
+  CHECK_THROWS_AS(crosscheck(op, S, ArithSpec::parse("gmp")), UsageError);
+  // exact is the fraction-free kernel, judged against the GMP reference: no error at all.
+  const auto e = crosscheck(op, S, ArithSpec::parse("exact"));
+  CHECK(e.structure_match);
+  CHECK(e.control_points.max_abs == 0);
+  CHECK(e.grid.max_abs == 0);
+  CHECK(e.precision == 0);
 }
 
 TEST_CASE("dyadic data and dyadic knots: double insertion of a midpoint is exact") {

@@ -103,7 +103,8 @@ void check_dispatch(Arithmetics<T...>) {
       using G = typename decltype(tag)::type;
       static_assert((std::is_same_v<G, T> || ...), "f instantiated for an arithmetic outside the list");
       CHECK(std::is_same_v<G, W>);
-      return ArithTraits<G>::name();
+      if constexpr (std::is_same_v<G, Mpfr>) return ArithTraits<G>::name();  // "mpfr:77": the scope's bits
+      else return std::string(ArithOf<G>::name);
     });
     CHECK(got == spec_of<W>().name());
   };
@@ -131,16 +132,20 @@ TEST_CASE("the arithmetics are one table: every row's name round-trips", "[arith
     CHECK(spec.kind == row.kind);
     CHECK(spec.name() == name);
     // The row's type carries the row's name: a row naming the wrong type fails here.
-    CHECK(with_arith<KernelArithmetics>(spec, "test", [](auto tag) { return ArithTraits<typename decltype(tag)::type>::name(); }) == name);
+    CHECK(with_arith<KernelArithmetics>(spec, "test", [](auto tag) {
+            using T = typename decltype(tag)::type;
+            return std::string(std::is_same_v<T, Mpfr> ? "mpfr:113" : ArithOf<T>::name);
+          }) == name);
     for (auto k : kinds) CHECK(k != row.kind);
     kinds.push_back(row.kind);
   }
-  CHECK(kinds.size() == 4);
-  CHECK(std::string(arith_rows[3].name) == "mpfr:BITS");
+  CHECK(kinds.size() == 5);
+  CHECK(std::string(arith_rows[4].name) == "mpfr:BITS");
+  CHECK(ArithSpec::parse("gmp").is_exact());
   CHECK(ArithSpec::parse("flint").is_exact());
   CHECK(!ArithSpec::parse("mpfr:64").is_exact());
   CHECK_THROWS_WITH(ArithSpec::parse("quad"),
-                    "arith: unknown arithmetic \"quad\" (fix: use exact, flint, double, or mpfr:BITS with 24 <= BITS <= 1000000)");
+                    "arith: unknown arithmetic \"quad\" (fix: use exact, gmp, flint, double, or mpfr:BITS with 24 <= BITS <= 1000000)");
 }
 
 TEST_CASE("with_arith dispatches each package's list to its types", "[arith]") {
@@ -160,13 +165,29 @@ TEST_CASE("with_arith dispatches each package's list to its types", "[arith]") {
 
 TEST_CASE("with_arith refuses an arithmetic outside the list, naming the list", "[arith]") {
   CHECK(refusal("flint", VrepArithmetics{}) ==
-        "arith: vrep construct runs in exact, double or mpfr:BITS (not flint) (fix: use --arith exact, double or mpfr:BITS)");
+        "arith: vrep construct runs in exact, gmp, double or mpfr:BITS (not flint) (fix: use --arith exact, gmp, double or mpfr:BITS)");
   CHECK(refusal("exact", Arithmetics<double>{}) == "arith: vrep construct runs in double (not exact) (fix: use --arith double)");
   CHECK(refusal("flint", Arithmetics<double>{}) == "arith: vrep construct runs in double (not flint) (fix: use --arith double)");
   CHECK(refusal("mpfr:64", Arithmetics<double>{}) == "arith: vrep construct runs in double (not mpfr:64) (fix: use --arith double)");
   CHECK(refusal("double", Arithmetics<double>{}) == "no error");
   CHECK(refusal("exact", Arithmetics<Rational, Mpfr>{}) == "no error");
   CHECK(refusal("double", Arithmetics<Rational, Mpfr>{}) ==
-        "arith: vrep construct runs in exact or mpfr:BITS (not double) (fix: use --arith exact or mpfr:BITS)");
-  for (const char* a : {"exact", "flint", "double", "mpfr:64"}) CHECK(refusal(a, KernelArithmetics{}) == "no error");
+        "arith: vrep construct runs in exact, gmp or mpfr:BITS (not double) (fix: use --arith exact, gmp or mpfr:BITS)");
+  for (const char* a : {"exact", "gmp", "flint", "double", "mpfr:64"}) CHECK(refusal(a, KernelArithmetics{}) == "no error");
+  CHECK(refusal("gmp", Arithmetics<ExactFF, double>{}) ==
+        "arith: vrep construct runs in exact or double (not gmp) (fix: use --arith exact or double)");
+}
+
+TEST_CASE("exact runs the fraction-free kernel where a package has it, GMP elsewhere, and gmp always GMP", "[arith]") {
+  auto type_of = [](const char* a, auto list) {
+    return with_arith<decltype(list)>(ArithSpec::parse(a), "test", [](auto tag) {
+      using T = typename decltype(tag)::type;
+      return std::string(std::is_same_v<T, ExactFF> ? "ExactFF" : std::is_same_v<T, Rational> ? "Rational" : "other");
+    });
+  };
+  CHECK(type_of("exact", KernelArithmetics{}) == "ExactFF");
+  CHECK(type_of("gmp", KernelArithmetics{}) == "Rational");
+  CHECK(type_of("exact", VrepArithmetics{}) == "Rational");
+  CHECK(type_of("gmp", VrepArithmetics{}) == "Rational");
+  CHECK(type_of("exact", ComposeArithmetics{}) == "Rational");
 }

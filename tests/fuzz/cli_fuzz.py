@@ -34,7 +34,7 @@ EXTREME_INTS = [-2147483649, -1, 0, 1, 2, 3, 7, 100, 101, 1000, 2147483647, 2147
 OPTION_VALUES = ["-1", "0", "1", "2", "3", "100", "2147483647", "2147483648", "-2147483649", "1e308", "1e-15",
                  "nan", "inf", "", "abc", "0.5", "1/3", "1e100000", "0,1", "0.5,0.5,0.5,0.5,0.5", "x,y",
                  "\n", "1,", ",", "-0", "99999999999999999999"]
-ARITHS = ["exact", "flint", "double", "mpfr:24", "mpfr:53", "mpfr:113", "mpfr:2", "mpfr:65536", "mpfr:70000",
+ARITHS = ["exact", "gmp", "flint", "double", "mpfr:24", "mpfr:53", "mpfr:113", "mpfr:2", "mpfr:65536", "mpfr:70000",
           "mpfr:abc", "quad", ""]
 
 
@@ -144,6 +144,8 @@ KINDS = ["eval", "insert-knots", "elevate", "extract-bezier", "split", "reparame
 
 
 NO_OPTION_MUTATION = {"cut-guide-3d"}
+# The kernel's commands, whose "exact" (fraction-free) and "gmp" runs are compared byte for byte.
+KERNEL_KINDS = {"eval", "insert-knots", "elevate", "extract-bezier", "split", "reparametrize", "reverse"}
 
 
 def command_for(rng, docs, kinds=KINDS):
@@ -154,7 +156,7 @@ def command_for(rng, docs, kinds=KINDS):
     doc_name = rng.choice(curves)
     doc = docs[doc_name]
     kind = rng.choice(kinds)
-    arith = rng.choice(ARITHS) if rng.random() < 0.3 else rng.choice(["exact", "double", "flint", "mpfr:113"])
+    arith = rng.choice(ARITHS) if rng.random() < 0.3 else rng.choice(["exact", "exact", "gmp", "double", "flint", "mpfr:113"])
     argv = []
     extra_files = {}
     if kind == "eval":
@@ -430,6 +432,21 @@ def main():
         except subprocess.TimeoutExpired as e:
             rc, out, err, timed_out = -999, e.stdout or b"", e.stderr or b"", True
         verdict = classify(kind, rc, out, err, timed_out)
+        # Differential: the kernel's commands in "exact" (fraction-free) and "gmp" (GMP mpq per
+        # coefficient) must print the same bytes and exit the same way, errors included.
+        if (not verdict.startswith("FAIL") and kind in KERNEL_KINDS and "--arith" in args
+                and args.index("--arith") + 1 < len(args) and args[args.index("--arith") + 1] == "exact"):
+            gcmd = list(cmd)
+            gcmd[cmd.index("--arith", 3) + 1] = "gmp"
+            try:
+                g = subprocess.run(gcmd, capture_output=True, timeout=10 * a.timeout, preexec_fn=limit)
+                # Resources are not values: the naive engine may run out of its CPU or memory
+                # budget where the fraction-free one does not.
+                exhausted = g.returncode not in (0, 2) or b"out of memory" in g.stderr + err
+                if not exhausted and (g.returncode, g.stdout, g.stderr) != (rc, out, err):
+                    verdict = "FAIL-exact-differs-from-gmp"
+            except subprocess.TimeoutExpired:
+                pass  # the gmp run is the naive engine: slower is expected, not a defect
         counts[verdict] = counts.get(verdict, 0) + 1
         if verdict.startswith("FAIL"):
             failures += 1
