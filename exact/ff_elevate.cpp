@@ -107,7 +107,6 @@ Curve a59(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t count, std
     for (std::size_t c = 0; c < w; ++c) set(dst + c, src + c);
   };
   Blend blend;
-  blend.lazy = true;  // the output points are reduced at the end
   Combination comb(m);
   Z numer, den, sn, tn, ns, nt, bet;
 
@@ -184,7 +183,7 @@ Curve a59(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t count, std
   const int nh = mh - ph - 1;
   out.U.resize(nh + ph + 2);
   out.count = static_cast<std::size_t>(nh + 1);
-  for (std::size_t i = 0; i < out.count; ++i) reduce_point(qt(static_cast<int>(i)), m);
+  for (std::size_t i = 0; i < out.count; ++i) reduce_if_long(qt(static_cast<int>(i)), m);
   return out;
 }
 

@@ -86,7 +86,6 @@ FFPoints evaluate_points(const FFNet& F, const std::vector<Rational>& params) {
   std::vector<Z> s, t;
   std::vector<int> idx(k);
   Blend blend;
-  blend.lazy = true;
   for (std::size_t i = 0; i < N; ++i) {
     for (std::size_t d = 0; d < k; ++d) span[d] = find_span(F.knots[d], F.degrees[d], F.count(d), x[i * k + d], tmp);
     /// Gather the active net, direction 0 fastest.
@@ -127,7 +126,7 @@ FFPoints evaluate_points(const FFNet& F, const std::vector<Rational>& params) {
       size = runs;
     }
     for (std::size_t c = 0; c < w; ++c) set(out.words + i * w + c, net + c);
-    reduce_point(out.words + i * w, m);
+    reduce_if_long(out.words + i * w, m);
   }
   return out;
 }

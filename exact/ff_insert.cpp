@@ -64,7 +64,6 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
   }
   ZVec Rw((p - s + 1) * w);
   Blend blend;
-  blend.lazy = true;
   for (std::size_t b = 0; b < f.after; ++b) {
     const fmpz* src = F.words + b * n * ps;
     fmpz* dst = R.words + b * (n + r) * ps;
@@ -77,7 +76,7 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
       auto Q = [&](std::size_t i) { return dst + i * ps + a * w; };
       auto put = [&](std::size_t i, const fmpz* from) {
         for (std::size_t c = 0; c < w; ++c) set(Q(i) + c, from + c);
-        reduce_point(Q(i), m);  // the triangle's points are reduced lazily; a stored one always
+        reduce_if_long(Q(i), m);
       };
       for (int i = 0; i <= p - s; ++i)
         for (std::size_t c = 0; c < w; ++c) set(Rw + i * w + c, P(k - p + i) + c);
@@ -97,11 +96,12 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
   return R;
 }
 
-/// One step of A5.4's point loop, the same for every fibre: Q[to] = P[from], Q[to] = Q[from], or
+/// One step of A5.4's point loop, the same for every fibre: Q[to..to+len) = P[from..from+len)
+/// (copy_p; `to` and `from` are the lowest points of the run), Q[to] = Q[from], or
 /// Q[to] = ((t - s) Q[from] + s Q[to]) / t with (s, t) at coef.
 struct Step {
   enum Kind { copy_p, copy_q, blend } kind;
-  std::size_t to, from, coef;
+  std::size_t to, from, coef, len;
 };
 
 }  // namespace
@@ -131,9 +131,9 @@ FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times, const Lim
 
 FFNet refine_knots(const FFNet& F, int d, std::vector<Rational> X, const Limits& limits) {
   check_direction(F, d);
-  std::sort(X.begin(), X.end(), [](const Rational& a, const Rational& b) { return a < b; });
   FFKnots scaled;
-  const std::vector<Z> xs = onto_knots(F.knots[d], scaled, X);
+  std::vector<Z> xs = onto_knots(F.knots[d], scaled, X);
+  std::sort(xs.begin(), xs.end(), [](const Z& a, const Z& b) { return cmp(a.get(), b.get()) < 0; });
   return refine_on(F, d, scaled.size() ? scaled : F.knots[d], xs, limits);
 }
 
@@ -157,8 +157,8 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
   {
     std::size_t i = 0, j = 0, o = 0;
     while (i < U.size() || j < xs.size())
-      if (j == xs.size() || (i < U.size() && cmp(U.k + i, xs[j].get()) <= 0)) fmpz_set(V.k + o++, U.k + i++);
-      else fmpz_set(V.k + o++, xs[j++].get());
+      if (j == xs.size() || (i < U.size() && cmp(U.k + i, xs[j].get()) <= 0)) set(V.k + o++, U.k + i++);
+      else set(V.k + o++, xs[j++].get());
   }
   /// A5.4 RefineKnotVectCurve (spline/insert_impl.hpp) as a program of steps on the points.
   auto span = [&](const fmpz* x) {  // A2.1 FindSpan on the integers
@@ -175,22 +175,29 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
   std::size_t i = sb + p - 1, k = sb + p + r;
   for (std::size_t jj = r + 1; jj-- > 0;) {
     while (!(cmp(U.k + i, xs[jj].get()) < 0) && i > sa) {
-      prog.push_back({Step::copy_p, k - p - 1, i - p - 1, 0});
+      // Runs of these copies (each one point lower than the last) become one block copy.
+      if (!prog.empty() && prog.back().kind == Step::copy_p && prog.back().to == k - p && prog.back().from == i - p) {
+        --prog.back().to;
+        --prog.back().from;
+        ++prog.back().len;
+      } else {
+        prog.push_back({Step::copy_p, k - p - 1, i - p - 1, 0, 1});
+      }
       --k;
       --i;
     }
-    prog.push_back({Step::copy_q, k - p - 1, k - p, 0});
+    prog.push_back({Step::copy_q, k - p - 1, k - p, 0, 1});
     for (int l = 1; l <= p; ++l) {
       const std::size_t ind = k - p + l;
       Z s, t;
       sub(s.get(), V.k + k + l, xs[jj].get());
       if (fmpz_is_zero(s.get())) {
-        prog.push_back({Step::copy_q, ind - 1, ind, 0});
+        prog.push_back({Step::copy_q, ind - 1, ind, 0, 1});
       } else {
         sub(t.get(), V.k + k + l, U.k + i - p + l);
-        prog.push_back({Step::blend, ind - 1, ind, coef.size()});
-        coef.push_back(s);
-        coef.push_back(t);
+        prog.push_back({Step::blend, ind - 1, ind, coef.size(), 1});
+        coef.push_back(std::move(s));
+        coef.push_back(std::move(t));
       }
     }
     --k;
@@ -199,8 +206,7 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
   const std::size_t w = F.stride(), m = F.m(), ps = f.before * w, n = f.n, n2 = n + r + 1;
   FFNet R = with_knots(F, d, std::move(V), n2);
   Blend blend;
-  blend.lazy = true;
-  /// The points a blend wrote (or a copy of one): reduced once after the walk.
+  /// The points a blend wrote (or a copy of one): reduced, where long, once after the walk.
   std::vector<std::size_t> touched;
   for (const Step& st : prog)
     if (st.kind != Step::copy_p) touched.push_back(st.to);
@@ -211,20 +217,22 @@ FFNet detail::refine_on(const FFNet& F, int d, const FFKnots& U, const std::vect
     fmpz* dst = R.words + b * n2 * ps;
     init_copy(dst, src, (sa - p + 1) * ps);
     init_copy(dst + (sb - 1 + r + 1) * ps, src + (sb - 1) * ps, (nn + 2 - sb) * ps);
-    for (std::size_t a = 0; a < f.before; ++a)
-      for (const Step& st : prog) {
-        fmpz* to = dst + st.to * ps + a * w;
-        if (st.kind == Step::copy_p) {
-          for (std::size_t c = 0; c < w; ++c) set(to + c, src + st.from * ps + a * w + c);
-        } else if (st.kind == Step::copy_q) {
-          for (std::size_t c = 0; c < w; ++c) set(to + c, dst + st.from * ps + a * w + c);
-        } else {
-          // dst = alfa dst + (1 - alfa) src with alfa = s/t: ((t - s) src + s dst) / t.
+    /// The steps in order; copies move whole points (every fibre point a at once), blends one a.
+    for (const Step& st : prog) {
+      if (st.kind == Step::copy_p) {
+        copy_block(dst + st.to * ps, src + st.from * ps, st.len * ps);
+      } else if (st.kind == Step::copy_q) {
+        copy_block(dst + st.to * ps, dst + st.from * ps, ps);
+      } else {
+        // dst = alfa dst + (1 - alfa) src with alfa = s/t: ((t - s) src + s dst) / t.
+        for (std::size_t a = 0; a < f.before; ++a) {
+          fmpz* to = dst + st.to * ps + a * w;
           blend(to, dst + st.from * ps + a * w, to, coef[st.coef].get(), coef[st.coef + 1].get(), m);
         }
       }
+    }
     for (std::size_t a = 0; a < f.before; ++a)
-      for (const std::size_t i : touched) reduce_point(dst + i * ps + a * w, m);
+      for (const std::size_t i : touched) reduce_if_long(dst + i * ps + a * w, m);
   }
   return R;
 }

@@ -62,6 +62,15 @@ inline void init_copy(fmpz* dst, const fmpz* src, std::size_t n) {
     if (!small(src + i)) fmpz_set(dst + i, src + i);
 }
 
+/// Copies n values into words that hold values (a memcpy when neither side holds a big one).
+inline void copy_block(fmpz* dst, const fmpz* src, std::size_t n) {
+  if (!any_big(dst, n) && !any_big(src, n)) {
+    std::memmove(dst, src, n * sizeof(fmpz));
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) fmpz_set(dst + i, src + i);
+}
+
 /// out = a*x + b*y (out may alias any operand).
 inline void lin2(fmpz* out, const fmpz* a, const fmpz* x, const fmpz* b, const fmpz* y) {
   if (fast() && small(a) && small(x) && small(b) && small(y)) {
@@ -153,18 +162,16 @@ inline void reduce_point(fmpz* p, std::size_t m) {
   fmpz_clear(g);
 }
 
-/// reduce_point only when the denominator has grown past 2^30 (or is big): for scratch points of
-/// a triangle, whose integers then stay short enough for 64-bit products without a gcd per step.
-/// A point stored in a net is always reduced with reduce_point.
+/// reduce_point only when the denominator has grown past 2^30 (or is big): the integers stay short
+/// enough for 64-bit products without a gcd per step (a gcd of four 60-bit words costs more than
+/// the blend that made them). Every point an operation stores goes through it.
 inline void reduce_if_long(fmpz* p, std::size_t m) {
   if (!small(p + m) || p[m] > (slong(1) << 30)) reduce_point(p, m);
 }
 
 /// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
-/// denominator: out = ((t - s) P + s Q) / t with t > 0. `out` may be P or Q. Reduced, unless
-/// `lazy` (then reduce_if_long: the caller reduces what it stores).
+/// denominator: out = ((t - s) P + s Q) / t with t > 0, reduced when long. `out` may be P or Q.
 struct Blend {
-  bool lazy = false;
   fmpz_t a, c1, c2, e, g;
   Blend() { fmpz_init(a); fmpz_init(c1); fmpz_init(c2); fmpz_init(e); fmpz_init(g); }
   ~Blend() { fmpz_clear(a); fmpz_clear(c1); fmpz_clear(c2); fmpz_clear(e); fmpz_clear(g); }
@@ -196,8 +203,7 @@ struct Blend {
       for (std::size_t c = 0; c < m; ++c) lin2(out + c, c1, P + c, c2, Q + c);
       mul(out + m, t, e);
     }
-    if (lazy) reduce_if_long(out, m);
-    else reduce_point(out, m);
+    reduce_if_long(out, m);
   }
 };
 

@@ -194,7 +194,25 @@ bool same_value(const FFNet& A, const FFNet& B) {
   if (A.degrees != B.degrees || A.q != B.q || A.rational != B.rational || A.knots.size() != B.knots.size()) return false;
   for (std::size_t d = 0; d < A.knots.size(); ++d)
     if (!(A.knots[d].k == B.knots[d].k) || !(A.knots[d].den == B.knots[d].den)) return false;
-  return A.words == B.words;
+  if (A.words.size() != B.words.size()) return false;
+  /// Points are not stored reduced: N_A / E_A == N_B / E_B by cross-multiplication.
+  const std::size_t m = A.m(), w = A.stride();
+  fmpz_t x, y;
+  fmpz_init(x);
+  fmpz_init(y);
+  bool same = true;
+  for (std::size_t i = 0; same && i < A.size(); ++i) {
+    const fmpz* a = A.words + i * w;
+    const fmpz* b = B.words + i * w;
+    for (std::size_t c = 0; same && c < m; ++c) {
+      fmpz_mul(x, a + c, b + m);
+      fmpz_mul(y, b + c, a + m);
+      same = fmpz_equal(x, y);
+    }
+  }
+  fmpz_clear(x);
+  fmpz_clear(y);
+  return same;
 }
 
 std::size_t heap_bytes(const FFNet& F) {

@@ -6,8 +6,9 @@
 //   - a control point is m integers N_c over one denominator E > 0, its homogeneous coordinates
 //     N_c / E: the q Cartesian coordinates of a polynomial spline, or (w*P, w) of a rational one
 //     (m = q + 1), so a weight needs no division anywhere;
-//   - every point is reduced (gcd(N_1..N_m, E) = 1) and every K is the lcm of its knots' reduced
-//     denominators, so the representation of a value is unique and equality is word equality;
+//   - every K is the lcm of its knots' reduced denominators (a knot vector's form is unique); a
+//     point is divided by gcd(N_1..N_m, E) whenever its E passes 2^30, so its integers stay short
+//     without a gcd per step, and is made canonical (reduced mpq) only at the boundary;
 //   - the integers are FLINT fmpz words: a value below 2^62 in magnitude is the word itself, so a
 //     net of small values is an array of 64-bit integers, copied by memcpy, and the operations
 //     work on them with 128-bit products checked against FLINT's small range, falling back to
@@ -81,8 +82,8 @@ struct FFNet {
   std::size_t stride() const { return static_cast<std::size_t>(m()) + 1; }
 };
 
-/// Homogeneous points of an evaluation: per point m numerators and one positive denominator,
-/// reduced. `to_points` gives the Cartesian values evaluate_points() returns.
+/// Homogeneous points of an evaluation: per point m numerators and one positive denominator.
+/// `to_points` gives the Cartesian values evaluate_points() returns (canonical).
 struct FFPoints {
   int q = 0;
   bool rational = false;
@@ -96,7 +97,7 @@ BSpline<Rational> to_bspline(const FFNet& F);
 /// The Cartesian coordinates of evaluated points, point-major (as evaluate_points returns them).
 std::vector<Rational> to_points(const FFPoints& P);
 
-/// The same value (and so, by the reduced form, the same words).
+/// The same value: equal knot vectors (words), points equal by cross-multiplication.
 bool same_value(const FFNet& A, const FFNet& B);
 /// Heap bytes of the net's integers (knots and points), for the benchmark's bytes per coefficient.
 std::size_t heap_bytes(const FFNet& F);
@@ -129,7 +130,7 @@ FFNet insert_knot(const FFNet& F, int d, const Rational& x, int times = 1, const
 /// The kernel's refine_knots (A5.4): the same result, errors and limits.
 FFNet refine_knots(const FFNet& F, int d, std::vector<Rational> X, const Limits& limits = {});
 /// The kernel's evaluate_points: `params` holds N points of dim() parameters each; the same
-/// checks and error fields ("params[i]"). The values are homogeneous and reduced.
+/// checks and error fields ("params[i]"). The values are homogeneous.
 FFPoints evaluate_points(const FFNet& F, const std::vector<Rational>& params);
 
 /// The kernel's clamp (spline/insert.hpp): both domain ends of direction d raised to
