@@ -46,6 +46,7 @@ const std::map<std::string, std::uint64_t>& seed_table() {
       {"untrim-curved-cover", 121},
       {"trimming-endpoints", 119},
       {"flint-agreement", 113},
+      {"ff-agreement", 122},
       {"hybrid-thm-3.1", 131},
       {"hybrid-thm-3.2", 132},
       {"hybrid-thm-3.2-corrected", 133},

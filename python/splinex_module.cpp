@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "compose/compose.hpp"
+#include "crosscheck/operations_ff.hpp"
 #include "crosscheck/verify.hpp"
 #include "fixtures/random_spline.hpp"
 #include "spline/kernel.hpp"
@@ -238,7 +239,7 @@ PyReport to_py(const VerifyReport& r) {
 /// as verify runs them (run_operation), arguments checked by verify's reader.
 static void add_more_operations(py::module_& m) {
   const auto one_result = [](const std::string& name, const py::dict& S, const py::dict& args) {
-    const auto out = run_operation<Rational>(make_operation(name, args, "splinex."), to_spline(S), Limits{});
+    const auto out = run_operation_exact(make_operation(name, args, "splinex."), to_spline(S), Limits{});
     return from_spline(out.at(0));
   };
   const auto with = [](std::initializer_list<std::pair<const char*, py::object>> kv) {
@@ -303,17 +304,19 @@ PYBIND11_MODULE(splinex, m) {
       "shifted domains, ...): (spline, the structures it contains), reproducible from the seed");
   m.def("validate", [](const py::dict& S) { return from_spline(to_spline(S)); },
         "the spline read exactly and validated, as Fractions");
-  m.def("evaluate", [](const py::dict& S, const py::object& at) { return fractions_of(evaluate(to_spline(S), to_rationals(at, "at"))); },
+  // The exact kernel operations run on the fraction-free kernel, as `--arith exact` does
+  // (crosscheck/operations_ff.hpp): the same values and errors as GMP's.
+  m.def("evaluate", [](const py::dict& S, const py::object& at) { return fractions_of(evaluate_exact(to_spline(S), to_rationals(at, "at"))); },
         py::arg("spline"), py::arg("at"), "the exact value at a parameter (a number or a list, one per direction)");
   m.def("insert_knots", [](const py::dict& S, const py::object& knots, int dir) {
-          return from_spline(refine_knots(to_spline(S), dir, to_rationals(knots, "knots")));
+          return from_spline(ff::to_bspline(ff::refine_knots(ff::from_bspline(to_spline(S)), dir, to_rationals(knots, "knots"))));
         },
         py::arg("spline"), py::arg("knots"), py::arg("dir") = 0);
-  m.def("elevate", [](const py::dict& S, int by, int dir) { return from_spline(elevate_degree(to_spline(S), dir, by)); },
+  m.def("elevate", [](const py::dict& S, int by, int dir) { return from_spline(ff::to_bspline(ff::elevate_degree(ff::from_bspline(to_spline(S)), dir, by))); },
         py::arg("spline"), py::arg("by") = 1, py::arg("dir") = 0);
   m.def("extract_bezier", [](const py::dict& S) {
     py::list out;
-    for (const auto& pc : extract_bezier(to_spline(S))) {
+    for (const auto& pc : extract_bezier_exact(to_spline(S), Limits{})) {
       py::list box;
       for (const auto& [lo, hi] : pc.box) box.append(py::make_tuple(fraction(lo), fraction(hi)));
       py::dict d;

@@ -219,7 +219,7 @@ TEST_CASE("planted bugs: every kernel, composition, untrimming and teapot proof 
   for (const char* name : {"knot-insertion-boehm", "knot-refinement-a54", "insertion-agreement", "degree-elevation-a59",
                            "degree-elevation-blossom", "bezier-extraction", "split", "reparametrize", "reverse", "clamp",
                            "derivative-hodograph", "compose-methods-agree", "compose-identity", "compose-bspline",
-                           "elevation-agreement", "evaluation-deboor", "flint-agreement", "compose-trimmed", "untrim-cover",
+                           "elevation-agreement", "evaluation-deboor", "flint-agreement", "ff-agreement", "compose-trimmed", "untrim-cover",
                            "untrim-curved-cover", "teapot-merge"}) {
     for (const auto& [what, bug] : bugs) {
       // compose-trimmed is a sampled check ("checked at N points"): a spike narrower than its grid
