@@ -38,9 +38,15 @@ class Combination {
       for (std::size_t k = 0; k < m_; ++k) lin2(a + k, one_.get(), a + k, c, P + k);
     } else {
       // Over the lcm, g = gcd(E_a, E_P): a/E_a + c P/E_P = (a (E_P/g) + c (E_a/g) P) / (E_a E_P/g).
-      fmpz_gcd(g_.get(), a + m_, P + m_);
-      fmpz_divexact(fp_.get(), P + m_, g_.get());
-      fmpz_divexact(ce_.get(), a + m_, g_.get());
+      if (small(a + m_) && small(P + m_)) {
+        const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(a[m_]), static_cast<std::uint64_t>(P[m_])));
+        set_small(fp_.get(), P[m_] / g);
+        set_small(ce_.get(), a[m_] / g);
+      } else {
+        fmpz_gcd(g_.get(), a + m_, P + m_);
+        fmpz_divexact(fp_.get(), P + m_, g_.get());
+        fmpz_divexact(ce_.get(), a + m_, g_.get());
+      }
       mul(ce_.get(), c, ce_.get());
       for (std::size_t k = 0; k < m_; ++k) lin2(a + k, fp_.get(), a + k, ce_.get(), P + k);
       mul(a + m_, a + m_, fp_.get());
