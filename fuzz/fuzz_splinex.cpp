@@ -19,6 +19,7 @@
 
 #include "compose/trimmed_compose.hpp"
 #include "crosscheck/verify.hpp"
+#include "exact/ffnet.hpp"
 #include "exact/flint_rational.hpp"
 #include "exact/memory.hpp"
 #include "float/mpfr.hpp"
@@ -232,12 +233,22 @@ void run_spline(std::uint8_t op, std::uint8_t arg, const sx::BSpline<sx::Rationa
       (void)sx::extract_bezier(F, L);
       break;
     }
-    case 8: {  // FLINT equals GMP exactly
+    case 8: {  // FLINT and the fraction-free kernel equal GMP exactly
       const auto F = sx::convert<sx::FlintRational>(S, [](const sx::Rational& r) { return sx::FlintRational(r); });
       const auto a = sx::refine_knots(F, d, {sx::FlintRational(inside(S, d, arg))}, L);
       const auto b = sx::refine_knots(S, d, {inside(S, d, arg)}, L);
       if (sx::convert<sx::Rational>(a, [](const sx::FlintRational& r) { return r.to_rational(); }).points != b.points)
         finding("FLINT and GMP differ");
+      const auto X = sx::ff::from_bspline(S);
+      if (!sx::same_net(sx::ff::to_bspline(sx::ff::refine_knots(X, d, {inside(S, d, arg)}, L)), b))
+        finding("the fraction-free insertion and GMP differ");
+      const int t = 1 + arg % 2;
+      if (!sx::same_net(sx::ff::to_bspline(sx::ff::elevate_degree(X, d, t, L)),
+                        sx::elevate_degree(S, d, t, sx::ElevationMethod::bezier_pieces, L)))
+        finding("the fraction-free elevation and GMP differ");
+      std::vector<sx::Rational> x;
+      for (int k = 0; k < S.dim(); ++k) x.push_back(inside(S, k, static_cast<std::uint8_t>(arg * (k + 3))));
+      if (sx::ff::to_points(sx::ff::evaluate_points(X, x)) != sx::evaluate(S, x)) finding("the fraction-free value and GMP differ");
       break;
     }
     case 9: {  // composition with itself when the dimensions fit (S o S for curves in R^1)

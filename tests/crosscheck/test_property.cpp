@@ -4,6 +4,7 @@
 //   exact (GMP):  the result is judged by independent evaluation: R(phi(x)) == S(x) exactly at
 //                 random parameters that are not knots (phi: the operation's reparametrization);
 //   FLINT:        equals the GMP result exactly;
+//   exact (the fraction-free kernel, run_operation_exact): equals the GMP result exactly;
 //   double, mpfr: a typed splinex::Error (RangeError when the input does not fit the format), or a
 //                 crosscheck report whose errors are finite and whose structure matches the exact
 //                 result; never another exception, a non-finite value or a crash.
@@ -12,6 +13,7 @@
 #include <random>
 
 #include "crosscheck/crosscheck.hpp"
+#include "crosscheck/operations_ff.hpp"
 #include "crosscheck/operations_impl.hpp"
 #include "exact/flint_rational.hpp"
 #include "fixtures/random_spline.hpp"
@@ -96,7 +98,7 @@ TEST_CASE("property: every operation in every arithmetic on the structured gener
   std::mt19937_64 rng(13013);
   sx::Limits limits;
   limits.max_control_points = 200000;
-  int exact_checked = 0, float_reports = 0, typed_errors = 0;
+  int exact_checked = 0, float_reports = 0, typed_errors = 0, ff_checked = 0;
   for (int c = 0; c < 400; ++c) {
     const auto sc = sx::structured_case(rng);
     const auto& S = sc.spline;
@@ -121,6 +123,16 @@ TEST_CASE("property: every operation in every arithmetic on the structured gener
       REQUIRE(back.points == R[i].points);
       REQUIRE(back.weights == R[i].weights);
     }
+    // The fraction-free kernel (where the operation is written for it; GMP otherwise): the same numbers.
+    const auto RX = sx::run_operation_exact(op, S, limits);
+    REQUIRE(RX.size() == R.size());
+    for (std::size_t i = 0; i < R.size(); ++i) {
+      REQUIRE(RX[i].degrees == R[i].degrees);
+      REQUIRE(RX[i].knots == R[i].knots);
+      REQUIRE(RX[i].points == R[i].points);
+      REQUIRE(RX[i].weights == R[i].weights);
+    }
+    if (sx::runs_fraction_free(op)) ++ff_checked;
     // Floats: a typed error or a finite report with matching structure.
     for (const char* fl : {"double", "mpfr:64"}) {
       try {
@@ -140,7 +152,9 @@ TEST_CASE("property: every operation in every arithmetic on the structured gener
       }
     }
   }
-  INFO(exact_checked << " exact results judged, " << float_reports << " float reports, " << typed_errors << " typed errors");
+  INFO(exact_checked << " exact results judged, " << ff_checked << " of them fraction-free, " << float_reports
+                     << " float reports, " << typed_errors << " typed errors");
   CHECK(exact_checked >= 300);
+  CHECK(ff_checked >= 100);
   CHECK(float_reports >= 400);
 }
