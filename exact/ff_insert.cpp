@@ -47,10 +47,12 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
   FFKnots V;
   V.k = ZVec(U.size() + r);
   fmpz_set(V.den.data(), U.den.data());
-  init_copy(V.k.data(), U.k.data(), k + 1);
+  bool big = init_copy(V.k.data(), U.k.data(), k + 1) || !small(x);
   for (int j = 0; j < r; ++j) fmpz_set(V.k + k + 1 + j, x);
-  init_copy(V.k + k + 1 + r, U.k + k + 1, U.size() - k - 1);
+  big = init_copy(V.k + k + 1 + r, U.k + k + 1, U.size() - k - 1) || big;
+  if (!big) V.k.mark_small();  // every word was seen: the destructor need not look again
   FFNet R = with_knots(F, d, std::move(V), n + r);
+  big = false;
   /// The blend coefficients alpha = s/t of the triangle, the same for every fibre.
   const std::size_t tri = s < p ? static_cast<std::size_t>(p - s) : 0;
   ZVec st(2 * r * tri);
@@ -68,8 +70,8 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
     const fmpz* src = F.words + b * n * ps;
     fmpz* dst = R.words + b * (n + r) * ps;
     /// Q_i = P_i (i <= k-p) and Q_{i+r} = P_i (i >= k-s): two runs of words per fibre block.
-    init_copy(dst, src, (k - p + 1) * ps);
-    init_copy(dst + (k - s + r) * ps, src + (k - s) * ps, (n - (k - s)) * ps);
+    big = init_copy(dst, src, (k - p + 1) * ps) || big;
+    big = init_copy(dst + (k - s + r) * ps, src + (k - s) * ps, (n - (k - s)) * ps) || big;
     if (s == p) continue;
     for (std::size_t a = 0; a < f.before; ++a) {
       auto P = [&](std::size_t i) { return src + i * ps + a * w; };
@@ -92,7 +94,10 @@ FFNet knot_ins(const FFNet& F, int d, const FFKnots& U, const fmpz* x, std::size
       }
       for (std::size_t i = L + 1; i + s < k; ++i) put(i, Rw + (i - L) * w);
     }
+    /// The new points, Q_{k-p+1} .. Q_{k-s+r-1}: the only words the copies did not see.
+    big = big || any_big(dst + (k - p + 1) * ps, (r - 1 + p - s) * ps);
   }
+  if (!big) R.words.mark_small();
   return R;
 }
 

@@ -47,19 +47,20 @@ inline bool any_big(const fmpz* p, std::size_t n) {
 
 /// Copies n values into words that hold no big value (zeros or small values): a memcpy, and for
 /// big values their own copies (the words are zeroed first, so an allocation failure part way
-/// leaves only valid words behind).
-inline void init_copy(fmpz* dst, const fmpz* src, std::size_t n) {
+/// leaves only valid words behind). Returns whether a big value was copied.
+inline bool init_copy(fmpz* dst, const fmpz* src, std::size_t n) {
   std::uint64_t acc = 0;  // any_big, fused with the copy: one pass over the words
   for (std::size_t i = 0; i < n; ++i) {
     const auto w = static_cast<std::uint64_t>(src[i]);
     acc |= ~w & (w << 1);
     dst[i] = src[i];
   }
-  if ((acc >> 63) == 0) return;
+  if ((acc >> 63) == 0) return false;
   for (std::size_t i = 0; i < n; ++i)
     if (!small(src + i)) dst[i] = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (!small(src + i)) fmpz_set(dst + i, src + i);
+  return true;
 }
 
 /// Copies n values into words that hold values (a memcpy when neither side holds a big one).

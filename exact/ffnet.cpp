@@ -20,9 +20,9 @@ fmpz* allocate(std::size_t n) {
   if (!p) throw std::bad_alloc();
   return static_cast<fmpz*>(p);
 }
-void release(fmpz* p, std::size_t n) {
+void release(fmpz* p, std::size_t n, bool known_small) {
   if (!p) return;
-  if (detail::any_big(p, n))
+  if (!known_small && detail::any_big(p, n))
     for (std::size_t i = 0; i < n; ++i)
       if (!small(p + i)) fmpz_clear(p + i);
   std::free(p);
@@ -36,9 +36,9 @@ ZVec::ZVec(const ZVec& o) : n_(o.n_) {
   p_ = static_cast<fmpz*>(std::malloc(n_ * sizeof(fmpz)));
   if (!p_) throw std::bad_alloc();
   try {
-    detail::init_copy(p_, o.p_, n_);
+    known_small_ = !detail::init_copy(p_, o.p_, n_);
   } catch (...) {
-    release(p_, n_);  // every word is 0 or a valid value (init_copy)
+    release(p_, n_, false);  // every word is 0 or a valid value (init_copy)
     throw;
   }
 }
@@ -53,16 +53,17 @@ ZVec& ZVec::operator=(const ZVec& o) {
 
 ZVec& ZVec::operator=(ZVec&& o) noexcept {
   if (this != &o) {
-    release(p_, n_);
+    release(p_, n_, known_small_);
     p_ = o.p_;
     n_ = o.n_;
+    known_small_ = o.known_small_;
     o.p_ = nullptr;
     o.n_ = 0;
   }
   return *this;
 }
 
-ZVec::~ZVec() { release(p_, n_); }
+ZVec::~ZVec() { release(p_, n_, known_small_); }
 
 std::size_t ZVec::heap_bytes() const {
   std::size_t b = n_ * sizeof(fmpz);

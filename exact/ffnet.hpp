@@ -36,21 +36,28 @@
 namespace splinex::ff {
 
 /// An owning array of FLINT integers (zero-initialised). Copies of small values are memcpy.
+/// The destructor frees FLINT's big integers, which needs a pass over the words unless the array
+/// is known to hold none: `known_small` is set by the copy constructor (its copy pass sees every
+/// word) and by an operation that checked what it wrote (mark_small), and cleared by every
+/// mutable access, so a value written after the mark is never left unfreed.
 class ZVec {
  public:
   ZVec() = default;
   explicit ZVec(std::size_t n);
   ZVec(const ZVec& o);
-  ZVec(ZVec&& o) noexcept : p_(o.p_), n_(o.n_) { o.p_ = nullptr; o.n_ = 0; }
+  ZVec(ZVec&& o) noexcept : p_(o.p_), n_(o.n_), known_small_(o.known_small_) { o.p_ = nullptr; o.n_ = 0; }
   ZVec& operator=(const ZVec& o);
   ZVec& operator=(ZVec&& o) noexcept;
   ~ZVec();
 
   std::size_t size() const { return n_; }
-  fmpz* data() { return p_; }
+  fmpz* data() { known_small_ = false; return p_; }
   const fmpz* data() const { return p_; }
-  fmpz* operator+(std::size_t i) { return p_ + i; }
+  fmpz* operator+(std::size_t i) { known_small_ = false; return p_ + i; }
   const fmpz* operator+(std::size_t i) const { return p_ + i; }
+  /// After the last write: the caller has checked that no word holds a big integer.
+  void mark_small() { known_small_ = true; }
+  bool known_small() const { return known_small_; }
   /// Heap bytes: the words plus the limbs of values past the small range.
   std::size_t heap_bytes() const;
   bool operator==(const ZVec& o) const;
@@ -58,6 +65,7 @@ class ZVec {
  private:
   fmpz* p_ = nullptr;
   std::size_t n_ = 0;
+  bool known_small_ = false;
 };
 
 /// A knot vector: u_j = k[j] / den, den > 0 the lcm of the reduced denominators.
