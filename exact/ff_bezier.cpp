@@ -27,7 +27,9 @@ FFNet detail::slice_direction(const FFNet& F, int d, std::size_t first, std::siz
   R.q = F.q;
   R.rational = F.rational;
   normalize(V);  // the knots cut away may have carried the denominator's factors
-  for (int e = 0; e < F.dim(); ++e) R.knots.push_back(e == d ? std::move(V) : F.knots[e]);
+  for (int e = 0; e < F.dim(); ++e)  // (not a conditional: its const branch would copy V)
+    if (e == d) R.knots.push_back(std::move(V));
+    else R.knots.push_back(F.knots[e]);
   R.words = ZVec(f.after * n_new * ps);
   for (std::size_t b = 0; b < f.after; ++b)
     init_copy(R.words + b * n_new * ps, F.words + (b * f.n + first) * ps, n_new * ps);

@@ -31,18 +31,6 @@ inline Layout layout(const FFNet& F, int d) {
   return f;
 }
 
-/// An owned FLINT integer.
-struct Z {
-  fmpz_t v;
-  Z() { fmpz_init(v); }
-  Z(const Z& o) { fmpz_init_set(v, o.v); }
-  Z(Z&& o) noexcept { *v = *o.v; *o.v = 0; }
-  Z& operator=(const Z& o) { fmpz_set(v, o.v); return *this; }
-  Z& operator=(Z&& o) noexcept { fmpz_swap(v, o.v); return *this; }
-  ~Z() { fmpz_clear(v); }
-  fmpz* get() { return v; }
-  const fmpz* get() const { return v; }
-};
 
 /// The numerators of the given rationals over L = lcm(K.den, their denominators). When L is not
 /// K.den, `scaled` receives K rewritten over L (otherwise it stays empty and K is the vector).

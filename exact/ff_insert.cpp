@@ -33,7 +33,9 @@ FFNet with_knots(const FFNet& F, int d, FFKnots U, std::size_t new_count) {
   R.q = F.q;
   R.rational = F.rational;
   R.knots.reserve(F.knots.size());
-  for (int e = 0; e < F.dim(); ++e) R.knots.push_back(e == d ? std::move(U) : F.knots[e]);
+  for (int e = 0; e < F.dim(); ++e)  // (not a conditional: its const branch would copy U)
+    if (e == d) R.knots.push_back(std::move(U));
+    else R.knots.push_back(F.knots[e]);
   R.words = ZVec(F.size() / F.count(d) * new_count * F.stride());
   return R;
 }

@@ -17,6 +17,19 @@ namespace splinex::ff::detail {
 
 __extension__ typedef __int128 i128;  // GCC's 128-bit integer (-Wpedantic: an extension)
 
+/// An owned FLINT integer (freed on every path out, exceptions included).
+struct Z {
+  fmpz_t v;
+  Z() { fmpz_init(v); }
+  Z(const Z& o) { fmpz_init_set(v, o.v); }
+  Z(Z&& o) noexcept { *v = *o.v; *o.v = 0; }
+  Z& operator=(const Z& o) { fmpz_set(v, o.v); return *this; }
+  Z& operator=(Z&& o) noexcept { fmpz_swap(v, o.v); return *this; }
+  ~Z() { fmpz_clear(v); }
+  fmpz* get() { return v; }
+  const fmpz* get() const { return v; }
+};
+
 inline bool small(const fmpz* a) { return !COEFF_IS_MPZ(*a); }
 inline bool fast() { return policy().tier == Tier::small_first; }
 inline bool fits(i128 v) { return v >= -static_cast<i128>(COEFF_MAX) && v <= static_cast<i128>(COEFF_MAX); }
@@ -79,12 +92,10 @@ inline void lin2(fmpz* out, const fmpz* a, const fmpz* x, const fmpz* b, const f
     if (fits(v)) return set_small(out, static_cast<slong>(v));
     ++promotions();
   }
-  fmpz_t t;
-  fmpz_init(t);
-  fmpz_mul(t, a, x);
-  fmpz_addmul(t, b, y);
-  fmpz_swap(out, t);
-  fmpz_clear(t);
+  Z t;
+  fmpz_mul(t.get(), a, x);
+  fmpz_addmul(t.get(), b, y);
+  fmpz_swap(out, t.get());
 }
 
 /// out = a*b (out may alias).
@@ -105,21 +116,6 @@ inline void sub(fmpz* out, const fmpz* a, const fmpz* b) {
     ++promotions();
   }
   fmpz_sub(out, a, b);
-}
-
-/// out = a*x - b*y (out may alias).
-inline void cross(fmpz* out, const fmpz* a, const fmpz* x, const fmpz* b, const fmpz* y) {
-  if (fast() && small(a) && small(x) && small(b) && small(y)) {
-    const i128 v = static_cast<i128>(*a) * *x - static_cast<i128>(*b) * *y;
-    if (fits(v)) return set_small(out, static_cast<slong>(v));
-    ++promotions();
-  }
-  fmpz_t t;
-  fmpz_init(t);
-  fmpz_mul(t, a, x);
-  fmpz_submul(t, b, y);
-  fmpz_swap(out, t);
-  fmpz_clear(t);
 }
 
 inline int cmp(const fmpz* a, const fmpz* b) {
@@ -155,12 +151,11 @@ inline void reduce_point(fmpz* p, std::size_t m) {
     for (std::size_t c = 0; c <= m; ++c) p[c] /= gs;
     return;
   }
-  fmpz_t g;
-  fmpz_init_set(g, p + m);
-  for (std::size_t c = 0; c < m && !fmpz_is_one(g); ++c) fmpz_gcd(g, g, p + c);
-  if (!fmpz_is_one(g))
-    for (std::size_t c = 0; c <= m; ++c) fmpz_divexact(p + c, p + c, g);
-  fmpz_clear(g);
+  Z g;
+  fmpz_set(g.get(), p + m);
+  for (std::size_t c = 0; c < m && !fmpz_is_one(g.get()); ++c) fmpz_gcd(g.get(), g.get(), p + c);
+  if (!fmpz_is_one(g.get()))
+    for (std::size_t c = 0; c <= m; ++c) fmpz_divexact(p + c, p + c, g.get());
 }
 
 /// reduce_point only when the denominator has grown past 2^30 (or is big): the integers stay short
@@ -173,9 +168,13 @@ inline void reduce_if_long(fmpz* p, std::size_t m) {
 /// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
 /// denominator: out = ((t - s) P + s Q) / t with t > 0, reduced when long. `out` may be P or Q.
 struct Blend {
-  fmpz_t a, c1, c2, e, g;
-  Blend() { fmpz_init(a); fmpz_init(c1); fmpz_init(c2); fmpz_init(e); fmpz_init(g); }
-  ~Blend() { fmpz_clear(a); fmpz_clear(c1); fmpz_clear(c2); fmpz_clear(e); fmpz_clear(g); }
+  Z a_, c1_, c2_, e_, g_;
+  fmpz* a = a_.get();
+  fmpz* c1 = c1_.get();
+  fmpz* c2 = c2_.get();
+  fmpz* e = e_.get();
+  fmpz* g = g_.get();
+  Blend() = default;
   Blend(const Blend&) = delete;
   Blend& operator=(const Blend&) = delete;
 

@@ -102,22 +102,18 @@ Rational quotient(const fmpz* num, const fmpz* den) {
 FFKnots knots_from(const std::vector<Rational>& U) {
   FFKnots K;
   K.k = ZVec(U.size());
-  fmpz_t den, t;
-  fmpz_init(den);
-  fmpz_init(t);
+  detail::Z num, t;
   fmpz_one(K.den.data());
   for (const Rational& u : U) {
-    fmpz_set_mpz(t, mpq_denref(mpq(u)));
-    fmpz_lcm(K.den.data(), K.den.data(), t);
+    fmpz_set_mpz(t.get(), mpq_denref(mpq(u)));
+    fmpz_lcm(K.den.data(), K.den.data(), t.get());
   }
   for (std::size_t j = 0; j < U.size(); ++j) {
-    fmpz_set_mpz(t, mpq_denref(mpq(U[j])));
-    fmpz_divexact(t, K.den.data(), t);
-    fmpz_set_mpz(den, mpq_numref(mpq(U[j])));
-    fmpz_mul(K.k + j, den, t);
+    fmpz_set_mpz(t.get(), mpq_denref(mpq(U[j])));
+    fmpz_divexact(t.get(), K.den.data(), t.get());
+    fmpz_set_mpz(num.get(), mpq_numref(mpq(U[j])));
+    fmpz_mul(K.k + j, num.get(), t.get());
   }
-  fmpz_clear(den);
-  fmpz_clear(t);
   return K;
 }
 
@@ -132,8 +128,8 @@ FFNet from_bspline(const BSpline<Rational>& S) {
   const std::size_t n = S.size(), m = F.m(), w = F.stride();
   F.words = ZVec(n * w);
   std::vector<Rational> h(m);
-  fmpz_t t;
-  fmpz_init(t);
+  detail::Z tz;
+  fmpz* t = tz.get();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < static_cast<std::size_t>(S.q); ++c)
       h[c] = F.rational ? Rational(S.points[i * S.q + c] * S.weights[i]) : S.points[i * S.q + c];
@@ -151,7 +147,6 @@ FFNet from_bspline(const BSpline<Rational>& S) {
       fmpz_mul(p + c, p + c, t);
     }
   }
-  fmpz_clear(t);
   return F;
 }
 
@@ -198,9 +193,9 @@ bool same_value(const FFNet& A, const FFNet& B) {
   if (A.words.size() != B.words.size()) return false;
   /// Points are not stored reduced: N_A / E_A == N_B / E_B by cross-multiplication.
   const std::size_t m = A.m(), w = A.stride();
-  fmpz_t x, y;
-  fmpz_init(x);
-  fmpz_init(y);
+  detail::Z xz, yz;
+  fmpz* x = xz.get();
+  fmpz* y = yz.get();
   bool same = true;
   for (std::size_t i = 0; same && i < A.size(); ++i) {
     const fmpz* a = A.words + i * w;
@@ -211,8 +206,6 @@ bool same_value(const FFNet& A, const FFNet& B) {
       same = fmpz_equal(x, y);
     }
   }
-  fmpz_clear(x);
-  fmpz_clear(y);
   return same;
 }
 
