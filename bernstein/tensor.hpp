@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -84,18 +85,27 @@ std::vector<T> tensor_binomials(const std::vector<int>& deg) {
 
 /// tensor_binomials, kept per thread for the degrees a thread has asked for (keyed also by the
 /// precision, since an MPFR value keeps the precision it was made with). Composition asks for the
-/// same few degree vectors millions of times; the cache holds at most 256 of them.
+/// same few degree vectors millions of times; the cache holds at most 256 of them. A caller holds
+/// what it got as a shared pointer, so a later call that empties the cache cannot pull it away.
 template <class T>
-const std::vector<T>& cached_tensor_binomials(const std::vector<int>& deg) {
-  thread_local std::map<std::pair<int, std::vector<int>>, std::vector<T>> cache;
+std::shared_ptr<const std::vector<T>> cached_tensor_binomials(const std::vector<int>& deg) {
+  thread_local std::map<std::pair<int, std::vector<int>>, std::shared_ptr<const std::vector<T>>> cache;
   std::pair<int, std::vector<int>> key{cache_precision_key<T>(), deg};
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
   if (cache.size() >= 256) cache.clear();
-  return cache.emplace(std::move(key), tensor_binomials<T>(deg)).first->second;
+  auto made = std::make_shared<const std::vector<T>>(tensor_binomials<T>(deg));
+  cache.emplace(std::move(key), made);
+  return made;
 }
 
 }  // namespace detail
+
+/// Whether T offers the fraction-free product loop (spline/arith.hpp: ArithTraits<T>::tensor_convolve).
+template <class T>
+concept FractionFreeConvolve = requires(const std::vector<T>& v, const std::vector<std::size_t>& o, std::vector<T>& out) {
+  ArithTraits<T>::tensor_convolve(v, v, v, v, o, o, v, out);
+};
 
 template <class T>
 Bernstein<T> bern_product(const Bernstein<T>& f, const Bernstein<T>& g) {
@@ -106,14 +116,21 @@ Bernstein<T> bern_product(const Bernstein<T>& f, const Bernstein<T>& g) {
   h.c.assign(detail::tensor_size(h.deg), T(0));
   /// Scaled coefficients f_I binom(a, I), multiplied as a plain tensor polynomial, then divided
   /// by binom(a+b, K).
-  auto scaled = [&](const Bernstein<T>& p) {
+  const std::vector<std::size_t> fo = detail::tensor_offsets(f.deg, h.deg), go = detail::tensor_offsets(g.deg, h.deg);
+  const auto fbp = detail::cached_tensor_binomials<T>(f.deg), gbp = detail::cached_tensor_binomials<T>(g.deg),
+             hbp = detail::cached_tensor_binomials<T>(h.deg);
+  const std::vector<T>&fb = *fbp, &gb = *gbp, &hb = *hbp;
+  if constexpr (FractionFreeConvolve<T>) {
+    // Exact: integers over one denominator per factor, one reduction per coefficient of h.
+    ArithTraits<T>::tensor_convolve(f.c, fb, g.c, gb, fo, go, hb, h.c);
+    return h;
+  }
+  auto scaled = [&](const Bernstein<T>& p, const std::vector<T>& b) {
     std::vector<T> s(p.c);
-    const std::vector<T>& b = detail::cached_tensor_binomials<T>(p.deg);
     for (std::size_t i = 0; i < s.size(); ++i) s[i] *= b[i];
     return s;
   };
-  const std::vector<T> fs = scaled(f), gs = scaled(g);
-  const std::vector<std::size_t> fo = detail::tensor_offsets(f.deg, h.deg), go = detail::tensor_offsets(g.deg, h.deg);
+  const std::vector<T> fs = scaled(f, fb), gs = scaled(g, gb);
   T t(0);  // one scratch product: t = fs[a]; t *= gs[b] rounds as fs[a] * gs[b] does
   for (std::size_t a = 0; a < fs.size(); ++a) {
     if (fs[a] == T(0)) continue;
@@ -123,9 +140,34 @@ Bernstein<T> bern_product(const Bernstein<T>& f, const Bernstein<T>& g) {
       h.c[fo[a] + go[b]] += t;
     }
   }
-  const std::vector<T>& hb = detail::cached_tensor_binomials<T>(h.deg);
   for (std::size_t i = 0; i < h.c.size(); ++i) h.c[i] /= hb[i];
   return h;
+}
+
+/// Whether T offers the fraction-free weighted sums (spline/arith.hpp: ArithTraits<T>::weighted_sums).
+template <class T>
+concept FractionFreeSums = requires(const std::vector<const std::vector<T>*>& v, const std::vector<T>& s, std::vector<T>& out) {
+  ArithTraits<T>::weighted_sums(v, s, s, std::size_t{1}, out);
+};
+
+/// out[i*cols + c] += sum over t of v[t][i] a[t] b[t*cols + c], every v[t] of out.size() / cols
+/// values: composition's sum over the outer control points (a: weights, b: coordinates). In
+/// floating point each term is (v[t][i] a[t]) b[t*cols + c], added to out in the order of t, and a
+/// term with v[t][i] = 0 is skipped; an exact arithmetic may sum on integers (same values).
+template <class T>
+void weighted_sums(const std::vector<const std::vector<T>*>& v, const std::vector<T>& a, const std::vector<T>& b,
+                   std::size_t cols, std::vector<T>& out) {
+  if constexpr (FractionFreeSums<T>) {
+    ArithTraits<T>::weighted_sums(v, a, b, cols, out);
+  } else {
+    const std::size_t len = out.size() / cols;
+    for (std::size_t t = 0; t < v.size(); ++t)
+      for (std::size_t i = 0; i < len; ++i) {
+        if ((*v[t])[i] == T(0)) continue;
+        const T f = (*v[t])[i] * a[t];
+        for (std::size_t c = 0; c < cols; ++c) out[i * cols + c] += f * b[t * cols + c];
+      }
+  }
 }
 
 /// a + b and a - b (same degrees).

@@ -200,19 +200,29 @@ Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline
       }
     }
     /// Sum over the outer control points: prod_j basis[j][I_j] times (w_I C_I, w_I).
-    const std::size_t nt = outer.size();
+    /// In batches of at most 64 outer points (the terms of a batch are kept; the sum runs in the
+    /// order of the points, see weighted_sums).
+    const std::size_t nt = outer.size(), batch = 64;
     std::vector<int> I(n);
-    for (std::size_t t = 0; t < nt; ++t) {
-      detail::unflatten(t, outer.degrees, I);
-      Bernstein<T> term = basis[0][I[0]];
-      for (int j = 1; j < n; ++j) term = bern_product(term, basis[j][I[j]]);
-      const T w = outer.is_rational() ? outer.weights[t] : T(1);
-      for (std::size_t K = 0; K < total; ++K) {
-        if (term.c[K] == T(0)) continue;
-        const T f = term.c[K] * w;
-        for (std::size_t c = 0; c < q; ++c) H[K * qq + c] += f * outer.points[t * q + c];
-        if (rational) H[K * qq + q] += f;
+    std::vector<Bernstein<T>> terms;
+    std::vector<const std::vector<T>*> tc;
+    std::vector<T> w, P;  // weights; coordinates, then 1 for the weight
+    for (std::size_t t0 = 0; t0 < nt; t0 += batch) {
+      const std::size_t nb = std::min(batch, nt - t0);
+      terms.assign(nb, Bernstein<T>{});
+      tc.assign(nb, nullptr);
+      w.assign(nb, T(1));
+      P.assign(nb * qq, T(1));
+      for (std::size_t b = 0; b < nb; ++b) {
+        const std::size_t t = t0 + b;
+        detail::unflatten(t, outer.degrees, I);
+        terms[b] = basis[0][I[0]];
+        for (int j = 1; j < n; ++j) terms[b] = bern_product(terms[b], basis[j][I[j]]);
+        tc[b] = &terms[b].c;
+        if (outer.is_rational()) w[b] = outer.weights[t];
+        for (std::size_t c = 0; c < q; ++c) P[b * qq + c] = outer.points[t * q + c];
       }
+      weighted_sums(tc, w, P, qq, H);
     }
   } else {
     /// Exact values of the homogeneous composition at (D_l + 1) equispaced nodes per direction.

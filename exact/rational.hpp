@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "spline/arith.hpp"
 
@@ -46,6 +47,13 @@ struct ArithTraits<Rational> {
   static Rational to_rational(const Rational& x) { return x; }
   static nlohmann::json to_json(const Rational& x) { return to_fraction_string(x); }
   static std::string to_string(const Rational& x) { return to_fraction_string(x); }
+  /// The Bernstein product's loop on integers (spline/arith.hpp; exact/rational_convolve.cpp).
+  static void tensor_convolve(const std::vector<Rational>& f, const std::vector<Rational>& fb, const std::vector<Rational>& g,
+                              const std::vector<Rational>& gb, const std::vector<std::size_t>& fo,
+                              const std::vector<std::size_t>& go, const std::vector<Rational>& hb, std::vector<Rational>& h);
+  /// Sums of weighted vectors on integers (spline/arith.hpp; exact/rational_convolve.cpp).
+  static void weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
+                            const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out);
 };
 
 }  // namespace splinex

@@ -14,6 +14,19 @@
 //   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
+// An exact arithmetic may also offer, optionally, the Bernstein product's inner loop done
+// fraction-free (bernstein/tensor.hpp's bern_product uses it when present; the values are the
+// same, only the gcds per term are gone):
+//   static void tensor_convolve(const std::vector<T>& f, const std::vector<T>& fb,
+//                               const std::vector<T>& g, const std::vector<T>& gb,
+//                               const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
+//                               const std::vector<T>& hb, std::vector<T>& h);
+//     // h[i] = (sum over fo[a] + go[b] = i of f[a] fb[a] g[b] gb[b]) / hb[i]; fb, gb, hb are
+//     // positive integers, h has its final size.
+//   static void weighted_sums(const std::vector<const std::vector<T>*>& v, const std::vector<T>& a,
+//                             const std::vector<T>& b, std::size_t cols, std::vector<T>& out);
+//     // out[i*cols + c] += sum over t of v[t][i] a[t] b[t*cols + c] (composition's sum over the
+//     // outer control points); out has its final size.
 //
 // The concept is checked by the compiler twice: `Arithmetic` below (a C++20 concept) constrains
 // BSpline<T>, so a scalar without an operation of the list is rejected where a spline of it is

@@ -1,0 +1,141 @@
+// ArithTraits<Rational>::tensor_convolve and weighted_sums (spline/arith.hpp): the inner loop of the
+// Bernstein product (bernstein/tensor.hpp) and composition's sum over the outer control points, on
+// integers. Each factor's coefficients are brought onto one
+// denominator (the lcm of theirs), the convolution is a sum of integer products (FLINT words:
+// 64-bit values stay inline, longer ones go to GMP), and each coefficient of the product is made
+// a reduced rational once. The per-term rational products and sums it replaces each ended in a
+// gcd: for Algorithm 1 on the teapot they were most of the exact time.
+#include <flint/fmpz.h>
+#include <flint/fmpz_vec.h>
+#include <gmp.h>
+
+#include <memory>
+#include <vector>
+
+#include "exact/rational.hpp"
+
+namespace splinex {
+
+namespace {
+
+/// An owned FLINT integer.
+struct Zt {
+  fmpz_t v;
+  Zt() { fmpz_init(v); }
+  Zt(const Zt&) = delete;
+  Zt& operator=(const Zt&) = delete;
+  ~Zt() { fmpz_clear(v); }
+};
+
+/// An owned array of FLINT integers.
+struct ZArray {
+  fmpz* p;
+  std::size_t n;
+  explicit ZArray(std::size_t size) : p(_fmpz_vec_init(static_cast<slong>(size == 0 ? 1 : size))), n(size == 0 ? 1 : size) {}
+  ZArray(const ZArray&) = delete;
+  ZArray& operator=(const ZArray&) = delete;
+  ~ZArray() { _fmpz_vec_clear(p, static_cast<slong>(n)); }
+};
+
+const __mpq_struct* raw(const Rational& x) { return x.backend().data(); }
+
+/// out[a] = x[a] * mult[a] over one denominator D (returned in D): the lcm of the denominators.
+void onto_common(const std::vector<Rational>& x, const std::vector<Rational>& mult, fmpz* out, fmpz_t D) {
+  Zt t;
+  fmpz_one(D);
+  for (const Rational& v : x) {
+    fmpz_set_mpz(t.v, mpq_denref(raw(v)));
+    if (!fmpz_divisible(D, t.v)) fmpz_lcm(D, D, t.v);
+  }
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    if (mpq_sgn(raw(x[a])) == 0) continue;  // out[a] stays 0
+    fmpz_set_mpz(t.v, mpq_denref(raw(x[a])));
+    fmpz_divexact(t.v, D, t.v);
+    fmpz_set_mpz(out + a, mpq_numref(raw(x[a])));
+    fmpz_mul(out + a, out + a, t.v);
+    fmpz_set_mpz(t.v, mpq_numref(raw(mult[a])));  // a positive integer (a binomial product)
+    fmpz_mul(out + a, out + a, t.v);
+  }
+}
+
+}  // namespace
+
+void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, const std::vector<Rational>& fb,
+                                            const std::vector<Rational>& g, const std::vector<Rational>& gb,
+                                            const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
+                                            const std::vector<Rational>& hb, std::vector<Rational>& h) {
+  ZArray A(f.size()), B(g.size()), H(h.size());
+  Zt Df, Dg, t;
+  onto_common(f, fb, A.p, Df.v);
+  onto_common(g, gb, B.p, Dg.v);
+  for (std::size_t a = 0; a < f.size(); ++a) {
+    if (fmpz_is_zero(A.p + a)) continue;
+    for (std::size_t b = 0; b < g.size(); ++b) fmpz_addmul(H.p + fo[a] + go[b], A.p + a, B.p + b);
+  }
+  fmpz_mul(Df.v, Df.v, Dg.v);  // the product's common denominator, before the binomials
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    fmpz_set_mpz(t.v, mpq_numref(raw(hb[i])));
+    fmpz_mul(t.v, t.v, Df.v);
+    fmpz_gcd(Dg.v, H.p + i, t.v);  // reduce in integers; the sign stays with the numerator
+    fmpz_divexact(H.p + i, H.p + i, Dg.v);
+    fmpz_divexact(t.v, t.v, Dg.v);
+    __mpq_struct* q = h[i].backend().data();
+    fmpz_get_mpz(mpq_numref(q), H.p + i);
+    fmpz_get_mpz(mpq_denref(q), t.v);
+  }
+}
+
+void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
+                                         const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
+  const std::size_t nt = v.size(), len = out.size() / cols;
+  // Each v[t] as integers V_t over its own denominator D_t.
+  std::vector<std::unique_ptr<ZArray>> V(nt);
+  ZArray D(nt), num(nt), den(nt), Acc(len);
+  const std::vector<Rational> unit(len, Rational(1));
+  for (std::size_t t = 0; t < nt; ++t) {
+    V[t] = std::make_unique<ZArray>(len);
+    onto_common(*v[t], unit, V[t]->p, D.p + t);
+  }
+  Zt L, f, g;
+  Rational s;
+  for (std::size_t c = 0; c < cols; ++c) {
+    // s_t = a_t b_tc = n_t / d_t; column c's denominator L = lcm_t (d_t D_t) over s_t != 0;
+    // out[i][c] = sum_t n_t (L / (d_t D_t)) V_t[i] / L.
+    fmpz_one(L.v);
+    for (std::size_t t = 0; t < nt; ++t) {
+      s = a[t] * b[t * cols + c];
+      fmpz_set_mpz(num.p + t, mpq_numref(raw(s)));
+      fmpz_set_mpz(den.p + t, mpq_denref(raw(s)));
+      fmpz_mul(den.p + t, den.p + t, D.p + t);
+      if (!fmpz_is_zero(num.p + t) && !fmpz_divisible(L.v, den.p + t)) fmpz_lcm(L.v, L.v, den.p + t);
+    }
+    _fmpz_vec_zero(Acc.p, static_cast<slong>(len));
+    for (std::size_t t = 0; t < nt; ++t) {
+      if (fmpz_is_zero(num.p + t)) continue;
+      fmpz_divexact(f.v, L.v, den.p + t);
+      fmpz_mul(f.v, f.v, num.p + t);
+      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V[t]->p, static_cast<slong>(len), f.v);
+    }
+    for (std::size_t i = 0; i < len; ++i) {
+      __mpq_struct* q = out[i * cols + c].backend().data();
+      if (mpq_sgn(q) != 0) {  // out += Acc / L, on integers: (o_n L + Acc o_d) / (o_d L)
+        fmpz_set_mpz(f.v, mpq_denref(q));
+        fmpz_mul(Acc.p + i, Acc.p + i, f.v);
+        fmpz_set_mpz(f.v, mpq_numref(q));
+        fmpz_addmul(Acc.p + i, f.v, L.v);
+        fmpz_set_mpz(f.v, mpq_denref(q));
+        fmpz_mul(f.v, f.v, L.v);
+      } else {
+        fmpz_set(f.v, L.v);
+      }
+      // Acc / f in lowest terms (f > 0).
+      fmpz_gcd(g.v, Acc.p + i, f.v);
+      fmpz_divexact(Acc.p + i, Acc.p + i, g.v);
+      fmpz_divexact(f.v, f.v, g.v);
+      fmpz_get_mpz(mpq_numref(q), Acc.p + i);
+      fmpz_get_mpz(mpq_denref(q), f.v);
+    }
+  }
+}
+
+}  // namespace splinex

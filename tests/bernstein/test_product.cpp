@@ -1,0 +1,152 @@
+// The Bernstein product (bernstein/tensor.hpp's bern_product). For Rational it runs fraction-free
+// (ArithTraits<Rational>::tensor_convolve, exact/rational_convolve.cpp); it is proved right by
+// identity: a tensor polynomial of degrees h is fixed by its values on a grid of h_l + 1 points
+// per direction, so h(x) == f(x) g(x) on that grid is h == f g. FlintRational runs the generic
+// per-term loop, an independent route that must give the same coefficients.
+#include <catch2/catch.hpp>
+
+#include <gmp.h>
+
+#include <random>
+#include <vector>
+
+#include "bernstein/tensor.hpp"
+#include "exact/flint_rational.hpp"
+#include "exact/rational.hpp"
+
+using namespace splinex;
+
+namespace {
+
+/// Coefficients of every kind the engines meet: zeros, small and long numerators (past 2^64),
+/// odd, dyadic and shared denominators, both signs.
+Rational coefficient(std::mt19937_64& rng) {
+  const int kind = static_cast<int>(rng() % 6);
+  const long a = static_cast<long>(rng() % 2001) - 1000;
+  const long b = static_cast<long>(rng() % 97) + 1;
+  switch (kind) {
+    case 0: return Rational(0);
+    case 1: return Rational(a, b);
+    case 2: return Rational(a, 1L << (rng() % 40));
+    case 3: return Rational(a, 360);  // a denominator shared by many coefficients
+    case 4: {
+      Rational big(1);
+      for (int i = 0; i < 3; ++i) big *= Rational(static_cast<long>(rng() >> 2) + 1, 1);
+      return (rng() % 2 ? big : -big) / Rational(b * 7 + 3);
+    }
+    default: return Rational(a) / Rational(static_cast<long>(rng() % 100000) + 1);
+  }
+}
+
+Bernstein<Rational> random_poly(std::mt19937_64& rng, const std::vector<int>& deg) {
+  Bernstein<Rational> p;
+  p.deg = deg;
+  p.c.resize(detail::tensor_size(deg));
+  for (auto& c : p.c) c = coefficient(rng);
+  return p;
+}
+
+/// h == f g, checked on a grid of deg(h)_l + 1 distinct points per direction (which proves it).
+bool product_identity(const Bernstein<Rational>& f, const Bernstein<Rational>& g, const Bernstein<Rational>& h) {
+  const std::size_t n = h.deg.size();
+  std::vector<int> idx(n, 0);
+  std::vector<Rational> x(n);
+  while (true) {
+    for (std::size_t l = 0; l < n; ++l) x[l] = Rational(2 * idx[l] + 1, 2 * h.deg[l] + 3);  // distinct, inside (0, 1)
+    if (bern_value(h, x) != bern_value(f, x) * bern_value(g, x)) return false;
+    std::size_t l = 0;
+    while (l < n && ++idx[l] > h.deg[l]) idx[l++] = 0;
+    if (l == n) return true;
+  }
+}
+
+bool canonical(const Rational& x) {
+  const __mpq_struct* q = x.backend().data();
+  mpz_t g;
+  mpz_init(g);
+  mpz_gcd(g, mpq_numref(q), mpq_denref(q));
+  const bool ok = mpz_sgn(mpq_denref(q)) > 0 && mpz_cmp_ui(g, 1) == 0;
+  mpz_clear(g);
+  return ok;
+}
+
+}  // namespace
+
+TEST_CASE("bern_product: the fraction-free product is f g (identity on a grid), canonical, and equal to the per-term route") {
+  std::mt19937_64 rng(49150);
+  int cases = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 1 + rng() % 3;
+    std::vector<int> df(n), dg(n);
+    for (std::size_t l = 0; l < n; ++l) {
+      df[l] = static_cast<int>(rng() % (n == 3 ? 3 : 5));
+      dg[l] = static_cast<int>(rng() % (n == 3 ? 3 : 5));
+    }
+    const Bernstein<Rational> f = random_poly(rng, df), g = random_poly(rng, dg);
+    const Bernstein<Rational> h = bern_product(f, g);
+    REQUIRE(product_identity(f, g, h));
+    for (const Rational& c : h.c) REQUIRE(canonical(c));
+    // The generic loop on FLINT's rationals: the same coefficients.
+    Bernstein<FlintRational> F, G;
+    F.deg = f.deg;
+    G.deg = g.deg;
+    for (const Rational& c : f.c) F.c.emplace_back(c);
+    for (const Rational& c : g.c) G.c.emplace_back(c);
+    const Bernstein<FlintRational> H = bern_product(F, G);
+    REQUIRE(H.deg == h.deg);
+    for (std::size_t i = 0; i < h.c.size(); ++i) REQUIRE(H.c[i].to_rational() == h.c[i]);
+    ++cases;
+  }
+  CHECK(cases == 300);
+}
+
+TEST_CASE("bern_product: the identity check refutes a product one coefficient off") {
+  std::mt19937_64 rng(49151);
+  const Bernstein<Rational> f = random_poly(rng, {2, 1}), g = random_poly(rng, {3, 2});
+  Bernstein<Rational> h = bern_product(f, g);
+  REQUIRE(product_identity(f, g, h));
+  for (std::size_t k = 0; k < h.c.size(); ++k) {
+    Bernstein<Rational> wrong = h;
+    wrong.c[k] += Rational(1, 7);  // a planted slip in one term of the convolution
+    CHECK_FALSE(product_identity(f, g, wrong));
+  }
+}
+
+TEST_CASE("weighted_sums: the integer sums equal the per-term route, added to what out holds") {
+  std::mt19937_64 rng(49152);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t nt = 1 + rng() % 70, len = 1 + rng() % 12, cols = 1 + rng() % 4;
+    std::vector<std::vector<Rational>> v(nt, std::vector<Rational>(len));
+    std::vector<Rational> a(nt), b(nt * cols), out(len * cols);
+    for (auto& x : v)
+      for (auto& y : x) y = coefficient(rng);
+    for (auto& x : a) x = coefficient(rng);
+    for (auto& x : b) x = coefficient(rng);
+    for (auto& x : out) x = rng() % 2 ? coefficient(rng) : Rational(0);  // a running sum, or none
+    std::vector<const std::vector<Rational>*> pv;
+    for (const auto& x : v) pv.push_back(&x);
+    // The reference: the plain sum in GMP rationals, written here.
+    std::vector<Rational> want = out;
+    for (std::size_t t = 0; t < nt; ++t)
+      for (std::size_t i = 0; i < len; ++i)
+        for (std::size_t c = 0; c < cols; ++c) want[i * cols + c] += v[t][i] * a[t] * b[t * cols + c];
+    weighted_sums(pv, a, b, cols, out);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      REQUIRE(out[i] == want[i]);
+      REQUIRE(canonical(out[i]));
+    }
+    // FLINT's rationals take the generic loop: the same values.
+    std::vector<std::vector<FlintRational>> fv(nt);
+    for (std::size_t t = 0; t < nt; ++t)
+      for (const auto& y : v[t]) fv[t].emplace_back(y);
+    std::vector<const std::vector<FlintRational>*> pf;
+    for (const auto& x : fv) pf.push_back(&x);
+    std::vector<FlintRational> fa, fb, fout(len * cols, FlintRational(0));
+    for (const auto& x : a) fa.emplace_back(x);
+    for (const auto& x : b) fb.emplace_back(x);
+    weighted_sums(pf, fa, fb, cols, fout);
+    std::vector<Rational> zero(len * cols, Rational(0));
+    weighted_sums(pv, a, b, cols, zero);
+    for (std::size_t i = 0; i < zero.size(); ++i) REQUIRE(fout[i].to_rational() == zero[i]);
+  }
+}
