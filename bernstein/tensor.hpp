@@ -230,8 +230,18 @@ Bernstein<T> bern_derivative(const Bernstein<T>& b, int l) {
 /// The two parts of b at t_l = t (0 < t < 1), each reparametrized onto [0, 1] in direction l (de
 /// Casteljau along every line of direction l).
 template <class T>
+concept FractionFreeDeCasteljau = requires(const std::vector<T>& v, const std::vector<int>& d, const T& t, std::vector<T>* out) {
+  ArithTraits<T>::de_casteljau(v, std::size_t{1}, 1, t, out, out);
+  { ArithTraits<T>::tensor_value(v, d, v) } -> std::convertible_to<T>;
+};
+
+template <class T>
 std::pair<Bernstein<T>, Bernstein<T>> bern_split(const Bernstein<T>& b, int l, const T& t) {
   Bernstein<T> L = b, R = b;
+  if constexpr (FractionFreeDeCasteljau<T>) {  // exact: on integers, one reduction per coefficient
+    ArithTraits<T>::de_casteljau(b.c, detail::tensor_stride(b.deg, l), b.deg[l], t, &L.c, &R.c);
+    return {std::move(L), std::move(R)};
+  }
   const int p = b.deg[l];
   const std::size_t n = b.deg.size(), stride = detail::tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
   std::vector<T> w(p + 1);
@@ -306,6 +316,7 @@ Bernstein<T> bern_fix(const Bernstein<T>& b, int l, const T& t) {
 /// The value at x in [0, 1]^n (de Casteljau, direction by direction).
 template <class T>
 T bern_value(const Bernstein<T>& b, const std::vector<T>& x) {
+  if constexpr (FractionFreeDeCasteljau<T>) return ArithTraits<T>::tensor_value(b.c, b.deg, x);
   std::vector<T> cur = b.c;
   std::vector<int> deg = b.deg;
   for (std::size_t l = 0; l < deg.size(); ++l) {

@@ -47,13 +47,18 @@ struct ArithTraits<Rational> {
   static Rational to_rational(const Rational& x) { return x; }
   static nlohmann::json to_json(const Rational& x) { return to_fraction_string(x); }
   static std::string to_string(const Rational& x) { return to_fraction_string(x); }
-  /// The Bernstein product's loop on integers (spline/arith.hpp; exact/rational_convolve.cpp).
+  /// The Bernstein product's loop on integers (spline/arith.hpp; exact/rational_bernstein.cpp).
   static void tensor_convolve(const std::vector<Rational>& f, const std::vector<Rational>& fb, const std::vector<Rational>& g,
                               const std::vector<Rational>& gb, const std::vector<std::size_t>& fo,
                               const std::vector<std::size_t>& go, const std::vector<Rational>& hb, std::vector<Rational>& h);
-  /// Sums of weighted vectors on integers (spline/arith.hpp; exact/rational_convolve.cpp).
+  /// Sums of weighted vectors on integers (spline/arith.hpp; exact/rational_bernstein.cpp).
   static void weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
                             const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out);
+  /// de Casteljau at t on every line of one direction, on integers (spline/arith.hpp).
+  static void de_casteljau(const std::vector<Rational>& c, std::size_t stride, int p, const Rational& t,
+                           std::vector<Rational>* left, std::vector<Rational>* right);
+  /// A tensor Bernstein polynomial's value on integers, one reduction (spline/arith.hpp).
+  static Rational tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg, const std::vector<Rational>& x);
 };
 
 }  // namespace splinex

@@ -27,6 +27,13 @@
 //                             const std::vector<T>& b, std::size_t cols, std::vector<T>& out);
 //     // out[i*cols + c] += sum over t of v[t][i] a[t] b[t*cols + c] (composition's sum over the
 //     // outer control points); out has its final size.
+//   static void de_casteljau(const std::vector<T>& c, std::size_t stride, int p, const T& t,
+//                            std::vector<T>* left, std::vector<T>* right);
+//     // every line of one direction (values c[base + i*stride], i = 0..p, base over the blocks of
+//     // stride*(p+1)) split at t: left[base + r*stride] = w^r_0, right[base + (p-r)*stride] =
+//     // w^r_{p-r} of the de Casteljau triangle (either pointer may be null; sizes as c).
+//   static T tensor_value(const std::vector<T>& c, const std::vector<int>& deg, const std::vector<T>& x);
+//     // the value at x of the tensor Bernstein polynomial of degrees deg (direction 0 fastest).
 //
 // The concept is checked by the compiler twice: `Arithmetic` below (a C++20 concept) constrains
 // BSpline<T>, so a scalar without an operation of the list is rejected where a spline of it is

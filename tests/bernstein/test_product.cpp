@@ -1,5 +1,5 @@
 // The Bernstein product (bernstein/tensor.hpp's bern_product). For Rational it runs fraction-free
-// (ArithTraits<Rational>::tensor_convolve, exact/rational_convolve.cpp); it is proved right by
+// (ArithTraits<Rational>::tensor_convolve, exact/rational_bernstein.cpp); it is proved right by
 // identity: a tensor polynomial of degrees h is fixed by its values on a grid of h_l + 1 points
 // per direction, so h(x) == f(x) g(x) on that grid is h == f g. FlintRational runs the generic
 // per-term loop, an independent route that must give the same coefficients.
@@ -148,5 +148,65 @@ TEST_CASE("weighted_sums: the integer sums equal the per-term route, added to wh
     std::vector<Rational> zero(len * cols, Rational(0));
     weighted_sums(pv, a, b, cols, zero);
     for (std::size_t i = 0; i < zero.size(); ++i) REQUIRE(fout[i].to_rational() == zero[i]);
+  }
+}
+
+namespace {
+
+Bernstein<FlintRational> to_flint(const Bernstein<Rational>& b) {
+  Bernstein<FlintRational> f;
+  f.deg = b.deg;
+  for (const Rational& c : b.c) f.c.emplace_back(c);
+  return f;
+}
+
+Rational parameter(std::mt19937_64& rng) {
+  switch (rng() % 4) {
+    case 0: return Rational(1, 2);
+    case 1: return Rational(static_cast<long>(rng() % 1023) + 1, 1024);
+    case 2: return Rational(static_cast<long>(rng() % 6) + 1, 7);
+    default: {
+      const long b = static_cast<long>(rng() % 100000) + 2;
+      return Rational(static_cast<long>(rng() % static_cast<std::uint64_t>(b - 1)) + 1, b);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("bern_split and bern_value: de Casteljau on integers equals the per-term route, and the parts agree with the whole") {
+  std::mt19937_64 rng(49153);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 1 + rng() % 3;
+    std::vector<int> deg(n);
+    for (auto& d : deg) d = static_cast<int>(rng() % (n == 3 ? 4 : 7));
+    const Bernstein<Rational> b = random_poly(rng, deg);
+    const Bernstein<FlintRational> B = to_flint(b);
+    const int l = static_cast<int>(rng() % n);
+    const Rational t = parameter(rng);
+    const auto [L, R] = bern_split(b, l, t);
+    const auto [FL, FR] = bern_split(B, l, FlintRational(t));
+    for (std::size_t i = 0; i < b.c.size(); ++i) {
+      REQUIRE(L.c[i] == FL.c[i].to_rational());
+      REQUIRE(R.c[i] == FR.c[i].to_rational());
+      REQUIRE(canonical(L.c[i]));
+      REQUIRE(canonical(R.c[i]));
+    }
+    // Values: the integer route against FLINT's per-term one, at parameters of every kind
+    // (0 and 1 included), and the parts against the whole: L(u) = b(t u) in direction l.
+    std::vector<Rational> x(n), y(n);
+    std::vector<FlintRational> fx(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      x[k] = rng() % 5 == 0 ? Rational(static_cast<long>(rng() % 2)) : parameter(rng);
+      fx[k] = FlintRational(x[k]);
+    }
+    const Rational v = bern_value(b, x);
+    REQUIRE(v == bern_value(B, fx).to_rational());
+    REQUIRE(canonical(v));
+    y = x;
+    y[l] = t * x[l];
+    REQUIRE(bern_value(L, x) == bern_value(b, y));
+    y[l] = t + (1 - t) * x[l];
+    REQUIRE(bern_value(R, x) == bern_value(b, y));
   }
 }

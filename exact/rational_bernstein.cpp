@@ -1,6 +1,7 @@
-// ArithTraits<Rational>::tensor_convolve and weighted_sums (spline/arith.hpp): the inner loop of the
-// Bernstein product (bernstein/tensor.hpp) and composition's sum over the outer control points, on
-// integers. Each factor's coefficients are brought onto one
+// ArithTraits<Rational>'s integer loops (spline/arith.hpp): the Bernstein product
+// (tensor_convolve), composition's sum over the outer control points (weighted_sums), and de
+// Casteljau's algorithm for splits and values (de_casteljau, tensor_value) of bernstein/tensor.hpp.
+// Each operand's coefficients are brought onto one
 // denominator (the lcm of theirs), the convolution is a sum of integer products (FLINT words:
 // 64-bit values stay inline, longer ones go to GMP), and each coefficient of the product is made
 // a reduced rational once. The per-term rational products and sums it replaces each ended in a
@@ -136,6 +137,103 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
       fmpz_get_mpz(mpq_denref(q), f.v);
     }
   }
+}
+
+namespace {
+
+/// t = a / b with b > 0 (canonical mpq parts as FLINT integers).
+void parts(const Rational& t, fmpz_t a, fmpz_t b) {
+  fmpz_set_mpz(a, mpq_numref(raw(t)));
+  fmpz_set_mpz(b, mpq_denref(raw(t)));
+}
+
+/// q := n / d in lowest terms (d > 0); n is left divided by the gcd, d untouched.
+void store(fmpz* n, const fmpz* d, Zt& g, Zt& dd, Rational& q) {
+  fmpz_gcd(g.v, n, d);
+  __mpq_struct* r = q.backend().data();
+  if (fmpz_is_one(g.v)) {
+    fmpz_get_mpz(mpq_numref(r), n);
+    fmpz_get_mpz(mpq_denref(r), d);
+    return;
+  }
+  fmpz_divexact(n, n, g.v);
+  fmpz_divexact(dd.v, d, g.v);
+  fmpz_get_mpz(mpq_numref(r), n);
+  fmpz_get_mpz(mpq_denref(r), dd.v);
+}
+
+}  // namespace
+
+void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::size_t stride, int p, const Rational& t,
+                                         std::vector<Rational>* left, std::vector<Rational>* right) {
+  const std::size_t n = c.size(), block = stride * (static_cast<std::size_t>(p) + 1);
+  ZArray C(n), w(static_cast<std::size_t>(p) + 1), den(static_cast<std::size_t>(p) + 1);
+  Zt D, a, b, s, g, dd, x;
+  const std::vector<Rational> unit(n, Rational(1));
+  onto_common(c, unit, C.p, D.v);
+  parts(t, a.v, b.v);
+  fmpz_sub(s.v, b.v, a.v);  // 1 - t = s / b
+  const bool half = fmpz_is_one(a.v) && fmpz_equal_si(b.v, 2);
+  // Level r of the triangle holds integers over D b^r.
+  fmpz_set(den.p, D.v);
+  for (int r = 1; r <= p; ++r) fmpz_mul(den.p + r, den.p + r - 1, b.v);
+  for (std::size_t hi = 0; hi < n; hi += block)
+    for (std::size_t lo = 0; lo < stride; ++lo) {
+      const std::size_t base = hi + lo;
+      for (int i = 0; i <= p; ++i) fmpz_set(w.p + i, C.p + base + static_cast<std::size_t>(i) * stride);
+      for (int r = 0; r <= p; ++r) {
+        if (left) {
+          fmpz_set(x.v, w.p);  // a copy: store divides it
+          store(x.v, den.p + r, g, dd, (*left)[base + static_cast<std::size_t>(r) * stride]);
+        }
+        if (right) {
+          fmpz_set(x.v, w.p + p - r);
+          store(x.v, den.p + r, g, dd, (*right)[base + static_cast<std::size_t>(p - r) * stride]);
+        }
+        if (half)
+          for (int i = 0; i < p - r; ++i) fmpz_add(w.p + i, w.p + i, w.p + i + 1);
+        else
+          for (int i = 0; i < p - r; ++i) {
+            fmpz_mul(w.p + i, w.p + i, s.v);
+            fmpz_addmul(w.p + i, w.p + i + 1, a.v);
+          }
+      }
+    }
+}
+
+}  // namespace splinex
+
+namespace splinex {
+
+Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg,
+                                             const std::vector<Rational>& x) {
+  // Direction by direction on integers: after direction l the values are integers over
+  // D b_0^p_0 ... b_l^p_l (x_l = a_l / b_l), so one reduction at the end.
+  std::size_t n = c.size();
+  ZArray C(n);
+  Zt D, a, b, s, g, dd;
+  const std::vector<Rational> unit(n, Rational(1));
+  onto_common(c, unit, C.p, D.v);
+  for (std::size_t l = 0; l < deg.size(); ++l) {
+    const int p = deg[l];
+    const std::size_t lines = n / (static_cast<std::size_t>(p) + 1);
+    parts(x[l], a.v, b.v);
+    fmpz_sub(s.v, b.v, a.v);
+    for (std::size_t line = 0; line < lines; ++line) {
+      fmpz* w = C.p + line * (static_cast<std::size_t>(p) + 1);
+      for (int r = p; r > 0; --r)
+        for (int i = 0; i < r; ++i) {
+          fmpz_mul(w + i, w + i, s.v);
+          fmpz_addmul(w + i, w + i + 1, a.v);
+        }
+      fmpz_swap(C.p + line, w);  // the line's value moves to slot `line` (line <= its start)
+    }
+    for (int r = 0; r < p; ++r) fmpz_mul(D.v, D.v, b.v);
+    n = lines;
+  }
+  Rational out;
+  store(C.p, D.v, g, dd, out);
+  return out;
 }
 
 }  // namespace splinex
