@@ -237,11 +237,12 @@ concept FractionFreeDeCasteljau = requires(const std::vector<T>& v, const std::v
 
 template <class T>
 std::pair<Bernstein<T>, Bernstein<T>> bern_split(const Bernstein<T>& b, int l, const T& t) {
-  Bernstein<T> L = b, R = b;
   if constexpr (FractionFreeDeCasteljau<T>) {  // exact: on integers, one reduction per coefficient
+    Bernstein<T> L{b.deg, std::vector<T>(b.c.size())}, R{b.deg, std::vector<T>(b.c.size())};
     ArithTraits<T>::de_casteljau(b.c, detail::tensor_stride(b.deg, l), b.deg[l], t, &L.c, &R.c);
     return {std::move(L), std::move(R)};
   }
+  Bernstein<T> L = b, R = b;
   const int p = b.deg[l];
   const std::size_t n = b.deg.size(), stride = detail::tensor_stride(b.deg, l), lines = b.c.size() / (p + 1);
   std::vector<T> w(p + 1);

@@ -41,7 +41,8 @@ struct ZArray {
 const __mpq_struct* raw(const Rational& x) { return x.backend().data(); }
 
 /// out[a] = x[a] * mult[a] over one denominator D (returned in D): the lcm of the denominators.
-void onto_common(const std::vector<Rational>& x, const std::vector<Rational>& mult, fmpz* out, fmpz_t D) {
+/// No `mult`: every multiplier is 1.
+void onto_common(const std::vector<Rational>& x, const std::vector<Rational>* mult, fmpz* out, fmpz_t D) {
   Zt t;
   fmpz_one(D);
   for (const Rational& v : x) {
@@ -54,7 +55,8 @@ void onto_common(const std::vector<Rational>& x, const std::vector<Rational>& mu
     fmpz_divexact(t.v, D, t.v);
     fmpz_set_mpz(out + a, mpq_numref(raw(x[a])));
     fmpz_mul(out + a, out + a, t.v);
-    fmpz_set_mpz(t.v, mpq_numref(raw(mult[a])));  // a positive integer (a binomial product)
+    if (!mult) continue;
+    fmpz_set_mpz(t.v, mpq_numref(raw((*mult)[a])));  // a positive integer (a binomial product)
     fmpz_mul(out + a, out + a, t.v);
   }
 }
@@ -67,8 +69,8 @@ void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, cons
                                             const std::vector<Rational>& hb, std::vector<Rational>& h) {
   ZArray A(f.size()), B(g.size()), H(h.size());
   Zt Df, Dg, t;
-  onto_common(f, fb, A.p, Df.v);
-  onto_common(g, gb, B.p, Dg.v);
+  onto_common(f, &fb, A.p, Df.v);
+  onto_common(g, &gb, B.p, Dg.v);
   for (std::size_t a = 0; a < f.size(); ++a) {
     if (fmpz_is_zero(A.p + a)) continue;
     for (std::size_t b = 0; b < g.size(); ++b) fmpz_addmul(H.p + fo[a] + go[b], A.p + a, B.p + b);
@@ -92,10 +94,9 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
   // Each v[t] as integers V_t over its own denominator D_t.
   std::vector<std::unique_ptr<ZArray>> V(nt);
   ZArray D(nt), num(nt), den(nt), Acc(len);
-  const std::vector<Rational> unit(len, Rational(1));
   for (std::size_t t = 0; t < nt; ++t) {
     V[t] = std::make_unique<ZArray>(len);
-    onto_common(*v[t], unit, V[t]->p, D.p + t);
+    onto_common(*v[t], nullptr, V[t]->p, D.p + t);
   }
   Zt L, f, g;
   Rational s;
@@ -169,8 +170,7 @@ void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::si
   const std::size_t n = c.size(), block = stride * (static_cast<std::size_t>(p) + 1);
   ZArray C(n), w(static_cast<std::size_t>(p) + 1), den(static_cast<std::size_t>(p) + 1);
   Zt D, a, b, s, g, dd, x;
-  const std::vector<Rational> unit(n, Rational(1));
-  onto_common(c, unit, C.p, D.v);
+  onto_common(c, nullptr, C.p, D.v);
   parts(t, a.v, b.v);
   fmpz_sub(s.v, b.v, a.v);  // 1 - t = s / b
   const bool half = fmpz_is_one(a.v) && fmpz_equal_si(b.v, 2);
@@ -201,9 +201,6 @@ void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::si
     }
 }
 
-}  // namespace splinex
-
-namespace splinex {
 
 Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg,
                                              const std::vector<Rational>& x) {
@@ -212,8 +209,7 @@ Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, con
   std::size_t n = c.size();
   ZArray C(n);
   Zt D, a, b, s, g, dd;
-  const std::vector<Rational> unit(n, Rational(1));
-  onto_common(c, unit, C.p, D.v);
+  onto_common(c, nullptr, C.p, D.v);
   for (std::size_t l = 0; l < deg.size(); ++l) {
     const int p = deg[l];
     const std::size_t lines = n / (static_cast<std::size_t>(p) + 1);
