@@ -14,9 +14,9 @@
 //   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
-// An exact arithmetic may also offer, optionally, the Bernstein product's inner loop done
-// fraction-free (bernstein/tensor.hpp's bern_product uses it when present; the values are the
-// same, only the gcds per term are gone):
+// An exact arithmetic may also offer, optionally, four inner loops of bernstein/tensor.hpp done
+// fraction-free (bern_product, composition's weighted_sums, bern_split and bern_value use them
+// when present; the values are the same, only the gcds per term are gone):
 //   static void tensor_convolve(const std::vector<T>& f, const std::vector<T>& fb,
 //                               const std::vector<T>& g, const std::vector<T>& gb,
 //                               const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
