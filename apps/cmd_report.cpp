@@ -14,6 +14,8 @@ Commands add_report(CLI::App& app) {
   c->add_flag("--full", o->full, "the long sweep (larger cases, more precisions)");
   c->add_option("--peers", o->peers_dir, "include the peers' judged results from this folder (scripts/run.sh peers writes "
                                          "results/peers)");
+  c->add_option("--bench", o->bench_dir, "include what exactness costs from this folder (scripts/run.sh bench writes "
+                                         "bench/results)");
   std::string names;
   for (const auto& n : report_section_names()) names += (names.empty() ? "" : ", ") + n;
   c->add_option("--sections", o->sections, "only these sections (comma-separated), for splitting the run: " + names)->delimiter(',');

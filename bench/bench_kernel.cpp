@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <random>
+#include <type_traits>
 
 #ifdef SPLINEX_HAVE_SISL
 #define SISLNEEDPROTOTYPES
@@ -112,6 +113,39 @@ void report_memory(benchmark::State& st, F&& once, long items) {
   if (u.peak_rss_kib >= 0) st.counters["rss_peak_mib"] = static_cast<double>(u.peak_rss_kib) / 1024.0;
 }
 
+/// Bytes one stored value takes: its own size plus what it holds on the heap (no allocator
+/// overhead), counted as ff::heap_bytes counts the fraction-free net's, so the columns compare.
+std::size_t value_bytes(const double&) { return sizeof(double); }
+std::size_t value_bytes(const Rational& x) {
+  const auto* q = x.backend().data();
+  return sizeof(Rational) + static_cast<std::size_t>(mpq_numref(q)->_mp_alloc + mpq_denref(q)->_mp_alloc) * sizeof(mp_limb_t);
+}
+// FlintRational is one fmpq_t and standard-layout, so its address is the fmpq's.
+static_assert(std::is_standard_layout_v<FlintRational> && sizeof(FlintRational) == sizeof(fmpq));
+std::size_t value_bytes(const FlintRational& x) {
+  const fmpq* v = reinterpret_cast<const fmpq*>(&x);
+  std::size_t b = sizeof(fmpq);
+  for (const fmpz* z : {fmpq_numref(v), fmpq_denref(v)})
+    if (COEFF_IS_MPZ(*z)) b += sizeof(__mpz_struct) + static_cast<std::size_t>(COEFF_TO_PTR(*z)->_mp_alloc) * sizeof(mp_limb_t);
+  return b;
+}
+template <class T>
+constexpr bool kCountsBytes = std::is_same_v<T, double> || std::is_same_v<T, Rational> || std::is_same_v<T, FlintRational>;
+
+/// The result's bytes per stored value (coordinates, weights and knots), as run_ff's counter.
+template <class T>
+double bytes_per_value(const BSpline<T>& R) {
+  std::size_t bytes = 0, values = 0;
+  auto add = [&](const std::vector<T>& v) {
+    for (const auto& x : v) bytes += value_bytes(x);
+    values += v.size();
+  };
+  add(R.points);
+  add(R.weights);
+  for (const auto& K : R.knots) add(K);
+  return static_cast<double>(bytes) / static_cast<double>(values);
+}
+
 template <class T>
 void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, long bits) {
   std::unique_ptr<Mpfr::Precision> scope;
@@ -129,6 +163,12 @@ void run_op(benchmark::State& st, const std::string& op, int p, std::size_t n, l
   const long items = static_cast<long>(op == "eval" ? in.at.size() : 1);
   st.SetItemsProcessed(st.iterations() * items);
   report_memory(st, once, items);
+  if constexpr (kCountsBytes<T>)
+    if (op == "insert" || op == "refine" || op == "elevate" || op == "extract")
+      st.counters["bytes_per_coef"] = bytes_per_value(op == "insert"    ? insert_knot(in.S, 0, in.knot, 1)
+                                                      : op == "refine"  ? refine_knots(in.S, 0, in.refine)
+                                                      : op == "elevate" ? elevate_degree(in.S, 0, 1)
+                                                                        : bezier_form(in.S).spline);
 }
 
 /// "exact": the fraction-free net (exact/ffnet.hpp, issue 49), converted from the exact case outside the

@@ -10,7 +10,6 @@
 #include <flint/fmpz_vec.h>
 #include <gmp.h>
 
-#include <memory>
 #include <vector>
 
 #include "exact/rational.hpp"
@@ -92,12 +91,8 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
                                          const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
   const std::size_t nt = v.size(), len = out.size() / cols;
   // Each v[t] as integers V_t over its own denominator D_t.
-  std::vector<std::unique_ptr<ZArray>> V(nt);
-  ZArray D(nt), num(nt), den(nt), Acc(len);
-  for (std::size_t t = 0; t < nt; ++t) {
-    V[t] = std::make_unique<ZArray>(len);
-    onto_common(*v[t], nullptr, V[t]->p, D.p + t);
-  }
+  ZArray V(nt * len), D(nt), num(nt), den(nt), Acc(len);
+  for (std::size_t t = 0; t < nt; ++t) onto_common(*v[t], nullptr, V.p + t * len, D.p + t);
   Zt L, f, g;
   Rational s;
   for (std::size_t c = 0; c < cols; ++c) {
@@ -116,7 +111,7 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
       if (fmpz_is_zero(num.p + t)) continue;
       fmpz_divexact(f.v, L.v, den.p + t);
       fmpz_mul(f.v, f.v, num.p + t);
-      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V[t]->p, static_cast<slong>(len), f.v);
+      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V.p + t * len, static_cast<slong>(len), f.v);
     }
     for (std::size_t i = 0; i < len; ++i) {
       __mpq_struct* q = out[i * cols + c].backend().data();

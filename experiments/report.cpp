@@ -82,6 +82,7 @@ constexpr SectionInfo kSectionTable[] = {
     {"cut", cut_section, 45, "papers/004 Figures 6, 8, 9; Table 1"},
     {"cut3", cut3_section, 156, "papers/004 Figures 1 and 6 (d = 3)"},
     {"peers", peers_section, 1, "SciPy, Octave NURBS and OpenCASCADE judged (needs --peers; no figure)"},
+    {"exactness", exactness_section, 1, "what exactness costs: exact kernels, double, MPFR and peers in one benchmark run (needs --bench; no figure)"},
     {"proofs", proofs_section, 108, "the exact proofs of splinex prove"},
 };
 constexpr std::size_t kSectionCount = std::size(kSectionTable);
@@ -89,11 +90,14 @@ static_assert(std::string_view(kSectionTable[kSectionCount - 1].name) == "proofs
 
 double section_weight(std::size_t k) { return kSectionTable[k].seconds; }
 
+// Sections that copy another program's results from a folder (--peers, --bench): no time of their own.
+bool reads_folder(std::string_view name) { return name == "peers" || name == "exactness"; }
+
 // report.md's parts in the order they are read.
 const char* const kDocument[] = {
     "crosscheck.intro", "proofs",         "crosscheck.figures", "composition-orders", "teapot-stars",
     "tolerance",        "algorithm2-stars", "checkerboard",     "curved-untrim",      "untrim-tolerance",
-    "hybrid",           "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve", "cut", "cut3", "peers",            "crosscheck.tables",
+    "hybrid",           "elevation-accuracy", "vrep", "vrep-boolean", "vrep-ssi", "vrep-teapot", "solve", "cut", "cut3", "peers", "exactness", "crosscheck.tables",
 };
 
 // Which sections run (every one when none is named); typed errors for unknown names and for
@@ -161,6 +165,7 @@ int write_report(const ReportOptions& opt, ReportContext& ctx) {
   std::string command = opt.command.empty() ? "splinex report --out " + opt.out_dir : opt.command;
   if (opt.command.empty() && opt.full) command += " --full";
   if (opt.command.empty() && !opt.peers_dir.empty()) command += " --peers " + opt.peers_dir;
+  if (opt.command.empty() && !opt.bench_dir.empty()) command += " --bench " + opt.bench_dir;
   if (opt.command.empty() && !opt.sections.empty()) {
     command += " --sections ";
     for (std::size_t i = 0; i < opt.sections.size(); ++i) command += (i ? "," : "") + opt.sections[i];
@@ -228,16 +233,16 @@ std::string report_section_table(bool markdown) {
   };
   double total = 0;
   for (const auto& x : kSectionTable)
-    if (std::string(x.name) != "peers") total += x.seconds;
+    if (!reads_folder(x.name)) total += x.seconds;
   if (markdown) {
     std::ostringstream rows;
-    for (const auto& x : kSectionTable) rows << "| " << x.name << " | " << x.reproduces << " | " << (std::string(x.name) == "peers" ? "-" : time(x.seconds)) << " |\n";
+    for (const auto& x : kSectionTable) rows << "| " << x.name << " | " << x.reproduces << " | " << (reads_folder(x.name) ? "-" : time(x.seconds)) << " |\n";
     o << ReportTemplate("report.sections").set("rows", rows.str()).set("total", time(total)).render();
   } else {
     o << "Sections (what each reproduces; time alone with --jobs 1 on 2 cores under load, 2026-12-06):\n";
     for (const auto& x : kSectionTable)
-      o << "  " << std::left << std::setw(20) << x.name << x.reproduces << (std::string(x.name) == "peers" ? "" : "; " + time(x.seconds)) << "\n";
-    o << "  all sections one after another (--jobs 1, without peers): " << time(total) << "; the default runs them on every core\n";
+      o << "  " << std::left << std::setw(20) << x.name << x.reproduces << (reads_folder(x.name) ? "" : "; " + time(x.seconds)) << "\n";
+    o << "  all sections one after another (--jobs 1, without peers and exactness): " << time(total) << "; the default runs them on every core\n";
   }
   return o.str();
 }
@@ -255,6 +260,9 @@ int run_report(const ReportOptions& opt) {
         !fs::exists(fs::path(opt.peers_dir) / "occt.md"))
       throw UsageError("peers", opt.peers_dir + " holds no scipy.md, octave.md or occt.md", "run scripts/run.sh peers first");
   }
+  if (!opt.bench_dir.empty() && !fs::exists(fs::path(opt.bench_dir) / "exactness.md"))
+    throw UsageError("bench", opt.bench_dir + (fs::is_directory(opt.bench_dir) ? " holds no exactness.md" : " is not a folder"),
+                     "give the folder scripts/run.sh bench wrote (bench/results), or run it first");
   prepare_output_folder(opt.out_dir, "out");
   // A manifest marked incomplete first: an interrupted run (Ctrl-C) leaves it so, and its files
   // cannot pass for a finished report. (prepare_output_folder has checked the folder is writable.)

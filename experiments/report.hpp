@@ -14,6 +14,7 @@ struct ReportOptions {
   std::string out_dir = "results";
   bool full = false;  // the long sweep: larger cases, more precisions, longer refinements
   std::string peers_dir;  // the peers' judged results (scripts/run.sh peers); empty: not included
+  std::string bench_dir;  // a scripts/run.sh bench run's tables (bench/results); empty: not included
   std::string command;    // the command report.md names; empty: the `splinex report` these options are
   /// Only these sections (names as in report_section_names()), in the report's order; empty: all.
   /// A part of the report lets a test run split the report over the cores; every section computes

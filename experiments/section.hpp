@@ -75,6 +75,8 @@ void vrep_ssi_section(ReportContext& ctx);
 void vrep_teapot_section(ReportContext& ctx);
 /// The peers' results judged by verify, from ReportOptions::peers_dir; part peers.
 void peers_section(ReportContext& ctx);
+/// What exactness costs, from a scripts/run.sh bench run in ReportOptions::bench_dir; part exactness.
+void exactness_section(ReportContext& ctx);
 /// The exact proofs of `splinex prove`; part proofs.
 void proofs_section(ReportContext& ctx);
 

@@ -1,7 +1,14 @@
 #!/usr/bin/env python3
 """Ratio table of one bench_kernel run (Google Benchmark JSON), as markdown and JSON.
 
-    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json] [--compose COMPOSE.json] [--hybrid HYBRID.json] [--vrep VREP.json]
+    scripts/bench_table.py KERNEL.json OUT_DIR [PYTHON.json] [--compose COMPOSE.json] [--hybrid HYBRID.json]
+                           [--vrep VREP.json] [--solve SOLVE.json] [--cut CUT.json]
+
+Writes OUT_DIR/kernel.md and kernel.json (every case, the targets of issues 15 and 49) and
+OUT_DIR/exactness.md, the report's section "what exactness costs" (`splinex report --bench OUT_DIR`):
+the naive exact kernels (GMP mpq, FLINT fmpq), the fraction-free one (`exact`), double, MPFR and the
+peers (SISL, OpenCASCADE, Python's Fraction) side by side as ratios to double, the bytes per stored
+exact value, and the higher levels' exact/double.
 
 Every ratio is taken between timings of the same run (CPU time per iteration): each arithmetic
 against double for the same operation, degree p and size n, and the geometric mean per operation.
@@ -108,20 +115,132 @@ def targets(t, compose, hybrid, vrep=None, mem=None):
             parts = k.split("/")
             if len(parts) == 4 and parts[2] == "exact":
                 d = hybrid.get(f"{parts[0]}/{parts[1]}/double/{parts[3]}")
-                add(f"hybrid patch {parts[1]}, {parts[3][1:]} sides: exact / double per point", v / d if d else None, 50)
+                add(f"hybrid patch {parts[1]}, {parts[3][1:]} sides: exact / double per point", v / d if d else None, 30)
     if vrep:
         for k, v in sorted(vrep.items()):
             parts = k.split("/")
             if len(parts) == 4 and parts[2] == "exact":
                 d = vrep.get(f"{parts[0]}/{parts[1]}/double/{parts[3]}")
-                add(f"V-rep {parts[3]} of five cells, {parts[1]}: exact / double", v / d if d else None, None)
+                add(f"V-rep {parts[1]}, {parts[3]}: exact / double", v / d if d else None, None)
     return rows
+
+
+# The arithmetics of the higher benchmarks, as the third-from-last or middle part of a name.
+HIGHER_ARITHS = ("double", "exact", "gmp", "flint", "mpfr53", "mpfr200", "newton16", "judge")
+HIGHER_NAMES = {"compose": "composition (bench_compose)", "hybrid": "hybrid patch (bench_hybrid)",
+                "vrep": "V-rep (bench_vrep)", "solve": "solver (bench_solve)", "cut": "cutting (bench_cut)"}
+
+
+def higher_rows(runs):
+    """{name: seconds} of one higher benchmark -> rows (case, double seconds, {arith: ratio to double})."""
+    groups = defaultdict(dict)
+    for name, sec in runs.items():
+        parts = name.split("/")
+        idx = [i for i, x in enumerate(parts) if x in HIGHER_ARITHS]
+        if not idx:
+            continue
+        arith = parts[idx[0]]
+        case = "/".join(parts[:idx[0]] + parts[idx[0] + 1:])
+        groups[case][arith] = sec
+    rows = []
+    for case, by in sorted(groups.items()):
+        d = by.get("double")
+        if d and any(a != "double" for a in by):
+            rows.append((case, d, {a: v / d for a, v in by.items() if a != "double"}))
+    return rows
+
+
+# What a reader of a higher level's table needs to know to read its ratios.
+HIGHER_NOTES = {
+    "cut": "The guide's double run solves the rounded program with CGAL's exact solver on Gmpzf (no float QP method "
+           "yet, docs/cut.md), while the exact run solves by a float active set certified exactly: that is why its "
+           "exact / double is below 1.",
+    "vrep": "`judge`: the exact judgement of the float surface-surface intersection's points (Krawczyk certificates), "
+            "against the float intersection itself.",
+    "solve": "`mpfr53`, `mpfr200`: the certified solver in MPFR at 53 and 200 bits; `newton16`: an uncertified projection "
+             "in double (Newton from a 16 x 16 grid of starts, what a CAD kernel does), against the certified double solver.",
+}
+
+
+def exactness(t, mem, higher, meta, provenance, target_rows=()):
+    """The report's section "what exactness costs", from the same run as kernel.md."""
+    names = {"exact": "exact", "gmp": "GMP", "flint": "FLINT", "mpfr128": "MPFR 128", "sisl": "SISL", "occt": "OCCT",
+             "fraction": "Python Fraction"}
+    cols = [a for a in names if any(k[1] == a for k in t)]
+    md = ["# What exactness costs", "",
+          "From one `scripts/run.sh bench` run: " + provenance, "",
+          "Three exact arithmetics compute the same values (every result equal, tests/exact/test_ffnet.cpp and "
+          "`splinex prove ff-agreement`): `exact`, the fraction-free kernel (integer homogeneous coordinates over one "
+          "denominator per point, integer knots over one denominator per knot vector, FLINT words that are plain "
+          "64-bit integers while they fit), and the two naive kernels, `GMP` (one mpq per coefficient) and `FLINT` "
+          "(one fmpq per coefficient), each field operation reduced on the spot. `MPFR 128` is a 128-bit float; SISL "
+          "and OpenCASCADE are double libraries; Python's `fractions.Fraction` runs the same insertion and evaluation "
+          "(scripts/bench_python.py). Each entry is that column's CPU time over splinex's double time for the same "
+          "operation and curve (below 1: faster than splinex in double).", ""]
+    for p in (3, 7):
+        cases = [op for op in ORDER if (op, "double", p, 1000) in t]
+        if not cases:
+            continue
+        md += [f"## Degree {p}, n = 1000: time / double", "",
+               "| operation | double (us) | " + " | ".join(names[a] for a in cols) + " |", "|---|---|" + "---|" * len(cols)]
+        for op in cases:
+            d = t[(op, "double", p, 1000)]
+            md.append(f"| {op} | {d * 1e6:.3g} | " + " | ".join(fmt(t[(op, a, p, 1000)] / d) if (op, a, p, 1000) in t else "-"
+                                                             for a in cols) + " |")
+        md.append("")
+    geo = defaultdict(list)
+    for (op, a, p, n), v in t.items():
+        d = t.get((op, "double", p, n))
+        if a != "double" and d:
+            geo[(op, a)].append(v / d)
+    span = sorted({(k[2], k[3]) for k in t if k[1] == "double"})
+    if span:
+        md += [f"## Every degree ({', '.join(map(str, sorted({p for p, _ in span})))}) and size "
+               f"({', '.join(map(str, sorted({n for _, n in span})))}): geometric mean of time / double, and the worst case",
+               "", "| operation | " + " | ".join(names[a] for a in cols) + " |", "|---|" + "---|" * len(cols)]
+        for op in [o for o in ORDER if any(k[0] == o for k in geo)]:
+            md.append(f"| {op} | " + " | ".join(
+                f"{math.exp(sum(map(math.log, geo[(op, a)])) / len(geo[(op, a)])):.3g} (worst {max(geo[(op, a)]):.3g})"
+                if geo.get((op, a)) else "-" for a in cols) + " |")
+        md.append("")
+    store = [a for a in ("double", "exact", "gmp", "flint") if any(k[1] == a and "bytes_per_coef" in v for k, v in mem.items())]
+    if store:
+        md += ["## Storage: bytes per stored value of the result, n = 10^4", "",
+               "The value itself and what it holds on the heap (allocator overhead not counted), over every coordinate, "
+               "weight and knot of the result; a double is 8.", "",
+               "| operation | p | " + " | ".join(names.get(a, a) for a in store) + " |", "|---|---|" + "---|" * len(store)]
+        for (op, p) in sorted({(k[0], k[2]) for k in mem if k[3] == 10000}, key=lambda k: (ORDER.index(k[0]), k[1])):
+            cells = [mem.get((op, a, p, 10000), {}).get("bytes_per_coef") for a in store]
+            if any(c is not None for c in cells):
+                md.append(f"| {op} | {p} | " + " | ".join(fmt(c) for c in cells) + " |")
+        md.append("")
+    for key, runs in higher.items():
+        rows = higher_rows(runs)
+        if not rows:
+            continue
+        others = sorted({a for _, _, r in rows for a in r}, key=HIGHER_ARITHS.index)
+        md += [f"## Above the kernel: {HIGHER_NAMES[key]}, time / double", "",
+               "| case | double (ms) | " + " | ".join(others) + " |", "|---|---|" + "---|" * len(others)]
+        for case, d, r in rows:
+            md.append(f"| {case} | {d * 1e3:.3g} | " + " | ".join(fmt(r.get(a)) for a in others) + " |")
+        md.append("")
+        if key in HIGHER_NOTES:
+            md += [HIGHER_NOTES[key], ""]
+    if not higher:
+        md += ["The higher levels (composition, the hybrid patch, the V-rep, the solver, cutting) were not part of this "
+               "run.", ""]
+    exact_targets = [r for r in target_rows if "/SISL" not in r[0] and "/OCCT" not in r[0] and r[2] != "no target"]
+    if exact_targets:
+        md += ["## Issue 49's targets in this run", "", "| target | measured | bound | verdict |", "|---|---|---|---|"] + \
+              [f"| {w} | {v} | {b} | {m} |" for w, v, b, m in exact_targets] + [""]
+    md.append("Every kernel case and the memory counters: bench/results/kernel.md.")
+    return md
 
 
 def main():
     args = sys.argv[1:]
     extra = {}
-    for flag in ("--compose", "--hybrid", "--vrep"):
+    for flag in ("--compose", "--hybrid", "--vrep", "--solve", "--cut"):
         if flag in args:
             i = args.index(flag)
             extra[flag] = load_runs(args[i + 1])
@@ -141,9 +260,9 @@ def main():
         op, arith, p, n = b["name"].split("/")[:4]
         scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
         t[(op, arith, int(p[1:]), int(n[1:]))] = b["cpu_time"] * scale
-        if "allocs" in b:
-            mem[(op, arith, int(p[1:]), int(n[1:]))] = {k: b[k] for k in ("allocs", "allocs_per_item", "heap_peak_kib",
-                                                                            "rss_peak_mib", "bytes_per_coef") if k in b}
+        counters = {k: b[k] for k in ("allocs", "allocs_per_item", "heap_peak_kib", "rss_peak_mib", "bytes_per_coef") if k in b}
+        if counters:
+            mem[(op, arith, int(p[1:]), int(n[1:]))] = counters
     # Runs before issue 49 named GMP "exact" and had no fraction-free kernel: read them so.
     if not any(k[1] == "gmp" for k in t):
         t = {(o, "gmp" if a == "exact" else a, p, n): v for (o, a, p, n), v in t.items()}
@@ -221,9 +340,10 @@ def main():
         md.append(f"| {r['op']} | {r['p']} | {r['n']} | {r['double_us']:.3g} | " +
                   " | ".join(f"{r[f'{a}/{b_}']:.3g}" if f"{a}/{b_}" in r else "-" for a, b_ in cols) + " |")
     # Memory: one more run of each case with the allocator counted (bench/memory_probe.hpp).
-    mem_ariths = [a for a in ("double", "exact", "gmp", "flint", "mpfr128", "sisl", "occt") if any(k[1] == a for k in mem)]
+    mem_ariths = [a for a in ("double", "exact", "gmp", "flint", "mpfr128", "sisl", "occt")
+                  if any(k[1] == a and "allocs" in v for k, v in mem.items())]
     mem_md = []
-    if mem:
+    if mem_ariths:
         md += ["", "## Memory of one operation", "",
                "Heap allocations of one operation (per evaluated point for eval) and the peak of its live heap above "
                "the level before it (KiB), counted by malloc/free interposed in the benchmark executable, so every "
@@ -233,7 +353,7 @@ def main():
                       " | ".join(f"{names[a]} heap KiB" for a in mem_ariths) + " | peak RSS MiB |")
         mem_md.append("|---|---|---|" + "---|" * (2 * len(mem_ariths) + 1))
         for (op, p, n) in sorted({(k[0], k[2], k[3]) for k in mem}, key=lambda k: (ORDER.index(k[0]), k[1], k[2])):
-            cells = [mem.get((op, a, p, n)) for a in mem_ariths]
+            cells = [mem.get((op, a, p, n)) if "allocs" in mem.get((op, a, p, n), {}) else None for a in mem_ariths]
             fmt_alloc = lambda c: "-" if c is None else f"{c['allocs_per_item']:.3g}"
             fmt_heap = lambda c: "-" if c is None else f"{c['heap_peak_kib']:.3g}"
             rss = max((c.get("rss_peak_mib", 0) for c in cells if c), default=0)
@@ -254,16 +374,26 @@ def main():
                                                                      for r in target_rows], "rows": rows},
               open(out / "kernel.json", "w"), indent=1)
     (out / "kernel.md").write_text("\n".join(md) + "\n")
+    higher = {flag[2:]: extra[flag] for flag in ("--compose", "--hybrid", "--vrep", "--solve", "--cut") if flag in extra}
+    cost = exactness(t, mem, higher, meta, md[2], target_rows)
+    (out / "exactness.md").write_text("\n".join(cost) + "\n")
     # The generated block of docs/speed.md: the summary table and where it was measured.
-    speed = Path(__file__).resolve().parent.parent / "docs" / "speed.md"
-    if speed.exists():
+    # (only for a run written into the repository's bench/results: a table made elsewhere, e.g. by a
+    # test, leaves the page alone)
+    root = Path(__file__).resolve().parent.parent
+    speed = root / "docs" / "speed.md"
+    if speed.exists() and out.resolve() == (root / "bench" / "results").resolve():
         text = speed.read_text()
         begin, end = "<!-- bench:kernel:begin -->", "<!-- bench:kernel:end -->"
         if begin in text and end in text:
             block = "\n".join([begin, md[2], ""] + md[4:8 + len(ops)] + [""] + target_md +
                                ["", "Every case: [bench/results/kernel.md](../bench/results/kernel.md).", end])
             text = text[:text.index(begin)] + block + text[text.index(end) + len(end):]
-            speed.write_text(text)
+        begin, end = "<!-- bench:exactness:begin -->", "<!-- bench:exactness:end -->"
+        if begin in text and end in text:  # the section without its title, headings one level down
+            block = "\n".join([begin] + ["#" + l if l.startswith("#") else l for l in cost[2:]] + [end])
+            text = text[:text.index(begin)] + block + text[text.index(end) + len(end):]
+        speed.write_text(text)
     print("\n".join(md[:8 + len(ops)] + [""] + target_md))
     return 0
 

@@ -7,7 +7,7 @@
 A block sits between `<!-- NAME:begin -->` and `<!-- NAME:end -->`; each is written by one command:
   report:sections   docs/papers.md   `splinex report --list-sections` (the sections' table in
                                      experiments/report.cpp: what each reproduces, its time)
-(docs/speed.md's bench:kernel block is written by scripts/bench_table.py from a benchmark run.)
+(docs/speed.md's bench:kernel and bench:exactness blocks are written by scripts/bench_table.py from a benchmark run.)
 """
 import difflib
 import re

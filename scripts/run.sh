@@ -3,10 +3,11 @@
 #   scripts/run.sh test      the default test suite through ctest (what CI runs)
 #   scripts/run.sh long [ctest flags]  the long label (hours: the full report, the proofs, the CLI
 #                            fuzzer, the Slurm test), e.g. scripts/run.sh long -R slurm
-#   scripts/run.sh report    the main job: build/bin/splinex report --out results
+#   scripts/run.sh report    the main job: build/bin/splinex report --out results (--bench bench/results)
 #   scripts/run.sh sanitize  the ASan+UBSan build and its test run
 #   scripts/run.sh fuzz [N]  the libFuzzer build (clang) and N executions (default 10^7)
-#   scripts/run.sh bench     every kernel benchmark, then the ratio table bench/results/kernel.md (+ .json)
+#   scripts/run.sh bench     every benchmark, then the ratio tables bench/results/kernel.md (+ .json) and
+#                            exactness.md (the report's "what exactness costs": splinex report --bench bench/results)
 #   scripts/run.sh peers     SciPy's, Octave NURBS's and OpenCASCADE's results judged by splinex verify:
 #                            results/peers/, then the report with them: results/report.md
 set -euo pipefail
@@ -48,7 +49,9 @@ case "$what" in
   report)
     cmake --preset default >&2
     cmake --build --preset default --target splinex
-    build/bin/splinex report --out results ;;
+    # What exactness costs: the committed tables of the last `scripts/run.sh bench` (dated inside).
+    bench=(); [[ -f bench/results/exactness.md ]] && bench=(--bench bench/results)
+    build/bin/splinex report --out results "${bench[@]}" ;;
   sanitize)
     cmake --preset sanitize >&2
     cmake --build --preset sanitize
@@ -72,7 +75,8 @@ case "$what" in
     build/bin/bench_solve --benchmark_out=build/bench_solve.json --benchmark_out_format=json >&2
     build/bin/bench_cut --benchmark_out=build/bench_cut.json --benchmark_out_format=json >&2
     python3 scripts/bench_table.py build/bench_kernel.json bench/results build/bench_python.json \
-      --compose build/bench_compose.json --hybrid build/bench_hybrid.json --vrep build/bench_vrep.json ;;
+      --compose build/bench_compose.json --hybrid build/bench_hybrid.json --vrep build/bench_vrep.json \
+      --solve build/bench_solve.json --cut build/bench_cut.json ;;
   peers)
     cmake --preset default >&2
     cmake --build --preset default --target splinex splinex_python occt_peer
