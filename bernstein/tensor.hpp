@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -167,6 +168,49 @@ void weighted_sums(const std::vector<const std::vector<T>*>& v, const std::vecto
         const T f = (*v[t])[i] * a[t];
         for (std::size_t c = 0; c < cols; ++c) out[i * cols + c] += f * b[t * cols + c];
       }
+  }
+}
+
+/// Whether T offers the fused product sums (spline/arith.hpp: ArithTraits<T>::product_sums).
+template <class T>
+concept FractionFreeProductSums = requires(const std::vector<const std::vector<T>*>& v, const std::vector<T>& s,
+                                           const std::vector<std::size_t>& o, std::vector<T>& out) {
+  ArithTraits<T>::product_sums(v, s, v, s, o, o, s, s, s, std::size_t{1}, out);
+};
+
+/// out[i*cols + c] += sum over t of h_t[i] a[t] b[t*cols + c] with h_t = bern_product(*f[t], *g[t]):
+/// composition's sum over the outer control points with its last product fused. Every f[t] has one
+/// degree vector and every g[t] one. In floating point it is bern_product, then weighted_sums (the
+/// same operations in the same order); an exact arithmetic may sum the products on integers without
+/// forming their coefficients (same values).
+template <class T>
+void product_sums(const std::vector<const Bernstein<T>*>& f, const std::vector<const Bernstein<T>*>& g, const std::vector<T>& a,
+                  const std::vector<T>& b, std::size_t cols, std::vector<T>& out) {
+  if (f.empty()) return;
+  if constexpr (FractionFreeProductSums<T>) {
+    const std::vector<int>&fd = f[0]->deg, &gd = g[0]->deg;
+    std::vector<int> hd(fd.size());
+    for (std::size_t l = 0; l < hd.size(); ++l) hd[l] = fd[l] + gd[l];
+    std::vector<const std::vector<T>*> fc, gc;
+    for (std::size_t t = 0; t < f.size(); ++t) {
+      if (f[t]->deg != fd || g[t]->deg != gd) throw std::logic_error("product_sums: factors of different degrees");
+      fc.push_back(&f[t]->c);
+      gc.push_back(&g[t]->c);
+    }
+    if (out.size() != detail::tensor_size(hd) * cols) throw std::logic_error("product_sums: out is not cols values per product coefficient");
+    const auto fbp = detail::cached_tensor_binomials<T>(fd), gbp = detail::cached_tensor_binomials<T>(gd),
+               hbp = detail::cached_tensor_binomials<T>(hd);
+    ArithTraits<T>::product_sums(fc, *fbp, gc, *gbp, detail::tensor_offsets(fd, hd), detail::tensor_offsets(gd, hd), *hbp, a, b,
+                                 cols, out);
+  } else {
+    std::vector<Bernstein<T>> h;
+    h.reserve(f.size());
+    std::vector<const std::vector<T>*> hc;
+    for (std::size_t t = 0; t < f.size(); ++t) {
+      h.push_back(bern_product(*f[t], *g[t]));
+      hc.push_back(&h.back().c);
+    }
+    weighted_sums(hc, a, b, cols, out);
   }
 }
 

@@ -201,28 +201,39 @@ Homogeneous<T> compose_bezier_homogeneous(const BSpline<T>& outer, const BSpline
     }
     /// Sum over the outer control points: prod_j basis[j][I_j] times (w_I C_I, w_I).
     /// In batches of at most 64 outer points (the terms of a batch are kept; the sum runs in the
-    /// order of the points, see weighted_sums).
+    /// order of the points, see weighted_sums). The last factor's product is fused into the sum
+    /// (product_sums: in exact arithmetic the products' coefficients are never formed).
     const std::size_t nt = outer.size(), batch = 64;
     std::vector<int> I(n);
-    std::vector<Bernstein<T>> terms;
+    std::vector<Bernstein<T>> heads;  // prod_{j < n-1} basis[j][I_j], for n >= 3
+    std::vector<const Bernstein<T>*> fp, gp;
     std::vector<const std::vector<T>*> tc;
     std::vector<T> w, P;  // weights; coordinates, then 1 for the weight
     for (std::size_t t0 = 0; t0 < nt; t0 += batch) {
       const std::size_t nb = std::min(batch, nt - t0);
-      terms.assign(nb, Bernstein<T>{});
+      heads.assign(n >= 3 ? nb : 0, Bernstein<T>{});
+      fp.assign(nb, nullptr);
+      gp.assign(nb, nullptr);
       tc.assign(nb, nullptr);
       w.assign(nb, T(1));
       P.assign(nb * qq, T(1));
       for (std::size_t b = 0; b < nb; ++b) {
         const std::size_t t = t0 + b;
         detail::unflatten(t, outer.degrees, I);
-        terms[b] = basis[0][I[0]];
-        for (int j = 1; j < n; ++j) terms[b] = bern_product(terms[b], basis[j][I[j]]);
-        tc[b] = &terms[b].c;
+        if (n >= 3) {
+          heads[b] = basis[0][I[0]];
+          for (int j = 1; j + 1 < n; ++j) heads[b] = bern_product(heads[b], basis[j][I[j]]);
+          fp[b] = &heads[b];
+        } else {
+          fp[b] = &basis[0][I[0]];
+        }
+        gp[b] = &basis[n - 1][I[n - 1]];
+        tc[b] = &basis[0][I[0]].c;
         if (outer.is_rational()) w[b] = outer.weights[t];
         for (std::size_t c = 0; c < q; ++c) P[b * qq + c] = outer.points[t * q + c];
       }
-      weighted_sums(tc, w, P, qq, H);
+      if (n == 1) weighted_sums(tc, w, P, qq, H);
+      else product_sums(fp, gp, w, P, qq, H);
     }
   } else {
     /// Exact values of the homogeneous composition at (D_l + 1) equispaced nodes per direction.

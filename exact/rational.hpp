@@ -54,6 +54,12 @@ struct ArithTraits<Rational> {
   /// Sums of weighted vectors on integers (spline/arith.hpp; exact/rational_bernstein.cpp).
   static void weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
                             const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out);
+  /// Composition's outer sum with its last Bernstein product fused, on integers (spline/arith.hpp).
+  static void product_sums(const std::vector<const std::vector<Rational>*>& f, const std::vector<Rational>& fb,
+                           const std::vector<const std::vector<Rational>*>& g, const std::vector<Rational>& gb,
+                           const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
+                           const std::vector<Rational>& hb, const std::vector<Rational>& a, const std::vector<Rational>& b,
+                           std::size_t cols, std::vector<Rational>& out);
   /// de Casteljau at t on every line of one direction, on integers (spline/arith.hpp).
   static void de_casteljau(const std::vector<Rational>& c, std::size_t stride, int p, const Rational& t,
                            std::vector<Rational>* left, std::vector<Rational>* right);

@@ -87,23 +87,26 @@ void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, cons
   }
 }
 
-void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
-                                         const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
-  const std::size_t nt = v.size(), len = out.size() / cols;
-  // Each v[t] as integers V_t over its own denominator D_t.
-  ZArray V(nt * len), D(nt), num(nt), den(nt), Acc(len);
-  for (std::size_t t = 0; t < nt; ++t) onto_common(*v[t], nullptr, V.p + t * len, D.p + t);
-  Zt L, f, g;
+namespace {
+
+/// out[i*cols + c] += sum over t of (V_t[i] / (D_t hbn[i])) a[t] b[t*cols + c], with V the nt
+/// arrays of len integers, D their denominators and hbn the per-coefficient divisors (positive
+/// integers; none: 1): per column, the terms over their lcm, integer sums, and one reduction per
+/// coefficient of out, which may hold a running sum.
+void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len, const fmpz* hbn, const std::vector<Rational>& a,
+                  const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
+  ZArray num(nt), den(nt), Acc(len);
+  Zt L, f, g, e;
   Rational s;
   for (std::size_t c = 0; c < cols; ++c) {
     // s_t = a_t b_tc = n_t / d_t; column c's denominator L = lcm_t (d_t D_t) over s_t != 0;
-    // out[i][c] = sum_t n_t (L / (d_t D_t)) V_t[i] / L.
+    // out[i][c] = sum_t n_t (L / (d_t D_t)) V_t[i] / (L hbn[i]).
     fmpz_one(L.v);
     for (std::size_t t = 0; t < nt; ++t) {
       s = a[t] * b[t * cols + c];
       fmpz_set_mpz(num.p + t, mpq_numref(raw(s)));
       fmpz_set_mpz(den.p + t, mpq_denref(raw(s)));
-      fmpz_mul(den.p + t, den.p + t, D.p + t);
+      fmpz_mul(den.p + t, den.p + t, D + t);
       if (!fmpz_is_zero(num.p + t) && !fmpz_divisible(L.v, den.p + t)) fmpz_lcm(L.v, L.v, den.p + t);
     }
     _fmpz_vec_zero(Acc.p, static_cast<slong>(len));
@@ -111,19 +114,22 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
       if (fmpz_is_zero(num.p + t)) continue;
       fmpz_divexact(f.v, L.v, den.p + t);
       fmpz_mul(f.v, f.v, num.p + t);
-      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V.p + t * len, static_cast<slong>(len), f.v);
+      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V + t * len, static_cast<slong>(len), f.v);
     }
     for (std::size_t i = 0; i < len; ++i) {
+      // e = L hbn[i], the denominator of Acc[i]
+      if (hbn) fmpz_mul(e.v, L.v, hbn + i);
+      else fmpz_set(e.v, L.v);
       __mpq_struct* q = out[i * cols + c].backend().data();
-      if (mpq_sgn(q) != 0) {  // out += Acc / L, on integers: (o_n L + Acc o_d) / (o_d L)
+      if (mpq_sgn(q) != 0) {  // out += Acc / e, on integers: (o_n e + Acc o_d) / (o_d e)
         fmpz_set_mpz(f.v, mpq_denref(q));
         fmpz_mul(Acc.p + i, Acc.p + i, f.v);
         fmpz_set_mpz(f.v, mpq_numref(q));
-        fmpz_addmul(Acc.p + i, f.v, L.v);
+        fmpz_addmul(Acc.p + i, f.v, e.v);
         fmpz_set_mpz(f.v, mpq_denref(q));
-        fmpz_mul(f.v, f.v, L.v);
+        fmpz_mul(f.v, f.v, e.v);
       } else {
-        fmpz_set(f.v, L.v);
+        fmpz_set(f.v, e.v);
       }
       // Acc / f in lowest terms (f > 0).
       fmpz_gcd(g.v, Acc.p + i, f.v);
@@ -133,6 +139,45 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
       fmpz_get_mpz(mpq_denref(q), f.v);
     }
   }
+}
+
+}  // namespace
+
+void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Rational>*>& v, const std::vector<Rational>& a,
+                                         const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
+  const std::size_t nt = v.size(), len = out.size() / cols;
+  // Each v[t] as integers V_t over its own denominator D_t.
+  ZArray V(nt * len), D(nt);
+  for (std::size_t t = 0; t < nt; ++t) onto_common(*v[t], nullptr, V.p + t * len, D.p + t);
+  integer_sums(V.p, D.p, nt, len, nullptr, a, b, cols, out);
+}
+
+void ArithTraits<Rational>::product_sums(const std::vector<const std::vector<Rational>*>& f, const std::vector<Rational>& fb,
+                                        const std::vector<const std::vector<Rational>*>& g, const std::vector<Rational>& gb,
+                                        const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
+                                        const std::vector<Rational>& hb, const std::vector<Rational>& a,
+                                        const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
+  const std::size_t nt = f.size(), len = out.size() / cols;
+  if (nt == 0) return;
+  const std::size_t nf = f[0]->size(), ng = g[0]->size();
+  // Each product h_t = f_t g_t as integers V_t over D_t = Df_t Dg_t times hb: the convolution of
+  // tensor_convolve, not reduced; the sums reduce once per coefficient of out.
+  ZArray V(nt * len), D(nt), F(nf), G(ng), H(len);
+  Zt Dg;
+  for (std::size_t t = 0; t < nt; ++t) {
+    _fmpz_vec_zero(F.p, static_cast<slong>(nf));  // onto_common leaves a zero coefficient's slot alone
+    _fmpz_vec_zero(G.p, static_cast<slong>(ng));
+    onto_common(*f[t], &fb, F.p, D.p + t);
+    onto_common(*g[t], &gb, G.p, Dg.v);
+    fmpz* Vt = V.p + t * len;
+    for (std::size_t x = 0; x < nf; ++x) {
+      if (fmpz_is_zero(F.p + x)) continue;
+      for (std::size_t y = 0; y < ng; ++y) fmpz_addmul(Vt + fo[x] + go[y], F.p + x, G.p + y);
+    }
+    fmpz_mul(D.p + t, D.p + t, Dg.v);
+  }
+  for (std::size_t i = 0; i < len; ++i) fmpz_set_mpz(H.p + i, mpq_numref(raw(hb[i])));  // positive integers
+  integer_sums(V.p, D.p, nt, len, H.p, a, b, cols, out);
 }
 
 namespace {

@@ -14,9 +14,9 @@
 //   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
-// An exact arithmetic may also offer, optionally, four inner loops of bernstein/tensor.hpp done
-// fraction-free (bern_product, composition's weighted_sums, bern_split and bern_value use them
-// when present; the values are the same, only the gcds per term are gone):
+// An exact arithmetic may also offer, optionally, five inner loops of bernstein/tensor.hpp done
+// fraction-free (bern_product, composition's weighted_sums and product_sums, bern_split and
+// bern_value use them when present; the values are the same, only the gcds per term are gone):
 //   static void tensor_convolve(const std::vector<T>& f, const std::vector<T>& fb,
 //                               const std::vector<T>& g, const std::vector<T>& gb,
 //                               const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
@@ -27,6 +27,14 @@
 //                             const std::vector<T>& b, std::size_t cols, std::vector<T>& out);
 //     // out[i*cols + c] += sum over t of v[t][i] a[t] b[t*cols + c] (composition's sum over the
 //     // outer control points); out has its final size.
+//   static void product_sums(const std::vector<const std::vector<T>*>& f, const std::vector<T>& fb,
+//                            const std::vector<const std::vector<T>*>& g, const std::vector<T>& gb,
+//                            const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
+//                            const std::vector<T>& hb, const std::vector<T>& a, const std::vector<T>& b,
+//                            std::size_t cols, std::vector<T>& out);
+//     // weighted_sums of the products h_t = f[t] g[t] (each as tensor_convolve makes it, every f[t]
+//     // and every g[t] of one size): out[i*cols + c] += sum over t of h_t[i] a[t] b[t*cols + c],
+//     // without forming the h_t as values of T.
 //   static void de_casteljau(const std::vector<T>& c, std::size_t stride, int p, const T& t,
 //                            std::vector<T>* left, std::vector<T>* right);
 //     // every line of one direction (values c[base + i*stride], i = 0..p, base over the blocks of

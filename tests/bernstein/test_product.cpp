@@ -151,6 +151,75 @@ TEST_CASE("weighted_sums: the integer sums equal the per-term route, added to wh
   }
 }
 
+TEST_CASE("product_sums: the fused products and sums equal the products summed term by term, and FLINT's route") {
+  std::mt19937_64 rng(49153);
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::size_t dim = 1 + rng() % 2, nt = 1 + rng() % 20, cols = 1 + rng() % 4;
+    std::vector<int> fd(dim), gd(dim), hd(dim);
+    for (std::size_t l = 0; l < dim; ++l) {
+      fd[l] = static_cast<int>(rng() % 5);
+      gd[l] = static_cast<int>(rng() % 5);
+      hd[l] = fd[l] + gd[l];
+    }
+    const std::size_t len = detail::tensor_size(hd);
+    std::vector<Bernstein<Rational>> f, g;
+    for (std::size_t t = 0; t < nt; ++t) {
+      f.push_back(random_poly(rng, fd));
+      g.push_back(random_poly(rng, gd));
+    }
+    std::vector<Rational> a(nt), b(nt * cols), out(len * cols);
+    for (auto& x : a) x = coefficient(rng);
+    for (auto& x : b) x = coefficient(rng);
+    for (auto& x : out) x = rng() % 2 ? coefficient(rng) : Rational(0);  // a running sum, or none
+    // The reference: each product (proved by identity in the first test case), then the plain sum.
+    std::vector<Rational> want = out;
+    for (std::size_t t = 0; t < nt; ++t) {
+      const Bernstein<Rational> h = bern_product(f[t], g[t]);
+      REQUIRE(product_identity(f[t], g[t], h));
+      for (std::size_t i = 0; i < len; ++i)
+        for (std::size_t c = 0; c < cols; ++c) want[i * cols + c] += h.c[i] * a[t] * b[t * cols + c];
+    }
+    std::vector<const Bernstein<Rational>*> pf, pg;
+    for (std::size_t t = 0; t < nt; ++t) {
+      pf.push_back(&f[t]);
+      pg.push_back(&g[t]);
+    }
+    std::vector<Rational> got = out;
+    product_sums(pf, pg, a, b, cols, got);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      REQUIRE(got[i] == want[i]);
+      REQUIRE(canonical(got[i]));
+    }
+    // FLINT's rationals take the generic route (bern_product, then weighted_sums): the same values.
+    std::vector<Bernstein<FlintRational>> ff, fg;
+    for (std::size_t t = 0; t < nt; ++t) {
+      Bernstein<FlintRational> x{fd, {}}, y{gd, {}};
+      for (const auto& c : f[t].c) x.c.emplace_back(c);
+      for (const auto& c : g[t].c) y.c.emplace_back(c);
+      ff.push_back(std::move(x));
+      fg.push_back(std::move(y));
+    }
+    std::vector<const Bernstein<FlintRational>*> qf, qg;
+    for (std::size_t t = 0; t < nt; ++t) {
+      qf.push_back(&ff[t]);
+      qg.push_back(&fg[t]);
+    }
+    std::vector<FlintRational> fa, fb, fout;
+    for (const auto& x : a) fa.emplace_back(x);
+    for (const auto& x : b) fb.emplace_back(x);
+    for (const auto& x : out) fout.emplace_back(x);
+    product_sums(qf, qg, fa, fb, cols, fout);
+    for (std::size_t i = 0; i < got.size(); ++i) REQUIRE(fout[i].to_rational() == got[i]);
+  }
+  // One product alone, weights 1: exactly the product's coefficients.
+  std::vector<int> d{2};
+  Bernstein<Rational> f{d, {Rational(1), Rational(2, 3), Rational(-5, 7)}}, g{d, {Rational(3), Rational(0), Rational(1, 9)}};
+  std::vector<const Bernstein<Rational>*> pf{&f}, pg{&g};
+  std::vector<Rational> one{Rational(1)}, got(5, Rational(0));
+  product_sums(pf, pg, one, one, 1, got);
+  REQUIRE(got == bern_product(f, g).c);
+}
+
 namespace {
 
 Bernstein<FlintRational> to_flint(const Bernstein<Rational>& b) {
