@@ -12,37 +12,23 @@
 
 #include <vector>
 
+#include "exact/ff_int.hpp"
+#include "exact/ffnet.hpp"
 #include "exact/rational.hpp"
 
 namespace splinex {
 
 namespace {
 
-/// An owned FLINT integer.
-struct Zt {
-  fmpz_t v;
-  Zt() { fmpz_init(v); }
-  Zt(const Zt&) = delete;
-  Zt& operator=(const Zt&) = delete;
-  ~Zt() { fmpz_clear(v); }
-};
-
-/// An owned array of FLINT integers.
-struct ZArray {
-  fmpz* p;
-  std::size_t n;
-  explicit ZArray(std::size_t size) : p(_fmpz_vec_init(static_cast<slong>(size == 0 ? 1 : size))), n(size == 0 ? 1 : size) {}
-  ZArray(const ZArray&) = delete;
-  ZArray& operator=(const ZArray&) = delete;
-  ~ZArray() { _fmpz_vec_clear(p, static_cast<slong>(n)); }
-};
+using ff::detail::Z;  // an owned FLINT integer (exact/ff_int.hpp)
+using ff::ZVec;       // an owned array of FLINT integers, zero at the start (exact/ffnet.hpp)
 
 const __mpq_struct* raw(const Rational& x) { return x.backend().data(); }
 
 /// out[a] = x[a] * mult[a] over one denominator D (returned in D): the lcm of the denominators.
 /// No `mult`: every multiplier is 1.
 void onto_common(const std::vector<Rational>& x, const std::vector<Rational>* mult, fmpz* out, fmpz_t D) {
-  Zt t;
+  Z t;
   fmpz_one(D);
   for (const Rational& v : x) {
     fmpz_set_mpz(t.v, mpq_denref(raw(v)));
@@ -66,23 +52,23 @@ void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, cons
                                             const std::vector<Rational>& g, const std::vector<Rational>& gb,
                                             const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
                                             const std::vector<Rational>& hb, std::vector<Rational>& h) {
-  ZArray A(f.size()), B(g.size()), H(h.size());
-  Zt Df, Dg, t;
-  onto_common(f, &fb, A.p, Df.v);
-  onto_common(g, &gb, B.p, Dg.v);
+  ZVec A(f.size()), B(g.size()), H(h.size());
+  Z Df, Dg, t;
+  onto_common(f, &fb, A.data(), Df.v);
+  onto_common(g, &gb, B.data(), Dg.v);
   for (std::size_t a = 0; a < f.size(); ++a) {
-    if (fmpz_is_zero(A.p + a)) continue;
-    for (std::size_t b = 0; b < g.size(); ++b) fmpz_addmul(H.p + fo[a] + go[b], A.p + a, B.p + b);
+    if (fmpz_is_zero(A.data() + a)) continue;
+    for (std::size_t b = 0; b < g.size(); ++b) fmpz_addmul(H.data() + fo[a] + go[b], A.data() + a, B.data() + b);
   }
   fmpz_mul(Df.v, Df.v, Dg.v);  // the product's common denominator, before the binomials
   for (std::size_t i = 0; i < h.size(); ++i) {
     fmpz_set_mpz(t.v, mpq_numref(raw(hb[i])));
     fmpz_mul(t.v, t.v, Df.v);
-    fmpz_gcd(Dg.v, H.p + i, t.v);  // reduce in integers; the sign stays with the numerator
-    fmpz_divexact(H.p + i, H.p + i, Dg.v);
+    fmpz_gcd(Dg.v, H.data() + i, t.v);  // reduce in integers; the sign stays with the numerator
+    fmpz_divexact(H.data() + i, H.data() + i, Dg.v);
     fmpz_divexact(t.v, t.v, Dg.v);
     __mpq_struct* q = h[i].backend().data();
-    fmpz_get_mpz(mpq_numref(q), H.p + i);
+    fmpz_get_mpz(mpq_numref(q), H.data() + i);
     fmpz_get_mpz(mpq_denref(q), t.v);
   }
 }
@@ -95,8 +81,8 @@ namespace {
 /// coefficient of out, which may hold a running sum.
 void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len, const fmpz* hbn, const std::vector<Rational>& a,
                   const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
-  ZArray num(nt), den(nt), Acc(len);
-  Zt L, f, g, e;
+  ZVec num(nt), den(nt), Acc(len);
+  Z L, f, g, e;
   Rational s;
   for (std::size_t c = 0; c < cols; ++c) {
     // s_t = a_t b_tc = n_t / d_t; column c's denominator L = lcm_t (d_t D_t) over s_t != 0;
@@ -104,17 +90,17 @@ void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len,
     fmpz_one(L.v);
     for (std::size_t t = 0; t < nt; ++t) {
       s = a[t] * b[t * cols + c];
-      fmpz_set_mpz(num.p + t, mpq_numref(raw(s)));
-      fmpz_set_mpz(den.p + t, mpq_denref(raw(s)));
-      fmpz_mul(den.p + t, den.p + t, D + t);
-      if (!fmpz_is_zero(num.p + t) && !fmpz_divisible(L.v, den.p + t)) fmpz_lcm(L.v, L.v, den.p + t);
+      fmpz_set_mpz(num.data() + t, mpq_numref(raw(s)));
+      fmpz_set_mpz(den.data() + t, mpq_denref(raw(s)));
+      fmpz_mul(den.data() + t, den.data() + t, D + t);
+      if (!fmpz_is_zero(num.data() + t) && !fmpz_divisible(L.v, den.data() + t)) fmpz_lcm(L.v, L.v, den.data() + t);
     }
-    _fmpz_vec_zero(Acc.p, static_cast<slong>(len));
+    _fmpz_vec_zero(Acc.data(), static_cast<slong>(len));
     for (std::size_t t = 0; t < nt; ++t) {
-      if (fmpz_is_zero(num.p + t)) continue;
-      fmpz_divexact(f.v, L.v, den.p + t);
-      fmpz_mul(f.v, f.v, num.p + t);
-      _fmpz_vec_scalar_addmul_fmpz(Acc.p, V + t * len, static_cast<slong>(len), f.v);
+      if (fmpz_is_zero(num.data() + t)) continue;
+      fmpz_divexact(f.v, L.v, den.data() + t);
+      fmpz_mul(f.v, f.v, num.data() + t);
+      _fmpz_vec_scalar_addmul_fmpz(Acc.data(), V + t * len, static_cast<slong>(len), f.v);
     }
     for (std::size_t i = 0; i < len; ++i) {
       // e = L hbn[i], the denominator of Acc[i]
@@ -123,19 +109,19 @@ void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len,
       __mpq_struct* q = out[i * cols + c].backend().data();
       if (mpq_sgn(q) != 0) {  // out += Acc / e, on integers: (o_n e + Acc o_d) / (o_d e)
         fmpz_set_mpz(f.v, mpq_denref(q));
-        fmpz_mul(Acc.p + i, Acc.p + i, f.v);
+        fmpz_mul(Acc.data() + i, Acc.data() + i, f.v);
         fmpz_set_mpz(f.v, mpq_numref(q));
-        fmpz_addmul(Acc.p + i, f.v, e.v);
+        fmpz_addmul(Acc.data() + i, f.v, e.v);
         fmpz_set_mpz(f.v, mpq_denref(q));
         fmpz_mul(f.v, f.v, e.v);
       } else {
         fmpz_set(f.v, e.v);
       }
       // Acc / f in lowest terms (f > 0).
-      fmpz_gcd(g.v, Acc.p + i, f.v);
-      fmpz_divexact(Acc.p + i, Acc.p + i, g.v);
+      fmpz_gcd(g.v, Acc.data() + i, f.v);
+      fmpz_divexact(Acc.data() + i, Acc.data() + i, g.v);
       fmpz_divexact(f.v, f.v, g.v);
-      fmpz_get_mpz(mpq_numref(q), Acc.p + i);
+      fmpz_get_mpz(mpq_numref(q), Acc.data() + i);
       fmpz_get_mpz(mpq_denref(q), f.v);
     }
   }
@@ -147,9 +133,9 @@ void ArithTraits<Rational>::weighted_sums(const std::vector<const std::vector<Ra
                                          const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
   const std::size_t nt = v.size(), len = out.size() / cols;
   // Each v[t] as integers V_t over its own denominator D_t.
-  ZArray V(nt * len), D(nt);
-  for (std::size_t t = 0; t < nt; ++t) onto_common(*v[t], nullptr, V.p + t * len, D.p + t);
-  integer_sums(V.p, D.p, nt, len, nullptr, a, b, cols, out);
+  ZVec V(nt * len), D(nt);
+  for (std::size_t t = 0; t < nt; ++t) onto_common(*v[t], nullptr, V.data() + t * len, D.data() + t);
+  integer_sums(V.data(), D.data(), nt, len, nullptr, a, b, cols, out);
 }
 
 void ArithTraits<Rational>::product_sums(const std::vector<const std::vector<Rational>*>& f, const std::vector<Rational>& fb,
@@ -162,22 +148,22 @@ void ArithTraits<Rational>::product_sums(const std::vector<const std::vector<Rat
   const std::size_t nf = f[0]->size(), ng = g[0]->size();
   // Each product h_t = f_t g_t as integers V_t over D_t = Df_t Dg_t times hb: the convolution of
   // tensor_convolve, not reduced; the sums reduce once per coefficient of out.
-  ZArray V(nt * len), D(nt), F(nf), G(ng), H(len);
-  Zt Dg;
+  ZVec V(nt * len), D(nt), F(nf), G(ng), H(len);
+  Z Dg;
   for (std::size_t t = 0; t < nt; ++t) {
-    _fmpz_vec_zero(F.p, static_cast<slong>(nf));  // onto_common leaves a zero coefficient's slot alone
-    _fmpz_vec_zero(G.p, static_cast<slong>(ng));
-    onto_common(*f[t], &fb, F.p, D.p + t);
-    onto_common(*g[t], &gb, G.p, Dg.v);
-    fmpz* Vt = V.p + t * len;
+    _fmpz_vec_zero(F.data(), static_cast<slong>(nf));  // onto_common leaves a zero coefficient's slot alone
+    _fmpz_vec_zero(G.data(), static_cast<slong>(ng));
+    onto_common(*f[t], &fb, F.data(), D.data() + t);
+    onto_common(*g[t], &gb, G.data(), Dg.v);
+    fmpz* Vt = V.data() + t * len;
     for (std::size_t x = 0; x < nf; ++x) {
-      if (fmpz_is_zero(F.p + x)) continue;
-      for (std::size_t y = 0; y < ng; ++y) fmpz_addmul(Vt + fo[x] + go[y], F.p + x, G.p + y);
+      if (fmpz_is_zero(F.data() + x)) continue;
+      for (std::size_t y = 0; y < ng; ++y) fmpz_addmul(Vt + fo[x] + go[y], F.data() + x, G.data() + y);
     }
-    fmpz_mul(D.p + t, D.p + t, Dg.v);
+    fmpz_mul(D.data() + t, D.data() + t, Dg.v);
   }
-  for (std::size_t i = 0; i < len; ++i) fmpz_set_mpz(H.p + i, mpq_numref(raw(hb[i])));  // positive integers
-  integer_sums(V.p, D.p, nt, len, H.p, a, b, cols, out);
+  for (std::size_t i = 0; i < len; ++i) fmpz_set_mpz(H.data() + i, mpq_numref(raw(hb[i])));  // positive integers
+  integer_sums(V.data(), D.data(), nt, len, H.data(), a, b, cols, out);
 }
 
 namespace {
@@ -189,7 +175,7 @@ void parts(const Rational& t, fmpz_t a, fmpz_t b) {
 }
 
 /// q := n / d in lowest terms (d > 0); n is left divided by the gcd, d untouched.
-void store(fmpz* n, const fmpz* d, Zt& g, Zt& dd, Rational& q) {
+void store(fmpz* n, const fmpz* d, Z& g, Z& dd, Rational& q) {
   fmpz_gcd(g.v, n, d);
   __mpq_struct* r = q.backend().data();
   if (fmpz_is_one(g.v)) {
@@ -208,34 +194,34 @@ void store(fmpz* n, const fmpz* d, Zt& g, Zt& dd, Rational& q) {
 void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::size_t stride, int p, const Rational& t,
                                          std::vector<Rational>* left, std::vector<Rational>* right) {
   const std::size_t n = c.size(), block = stride * (static_cast<std::size_t>(p) + 1);
-  ZArray C(n), w(static_cast<std::size_t>(p) + 1), den(static_cast<std::size_t>(p) + 1);
-  Zt D, a, b, s, g, dd, x;
-  onto_common(c, nullptr, C.p, D.v);
+  ZVec C(n), w(static_cast<std::size_t>(p) + 1), den(static_cast<std::size_t>(p) + 1);
+  Z D, a, b, s, g, dd, x;
+  onto_common(c, nullptr, C.data(), D.v);
   parts(t, a.v, b.v);
   fmpz_sub(s.v, b.v, a.v);  // 1 - t = s / b
   const bool half = fmpz_is_one(a.v) && fmpz_equal_si(b.v, 2);
   // Level r of the triangle holds integers over D b^r.
-  fmpz_set(den.p, D.v);
-  for (int r = 1; r <= p; ++r) fmpz_mul(den.p + r, den.p + r - 1, b.v);
+  fmpz_set(den.data(), D.v);
+  for (int r = 1; r <= p; ++r) fmpz_mul(den.data() + r, den.data() + r - 1, b.v);
   for (std::size_t hi = 0; hi < n; hi += block)
     for (std::size_t lo = 0; lo < stride; ++lo) {
       const std::size_t base = hi + lo;
-      for (int i = 0; i <= p; ++i) fmpz_set(w.p + i, C.p + base + static_cast<std::size_t>(i) * stride);
+      for (int i = 0; i <= p; ++i) fmpz_set(w.data() + i, C.data() + base + static_cast<std::size_t>(i) * stride);
       for (int r = 0; r <= p; ++r) {
         if (left) {
-          fmpz_set(x.v, w.p);  // a copy: store divides it
-          store(x.v, den.p + r, g, dd, (*left)[base + static_cast<std::size_t>(r) * stride]);
+          fmpz_set(x.v, w.data());  // a copy: store divides it
+          store(x.v, den.data() + r, g, dd, (*left)[base + static_cast<std::size_t>(r) * stride]);
         }
         if (right) {
-          fmpz_set(x.v, w.p + p - r);
-          store(x.v, den.p + r, g, dd, (*right)[base + static_cast<std::size_t>(p - r) * stride]);
+          fmpz_set(x.v, w.data() + p - r);
+          store(x.v, den.data() + r, g, dd, (*right)[base + static_cast<std::size_t>(p - r) * stride]);
         }
         if (half)
-          for (int i = 0; i < p - r; ++i) fmpz_add(w.p + i, w.p + i, w.p + i + 1);
+          for (int i = 0; i < p - r; ++i) fmpz_add(w.data() + i, w.data() + i, w.data() + i + 1);
         else
           for (int i = 0; i < p - r; ++i) {
-            fmpz_mul(w.p + i, w.p + i, s.v);
-            fmpz_addmul(w.p + i, w.p + i + 1, a.v);
+            fmpz_mul(w.data() + i, w.data() + i, s.v);
+            fmpz_addmul(w.data() + i, w.data() + i + 1, a.v);
           }
       }
     }
@@ -247,28 +233,28 @@ Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, con
   // Direction by direction on integers: after direction l the values are integers over
   // D b_0^p_0 ... b_l^p_l (x_l = a_l / b_l), so one reduction at the end.
   std::size_t n = c.size();
-  ZArray C(n);
-  Zt D, a, b, s, g, dd;
-  onto_common(c, nullptr, C.p, D.v);
+  ZVec C(n);
+  Z D, a, b, s, g, dd;
+  onto_common(c, nullptr, C.data(), D.v);
   for (std::size_t l = 0; l < deg.size(); ++l) {
     const int p = deg[l];
     const std::size_t lines = n / (static_cast<std::size_t>(p) + 1);
     parts(x[l], a.v, b.v);
     fmpz_sub(s.v, b.v, a.v);
     for (std::size_t line = 0; line < lines; ++line) {
-      fmpz* w = C.p + line * (static_cast<std::size_t>(p) + 1);
+      fmpz* w = C.data() + line * (static_cast<std::size_t>(p) + 1);
       for (int r = p; r > 0; --r)
         for (int i = 0; i < r; ++i) {
           fmpz_mul(w + i, w + i, s.v);
           fmpz_addmul(w + i, w + i + 1, a.v);
         }
-      fmpz_swap(C.p + line, w);  // the line's value moves to slot `line` (line <= its start)
+      fmpz_swap(C.data() + line, w);  // the line's value moves to slot `line` (line <= its start)
     }
     for (int r = 0; r < p; ++r) fmpz_mul(D.v, D.v, b.v);
     n = lines;
   }
   Rational out;
-  store(C.p, D.v, g, dd, out);
+  store(C.data(), D.v, g, dd, out);
   return out;
 }
 
