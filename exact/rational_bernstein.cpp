@@ -1,6 +1,7 @@
 // ArithTraits<Rational>'s integer loops (spline/arith.hpp): the Bernstein product
-// (tensor_convolve), composition's sum over the outer control points (weighted_sums), and de
-// Casteljau's algorithm for splits and values (de_casteljau, tensor_value) of bernstein/tensor.hpp.
+// (tensor_convolve), composition's sum over the outer control points (weighted_sums, and
+// product_sums with the sum's last product fused), and de Casteljau's algorithm for splits and
+// values (de_casteljau, tensor_value) of bernstein/tensor.hpp.
 // Each operand's coefficients are brought onto one
 // denominator (the lcm of theirs), the convolution is a sum of integer products (FLINT words:
 // 64-bit values stay inline, longer ones go to GMP), and each coefficient of the product is made
@@ -35,7 +36,10 @@ void onto_common(const std::vector<Rational>& x, const std::vector<Rational>* mu
     if (!fmpz_divisible(D, t.v)) fmpz_lcm(D, D, t.v);
   }
   for (std::size_t a = 0; a < x.size(); ++a) {
-    if (mpq_sgn(raw(x[a])) == 0) continue;  // out[a] stays 0
+    if (mpq_sgn(raw(x[a])) == 0) {
+      fmpz_zero(out + a);
+      continue;
+    }
     fmpz_set_mpz(t.v, mpq_denref(raw(x[a])));
     fmpz_divexact(t.v, D, t.v);
     fmpz_set_mpz(out + a, mpq_numref(raw(x[a])));
@@ -46,6 +50,37 @@ void onto_common(const std::vector<Rational>& x, const std::vector<Rational>* mu
   }
 }
 
+/// H[fo[x] + go[y]] += F[x] G[y] over every x < nf, y < ng: the Bernstein product's convolution
+/// on the binomial-scaled integers (bern_product's offsets fo, go into the product's tensor).
+void convolve(const fmpz* F, std::size_t nf, const fmpz* G, std::size_t ng, const std::vector<std::size_t>& fo,
+              const std::vector<std::size_t>& go, fmpz* H) {
+  for (std::size_t x = 0; x < nf; ++x) {
+    if (fmpz_is_zero(F + x)) continue;
+    for (std::size_t y = 0; y < ng; ++y) fmpz_addmul(H + fo[x] + go[y], F + x, G + y);
+  }
+}
+
+/// t = a / b with b > 0 (canonical mpq parts as FLINT integers).
+void parts(const Rational& t, fmpz_t a, fmpz_t b) {
+  fmpz_set_mpz(a, mpq_numref(raw(t)));
+  fmpz_set_mpz(b, mpq_denref(raw(t)));
+}
+
+/// q := n / d in lowest terms (d > 0); n is left divided by the gcd, d untouched.
+void store(fmpz* n, const fmpz* d, Z& g, Z& dd, Rational& q) {
+  fmpz_gcd(g.v, n, d);
+  __mpq_struct* r = q.backend().data();
+  if (fmpz_is_one(g.v)) {
+    fmpz_get_mpz(mpq_numref(r), n);
+    fmpz_get_mpz(mpq_denref(r), d);
+    return;
+  }
+  fmpz_divexact(n, n, g.v);
+  fmpz_divexact(dd.v, d, g.v);
+  fmpz_get_mpz(mpq_numref(r), n);
+  fmpz_get_mpz(mpq_denref(r), dd.v);
+}
+
 }  // namespace
 
 void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, const std::vector<Rational>& fb,
@@ -53,23 +88,15 @@ void ArithTraits<Rational>::tensor_convolve(const std::vector<Rational>& f, cons
                                             const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
                                             const std::vector<Rational>& hb, std::vector<Rational>& h) {
   ZVec A(f.size()), B(g.size()), H(h.size());
-  Z Df, Dg, t;
+  Z Df, Dg, t, gcd, dd;
   onto_common(f, &fb, A.data(), Df.v);
   onto_common(g, &gb, B.data(), Dg.v);
-  for (std::size_t a = 0; a < f.size(); ++a) {
-    if (fmpz_is_zero(A.data() + a)) continue;
-    for (std::size_t b = 0; b < g.size(); ++b) fmpz_addmul(H.data() + fo[a] + go[b], A.data() + a, B.data() + b);
-  }
+  convolve(A.data(), f.size(), B.data(), g.size(), fo, go, H.data());
   fmpz_mul(Df.v, Df.v, Dg.v);  // the product's common denominator, before the binomials
   for (std::size_t i = 0; i < h.size(); ++i) {
     fmpz_set_mpz(t.v, mpq_numref(raw(hb[i])));
     fmpz_mul(t.v, t.v, Df.v);
-    fmpz_gcd(Dg.v, H.data() + i, t.v);  // reduce in integers; the sign stays with the numerator
-    fmpz_divexact(H.data() + i, H.data() + i, Dg.v);
-    fmpz_divexact(t.v, t.v, Dg.v);
-    __mpq_struct* q = h[i].backend().data();
-    fmpz_get_mpz(mpq_numref(q), H.data() + i);
-    fmpz_get_mpz(mpq_denref(q), t.v);
+    store(H.data() + i, t.v, gcd, dd, h[i]);  // reduced in integers; the sign stays with the numerator
   }
 }
 
@@ -82,7 +109,7 @@ namespace {
 void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len, const fmpz* hbn, const std::vector<Rational>& a,
                   const std::vector<Rational>& b, std::size_t cols, std::vector<Rational>& out) {
   ZVec num(nt), den(nt), Acc(len);
-  Z L, f, g, e;
+  Z L, f, g, e, dd;
   Rational s;
   for (std::size_t c = 0; c < cols; ++c) {
     // s_t = a_t b_tc = n_t / d_t; column c's denominator L = lcm_t (d_t D_t) over s_t != 0;
@@ -117,12 +144,7 @@ void integer_sums(const fmpz* V, const fmpz* D, std::size_t nt, std::size_t len,
       } else {
         fmpz_set(f.v, e.v);
       }
-      // Acc / f in lowest terms (f > 0).
-      fmpz_gcd(g.v, Acc.data() + i, f.v);
-      fmpz_divexact(Acc.data() + i, Acc.data() + i, g.v);
-      fmpz_divexact(f.v, f.v, g.v);
-      fmpz_get_mpz(mpq_numref(q), Acc.data() + i);
-      fmpz_get_mpz(mpq_denref(q), f.v);
+      store(Acc.data() + i, f.v, g, dd, out[i * cols + c]);  // Acc / f in lowest terms (f > 0)
     }
   }
 }
@@ -151,45 +173,14 @@ void ArithTraits<Rational>::product_sums(const std::vector<const std::vector<Rat
   ZVec V(nt * len), D(nt), F(nf), G(ng), H(len);
   Z Dg;
   for (std::size_t t = 0; t < nt; ++t) {
-    _fmpz_vec_zero(F.data(), static_cast<slong>(nf));  // onto_common leaves a zero coefficient's slot alone
-    _fmpz_vec_zero(G.data(), static_cast<slong>(ng));
     onto_common(*f[t], &fb, F.data(), D.data() + t);
     onto_common(*g[t], &gb, G.data(), Dg.v);
-    fmpz* Vt = V.data() + t * len;
-    for (std::size_t x = 0; x < nf; ++x) {
-      if (fmpz_is_zero(F.data() + x)) continue;
-      for (std::size_t y = 0; y < ng; ++y) fmpz_addmul(Vt + fo[x] + go[y], F.data() + x, G.data() + y);
-    }
+    convolve(F.data(), nf, G.data(), ng, fo, go, V.data() + t * len);
     fmpz_mul(D.data() + t, D.data() + t, Dg.v);
   }
   for (std::size_t i = 0; i < len; ++i) fmpz_set_mpz(H.data() + i, mpq_numref(raw(hb[i])));  // positive integers
   integer_sums(V.data(), D.data(), nt, len, H.data(), a, b, cols, out);
 }
-
-namespace {
-
-/// t = a / b with b > 0 (canonical mpq parts as FLINT integers).
-void parts(const Rational& t, fmpz_t a, fmpz_t b) {
-  fmpz_set_mpz(a, mpq_numref(raw(t)));
-  fmpz_set_mpz(b, mpq_denref(raw(t)));
-}
-
-/// q := n / d in lowest terms (d > 0); n is left divided by the gcd, d untouched.
-void store(fmpz* n, const fmpz* d, Z& g, Z& dd, Rational& q) {
-  fmpz_gcd(g.v, n, d);
-  __mpq_struct* r = q.backend().data();
-  if (fmpz_is_one(g.v)) {
-    fmpz_get_mpz(mpq_numref(r), n);
-    fmpz_get_mpz(mpq_denref(r), d);
-    return;
-  }
-  fmpz_divexact(n, n, g.v);
-  fmpz_divexact(dd.v, d, g.v);
-  fmpz_get_mpz(mpq_numref(r), n);
-  fmpz_get_mpz(mpq_denref(r), dd.v);
-}
-
-}  // namespace
 
 void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::size_t stride, int p, const Rational& t,
                                          std::vector<Rational>* left, std::vector<Rational>* right) {
@@ -226,7 +217,6 @@ void ArithTraits<Rational>::de_casteljau(const std::vector<Rational>& c, std::si
       }
     }
 }
-
 
 Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg,
                                              const std::vector<Rational>& x) {
