@@ -3,9 +3,12 @@
 // kernel's derivatives, evaluated exactly).
 #include <catch2/catch.hpp>
 
+#include <random>
+
 #include "spline/kernel.hpp"
 #include "tests/helpers.hpp"
 #include "vrep/model/regularity.hpp"
+#include "vrep/model/regularity_impl.hpp"  // vrep_detail::jacobian_numerator_fused, _expanded
 #include "vrep/model/trivariate.hpp"
 
 using namespace splinex;
@@ -371,6 +374,45 @@ TEST_CASE("vrep regularity: rational det J numerator agrees with the independent
     CHECK(evaluate(J, x)[0] == det_at(T, x) * W * W * W * W);
     CHECK((det_at(T, x) < 0) == (rep.sign < 0));
   }
+}
+
+TEST_CASE("vrep regularity: det J's numerator on integers is the product-by-product expansion, proved coefficientwise") {
+  // The fused route (product_sums: one reduction per sum) against the expansion floats use, on
+  // random trivariates (polynomial and rational, degrees 1-3 mixed, interior knots, odd
+  // denominators): equal Bernstein coefficients are the same polynomial on every piece.
+  std::mt19937_64 rng(4917);
+  auto num = [&](int bound) {
+    std::uniform_int_distribution<int> n(-bound, bound), d(1, 12);
+    return R(n(rng), d(rng));
+  };
+  int pieces = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<int> deg(3);
+    std::vector<std::vector<R>> K(3);
+    for (int d = 0; d < 3; ++d) {
+      deg[d] = 1 + static_cast<int>(rng() % 3);
+      K[d].assign(deg[d] + 1, R(0));
+      if (rng() % 2) K[d].push_back(R(1 + static_cast<int>(rng() % 5), 7));
+      K[d].insert(K[d].end(), deg[d] + 1, R(1));
+    }
+    auto V = spline_from<R>(deg, K, 3, [&](const std::vector<std::size_t>&) { return std::vector<R>{num(40), num(40), num(40)}; });
+    if (trial % 2) {
+      V.weights.clear();
+      for (std::size_t i = 0; i < V.size(); ++i) V.weights.push_back(R(1 + static_cast<int>(rng() % 9), 1 + static_cast<int>(rng() % 4)));
+    }
+    const auto F = bezier_form(V);
+    for (std::size_t k = 0; k < F.size(); ++k, ++pieces) {
+      const auto pc = F.piece(k);
+      const auto a = vrep_detail::jacobian_numerator_fused(pc.spline), b = vrep_detail::jacobian_numerator_expanded(pc.spline);
+      REQUIRE(a.deg == b.deg);
+      CHECK(a.c == b.c);
+      // The comparison sees a change: one control point moved changes the fused numerator.
+      auto moved = pc.spline;
+      moved.points[moved.points.size() / 2] += R(1, 3);
+      CHECK(vrep_detail::jacobian_numerator_fused(moved).c != b.c);
+    }
+  }
+  CHECK(pieces >= 12);
 }
 
 TEST_CASE("vrep in double: the constructors and the regularity test run in floats, judged exactly") {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <random>
 #include <set>
 
 #include "exact/rational.hpp"
@@ -14,6 +15,7 @@
 #include "vrep/model/trivariate.hpp"
 #include "vrep/model/validate.hpp"
 #include "vrep/model/vmodel.hpp"
+#include "vrep/model/vmodel_impl.hpp"  // vrep_detail::same_net_within, corners_differ
 #include "vrep/primitives/primitives.hpp"
 #include "vrep/trimmed/trimmed.hpp"
 
@@ -53,6 +55,64 @@ void check_regular(const std::vector<BSpline<R>>& cells) {
 }
 
 }  // namespace
+
+TEST_CASE("vmodel: the exact corner test never changes same_surface's answer; it decides only nets that differ at a corner") {
+  // Random clamped surfaces (rational or not, degrees 1-3), each against a refined and elevated
+  // copy, the copy with an interior point moved, the copy with a corner moved, and an unrelated
+  // surface. The answer must be the common-space comparison's, which is computed here directly.
+  std::mt19937_64 rng(5017);
+  auto num = [&] { return R(static_cast<long>(rng() % 41) - 20, 1 + static_cast<long>(rng() % 9)); };
+  auto random_surface = [&](bool rational) {
+    std::vector<int> deg{1 + static_cast<int>(rng() % 3), 1 + static_cast<int>(rng() % 3)};
+    std::vector<std::vector<R>> K(2);
+    for (int d = 0; d < 2; ++d) {
+      K[d].assign(deg[d] + 1, R(0));
+      if (rng() % 2) K[d].push_back(R(2, 5));
+      K[d].insert(K[d].end(), deg[d] + 1, R(1));
+    }
+    auto S = spline_from<R>(deg, K, 3, [&](const std::vector<std::size_t>&) { return std::vector<R>{num(), num(), num()}; });
+    if (rational)
+      for (std::size_t i = 0; i < S.size(); ++i) S.weights.push_back(R(1 + static_cast<long>(rng() % 5), 1 + static_cast<long>(rng() % 3)));
+    return S;
+  };
+  auto common_space_equal = [](const BSpline<R>& a, BSpline<R> b) {
+    BSpline<R> x = a;
+    if (x.is_rational() != b.is_rational()) {
+      if (!x.is_rational()) x.weights.assign(x.size(), R(1));
+      if (!b.is_rational()) b.weights.assign(b.size(), R(1));
+    }
+    const auto [A, B] = make_compatible(x, b);
+    return A.points == B.points && A.weights == B.weights;
+  };
+  int same = 0, by_corner = 0, by_space = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const auto S = random_surface(trial % 2 == 1);
+    auto C = elevate_degree(refine_knots(S, 0, {R(1, 3), R(5, 7)}), 1, 1);
+    auto interior = C, corner = C;
+    interior.points[(1 + C.count(0) * 1) * 3 + 2] += R(1, 1000);
+    corner.points[(C.count(0) - 1) * 3] += R(1, 1000);  // the corner (u = 1, v = 0)
+    for (const auto* other : {&C, &interior, &corner}) {
+      const bool expected = common_space_equal(S, *other), got = vrep_detail::same_net_within(S, *other, R(0), Limits{});
+      CHECK(got == expected);
+      if (vrep_detail::corners_differ(S, *other, R(0))) {
+        CHECK_FALSE(expected);  // the corner test decides only what the common space would
+        ++by_corner;
+      } else if (!expected) {
+        ++by_space;
+      } else {
+        ++same;
+      }
+    }
+    const auto U = random_surface(trial % 3 == 0);
+    CHECK(vrep_detail::same_net_within(S, U, R(0), Limits{}) == common_space_equal(S, U));
+    // Orientation: the reversed copy is the same surface, found by same_surface.
+    CHECK(same_surface(S, reverse(C, 0), R(0)));
+    CHECK_FALSE(same_surface(S, reverse(corner, 0), R(0)));
+  }
+  CHECK(same == 24);
+  CHECK(by_corner == 24);
+  CHECK(by_space == 24);
+}
 
 TEST_CASE("vmodel: one trivariate is 1 cell, 6 half-V-surfaces, 12 V-curves, 8 V-points (Section 3.2.1)") {
   const auto B = box_cells<R>({0, 0, 0}, {1, 2, 3});

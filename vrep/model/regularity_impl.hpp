@@ -5,6 +5,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "bernstein/subdivide.hpp"
@@ -51,9 +52,69 @@ Bernstein<T> det2(const Bernstein<T>& a, const Bernstein<T>& b, const Bernstein<
   return sub(mul(a, d), mul(b, c));
 }
 
-/// det J's numerator of a Bezier piece in local coordinates.
+/// sum over t of sign[t] f[t] g[t], every f[t] of one degree vector and every g[t] of one
+/// (product_sums: an exact arithmetic forms the products on integers and reduces once per
+/// coefficient of the sum).
 template <class T>
-Bernstein<T> jacobian_numerator(const BSpline<T>& piece) {
+Bernstein<T> signed_products(const std::vector<const Bernstein<T>*>& f, const std::vector<const Bernstein<T>*>& g,
+                             const std::vector<T>& sign) {
+  Bernstein<T> h;
+  h.deg.resize(f[0]->deg.size());
+  for (std::size_t l = 0; l < h.deg.size(); ++l) h.deg[l] = f[0]->deg[l] + g[0]->deg[l];
+  h.c.assign(detail::tensor_size(h.deg), T(0));
+  product_sums(f, g, sign, std::vector<T>(f.size(), T(1)), 1, h.c);
+  return h;
+}
+
+/// det J's numerator on integers (an arithmetic with product_sums): the same determinant as
+/// jacobian_numerator's, expanded so that the factors of every sum share their degrees - along
+/// the column of u-derivatives (polynomial), along columns (0, 1) (rational) - with one reduction
+/// per sum instead of one per product and per addition.
+template <class T>
+Bernstein<T> jacobian_numerator_fused(const BSpline<T>& piece) {
+  const T one(1), minus(-1);
+  if (!piece.is_rational()) {
+    Bernstein<T> M[3][3];
+    for (int r = 0; r < 3; ++r) {
+      const Bernstein<T> x = homogeneous(piece, r + 1);
+      for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
+    }
+    // det = sum over r of (-1)^r M[r][0] (M[s][1] M[t][2] - M[t][1] M[s][2]), {s, t} the other rows.
+    Bernstein<T> minor[3];
+    for (int r = 0; r < 3; ++r) {
+      const int s = r == 0 ? 1 : 0, t = r == 2 ? 1 : 2;
+      minor[r] = signed_products<T>({&M[s][1], &M[t][1]}, {&M[t][2], &M[s][2]}, {one, minus});
+    }
+    return signed_products<T>({&M[0][0], &M[1][0], &M[2][0]}, {&minor[0], &minor[1], &minor[2]}, {one, minus, one});
+  }
+  Bernstein<T> M[4][4];
+  for (int r = 0; r < 4; ++r) {
+    M[r][0] = homogeneous(piece, r);
+    for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
+  }
+  // Laplace along columns (0, 1), as jacobian_numerator; each 2x2 minor pairs factors of one column.
+  Bernstein<T> left[6], right[6];
+  std::vector<const Bernstein<T>*> f, g;
+  std::vector<T> sign;
+  int k = 0;
+  for (int r1 = 0; r1 < 4; ++r1)
+    for (int r2 = r1 + 1; r2 < 4; ++r2, ++k) {
+      int s1 = -1, s2 = -1;
+      for (int r = 0; r < 4; ++r)
+        if (r != r1 && r != r2) (s1 < 0 ? s1 : s2) = r;
+      left[k] = signed_products<T>({&M[r1][0], &M[r2][0]}, {&M[r2][1], &M[r1][1]}, {one, minus});
+      right[k] = signed_products<T>({&M[s1][2], &M[s2][2]}, {&M[s2][3], &M[s1][3]}, {one, minus});
+      f.push_back(&left[k]);
+      g.push_back(&right[k]);
+      sign.push_back((r1 + r2 + 1) % 2 != 0 ? minus : one);
+    }
+  return signed_products(f, g, sign);
+}
+
+/// det J's numerator of a Bezier piece in local coordinates, product by product (along row 0;
+/// rational: along columns (0, 1)): in floating point this fixes the order of the roundings.
+template <class T>
+Bernstein<T> jacobian_numerator_expanded(const BSpline<T>& piece) {
   const bool rational = piece.is_rational();
   // M[r][c]: row r = homogeneous coordinate (W, X, Y, Z) or (X, Y, Z); column c = (P,) P_u, P_v, P_w.
   if (!rational) {
@@ -87,6 +148,16 @@ Bernstein<T> jacobian_numerator(const BSpline<T>& piece) {
       first = false;
     }
   return det;
+}
+
+/// det J's numerator of a Bezier piece in local coordinates: jacobian_numerator_fused in an
+/// arithmetic with product_sums (the same exact polynomial), jacobian_numerator_expanded otherwise.
+template <class T>
+Bernstein<T> jacobian_numerator(const BSpline<T>& piece) {
+  if constexpr (FractionFreeProductSums<T>)
+    return jacobian_numerator_fused(piece);
+  else
+    return jacobian_numerator_expanded(piece);
 }
 
 /// The two halves of b at t_l = 1/2.

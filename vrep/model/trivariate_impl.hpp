@@ -235,6 +235,8 @@ BSpline<T> revolve(const BSpline<T>& S, int axis, int quarters, const Limits& li
   R.knots = {S.knots[0], S.knots[1], C.knots[0]};
   R.q = S.q;
   const std::size_t n = S.size(), m = C.size();
+  R.points.reserve(n * m * static_cast<std::size_t>(S.q));
+  R.weights.reserve(n * m);
   for (std::size_t l = 0; l < m; ++l) {
     const T cx = C.points[2 * l], cy = C.points[2 * l + 1];
     for (std::size_t i = 0; i < n; ++i) {

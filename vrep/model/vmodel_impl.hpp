@@ -6,6 +6,7 @@
 
 #include "base/errors.hpp"
 #include "base/point.hpp"
+#include "float/mpfr.hpp"  // ArithTraits<T>::exact of every arithmetic
 #include "spline/bezier.hpp"
 #include "spline/evaluate.hpp"
 #include "spline/insert.hpp"
@@ -64,10 +65,48 @@ BSpline<T> swap_directions(const BSpline<T>& S) {
   return R;
 }
 
+/// Whether two clamped nets (points of size >= 3) differ at a corner: first three coordinates or
+/// weight (1 for a polynomial net) not within eps. A clamped net interpolates its corners, and
+/// knot insertion and degree elevation keep the corner points and weights exactly in exact
+/// arithmetic, so nets that differ there differ after any common space too. False (not decided)
+/// for nets that are not clamped.
+template <class T>
+bool corners_differ(const BSpline<T>& a, const BSpline<T>& b, const T& eps) {
+  const int k = a.dim();
+  if (b.dim() != k || a.q < 3 || b.q < 3) return false;
+  auto well_formed = [k](const BSpline<T>& s) {  // sizes only: make_compatible validates the rest
+    if (s.knots.size() != static_cast<std::size_t>(k)) return false;
+    for (int d = 0; d < k; ++d)
+      if (s.degrees[d] < 0 || s.knots[d].size() < 2 * static_cast<std::size_t>(s.degrees[d]) + 2) return false;
+    return s.points.size() == s.size() * static_cast<std::size_t>(s.q) && (!s.is_rational() || s.weights.size() == s.size());
+  };
+  if (!well_formed(a) || !well_formed(b)) return false;
+  for (int d = 0; d < k; ++d)
+    if (!is_clamped(a.knots[d], a.degrees[d], a.count(d)) || !is_clamped(b.knots[d], b.degrees[d], b.count(d))) return false;
+  for (unsigned m = 0; m < (1u << k); ++m) {
+    std::size_t ia = 0, ib = 0, sa = 1, sb = 1;
+    for (int d = 0; d < k; ++d) {
+      const bool hi = ((m >> d) & 1u) != 0;
+      ia += (hi ? a.count(d) - 1 : 0) * sa;
+      ib += (hi ? b.count(d) - 1 : 0) * sb;
+      sa *= a.count(d);
+      sb *= b.count(d);
+    }
+    for (int c = 0; c < 3; ++c)
+      if (!close(a.points[ia * a.q + c], b.points[ib * b.q + c], eps)) return true;
+    if (!close(a.is_rational() ? a.weights[ia] : T(1), b.is_rational() ? b.weights[ib] : T(1), eps)) return true;
+  }
+  return false;
+}
+
 /// Control points (first three coordinates) and weights equal within eps, after a common space.
+/// In exact arithmetic nets that differ at a corner are told apart first (corners_differ), without
+/// a common space: the same answer, without the refinement and elevation.
 template <class T>
 bool same_net_within(const BSpline<T>& a0, const BSpline<T>& b0, const T& eps, const Limits& limits) {
   if (a0.dim() != b0.dim()) return false;
+  if constexpr (ArithTraits<T>::exact)  // exact: corners are kept exactly (not so in floats)
+    if (corners_differ(a0, b0, eps)) return false;
   BSpline<T> a = unit_domains(a0), b = unit_domains(b0);
   if (a.is_rational() != b.is_rational()) {
     if (!a.is_rational()) a.weights.assign(a.size(), T(1));
@@ -185,11 +224,14 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
     };
     // Edges -> V-curves: edge (along, sides of the other two).
     for (int k = 0; k < 8; ++k) cell.corners[k] = corner(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+    // Each edge's V-point ids from the corners found above (a clamped cell's corner is its corner
+    // control point: the same point each time, so it is looked up once).
+    auto corner_id = [&](const std::array<int, 3>& s) { return cell.corners[s[0] + 2 * s[1] + 4 * s[2]]; };
     auto edge_id = [&](int along, std::array<int, 3> sides) {
       std::array<int, 3> a = sides, b = sides;
       a[along] = 0;
       b[along] = 1;
-      const std::size_t p0 = corner(a[0], a[1], a[2]), p1 = corner(b[0], b[1], b[2]);
+      const std::size_t p0 = corner_id(a), p1 = corner_id(b);
       const BSpline<T> geom = edge_curve(V, along, sides);
       auto& candidates = curve_index[{std::min(p0, p1), std::max(p0, p1)}];
       for (std::size_t c : candidates)
@@ -200,10 +242,12 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
       if (p1 != p0) model.points[p1].curves.push_back(model.curves.size() - 1);
       return model.curves.size() - 1;
     };
+    // Edge (along, k): k = side of the lower other direction + 2 * side of the higher one.
+    auto others = [](int along) { return std::pair<int, int>{along == 0 ? 1 : 0, along == 2 ? 1 : 2}; };
     for (int along = 0; along < 3; ++along)
       for (int k = 0; k < 4; ++k) {
         std::array<int, 3> sides{};
-        const int lo = along == 0 ? 1 : 0, hi = along == 2 ? 1 : 2;
+        const auto [lo, hi] = others(along);
         sides[lo] = k & 1;
         sides[hi] = (k >> 1) & 1;
         cell.edges[4 * along + k] = edge_id(along, sides);
@@ -222,7 +266,8 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
           sides[d] = s;
           const int along = k % 2 == 0 ? a : b, other = k % 2 == 0 ? b : a;
           sides[other] = (k == 1 || k == 2) ? 1 : 0;
-          h.loop.push_back(edge_id(along, sides));
+          const auto [lo, hi] = others(along);
+          h.loop.push_back(cell.edges[4 * along + sides[lo] + 2 * sides[hi]]);  // glued above, once per edge
         }
         const BSpline<T> F = face(V, d, s);
         // A twin: an unpaired half-V-surface with the same edges and the same surface.
