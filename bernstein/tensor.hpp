@@ -247,6 +247,12 @@ Bernstein<T> bern_combine(const Bernstein<T>& a, const Bernstein<T>& b, bool min
   return minus ? bern_sub(up(a), up(b)) : bern_add(up(a), up(b));
 }
 
+/// Whether T offers the fraction-free differences (spline/arith.hpp: ArithTraits<T>::differences).
+template <class T>
+concept FractionFreeDifferences = requires(const std::vector<T>& v, std::vector<T>& out) {
+  ArithTraits<T>::differences(v, std::size_t{1}, 1, out);
+};
+
 /// d/dt_l on [0, 1]^n: degree deg_l - 1, coefficients deg_l (c_{i+1} - c_i). Degree 0 gives the
 /// zero polynomial of degree 0.
 template <class T>
@@ -260,6 +266,10 @@ Bernstein<T> bern_derivative(const Bernstein<T>& b, int l) {
   out.deg[l] -= 1;
   out.c.resize(detail::tensor_size(out.deg));
   const std::size_t n = b.deg.size(), stride = detail::tensor_stride(b.deg, static_cast<int>(l));
+  if constexpr (FractionFreeDifferences<T>) {
+    ArithTraits<T>::differences(b.c, stride, b.deg[l], out.c);  // on integers, one reduction per coefficient
+    return out;
+  }
   std::vector<int> idx(n);
   const T p(b.deg[l]);
   for (std::size_t i = 0; i < out.c.size(); ++i) {

@@ -65,6 +65,8 @@ struct ArithTraits<Rational> {
                            std::vector<Rational>* left, std::vector<Rational>* right);
   /// A tensor Bernstein polynomial's value on integers, one reduction (spline/arith.hpp).
   static Rational tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg, const std::vector<Rational>& x);
+  /// p times the differences along every line of one direction, on integers (spline/arith.hpp).
+  static void differences(const std::vector<Rational>& c, std::size_t stride, int p, std::vector<Rational>& out);
 };
 
 }  // namespace splinex

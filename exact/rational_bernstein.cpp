@@ -1,7 +1,8 @@
 // ArithTraits<Rational>'s integer loops (spline/arith.hpp): the Bernstein product
 // (tensor_convolve), composition's sum over the outer control points (weighted_sums, and
-// product_sums with the sum's last product fused), and de Casteljau's algorithm for splits and
-// values (de_casteljau, tensor_value) of bernstein/tensor.hpp.
+// product_sums with the sum's last product fused), de Casteljau's algorithm for splits and
+// values (de_casteljau, tensor_value) and the derivative's differences (differences) of
+// bernstein/tensor.hpp.
 // Each operand's coefficients are brought onto one
 // denominator (the lcm of theirs), the convolution is a sum of integer products (FLINT words:
 // 64-bit values stay inline, longer ones go to GMP), and each coefficient of the product is made
@@ -246,6 +247,19 @@ Rational ArithTraits<Rational>::tensor_value(const std::vector<Rational>& c, con
   Rational out;
   store(C.data(), D.v, g, dd, out);
   return out;
+}
+
+void ArithTraits<Rational>::differences(const std::vector<Rational>& c, std::size_t stride, int p, std::vector<Rational>& out) {
+  const std::size_t n = c.size(), in_block = stride * (static_cast<std::size_t>(p) + 1), out_block = stride * static_cast<std::size_t>(p);
+  ZVec C(n);
+  Z D, x, g, dd;
+  onto_common(c, nullptr, C.data(), D.v);  // integers over one denominator: a difference is exact
+  for (std::size_t b = 0, ob = 0; b < n; b += in_block, ob += out_block)
+    for (std::size_t j = 0; j < out_block; ++j) {
+      fmpz_sub(x.v, C.data() + b + j + stride, C.data() + b + j);
+      fmpz_mul_ui(x.v, x.v, static_cast<ulong>(p));
+      store(x.v, D.v, g, dd, out[ob + j]);
+    }
 }
 
 }  // namespace splinex

@@ -14,9 +14,10 @@
 //   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
-// An exact arithmetic may also offer, optionally, five inner loops of bernstein/tensor.hpp done
-// fraction-free (bern_product, composition's weighted_sums and product_sums, bern_split and
-// bern_value use them when present; the values are the same, only the gcds per term are gone):
+// An exact arithmetic may also offer, optionally, six inner loops of bernstein/tensor.hpp done
+// fraction-free (bern_product, composition's weighted_sums and product_sums, bern_split,
+// bern_value and bern_derivative use them when present; the values are the same, only the gcds
+// per term are gone):
 //   static void tensor_convolve(const std::vector<T>& f, const std::vector<T>& fb,
 //                               const std::vector<T>& g, const std::vector<T>& gb,
 //                               const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
@@ -42,6 +43,10 @@
 //     // w^r_{p-r} of the de Casteljau triangle (either pointer may be null; sizes as c).
 //   static T tensor_value(const std::vector<T>& c, const std::vector<int>& deg, const std::vector<T>& x);
 //     // the value at x of the tensor Bernstein polynomial of degrees deg (direction 0 fastest).
+//   static void differences(const std::vector<T>& c, std::size_t stride, int p, std::vector<T>& out);
+//     // every line of one direction (as de_casteljau's, p >= 1) differenced and scaled by p:
+//     // out[ob + j] = p (c[b + j + stride] - c[b + j]) for j < stride*p, b over the blocks of
+//     // stride*(p+1) of c and ob over those of stride*p of out (out has its final size).
 //
 // The concept is checked by the compiler twice: `Arithmetic` below (a C++20 concept) constrains
 // BSpline<T>, so a scalar without an operation of the list is rejected where a spline of it is

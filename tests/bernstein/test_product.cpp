@@ -279,3 +279,37 @@ TEST_CASE("bern_split and bern_value: de Casteljau on integers equals the per-te
     REQUIRE(bern_value(R, x) == bern_value(b, y));
   }
 }
+
+TEST_CASE("bern_derivative: the differences on integers equal FLINT's per-term route, canonical, and the derivative's identity") {
+  // Rational differences on integers (ArithTraits<Rational>::differences); FlintRational takes the
+  // generic per-term loop, an independent route. And the coefficients are the derivative's:
+  // summed back along every line of direction l (b_{i+1} = b_i + D_i / deg_l) they give b.
+  std::mt19937_64 rng(49157);
+  int lines = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 1 + rng() % 3;
+    std::vector<int> deg(n);
+    for (auto& d : deg) d = static_cast<int>(rng() % (n == 3 ? 4 : 7));
+    const int l = static_cast<int>(rng() % n);
+    deg[l] = std::max(deg[l], 1);
+    const Bernstein<Rational> b = random_poly(rng, deg);
+    const Bernstein<Rational> D = bern_derivative(b, l);
+    const Bernstein<FlintRational> FD = bern_derivative(to_flint(b), l);
+    REQUIRE(D.deg == FD.deg);
+    for (std::size_t i = 0; i < D.c.size(); ++i) {
+      REQUIRE(D.c[i] == FD.c[i].to_rational());
+      REQUIRE(canonical(D.c[i]));
+    }
+    // The antiderivative along every line of direction l gives b back.
+    const std::size_t stride = detail::tensor_stride(b.deg, l), p = static_cast<std::size_t>(deg[l]);
+    for (std::size_t blk = 0; blk < b.c.size(); blk += stride * (p + 1))
+      for (std::size_t j = 0; j < stride; ++j, ++lines) {
+        Rational acc = b.c[blk + j];
+        for (std::size_t i = 0; i < p; ++i) {
+          acc += D.c[blk / (p + 1) * p + j + i * stride] / Rational(static_cast<long>(p));
+          REQUIRE(acc == b.c[blk + j + (i + 1) * stride]);
+        }
+      }
+  }
+  CHECK(lines > 300);
+}
