@@ -56,7 +56,7 @@ void check_regular(const std::vector<BSpline<R>>& cells) {
 
 }  // namespace
 
-TEST_CASE("vmodel: the exact corner test never changes same_surface's answer; it decides only nets that differ at a corner") {
+TEST_CASE("vmodel: the exact corner test never changes same_surface's answer, and decides only nets that differ at a corner") {
   // Random clamped surfaces (rational or not, degrees 1-3), each against a refined and elevated
   // copy, the copy with an interior point moved, the copy with a corner moved, and an unrelated
   // surface. The answer must be the common-space comparison's, which is computed here directly.
