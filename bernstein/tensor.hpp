@@ -327,6 +327,42 @@ std::pair<Bernstein<T>, Bernstein<T>> bern_split(const Bernstein<T>& b, int l, c
   return {std::move(L), std::move(R)};
 }
 
+/// Whether T offers the fraction-free halving (spline/arith.hpp: ArithTraits<T>::halves).
+template <class T>
+concept FractionFreeHalves = requires(const std::vector<T>& v, const std::vector<int>& d, std::vector<std::vector<T>>& out) {
+  ArithTraits<T>::halves(v, d, out);
+};
+
+/// The 2^k parts of b (k = b.deg.size()) halved at 1/2 in every direction, each reparametrized
+/// onto [0, 1]^k: part K has side (K >> (k-1-l)) & 1 in direction l (0 the lower half), the order
+/// of bern_split at 1/2 in direction 0, then 1, ... (which floats run; an exact arithmetic may
+/// halve on integers with one reduction per coefficient: the same values).
+template <class T>
+std::vector<Bernstein<T>> bern_halves(const Bernstein<T>& b) {
+  const std::size_t k = b.deg.size();
+  std::vector<Bernstein<T>> parts;
+  if constexpr (FractionFreeHalves<T>) {
+    std::vector<std::vector<T>> out(std::size_t{1} << k, std::vector<T>(b.c.size()));
+    ArithTraits<T>::halves(b.c, b.deg, out);
+    parts.reserve(out.size());
+    for (auto& c : out) parts.push_back(Bernstein<T>{b.deg, std::move(c)});
+  } else {
+    parts.push_back(b);
+    const T half = T(1) / T(2);
+    for (std::size_t l = 0; l < k; ++l) {
+      std::vector<Bernstein<T>> next;
+      next.reserve(2 * parts.size());
+      for (const auto& g : parts) {
+        auto [L, R] = bern_split(g, static_cast<int>(l), half);
+        next.push_back(std::move(L));
+        next.push_back(std::move(R));
+      }
+      parts = std::move(next);
+    }
+  }
+  return parts;
+}
+
 /// b restricted to [a, c] in direction l (0 <= a < c <= 1), reparametrized onto [0, 1].
 template <class T>
 Bernstein<T> bern_restrict(Bernstein<T> b, int l, const T& a, const T& c) {

@@ -67,6 +67,8 @@ struct ArithTraits<Rational> {
   static Rational tensor_value(const std::vector<Rational>& c, const std::vector<int>& deg, const std::vector<Rational>& x);
   /// p times the differences along every line of one direction, on integers (spline/arith.hpp).
   static void differences(const std::vector<Rational>& c, std::size_t stride, int p, std::vector<Rational>& out);
+  /// The 2^k halves in every direction on integers, one reduction per coefficient (spline/arith.hpp).
+  static void halves(const std::vector<Rational>& c, const std::vector<int>& deg, std::vector<std::vector<Rational>>& out);
 };
 
 }  // namespace splinex

@@ -1,8 +1,8 @@
 // ArithTraits<Rational>'s integer loops (spline/arith.hpp): the Bernstein product
 // (tensor_convolve), composition's sum over the outer control points (weighted_sums, and
 // product_sums with the sum's last product fused), de Casteljau's algorithm for splits and
-// values (de_casteljau, tensor_value) and the derivative's differences (differences) of
-// bernstein/tensor.hpp.
+// values (de_casteljau, tensor_value), the halving in every direction (halves) and the
+// derivative's differences (differences) of bernstein/tensor.hpp.
 // Each operand's coefficients are brought onto one
 // denominator (the lcm of theirs), the convolution is a sum of integer products (FLINT words:
 // 64-bit values stay inline, longer ones go to GMP), and each coefficient of the product is made
@@ -12,6 +12,7 @@
 #include <flint/fmpz_vec.h>
 #include <gmp.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "exact/ff_int.hpp"
@@ -260,6 +261,50 @@ void ArithTraits<Rational>::differences(const std::vector<Rational>& c, std::siz
       fmpz_mul_ui(x.v, x.v, static_cast<ulong>(p));
       store(x.v, D.v, g, dd, out[ob + j]);
     }
+}
+
+void ArithTraits<Rational>::halves(const std::vector<Rational>& c, const std::vector<int>& deg,
+                                  std::vector<std::vector<Rational>>& out) {
+  // Direction by direction on integers: de Casteljau at 1/2 is sums (level r over 2^r), and each
+  // half is put over 2^p (its level-r value times 2^(p-r)), so after direction l every part is
+  // integers over D 2^(p_0 + ... + p_l): one denominator for all parts, one reduction at the end.
+  const std::size_t n = c.size();
+  std::vector<ZVec> cur;
+  cur.emplace_back(n);
+  Z D, g, dd;
+  onto_common(c, nullptr, cur[0].data(), D.v);
+  int maxp = 0;
+  for (int p : deg) maxp = std::max(maxp, p);
+  ZVec w(static_cast<std::size_t>(maxp) + 1);
+  std::size_t stride = 1;
+  ulong shift = 0;
+  for (int p : deg) {
+    const std::size_t block = stride * (static_cast<std::size_t>(p) + 1);
+    std::vector<ZVec> next;
+    next.reserve(2 * cur.size());
+    for (ZVec& C : cur) {
+      ZVec L(n), R(n);
+      for (std::size_t hi = 0; hi < n; hi += block)
+        for (std::size_t lo = 0; lo < stride; ++lo) {
+          const std::size_t base = hi + lo;
+          for (int i = 0; i <= p; ++i) fmpz_set(w + static_cast<std::size_t>(i), C + base + static_cast<std::size_t>(i) * stride);
+          for (int r = 0; r <= p; ++r) {
+            const ulong up = static_cast<ulong>(p - r);
+            fmpz_mul_2exp(L + base + static_cast<std::size_t>(r) * stride, w + 0, up);
+            fmpz_mul_2exp(R + base + static_cast<std::size_t>(p - r) * stride, w + static_cast<std::size_t>(p - r), up);
+            for (int i = 0; i < p - r; ++i) fmpz_add(w + static_cast<std::size_t>(i), w + static_cast<std::size_t>(i), w + static_cast<std::size_t>(i + 1));
+          }
+        }
+      next.push_back(std::move(L));
+      next.push_back(std::move(R));
+    }
+    cur = std::move(next);
+    shift += static_cast<ulong>(p);
+    stride = block;
+  }
+  fmpz_mul_2exp(D.v, D.v, shift);
+  for (std::size_t K = 0; K < cur.size(); ++K)
+    for (std::size_t i = 0; i < n; ++i) store(cur[K] + i, D.v, g, dd, out[K][i]);
 }
 
 }  // namespace splinex

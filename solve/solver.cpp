@@ -309,34 +309,22 @@ bool SolveResult<T>::complete() const {
 /// examines them in the order of their flat index).
 template <class T, class Emit>
 void halve_every_direction(Node<T>&& N, std::size_t n, Emit&& emit) {
-  std::vector<std::vector<Bernstein<T>>> parts{N.f};
-  std::vector<std::vector<T>> plo{N.lo}, phi{N.hi};
-  const T half = T(1) / T(2);
-  for (std::size_t l = 0; l < n; ++l) {
-    std::vector<std::vector<Bernstein<T>>> next;
-    std::vector<std::vector<T>> nlo, nhi;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      std::vector<Bernstein<T>> a, b;
-      for (const auto& g : parts[k]) {
-        auto [L, R] = bern_split(g, static_cast<int>(l), half);
-        a.push_back(std::move(L));
-        b.push_back(std::move(R));
-      }
-      const T mid = (plo[k][l] + phi[k][l]) * half;
-      next.push_back(std::move(a));
-      nlo.push_back(plo[k]);
-      nhi.push_back(phi[k]);
-      nhi.back()[l] = mid;
-      next.push_back(std::move(b));
-      nlo.push_back(plo[k]);
-      nhi.push_back(phi[k]);
-      nlo.back()[l] = mid;
-    }
-    parts = std::move(next);
-    plo = std::move(nlo);
-    phi = std::move(nhi);
+  const std::size_t count = std::size_t{1} << n;
+  std::vector<std::vector<Bernstein<T>>> parts(count);
+  for (const auto& g : N.f) {  // every polynomial in the n unknowns (check_system), halved in all n at once
+    if (g.deg.size() != n) throw std::logic_error("halve_every_direction: a polynomial not in the n unknowns");
+    auto h = bern_halves(g);
+    for (std::size_t K = 0; K < count; ++K) parts[K].push_back(std::move(h[K]));
   }
-  for (std::size_t k = parts.size(); k-- > 0;) emit(Node<T>{std::move(parts[k]), std::move(plo[k]), std::move(phi[k]), N.depth + 1});
+  // Part K's box: side (K >> (n-1-l)) & 1 of the midpoint in direction l (bern_halves' order).
+  const T half = T(1) / T(2);
+  std::vector<T> mid(n);
+  for (std::size_t l = 0; l < n; ++l) mid[l] = (N.lo[l] + N.hi[l]) * half;
+  for (std::size_t K = count; K-- > 0;) {
+    std::vector<T> lo = N.lo, hi = N.hi;
+    for (std::size_t l = 0; l < n; ++l) ((K >> (n - 1 - l)) & 1 ? lo[l] : hi[l]) = mid[l];
+    emit(Node<T>{std::move(parts[K]), std::move(lo), std::move(hi), N.depth + 1});
+  }
 }
 
 namespace {

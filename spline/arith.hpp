@@ -14,10 +14,10 @@
 //   static std::string to_string(const T&);      // the same text, for messages
 // Conversions are therefore explicit and named, and a float result can always be measured
 // exactly against the exact one (crosscheck/).
-// An exact arithmetic may also offer, optionally, six inner loops of bernstein/tensor.hpp done
+// An exact arithmetic may also offer, optionally, seven inner loops of bernstein/tensor.hpp done
 // fraction-free (bern_product, composition's weighted_sums and product_sums, bern_split,
-// bern_value and bern_derivative use them when present; the values are the same, only the gcds
-// per term are gone):
+// bern_halves, bern_value and bern_derivative use them when present; the values are the same,
+// only the gcds per term are gone):
 //   static void tensor_convolve(const std::vector<T>& f, const std::vector<T>& fb,
 //                               const std::vector<T>& g, const std::vector<T>& gb,
 //                               const std::vector<std::size_t>& fo, const std::vector<std::size_t>& go,
@@ -47,6 +47,10 @@
 //     // every line of one direction (as de_casteljau's, p >= 1) differenced and scaled by p:
 //     // out[ob + j] = p (c[b + j + stride] - c[b + j]) for j < stride*p, b over the blocks of
 //     // stride*(p+1) of c and ob over those of stride*p of out (out has its final size).
+//   static void halves(const std::vector<T>& c, const std::vector<int>& deg, std::vector<std::vector<T>>& out);
+//     // the 2^k parts (k = deg.size()) of the tensor polynomial halved at 1/2 in every direction,
+//     // each on [0, 1]^k: out[K], K = sum over l of side_l 2^(k-1-l) (side 0 the lower half),
+//     // every out[K] of c's size.
 //
 // The concept is checked by the compiler twice: `Arithmetic` below (a C++20 concept) constrains
 // BSpline<T>, so a scalar without an operation of the list is rejected where a spline of it is

@@ -313,3 +313,31 @@ TEST_CASE("bern_derivative: the differences on integers equal FLINT's per-term r
   }
   CHECK(lines > 300);
 }
+
+TEST_CASE("bern_halves: the halves in every direction on integers equal FLINT's splits in turn, canonical, and agree with the whole") {
+  // Rational halves on integers (ArithTraits<Rational>::halves, one reduction per coefficient);
+  // FlintRational runs bern_split at 1/2 direction by direction, an independent route. And each
+  // part is the whole on its sub-box: part K at x is b at x_l / 2 (+ 1/2 on the upper side).
+  std::mt19937_64 rng(49159);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = 1 + rng() % 4;
+    std::vector<int> deg(n);
+    for (auto& d : deg) d = static_cast<int>(rng() % (n >= 3 ? 3 : 6));
+    const Bernstein<Rational> b = random_poly(rng, deg);
+    const auto H = bern_halves(b);
+    const auto FH = bern_halves(to_flint(b));
+    REQUIRE(H.size() == (std::size_t{1} << n));
+    REQUIRE(FH.size() == H.size());
+    std::vector<Rational> x(n), y(n);
+    for (auto& v : x) v = parameter(rng);
+    for (std::size_t K = 0; K < H.size(); ++K) {
+      REQUIRE(H[K].deg == b.deg);
+      for (std::size_t i = 0; i < b.c.size(); ++i) {
+        REQUIRE(H[K].c[i] == FH[K].c[i].to_rational());
+        REQUIRE(canonical(H[K].c[i]));
+      }
+      for (std::size_t l = 0; l < n; ++l) y[l] = ((K >> (n - 1 - l)) & 1 ? Rational(1, 2) : Rational(0)) + x[l] / 2;
+      REQUIRE(bern_value(H[K], x) == bern_value(b, y));
+    }
+  }
+}

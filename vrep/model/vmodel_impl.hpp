@@ -224,8 +224,8 @@ VModel<T> glue(const std::vector<BSpline<T>>& trivariates, const T& eps, const s
     };
     // Edges -> V-curves: edge (along, sides of the other two).
     for (int k = 0; k < 8; ++k) cell.corners[k] = corner(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-    // Each edge's V-point ids from the corners found above (a clamped cell's corner is its corner
-    // control point: the same point each time, so it is looked up once).
+    // An edge's V-points are two of the corners found above (corner() would give the same ids
+    // again, after an evaluation and a search each).
     auto corner_id = [&](const std::array<int, 3>& s) { return cell.corners[s[0] + 2 * s[1] + 4 * s[2]]; };
     auto edge_id = [&](int along, std::array<int, 3> sides) {
       std::array<int, 3> a = sides, b = sides;
