@@ -52,6 +52,29 @@ Bernstein<T> det2(const Bernstein<T>& a, const Bernstein<T>& b, const Bernstein<
   return sub(mul(a, d), mul(b, c));
 }
 
+/// det J's numerator as a determinant: M[r][c], row r a homogeneous coordinate - (X, Y, Z) for a
+/// polynomial piece (3x3, columns P_u, P_v, P_w), (W, X, Y, Z) for a rational one (4x4, columns P,
+/// P_u, P_v, P_w).
+template <class T>
+using JacobianMatrix = std::array<std::array<Bernstein<T>, 4>, 4>;
+
+template <class T>
+JacobianMatrix<T> jacobian_matrix(const BSpline<T>& piece) {
+  JacobianMatrix<T> M;
+  if (!piece.is_rational()) {
+    for (int r = 0; r < 3; ++r) {
+      const Bernstein<T> x = homogeneous(piece, r + 1);
+      for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
+    }
+    return M;
+  }
+  for (int r = 0; r < 4; ++r) {
+    M[r][0] = homogeneous(piece, r);
+    for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
+  }
+  return M;
+}
+
 /// sum over t of sign[t] f[t] g[t], every f[t] of one degree vector and every g[t] of one
 /// (product_sums: an exact arithmetic forms the products on integers and reduces once per
 /// coefficient of the sum).
@@ -73,12 +96,8 @@ Bernstein<T> signed_products(const std::vector<const Bernstein<T>*>& f, const st
 template <class T>
 Bernstein<T> jacobian_numerator_fused(const BSpline<T>& piece) {
   const T one(1), minus(-1);
+  const JacobianMatrix<T> M = jacobian_matrix(piece);
   if (!piece.is_rational()) {
-    Bernstein<T> M[3][3];
-    for (int r = 0; r < 3; ++r) {
-      const Bernstein<T> x = homogeneous(piece, r + 1);
-      for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
-    }
     // det = sum over r of (-1)^r M[r][0] (M[s][1] M[t][2] - M[t][1] M[s][2]), {s, t} the other rows.
     Bernstein<T> minor[3];
     for (int r = 0; r < 3; ++r) {
@@ -86,11 +105,6 @@ Bernstein<T> jacobian_numerator_fused(const BSpline<T>& piece) {
       minor[r] = signed_products<T>({&M[s][1], &M[t][1]}, {&M[t][2], &M[s][2]}, {one, minus});
     }
     return signed_products<T>({&M[0][0], &M[1][0], &M[2][0]}, {&minor[0], &minor[1], &minor[2]}, {one, minus, one});
-  }
-  Bernstein<T> M[4][4];
-  for (int r = 0; r < 4; ++r) {
-    M[r][0] = homogeneous(piece, r);
-    for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
   }
   // Laplace along columns (0, 1), as jacobian_numerator; each 2x2 minor pairs factors of one column.
   Bernstein<T> left[6], right[6];
@@ -115,22 +129,11 @@ Bernstein<T> jacobian_numerator_fused(const BSpline<T>& piece) {
 /// rational: along columns (0, 1)): in floating point this fixes the order of the roundings.
 template <class T>
 Bernstein<T> jacobian_numerator_expanded(const BSpline<T>& piece) {
-  const bool rational = piece.is_rational();
-  // M[r][c]: row r = homogeneous coordinate (W, X, Y, Z) or (X, Y, Z); column c = (P,) P_u, P_v, P_w.
-  if (!rational) {
-    Bernstein<T> M[3][3];
-    for (int r = 0; r < 3; ++r) {
-      const Bernstein<T> x = homogeneous(piece, r + 1);
-      for (int c = 0; c < 3; ++c) M[r][c] = derivative(x, c);
-    }
+  const JacobianMatrix<T> M = jacobian_matrix(piece);
+  if (!piece.is_rational()) {
     Bernstein<T> det = mul(M[0][0], det2(M[1][1], M[1][2], M[2][1], M[2][2]));
     det = sub(det, mul(M[0][1], det2(M[1][0], M[1][2], M[2][0], M[2][2])));
     return add(det, mul(M[0][2], det2(M[1][0], M[1][1], M[2][0], M[2][1])));
-  }
-  Bernstein<T> M[4][4];
-  for (int r = 0; r < 4; ++r) {
-    M[r][0] = homogeneous(piece, r);
-    for (int c = 1; c < 4; ++c) M[r][c] = derivative(M[r][0], c - 1);
   }
   // Laplace expansion along columns (0, 1): sum over row pairs r1 < r2 of
   // (-1)^(r1 + r2 + 1) minor(r1, r2; 0, 1) minor(complement; 2, 3).
@@ -258,26 +261,20 @@ std::vector<JacobianBox<T>> jacobian_boxes(const BSpline<T>& V, const Limits& li
 }
 
 /// The eight children of a box at its midpoints, emitted in the order of splitting direction 0,
-/// then 1, then 2 (de Casteljau, exact in exact arithmetic). `keep_upper_u` false loses the
-/// children above the midpoint of u (the planted bug of vrep/model/planted.hpp, tests only).
+/// then 1, then 2 (bern_halves: de Casteljau at 1/2, on integers in exact arithmetic).
+/// `keep_upper_u` false loses the children above the midpoint of u (the planted bug of
+/// vrep/model/planted.hpp, tests only).
 template <class T, class Emit>
 void split_octants(JacobianBox<T>&& b, Emit&& emit, bool keep_upper_u = true) {
-  std::vector<JacobianBox<T>> parts;
-  parts.push_back(std::move(b));
-  for (int d = 0; d < 3; ++d) {
-    std::vector<JacobianBox<T>> next;
-    for (auto& p : parts) {
-      auto [L, R] = split_half(p.N, d);
-      const T mid = (p.lo[d] + p.hi[d]) / T(2);
-      JacobianBox<T> l{std::move(L), p.lo, p.hi}, r{std::move(R), p.lo, p.hi};
-      l.hi[d] = mid;
-      r.lo[d] = mid;
-      next.push_back(std::move(l));
-      if (d != 0 || keep_upper_u) next.push_back(std::move(r));
-    }
-    parts = std::move(next);
+  auto parts = bern_halves(b.N);  // part K: side (K >> (2 - d)) & 1 in direction d
+  std::array<T, 3> mid;
+  for (int d = 0; d < 3; ++d) mid[d] = (b.lo[d] + b.hi[d]) / T(2);
+  for (std::size_t K = 0; K < parts.size(); ++K) {
+    if (!keep_upper_u && (K >> 2) & 1) continue;
+    JacobianBox<T> c{std::move(parts[K]), b.lo, b.hi};
+    for (int d = 0; d < 3; ++d) ((K >> (2 - d)) & 1 ? c.lo[d] : c.hi[d]) = mid[d];
+    emit(std::move(c));
   }
-  for (auto& p : parts) emit(std::move(p));
 }
 
 }  // namespace vrep_detail
