@@ -1,8 +1,18 @@
-// Fraction-free degree elevation (exact/ffnet.hpp): NURBS Book A5.9 DegreeElevateCurve, line for
-// line as spline/elevate_impl.hpp writes it, on integer knots and integer points over their own
-// denominators. Every "a*P + (1-a)*Q" of A5.9 (knot insertion into the Bezier segment, and the knot
-// removal after elevation, where a may lie outside [0, 1]) is one Blend; each elevated Bezier point
-// is sum_j C(p,j) C(t,i-j) P_j over C(p+t,i), one integer combination.
+// Fraction-free degree elevation (exact/ffnet.hpp), two routes to the same exact values:
+//   - NURBS Book A5.9 DegreeElevateCurve, line for line as spline/elevate_impl.hpp writes it, on
+//     integer knots and integer points over their own denominators. Every "a*P + (1-a)*Q" of A5.9
+//     (knot insertion into the Bezier segment, and the knot removal after elevation, where a may
+//     lie outside [0, 1]) is one Blend; each elevated Bezier point is sum_j C(p,j) C(t,i-j) P_j over
+//     C(p+t,i), one integer combination.
+//   - Elevation by one through the blossom (spline/elevate_impl.hpp's LeaveOneOutBlossom, the
+//     floating-point default): each new point is the mean of p+1 blossom values of one piece at
+//     knots of the elevated vector. A5.9's intermediate points (the segment's Bezier points, the
+//     removal's extrapolations) carry denominators far longer than the result's, which at p = 7
+//     left FLINT's word range on every other blend; the blossom's triangles at knot arguments stay
+//     near the control points (a blend whose argument is one of its knots is a copy), so their
+//     integers stay short. Measured (bench_kernel, exact/double, t = 1): p = 3 12.7 -> 7, p = 7
+//     n = 10^4 216 -> 45; at p <= 2 A5.9 stays faster, and for t >= 2 repeated steps cost 2-7x
+//     A5.9 (each step's result is longer), so the blossom serves t = 1, p >= 3.
 #include <flint/fmpz.h>
 
 #include "exact/ff_common.hpp"
@@ -30,6 +40,7 @@ class Combination {
   void start() { first_ = true; }
   void add(const fmpz* c, const fmpz* P) {
     fmpz* a = acc_.data();
+    if (!first_ && words(a, c, P)) return;
     if (first_) {
       for (std::size_t k = 0; k < m_; ++k) mul(a + k, c, P + k);
       set(a + m_, P + m_);
@@ -60,6 +71,30 @@ class Combination {
   }
 
  private:
+  /// add() when every operand is a small word and every product fits one (false: nothing
+  /// written).
+  bool words(fmpz* a, const fmpz* c, const fmpz* P) const {
+    if (!fast() || m_ > 7 || !small(c) || any_big(a, m_ + 1) || any_big(P, m_ + 1)) return false;
+    const slong Ea = a[m_], EP = P[m_];
+    i128 fa = 1, fp = *c, E = Ea;
+    if (Ea != EP) {
+      const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(Ea), static_cast<std::uint64_t>(EP)));
+      fa = EP / g;
+      fp *= Ea / g;
+      E *= fa;
+      if (!fits(fp) || !fits(E)) return false;
+    }
+    slong v[8] = {};
+    for (std::size_t k = 0; k < m_; ++k) {
+      const i128 x = fa * a[k] + fp * P[k];
+      if (!fits(x)) return false;
+      v[k] = static_cast<slong>(x);
+    }
+    for (std::size_t k = 0; k < m_; ++k) a[k] = v[k];
+    a[m_] = static_cast<slong>(E);
+    return true;
+  }
+
   std::size_t m_;
   ZVec acc_;
   Z one_, ce_, g_, fp_;
@@ -239,6 +274,101 @@ Curve elevate_any(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t co
   return out;
 }
 
+/// spline/elevate_impl.hpp's LeaveOneOutBlossom on integers: sum over k of the degree-p blossom
+/// of the piece on span s at x[0..p] with x[k] left out, the p+1 triangles sharing their prefixes
+/// as there. Every entry is a point over its own denominator; a blend whose argument is one of its
+/// two knots is a copy (alpha 0 or 1), which the triangles at knot arguments meet often.
+class Blossoms {
+ public:
+  Blossoms(int p, const std::vector<Z>& U, const fmpz* P, std::size_t m)
+      : p_(p), U_(U), P_(P), m_(m), w_(m + 1), prefix_((p + 1) * w_), work_((p + 1) * w_), comb_(m) {}
+
+  /// out = (sum_k blossom(x without x[k])) / div on span s.
+  void sum(std::size_t s, const fmpz* x, const fmpz* div, fmpz* out) {
+    span_ = s;
+    const std::size_t all = static_cast<std::size_t>(p_ + 1) * w_;
+    copy_block(prefix_.data(), P_ + (s - p_) * w_, all);
+    comb_.start();
+    for (int k = 0; k <= p_; ++k) {
+      if (k == p_) {
+        comb_.add(one(), prefix_ + static_cast<std::size_t>(p_) * w_);
+        break;
+      }
+      fmpz* e = work_.data();
+      apply(prefix_.data(), e, k, x + k + 1);
+      for (int r = k + 2; r <= p_; ++r) apply(e, e, r - 1, x + r);
+      comb_.add(one(), e + static_cast<std::size_t>(p_) * w_);
+      apply(prefix_.data(), prefix_.data(), k, x + k);
+    }
+    comb_.finish(div, out);
+  }
+
+ private:
+  const fmpz* one() { fmpz_one(one_.get()); return one_.get(); }
+  /// Level `level` + 1 of de Boor's triangle at argument x (src may be dst: last entry first).
+  void apply(const fmpz* src, fmpz* dst, int level, const fmpz* x) {
+    const int r = level + 1;
+    for (int i = p_; i >= r; --i) {
+      const std::size_t idx = span_ - p_ + i;
+      const fmpz* lo = U_[idx].get();
+      const fmpz* hi = U_[idx + p_ - r + 1].get();
+      const fmpz* sm = src + (i - 1) * w_;
+      const fmpz* si = src + i * w_;
+      fmpz* di = dst + i * w_;
+      if (cmp(x, lo) == 0) {
+        if (di != sm) copy_block(di, sm, w_);
+      } else if (cmp(x, hi) == 0) {
+        if (di != si) copy_block(di, si, w_);
+      } else {
+        sub(s_.get(), x, lo);
+        sub(t_.get(), hi, lo);
+        blend_(di, sm, si, s_.get(), t_.get(), m_);
+      }
+    }
+  }
+
+  int p_;
+  const std::vector<Z>& U_;
+  const fmpz* P_;
+  std::size_t m_, w_;
+  ZVec prefix_, work_;
+  Combination comb_;
+  Blend blend_;
+  Z s_, t_, one_;
+  std::size_t span_ = 0;
+};
+
+/// Elevation by one through the blossom (spline/elevate_impl.hpp's elevate_by_one_blossom_fixed)
+/// on a clamped curve: every distinct knot once more, each new point the symmetrized blossom of a
+/// piece in its support over p+1.
+Curve by_one_blossom(int p, const std::vector<Z>& U, const fmpz* P, std::size_t count, std::size_t m) {
+  const std::size_t w = m + 1;
+  Curve out;
+  out.p = p + 1;
+  out.U.reserve(U.size() + U.size() / 2 + 2);
+  for (std::size_t i = 0; i < U.size(); ++i) {
+    out.U.push_back(U[i]);
+    if (i + 1 == U.size() || cmp(U[i].get(), U[i + 1].get()) < 0) out.U.push_back(U[i]);
+  }
+  const std::vector<Z>& V = out.U;
+  const std::size_t nbar = V.size() - (p + 1) - 1;
+  out.count = nbar;
+  out.P = ZVec(nbar * w);
+  ZVec x(static_cast<std::size_t>(p) + 1);
+  Z div;
+  fmpz_set_ui(div.get(), static_cast<ulong>(p) + 1);
+  Blossoms sum(p, U, P, m);
+  std::size_t s = p;
+  for (std::size_t j = 0; j < nbar; ++j) {
+    std::size_t l = j + p + 1;
+    while (l > std::max<std::size_t>(j, p + 1) && !(cmp(V[l].get(), V[l + 1].get()) < 0)) --l;
+    while (s + 1 < count && !(cmp(V[l].get(), U[s + 1].get()) < 0)) ++s;
+    for (int k = 0; k <= p; ++k) set(x + k, V[j + 1 + k].get());
+    sum.sum(s, x.data(), div.get(), out.P + j * w);
+  }
+  return out;
+}
+
 }  // namespace
 
 FFNet elevate_degree(const FFNet& F, int d, int t, const Limits& limits) {
@@ -261,7 +391,7 @@ FFNet elevate_degree(const FFNet& F, int d, int t, const Limits& limits) {
     for (std::size_t a = 0; a < f.before; ++a) {
       for (std::size_t i = 0; i < f.n; ++i)
         for (std::size_t c = 0; c < w; ++c) set(fibre + i * w + c, C.words + (b * f.n + i) * ps + a * w + c);
-      Curve e = elevate_any(p, U, fibre.data(), f.n, m, t);
+      const Curve e = t == 1 && p >= 3 ? by_one_blossom(p, U, fibre.data(), f.n, m) : elevate_any(p, U, fibre.data(), f.n, m, t);
       if (b == 0 && a == 0) {
         R.degrees = C.degrees;
         R.degrees[d] = e.p;

@@ -158,11 +158,14 @@ inline void reduce_point(fmpz* p, std::size_t m) {
     for (std::size_t c = 0; c <= m; ++c) fmpz_divexact(p + c, p + c, g.get());
 }
 
-/// reduce_point only when the denominator has grown past 2^30 (or is big): the integers stay short
+/// reduce_point only when the denominator has grown past 2^48 (or is big): the integers stay short
 /// enough for 64-bit products without a gcd per step (a gcd of four 60-bit words costs more than
-/// the blend that made them). Every point an operation stores goes through it.
+/// the blend that made them), and a blend's coefficients (knot differences, usually below 2^14)
+/// times such a point still fit FLINT's 62-bit words. Every point an operation stores goes through
+/// it. (2^30 reduced at p = 7 on most blends: bench_kernel exact/double, refine 11 -> 7, elevate
+/// 48 -> 37, evaluation 36 -> 31 at 2^48; beyond 2^50 nothing more is gained.)
 inline void reduce_if_long(fmpz* p, std::size_t m) {
-  if (!small(p + m) || p[m] > (slong(1) << 30)) reduce_point(p, m);
+  if (!small(p + m) || p[m] > (slong(1) << 48)) reduce_point(p, m);
 }
 
 /// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
@@ -179,6 +182,7 @@ struct Blend {
   Blend& operator=(const Blend&) = delete;
 
   void operator()(fmpz* out, const fmpz* P, const fmpz* Q, const fmpz* s, const fmpz* t, std::size_t m) {
+    if (m <= kWordsMax && words(out, P, Q, s, t, m)) return;
     sub(a, t, s);
     if (cmp(P + m, Q + m) == 0) {
       // Same denominator E: N = (t - s) N_P + s N_Q over t E.
@@ -204,6 +208,44 @@ struct Blend {
       mul(out + m, t, e);
     }
     reduce_if_long(out, m);
+  }
+
+ private:
+  static constexpr std::size_t kWordsMax = 7;
+  /// The blend when every operand is a small word and every product fits one: plain 64-bit words
+  /// and 128-bit products, no FLINT call. Returns false (nothing written) otherwise.
+  static bool words(fmpz* out, const fmpz* P, const fmpz* Q, const fmpz* s, const fmpz* t, std::size_t m) {
+    if (!fast() || !small(s) || !small(t) || any_big(P, m + 1) || any_big(Q, m + 1)) return false;
+    const slong S = *s, T = *t;
+    const slong EP = P[m], EQ = Q[m];
+
+    const i128 A = static_cast<i128>(T) - S;
+    i128 c1, c2, E;
+    if (EP == EQ) {
+      c1 = A;
+      c2 = S;
+      E = static_cast<i128>(T) * EP;
+    } else {
+      const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(EP), static_cast<std::uint64_t>(EQ)));
+      const slong ep = EP / g, eq = EQ / g;
+      c1 = A * eq;  // |A| < 2^63 and eq < 2^62: fits
+      c2 = static_cast<i128>(S) * ep;
+      if (!fits(c1) || !fits(c2)) return false;
+      E = static_cast<i128>(T) * ep;
+      if (!fits(E)) return false;
+      E *= EQ;
+    }
+    if (!fits(c1) || !fits(c2) || !fits(E)) return false;
+    slong v[kWordsMax + 1];
+    for (std::size_t c = 0; c < m; ++c) {
+      const i128 x = c1 * P[c] + c2 * Q[c];  // each product < 2^124: the sum fits
+      if (!fits(x)) return false;
+      v[c] = static_cast<slong>(x);
+    }
+    v[m] = static_cast<slong>(E);
+    for (std::size_t c = 0; c <= m; ++c) set_small(out + c, v[c]);
+    reduce_if_long(out, m);
+    return true;
   }
 };
 

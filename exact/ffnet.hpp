@@ -7,7 +7,7 @@
 //     N_c / E: the q Cartesian coordinates of a polynomial spline, or (w*P, w) of a rational one
 //     (m = q + 1), so a weight needs no division anywhere;
 //   - every K is the lcm of its knots' reduced denominators (a knot vector's form is unique); a
-//     point is divided by gcd(N_1..N_m, E) whenever its E passes 2^30, so its integers stay short
+//     point is divided by gcd(N_1..N_m, E) whenever its E passes 2^48, so its integers stay short
 //     without a gcd per step, and is made canonical (reduced mpq) only at the boundary;
 //   - the integers are FLINT fmpz words: a value below 2^62 in magnitude is the word itself, so a
 //     net of small values is an array of 64-bit integers, copied by memcpy, and the operations
@@ -20,7 +20,7 @@
 // kernel as the reference): `to_bspline(from_bspline(S)) == S` field by field.
 //
 // Status: knot insertion (one knot any number of times; many knots at once, A5.4), clamping,
-// Bezier form and pieces, degree elevation (A5.9), evaluation (de Boor, any dimension) and the
+// Bezier form and pieces, degree elevation (A5.9; by one at p >= 3 the blossom), evaluation (de Boor, any dimension) and the
 // conversions. Derivatives, integration and the certified engines are not ported.
 #pragma once
 #include <flint/fmpz.h>
@@ -165,7 +165,8 @@ FFBezierForm bezier_form(const FFNet& F, const Limits& limits = {});
 std::vector<FFNet> extract_bezier(const FFNet& F, const Limits& limits = {});
 
 /// The kernel's elevate_degree (spline/elevate.hpp) by A5.9 on the clamped net, cut at C^-1 knots
-/// as the kernel cuts it: the same result (values are exact, so the kernel's `method` does not
+/// as the kernel cuts it (by one at degree >= 3: the symmetrized blossom, which keeps the integers
+/// shorter): the same result (values are exact, so the kernel's `method` does not
 /// change them), errors and limits.
 FFNet elevate_degree(const FFNet& F, int d, int t, const Limits& limits = {});
 

@@ -78,7 +78,7 @@ void ff_agreement(const BSpline<Rational>& S, std::mt19937_64& rng, Accumulator&
   const auto X = legal_insertions(S, d, {x, x, random_inside(S.domain_lo(d), S.domain_hi(d), rng)});
   compare_nets(acc, refine_knots(S, d, X), ff::to_bspline(ff::refine_knots(F, d, X)), "refinement differs", i);
   const int t = 1 + static_cast<int>(rng() % 3);
-  compare_nets(acc, elevate_degree(S, d, t), ff::to_bspline(ff::elevate_degree(F, d, t)), "A5.9 differs", i);
+  compare_nets(acc, elevate_degree(S, d, t), ff::to_bspline(ff::elevate_degree(F, d, t)), "elevation differs", i);
   compare_nets(acc, clamp(S, d), ff::to_bspline(ff::clamp(F, d)), "clamping differs", i);
   const auto pe = extract_bezier(S);
   const auto pf = ff::extract_bezier(F);
@@ -107,7 +107,8 @@ std::vector<ProofEntry> arithmetic_proofs() {
       entry("ff-agreement",
             "the fraction-free kernel (integers over one denominator per point and per knot vector, the "
             "arithmetic `exact`) and GMP give identical knots, points and weights for: knot insertion (A5.1, up "
-            "to multiplicity p+1) and refinement (A5.4), elevation (A5.9), clamping, Bezier extraction; and "
+            "to multiplicity p+1) and refinement (A5.4), elevation (A5.9; by one at p >= 3 its integer blossom, against "
+            "GMP's A5.9), clamping, Bezier extraction; and "
             "identical values at 3 points per case (the operations it has; the others run GMP under `exact`)",
             "none (coefficient equality)",
             ff_agreement),

@@ -326,8 +326,8 @@ def main():
           "Data: random clamped curves in R^3 with dyadic knots and coordinates (k/1024), `bench/bench_kernel.cpp`; "
           "OCCT modifies in place, so its insert/refine/elevate include a copy of the curve; `extract` is the Bezier "
           "form in one object (splinex `bezier_form`, SISL s1730; OCCT's converter makes one arc object per piece), "
-          "`pieces` one BSpline per piece (splinex `extract_bezier`); elevation is splinex's default method (A5.9 in "
-          "exact arithmetic, the blossom in floating point). `exact` is the fraction-free kernel (exact/ffnet.hpp: "
+          "`pieces` one BSpline per piece (splinex `extract_bezier`); elevation by one is splinex's default method (GMP "
+          "and flint: A5.9; exact: the blossom at p >= 3, A5.9 below; double and MPFR: the blossom). `exact` is the fraction-free kernel (exact/ffnet.hpp: "
           "integers over one denominator per point and per knot vector), `GMP` and `flint` the naive exact kernels "
           "(one mpq / fmpq per coefficient).", "",
           "## Geometric mean over p and n", "",

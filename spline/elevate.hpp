@@ -7,7 +7,9 @@
 //    to, Q_j = 1/(p+1) sum_k f(u_{j+1}, .., u_{j+k}^, .., u_{j+p+1}) on the elevated knots,
 //    evaluated by de Boor's algorithm with a different argument at each level; t steps of one.
 //  - ElevationMethod::automatic (the default): A5.9 in exact arithmetic (the same result as the
-//    blossom, 2-4x faster there), the blossom in floating point, where A5.9's knot removal
+//    blossom, 2-4x faster there on mpq; the fraction-free kernel, exact/ffnet.hpp, elevates by one
+//    at p >= 3 through its own integer blossom, which is faster on its integers), the blossom in
+//    floating point, where A5.9's knot removal
 //    extrapolates and loses bits (measured in the report's elevation-accuracy section: up to about
 //    20 bits at degree 7 on random curves, the blossom 1-2) at about the same speed as SISL's s1750.
 // Each distinct knot's multiplicity grows by t. Unclamped directions are clamped first (the
