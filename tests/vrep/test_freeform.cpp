@@ -238,6 +238,48 @@ TEST_CASE("vrep freeform: a cell that folds is refused with two exact points of 
   CHECK_NOTHROW(freeform_solid<R>("body", {teapot_solids().body}));
 }
 
+TEST_CASE("vrep freeform: a fold between the grid points is refused by the certificate (issue 50)") {
+  // V(u, v, w) = (f(u), v, w) with f cubic and f'(u) = (u - 1/10)(u - 3/20): det J = f'(u) is
+  // positive at every u = i/4 of the 5 x 5 x 5 grid and negative on (1/10, 3/20), so the grid sees
+  // one sign and (before issue 50) accepted the cell; certify_cell_shape finds both signs.
+  auto cubic_in_u = [](std::vector<R> f) {
+    BSpline<R> V;
+    V.degrees = {3, 1, 1};
+    V.knots = {{R(0), R(0), R(0), R(0), R(1), R(1), R(1), R(1)}, {R(0), R(0), R(1), R(1)}, {R(0), R(0), R(1), R(1)}};
+    V.q = 3;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 4; ++i) V.points.insert(V.points.end(), {f[i], R(j), R(k)});
+    return V;
+  };
+  const auto folded = cubic_in_u({R(0), R(1, 200), R(-19, 600), R(67, 300)});
+  CHECK_THROWS_AS(freeform_solid<R>("thin-fold", {folded}), ValidationError);
+  CHECK_THROWS_WITH(freeform_solid<R>("thin-fold", {folded}), Catch::Contains("folds: det J changes sign"));
+  const auto U = freeform_solid<R>("U", {box({R(0), R(0), R(0)}, {R(1), R(1), R(1)})});
+  CHECK_THROWS_AS(freeform_cell<R>(folded, {{&U, true}}), ValidationError);
+  // The same shape without the fold (f(u) = u, elevated to degree 3) is accepted, and so is one
+  // whose det J is 0 only on a face (f'(u) = u^2: f = u^3 / 3, collapsed at u = 0).
+  CHECK_NOTHROW(freeform_solid<R>("straight", {cubic_in_u({R(0), R(1, 3), R(2, 3), R(1)})}));
+  CHECK_NOTHROW(freeform_solid<R>("touching", {cubic_in_u({R(0), R(0), R(0), R(1, 3)})}));
+}
+
+TEST_CASE("vrep freeform: numbers longer than Limits::max_input_bits are refused before the work, naming the field") {
+  auto V = box({R(0), R(0), R(0)}, {R(1), R(1), R(1)});
+  R big(1);
+  for (int i = 0; i < 5000; ++i) big *= 2;  // 2^5000: 5001 bits
+  V.points[3] = R(1) + R(1) / big;           // corner (1, 0, 0) moved 2^-5000 along x
+  try {
+    freeform_solid<R>("long", {V});
+    FAIL("a 5001-bit number was accepted");
+  } catch (const SizeLimitError& e) {
+    CHECK(std::string(e.what()).find("long.cells[0].points") != std::string::npos);
+  }
+  CHECK_THROWS_AS(freeform_cell<R>(V, {}), SizeLimitError);
+  Limits wide;
+  wide.max_input_bits = 6000;
+  CHECK_NOTHROW(freeform_solid<R>("long", {V}, wide));
+}
+
 TEST_CASE("vrep freeform: bad input is refused with typed errors naming the field") {
   const auto V = box({R(0), R(0), R(0)}, {R(1), R(1), R(1)});
   CHECK_THROWS_AS(freeform_solid<R>("empty", {}), ValidationError);

@@ -18,6 +18,7 @@
 #include "vrep/model/regularity_impl.hpp"
 #include "vrep/model/trivariate.hpp"
 #include "vrep/model/vmodel.hpp"
+#include "vrep/freeform/cell_checks_impl.hpp"
 #include "vrep/topology/box_components.hpp"
 
 namespace splinex {
@@ -76,58 +77,6 @@ std::pair<H4<T>, H4<T>> split_h(const H4<T>& h, int dir) {
   return out;
 }
 
-/// A cell that folds (det J takes both strict signs) is not a solid whose boundary is its faces:
-/// det J's numerator is evaluated exactly on a 5 x 5 x 5 grid of every Bezier piece (the piece's
-/// corners among them) and two values of opposite strict signs are a certified fold. A fold
-/// between the grid points is not excluded (injectivity is assumed, as papers/002 assumes valid
-/// V-cells); det J = 0 alone (a face collapsed to a curve or a point) is allowed.
-template <class T>
-void require_no_fold(const BSpline<T>& V, const std::string& name, const Limits& limits) {
-  const BezierForm<T> F = bezier_form(V, limits);
-  int seen = 0;  // bit 0: a positive value, bit 1: a negative one
-  std::vector<T> first[2];
-  for (std::size_t k = 0; k < F.size(); ++k) {
-    const auto pc = F.piece(k);
-    const Bernstein<T> N = vrep_detail::jacobian_numerator(pc.spline);
-    for (int i = 0; i < 125; ++i) {
-      const std::vector<T> x{T(i % 5) / T(4), T((i / 5) % 5) / T(4), T(i / 25) / T(4)};
-      const T v = bern_value(N, x);
-      const int sg = T(0) < v ? 1 : v < T(0) ? 2 : 0;
-      if (!sg) continue;
-      if (first[sg - 1].empty())
-        for (int d = 0; d < 3; ++d) first[sg - 1].push_back(pc.box[d].first + x[d] * (pc.box[d].second - pc.box[d].first));
-      seen |= sg;
-    }
-  }
-  if (seen == 3) {
-    auto text = [](const std::vector<T>& p) {
-      std::ostringstream o;
-      o << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return o.str();
-    };
-    throw DomainError(name, "folds: det J is positive at " + text(first[0]) + " and negative at " + text(first[1]) +
-                                " (exact values), so its faces are not its boundary",
-                      "give a valid trivariate (det J of one sign)");
-  }
-}
-
-template <class T>
-void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
-  try {
-    vrep_detail::require_jacobian_input(V, limits);
-  } catch (const ValidationError& e) {
-    throw ValidationError(name, e.what(), "");
-  }
-  for (int d = 0; d < 3; ++d)
-    if (!is_clamped(V.knots[d], V.degrees[d], V.count(d)))
-      throw ValidationError(name + ".knots[" + std::to_string(d) + "]", "is not clamped: its faces are not layers of the net",
-                            "clamp the trivariate first");
-  if (V.is_rational())
-    for (const auto& w : V.weights)
-      if (!(T(0) < w)) throw DomainError(name + ".weights", "has a weight that is not positive", "give positive weights");
-  if constexpr (!std::is_floating_point_v<T>) require_no_fold(V, name, limits);  // in double a rounded 0 would fake a fold
-}
-
 }  // namespace
 
 template <class T>
@@ -137,7 +86,7 @@ FreeformSolid<T> freeform_solid(std::string name, std::vector<BSpline<T>> cells,
   S.name = std::move(name);
   std::size_t pieces = 0;
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    require_cell(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
+    vrep_detail::require_cell(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
     std::size_t n = 1;
     for (int d = 0; d < 3; ++d) n = checked_product(n, cells[c].knots[d].size(), limits, "solid pieces");
     pieces += n;
@@ -675,7 +624,7 @@ class CellTrimming {
 template <class T>
 FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
                               const Limits& limits) {
-  require_cell(V, "trivariate", limits);
+  vrep_detail::require_cell(V, "trivariate", limits);
   if (options.max_boxes < 1) throw ValidationError("boxes", "must be at least 1", "give a positive box budget");
   for (std::size_t j = 0; j < conditions.size(); ++j)
     if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
@@ -687,7 +636,7 @@ FreeformCell<T> freeform_cell(const BSpline<T>& V, const std::vector<FreeformCon
 template <class T>
 FreeformEdges<T> freeform_edges(const BSpline<T>& V, const std::vector<FreeformCondition<T>>& conditions, const FreeformOptions& options,
                                 const Limits& limits) {
-  require_cell(V, "trivariate", limits);
+  vrep_detail::require_cell(V, "trivariate", limits);
   for (std::size_t j = 0; j < conditions.size(); ++j)
     if (!conditions[j].solid) throw ValidationError("conditions[" + std::to_string(j) + "].solid", "is null", "give a solid");
   FreeformEdges<T> out;
