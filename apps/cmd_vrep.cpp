@@ -34,7 +34,7 @@ namespace splinex::app {
 namespace {
 
 struct ConstructOptions {
-  std::string kind, arith = "exact", surface, first, second, faces, surfaces, vector, at, axis = "z";
+  std::string kind, arith = "exact", surface, first, second, faces, curves, surfaces, vector, at, axis = "z";
   int quarters = 4, degree = 3;
 };
 
@@ -102,6 +102,21 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
       std::array<std::array<BSpline<T>, 2>, 3> G;
       for (int k = 0; k < 6; ++k) G[k / 2][k % 2] = round_spline<T>(F[k / 2][k % 2], names[k]);
       return document(boolean_sum(G, ctx.limits));
+    });
+  }
+  if (o.kind == "coons") {
+    need(o.curves, "curves", o.kind);
+    const auto files = split_list(o.curves);
+    if (files.size() != 4)
+      throw UsageError("curves", "needs four files, got " + std::to_string(files.size()), "give --curves u0,u1,v0,v1");
+    const char* names[4] = {"u0", "u1", "v0", "v1"};
+    std::array<std::array<BSpline<Rational>, 2>, 2> C;
+    for (int k = 0; k < 4; ++k) C[k / 2][k % 2] = read_spline(files[k], names[k], ctx);
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
+      using T = typename decltype(tag)::type;
+      std::array<std::array<BSpline<T>, 2>, 2> G;
+      for (int k = 0; k < 4; ++k) G[k / 2][k % 2] = round_spline<T>(C[k / 2][k % 2], names[k]);
+      return document(coons_surface(G, ctx.limits));
     });
   }
   // sweep
@@ -175,10 +190,11 @@ vrep::Operand operand(const std::string& file, const Context& ctx) { return vrep
 /// `splinex vrep construct`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_construct(CLI::App* v) {
   auto o = std::make_shared<ConstructOptions>();
-  auto* c = v->add_subcommand("construct", "a trivariate from surfaces: extrude, ruled, revolve, boolean-sum or sweep");
-  c->add_option("kind", o->kind, "extrude, ruled, revolve, boolean-sum or sweep")
+  auto* c = v->add_subcommand("construct", "a trivariate from surfaces: extrude, ruled, revolve, boolean-sum or sweep; or a surface "
+                                             "from four curves: coons");
+  c->add_option("kind", o->kind, "extrude, ruled, revolve, boolean-sum, sweep or coons")
       ->required()
-      ->check(CLI::IsMember({"extrude", "ruled", "revolve", "boolean-sum", "sweep"}));
+      ->check(CLI::IsMember({"extrude", "ruled", "revolve", "boolean-sum", "sweep", "coons"}));
   add_arith_option(c, o->arith, "exact (GMP), double or mpfr:BITS");
   c->add_option("--surface", o->surface, "extrude, revolve: the surface document (points in R^3, attributes after)");
   c->add_option("--vector", o->vector, "extrude: the vector V, comma-separated (one entry per point coordinate)");
@@ -190,6 +206,8 @@ Command vrep_construct(CLI::App* v) {
       ->capture_default_str();
   c->add_option("--faces", o->faces, "boolean-sum: six surface files u0,u1,v0,v1,w0,w1 (u faces in (v, w), v faces in (u, w), "
                                      "w faces in (u, v))");
+  c->add_option("--curves", o->curves, "coons: four curve files u0,u1,v0,v1 (the boundaries at u = 0, 1, curves in v; at v = 0, 1, "
+                                       "curves in u), meeting at the corners");
   c->add_option("--surfaces", o->surfaces, "sweep: the surface files S_0,...,S_m");
   c->add_option("--at", o->at, "sweep: the parameters w_0 < ... < w_m, comma-separated");
   c->add_option("--degree", o->degree, "sweep: the degree in w (at most m)")->check(CLI::Range(1, 64))->capture_default_str();

@@ -241,6 +241,91 @@ TEST_CASE("vrep boolean sum: the trivariate Coons volume reproduces its six face
   }
 }
 
+namespace {
+
+/// The four boundary curves of a clamped surface: [0][s] at u = s (a curve in v), [1][s] at v = s
+/// (a curve in u), read off the net's boundary rows.
+std::array<std::array<BSpline<R>, 2>, 2> boundary_curves(const BSpline<R>& S) {
+  std::array<std::array<BSpline<R>, 2>, 2> C;
+  const std::size_t nu = S.count(0), nv = S.count(1), qq = static_cast<std::size_t>(S.q);
+  for (int s = 0; s < 2; ++s) {
+    for (int d = 0; d < 2; ++d) {
+      C[d][s].degrees = {S.degrees[1 - d]};
+      C[d][s].knots = {S.knots[1 - d]};
+      C[d][s].q = S.q;
+    }
+    for (std::size_t j = 0; j < nv; ++j)
+      for (std::size_t c = 0; c < qq; ++c) C[0][s].points.push_back(S.points[((s ? nu - 1 : 0) + nu * j) * qq + c]);
+    for (std::size_t i = 0; i < nu; ++i)
+      for (std::size_t c = 0; c < qq; ++c) C[1][s].points.push_back(S.points[(i + nu * (s ? nv - 1 : 0)) * qq + c]);
+  }
+  return C;
+}
+
+}  // namespace
+
+TEST_CASE("vrep coons_surface: interpolates its four curves, reproduces what it can represent, exactly") {
+  std::mt19937_64 rng(5013);
+  auto r = [&] { return R(static_cast<long>(rng() % 2001) - 1000, 97); };
+  // A bicubic surface with interior knots and random points: not a Coons surface itself, but the
+  // Coons surface of its boundary has that boundary, and is its own Coons surface (idempotence).
+  const std::vector<std::vector<R>> K{{0, 0, 0, 0, q("1/3"), q("1/2"), 1, 1, 1, 1}, {0, 0, 0, 0, q("2/5"), 1, 1, 1, 1}};
+  const auto S = spline_from<R>({3, 3}, K, 3, [&](const std::vector<std::size_t>&) { return std::vector<R>{r(), r(), r()}; });
+  const auto C = boundary_curves(S);
+  const auto P = coons_surface(C);
+  const auto B = boundary_curves(P);
+  for (int d = 0; d < 2; ++d)
+    for (int s = 0; s < 2; ++s) CHECK(same_function(B[d][s], C[d][s]));
+  CHECK_FALSE(same_function(P, S));  // the interior of S is not bilinearly blended
+  CHECK(same_function(coons_surface(B), P));
+  // A surface ruled between two curves (degree 1 in v) is its own Coons surface (linear precision),
+  // and so is a bilinear patch.
+  const auto ruled_uv = spline_from<R>({3, 1}, {K[0], {0, 0, 1, 1}}, 3, [&](const std::vector<std::size_t>&) {
+    return std::vector<R>{r(), r(), r()};
+  });
+  CHECK(same_function(coons_surface(boundary_curves(ruled_uv)), ruled_uv));
+  const auto bilinear = spline_from<R>({1, 1}, {{0, 0, 1, 1}, {0, 0, 1, 1}}, 4, [&](const std::vector<std::size_t>&) {
+    return std::vector<R>{r(), r(), r(), r()};
+  });
+  CHECK(same_net(coons_surface(boundary_curves(bilinear)), bilinear));
+  // Curves of different degrees and knots are made compatible; the surface still has them.
+  auto G = C;
+  G[0][1] = elevate_degree(G[0][1], 0, 2);
+  G[1][0] = refine_knots(G[1][0], 0, {q("1/7"), q("5/7")});
+  const auto PG = coons_surface(G);
+  const auto BG = boundary_curves(PG);
+  for (int d = 0; d < 2; ++d)
+    for (int s = 0; s < 2; ++s) CHECK(same_function(BG[d][s], G[d][s]));
+  CHECK(same_function(PG, P));  // the same four functions: the same surface
+}
+
+TEST_CASE("vrep coons_surface: bad curves are refused, naming them") {
+  const auto S = spline_from<R>({2, 1}, {{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}}, 3, [](const std::vector<std::size_t>& i) {
+    return std::vector<R>{R(static_cast<long>(i[0])), R(static_cast<long>(i[1])), R(static_cast<long>(i[0] * i[1]))};
+  });
+  const auto C = boundary_curves(S);
+  auto expect = [](const std::array<std::array<BSpline<R>, 2>, 2>& bad, const std::string& field) {
+    try {
+      coons_surface(bad);
+      FAIL("accepted bad curves");
+    } catch (const ValidationError& e) {
+      CHECK(std::string(e.what()).find(field) != std::string::npos);
+    }
+  };
+  auto gap = C;
+  gap[1][1].points.back() += 1;  // the curve at v = 1 misses the corner (1, 1)
+  expect(gap, "u1,v1");
+  auto rational = C;
+  rational[0][0].weights.assign(rational[0][0].size(), R(2));
+  expect(rational, "u0.weights");
+  auto surface = C;
+  surface[1][0] = S;
+  expect(surface, "v0.degrees");
+  auto shifted = C;
+  for (auto& k : shifted[0][1].knots[0]) k += 1;  // the curve at u = 1 on [1, 2]
+  expect(shifted, "u1.knots");
+}
+
 TEST_CASE("vrep sweep: interpolating sections of a volume reproduces it, exactly") {
   // V(u, v, w) = sum_l B_l^3(w) P_l(u, v): cubic in w, four sections at w_k determine it.
   const auto S = warped_surface();

@@ -24,6 +24,11 @@
 //    must share their edges exactly. T = P_u + P_v + P_w - P_uv - P_vw - P_wu + P_uvw in control
 //    points, the linear blends represented exactly through the Greville abscissae (linear
 //    precision).
+//  - coons_surface(C): the bilinearly blended Coons surface of four boundary curves C[0][s] (at u =
+//    s, curves in v) and C[1][s] (at v = s, curves in u), polynomial, made compatible per direction;
+//    the curves must meet exactly at the four corners. S = P_u + P_v - P_uv in control points, the
+//    linear blends exact through the Greville abscissae, as boolean_sum's (the caps and the faces
+//    that boolean_sum's volumes are built from, papers/002 Figure 13).
 //  - sweep(S_k, w_k, degree): T interpolating the surfaces S_k at w_k (increasing, w_0 = 0, last =
 //    1), knots by averaging (NURBS Book 9.8), one linear system per control point solved by
 //    Gaussian elimination (exact in exact arithmetic); rational surfaces interpolated in
@@ -56,6 +61,10 @@ BSpline<T> rational_circle(int quarters = 4);
 
 template <class T>
 BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>& faces, const Limits& limits = {});
+
+/// curves[0][s]: the boundary at u = s (a curve in v); curves[1][s]: at v = s (a curve in u).
+template <class T>
+BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves, const Limits& limits = {});
 
 template <class T>
 BSpline<T> sweep(const std::vector<BSpline<T>>& surfaces, const std::vector<T>& at, int degree = 3, const Limits& limits = {});

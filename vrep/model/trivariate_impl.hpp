@@ -358,6 +358,70 @@ BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>& faces, co
 }
 
 template <class T>
+BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves, const Limits& limits) {
+  std::array<std::array<BSpline<T>, 2>, 2> C = curves;
+  const char* names[2][2] = {{"u0", "u1"}, {"v0", "v1"}};
+  for (int d = 0; d < 2; ++d)
+    for (int s = 0; s < 2; ++s) {
+      const std::string name = names[d][s];
+      validate(C[d][s]);
+      if (C[d][s].dim() != 1)
+        throw ValidationError(name + ".degrees", "has " + std::to_string(C[d][s].dim()) + " parametric directions, a boundary curve has 1",
+                              "give a curve C(t)");
+      if (C[d][s].is_rational())
+        throw ValidationError(name + ".weights", "is rational; the Coons surface blends control points linearly", "give polynomial curves");
+      if (C[d][s].q != C[0][0].q) throw ValidationError(name + ".points", "has another point size than u0", "give curves in the same space");
+      C[d][s] = clamp_all(C[d][s], limits);
+    }
+  // Direction v is carried by the curves at u = 0, 1; direction u by those at v = 0, 1.
+  for (int d = 0; d < 2; ++d) {
+    auto& A = C[d][0];
+    auto& B = C[d][1];
+    if (!(A.domain_lo(0) == B.domain_lo(0)) || !(A.domain_hi(0) == B.domain_hi(0)))
+      throw ValidationError(std::string(names[d][1]) + ".knots", std::string("has another parameter interval than ") + names[d][0],
+                            "give opposite curves on the same interval");
+    const int degree = std::max({1, A.degrees[0], B.degrees[0]});  // linear precision needs degree >= 1
+    A = vrep_detail::to_space(A, 0, degree, {}, limits);
+    B = vrep_detail::to_space(B, 0, degree, {}, limits);
+    const auto U = vrep_detail::knot_union(std::vector<std::vector<T>>{A.knots[0], B.knots[0]});
+    A = vrep_detail::to_space(A, 0, degree, U, limits);
+    B = vrep_detail::to_space(B, 0, degree, U, limits);
+  }
+  const int q = C[0][0].q;
+  const std::size_t nu = C[1][0].count(0), nv = C[0][0].count(0);
+  limits.check_count(nu * nv, "surface");
+  auto cu = [&](int a, std::size_t j) { return &C[0][a].points[j * q]; };  // at u = a, point j along v
+  auto cv = [&](int b, std::size_t i) { return &C[1][b].points[i * q]; };  // at v = b, point i along u
+  const std::size_t ends_u[2] = {0, nu - 1}, ends_v[2] = {0, nv - 1};
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      for (int c = 0; c < q; ++c)
+        if (!(cu(a, ends_v[b])[c] == cv(b, ends_u[a])[c]))
+          throw ValidationError(std::string(names[0][a]) + "," + names[1][b], "the two curves do not meet at their common corner",
+                                "give curves whose ends meet exactly");
+  const auto s = vrep_detail::unit_greville(C[1][0], 0), t = vrep_detail::unit_greville(C[0][0], 0);
+  BSpline<T> R;
+  R.degrees = {C[1][0].degrees[0], C[0][0].degrees[0]};
+  R.knots = {C[1][0].knots[0], C[0][0].knots[0]};
+  R.q = q;
+  R.points.assign(nu * nv * q, T(0));
+  for (std::size_t j = 0; j < nv; ++j)
+    for (std::size_t i = 0; i < nu; ++i) {
+      const T ls[2] = {T(1) - s[i], s[i]}, lt[2] = {T(1) - t[j], t[j]};
+      for (int c = 0; c < q; ++c) {
+        T v(0);
+        for (int a = 0; a < 2; ++a) {
+          v += ls[a] * cu(a, j)[c] + lt[a] * cv(a, i)[c];
+          for (int b = 0; b < 2; ++b) v -= ls[a] * lt[b] * cu(a, ends_v[b])[c];
+        }
+        R.points[(i + nu * j) * q + c] = v;
+      }
+    }
+  validate(R, limits);
+  return R;
+}
+
+template <class T>
 BSpline<T> sweep(const std::vector<BSpline<T>>& surfaces, const std::vector<T>& at, int degree, const Limits& limits) {
   const std::size_t m1 = surfaces.size();
   if (m1 < 2) throw ValidationError("surfaces", "a sweep needs at least two surfaces", "give surfaces S_0, ..., S_m");
