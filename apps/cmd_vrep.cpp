@@ -104,6 +104,14 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
       return document(boolean_sum(G, ctx.limits));
     });
   }
+  if (o.kind == "tube") {
+    need(o.surface, "surface", o.kind);
+    const auto S = read_spline(o.surface, "surface", ctx);
+    return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
+      using F = typename decltype(tag)::type;
+      return document(tube_boolean_sum(round_spline<F>(S, "surface"), ctx.limits));
+    });
+  }
   if (o.kind == "coons") {
     need(o.curves, "curves", o.kind);
     const auto files = split_list(o.curves);
@@ -190,13 +198,14 @@ vrep::Operand operand(const std::string& file, const Context& ctx) { return vrep
 /// `splinex vrep construct`: its options, and what it runs (the work is in vrep/ and vrep/io/).
 Command vrep_construct(CLI::App* v) {
   auto o = std::make_shared<ConstructOptions>();
-  auto* c = v->add_subcommand("construct", "a trivariate from surfaces: extrude, ruled, revolve, boolean-sum or sweep; or a surface "
-                                             "from four curves: coons");
-  c->add_option("kind", o->kind, "extrude, ruled, revolve, boolean-sum, sweep or coons")
+  auto* c = v->add_subcommand("construct", "a trivariate from surfaces: extrude, ruled, revolve, boolean-sum, tube or sweep; or a "
+                                             "surface from four curves: coons");
+  c->add_option("kind", o->kind, "extrude, ruled, revolve, boolean-sum, tube, sweep or coons")
       ->required()
-      ->check(CLI::IsMember({"extrude", "ruled", "revolve", "boolean-sum", "sweep", "coons"}));
+      ->check(CLI::IsMember({"extrude", "ruled", "revolve", "boolean-sum", "tube", "sweep", "coons"}));
   add_arith_option(c, o->arith, "exact (GMP), double or mpfr:BITS");
-  c->add_option("--surface", o->surface, "extrude, revolve: the surface document (points in R^3, attributes after)");
+  c->add_option("--surface", o->surface, "extrude, revolve, tube: the surface document (points in R^3, attributes after; tube: "
+                                         "closed around u, polynomial)");
   c->add_option("--vector", o->vector, "extrude: the vector V, comma-separated (one entry per point coordinate)");
   c->add_option("--first", o->first, "ruled: the surface at w = 0");
   c->add_option("--second", o->second, "ruled: the surface at w = 1");

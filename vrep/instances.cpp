@@ -131,6 +131,7 @@ const char* regularity_name(const Verdict& v) {
   template BSpline<T> rational_circle(int);                                                                          \
   template BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>&, const Limits&);                   \
   template BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>&, const Limits&);                 \
+  template BSpline<T> tube_boolean_sum(const BSpline<T>&, const Limits&);                                            \
   template BSpline<T> sweep(const std::vector<BSpline<T>>&, const std::vector<T>&, int, const Limits&);              \
   template BSpline<T> face(const BSpline<T>&, int, int);                                                             \
   template RegularityReport<T> certify_regularity(const BSpline<T>&, int, const Limits&);                            \

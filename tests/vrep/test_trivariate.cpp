@@ -6,6 +6,7 @@
 #include <random>
 
 #include "spline/kernel.hpp"
+#include "fixtures/teapot.hpp"
 #include "tests/helpers.hpp"
 #include "vrep/model/regularity.hpp"
 #include "vrep/model/regularity_impl.hpp"  // vrep_detail::jacobian_numerator_fused, _expanded
@@ -324,6 +325,47 @@ TEST_CASE("vrep coons_surface: bad curves are refused, naming them") {
   auto shifted = C;
   for (auto& k : shifted[0][1].knots[0]) k += 1;  // the curve at u = 1 on [1, 2]
   expect(shifted, "u1.knots");
+}
+
+TEST_CASE("vrep tube_boolean_sum: a square tube gives the box, a curved tube keeps its strips as faces") {
+  // A square tube around the z axis: degree 1 around (corners at u = 0..4, closed), 1 along.
+  const auto tube = spline_from<R>({1, 1}, {{0, 0, 1, 2, 3, 4, 4}, {0, 0, 1, 1}}, 3, [](const std::vector<std::size_t>& i) {
+    const long x[5] = {-1, 1, 1, -1, -1}, y[5] = {-1, -1, 1, 1, -1};
+    return std::vector<R>{R(x[i[0]]), R(y[i[0]]), R(2 * static_cast<long>(i[1]))};
+  });
+  const auto T = tube_boolean_sum(tube);
+  // The box [-1, 1]^2 x [0, 2] as T(u, v, w) = (2u - 1, 2v - 1, 2w), exactly at random points.
+  std::mt19937_64 rng(5021);
+  for (int k = 0; k < 20; ++k) {
+    const R u(static_cast<long>(rng() % 97), 96), v(static_cast<long>(rng() % 97), 96), w(static_cast<long>(rng() % 97), 96);
+    CHECK(evaluate(T, {u, v, w}) == std::vector<R>{2 * u - 1, 2 * v - 1, 2 * w});
+  }
+  CHECK(certify_regularity(T).verdict.is_proved());
+  // The teapot's handle (a closed bicubic tube): the four side faces are its quarter strips, on
+  // [0, 1]^2, the caps are the Coons surfaces of their ends.
+  BSpline<R> handle;
+  for (const auto& t : teapot_surfaces(read_bpt(data_path("teapot.bpt"))))
+    if (t.name == "handle") handle = t.surface;
+  REQUIRE(handle.dim() == 2);
+  const auto H = tube_boolean_sum(handle);
+  const R lo = handle.domain_lo(0), hi = handle.domain_hi(0);
+  auto strip = [&](int k) {
+    auto P = handle;  // cut at lo + k/4 and lo + (k+1)/4 of the way around, where those are inside
+    if (k > 0) P = split_at(P, 0, lo + (hi - lo) * R(k, 4)).second;
+    if (k < 3) P = split_at(P, 0, lo + (hi - lo) * R(k + 1, 4)).first;
+    return reparametrize(reparametrize(P, 0, R(0), R(1)), 1, R(0), R(1));
+  };
+  CHECK(same_function(face(H, 1, 0), strip(0)));
+  CHECK(same_function(face(H, 0, 1), strip(1)));
+  CHECK(same_function(face(H, 1, 1), reverse(strip(2), 0)));
+  CHECK(same_function(face(H, 0, 0), reverse(strip(3), 0)));
+  // Not closed, or rational: refused, naming the surface.
+  auto open = tube;
+  open.points[0] = R(-2);
+  CHECK_THROWS_WITH(tube_boolean_sum(open), Catch::Contains("surface: is not closed around"));
+  auto weighted = tube;
+  weighted.weights.assign(weighted.size(), R(1));
+  CHECK_THROWS_WITH(tube_boolean_sum(weighted), Catch::Contains("surface.weights"));
 }
 
 TEST_CASE("vrep sweep: interpolating sections of a volume reproduces it, exactly") {

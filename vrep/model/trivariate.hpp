@@ -29,6 +29,12 @@
 //    the curves must meet exactly at the four corners. S = P_u + P_v - P_uv in control points, the
 //    linear blends exact through the Greville abscissae, as boolean_sum's (the caps and the faces
 //    that boolean_sum's volumes are built from, papers/002 Figure 13).
+//  - tube_boolean_sum(S): papers/002's "volumetric Boolean sum version of the B-rep surface" (the
+//    teapot's handle, Figure 14; the duck, Figure 13) for a closed polynomial tube S(u, v) (u once
+//    around, S(lo, v) = S(hi, v) exactly; v along the tube): u cut at its quarters into four strips,
+//    the side faces v = 0, u = 1, v = 1, u = 0 of the volume (the last two reversed), both domains
+//    mapped to [0, 1]; the end caps w = 0, 1 the Coons surfaces of the strips' end curves; then
+//    boolean_sum. Not closed, rational or not a surface: ValidationError naming `surface`.
 //  - sweep(S_k, w_k, degree): T interpolating the surfaces S_k at w_k (increasing, w_0 = 0, last =
 //    1), knots by averaging (NURBS Book 9.8), one linear system per control point solved by
 //    Gaussian elimination (exact in exact arithmetic); rational surfaces interpolated in
@@ -65,6 +71,9 @@ BSpline<T> boolean_sum(const std::array<std::array<BSpline<T>, 2>, 3>& faces, co
 /// curves[0][s]: the boundary at u = s (a curve in v); curves[1][s]: at v = s (a curve in u).
 template <class T>
 BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves, const Limits& limits = {});
+
+template <class T>
+BSpline<T> tube_boolean_sum(const BSpline<T>& S, const Limits& limits = {});
 
 template <class T>
 BSpline<T> sweep(const std::vector<BSpline<T>>& surfaces, const std::vector<T>& at, int degree = 3, const Limits& limits = {});

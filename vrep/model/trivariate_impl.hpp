@@ -5,6 +5,7 @@
 
 #include "base/errors.hpp"
 #include "spline/basis.hpp"
+#include "spline/bezier.hpp"
 #include "spline/elevate.hpp"
 #include "spline/insert.hpp"
 #include "spline/integrate.hpp"
@@ -419,6 +420,56 @@ BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves,
     }
   validate(R, limits);
   return R;
+}
+
+namespace vrep_detail {
+
+/// The boundary curve of a clamped surface at v = side (a curve in u): a row of the net.
+template <class T>
+BSpline<T> row_curve(const BSpline<T>& S, int side) {
+  BSpline<T> C;
+  C.degrees = {S.degrees[0]};
+  C.knots = {S.knots[0]};
+  C.q = S.q;
+  const std::size_t n0 = S.count(0), j = side == 0 ? 0 : S.count(1) - 1, q = static_cast<std::size_t>(S.q);
+  C.points.assign(S.points.begin() + static_cast<std::ptrdiff_t>(j * n0 * q), S.points.begin() + static_cast<std::ptrdiff_t>((j + 1) * n0 * q));
+  return C;
+}
+
+}  // namespace vrep_detail
+
+template <class T>
+BSpline<T> tube_boolean_sum(const BSpline<T>& surface, const Limits& limits) {
+  vrep_detail::require_surface(surface, "surface");
+  if (surface.is_rational())
+    throw ValidationError("surface.weights", "is rational; the Boolean sum blends control points linearly", "give a polynomial tube");
+  const BSpline<T> S = clamp_all(surface, limits);
+  const std::size_t n0 = S.count(0), q = static_cast<std::size_t>(S.q);
+  for (std::size_t j = 0; j < S.count(1); ++j)
+    for (std::size_t c = 0; c < q; ++c)
+      if (!(S.points[j * n0 * q + c] == S.points[(j * n0 + n0 - 1) * q + c]))
+        throw ValidationError("surface", "is not closed around: its curves u = lo and u = hi differ",
+                              "give a tube whose first and last columns of control points are equal");
+  const T lo = S.domain_lo(0), hi = S.domain_hi(0);
+  // The four strips u in [lo + k (hi - lo)/4, lo + (k+1) (hi - lo)/4], on [0, 1] x [0, 1].
+  std::array<BSpline<T>, 4> strip;
+  BSpline<T> rest = S;
+  for (int k = 0; k < 4; ++k) {
+    BSpline<T> part = rest;
+    if (k < 3) std::tie(part, rest) = split_at(rest, 0, lo + (hi - lo) * T(k + 1) / T(4), limits);
+    part = reparametrize(part, 0, T(0), T(1));
+    strip[k] = reparametrize(part, 1, T(0), T(1));
+  }
+  std::array<std::array<BSpline<T>, 2>, 3> F;
+  F[1][0] = strip[0];              // v = 0: u runs along the first strip
+  F[0][1] = strip[1];              // u = 1: v along the second
+  F[1][1] = reverse(strip[2], 0);  // v = 1: the third strip, backwards
+  F[0][0] = reverse(strip[3], 0);  // u = 0: the fourth, backwards
+  for (int w = 0; w < 2; ++w)
+    F[2][w] = coons_surface<T>({{{vrep_detail::row_curve(F[0][0], w), vrep_detail::row_curve(F[0][1], w)},
+                                 {vrep_detail::row_curve(F[1][0], w), vrep_detail::row_curve(F[1][1], w)}}},
+                               limits);
+  return boolean_sum(F, limits);
 }
 
 template <class T>
