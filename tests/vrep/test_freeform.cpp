@@ -253,10 +253,10 @@ TEST_CASE("vrep freeform: a fold between the grid points is refused by the certi
     return V;
   };
   const auto folded = cubic_in_u({R(0), R(1, 200), R(-19, 600), R(67, 300)});
-  CHECK_THROWS_AS(freeform_solid<R>("thin-fold", {folded}), ValidationError);
+  CHECK_THROWS_AS(freeform_solid<R>("thin-fold", {folded}), DomainError);  // as the grid's folds
   CHECK_THROWS_WITH(freeform_solid<R>("thin-fold", {folded}), Catch::Contains("folds: det J changes sign"));
   const auto U = freeform_solid<R>("U", {box({R(0), R(0), R(0)}, {R(1), R(1), R(1)})});
-  CHECK_THROWS_AS(freeform_cell<R>(folded, {{&U, true}}), ValidationError);
+  CHECK_THROWS_AS(freeform_cell<R>(folded, {{&U, true}}), DomainError);
   // The same shape without the fold (f(u) = u, elevated to degree 3) is accepted, and so is one
   // whose det J is 0 only on a face (f'(u) = u^2: f = u^3 / 3, collapsed at u = 0).
   CHECK_NOTHROW(freeform_solid<R>("straight", {cubic_in_u({R(0), R(1, 3), R(2, 3), R(1)})}));
@@ -278,6 +278,16 @@ TEST_CASE("vrep freeform: numbers longer than Limits::max_input_bits are refused
   Limits wide;
   wide.max_input_bits = 6000;
   CHECK_NOTHROW(freeform_solid<R>("long", {V}, wide));
+  // A solid's second cell is checked before the first cell's work (a fold the grid would see).
+  auto folding = V;
+  folding.points[3] = R(-2);  // corner (1, 0, 0) pulled to x = -2: det J changes sign
+  folding.points[4] = R(0);
+  try {
+    freeform_solid<R>("two", {folding, V});
+    FAIL("accepted a long number");
+  } catch (const SizeLimitError& e) {
+    CHECK(std::string(e.what()).find("two.cells[1].points") != std::string::npos);
+  }
 }
 
 TEST_CASE("vrep freeform: bad input is refused with typed errors naming the field") {

@@ -3,6 +3,7 @@
 // kernel's derivatives, evaluated exactly).
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "spline/kernel.hpp"
@@ -359,6 +360,30 @@ TEST_CASE("vrep tube_boolean_sum: a square tube gives the box, a curved tube kee
   CHECK(same_function(face(H, 0, 1), strip(1)));
   CHECK(same_function(face(H, 1, 1), reverse(strip(2), 0)));
   CHECK(same_function(face(H, 0, 0), reverse(strip(3), 0)));
+  // Its caps are the Coons surfaces of the strips' ends (the side faces' rows at w = 0, 1).
+  for (int w = 0; w < 2; ++w) {
+    auto row = [&](const BSpline<R>& F) {  // the curve at w = side of a face in (x, w)
+      BSpline<R> C;
+      C.degrees = {F.degrees[0]};
+      C.knots = {F.knots[0]};
+      C.q = F.q;
+      const std::size_t n0 = F.count(0), j = w == 0 ? 0 : F.count(1) - 1;
+      C.points.assign(F.points.begin() + static_cast<std::ptrdiff_t>(j * n0 * 3), F.points.begin() + static_cast<std::ptrdiff_t>((j + 1) * n0 * 3));
+      return C;
+    };
+    const auto cap = coons_surface<R>({{{row(reverse(strip(3), 0)), row(strip(1))}, {row(strip(0)), row(reverse(strip(2), 0))}}});
+    CHECK(same_function(face(H, 2, w), cap));
+  }
+  // In double the same construction runs (the caps' edges are the curves' own values, so the Boolean
+  // sum's exact edge comparison meets them) and stays within rounding of the exact volume.
+  auto to_d = [](const BSpline<R>& X) { return convert<double>(X, [](const R& x) { return x.convert_to<double>(); }); };
+  const auto Hd = tube_boolean_sum(to_d(handle));
+  for (int k = 0; k < 10; ++k) {
+    const R u(static_cast<long>(rng() % 97), 96), v(static_cast<long>(rng() % 97), 96), w(static_cast<long>(rng() % 97), 96);
+    const auto e = evaluate(H, {u, v, w});
+    const auto d = evaluate(Hd, {u.convert_to<double>(), v.convert_to<double>(), w.convert_to<double>()});
+    for (int c = 0; c < 3; ++c) CHECK(std::abs(d[c] - e[c].convert_to<double>()) < 1e-12);
+  }
   // Not closed, or rational: refused, naming the surface.
   auto open = tube;
   open.points[0] = R(-2);

@@ -4,6 +4,7 @@
 // per piece (two exact values), then in exact arithmetic the certificate certify_cell_shape.
 // Private to vrep/freeform/ (included by freeform.cpp).
 #pragma once
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -54,16 +55,23 @@ void require_no_fold(const BSpline<T>& V, const std::string& name, const Limits&
   }
 }
 
+/// Every number of V against Limits::max_input_bits (exact arithmetic: the work below grows with
+/// the numbers' length); called for every cell of a solid before any cell's work.
 template <class T>
-void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
-  if constexpr (std::is_same_v<T, Rational>) {  // the work below grows with the numbers' length
+void require_short_numbers(const BSpline<T>& V, const std::string& name, const Limits& limits) {
+  if constexpr (std::is_same_v<T, Rational>) {
     auto bits = [&](const std::vector<T>& v, const std::string& field) {
       for (const auto& x : v) limits.check_bits(bit_size(x), name + "." + field);
     };
-    for (int d = 0; d < V.dim(); ++d) bits(V.knots[d], "knots[" + std::to_string(d) + "]");
+    for (std::size_t d = 0; d < V.knots.size(); ++d) bits(V.knots[d], "knots[" + std::to_string(d) + "]");
     bits(V.points, "points");
     bits(V.weights, "weights");
   }
+}
+
+template <class T>
+void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
+  require_short_numbers(V, name, limits);
   try {
     vrep_detail::require_jacobian_input(V, limits);
   } catch (const ValidationError& e) {
@@ -80,13 +88,19 @@ void require_cell(const BSpline<T>& V, const std::string& name, const Limits& li
   if constexpr (std::is_same_v<T, Rational>) {
     // The grid refutes folds it happens to see; the certificate covers the rest: det J of one
     // sign everywhere (regular, or degenerate with zeros on the domain's boundary only: collapsed
-    // faces), a fold or a zero inside refuted (ValidationError), or undecided within its levels,
+    // faces), a fold or a zero inside refuted (DomainError, as the grid's), or undecided within its levels,
     // which is refused too: the cells' kinds and enclosures below assume a valid cell.
-    const CellShape shape = certify_cell_shape(V, name, ValidityOptions{}.levels, limits);
+    CellShape shape;
+    try {
+      shape = certify_cell_shape(V, name, ValidityOptions{}.levels, limits);
+    } catch (const ValidationError& e) {  // a fold or a zero inside: the grid's error type (DomainError)
+      const std::string text = e.what();
+      throw DomainError(e.field(), text.substr(std::min(text.size(), e.field().size() + 2)), "");
+    }
     if (!shape.valid.is_proved())
       throw DomainError(name, "det J's sign is not certified within " + std::to_string(ValidityOptions{}.levels) +
                                   " subdivision levels (" + shape.valid.reason() + "), so the cell may fold",
-                        "give a valid trivariate (det J of one sign; `splinex vrep certify --levels` shows where it is undecided)");
+                        "give a valid trivariate (det J of one sign; `splinex vrep certify` shows its sign by boxes)");
   }
 }
 

@@ -85,6 +85,8 @@ FreeformSolid<T> freeform_solid(std::string name, std::vector<BSpline<T>> cells,
   FreeformSolid<T> S;
   S.name = std::move(name);
   std::size_t pieces = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c)  // every cell's numbers before any cell's work
+    vrep_detail::require_short_numbers(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     vrep_detail::require_cell(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
     std::size_t n = 1;

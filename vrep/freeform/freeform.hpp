@@ -38,7 +38,7 @@
 // J takes both strict signs is refused: a fold seen on a 5 x 5 x 5 grid per piece by two exact
 // values (DomainError), and in exact arithmetic every other cell goes through certify_cell_shape
 // (vrep/model/validate.hpp): det J of one sign certified (zeros only on the domain's boundary, as
-// on collapsed faces), a fold or an interior zero refuted (ValidationError), undecided refused
+// on collapsed faces), a fold or an interior zero refuted (DomainError), undecided refused
 // (DomainError). A non-injective cell without a fold is not detected (valid V-cells are assumed,
 // as in the paper). A point whose preimage lies on an inner knot plane
 // with irrational coordinates is decided by the face's two-equation system when the third vanishes

@@ -365,7 +365,7 @@ BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves,
   for (int d = 0; d < 2; ++d)
     for (int s = 0; s < 2; ++s) {
       const std::string name = names[d][s];
-      validate(C[d][s]);
+      validate(C[d][s], limits);
       if (C[d][s].dim() != 1)
         throw ValidationError(name + ".degrees", "has " + std::to_string(C[d][s].dim()) + " parametric directions, a boundary curve has 1",
                               "give a curve C(t)");
@@ -373,6 +373,19 @@ BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves,
         throw ValidationError(name + ".weights", "is rational; the Coons surface blends control points linearly", "give polynomial curves");
       if (C[d][s].q != C[0][0].q) throw ValidationError(name + ".points", "has another point size than u0", "give curves in the same space");
       C[d][s] = clamp_all(C[d][s], limits);
+    }
+  // The corners, on the clamped curves before any elevation (in floating point an elevation need not
+  // keep an end point to the last bit): the curve at u = a ends where the curve at v = b starts or
+  // ends.
+  const int q = C[0][0].q;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const T* x = &C[0][a].points[(b == 0 ? 0 : C[0][a].count(0) - 1) * q];
+      const T* y = &C[1][b].points[(a == 0 ? 0 : C[1][b].count(0) - 1) * q];
+      for (int c = 0; c < q; ++c)
+        if (!(x[c] == y[c]))
+          throw ValidationError(std::string(names[0][a]) + "," + names[1][b], "the two curves do not meet at their common corner",
+                                "give curves whose ends meet exactly");
     }
   // Direction v is carried by the curves at u = 0, 1; direction u by those at v = 0, 1.
   for (int d = 0; d < 2; ++d) {
@@ -388,18 +401,11 @@ BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves,
     A = vrep_detail::to_space(A, 0, degree, U, limits);
     B = vrep_detail::to_space(B, 0, degree, U, limits);
   }
-  const int q = C[0][0].q;
   const std::size_t nu = C[1][0].count(0), nv = C[0][0].count(0);
-  limits.check_count(nu * nv, "surface");
+  limits.check_count(checked_product(nu, nv, limits, "surface"), "surface");
   auto cu = [&](int a, std::size_t j) { return &C[0][a].points[j * q]; };  // at u = a, point j along v
   auto cv = [&](int b, std::size_t i) { return &C[1][b].points[i * q]; };  // at v = b, point i along u
-  const std::size_t ends_u[2] = {0, nu - 1}, ends_v[2] = {0, nv - 1};
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      for (int c = 0; c < q; ++c)
-        if (!(cu(a, ends_v[b])[c] == cv(b, ends_u[a])[c]))
-          throw ValidationError(std::string(names[0][a]) + "," + names[1][b], "the two curves do not meet at their common corner",
-                                "give curves whose ends meet exactly");
+  const std::size_t ends_v[2] = {0, nv - 1};
   const auto s = vrep_detail::unit_greville(C[1][0], 0), t = vrep_detail::unit_greville(C[0][0], 0);
   BSpline<T> R;
   R.degrees = {C[1][0].degrees[0], C[0][0].degrees[0]};
@@ -418,6 +424,15 @@ BSpline<T> coons_surface(const std::array<std::array<BSpline<T>, 2>, 2>& curves,
         R.points[(i + nu * j) * q + c] = v;
       }
     }
+  // The boundary rows and columns are the curves themselves (the blend gives them back exactly in
+  // exact arithmetic; copied, they are the curves' own values in floating point too, so that
+  // boolean_sum's exact edge comparison meets them).
+  for (int b = 0; b < 2; ++b)
+    for (std::size_t i = 0; i < nu; ++i)
+      for (int c = 0; c < q; ++c) R.points[(i + nu * ends_v[b]) * q + c] = cv(b, i)[c];
+  for (int a = 0; a < 2; ++a)
+    for (std::size_t j = 0; j < nv; ++j)
+      for (int c = 0; c < q; ++c) R.points[((a == 0 ? 0 : nu - 1) + nu * j) * q + c] = cu(a, j)[c];
   validate(R, limits);
   return R;
 }
