@@ -1,5 +1,6 @@
 // splinex vrep: volumetric models of papers/002 (vrep/): trivariate constructors, primitives,
 // gluing into a V-model, its topology and invariants, certified regularity per cell.
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -54,6 +55,34 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
+/// 2N spline files from a comma list (`field`, `count` the number in words for the message), read
+/// as pairs [k / 2][k % 2] under `names`: boolean-sum's six faces, coons' four curves.
+template <std::size_t N>
+std::array<std::array<BSpline<Rational>, 2>, N> read_pairs(const std::string& list, const std::string& field, const std::string& count,
+                                                         const std::array<const char*, 2 * N>& names, const Context& ctx) {
+  const auto files = split_list(list);
+  if (files.size() != 2 * N) {
+    std::string fix = "give --" + field + " ";
+    for (std::size_t k = 0; k < 2 * N; ++k) {
+      if (k) fix += ',';
+      fix += names[k];
+    }
+    throw UsageError(field, "needs " + count + " files, got " + std::to_string(files.size()), fix);
+  }
+  std::array<std::array<BSpline<Rational>, 2>, N> out;
+  for (std::size_t k = 0; k < 2 * N; ++k) out[k / 2][k % 2] = read_spline(files[k], names[k], ctx);
+  return out;
+}
+
+/// read_pairs' splines in the arithmetic T.
+template <class T, std::size_t N>
+std::array<std::array<BSpline<T>, 2>, N> round_pairs(const std::array<std::array<BSpline<Rational>, 2>, N>& S,
+                                                     const std::array<const char*, 2 * N>& names) {
+  std::array<std::array<BSpline<T>, 2>, N> out;
+  for (std::size_t k = 0; k < 2 * N; ++k) out[k / 2][k % 2] = round_spline<T>(S[k / 2][k % 2], names[k]);
+  return out;
+}
+
 auto construct(const ConstructOptions& o, const Context& ctx) {
   const auto spec = ArithSpec::parse(o.arith);
   auto need = [](const std::string& value, const std::string& field, const std::string& kind) {
@@ -91,17 +120,9 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
   }
   if (o.kind == "boolean-sum") {
     need(o.faces, "faces", o.kind);
-    const auto files = split_list(o.faces);
-    if (files.size() != 6)
-      throw UsageError("faces", "needs six files, got " + std::to_string(files.size()), "give --faces u0,u1,v0,v1,w0,w1");
-    const char* names[6] = {"u0", "u1", "v0", "v1", "w0", "w1"};
-    std::array<std::array<BSpline<Rational>, 2>, 3> F;
-    for (int k = 0; k < 6; ++k) F[k / 2][k % 2] = read_spline(files[k], names[k], ctx);
+    const auto F = read_pairs<3>(o.faces, "faces", "six", {"u0", "u1", "v0", "v1", "w0", "w1"}, ctx);
     return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
-      using T = typename decltype(tag)::type;
-      std::array<std::array<BSpline<T>, 2>, 3> G;
-      for (int k = 0; k < 6; ++k) G[k / 2][k % 2] = round_spline<T>(F[k / 2][k % 2], names[k]);
-      return document(boolean_sum(G, ctx.limits));
+      return document(boolean_sum(round_pairs<typename decltype(tag)::type>(F, {"u0", "u1", "v0", "v1", "w0", "w1"}), ctx.limits));
     });
   }
   if (o.kind == "tube") {
@@ -114,17 +135,9 @@ auto construct(const ConstructOptions& o, const Context& ctx) {
   }
   if (o.kind == "coons") {
     need(o.curves, "curves", o.kind);
-    const auto files = split_list(o.curves);
-    if (files.size() != 4)
-      throw UsageError("curves", "needs four files, got " + std::to_string(files.size()), "give --curves u0,u1,v0,v1");
-    const char* names[4] = {"u0", "u1", "v0", "v1"};
-    std::array<std::array<BSpline<Rational>, 2>, 2> C;
-    for (int k = 0; k < 4; ++k) C[k / 2][k % 2] = read_spline(files[k], names[k], ctx);
+    const auto C = read_pairs<2>(o.curves, "curves", "four", {"u0", "u1", "v0", "v1"}, ctx);
     return with_arith<VrepArithmetics>(spec, "vrep construct", [&](auto tag) {
-      using T = typename decltype(tag)::type;
-      std::array<std::array<BSpline<T>, 2>, 2> G;
-      for (int k = 0; k < 4; ++k) G[k / 2][k % 2] = round_spline<T>(C[k / 2][k % 2], names[k]);
-      return document(coons_surface(G, ctx.limits));
+      return document(coons_surface(round_pairs<typename decltype(tag)::type>(C, {"u0", "u1", "v0", "v1"}), ctx.limits));
     });
   }
   // sweep

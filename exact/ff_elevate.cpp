@@ -75,23 +75,17 @@ class Combination {
   /// written).
   bool words(fmpz* a, const fmpz* c, const fmpz* P) const {
     if (!fast() || m_ > 7 || !small(c) || any_big(a, m_ + 1) || any_big(P, m_ + 1)) return false;
-    const slong Ea = a[m_], EP = P[m_];
-    i128 fa = 1, fp = *c, E = Ea;
-    if (Ea != EP) {
-      const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(Ea), static_cast<std::uint64_t>(EP)));
-      fa = EP / g;
-      fp *= Ea / g;
-      E *= fa;
-      if (!fits(fp) || !fits(E)) return false;
-    }
+    const WordLcm L = word_lcm(a[m_], P[m_]);
+    const i128 fp = *c * L.fb;  // |c| < 2^62, fb < 2^62: fits
+    if (!fits(fp) || !fits(L.lcm)) return false;
     slong v[8] = {};
     for (std::size_t k = 0; k < m_; ++k) {
-      const i128 x = fa * a[k] + fp * P[k];
+      const i128 x = L.fa * a[k] + fp * P[k];
       if (!fits(x)) return false;
       v[k] = static_cast<slong>(x);
     }
     for (std::size_t k = 0; k < m_; ++k) a[k] = v[k];
-    a[m_] = static_cast<slong>(E);
+    a[m_] = static_cast<slong>(L.lcm);
     return true;
   }
 
@@ -281,7 +275,9 @@ Curve elevate_any(int p, const std::vector<Z>& U, const fmpz* Pw, std::size_t co
 class Blossoms {
  public:
   Blossoms(int p, const std::vector<Z>& U, const fmpz* P, std::size_t m)
-      : p_(p), U_(U), P_(P), m_(m), w_(m + 1), prefix_((p + 1) * w_), work_((p + 1) * w_), comb_(m) {}
+      : p_(p), U_(U), P_(P), m_(m), w_(m + 1), prefix_((p + 1) * w_), work_((p + 1) * w_), comb_(m) {
+    fmpz_one(one_.get());
+  }
 
   /// out = (sum_k blossom(x without x[k])) / div on span s.
   void sum(std::size_t s, const fmpz* x, const fmpz* div, fmpz* out) {
@@ -291,20 +287,19 @@ class Blossoms {
     comb_.start();
     for (int k = 0; k <= p_; ++k) {
       if (k == p_) {
-        comb_.add(one(), prefix_ + static_cast<std::size_t>(p_) * w_);
+        comb_.add(one_.get(), prefix_ + static_cast<std::size_t>(p_) * w_);
         break;
       }
       fmpz* e = work_.data();
       apply(prefix_.data(), e, k, x + k + 1);
       for (int r = k + 2; r <= p_; ++r) apply(e, e, r - 1, x + r);
-      comb_.add(one(), e + static_cast<std::size_t>(p_) * w_);
+      comb_.add(one_.get(), e + static_cast<std::size_t>(p_) * w_);
       apply(prefix_.data(), prefix_.data(), k, x + k);
     }
     comb_.finish(div, out);
   }
 
  private:
-  const fmpz* one() { fmpz_one(one_.get()); return one_.get(); }
   /// Level `level` + 1 of de Boor's triangle at argument x (src may be dst: last entry first).
   void apply(const fmpz* src, fmpz* dst, int level, const fmpz* x) {
     const int r = level + 1;

@@ -168,6 +168,17 @@ inline void reduce_if_long(fmpz* p, std::size_t m) {
   if (!small(p + m) || p[m] > (slong(1) << 48)) reduce_point(p, m);
 }
 
+/// Two positive word denominators brought onto their lcm: a/EA + b/EB = (a fa + b fb) / lcm with
+/// fa = EB/g, fb = EA/g, g = gcd(EA, EB) (fa = fb = 1 when they are equal). lcm < 2^124.
+struct WordLcm {
+  i128 fa, fb, lcm;
+};
+inline WordLcm word_lcm(slong EA, slong EB) {
+  if (EA == EB) return {1, 1, EA};
+  const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(EA), static_cast<std::uint64_t>(EB)));
+  return {EB / g, EA / g, static_cast<i128>(EA) * (EB / g)};
+}
+
 /// One fraction-free de Casteljau/de Boor step on homogeneous points of m numerators and a
 /// denominator: out = ((t - s) P + s Q) / t with t > 0, reduced when long. `out` may be P or Q.
 struct Blend {
@@ -217,24 +228,11 @@ struct Blend {
   static bool words(fmpz* out, const fmpz* P, const fmpz* Q, const fmpz* s, const fmpz* t, std::size_t m) {
     if (!fast() || !small(s) || !small(t) || any_big(P, m + 1) || any_big(Q, m + 1)) return false;
     const slong S = *s, T = *t;
-    const slong EP = P[m], EQ = Q[m];
-
-    const i128 A = static_cast<i128>(T) - S;
-    i128 c1, c2, E;
-    if (EP == EQ) {
-      c1 = A;
-      c2 = S;
-      E = static_cast<i128>(T) * EP;
-    } else {
-      const slong g = static_cast<slong>(binary_gcd(static_cast<std::uint64_t>(EP), static_cast<std::uint64_t>(EQ)));
-      const slong ep = EP / g, eq = EQ / g;
-      c1 = A * eq;  // |A| < 2^63 and eq < 2^62: fits
-      c2 = static_cast<i128>(S) * ep;
-      if (!fits(c1) || !fits(c2)) return false;
-      E = static_cast<i128>(T) * ep;
-      if (!fits(E)) return false;
-      E *= EQ;
-    }
+    const WordLcm L = word_lcm(P[m], Q[m]);
+    if (!fits(L.lcm)) return false;  // then t times it does not fit either (t >= 1)
+    const i128 c1 = (static_cast<i128>(T) - S) * L.fa;  // |t - s| < 2^63, fa < 2^62: fits
+    const i128 c2 = static_cast<i128>(S) * L.fb;
+    const i128 E = static_cast<i128>(T) * L.lcm;
     if (!fits(c1) || !fits(c2) || !fits(E)) return false;
     slong v[kWordsMax + 1];
     for (std::size_t c = 0; c < m; ++c) {

@@ -69,9 +69,9 @@ void require_short_numbers(const BSpline<T>& V, const std::string& name, const L
   }
 }
 
+/// The rest of the checks, on numbers require_short_numbers has passed.
 template <class T>
-void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
-  require_short_numbers(V, name, limits);
+void require_valid_shape(const BSpline<T>& V, const std::string& name, const Limits& limits) {
   try {
     vrep_detail::require_jacobian_input(V, limits);
   } catch (const ValidationError& e) {
@@ -102,6 +102,13 @@ void require_cell(const BSpline<T>& V, const std::string& name, const Limits& li
                                   " subdivision levels (" + shape.valid.reason() + "), so the cell may fold",
                         "give a valid trivariate (det J of one sign; `splinex vrep certify` shows its sign by boxes)");
   }
+}
+
+/// Every check, for a single trivariate (freeform_cell, freeform_edges).
+template <class T>
+void require_cell(const BSpline<T>& V, const std::string& name, const Limits& limits) {
+  require_short_numbers(V, name, limits);
+  require_valid_shape(V, name, limits);
 }
 
 }  // namespace splinex::vrep_detail

@@ -88,7 +88,7 @@ FreeformSolid<T> freeform_solid(std::string name, std::vector<BSpline<T>> cells,
   for (std::size_t c = 0; c < cells.size(); ++c)  // every cell's numbers before any cell's work
     vrep_detail::require_short_numbers(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    vrep_detail::require_cell(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
+    vrep_detail::require_valid_shape(cells[c], S.name + ".cells[" + std::to_string(c) + "]", limits);
     std::size_t n = 1;
     for (int d = 0; d < 3; ++d) n = checked_product(n, cells[c].knots[d].size(), limits, "solid pieces");
     pieces += n;
